@@ -1,0 +1,374 @@
+// facet::gpu — the compute subset of WebGPU, over Vulkan 1.2.
+//
+// Instance → Adapter → Device → {Queue, Buffer, ShaderModule, BindGroupLayout,
+// PipelineLayout, BindGroup, ComputePipeline, CommandEncoder, QuerySet}.
+//
+// Handles are move-only RAII objects. Internally they share ownership the way
+// WebGPU objects do: a bind group keeps its buffers alive, and the queue keeps
+// everything a submission uses alive until that submission has finished, so
+// dropping a handle early is never a use-after-free on the device.
+//
+// Misuse raises facet::gpu::Error naming the object (by label) and the rule,
+// before anything reaches Vulkan. No Vulkan type appears in this header.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace facet::gpu {
+
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+namespace detail {
+struct InstanceState;
+struct DeviceState;
+struct BufferState;
+struct ShaderModuleState;
+struct BindGroupLayoutState;
+struct PipelineLayoutState;
+struct BindGroupState;
+struct ComputePipelineState;
+struct CommandRecording;
+struct QuerySetState;
+}  // namespace detail
+
+// Move-only handle over shared internal state.
+template <class State>
+class Handle {
+ public:
+  Handle() = default;
+  explicit Handle(std::shared_ptr<State> state) : state_(std::move(state)) {}
+  Handle(Handle&&) noexcept = default;
+  Handle& operator=(Handle&&) noexcept = default;
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+
+  explicit operator bool() const { return state_ != nullptr; }
+  const std::shared_ptr<State>& state() const { return state_; }
+
+ protected:
+  std::shared_ptr<State> state_;
+};
+
+// ---------------------------------------------------------------- adapters
+
+enum class AdapterType { DiscreteGpu, IntegratedGpu, VirtualGpu, Cpu, Other };
+const char* toString(AdapterType type);
+
+struct Limits {
+  std::uint64_t maxBufferSize = 0;
+  std::uint64_t maxStorageBufferBindingSize = 0;
+  std::uint64_t maxUniformBufferBindingSize = 0;
+  std::uint32_t minStorageBufferOffsetAlignment = 0;
+  std::uint32_t minUniformBufferOffsetAlignment = 0;
+  std::uint32_t maxBindGroups = 0;
+  std::uint32_t maxStorageBuffersPerShaderStage = 0;
+  std::array<std::uint32_t, 3> maxComputeWorkgroupsPerDimension{};
+  std::array<std::uint32_t, 3> maxComputeWorkgroupSize{};
+  std::uint32_t maxComputeInvocationsPerWorkgroup = 0;
+  std::uint32_t maxComputeWorkgroupStorageSize = 0;
+  std::uint32_t subgroupSize = 0;
+  double timestampPeriodNs = 0;  // 0: the queue cannot write timestamps
+  bool shaderFloat64 = false;
+};
+
+struct AdapterInfo {
+  std::string name;
+  std::string driver;
+  std::string driverInfo;
+  std::string apiVersion;
+  AdapterType type = AdapterType::Other;
+  std::uint32_t vendorId = 0;
+  std::uint32_t deviceId = 0;
+};
+
+// ---------------------------------------------------------------- resources
+
+enum class BufferUsage : std::uint32_t {
+  None = 0,
+  MapRead = 1u << 0,
+  MapWrite = 1u << 1,
+  CopySrc = 1u << 2,
+  CopyDst = 1u << 3,
+  Uniform = 1u << 6,
+  Storage = 1u << 7,
+  Indirect = 1u << 8,
+};
+constexpr BufferUsage operator|(BufferUsage a, BufferUsage b) {
+  return BufferUsage(std::uint32_t(a) | std::uint32_t(b));
+}
+constexpr bool has(BufferUsage set, BufferUsage bit) { return (std::uint32_t(set) & std::uint32_t(bit)) != 0; }
+std::string toString(BufferUsage usage);
+
+constexpr std::uint64_t kWholeSize = ~std::uint64_t(0);
+
+struct BufferDescriptor {
+  std::string label;
+  std::uint64_t size = 0;
+  BufferUsage usage = BufferUsage::None;
+};
+
+// A MapRead or MapWrite buffer stays mapped for its whole life (WebGPU's
+// mapAsync collapsed to "wait on the queue first"); mappedRange() is valid once
+// the work that writes it has finished (Queue::waitIdle).
+class Buffer : public Handle<detail::BufferState> {
+ public:
+  using Handle::Handle;
+  const std::string& label() const;
+  std::uint64_t size() const;
+  BufferUsage usage() const;
+  std::span<std::byte> mappedRange();
+  template <class T>
+  std::span<T> mapped() {
+    auto bytes = mappedRange();
+    return {reinterpret_cast<T*>(bytes.data()), bytes.size() / sizeof(T)};
+  }
+};
+
+struct ShaderModuleDescriptor {
+  std::string label;
+  std::span<const std::uint32_t> code;  // SPIR-V words
+};
+
+class ShaderModule : public Handle<detail::ShaderModuleState> {
+ public:
+  using Handle::Handle;
+};
+
+enum class BindingType { Uniform, Storage, ReadOnlyStorage };
+const char* toString(BindingType type);
+
+struct BindGroupLayoutEntry {
+  std::uint32_t binding = 0;
+  BindingType type = BindingType::Storage;
+  std::uint64_t minBindingSize = 0;  // 0: any size
+};
+
+struct BindGroupLayoutDescriptor {
+  std::string label;
+  std::vector<BindGroupLayoutEntry> entries;
+};
+
+class BindGroupLayout : public Handle<detail::BindGroupLayoutState> {
+ public:
+  using Handle::Handle;
+};
+
+struct PipelineLayoutDescriptor {
+  std::string label;
+  std::vector<const BindGroupLayout*> bindGroupLayouts;
+};
+
+class PipelineLayout : public Handle<detail::PipelineLayoutState> {
+ public:
+  using Handle::Handle;
+};
+
+struct BindGroupEntry {
+  std::uint32_t binding = 0;
+  const Buffer* buffer = nullptr;
+  std::uint64_t offset = 0;
+  std::uint64_t size = kWholeSize;
+};
+
+struct BindGroupDescriptor {
+  std::string label;
+  const BindGroupLayout* layout = nullptr;
+  std::vector<BindGroupEntry> entries;
+};
+
+class BindGroup : public Handle<detail::BindGroupState> {
+ public:
+  using Handle::Handle;
+};
+
+// Pipeline-overridable constants (Vulkan specialization constants), named as
+// in the shader source, or by their constant_id written as a decimal string.
+struct ConstantEntry {
+  std::string key;
+  double value = 0;
+};
+
+struct ComputePipelineDescriptor {
+  std::string label;
+  const PipelineLayout* layout = nullptr;  // nullptr: derived from the shader ("auto")
+  const ShaderModule* module = nullptr;
+  std::string entryPoint = "main";
+  std::vector<ConstantEntry> constants;
+};
+
+class ComputePipeline : public Handle<detail::ComputePipelineState> {
+ public:
+  using Handle::Handle;
+  // The layout of bind group `index`, as given or as derived from the shader.
+  BindGroupLayout getBindGroupLayout(std::uint32_t index) const;
+  std::array<std::uint32_t, 3> workgroupSize() const;
+};
+
+struct QuerySetDescriptor {
+  std::string label;
+  std::uint32_t count = 0;
+};
+
+// Timestamp queries. Results are read on the host after the queue is idle.
+class QuerySet : public Handle<detail::QuerySetState> {
+ public:
+  using Handle::Handle;
+  std::uint32_t count() const;
+  std::vector<double> readTimestampsNs(std::uint32_t first, std::uint32_t count) const;
+};
+
+// ---------------------------------------------------------------- commands
+
+struct ComputePassTimestampWrites {
+  const QuerySet* querySet = nullptr;
+  std::uint32_t beginningOfPassWriteIndex = 0;
+  std::uint32_t endOfPassWriteIndex = 1;
+};
+
+struct ComputePassDescriptor {
+  std::string label;
+  ComputePassTimestampWrites timestampWrites;
+};
+
+class CommandBuffer : public Handle<detail::CommandRecording> {
+ public:
+  using Handle::Handle;
+};
+
+class ComputePassEncoder {
+ public:
+  explicit ComputePassEncoder(std::shared_ptr<detail::CommandRecording> recording);
+  ComputePassEncoder(ComputePassEncoder&&) noexcept;
+  ComputePassEncoder& operator=(ComputePassEncoder&&) = delete;
+  ComputePassEncoder(const ComputePassEncoder&) = delete;
+  ~ComputePassEncoder();  // ends the pass if end() was not called
+
+  void setPipeline(const ComputePipeline& pipeline);
+  void setBindGroup(std::uint32_t index, const BindGroup& group);
+  void dispatchWorkgroups(std::uint32_t x, std::uint32_t y = 1, std::uint32_t z = 1);
+  void dispatchWorkgroupsIndirect(const Buffer& indirect, std::uint64_t offset = 0);
+  void end();
+
+ private:
+  std::shared_ptr<detail::CommandRecording> recording_;
+};
+
+struct CommandEncoderDescriptor {
+  std::string label;
+};
+
+// Records commands; barriers between commands are inserted from the buffers
+// each command reads and writes, as WebGPU implementations do.
+class CommandEncoder : public Handle<detail::CommandRecording> {
+ public:
+  using Handle::Handle;
+  ComputePassEncoder beginComputePass(const ComputePassDescriptor& descriptor = {});
+  void copyBufferToBuffer(const Buffer& source, std::uint64_t sourceOffset, const Buffer& destination,
+                          std::uint64_t destinationOffset, std::uint64_t size);
+  void clearBuffer(const Buffer& buffer, std::uint64_t offset = 0, std::uint64_t size = kWholeSize);
+  CommandBuffer finish();
+};
+
+// ---------------------------------------------------------------- device
+
+class Queue {
+ public:
+  explicit Queue(std::shared_ptr<detail::DeviceState> device) : device_(std::move(device)) {}
+  void submit(CommandBuffer&& commands);
+  void writeBuffer(const Buffer& buffer, std::uint64_t offset, const void* data, std::size_t size);
+  template <class T>
+  void writeBuffer(const Buffer& buffer, std::uint64_t offset, std::span<const T> data) {
+    writeBuffer(buffer, offset, data.data(), data.size_bytes());
+  }
+  // Blocks until all submitted work (and pending writes) has finished.
+  void waitIdle();
+
+ private:
+  std::shared_ptr<detail::DeviceState> device_;
+};
+
+struct DeviceDescriptor {
+  std::string label;
+};
+
+class Device : public Handle<detail::DeviceState> {
+ public:
+  Device() = default;
+  explicit Device(std::shared_ptr<detail::DeviceState> state);
+  Device(Device&&) noexcept = default;
+  Device& operator=(Device&& other) noexcept;
+  ~Device();
+
+  const AdapterInfo& adapterInfo() const;
+  const Limits& limits() const;
+  Queue& queue() { return queue_; }
+
+  Buffer createBuffer(const BufferDescriptor& descriptor);
+  ShaderModule createShaderModule(const ShaderModuleDescriptor& descriptor);
+  BindGroupLayout createBindGroupLayout(const BindGroupLayoutDescriptor& descriptor);
+  PipelineLayout createPipelineLayout(const PipelineLayoutDescriptor& descriptor);
+  BindGroup createBindGroup(const BindGroupDescriptor& descriptor);
+  ComputePipeline createComputePipeline(const ComputePipelineDescriptor& descriptor);
+  CommandEncoder createCommandEncoder(const CommandEncoderDescriptor& descriptor = {});
+  QuerySet createQuerySet(const QuerySetDescriptor& descriptor);
+
+ private:
+  Queue queue_{nullptr};
+};
+
+// ---------------------------------------------------------------- instance
+
+class Adapter {
+ public:
+  Adapter(std::shared_ptr<detail::InstanceState> instance, std::size_t index);
+  const AdapterInfo& info() const;
+  const Limits& limits() const;
+  Device requestDevice(const DeviceDescriptor& descriptor = {}) const;
+
+ private:
+  std::shared_ptr<detail::InstanceState> instance_;
+  std::size_t index_;
+};
+
+enum class Validation {
+  Off,
+  IfInstalled,  // Khronos validation layer when present
+  Required,     // Error when the layer is not installed
+};
+
+struct InstanceDescriptor {
+  // Off by default; the environment variable FACET_VALIDATION=1 asks for IfInstalled.
+  Validation validation = Validation::Off;
+};
+
+struct AdapterOptions {
+  // Case-insensitive substring of the adapter name. Empty: FACET_ADAPTER from
+  // the environment, else the first hardware GPU, else the first CPU device.
+  std::string name;
+};
+
+class Instance : public Handle<detail::InstanceState> {
+ public:
+  using Handle::Handle;
+  static Instance create(const InstanceDescriptor& descriptor = {});
+
+  std::vector<AdapterInfo> enumerateAdapters() const;
+  Adapter requestAdapter(const AdapterOptions& options = {}) const;
+
+  bool validationEnabled() const;
+  // Validation-layer messages (warnings and errors) since the last call.
+  std::vector<std::string> takeValidationMessages() const;
+};
+
+}  // namespace facet::gpu

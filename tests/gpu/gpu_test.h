@@ -1,0 +1,62 @@
+// Shared fixture: a device on the default adapter with Vulkan validation on
+// when installed. Any validation message fails the test that caused it.
+#pragma once
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <vector>
+
+#include "engine/gpu/gpu.h"
+
+namespace facet::gpu::testing {
+
+class GpuTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    instance_ = Instance::create({Validation::IfInstalled});
+    device_ = instance_.requestAdapter().requestDevice({"test device"});
+  }
+
+  void TearDown() override {
+    device_.queue().waitIdle();
+    device_ = Device();
+    for (const auto& message : instance_.takeValidationMessages()) ADD_FAILURE() << "Vulkan validation: " << message;
+  }
+
+  template <class T>
+  Buffer upload(const std::vector<T>& data, BufferUsage usage = BufferUsage::Storage) {
+    Buffer buffer = device_.createBuffer({"upload", data.size() * sizeof(T), usage | BufferUsage::CopyDst});
+    device_.queue().writeBuffer(buffer, 0, std::span<const T>(data));
+    return buffer;
+  }
+
+  // Fills a storage buffer with a poison byte pattern, so elements a kernel
+  // fails to write are caught (0xFF bytes read as NaN for floats).
+  Buffer poisoned(std::uint64_t bytes, BufferUsage usage = BufferUsage::Storage) {
+    return upload(std::vector<std::uint8_t>(bytes, 0xFF), usage | BufferUsage::CopySrc);
+  }
+
+  template <class T>
+  std::vector<T> readBack(const Buffer& buffer) {
+    Buffer staging = device_.createBuffer({"readback", buffer.size(), BufferUsage::MapRead | BufferUsage::CopyDst});
+    auto encoder = device_.createCommandEncoder({"readback"});
+    encoder.copyBufferToBuffer(buffer, 0, staging, 0, buffer.size());
+    device_.queue().submit(encoder.finish());
+    device_.queue().waitIdle();
+    auto bytes = staging.mappedRange();
+    std::vector<T> out(bytes.size() / sizeof(T));
+    std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
+    return out;
+  }
+
+  ShaderModule module(const char* label, std::span<const std::uint32_t> code) {
+    return device_.createShaderModule({label, code});
+  }
+
+  Instance instance_;
+  Device device_;
+};
+
+}  // namespace facet::gpu::testing
