@@ -8,5 +8,10 @@ class App;
 namespace facet::cli {
 
 void addInfoCommand(CLI::App& app);
+void addBrdfCommand(CLI::App& app);
+void addAlbedoCommand(CLI::App& app);
+void addPresetsCommand(CLI::App& app);
+void addPlotCommand(CLI::App& app);
+void addBrdfPrecisionCommand(CLI::App& app);
 
 }  // namespace facet::cli

@@ -11,6 +11,11 @@ int main(int argc, char** argv) {
   CLI::App app{"facet: physically based materials on subdivision surfaces, GPU and CPU"};
   app.require_subcommand(1);
   facet::cli::addInfoCommand(app);
+  facet::cli::addBrdfCommand(app);
+  facet::cli::addAlbedoCommand(app);
+  facet::cli::addPresetsCommand(app);
+  facet::cli::addPlotCommand(app);
+  facet::cli::addBrdfPrecisionCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

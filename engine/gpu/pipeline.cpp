@@ -305,6 +305,9 @@ ComputePipeline Device::createComputePipeline(const ComputePipelineDescriptor& d
     throw Error(name + ": " + describe("shader module", module.label) + " has no compute entry point '" +
                 descriptor.entryPoint + "'");
 
+  if (reflection.usesPushConstants)
+    throw Error(name + ": " + describe("shader module", module.label) +
+                " declares push constants, which facet::gpu (like WebGPU) does not have; use a uniform buffer");
   auto state = std::make_shared<ComputePipelineState>();
   state->device = state_;
   state->label = descriptor.label;

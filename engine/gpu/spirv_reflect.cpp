@@ -52,6 +52,7 @@ constexpr std::uint32_t kExecutionModeLocalSize = 17;
 constexpr std::uint32_t kExecutionModeLocalSizeId = 38;
 constexpr std::uint32_t kBuiltInWorkgroupSize = 25;
 constexpr std::uint32_t kStorageClassUniform = 2;
+constexpr std::uint32_t kStorageClassPushConstant = 9;
 constexpr std::uint32_t kStorageClassStorageBuffer = 12;
 
 std::string literalString(std::span<const std::uint32_t> words) {
@@ -273,6 +274,7 @@ class Module {
 
   void reflectVariable(std::uint32_t id, const Type& var, Reflection& r) const {
     std::uint32_t storageClass = var.operands[1];
+    if (storageClass == kStorageClassPushConstant) r.usesPushConstants = true;
     if (storageClass != kStorageClassUniform && storageClass != kStorageClassStorageBuffer) return;
     auto deco = decorations_.find(id);
     if (deco == decorations_.end() || !deco->second.has(BindingDecoration)) return;

@@ -35,6 +35,7 @@ struct Reflection {
   std::vector<std::string> computeEntryPoints;
   std::vector<Binding> bindings;
   std::vector<SpecConstant> specConstants;
+  bool usesPushConstants = false;  // not part of WebGPU, so not of facet::gpu
   std::array<std::uint32_t, 3> workgroupSize{1, 1, 1};
   // constant_id that overrides each workgroup dimension, or -1.
   std::array<std::int64_t, 3> workgroupSizeSpecIds{-1, -1, -1};

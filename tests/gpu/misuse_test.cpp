@@ -133,6 +133,12 @@ TEST_F(Misuse, UnknownOrInvalidPipelineConstants) {
               HasSubstr("no compute entry point 'nope'"));
 }
 
+TEST_F(Misuse, PushConstantsAreNotPartOfTheApi) {
+  auto shader = module("push_constants", test_spirv::push_constants);
+  EXPECT_THAT(errorOf([&] { device_.createComputePipeline({"push", nullptr, &shader}); }),
+              AllOf(HasSubstr("shader module 'push_constants'"), HasSubstr("push constants"), HasSubstr("uniform buffer")));
+}
+
 TEST_F(Misuse, NotSpirv) {
   std::vector<std::uint32_t> garbage{0xdeadbeef, 1, 2, 3, 4, 5};
   EXPECT_THAT(errorOf([&] { device_.createShaderModule({"garbage", garbage}); }),

@@ -1,0 +1,90 @@
+#include "material_options.h"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "materials/models.hpp"
+
+namespace facet::cli {
+
+namespace {
+
+// "x" or "r,g,b".
+glm::dvec3 parseColor(const std::string& flag, const std::string& text) {
+  std::vector<double> values;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) values.push_back(parseNumber(flag, item));
+  if (values.size() == 1) return glm::dvec3(values[0]);
+  if (values.size() != 3)
+    throw std::invalid_argument(flag + ": expected one number or three comma-separated numbers "
+                                "r,g,b, got '" + text + "'");
+  return {values[0], values[1], values[2]};
+}
+
+std::string flagFor(std::string_view field) {
+  if (field == "distribution") return "--d";
+  if (field == "geometry") return "--g";
+  if (field == "fresnel") return "--f";
+  return "--" + std::string(field);
+}
+
+}  // namespace
+
+double parseNumber(const std::string& flag, const std::string& text) {
+  size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(value))
+    throw std::invalid_argument(flag + ": expected a finite number, got '" + text + "'");
+  return value;
+}
+
+void addMaterialOptions(CLI::App& command, MaterialOptions& o) {
+  using materials::modelList;
+  command.add_option("--d", o.d, "normal distribution: " + modelList(materials::kDistributions) +
+                                     " (default ggx)");
+  command.add_option("--g", o.g, "shadowing-masking: " + modelList(materials::kGeometryTerms) +
+                                     " (default smith-ggx-correlated)");
+  command.add_option("--f", o.f, "Fresnel: " + modelList(materials::kFresnelTerms) +
+                                     " (default schlick if F(0) or a preset is given, else none)");
+  command.add_option("--f0", o.f0, "F(0) = c_spec for schlick (or to derive an ior): x or r,g,b");
+  command.add_option("--ior", o.ior, "index of refraction for dielectric: x or r,g,b");
+  command.add_option("--eta", o.eta, "conductor: real part of the complex index, r,g,b");
+  command.add_option("--k", o.k, "conductor: extinction coefficient, r,g,b");
+  command.add_option("--alpha", o.alpha, "microfacet alpha in [0, 1] (alpha = roughness^2)");
+  command.add_option("--roughness", o.roughness, "perceptual roughness in [0, 1], instead of --alpha");
+  command.add_option("--diffuse", o.diffuse, "Lambert c_diff: x or r,g,b (default 0)");
+  command.add_option("--preset", o.preset, "F(0) from a preset (see `facet presets`)");
+  command.add_option("--material", o.material_file, "JSON material file instead of the flags above");
+}
+
+materials::Material resolveMaterial(const MaterialOptions& o) {
+  if (o.material_file) {
+    if (o.d || o.g || o.f || o.f0 || o.ior || o.eta || o.k || o.alpha || o.roughness || o.diffuse ||
+        o.preset)
+      throw std::invalid_argument("--material: cannot be combined with material flags");
+    return materials::loadMaterial(*o.material_file);
+  }
+  materials::MaterialSpec spec;
+  spec.preset = o.preset;
+  spec.distribution = o.d;
+  spec.geometry = o.g;
+  spec.fresnel = o.f;
+  if (o.alpha) spec.alpha = parseNumber("--alpha", *o.alpha);
+  if (o.roughness) spec.roughness = parseNumber("--roughness", *o.roughness);
+  if (o.f0) spec.f0 = parseColor("--f0", *o.f0);
+  if (o.ior) spec.ior = parseColor("--ior", *o.ior);
+  if (o.eta) spec.eta = parseColor("--eta", *o.eta);
+  if (o.k) spec.k = parseColor("--k", *o.k);
+  if (o.diffuse) spec.diffuse = parseColor("--diffuse", *o.diffuse);
+  return materials::buildMaterial(spec, flagFor);
+}
+
+}  // namespace facet::cli

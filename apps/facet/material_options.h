@@ -1,0 +1,29 @@
+// Command-line flags that describe a material (shared by brdf, albedo and
+// plot): --d --g --f --f0 --ior --eta --k --alpha --roughness --diffuse
+// --preset, or --material FILE.json.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+
+#include "materials/material.hpp"
+
+namespace facet::cli {
+
+struct MaterialOptions {
+  std::optional<std::string> d, g, f, f0, ior, eta, k, alpha, roughness, diffuse, preset;
+  std::optional<std::string> material_file;
+};
+
+void addMaterialOptions(CLI::App& command, MaterialOptions& options);
+
+// Validated material; throws std::invalid_argument naming the flag (or the
+// file and field) and the rule.
+materials::Material resolveMaterial(const MaterialOptions& options);
+
+// A finite number from a flag's text; throws naming the flag.
+double parseNumber(const std::string& flag, const std::string& text);
+
+}  // namespace facet::cli

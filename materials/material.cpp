@@ -1,0 +1,260 @@
+#include "materials/material.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "materials/models.hpp"
+#include "materials/presets.hpp"
+
+namespace facet::materials {
+
+namespace {
+
+template <class Params, class Vec3>
+Params toParams(const Material& m) {
+  Params p;
+  p.d_model = m.distribution;
+  p.g_model = m.geometry;
+  p.f_model = m.fresnel;
+  p.alpha = static_cast<decltype(p.alpha)>(m.alpha);
+  p.f0 = Vec3(m.f0);
+  p.eta = Vec3(m.eta);
+  p.k = Vec3(m.k);
+  p.diffuse = Vec3(m.diffuse);
+  return p;
+}
+
+[[noreturn]] void throwFieldError(const std::string& where, const std::string& rule) {
+  throw std::invalid_argument(where + ": " + rule);
+}
+
+std::string formatNumber(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
+
+std::string formatVector(glm::dvec3 v) {
+  return formatNumber(v.x) + "," + formatNumber(v.y) + "," + formatNumber(v.z);
+}
+
+}  // namespace
+
+f64::BrdfParams toParams64(const Material& material) {
+  return toParams<f64::BrdfParams, glm::dvec3>(material);
+}
+
+f32::BrdfParams toParams32(const Material& material) {
+  return toParams<f32::BrdfParams, glm::vec3>(material);
+}
+
+Material buildMaterial(const MaterialSpec& spec,
+                       const std::function<std::string(std::string_view field)>& describeField) {
+  auto fail = [&](std::string_view field, const std::string& rule) {
+    throwFieldError(describeField(field), rule);
+  };
+  auto checkRange = [&](std::string_view field, double value, double lo, double hi) {
+    if (!(value >= lo && value <= hi))  // also rejects NaN
+      fail(field, "must be in [" + formatNumber(lo) + ", " + formatNumber(hi) + "], got " +
+                      formatNumber(value));
+  };
+  auto checkVector = [&](std::string_view field, glm::dvec3 v, double lo, bool loOpen) {
+    for (int i = 0; i < 3; ++i) {
+      bool ok = std::isfinite(v[i]) && (loOpen ? v[i] > lo : v[i] >= lo);
+      if (!ok)
+        fail(field, std::string("every component must be finite and ") + (loOpen ? "> " : ">= ") +
+                        formatNumber(lo) + ", got " + formatVector(v));
+    }
+  };
+  auto checkReflectance = [&](std::string_view field, glm::dvec3 v) {
+    for (int i = 0; i < 3; ++i)
+      if (!(v[i] >= 0.0 && v[i] <= 1.0))
+        fail(field, "every component must be in [0, 1], got " + formatVector(v));
+  };
+
+  Material m;
+  m.name = spec.name;
+  const Preset* preset = nullptr;
+  if (spec.preset) {
+    preset = findPreset(*spec.preset);
+    if (!preset) {
+      std::string names;
+      for (const Preset& p : presets()) names += (names.empty() ? "" : ", ") + std::string(p.name);
+      fail("preset", "unknown preset '" + *spec.preset + "' (expected one of: " + names + ")");
+    }
+    if (m.name.empty()) m.name = preset->name;
+  }
+
+  auto parse = [&](std::span<const ModelName> table, std::string_view field,
+                   const std::optional<std::string>& value, int fallback) {
+    if (!value) return fallback;
+    try {
+      return parseModel(table, field, *value);
+    } catch (const std::invalid_argument& e) {
+      throwFieldError(describeField(field), e.what());
+    }
+  };
+  bool hasFresnelParameter = spec.f0 || spec.ior || spec.eta || spec.k || preset;
+  m.distribution = parse(kDistributions, "distribution", spec.distribution, f64::D_GGX);
+  m.geometry = parse(kGeometryTerms, "geometry", spec.geometry, f64::G_SMITH_GGX_CORRELATED);
+  m.fresnel = parse(kFresnelTerms, "fresnel", spec.fresnel,
+                    hasFresnelParameter ? f64::F_SCHLICK : f64::F_NONE);
+
+  if (spec.alpha && spec.roughness) fail("alpha", "give alpha or roughness, not both");
+  if (!spec.alpha && !spec.roughness) fail("alpha", "required (or roughness = sqrt(alpha))");
+  if (spec.alpha) {
+    checkRange("alpha", *spec.alpha, 0.0, 1.0);
+    m.alpha = *spec.alpha;
+  } else {
+    checkRange("roughness", *spec.roughness, 0.0, 1.0);
+    m.alpha = *spec.roughness * *spec.roughness;
+  }
+
+  std::optional<glm::dvec3> f0 = spec.f0;
+  if (!f0 && preset) f0 = preset->f0_linear;
+  if (spec.f0) checkReflectance("f0", *spec.f0);
+  if (spec.ior) checkVector("ior", *spec.ior, 0.0, true);
+  if (spec.eta) checkVector("eta", *spec.eta, 0.0, true);
+  if (spec.k) checkVector("k", *spec.k, 0.0, false);
+
+  std::string fresnelName(modelName(kFresnelTerms, m.fresnel));
+  auto onlyFor = [&](std::string_view field, bool given, bool used, std::string_view users) {
+    if (given && !used)
+      fail(field, "is only used by fresnel " + std::string(users) + ", not '" + fresnelName + "'");
+  };
+  onlyFor("f0", spec.f0.has_value(), m.fresnel == f64::F_SCHLICK || m.fresnel == f64::F_DIELECTRIC,
+          "'schlick' or 'dielectric'");
+  onlyFor("ior", spec.ior.has_value(), m.fresnel == f64::F_DIELECTRIC, "'dielectric'");
+  onlyFor("eta", spec.eta.has_value(), m.fresnel == f64::F_CONDUCTOR, "'conductor'");
+  onlyFor("k", spec.k.has_value(), m.fresnel == f64::F_CONDUCTOR, "'conductor'");
+
+  switch (m.fresnel) {
+    case f64::F_SCHLICK:
+      if (!f0) fail("f0", "required by fresnel 'schlick' (or give a preset)");
+      m.f0 = *f0;
+      break;
+    case f64::F_DIELECTRIC:
+      if (spec.ior) {
+        m.eta = *spec.ior;
+      } else if (f0) {
+        for (int i = 0; i < 3; ++i)
+          if (!((*f0)[i] < 1.0)) fail("f0", "must be < 1 to derive an index of refraction");
+        m.eta = {iorFromF0(f0->x), iorFromF0(f0->y), iorFromF0(f0->z)};
+      } else {
+        fail("ior", "required by fresnel 'dielectric' (or give f0 or a preset)");
+      }
+      break;
+    case f64::F_CONDUCTOR:
+      if (!spec.eta || !spec.k) fail(spec.eta ? "k" : "eta", "required by fresnel 'conductor'");
+      m.eta = *spec.eta;
+      m.k = *spec.k;
+      break;
+  }
+
+  if (spec.diffuse) {
+    checkReflectance("diffuse", *spec.diffuse);
+    m.diffuse = *spec.diffuse;
+  }
+  return m;
+}
+
+MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view source) {
+  auto fail = [&](std::string_view field, const std::string& rule) {
+    throwFieldError(std::string(source) + ": field '" + std::string(field) + "'", rule);
+  };
+  if (!json.is_object())
+    throw std::invalid_argument(std::string(source) + ": a material must be a JSON object");
+  auto text = [&](const std::string& key) -> std::optional<std::string> {
+    if (!json.contains(key)) return std::nullopt;
+    if (!json[key].is_string()) fail(key, "expected a string");
+    return json[key].get<std::string>();
+  };
+  auto number = [&](const std::string& key) -> std::optional<double> {
+    if (!json.contains(key)) return std::nullopt;
+    if (!json[key].is_number()) fail(key, "expected a number");
+    return json[key].get<double>();
+  };
+  auto color = [&](const std::string& key) -> std::optional<glm::dvec3> {
+    if (!json.contains(key)) return std::nullopt;
+    const nlohmann::json& value = json[key];
+    if (value.is_number()) return glm::dvec3(value.get<double>());
+    if (!value.is_array() || value.size() != 3 || !value[0].is_number() ||
+        !value[1].is_number() || !value[2].is_number())
+      fail(key, "expected a number or an array of 3 numbers (r, g, b)");
+    return glm::dvec3(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
+  };
+
+  static const char* const kKeys[] = {"name", "preset", "distribution", "geometry",
+                                      "fresnel", "alpha", "roughness", "f0",
+                                      "ior", "eta", "k", "diffuse"};
+  for (const auto& item : json.items()) {
+    bool known = false;
+    for (const char* key : kKeys) known = known || item.key() == key;
+    if (!known) {
+      std::string keys;
+      for (const char* key : kKeys) keys += (keys.empty() ? "" : ", ") + std::string(key);
+      fail(item.key(), "unknown field (expected one of: " + keys + ")");
+    }
+  }
+
+  MaterialSpec spec;
+  spec.name = text("name").value_or("");
+  spec.preset = text("preset");
+  spec.distribution = text("distribution");
+  spec.geometry = text("geometry");
+  spec.fresnel = text("fresnel");
+  spec.alpha = number("alpha");
+  spec.roughness = number("roughness");
+  spec.f0 = color("f0");
+  spec.ior = color("ior");
+  spec.eta = color("eta");
+  spec.k = color("k");
+  spec.diffuse = color("diffuse");
+  return spec;
+}
+
+Material loadMaterial(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::invalid_argument(path.string() + ": cannot open material file");
+  nlohmann::json json;
+  try {
+    json = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw std::invalid_argument(path.string() + ": not valid JSON: " + e.what());
+  }
+  const std::string source = path.string();
+  return buildMaterial(materialSpecFromJson(json, source), [&](std::string_view field) {
+    return source + ": field '" + std::string(field) + "'";
+  });
+}
+
+nlohmann::json toJson(const Material& m) {
+  auto array = [](glm::dvec3 v) { return nlohmann::json::array({v.x, v.y, v.z}); };
+  nlohmann::json json = {
+      {"distribution", modelName(kDistributions, m.distribution)},
+      {"geometry", modelName(kGeometryTerms, m.geometry)},
+      {"fresnel", modelName(kFresnelTerms, m.fresnel)},
+      {"alpha", m.alpha},
+      {"diffuse", array(m.diffuse)},
+  };
+  if (!m.name.empty()) json["name"] = m.name;
+  switch (m.fresnel) {
+    case f64::F_SCHLICK:
+      json["f0"] = array(m.f0);
+      break;
+    case f64::F_DIELECTRIC:
+      json["ior"] = array(m.eta);
+      break;
+    case f64::F_CONDUCTOR:
+      json["eta"] = array(m.eta);
+      json["k"] = array(m.k);
+      break;
+  }
+  return json;
+}
+
+}  // namespace facet::materials
