@@ -21,7 +21,8 @@ Device& device() {
 struct FmaChain {
   explicit FmaChain(std::uint32_t elements, int iterations = 1024)
       : shader(device().createShaderModule({"fma_chain", facet::spirv::fma_chain})),
-        pipeline(device().createComputePipeline({"fma", nullptr, &shader, "main", {{"kIterations", double(iterations)}}})),
+        pipeline(
+            device().createComputePipeline({"fma", nullptr, &shader, "main", {{"kIterations", double(iterations)}}})),
         layout(pipeline.getBindGroupLayout(0)),
         values(device().createBuffer({"values", elements * 16ull, BufferUsage::Storage | BufferUsage::CopyDst})),
         group(device().createBindGroup({"fma", &layout, {{0, &values}}})),
@@ -122,8 +123,8 @@ void BM_FmaThroughputGpu(benchmark::State& state) {
     auto ns = queries.readTimestampsNs(0, 2);
     state.SetIterationTime((ns[1] - ns[0]) * 1e-9);
   }
-  state.counters["GFLOP/s"] = benchmark::Counter(16.0 * elements * iterations * 1e-9,
-                                                 benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["GFLOP/s"] =
+      benchmark::Counter(16.0 * elements * iterations * 1e-9, benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_FmaThroughputGpu)->UseManualTime()->Unit(benchmark::kMillisecond);
 
@@ -149,8 +150,8 @@ void BM_FmaThroughputNative(benchmark::State& state) {
     for (auto& th : pool) th.join();
     benchmark::DoNotOptimize(values.data());
   }
-  state.counters["GFLOP/s"] = benchmark::Counter(16.0 * elements * iterations * 1e-9,
-                                                 benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["GFLOP/s"] =
+      benchmark::Counter(16.0 * elements * iterations * 1e-9, benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_FmaThroughputNative)->Unit(benchmark::kMillisecond)->UseRealTime();
 

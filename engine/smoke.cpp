@@ -19,7 +19,8 @@ SmokeResult runSmokeJob(gpu::Device& device, std::size_t elements) {
   }
   const std::uint64_t bytes = elements * sizeof(float);
   auto xBuffer = device.createBuffer({"smoke x", bytes, BufferUsage::Storage | BufferUsage::CopyDst});
-  auto yBuffer = device.createBuffer({"smoke y", bytes, BufferUsage::Storage | BufferUsage::CopyDst | BufferUsage::CopySrc});
+  auto yBuffer =
+      device.createBuffer({"smoke y", bytes, BufferUsage::Storage | BufferUsage::CopyDst | BufferUsage::CopySrc});
   auto readback = device.createBuffer({"smoke readback", bytes, BufferUsage::MapRead | BufferUsage::CopyDst});
   device.queue().writeBuffer(xBuffer, 0, std::span<const float>(x));
   device.queue().writeBuffer(yBuffer, 0, std::span<const float>(y));

@@ -70,9 +70,7 @@ Integrals integrate(const f64::BrdfParams& params, double mu, int nodes) {
   // (symmetric about v's plane). That range is the whole circle, part of it
   // or empty as u1 grows; the u1 integral is split where it changes, so each
   // panel is smooth.
-  auto polar = [&](double u1) {
-    return f64::sample_microfacet_normal(params.d_model, alpha, {u1, 0.0});
-  };
+  auto polar = [&](double u1) { return f64::sample_microfacet_normal(params.d_model, alpha, {u1, 0.0}); };
   // Where the bound crosses target, by bisection (the D samplers run theta_m
   // up or down with u1, so the side is taken from the ends); 0 if it does
   // not cross.
@@ -94,8 +92,7 @@ Integrals integrate(const f64::BrdfParams& params, double mu, int nodes) {
     if (width <= 0) continue;
     for (int i = 0; i < nodes; ++i) {
       glm::dvec3 m_polar = polar(u_lo + width * rule.nodes[i]);
-      double phi_max =
-          std::acos(std::clamp(azimuthCosineBound(mu, sin_v, m_polar), -1.0, 1.0));
+      double phi_max = std::acos(std::clamp(azimuthCosineBound(mu, sin_v, m_polar), -1.0, 1.0));
       if (phi_max <= 0) continue;
       for (int j = 0; j < nodes; ++j) {
         double phi = phi_max * rule.nodes[j];
@@ -115,8 +112,7 @@ Integrals integrate(const f64::BrdfParams& params, double mu, int nodes) {
       glm::dvec3 l = f64::sample_direction(f64::SAMPLE_COSINE, params, n, v, u);
       double pdf = f64::direction_pdf(f64::SAMPLE_COSINE, params, n, l, v);
       if (pdf > 0)
-        sum.diffuse += rule.weights[i] * rule.weights[j] *
-                       f64::brdf_terms(params, n, l, v).diffuse * (l.z / pdf);
+        sum.diffuse += rule.weights[i] * rule.weights[j] * f64::brdf_terms(params, n, l, v).diffuse * (l.z / pdf);
     }
   }
   return sum;
@@ -125,8 +121,7 @@ Integrals integrate(const f64::BrdfParams& params, double mu, int nodes) {
 }  // namespace
 
 AlbedoResult directionalAlbedo(const f64::BrdfParams& params, double mu, int nodes) {
-  if (nodes < 2 || nodes % 2 != 0)
-    throw std::invalid_argument("albedo quadrature needs an even number of nodes >= 2");
+  if (nodes < 2 || nodes % 2 != 0) throw std::invalid_argument("albedo quadrature needs an even number of nodes >= 2");
   Integrals fine = integrate(params, mu, nodes);
   Integrals coarse = integrate(params, mu, nodes / 2);
   AlbedoResult result;

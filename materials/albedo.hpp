@@ -11,7 +11,7 @@
 namespace facet::materials {
 
 struct AlbedoResult {
-  glm::dvec3 albedo{0.0};    // specular + diffuse
+  glm::dvec3 albedo{0.0};  // specular + diffuse
   glm::dvec3 specular{0.0};
   glm::dvec3 diffuse{0.0};
   double error_estimate = 0;  // |E(n nodes) - E(n/2 nodes)|, largest channel

@@ -38,42 +38,32 @@ std::string formatNumber(double x) {
   return out.str();
 }
 
-std::string formatVector(glm::dvec3 v) {
-  return formatNumber(v.x) + "," + formatNumber(v.y) + "," + formatNumber(v.z);
-}
+std::string formatVector(glm::dvec3 v) { return formatNumber(v.x) + "," + formatNumber(v.y) + "," + formatNumber(v.z); }
 
 }  // namespace
 
-f64::BrdfParams toParams64(const Material& material) {
-  return toParams<f64::BrdfParams, glm::dvec3>(material);
-}
+f64::BrdfParams toParams64(const Material& material) { return toParams<f64::BrdfParams, glm::dvec3>(material); }
 
-f32::BrdfParams toParams32(const Material& material) {
-  return toParams<f32::BrdfParams, glm::vec3>(material);
-}
+f32::BrdfParams toParams32(const Material& material) { return toParams<f32::BrdfParams, glm::vec3>(material); }
 
 Material buildMaterial(const MaterialSpec& spec,
                        const std::function<std::string(std::string_view field)>& describeField) {
-  auto fail = [&](std::string_view field, const std::string& rule) {
-    throwFieldError(describeField(field), rule);
-  };
+  auto fail = [&](std::string_view field, const std::string& rule) { throwFieldError(describeField(field), rule); };
   auto checkRange = [&](std::string_view field, double value, double lo, double hi) {
     if (!(value >= lo && value <= hi))  // also rejects NaN
-      fail(field, "must be in [" + formatNumber(lo) + ", " + formatNumber(hi) + "], got " +
-                      formatNumber(value));
+      fail(field, "must be in [" + formatNumber(lo) + ", " + formatNumber(hi) + "], got " + formatNumber(value));
   };
   auto checkVector = [&](std::string_view field, glm::dvec3 v, double lo, bool loOpen) {
     for (int i = 0; i < 3; ++i) {
       bool ok = std::isfinite(v[i]) && (loOpen ? v[i] > lo : v[i] >= lo);
       if (!ok)
-        fail(field, std::string("every component must be finite and ") + (loOpen ? "> " : ">= ") +
-                        formatNumber(lo) + ", got " + formatVector(v));
+        fail(field, std::string("every component must be finite and ") + (loOpen ? "> " : ">= ") + formatNumber(lo) +
+                        ", got " + formatVector(v));
     }
   };
   auto checkReflectance = [&](std::string_view field, glm::dvec3 v) {
     for (int i = 0; i < 3; ++i)
-      if (!(v[i] >= 0.0 && v[i] <= 1.0))
-        fail(field, "every component must be in [0, 1], got " + formatVector(v));
+      if (!(v[i] >= 0.0 && v[i] <= 1.0)) fail(field, "every component must be in [0, 1], got " + formatVector(v));
   };
 
   Material m;
@@ -89,8 +79,8 @@ Material buildMaterial(const MaterialSpec& spec,
     if (m.name.empty()) m.name = preset->name;
   }
 
-  auto parse = [&](std::span<const ModelName> table, std::string_view field,
-                   const std::optional<std::string>& value, int fallback) {
+  auto parse = [&](std::span<const ModelName> table, std::string_view field, const std::optional<std::string>& value,
+                   int fallback) {
     if (!value) return fallback;
     try {
       return parseModel(table, field, *value);
@@ -101,8 +91,7 @@ Material buildMaterial(const MaterialSpec& spec,
   bool hasFresnelParameter = spec.f0 || spec.ior || spec.eta || spec.k || preset;
   m.distribution = parse(kDistributions, "distribution", spec.distribution, f64::D_GGX);
   m.geometry = parse(kGeometryTerms, "geometry", spec.geometry, f64::G_SMITH_GGX_CORRELATED);
-  m.fresnel = parse(kFresnelTerms, "fresnel", spec.fresnel,
-                    hasFresnelParameter ? f64::F_SCHLICK : f64::F_NONE);
+  m.fresnel = parse(kFresnelTerms, "fresnel", spec.fresnel, hasFresnelParameter ? f64::F_SCHLICK : f64::F_NONE);
 
   if (spec.alpha && spec.roughness) fail("alpha", "give alpha or roughness, not both");
   if (!spec.alpha && !spec.roughness) fail("alpha", "required (or roughness = sqrt(alpha))");
@@ -123,8 +112,7 @@ Material buildMaterial(const MaterialSpec& spec,
 
   std::string fresnelName(modelName(kFresnelTerms, m.fresnel));
   auto onlyFor = [&](std::string_view field, bool given, bool used, std::string_view users) {
-    if (given && !used)
-      fail(field, "is only used by fresnel " + std::string(users) + ", not '" + fresnelName + "'");
+    if (given && !used) fail(field, "is only used by fresnel " + std::string(users) + ", not '" + fresnelName + "'");
   };
   onlyFor("f0", spec.f0.has_value(), m.fresnel == f64::F_SCHLICK || m.fresnel == f64::F_DIELECTRIC,
           "'schlick' or 'dielectric'");
@@ -166,8 +154,7 @@ MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view s
   auto fail = [&](std::string_view field, const std::string& rule) {
     throwFieldError(std::string(source) + ": field '" + std::string(field) + "'", rule);
   };
-  if (!json.is_object())
-    throw std::invalid_argument(std::string(source) + ": a material must be a JSON object");
+  if (!json.is_object()) throw std::invalid_argument(std::string(source) + ": a material must be a JSON object");
   auto text = [&](const std::string& key) -> std::optional<std::string> {
     if (!json.contains(key)) return std::nullopt;
     if (!json[key].is_string()) fail(key, "expected a string");
@@ -182,15 +169,14 @@ MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view s
     if (!json.contains(key)) return std::nullopt;
     const nlohmann::json& value = json[key];
     if (value.is_number()) return glm::dvec3(value.get<double>());
-    if (!value.is_array() || value.size() != 3 || !value[0].is_number() ||
-        !value[1].is_number() || !value[2].is_number())
+    if (!value.is_array() || value.size() != 3 || !value[0].is_number() || !value[1].is_number() ||
+        !value[2].is_number())
       fail(key, "expected a number or an array of 3 numbers (r, g, b)");
     return glm::dvec3(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
   };
 
-  static const char* const kKeys[] = {"name", "preset", "distribution", "geometry",
-                                      "fresnel", "alpha", "roughness", "f0",
-                                      "ior", "eta", "k", "diffuse"};
+  static const char* const kKeys[] = {"name",      "preset", "distribution", "geometry", "fresnel", "alpha",
+                                      "roughness", "f0",     "ior",          "eta",      "k",       "diffuse"};
   for (const auto& item : json.items()) {
     bool known = false;
     for (const char* key : kKeys) known = known || item.key() == key;
@@ -227,9 +213,8 @@ Material loadMaterial(const std::filesystem::path& path) {
     throw std::invalid_argument(path.string() + ": not valid JSON: " + e.what());
   }
   const std::string source = path.string();
-  return buildMaterial(materialSpecFromJson(json, source), [&](std::string_view field) {
-    return source + ": field '" + std::string(field) + "'";
-  });
+  return buildMaterial(materialSpecFromJson(json, source),
+                       [&](std::string_view field) { return source + ": field '" + std::string(field) + "'"; });
 }
 
 nlohmann::json toJson(const Material& m) {

@@ -29,8 +29,7 @@ inline constexpr ModelName kGeometryTerms[] = {
     {f64::G_SMITH_GGX, "smith-ggx", "Smith separable, GGX microsurface"},
     {f64::G_SMITH_GGX_CORRELATED, "smith-ggx-correlated", "Smith height-correlated, GGX"},
     {f64::G_SMITH_BECKMANN, "smith-beckmann", "Smith separable, Beckmann microsurface"},
-    {f64::G_SMITH_BECKMANN_CORRELATED, "smith-beckmann-correlated",
-     "Smith height-correlated, Beckmann"},
+    {f64::G_SMITH_BECKMANN_CORRELATED, "smith-beckmann-correlated", "Smith height-correlated, Beckmann"},
 };
 
 inline constexpr ModelName kFresnelTerms[] = {

@@ -19,22 +19,20 @@ namespace {
 constexpr double kNegligible = 1e-20;
 constexpr double kBenign = 0.01;
 
-const double kAlphas[] = {0,    1e-4, 5e-4, 1e-3, 2e-3, 5e-3, 0.01, 0.02, 0.05, 0.1,
-                          0.2,  0.3,  0.4,  0.5,  0.6,  0.7,  0.8,  0.9,  1.0};
+const double kAlphas[] = {0,   1e-4, 5e-4, 1e-3, 2e-3, 5e-3, 0.01, 0.02, 0.05, 0.1,
+                          0.2, 0.3,  0.4,  0.5,  0.6,  0.7,  0.8,  0.9,  1.0};
 const double kAlphaBucketTops[] = {1e-3, 1e-2, 0.1, 0.5, 1.0};
-const char* const kAlphaLabels[] = {"[0, 1e-3] (clamped to 1e-3)", "(1e-3, 0.01]", "(0.01, 0.1]",
-                                    "(0.1, 0.5]", "(0.5, 1]"};
+const char* const kAlphaLabels[] = {"[0, 1e-3] (clamped to 1e-3)", "(1e-3, 0.01]", "(0.01, 0.1]", "(0.1, 0.5]",
+                                    "(0.5, 1]"};
 // The first bucket holds the grid's cosines below the horizon epsilon 1e-4
 // (1e-4 itself, rounded to float, may land on either side).
 const double kCosBucketTops[] = {9.9e-5, 1e-3, 1e-2, 0.1, 1.0};
-const char* const kCosLabels[] = {"< 1e-4 (horizon)", "[1e-4, 1e-3]", "(1e-3, 0.01]",
-                                  "(0.01, 0.1]", "(0.1, 1]"};
+const char* const kCosLabels[] = {"< 1e-4 (horizon)", "[1e-4, 1e-3]", "(1e-3, 0.01]", "(0.01, 0.1]", "(0.1, 1]"};
 const double kPhiDegrees[] = {0, 90, 179.9, 180};
 
 // Cosines of the sweep: both signs, 0, and a geometric run into the horizon.
 std::vector<double> cosines() {
-  std::vector<double> positive = {1,    0.9,  0.7,    0.5,  0.3,  0.1,  0.03,
-                                  1e-2, 1e-3, 2.0e-4, 1e-4, 5e-5, 1e-6, 1e-8};
+  std::vector<double> positive = {1, 0.9, 0.7, 0.5, 0.3, 0.1, 0.03, 1e-2, 1e-3, 2.0e-4, 1e-4, 5e-5, 1e-6, 1e-8};
   std::vector<double> all = {0};
   for (double c : positive) {
     all.push_back(c);
@@ -79,11 +77,9 @@ PrecisionReport precisionSweep() {
   PrecisionReport report;
   for (const char* label : kAlphaLabels) report.alpha_buckets.push_back(label);
   for (const char* label : kCosLabels) report.cos_buckets.push_back(label);
-  report.by_alpha_and_cos.assign(std::size(kAlphaLabels),
-                                 std::vector<PrecisionCell>(std::size(kCosLabels)));
+  report.by_alpha_and_cos.assign(std::size(kAlphaLabels), std::vector<PrecisionCell>(std::size(kCosLabels)));
   auto addParts = [&](const char* kind, std::span<const ModelName> table) {
-    for (const ModelName& model : table)
-      report.by_part.push_back({kind, std::string(model.name), {}, {}});
+    for (const ModelName& model : table) report.by_part.push_back({kind, std::string(model.name), {}, {}});
   };
   addParts("D", kDistributions);
   addParts("G", kGeometryTerms);
@@ -100,10 +96,10 @@ PrecisionReport precisionSweep() {
   const std::vector<double> cos_grid = cosines();
 
   f64::BrdfParams p64;
-  p64.f0 = glm::dvec3(1.00, 0.71, 0.29);     // gold, as printed in the course
-  p64.eta = glm::dvec3(0.18, 0.42, 1.37);    // gold-like complex index: eta
-  p64.k = glm::dvec3(3.42, 2.35, 1.77);      // and extinction k
-  p64.diffuse = glm::dvec3(0);               // so the specular error is not diluted
+  p64.f0 = glm::dvec3(1.00, 0.71, 0.29);   // gold, as printed in the course
+  p64.eta = glm::dvec3(0.18, 0.42, 1.37);  // gold-like complex index: eta
+  p64.k = glm::dvec3(3.42, 2.35, 1.77);    // and extinction k
+  p64.diffuse = glm::dvec3(0);             // so the specular error is not diluted
   for (const ModelName& d : kDistributions) {
     for (const ModelName& g : kGeometryTerms) {
       for (const ModelName& f : kFresnelTerms) {
@@ -149,14 +145,12 @@ PrecisionReport precisionSweep() {
                 double min_cos = std::min(cos_l, cos_v);
                 auto where = [&] {
                   char text[240];
-                  std::snprintf(text, sizeof text,
-                                "%s/%s/%s alpha=%g n.l=%g n.v=%g phi=%g: f.r float %.7g double %.7g",
-                                d.name.data(), g.name.data(), f.name.data(), alpha, cos_l, cos_v,
-                                phi_degrees, double(f32v.x), f64v.x);
+                  std::snprintf(text, sizeof text, "%s/%s/%s alpha=%g n.l=%g n.v=%g phi=%g: f.r float %.7g double %.7g",
+                                d.name.data(), g.name.data(), f.name.data(), alpha, cos_l, cos_v, phi_degrees,
+                                double(f32v.x), f64v.x);
                   return std::string(text);
                 };
-                record(report.by_alpha_and_cos[bucketOf(alpha, kAlphaBucketTops)]
-                                              [bucketOf(min_cos, kCosBucketTops)],
+                record(report.by_alpha_and_cos[bucketOf(alpha, kAlphaBucketTops)][bucketOf(min_cos, kCosBucketTops)],
                        error, where);
                 bool benign = alpha >= kBenign && min_cos >= kBenign;
                 for (PrecisionReport::Part* entry : parts) {
@@ -176,8 +170,8 @@ PrecisionReport precisionSweep() {
 std::string toMarkdown(const PrecisionReport& report) {
   std::ostringstream out;
   out << std::scientific << std::setprecision(1);
-  out << "Evaluations: " << report.evaluations << "; non-finite values or pdfs: float "
-      << report.nonfinite_float << ", double " << report.nonfinite_double << ".\n\n";
+  out << "Evaluations: " << report.evaluations << "; non-finite values or pdfs: float " << report.nonfinite_float
+      << ", double " << report.nonfinite_double << ".\n\n";
   out << "Max relative error of f, float vs double, by alpha (rows) and min(n.l, n.v) "
          "(columns):\n\n| alpha \\ min(n.l, n.v) |";
   for (const std::string& label : report.cos_buckets) out << " " << label << " |";
@@ -186,8 +180,7 @@ std::string toMarkdown(const PrecisionReport& report) {
   out << "\n";
   for (size_t a = 0; a < report.alpha_buckets.size(); ++a) {
     out << "| " << report.alpha_buckets[a] << " |";
-    for (const PrecisionCell& cell : report.by_alpha_and_cos[a])
-      out << " " << cell.max_relative_error << " |";
+    for (const PrecisionCell& cell : report.by_alpha_and_cos[a]) out << " " << cell.max_relative_error << " |";
     out << "\n";
   }
   out << "\nMax relative error by model part, over the whole sweep and over alpha >= 0.01, "
@@ -201,9 +194,8 @@ std::string toMarkdown(const PrecisionReport& report) {
 
 nlohmann::json toJson(const PrecisionReport& report) {
   auto cell = [](const PrecisionCell& c) {
-    return nlohmann::json{{"max_relative_error", c.max_relative_error},
-                          {"evaluations", c.evaluations},
-                          {"worst_case", c.worst_case}};
+    return nlohmann::json{
+        {"max_relative_error", c.max_relative_error}, {"evaluations", c.evaluations}, {"worst_case", c.worst_case}};
   };
   nlohmann::json grid = nlohmann::json::array();
   for (size_t a = 0; a < report.alpha_buckets.size(); ++a)
@@ -213,8 +205,7 @@ nlohmann::json toJson(const PrecisionReport& report) {
                       {"cell", cell(report.by_alpha_and_cos[a][c])}});
   nlohmann::json parts = nlohmann::json::array();
   for (const PrecisionReport::Part& p : report.by_part)
-    parts.push_back(
-        {{"kind", p.kind}, {"name", p.name}, {"all", cell(p.all)}, {"benign", cell(p.benign)}});
+    parts.push_back({{"kind", p.kind}, {"name", p.name}, {"all", cell(p.all)}, {"benign", cell(p.benign)}});
   return {{"evaluations", report.evaluations},
           {"nonfinite_float", report.nonfinite_float},
           {"nonfinite_double", report.nonfinite_double},

@@ -21,8 +21,8 @@ struct PrecisionCell {
 
 struct PrecisionReport {
   long evaluations = 0;
-  long nonfinite_float = 0;   // NaN or Inf in any value or pdf, float
-  long nonfinite_double = 0;  // same, double
+  long nonfinite_float = 0;                // NaN or Inf in any value or pdf, float
+  long nonfinite_double = 0;               // same, double
   std::vector<std::string> alpha_buckets;  // row labels of by_alpha_and_cos
   std::vector<std::string> cos_buckets;    // column labels, by min(n.l, n.v)
   std::vector<std::vector<PrecisionCell>> by_alpha_and_cos;

@@ -33,6 +33,9 @@ cmake -S "$here" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build "$build" --parallel "$(nproc)"
 
 case "$mode" in
-  main) "$build/facet" info ;;
+  main)
+    "$build/facet" info
+    "$build/facet" render "$here/scenes/examples/preview.json" -o "$build/preview.exr" --png "$build/preview.png"
+    ;;
   test) ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)" ;;
 esac

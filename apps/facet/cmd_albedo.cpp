@@ -26,8 +26,7 @@ void runAlbedo(const AlbedoOptions& o) {
   if (mu < 0 || mu > 1) throw std::invalid_argument("--mu: must be in [0, 1] (cos theta_v)");
   if (o.nodes < 2 || o.nodes % 2 != 0 || o.nodes > 4096)
     throw std::invalid_argument("--nodes: must be even, in [2, 4096]");
-  materials::AlbedoResult r =
-      materials::directionalAlbedo(materials::toParams64(material), mu, o.nodes);
+  materials::AlbedoResult r = materials::directionalAlbedo(materials::toParams64(material), mu, o.nodes);
   // Without Fresnel or colored parameters all channels agree; otherwise the
   // scalar is their mean and the channels are in albedo_rgb.
   double albedo = (r.albedo.x + r.albedo.y + r.albedo.z) / 3;
@@ -44,19 +43,19 @@ void runAlbedo(const AlbedoOptions& o) {
     std::printf("%s\n", out.dump(2).c_str());
     return;
   }
-  std::printf("E(mu = %g) = %.9f   rgb %.9f %.9f %.9f   (specular %.9f %.9f %.9f, diffuse %.9f %.9f %.9f)\n",
-              mu, albedo, r.albedo.x, r.albedo.y, r.albedo.z, r.specular.x, r.specular.y,
-              r.specular.z, r.diffuse.x, r.diffuse.y, r.diffuse.z);
-  std::printf("estimated error %.2g (|E with %d nodes - E with %d|, Gauss-Legendre per dimension)\n",
-              r.error_estimate, r.nodes, r.nodes / 2);
+  std::printf("E(mu = %g) = %.9f   rgb %.9f %.9f %.9f   (specular %.9f %.9f %.9f, diffuse %.9f %.9f %.9f)\n", mu,
+              albedo, r.albedo.x, r.albedo.y, r.albedo.z, r.specular.x, r.specular.y, r.specular.z, r.diffuse.x,
+              r.diffuse.y, r.diffuse.z);
+  std::printf("estimated error %.2g (|E with %d nodes - E with %d|, Gauss-Legendre per dimension)\n", r.error_estimate,
+              r.nodes, r.nodes / 2);
 }
 
 }  // namespace
 
 void addAlbedoCommand(CLI::App& app) {
   auto options = std::make_shared<AlbedoOptions>();
-  auto* command = app.add_subcommand(
-      "albedo", "Directional albedo E(mu) = integral of f(l, v)(n.l) dl, F = 1 unless given");
+  auto* command =
+      app.add_subcommand("albedo", "Directional albedo E(mu) = integral of f(l, v)(n.l) dl, F = 1 unless given");
   addMaterialOptions(*command, options->material);
   command->add_option("--mu", options->mu, "cos theta_v in [0, 1]")->required();
   command->add_option("--nodes", options->nodes, "quadrature nodes per dimension (default 256)");

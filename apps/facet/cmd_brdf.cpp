@@ -42,9 +42,16 @@ void runBrdf(const BrdfOptions& o) {
   auto rgb = [](glm::dvec3 c) { return nlohmann::json::array({c.x, c.y, c.z}); };
   nlohmann::json out = {
       {"material", materials::toJson(material)},
-      {"theta_l", theta_l}, {"theta_v", theta_v}, {"phi", phi},
-      {"f", rgb(t.value)}, {"specular", rgb(t.specular)}, {"diffuse", rgb(t.diffuse)},
-      {"D", t.D}, {"G", t.G}, {"F", rgb(t.F)}, {"pdf", pdf},
+      {"theta_l", theta_l},
+      {"theta_v", theta_v},
+      {"phi", phi},
+      {"f", rgb(t.value)},
+      {"specular", rgb(t.specular)},
+      {"diffuse", rgb(t.diffuse)},
+      {"D", t.D},
+      {"G", t.G},
+      {"F", rgb(t.F)},
+      {"pdf", pdf},
   };
   if (o.json) {
     std::printf("%s\n", out.dump(2).c_str());
@@ -52,27 +59,24 @@ void runBrdf(const BrdfOptions& o) {
   }
   std::printf("material  %s\n", out["material"].dump().c_str());
   std::printf("angles    theta_l %g, theta_v %g, phi %g degrees\n", theta_l, theta_v, phi);
-  std::printf("f         %.9g %.9g %.9g   (specular %.9g %.9g %.9g + diffuse %.9g %.9g %.9g)\n",
-              t.value.x, t.value.y, t.value.z, t.specular.x, t.specular.y, t.specular.z,
-              t.diffuse.x, t.diffuse.y, t.diffuse.z);
-  std::printf("D         %.9g\nG         %.9g\nF         %.9g %.9g %.9g\n", t.D, t.G, t.F.x, t.F.y,
-              t.F.z);
+  std::printf("f         %.9g %.9g %.9g   (specular %.9g %.9g %.9g + diffuse %.9g %.9g %.9g)\n", t.value.x, t.value.y,
+              t.value.z, t.specular.x, t.specular.y, t.specular.z, t.diffuse.x, t.diffuse.y, t.diffuse.z);
+  std::printf("D         %.9g\nG         %.9g\nF         %.9g %.9g %.9g\n", t.D, t.G, t.F.x, t.F.y, t.F.z);
   for (const materials::ModelName& technique : materials::kSamplingTechniques)
-    std::printf("pdf %-12s %.9g  (%s)\n", technique.name.data(),
-                pdf[std::string(technique.name)].get<double>(), technique.description.data());
+    std::printf("pdf %-12s %.9g  (%s)\n", technique.name.data(), pdf[std::string(technique.name)].get<double>(),
+                technique.description.data());
 }
 
 }  // namespace
 
 void addBrdfCommand(CLI::App& app) {
   auto options = std::make_shared<BrdfOptions>();
-  auto* command = app.add_subcommand(
-      "brdf", "Evaluate f(l, v) = F G D / (4 (n.l)(n.v)) + c_diff/pi with its factors and pdfs");
+  auto* command =
+      app.add_subcommand("brdf", "Evaluate f(l, v) = F G D / (4 (n.l)(n.v)) + c_diff/pi with its factors and pdfs");
   addMaterialOptions(*command, options->material);
   command->add_option("--theta-l", options->theta_l, "angle of l from n, degrees (default 45)");
   command->add_option("--theta-v", options->theta_v, "angle of v from n, degrees (default 45)");
-  command->add_option("--phi", options->phi,
-                      "azimuth of v relative to l, degrees (default 180: mirror plane)");
+  command->add_option("--phi", options->phi, "azimuth of v relative to l, degrees (default 180: mirror plane)");
   command->add_flag("--json", options->json, "machine-readable output");
   command->callback([options] { runBrdf(*options); });
 }

@@ -13,8 +13,7 @@ namespace facet::cli {
 void addBrdfPrecisionCommand(CLI::App& app) {
   auto json = std::make_shared<bool>(false);
   auto* command = app.add_subcommand(
-      "brdf-precision",
-      "Float vs double over a dense sweep of every D x G x F (the table in docs/shading.md)");
+      "brdf-precision", "Float vs double over a dense sweep of every D x G x F (the table in docs/shading.md)");
   command->add_flag("--json", *json, "machine-readable output");
   command->callback([json] {
     materials::PrecisionReport report = materials::precisionSweep();

@@ -50,8 +50,10 @@ void runInfo(const InfoOptions& options) {
 
 void addInfoCommand(CLI::App& app) {
   auto options = std::make_shared<InfoOptions>();
-  auto* command = app.add_subcommand("info", "List Vulkan adapters, show the chosen one's limits, run a checked compute job");
-  command->add_option("--adapter", options->adapter, "Adapter name (substring); default: $FACET_ADAPTER, else a GPU, else lavapipe");
+  auto* command =
+      app.add_subcommand("info", "List Vulkan adapters, show the chosen one's limits, run a checked compute job");
+  command->add_option("--adapter", options->adapter,
+                      "Adapter name (substring); default: $FACET_ADAPTER, else a GPU, else lavapipe");
   command->callback([options] { runInfo(*options); });
 }
 

@@ -64,8 +64,8 @@ void runGnuplot(std::string script, const std::string& data, const fs::path& out
   partial += ".partial";
   std::ofstream(data_file) << data;
   auto quote = [](const fs::path& p) { return "'" + p.string() + "'"; };
-  for (auto [placeholder, value] : {std::pair{std::string("DATA"), quote(data_file)},
-                                    std::pair{std::string("OUTPUT"), quote(partial)}})
+  for (auto [placeholder, value] :
+       {std::pair{std::string("DATA"), quote(data_file)}, std::pair{std::string("OUTPUT"), quote(partial)}})
     for (size_t at; (at = script.find(placeholder)) != std::string::npos;)
       script.replace(at, placeholder.size(), value);
   std::ofstream(script_file) << "set terminal " << terminal << "\n" << script;
@@ -77,10 +77,8 @@ void runGnuplot(std::string script, const std::string& data, const fs::path& out
   int status = 0;
   if (spawn_error == 0) waitpid(pid, &status, 0);
   fs::remove_all(work);
-  if (spawn_error == ENOENT)
-    throw std::runtime_error("gnuplot not found on PATH; install it (Debian: gnuplot-nox)");
-  if (spawn_error != 0)
-    throw std::runtime_error(std::string("cannot start gnuplot: ") + std::strerror(spawn_error));
+  if (spawn_error == ENOENT) throw std::runtime_error("gnuplot not found on PATH; install it (Debian: gnuplot-nox)");
+  if (spawn_error != 0) throw std::runtime_error(std::string("cannot start gnuplot: ") + std::strerror(spawn_error));
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !fs::exists(partial)) {
     fs::remove(partial);
     throw std::runtime_error("gnuplot failed (status " + std::to_string(status) + ")");
@@ -110,12 +108,11 @@ void plotLobe(const PlotOptions& o) {
   extent = extent > 0 ? extent * 1.1 : 1;
   std::ostringstream script;
   script << "set output OUTPUT\n"
-         << "set title \"f(l,v) (n.l) in the plane of incidence, theta_v = " << theta_v
-         << " deg\\n" << describe(material) << "\" noenhanced\n"
+         << "set title \"f(l,v) (n.l) in the plane of incidence, theta_v = " << theta_v << " deg\\n"
+         << describe(material) << "\" noenhanced\n"
          << "set size ratio -1\nset grid\nset key top right\n"
          << "set xrange [" << -extent << ":" << extent << "]\nset yrange [0:" << extent << "]\n"
-         << "set arrow from " << v.x * extent << "," << v.z * extent
-         << ",0 to 0,0 lc rgb 'gray40' lw 2\n"
+         << "set arrow from " << v.x * extent << "," << v.z * extent << ",0 to 0,0 lc rgb 'gray40' lw 2\n"
          << "plot DATA using 1:2 with lines lw 2 lc rgb '#c0392b' title 'f (n.l), mean of RGB'\n";
   runGnuplot(script.str(), data.str(), o.out);
 }
@@ -141,20 +138,18 @@ void plotAlbedo(const PlotOptions& o) {
     p.alpha = alpha;
     for (int i = 0; i <= 45; ++i) {
       double theta = std::min(2.0 * i, 89.9);
-      materials::AlbedoResult r =
-          materials::directionalAlbedo(p, std::cos(theta * std::numbers::pi / 180), 64);
+      materials::AlbedoResult r = materials::directionalAlbedo(p, std::cos(theta * std::numbers::pi / 180), 64);
       data << theta << " " << (r.albedo.x + r.albedo.y + r.albedo.z) / 3 << "\n";
     }
     data << "\n\n";  // gnuplot data block separator
   }
   script << "set output OUTPUT\n"
-         << "set title \"directional albedo E(theta_v)\\n" << describe(material)
-         << "\" noenhanced\n"
+         << "set title \"directional albedo E(theta_v)\\n"
+         << describe(material) << "\" noenhanced\n"
          << "set xlabel 'theta_v (degrees)' noenhanced\nset ylabel 'E'\nset grid\n"
          << "set xrange [0:90]\nset yrange [0:*]\nset key bottom left\nplot ";
   for (size_t k = 0; k < alphas.size(); ++k)
-    script << (k ? ", " : "") << "DATA index " << k << " using 1:2 with lines lw 2 title 'alpha "
-           << alphas[k] << "'";
+    script << (k ? ", " : "") << "DATA index " << k << " using 1:2 with lines lw 2 title 'alpha " << alphas[k] << "'";
   script << "\n";
   runGnuplot(script.str(), data.str(), o.out);
 }

@@ -12,8 +12,7 @@ namespace facet::cli {
 
 void addPresetsCommand(CLI::App& app) {
   auto json = std::make_shared<bool>(false);
-  auto* command = app.add_subcommand(
-      "presets", "List the material presets (F(0) tables of the SIGGRAPH 2010 course)");
+  auto* command = app.add_subcommand("presets", "List the material presets (F(0) tables of the SIGGRAPH 2010 course)");
   command->add_flag("--json", *json, "machine-readable output");
   command->callback([json] {
     auto rgb = [](glm::dvec3 c) { return nlohmann::json::array({c.x, c.y, c.z}); };
@@ -32,13 +31,13 @@ void addPresetsCommand(CLI::App& app) {
       std::printf("%s\n", list.dump(2).c_str());
       return;
     }
-    std::printf("%-18s %-22s %-6s %-16s %-16s %-16s %s\n", "name", "label", "kind", "F0 linear",
-                "F0 sRGB printed", "F0 sRGB (ours)", "ior");
+    std::printf("%-18s %-22s %-6s %-16s %-16s %-16s %s\n", "name", "label", "kind", "F0 linear", "F0 sRGB printed",
+                "F0 sRGB (ours)", "ior");
     for (const materials::Preset& p : materials::presets()) {
       glm::dvec3 srgb = materials::linearToSrgb(p.f0_linear);
-      std::printf("%-18s %-22s %-6s %.2f,%.2f,%.2f   %.2f,%.2f,%.2f   %.3f,%.3f,%.3f", p.name.data(),
-                  p.label.data(), p.metal ? "metal" : "insul", p.f0_linear.x, p.f0_linear.y,
-                  p.f0_linear.z, p.f0_srgb.x, p.f0_srgb.y, p.f0_srgb.z, srgb.x, srgb.y, srgb.z);
+      std::printf("%-18s %-22s %-6s %.2f,%.2f,%.2f   %.2f,%.2f,%.2f   %.3f,%.3f,%.3f", p.name.data(), p.label.data(),
+                  p.metal ? "metal" : "insul", p.f0_linear.x, p.f0_linear.y, p.f0_linear.z, p.f0_srgb.x, p.f0_srgb.y,
+                  p.f0_srgb.z, srgb.x, srgb.y, srgb.z);
       if (!p.metal) std::printf("  %.3f", materials::iorFromF0(p.f0_linear.x));
       std::printf("\n");
     }

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   CLI::App app{"facet: physically based materials on subdivision surfaces, GPU and CPU"};
   app.require_subcommand(1);
   facet::cli::addInfoCommand(app);
+  facet::cli::addRenderCommand(app);
   facet::cli::addBrdfCommand(app);
   facet::cli::addAlbedoCommand(app);
   facet::cli::addPresetsCommand(app);

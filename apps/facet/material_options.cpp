@@ -19,8 +19,10 @@ glm::dvec3 parseColor(const std::string& flag, const std::string& text) {
   while (std::getline(stream, item, ',')) values.push_back(parseNumber(flag, item));
   if (values.size() == 1) return glm::dvec3(values[0]);
   if (values.size() != 3)
-    throw std::invalid_argument(flag + ": expected one number or three comma-separated numbers "
-                                "r,g,b, got '" + text + "'");
+    throw std::invalid_argument(flag +
+                                ": expected one number or three comma-separated numbers "
+                                "r,g,b, got '" +
+                                text + "'");
   return {values[0], values[1], values[2]};
 }
 
@@ -48,12 +50,12 @@ double parseNumber(const std::string& flag, const std::string& text) {
 
 void addMaterialOptions(CLI::App& command, MaterialOptions& o) {
   using materials::modelList;
-  command.add_option("--d", o.d, "normal distribution: " + modelList(materials::kDistributions) +
-                                     " (default ggx)");
-  command.add_option("--g", o.g, "shadowing-masking: " + modelList(materials::kGeometryTerms) +
-                                     " (default smith-ggx-correlated)");
-  command.add_option("--f", o.f, "Fresnel: " + modelList(materials::kFresnelTerms) +
-                                     " (default schlick if F(0) or a preset is given, else none)");
+  command.add_option("--d", o.d, "normal distribution: " + modelList(materials::kDistributions) + " (default ggx)");
+  command.add_option("--g", o.g,
+                     "shadowing-masking: " + modelList(materials::kGeometryTerms) + " (default smith-ggx-correlated)");
+  command.add_option(
+      "--f", o.f,
+      "Fresnel: " + modelList(materials::kFresnelTerms) + " (default schlick if F(0) or a preset is given, else none)");
   command.add_option("--f0", o.f0, "F(0) = c_spec for schlick (or to derive an ior): x or r,g,b");
   command.add_option("--ior", o.ior, "index of refraction for dielectric: x or r,g,b");
   command.add_option("--eta", o.eta, "conductor: real part of the complex index, r,g,b");
@@ -67,8 +69,7 @@ void addMaterialOptions(CLI::App& command, MaterialOptions& o) {
 
 materials::Material resolveMaterial(const MaterialOptions& o) {
   if (o.material_file) {
-    if (o.d || o.g || o.f || o.f0 || o.ior || o.eta || o.k || o.alpha || o.roughness || o.diffuse ||
-        o.preset)
+    if (o.d || o.g || o.f || o.f0 || o.ior || o.eta || o.k || o.alpha || o.roughness || o.diffuse || o.preset)
       throw std::invalid_argument("--material: cannot be combined with material flags");
     return materials::loadMaterial(*o.material_file);
   }

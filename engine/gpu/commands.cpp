@@ -15,7 +15,8 @@ QuerySetState::~QuerySetState() {
 void CommandRecording::requireRecording(const char* operation) const {
   auto name = describe("command encoder", label);
   if (finished) throw Error(name + ": " + operation + " after finish()");
-  if (passOpen) throw Error(name + ": " + operation + " while " + describe("compute pass", passLabel) + " is open; end() it first");
+  if (passOpen)
+    throw Error(name + ": " + operation + " while " + describe("compute pass", passLabel) + " is open; end() it first");
 }
 
 void CommandRecording::orderAccess(const std::vector<const BufferState*>& reads,
@@ -29,10 +30,10 @@ void CommandRecording::orderAccess(const std::vector<const BufferState*>& reads,
     barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_UNIFORM_READ_BIT |
                             VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT |
                             VK_ACCESS_INDIRECT_COMMAND_READ_BIT;
-    vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
-                             VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
-                         0, 1, &barrier, 0, nullptr, 0, nullptr);
+    vkCmdPipelineBarrier(
+        commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT, 0,
+        1, &barrier, 0, nullptr, 0, nullptr);
     writtenSinceBarrier.clear();
     readSinceBarrier.clear();
   }
@@ -45,7 +46,8 @@ namespace {
 void checkRange(const std::string& what, const Buffer& buffer, BufferUsage usage, std::uint64_t offset,
                 std::uint64_t size) {
   auto name = what + " " + describe("buffer", buffer.label());
-  if (!has(buffer.usage(), usage)) throw Error(name + ": needs usage " + toString(usage) + ", has " + toString(buffer.usage()));
+  if (!has(buffer.usage(), usage))
+    throw Error(name + ": needs usage " + toString(usage) + ", has " + toString(buffer.usage()));
   if (offset % 4 != 0 || size % 4 != 0) throw Error(name + ": offset and size must be multiples of 4 bytes");
   if (offset > buffer.size() || size > buffer.size() - offset)
     throw Error(name + ": range [" + std::to_string(offset) + ", " + std::to_string(offset + size) +
@@ -75,7 +77,8 @@ void prepareDispatch(CommandRecording& r, std::vector<const BufferState*>& reads
     }
   }
   for (std::size_t i = 0; i < groups.size(); ++i) {
-    for (const BoundBuffer& bound : r.bindGroups[i]->buffers) (bound.written ? writes : reads).push_back(bound.buffer.get());
+    for (const BoundBuffer& bound : r.bindGroups[i]->buffers)
+      (bound.written ? writes : reads).push_back(bound.buffer.get());
   }
 }
 
@@ -126,8 +129,8 @@ void CommandEncoder::copyBufferToBuffer(const Buffer& source, std::uint64_t sour
   r.requireRecording("copyBufferToBuffer");
   detail::checkRange("copyBufferToBuffer source", source, BufferUsage::CopySrc, sourceOffset, size);
   detail::checkRange("copyBufferToBuffer destination", destination, BufferUsage::CopyDst, destinationOffset, size);
-  if (source.state() == destination.state() &&
-      sourceOffset < destinationOffset + size && destinationOffset < sourceOffset + size)
+  if (source.state() == destination.state() && sourceOffset < destinationOffset + size &&
+      destinationOffset < sourceOffset + size)
     throw Error("copyBufferToBuffer within " + detail::describe("buffer", source.label()) + ": ranges overlap");
   if (size == 0) return;
   r.orderAccess({source.state().get()}, {destination.state().get()});
@@ -140,7 +143,8 @@ void CommandEncoder::copyBufferToBuffer(const Buffer& source, std::uint64_t sour
 void CommandEncoder::clearBuffer(const Buffer& buffer, std::uint64_t offset, std::uint64_t size) {
   detail::CommandRecording& r = *state_;
   r.requireRecording("clearBuffer");
-  if (offset > buffer.size()) throw Error("clearBuffer " + detail::describe("buffer", buffer.label()) + ": offset past the end");
+  if (offset > buffer.size())
+    throw Error("clearBuffer " + detail::describe("buffer", buffer.label()) + ": offset past the end");
   if (size == kWholeSize) size = buffer.size() - offset;
   detail::checkRange("clearBuffer", buffer, BufferUsage::CopyDst, offset, size);
   if (size == 0) return;
@@ -172,7 +176,8 @@ ComputePassEncoder::~ComputePassEncoder() {
 void ComputePassEncoder::setPipeline(const ComputePipeline& pipeline) {
   detail::CommandRecording& r = *recording_;
   if (!r.passOpen) throw Error(detail::describe("compute pass", r.passLabel) + ": setPipeline after end()");
-  if (!pipeline) throw Error(detail::describe("compute pass", r.passLabel) + ": setPipeline with a moved-from pipeline");
+  if (!pipeline)
+    throw Error(detail::describe("compute pass", r.passLabel) + ": setPipeline with a moved-from pipeline");
   r.pipeline = pipeline.state();
   vkCmdBindPipeline(r.commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, r.pipeline->pipeline);
   r.resources.push_back(r.pipeline);
@@ -187,15 +192,16 @@ void ComputePassEncoder::setBindGroup(std::uint32_t index, const BindGroup& grou
   const auto& groups = r.pipeline->layout->groups;
   const auto& state = group.state();
   if (index >= groups.size())
-    throw Error(pass + ": setBindGroup(" + std::to_string(index) + "): " +
-                detail::describe("compute pipeline", r.pipeline->label) + " has " + std::to_string(groups.size()) +
-                " bind group(s)");
+    throw Error(pass + ": setBindGroup(" + std::to_string(index) +
+                "): " + detail::describe("compute pipeline", r.pipeline->label) + " has " +
+                std::to_string(groups.size()) + " bind group(s)");
   const auto& expected = *groups[index];
   const auto& given = *state->layout;
   auto sameEntries = [](const auto& a, const auto& b) {
     if (a.size() != b.size()) return false;
     for (std::size_t i = 0; i < a.size(); ++i)
-      if (a[i].binding != b[i].binding || a[i].type != b[i].type || a[i].minBindingSize != b[i].minBindingSize) return false;
+      if (a[i].binding != b[i].binding || a[i].type != b[i].type || a[i].minBindingSize != b[i].minBindingSize)
+        return false;
     return true;
   };
   if (&expected != &given && !sameEntries(expected.entries, given.entries))
@@ -278,10 +284,10 @@ std::vector<double> QuerySet::readTimestampsNs(std::uint32_t first, std::uint32_
                   " was never written by submitted work");
   }
   std::vector<std::uint64_t> ticks(count);
-  detail::check(vkGetQueryPoolResults(state_->device->device, state_->pool, first, count,
-                                      ticks.size() * sizeof(std::uint64_t), ticks.data(), sizeof(std::uint64_t),
-                                      VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-                "vkGetQueryPoolResults");
+  detail::check(
+      vkGetQueryPoolResults(state_->device->device, state_->pool, first, count, ticks.size() * sizeof(std::uint64_t),
+                            ticks.data(), sizeof(std::uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+      "vkGetQueryPoolResults");
   std::vector<double> ns(count);
   for (std::uint32_t i = 0; i < count; ++i) ns[i] = double(ticks[i]) * state_->device->limits().timestampPeriodNs;
   return ns;

@@ -46,8 +46,7 @@ void checkBufferDescriptor(const BufferDescriptor& d, const Limits& limits) {
   const auto allowedWith = [&](BufferUsage mapping, BufferUsage partner) {
     std::uint32_t others = std::uint32_t(d.usage) & ~std::uint32_t(mapping | partner);
     if (has(d.usage, mapping) && others != 0)
-      fail("usage " + toString(d.usage) + ": " + toString(mapping) + " may only be combined with " +
-           toString(partner));
+      fail("usage " + toString(d.usage) + ": " + toString(mapping) + " may only be combined with " + toString(partner));
   };
   allowedWith(BufferUsage::MapRead, BufferUsage::CopyDst);
   allowedWith(BufferUsage::MapWrite, BufferUsage::CopySrc);
@@ -153,8 +152,8 @@ std::shared_ptr<BufferState> createBufferState(const std::shared_ptr<DeviceState
 
 std::string toString(BufferUsage usage) {
   static constexpr std::pair<BufferUsage, const char*> kNames[] = {
-      {BufferUsage::MapRead, "MapRead"}, {BufferUsage::MapWrite, "MapWrite"}, {BufferUsage::CopySrc, "CopySrc"},
-      {BufferUsage::CopyDst, "CopyDst"}, {BufferUsage::Uniform, "Uniform"},   {BufferUsage::Storage, "Storage"},
+      {BufferUsage::MapRead, "MapRead"},  {BufferUsage::MapWrite, "MapWrite"}, {BufferUsage::CopySrc, "CopySrc"},
+      {BufferUsage::CopyDst, "CopyDst"},  {BufferUsage::Uniform, "Uniform"},   {BufferUsage::Storage, "Storage"},
       {BufferUsage::Indirect, "Indirect"}};
   std::string names;
   for (auto [bit, name] : kNames) {
@@ -278,8 +277,8 @@ void Queue::writeBuffer(const Buffer& buffer, std::uint64_t offset, const void* 
   VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
   barrier.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-  vkCmdPipelineBarrier(d.pendingUploads, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1,
-                       &barrier, 0, nullptr, 0, nullptr);
+  vkCmdPipelineBarrier(d.pendingUploads, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &barrier,
+                       0, nullptr, 0, nullptr);
   VkBufferCopy region{0, offset, size};
   vkCmdCopyBuffer(d.pendingUploads, staging->buffer, buffer.state()->buffer, 1, &region);
   d.pendingUploadResources.push_back(staging);

@@ -58,8 +58,7 @@ constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
 VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT,
                                                    VkDebugUtilsMessageTypeFlagsEXT,
-                                                   const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                                   void* user) {
+                                                   const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
   auto* state = static_cast<InstanceState*>(user);
   std::string message = data && data->pMessage ? data->pMessage : "(no message)";
   std::fprintf(stderr, "facet: Vulkan validation: %s\n", message.c_str());
@@ -88,7 +87,8 @@ std::string noDriverMessage(const std::string& what) {
                         "). Install Mesa's software driver with `apt-get install mesa-vulkan-drivers` "
                         "or a GPU vendor's driver";
   for (const char* var : {"VK_DRIVER_FILES", "VK_ICD_FILENAMES"}) {
-    if (const char* value = std::getenv(var)) message += std::string("; ") + var + "=" + value + " restricts the search";
+    if (const char* value = std::getenv(var))
+      message += std::string("; ") + var + "=" + value + " restricts the search";
   }
   return message;
 }
@@ -231,7 +231,8 @@ Instance Instance::create(const InstanceDescriptor& descriptor) {
     info.pNext = &messengerInfo;  // also catches messages from vkCreate/DestroyInstance
   }
   VkResult result = vkCreateInstance(&info, nullptr, &state->instance);
-  if (result == VK_ERROR_INCOMPATIBLE_DRIVER) throw Error(noDriverMessage("vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER"));
+  if (result == VK_ERROR_INCOMPATIBLE_DRIVER)
+    throw Error(noDriverMessage("vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER"));
   check(result, "vkCreateInstance");
 
   if (withValidation) {

@@ -85,8 +85,8 @@ std::shared_ptr<PipelineLayoutState> createPipelineLayoutState(
 }
 
 // WebGPU's layout: "auto" — one bind group layout per descriptor set the shader uses.
-std::shared_ptr<PipelineLayoutState> deriveLayout(const std::shared_ptr<DeviceState>& device,
-                                                  const std::string& label, const spirv::Reflection& reflection) {
+std::shared_ptr<PipelineLayoutState> deriveLayout(const std::shared_ptr<DeviceState>& device, const std::string& label,
+                                                  const spirv::Reflection& reflection) {
   std::uint32_t groupCount = 0;
   for (const auto& b : reflection.bindings) groupCount = std::max(groupCount, b.set + 1);
   std::vector<std::shared_ptr<BindGroupLayoutState>> groups;
@@ -108,15 +108,16 @@ void checkLayoutAgainstShader(const std::string& pipelineLabel, const PipelineLa
   for (const auto& b : reflection.bindings) {
     auto fail = [&](const std::string& rule) {
       throw Error(describe("compute pipeline", pipelineLabel) + ": shader binding (group " + std::to_string(b.set) +
-                  ", binding " + std::to_string(b.binding) + (b.name.empty() ? "" : ", '" + b.name + "'") +
-                  ") " + rule);
+                  ", binding " + std::to_string(b.binding) + (b.name.empty() ? "" : ", '" + b.name + "'") + ") " +
+                  rule);
     };
     if (b.set >= layout.groups.size())
       fail("has no bind group layout: " + describe("pipeline layout", layout.label) + " has " +
            std::to_string(layout.groups.size()) + " group(s)");
     const BindGroupLayoutState& group = *layout.groups[b.set];
     const BindGroupLayoutEntry* entry = group.find(b.binding);
-    if (!entry) fail("is missing from " + describe("bind group layout", group.label) + " (it has " + bindingList(group) + ")");
+    if (!entry)
+      fail("is missing from " + describe("bind group layout", group.label) + " (it has " + bindingList(group) + ")");
     if (!compatible(b.type, entry->type))
       fail("is " + std::string(toString(b.type)) + " in the shader but " + toString(entry->type) + " in " +
            describe("bind group layout", group.label));
@@ -154,8 +155,8 @@ struct Specialization {
 
 double checkedConstant(const std::string& pipelineLabel, const spirv::SpecConstant& c, double value) {
   auto fail = [&](const std::string& rule) {
-    throw Error(describe("compute pipeline", pipelineLabel) + ": constant '" + (c.name.empty() ? std::to_string(c.id) : c.name) +
-                "' = " + std::to_string(value) + ": " + rule);
+    throw Error(describe("compute pipeline", pipelineLabel) + ": constant '" +
+                (c.name.empty() ? std::to_string(c.id) : c.name) + "' = " + std::to_string(value) + ": " + rule);
   };
   if (!std::isfinite(value)) fail("value must be finite");
   if (c.kind == spirv::ScalarKind::Int || c.kind == spirv::ScalarKind::UInt) {
@@ -238,8 +239,9 @@ BindGroup Device::createBindGroup(const BindGroupDescriptor& descriptor) {
       fail(std::string(toString(entry->type)) + " binding needs a buffer with usage " + toString(needed) + ", but " +
            bufferName + " has " + toString(buffer.usage()));
     std::uint32_t alignment = entry->type == BindingType::Uniform ? limits.minUniformBufferOffsetAlignment
-                                                                   : limits.minStorageBufferOffsetAlignment;
-    if (e.offset % alignment != 0) fail("offset " + std::to_string(e.offset) + " is not a multiple of " + std::to_string(alignment));
+                                                                  : limits.minStorageBufferOffsetAlignment;
+    if (e.offset % alignment != 0)
+      fail("offset " + std::to_string(e.offset) + " is not a multiple of " + std::to_string(alignment));
     if (e.offset >= buffer.size()) fail("offset " + std::to_string(e.offset) + " is past the end of " + bufferName);
     std::uint64_t size = e.size == kWholeSize ? buffer.size() - e.offset : e.size;
     if (e.offset + size > buffer.size())
@@ -248,8 +250,8 @@ BindGroup Device::createBindGroup(const BindGroupDescriptor& descriptor) {
     if (size < entry->minBindingSize)
       fail(bufferName + " is too small for the binding: " + std::to_string(size) + " bytes bound, at least " +
            std::to_string(entry->minBindingSize) + " needed");
-    std::uint64_t maxRange = entry->type == BindingType::Uniform ? limits.maxUniformBufferBindingSize
-                                                                  : limits.maxStorageBufferBindingSize;
+    std::uint64_t maxRange =
+        entry->type == BindingType::Uniform ? limits.maxUniformBufferBindingSize : limits.maxStorageBufferBindingSize;
     if (size > maxRange)
       fail(std::to_string(size) + " bytes of " + bufferName + " exceed the device's max" +
            (entry->type == BindingType::Uniform ? "Uniform" : "Storage") + "BufferBindingSize " +
@@ -321,8 +323,8 @@ ComputePipeline Device::createComputePipeline(const ComputePipelineDescriptor& d
     if (!constant) {
       std::string known;
       for (const auto& c : reflection.specConstants) known += (known.empty() ? "" : ", ") + c.name;
-      throw Error(name + ": the shader has no overridable constant '" + entry.key + "' (it has: " +
-                  (known.empty() ? "none" : known) + ")");
+      throw Error(name + ": the shader has no overridable constant '" + entry.key +
+                  "' (it has: " + (known.empty() ? "none" : known) + ")");
     }
     if (overridden.count(constant->id)) throw Error(name + ": constant '" + entry.key + "' is given twice");
     overridden[constant->id] = checkedConstant(descriptor.label, *constant, entry.value);
@@ -330,15 +332,16 @@ ComputePipeline Device::createComputePipeline(const ComputePipelineDescriptor& d
   }
   for (int i = 0; i < 3; ++i) {
     auto id = reflection.workgroupSizeSpecIds[i];
-    if (id >= 0 && overridden.count(std::uint32_t(id))) state->workgroupSize[i] = std::uint32_t(overridden[std::uint32_t(id)]);
+    if (id >= 0 && overridden.count(std::uint32_t(id)))
+      state->workgroupSize[i] = std::uint32_t(overridden[std::uint32_t(id)]);
   }
   const Limits& limits = state_->limits();
   std::uint64_t invocations = 1;
   for (int i = 0; i < 3; ++i) {
     invocations *= state->workgroupSize[i];
     if (state->workgroupSize[i] == 0 || state->workgroupSize[i] > limits.maxComputeWorkgroupSize[i])
-      throw Error(name + ": workgroup size " + std::to_string(state->workgroupSize[i]) + " in dimension " +
-                  "xyz"[i] + " is outside [1, " + std::to_string(limits.maxComputeWorkgroupSize[i]) + "]");
+      throw Error(name + ": workgroup size " + std::to_string(state->workgroupSize[i]) + " in dimension " + "xyz"[i] +
+                  " is outside [1, " + std::to_string(limits.maxComputeWorkgroupSize[i]) + "]");
   }
   if (invocations > limits.maxComputeInvocationsPerWorkgroup)
     throw Error(name + ": " + std::to_string(invocations) + " invocations per workgroup exceed the device's " +

@@ -99,8 +99,7 @@ class Module {
     }
     if (builtinWorkgroupSize_) {
       const auto& components = constants_.at(*builtinWorkgroupSize_).operands;
-      for (int i = 0; i < 3 && std::size_t(i) < components.size(); ++i)
-        resolveWorkgroupDimension(components[i], r, i);
+      for (int i = 0; i < 3 && std::size_t(i) < components.size(); ++i) resolveWorkgroupDimension(components[i], r, i);
     }
     for (const auto& [id, c] : constants_) {
       auto deco = decorations_.find(id);
@@ -211,14 +210,16 @@ class Module {
     }
     const Type& t = types_.at(constantTypes_.at(id));
     s.width = t.operands.empty() ? 32 : t.operands[0];
-    s.kind = t.op == OpTypeFloat ? ScalarKind::Float : (t.operands.size() > 1 && t.operands[1] ? ScalarKind::Int : ScalarKind::UInt);
+    s.kind = t.op == OpTypeFloat ? ScalarKind::Float
+                                 : (t.operands.size() > 1 && t.operands[1] ? ScalarKind::Int : ScalarKind::UInt);
     return s;
   }
 
   void resolveWorkgroupDimension(std::uint32_t constantId, Reflection& r, int dim) const {
     r.workgroupSize[dim] = std::uint32_t(scalarValue(constantId));
     auto deco = decorations_.find(constantId);
-    if (deco != decorations_.end() && deco->second.has(SpecId)) r.workgroupSizeSpecIds[dim] = deco->second.literal(SpecId);
+    if (deco != decorations_.end() && deco->second.has(SpecId))
+      r.workgroupSizeSpecIds[dim] = deco->second.literal(SpecId);
   }
 
   std::uint64_t sizeOf(std::uint32_t typeId, std::uint32_t matrixStride = 0) const {
@@ -290,8 +291,8 @@ class Module {
     b.minSize = sizeOf(blockType);
     auto name = names_.find(id);
     b.name = name != names_.end() && !name->second.empty() ? name->second
-             : names_.count(blockType)                    ? names_.at(blockType)
-                                                          : "";
+             : names_.count(blockType)                     ? names_.at(blockType)
+                                                           : "";
     r.bindings.push_back(b);
   }
 

@@ -20,7 +20,6 @@ namespace facet::gpu::detail {
 void check(VkResult result, const char* what);
 const char* resultName(VkResult result);
 
-
 struct InstanceState {
   VkInstance instance = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;

@@ -69,6 +69,4 @@ FACET_FN BrdfTerms brdf_terms(BrdfParams p, vec3 n, vec3 l, vec3 v) {
   return t;
 }
 
-FACET_FN vec3 brdf_evaluate(BrdfParams p, vec3 n, vec3 l, vec3 v) {
-  return brdf_terms(p, n, l, v).value;
-}
+FACET_FN vec3 brdf_evaluate(BrdfParams p, vec3 n, vec3 l, vec3 v) { return brdf_terms(p, n, l, v).value; }

@@ -50,9 +50,7 @@ FACET_FN real microfacet_D(int model, real alpha, real cos_m, real sin2_m) {
       // cos^e. Near the peak, where a large exponent magnifies the rounding
       // of cos, as exp((e/2) ln(1 - sin^2)) from the accurate sin^2.
       real exponent = blinn_phong_exponent(alpha);
-      real power = sin2_m < real(0.1)
-                       ? exp(real(0.5) * exponent * log_one_minus_small(sin2_m))
-                       : pow(cos_m, exponent);
+      real power = sin2_m < real(0.1) ? exp(real(0.5) * exponent * log_one_minus_small(sin2_m)) : pow(cos_m, exponent);
       return (exponent + real(2)) * (real(0.5) * INV_PI) * power;
     }
   }
@@ -75,8 +73,7 @@ FACET_FN real smith_lambda(int surface, real alpha, real cos_v) {
     real t = real(1) / (real(1) + real(0.3275911) * a);
     real erfc_over_gauss =
         t * (real(0.254829592) +
-             t * (real(-0.284496736) +
-                  t * (real(1.421413741) + t * (real(-1.453152027) + t * real(1.061405429)))));
+             t * (real(-0.284496736) + t * (real(1.421413741) + t * (real(-1.453152027) + t * real(1.061405429)))));
     return max(real(0), real(0.5) * exp(-sqr(a)) * (real(1) / (a * sqrt(PI)) - erfc_over_gauss));
   }
   // GGX: (sqrt(1 + alpha^2 tan^2) - 1) / 2, rationalized so that small
@@ -106,8 +103,7 @@ FACET_FN real microfacet_G(int model, real alpha, real nl, real nv, real nh, rea
     case G_SMITH_BECKMANN:
       return smith_G1(D_BECKMANN, alpha, nl) * smith_G1(D_BECKMANN, alpha, nv);
     case G_SMITH_BECKMANN_CORRELATED:
-      return real(1) /
-             (real(1) + smith_lambda(D_BECKMANN, alpha, nl) + smith_lambda(D_BECKMANN, alpha, nv));
+      return real(1) / (real(1) + smith_lambda(D_BECKMANN, alpha, nl) + smith_lambda(D_BECKMANN, alpha, nv));
   }
   return real(0);
 }

@@ -116,8 +116,7 @@ FACET_FN real direction_pdf(int technique, BrdfParams p, vec3 n, vec3 l, vec3 v)
   real vm = dot(v, m);
   real sin2_m = sin2_between(n, m);
   real alpha = effective_alpha(p.alpha);
-  real pdf_m = technique == SAMPLE_GGX_VISIBLE
-                   ? ggx_visible_normal_pdf(alpha, dot(n, v), vm, nm, sin2_m)
-                   : microfacet_D(p.d_model, alpha, nm, sin2_m) * nm;
+  real pdf_m = technique == SAMPLE_GGX_VISIBLE ? ggx_visible_normal_pdf(alpha, dot(n, v), vm, nm, sin2_m)
+                                               : microfacet_D(p.d_model, alpha, nm, sin2_m) * nm;
   return pdf_m / (real(4) * abs(vm));
 }

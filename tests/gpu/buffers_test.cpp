@@ -30,7 +30,8 @@ TEST_P(BufferRoundTrip, MappedWriteThroughCopiesAtAnOffset) {
   auto data = randomWords(bytes / 4, std::uint32_t(bytes) + 1);
   Buffer source = device_.createBuffer({"source", bytes, BufferUsage::MapWrite | BufferUsage::CopySrc});
   std::memcpy(source.mappedRange().data(), data.data(), bytes);
-  Buffer middle = device_.createBuffer({"middle", bytes + offset, BufferUsage::Storage | BufferUsage::CopySrc | BufferUsage::CopyDst});
+  Buffer middle = device_.createBuffer(
+      {"middle", bytes + offset, BufferUsage::Storage | BufferUsage::CopySrc | BufferUsage::CopyDst});
   Buffer sink = device_.createBuffer({"sink", bytes, BufferUsage::MapRead | BufferUsage::CopyDst});
   auto encoder = device_.createCommandEncoder({"round trip"});
   encoder.copyBufferToBuffer(source, 0, middle, offset, bytes);
@@ -46,7 +47,8 @@ INSTANTIATE_TEST_SUITE_P(Sizes, BufferRoundTrip,
                          [](const auto& info) { return std::to_string(info.param) + "_bytes"; });
 
 TEST_F(GpuTest, LaterWriteToTheSameRangeWins) {
-  Buffer buffer = device_.createBuffer({"twice", 64, BufferUsage::Storage | BufferUsage::CopyDst | BufferUsage::CopySrc});
+  Buffer buffer =
+      device_.createBuffer({"twice", 64, BufferUsage::Storage | BufferUsage::CopyDst | BufferUsage::CopySrc});
   std::vector<std::uint32_t> first(16, 1), second(16, 2);
   device_.queue().writeBuffer(buffer, 0, std::span<const std::uint32_t>(first));
   device_.queue().writeBuffer(buffer, 0, std::span<const std::uint32_t>(second));

@@ -9,8 +9,8 @@
 namespace facet::gpu::testing {
 namespace {
 
-using facet::SmokeResult;
 using facet::runSmokeJob;
+using facet::SmokeResult;
 
 // The same expression as well_conditioned_math.comp, in float, unfused
 // (the project builds with -ffp-contract=off).
@@ -73,7 +73,11 @@ TEST_P(SpecializationConstants, ChangeTheResultAndTheWorkgroupSize) {
   Buffer out = poisoned(n * sizeof(float));
   auto shader = module("specialized_fill", test_spirv::specialized_fill);
   auto pipeline = device_.createComputePipeline(
-      {"fill", nullptr, &shader, "main", {{"kMode", double(c.mode)}, {"kScale", c.scale}, {"kNegate", double(c.negate)}, {"0", double(c.workgroup)}}});
+      {"fill",
+       nullptr,
+       &shader,
+       "main",
+       {{"kMode", double(c.mode)}, {"kScale", c.scale}, {"kNegate", double(c.negate)}, {"0", double(c.workgroup)}}});
   EXPECT_EQ(pipeline.workgroupSize()[0], c.workgroup);
   auto layout = pipeline.getBindGroupLayout(0);
   auto group = device_.createBindGroup({"fill", &layout, {{0, &out}}});
@@ -107,7 +111,8 @@ TEST_F(GpuTest, ChainedDispatchesInOneCommandBufferSeeEachOthersWrites) {
   const std::uint32_t n = 1 << 16;
   Buffer produced = poisoned(n * 4);
   Buffer consumed = poisoned(n * 4);
-  Buffer indirect = device_.createBuffer({"indirect", 12, BufferUsage::Storage | BufferUsage::Indirect | BufferUsage::CopyDst});
+  Buffer indirect =
+      device_.createBuffer({"indirect", 12, BufferUsage::Storage | BufferUsage::Indirect | BufferUsage::CopyDst});
   device_.queue().writeBuffer(indirect, 0, std::span<const std::uint32_t>(std::vector<std::uint32_t>{0, 0, 0}));
   auto produceShader = module("chain_produce", test_spirv::chain_produce);
   auto consumeShader = module("chain_consume", test_spirv::chain_consume);

@@ -40,17 +40,23 @@ class Misuse : public GpuTest {
 
 TEST_F(Misuse, BindingABufferWithoutStorageUsageToAStorageBinding) {
   Buffer uniform = device_.createBuffer({"params", 256, BufferUsage::Uniform});
-  EXPECT_THAT(errorOf([&] { device_.createBindGroup({"fill", &layout_, {{0, &uniform}}}); }),
+  EXPECT_THAT(errorOf([&] {
+                device_.createBindGroup({"fill", &layout_, {{0, &uniform}}});
+              }),
               AllOf(HasSubstr("bind group 'fill'"), HasSubstr("buffer 'params'"), HasSubstr("usage Storage")));
 }
 
 TEST_F(Misuse, BindingIndexNotInTheLayout) {
-  EXPECT_THAT(errorOf([&] { device_.createBindGroup({"fill", &layout_, {{0, &storage_}, {7, &storage_}}}); }),
+  EXPECT_THAT(errorOf([&] {
+                device_.createBindGroup({"fill", &layout_, {{0, &storage_}, {7, &storage_}}});
+              }),
               AllOf(HasSubstr("binding 7"), HasSubstr("not in"), HasSubstr("it has 0")));
 }
 
 TEST_F(Misuse, LayoutBindingLeftUnbound) {
-  EXPECT_THAT(errorOf([&] { device_.createBindGroup({"empty", &layout_, {}}); }),
+  EXPECT_THAT(errorOf([&] {
+                device_.createBindGroup({"empty", &layout_, {}});
+              }),
               AllOf(HasSubstr("bind group 'empty'"), HasSubstr("binding 0"), HasSubstr("has no buffer")));
 }
 
@@ -63,9 +69,13 @@ TEST_F(Misuse, BuffersTooSmallForTheShadersBlocks) {
   Buffer params80 = device_.createBuffer({"params80", 80, BufferUsage::Uniform});
   Buffer output64 = device_.createBuffer({"output64", 64, BufferUsage::Storage});
   Buffer output68 = device_.createBuffer({"output68", 68, BufferUsage::Storage});
-  EXPECT_THAT(errorOf([&] { device_.createBindGroup({"small", &layout, {{0, &params79}, {1, &output68}}}); }),
+  EXPECT_THAT(errorOf([&] {
+                device_.createBindGroup({"small", &layout, {{0, &params79}, {1, &output68}}});
+              }),
               AllOf(HasSubstr("buffer 'params79' is too small"), HasSubstr("79 bytes bound"), HasSubstr("80 needed")));
-  EXPECT_THAT(errorOf([&] { device_.createBindGroup({"small", &layout, {{0, &params80}, {1, &output64}}}); }),
+  EXPECT_THAT(errorOf([&] {
+                device_.createBindGroup({"small", &layout, {{0, &params80}, {1, &output64}}});
+              }),
               AllOf(HasSubstr("buffer 'output64' is too small"), HasSubstr("68 needed")));
   EXPECT_NO_THROW(device_.createBindGroup({"exact", &layout, {{0, &params80}, {1, &output68}}}));
 }
@@ -73,13 +83,17 @@ TEST_F(Misuse, BuffersTooSmallForTheShadersBlocks) {
 TEST_F(Misuse, BindingMoreThanMaxStorageBufferBindingSize) {
   const std::uint64_t max = device_.limits().maxStorageBufferBindingSize;
   Buffer big = device_.createBuffer({"big", max + 4096, BufferUsage::Storage});
-  EXPECT_THAT(errorOf([&] { device_.createBindGroup({"fill", &layout_, {{0, &big}}}); }),
+  EXPECT_THAT(errorOf([&] {
+                device_.createBindGroup({"fill", &layout_, {{0, &big}}});
+              }),
               AllOf(HasSubstr("buffer 'big'"), HasSubstr("maxStorageBufferBindingSize")));
   EXPECT_NO_THROW(device_.createBindGroup({"fill", &layout_, {{0, &big, 0, max}}}));
 }
 
 TEST_F(Misuse, BufferLargerThanTheDeviceAllows) {
-  EXPECT_THAT(errorOf([&] { device_.createBuffer({"huge", device_.limits().maxBufferSize + 1, BufferUsage::Storage}); }),
+  EXPECT_THAT(errorOf([&] {
+                device_.createBuffer({"huge", device_.limits().maxBufferSize + 1, BufferUsage::Storage});
+              }),
               AllOf(HasSubstr("buffer 'huge'"), HasSubstr("maxBufferSize")));
 }
 
@@ -116,39 +130,60 @@ TEST_F(Misuse, ExplicitLayoutThatDisagreesWithTheShader) {
   auto empty = device_.createBindGroupLayout({"empty", {}});
   auto readOnlyLayout = device_.createPipelineLayout({"ro", {&readOnly}});
   auto emptyLayout = device_.createPipelineLayout({"none", {&empty}});
-  EXPECT_THAT(errorOf([&] { device_.createComputePipeline({"fill", &readOnlyLayout, &shader_, "main", {{"0", 64}}}); }),
+  EXPECT_THAT(errorOf([&] {
+                device_.createComputePipeline({"fill", &readOnlyLayout, &shader_, "main", {{"0", 64}}});
+              }),
               AllOf(HasSubstr("is storage in the shader but read-only storage")));
-  EXPECT_THAT(errorOf([&] { device_.createComputePipeline({"fill", &emptyLayout, &shader_, "main", {{"0", 64}}}); }),
+  EXPECT_THAT(errorOf([&] {
+                device_.createComputePipeline({"fill", &emptyLayout, &shader_, "main", {{"0", 64}}});
+              }),
               AllOf(HasSubstr("binding 0"), HasSubstr("missing from bind group layout 'empty'")));
 }
 
 TEST_F(Misuse, UnknownOrInvalidPipelineConstants) {
-  EXPECT_THAT(errorOf([&] { device_.createComputePipeline({"fill", nullptr, &shader_, "main", {{"kModes", 1}}}); }),
+  EXPECT_THAT(errorOf([&] {
+                device_.createComputePipeline({"fill", nullptr, &shader_, "main", {{"kModes", 1}}});
+              }),
               AllOf(HasSubstr("no overridable constant 'kModes'"), HasSubstr("kMode")));
-  EXPECT_THAT(errorOf([&] { device_.createComputePipeline({"fill", nullptr, &shader_, "main", {{"kMode", 1.5}}}); }),
+  EXPECT_THAT(errorOf([&] {
+                device_.createComputePipeline({"fill", nullptr, &shader_, "main", {{"kMode", 1.5}}});
+              }),
               HasSubstr("integral"));
-  EXPECT_THAT(errorOf([&] { device_.createComputePipeline({"fill", nullptr, &shader_, "main", {{"0", 4096}}}); }),
+  EXPECT_THAT(errorOf([&] {
+                device_.createComputePipeline({"fill", nullptr, &shader_, "main", {{"0", 4096}}});
+              }),
               HasSubstr("workgroup size 4096"));
-  EXPECT_THAT(errorOf([&] { device_.createComputePipeline({"fill", nullptr, &shader_, "nope"}); }),
+  EXPECT_THAT(errorOf([&] {
+                device_.createComputePipeline({"fill", nullptr, &shader_, "nope"});
+              }),
               HasSubstr("no compute entry point 'nope'"));
 }
 
 TEST_F(Misuse, PushConstantsAreNotPartOfTheApi) {
   auto shader = module("push_constants", test_spirv::push_constants);
-  EXPECT_THAT(errorOf([&] { device_.createComputePipeline({"push", nullptr, &shader}); }),
-              AllOf(HasSubstr("shader module 'push_constants'"), HasSubstr("push constants"), HasSubstr("uniform buffer")));
+  EXPECT_THAT(
+      errorOf([&] {
+        device_.createComputePipeline({"push", nullptr, &shader});
+      }),
+      AllOf(HasSubstr("shader module 'push_constants'"), HasSubstr("push constants"), HasSubstr("uniform buffer")));
 }
 
 TEST_F(Misuse, NotSpirv) {
   std::vector<std::uint32_t> garbage{0xdeadbeef, 1, 2, 3, 4, 5};
-  EXPECT_THAT(errorOf([&] { device_.createShaderModule({"garbage", garbage}); }),
+  EXPECT_THAT(errorOf([&] {
+                device_.createShaderModule({"garbage", garbage});
+              }),
               AllOf(HasSubstr("shader module 'garbage'"), HasSubstr("not a SPIR-V module")));
 }
 
 TEST_F(Misuse, BufferUsageRules) {
-  EXPECT_THAT(errorOf([&] { device_.createBuffer({"both", 64, BufferUsage::MapRead | BufferUsage::Storage}); }),
+  EXPECT_THAT(errorOf([&] {
+                device_.createBuffer({"both", 64, BufferUsage::MapRead | BufferUsage::Storage});
+              }),
               HasSubstr("MapRead may only be combined with CopyDst"));
-  EXPECT_THAT(errorOf([&] { device_.queue().writeBuffer(device_.createBuffer({"no copy", 64, BufferUsage::Storage}), 0, "abcd", 4); }),
+  EXPECT_THAT(errorOf([&] {
+                device_.queue().writeBuffer(device_.createBuffer({"no copy", 64, BufferUsage::Storage}), 0, "abcd", 4);
+              }),
               HasSubstr("needs usage CopyDst"));
   EXPECT_THAT(errorOf([&] { storage_.mappedRange(); }), HasSubstr("needs usage MapRead or MapWrite"));
   EXPECT_THAT(errorOf([&] { device_.queue().writeBuffer(storage_, 4096, "abcd", 4); }), HasSubstr("exceeds the size"));

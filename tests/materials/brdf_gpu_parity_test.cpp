@@ -36,8 +36,14 @@ glm::dvec3 randomDirection(std::mt19937& rng, double minCos) {
 
 TEST_P(BrdfGpuParity, GlslFloatMatchesCppDouble) {
   const Variant variant = GetParam();
-  f64::BrdfParams p{variant.d, variant.g, variant.f, 0.0, glm::dvec3(0.9, 0.6, 0.3), glm::dvec3(1.5, 1.6, 1.7),
-                    glm::dvec3(3.0, 2.5, 2.0), glm::dvec3(0.2, 0.3, 0.4)};
+  f64::BrdfParams p{variant.d,
+                    variant.g,
+                    variant.f,
+                    0.0,
+                    glm::dvec3(0.9, 0.6, 0.3),
+                    glm::dvec3(1.5, 1.6, 1.7),
+                    glm::dvec3(3.0, 2.5, 2.0),
+                    glm::dvec3(0.2, 0.3, 0.4)};
   // Directions at least 0.01 above the horizon and alpha >= 0.05: the domain
   // where docs/shading.md's float-vs-double table stays below 1e-4.
   std::mt19937 rng(1234 + variant.d * 100 + variant.g * 10 + variant.f);
@@ -49,7 +55,8 @@ TEST_P(BrdfGpuParity, GlslFloatMatchesCppDouble) {
   for (std::uint32_t i = 0; i < count; ++i) {
     ls.push_back(randomDirection(rng, 0.01));
     vs.push_back(randomDirection(rng, 0.01));
-    cases.insert(cases.end(), {glm::vec4(glm::vec3(n), 0), glm::vec4(glm::vec3(ls.back()), 0), glm::vec4(glm::vec3(vs.back()), 0)});
+    cases.insert(cases.end(),
+                 {glm::vec4(glm::vec3(n), 0), glm::vec4(glm::vec3(ls.back()), 0), glm::vec4(glm::vec3(vs.back()), 0)});
   }
   // One alpha per dispatch keeps the kernel's parameters uniform.
   const double alpha = 0.05 + 0.95 * std::uniform_real_distribution<double>(0, 1)(rng);
@@ -59,11 +66,16 @@ TEST_P(BrdfGpuParity, GlslFloatMatchesCppDouble) {
 
   gpu::Buffer caseBuffer = upload(cases);
   gpu::Buffer results = poisoned(count * 3 * sizeof(glm::vec4));
-  gpu::Buffer uniforms = device_.createBuffer({"parameters", sizeof(Parameters), BufferUsage::Uniform | BufferUsage::CopyDst});
+  gpu::Buffer uniforms =
+      device_.createBuffer({"parameters", sizeof(Parameters), BufferUsage::Uniform | BufferUsage::CopyDst});
   device_.queue().writeBuffer(uniforms, 0, &parameters, sizeof(Parameters));
   auto shader = module("brdf_eval", spirv::brdf_eval);
   auto pipeline = device_.createComputePipeline(
-      {"brdf", nullptr, &shader, "main", {{"D_MODEL", double(variant.d)}, {"G_MODEL", double(variant.g)}, {"F_MODEL", double(variant.f)}}});
+      {"brdf",
+       nullptr,
+       &shader,
+       "main",
+       {{"D_MODEL", double(variant.d)}, {"G_MODEL", double(variant.g)}, {"F_MODEL", double(variant.f)}}});
   auto layout = pipeline.getBindGroupLayout(0);
   auto group = device_.createBindGroup({"brdf", &layout, {{0, &caseBuffer}, {1, &results}, {2, &uniforms}}});
   auto encoder = device_.createCommandEncoder();

@@ -60,8 +60,7 @@ TEST(Albedo, ErrorEstimateBoundsTheTrueError) {
       f64::BrdfParams p = bare(f64::D_GGX, f64::G_SMITH_GGX_CORRELATED, alpha);
       AlbedoResult r = directionalAlbedo(p, mu, 64);
       AlbedoResult fine = directionalAlbedo(p, mu, 256);
-      EXPECT_LE(std::abs(r.albedo.x - fine.albedo.x), r.error_estimate + 1e-12)
-          << "alpha=" << alpha << " mu=" << mu;
+      EXPECT_LE(std::abs(r.albedo.x - fine.albedo.x), r.error_estimate + 1e-12) << "alpha=" << alpha << " mu=" << mu;
     }
   }
 }
@@ -93,8 +92,7 @@ Furnace whiteFurnace(int d, int g) {
         result.where = where;
       }
       // Margin: the quadrature's own error estimate plus 1e-9.
-      if (r.albedo.x > 1 + r.error_estimate + 1e-9 && result.exceeded.empty())
-        result.exceeded = where;
+      if (r.albedo.x > 1 + r.error_estimate + 1e-9 && result.exceeded.empty()) result.exceeded = where;
     }
   return result;
 }
@@ -107,8 +105,8 @@ TEST(Albedo, WhiteFurnaceNeverGainsEnergy) {
       if (!consistentPairing(d.id, g.id)) continue;
       Furnace furnace = whiteFurnace(d.id, g.id);
       EXPECT_EQ(furnace.exceeded, "") << d.name << "/" << g.name;
-      std::printf("furnace %-11s %-26s max E = %.6f at %s\n", d.name.data(), g.name.data(),
-                  furnace.highest, furnace.where.c_str());
+      std::printf("furnace %-11s %-26s max E = %.6f at %s\n", d.name.data(), g.name.data(), furnace.highest,
+                  furnace.where.c_str());
     }
 }
 
@@ -118,8 +116,7 @@ TEST(Albedo, BeckmannSmithOnOtherSurfacesGainsEnergy) {
   for (int d : {f64::D_GGX, f64::D_BLINN_PHONG})
     for (int g : {f64::G_SMITH_BECKMANN, f64::G_SMITH_BECKMANN_CORRELATED}) {
       Furnace furnace = whiteFurnace(d, g);
-      EXPECT_GT(furnace.highest, 1.3)
-          << modelName(kDistributions, d) << "/" << modelName(kGeometryTerms, g);
+      EXPECT_GT(furnace.highest, 1.3) << modelName(kDistributions, d) << "/" << modelName(kGeometryTerms, g);
       std::printf("furnace %-11s %-26s max E = %.6f at %s\n", modelName(kDistributions, d).data(),
                   modelName(kGeometryTerms, g).data(), furnace.highest, furnace.where.c_str());
     }

@@ -37,8 +37,10 @@ f64::BrdfParams params(int d, int g, int f, double alpha) {
 double textbookD(int model, double alpha, double theta) {
   double c = std::cos(theta), t2 = std::pow(std::tan(theta), 2), a2 = alpha * alpha;
   switch (model) {
-    case f64::D_GGX: return a2 / (kPi * std::pow(c, 4) * std::pow(a2 + t2, 2));
-    case f64::D_BECKMANN: return std::exp(-t2 / a2) / (kPi * a2 * std::pow(c, 4));
+    case f64::D_GGX:
+      return a2 / (kPi * std::pow(c, 4) * std::pow(a2 + t2, 2));
+    case f64::D_BECKMANN:
+      return std::exp(-t2 / a2) / (kPi * a2 * std::pow(c, 4));
     default: {
       double e = 2 / a2 - 2;
       return (e + 2) / (2 * kPi) * std::pow(c, e);
@@ -63,8 +65,7 @@ TEST(Brdf, DistributionsMatchTextbookForms) {
         double expected = textbookD(d.id, alpha, theta);
         if (d.id == f64::D_BECKMANN && std::pow(std::tan(theta) / alpha, 2) >= 80) expected = 0;
         double s = std::sin(theta);
-        EXPECT_NEAR(f64::microfacet_D(d.id, alpha, std::cos(theta), s * s), expected,
-                    1e-12 * expected + 1e-300)
+        EXPECT_NEAR(f64::microfacet_D(d.id, alpha, std::cos(theta), s * s), expected, 1e-12 * expected + 1e-300)
             << d.name << " alpha=" << alpha << " theta=" << degrees;
       }
 }
@@ -90,8 +91,8 @@ TEST(Brdf, AssemblesTheMicrofacetFormula) {
   glm::dvec3 h = glm::normalize(l + v);
   double theta_h = std::acos(h.z);
   double d = textbookD(f64::D_GGX, 0.3, theta_h);
-  double g = 1 / (1 + textbookLambda(f64::D_GGX, 0.3, 40 * kPi / 180) +
-                  textbookLambda(f64::D_GGX, 0.3, 25 * kPi / 180));
+  double g =
+      1 / (1 + textbookLambda(f64::D_GGX, 0.3, 40 * kPi / 180) + textbookLambda(f64::D_GGX, 0.3, 25 * kPi / 180));
   double vh = glm::dot(v, h);
   glm::dvec3 fresnel = p.f0 + (1.0 - p.f0) * std::pow(1 - vh, 5);
   glm::dvec3 expected = fresnel * d * g / (4 * l.z * v.z) + p.diffuse / kPi;
@@ -111,8 +112,7 @@ TEST(Brdf, ReciprocalForEveryCombination) {
       for (const ModelName& f : kFresnelTerms)
         for (double alpha : {0.0, 0.1, 0.5, 1.0})
           for (int trial = 0; trial < 20; ++trial) {
-            glm::dvec3 n(0, 0, 1), l = direction(theta(random), phi(random)),
-                                   v = direction(theta(random), phi(random));
+            glm::dvec3 n(0, 0, 1), l = direction(theta(random), phi(random)), v = direction(theta(random), phi(random));
             f64::BrdfParams p = params(d.id, g.id, f.id, alpha);
             glm::dvec3 forward = f64::brdf_evaluate(p, n, l, v);
             glm::dvec3 backward = f64::brdf_evaluate(p, n, v, l);
@@ -140,8 +140,7 @@ TEST(Brdf, ZeroUnderTheHorizon) {
   // Policy: n.l <= 1e-4 or n.v <= 1e-4 gives f = 0, D = G = F = 0.
   f64::BrdfParams p = params(f64::D_GGX, f64::G_SMITH_GGX, f64::F_SCHLICK, 0.5);
   glm::dvec3 n(0, 0, 1);
-  for (auto [l, v] : {std::pair{direction(100, 0), direction(30, 0)},
-                      std::pair{direction(30, 0), direction(90, 180)},
+  for (auto [l, v] : {std::pair{direction(100, 0), direction(30, 0)}, std::pair{direction(30, 0), direction(90, 180)},
                       std::pair{direction(89.995, 0), direction(20, 0)}}) {
     f64::BrdfTerms t = f64::brdf_terms(p, n, l, v);
     EXPECT_EQ(t.value, glm::dvec3(0));

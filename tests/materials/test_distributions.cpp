@@ -20,8 +20,7 @@ const double kAlphas[] = {0.05, 0.1, 0.25, 0.5, 1.0};
 template <class DFunction>
 double projectedArea(double alpha, const DFunction& d) {
   return 2 * kPi * integratePolar(alpha, [&](double theta) {
-           return d(std::cos(theta), std::sin(theta) * std::sin(theta)) * std::cos(theta) *
-                  std::sin(theta);
+           return d(std::cos(theta), std::sin(theta) * std::sin(theta)) * std::cos(theta) * std::sin(theta);
          });
 }
 
@@ -31,9 +30,7 @@ TEST(Distributions, NormalizedInDouble) {
   double worst = 0;
   for (const ModelName& d : kDistributions) {
     for (double alpha : kAlphas) {
-      double area = projectedArea(alpha, [&](double c, double s2) {
-        return f64::microfacet_D(d.id, alpha, c, s2);
-      });
+      double area = projectedArea(alpha, [&](double c, double s2) { return f64::microfacet_D(d.id, alpha, c, s2); });
       EXPECT_NEAR(area, 1.0, 1e-7) << d.name << " alpha=" << alpha;
       worst = std::max(worst, std::abs(area - 1));
     }
@@ -74,18 +71,21 @@ TEST(Distributions, BlinnPhongExponentMapping) {
 // in closed form, so only the polar one is numerical.
 double visibleProjectedArea(int surface, double alpha, double theta_v) {
   double sv = std::sin(theta_v), cv = std::cos(theta_v);
-  return integratePolar(alpha, [&](double theta) {
-    double sm = std::sin(theta), cm = std::cos(theta);
-    double a = sv * sm, b = cv * cm;
-    double azimuthal;
-    if (b >= a) {
-      azimuthal = 2 * kPi * b;
-    } else {
-      double phi0 = std::acos(-b / a);
-      azimuthal = 2 * a * std::sin(phi0) + 2 * b * phi0;
-    }
-    return f64::microfacet_D(surface, alpha, cm, sm * sm) * sm * azimuthal;
-  }, std::numbers::pi / 2 - theta_v);
+  return integratePolar(
+      alpha,
+      [&](double theta) {
+        double sm = std::sin(theta), cm = std::cos(theta);
+        double a = sv * sm, b = cv * cm;
+        double azimuthal;
+        if (b >= a) {
+          azimuthal = 2 * kPi * b;
+        } else {
+          double phi0 = std::acos(-b / a);
+          azimuthal = 2 * a * std::sin(phi0) + 2 * b * phi0;
+        }
+        return f64::microfacet_D(surface, alpha, cm, sm * sm) * sm * azimuthal;
+      },
+      std::numbers::pi / 2 - theta_v);
 }
 
 TEST(Distributions, SmithMaskingConservesProjectedArea) {
@@ -98,11 +98,9 @@ TEST(Distributions, SmithMaskingConservesProjectedArea) {
     for (double alpha : kAlphas) {
       for (double degrees : kThetaDegrees) {
         double theta = degrees * kPi / 180;
-        double lhs = f64::smith_G1(surface, alpha, std::cos(theta)) *
-                     visibleProjectedArea(surface, alpha, theta);
+        double lhs = f64::smith_G1(surface, alpha, std::cos(theta)) * visibleProjectedArea(surface, alpha, theta);
         double error = std::abs(lhs - std::cos(theta)) / std::cos(theta);
-        EXPECT_LT(error, 1e-6) << modelName(kDistributions, surface) << " alpha=" << alpha
-                               << " theta_v=" << degrees;
+        EXPECT_LT(error, 1e-6) << modelName(kDistributions, surface) << " alpha=" << alpha << " theta_v=" << degrees;
         worst = std::max(worst, error);
       }
     }

@@ -32,8 +32,7 @@ TEST(Fresnel, DielectricMatchesFresnelEquations) {
     for (double degrees : kDegrees) {
       double c = cosDegrees(degrees);
       double reference = fresnelReference(eta, c);  // |r| = 1 past the critical angle
-      EXPECT_NEAR(f64::fresnel_dielectric(eta, c), reference, 1e-13)
-          << "eta=" << eta << " theta=" << degrees;
+      EXPECT_NEAR(f64::fresnel_dielectric(eta, c), reference, 1e-13) << "eta=" << eta << " theta=" << degrees;
       EXPECT_NEAR(f32::fresnel_dielectric(float(eta), float(c)), reference, 1e-6)
           << "eta=" << eta << " theta=" << degrees;
     }
@@ -43,10 +42,8 @@ TEST(Fresnel, DielectricMatchesFresnelEquations) {
 TEST(Fresnel, ConductorMatchesFresnelEquations) {
   // Gold-, aluminum- and iron-like complex indices, plus k = 0 where the
   // conductor formula must reduce to the dielectric one.
-  const glm::dvec3 etas[] = {{0.18, 0.42, 1.37}, {1.35, 0.96, 0.62}, {2.87, 2.92, 2.65},
-                             {1.5, 1.5, 1.5}};
-  const glm::dvec3 ks[] = {{3.42, 2.35, 1.77}, {7.47, 6.40, 5.30}, {3.08, 2.93, 2.81},
-                           {0, 0, 0}};
+  const glm::dvec3 etas[] = {{0.18, 0.42, 1.37}, {1.35, 0.96, 0.62}, {2.87, 2.92, 2.65}, {1.5, 1.5, 1.5}};
+  const glm::dvec3 ks[] = {{3.42, 2.35, 1.77}, {7.47, 6.40, 5.30}, {3.08, 2.93, 2.81}, {0, 0, 0}};
   for (int m = 0; m < 4; ++m) {
     for (double degrees : kDegrees) {
       double c = cosDegrees(degrees);

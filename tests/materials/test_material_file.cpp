@@ -14,9 +14,7 @@ namespace {
 Material build(const std::string& text) {
   const std::string source = "test.json";
   return buildMaterial(materialSpecFromJson(nlohmann::json::parse(text), source),
-                       [&](std::string_view field) {
-                         return source + ": field '" + std::string(field) + "'";
-                       });
+                       [&](std::string_view field) { return source + ": field '" + std::string(field) + "'"; });
 }
 
 std::string errorOf(const std::string& text) {
@@ -58,8 +56,7 @@ TEST(MaterialFile, ConductorAndRoundTrip) {
 }
 
 TEST(MaterialFile, ErrorsNameTheFileTheFieldAndTheRule) {
-  EXPECT_EQ(errorOf(R"({"alpha": 1.5, "f0": 0.04})"),
-            "test.json: field 'alpha': must be in [0, 1], got 1.5");
+  EXPECT_EQ(errorOf(R"({"alpha": 1.5, "f0": 0.04})"), "test.json: field 'alpha': must be in [0, 1], got 1.5");
   EXPECT_EQ(errorOf(R"({"alpha": 0.5, "f0": [0.04, 2, 0.04]})"),
             "test.json: field 'f0': every component must be in [0, 1], got 0.04,2,0.04");
   EXPECT_EQ(errorOf(R"({"alpha": 0.5, "colour": 1})").rfind("test.json: field 'colour': unknown field", 0), 0u);
@@ -72,11 +69,11 @@ TEST(MaterialFile, ErrorsNameTheFileTheFieldAndTheRule) {
             "test.json: field 'k': required by fresnel 'conductor'");
   EXPECT_EQ(errorOf(R"({"alpha": 0.1, "k": 1})"),
             "test.json: field 'k': is only used by fresnel 'conductor', not 'schlick'");
-  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "preset": "mithril"})").rfind(
-                "test.json: field 'preset': unknown preset 'mithril'", 0),
-            0u);
-  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "fresnel": "dielectric", "ior": [1.5, 0, 1.5]})").rfind(
-                "test.json: field 'ior': every component must be finite and > 0, got 1.5,0,1.5", 0),
+  EXPECT_EQ(
+      errorOf(R"({"alpha": 0.1, "preset": "mithril"})").rfind("test.json: field 'preset': unknown preset 'mithril'", 0),
+      0u);
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "fresnel": "dielectric", "ior": [1.5, 0, 1.5]})")
+                .rfind("test.json: field 'ior': every component must be finite and > 0, got 1.5,0,1.5", 0),
             0u);
 }
 

@@ -69,7 +69,7 @@ TEST(Presets, SrgbTransferFunctionKnownValues) {
   EXPECT_DOUBLE_EQ(linearToSrgb(0.0), 0.0);
   EXPECT_NEAR(linearToSrgb(1.0), 1.0, 1e-15);
   EXPECT_NEAR(linearToSrgb(0.0031308), 0.0404500, 1e-6);  // the two pieces meet
-  EXPECT_NEAR(linearToSrgb(0.18), 0.4613561, 1e-6);        // photographic middle grey
+  EXPECT_NEAR(linearToSrgb(0.18), 0.4613561, 1e-6);       // photographic middle grey
 }
 
 TEST(Presets, IorFromF0InvertsTheNormalIncidenceFresnel) {

@@ -35,9 +35,8 @@ struct Case {
   double alpha;
   double incidence_degrees;
   std::string label() const {
-    return std::string(modelName(kSamplingTechniques, technique)) + " d=" +
-           std::string(modelName(kDistributions, d)) + " alpha=" + std::to_string(alpha) +
-           " incidence=" + std::to_string(incidence_degrees);
+    return std::string(modelName(kSamplingTechniques, technique)) + " d=" + std::string(modelName(kDistributions, d)) +
+           " alpha=" + std::to_string(alpha) + " incidence=" + std::to_string(incidence_degrees);
   }
 };
 
@@ -47,8 +46,7 @@ std::vector<Case> cases() {
     for (double alpha : kAlphas)
       for (double incidence : kIncidenceDegrees) all.push_back({f64::SAMPLE_D, d.id, alpha, incidence});
   for (double alpha : kAlphas)
-    for (double incidence : kIncidenceDegrees)
-      all.push_back({f64::SAMPLE_GGX_VISIBLE, f64::D_GGX, alpha, incidence});
+    for (double incidence : kIncidenceDegrees) all.push_back({f64::SAMPLE_GGX_VISIBLE, f64::D_GGX, alpha, incidence});
   // The cosine sampler depends on neither alpha nor v: one case.
   all.push_back({f64::SAMPLE_COSINE, f64::D_GGX, 1.0, 45});
   return all;
@@ -119,8 +117,7 @@ FitResult chiSquareFit(const Case& c, unsigned seed) {
       for (size_t a = 0; a < rule.nodes.size(); ++a) {
         for (size_t b = 0; b < rule.nodes.size(); ++b) {
           double theta = theta0 + dtheta * rule.nodes[a], phi = phi0 + dphi * rule.nodes[b];
-          glm::dvec3 w(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
-                       std::cos(theta));
+          glm::dvec3 w(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
           double density;
           if (by_normal) {
             glm::dvec3 l = glm::reflect(-v, w);
@@ -148,8 +145,7 @@ FitResult chiSquareFit(const Case& c, unsigned seed) {
     ++bins;
   }
   if (pooled_expected > 0) {
-    statistic += (pooled_observed - pooled_expected) * (pooled_observed - pooled_expected) /
-                 pooled_expected;
+    statistic += (pooled_observed - pooled_expected) * (pooled_observed - pooled_expected) / pooled_expected;
     ++bins;
   }
   int dof = bins - 1;
@@ -165,15 +161,14 @@ TEST(Sampling, ChiSquareGoodnessOfFit) {
   std::string lowest_case;
   for (size_t k = 0; k < all.size(); ++k) {
     FitResult fit = chiSquareFit(all[k], 1000 + unsigned(k));
-    EXPECT_GE(fit.p_value, threshold) << all[k].label() << " chi2=" << fit.statistic
-                                      << " dof=" << fit.dof;
+    EXPECT_GE(fit.p_value, threshold) << all[k].label() << " chi2=" << fit.statistic << " dof=" << fit.dof;
     if (fit.p_value < lowest) {
       lowest = fit.p_value;
       lowest_case = all[k].label();
     }
   }
-  std::printf("chi-square: %zu cases, Sidak threshold %.3g, lowest p %.3g (%s)\n", all.size(),
-              threshold, lowest, lowest_case.c_str());
+  std::printf("chi-square: %zu cases, Sidak threshold %.3g, lowest p %.3g (%s)\n", all.size(), threshold, lowest,
+              lowest_case.c_str());
 }
 
 TEST(Sampling, PdfIsTheJacobianOfTheSamplingMap) {
@@ -192,9 +187,7 @@ TEST(Sampling, PdfIsTheJacobianOfTheSamplingMap) {
     for (double u1 : {0.1, 0.3, 0.5, 0.7, 0.9}) {
       for (double u2 : {0.05, 0.35, 0.6, 0.85}) {
         const double h = 1e-6;
-        auto at = [&](double a, double b) {
-          return f64::sample_direction(c.technique, p, n, v, glm::dvec2(a, b));
-        };
+        auto at = [&](double a, double b) { return f64::sample_direction(c.technique, p, n, v, glm::dvec2(a, b)); };
         if (glm::length(at(u1, u2) + v) < 0.1) continue;
         glm::dvec3 d1 = (at(u1 + h, u2) - at(u1 - h, u2)) / (2 * h);
         glm::dvec3 d2 = (at(u1, u2 + h) - at(u1, u2 - h)) / (2 * h);

@@ -25,8 +25,7 @@ TEST(Stability, SweepIsFiniteAndFloatIsAccurateWhereWellConditioned) {
   // every part (measured worst: see docs/shading.md; the bound leaves
   // headroom for libm differences in exp and pow).
   for (const PrecisionReport::Part& part : report.by_part)
-    EXPECT_LT(part.benign.max_relative_error, 1e-4)
-        << part.kind << " " << part.name << ": " << part.benign.worst_case;
+    EXPECT_LT(part.benign.max_relative_error, 1e-4) << part.kind << " " << part.name << ": " << part.benign.worst_case;
 }
 
 TEST(Stability, SamplersAreFiniteAtTheEdgesOfTheUnitSquare) {
@@ -49,10 +48,9 @@ TEST(Stability, SamplersAreFiniteAtTheEdgesOfTheUnitSquare) {
               glm::vec3 n(0, 0, 1), v(std::sin(theta), 0, std::cos(theta));
               glm::vec3 l = f32::sample_direction(technique, p32, n, v, {u1, u2});
               float pdf = f32::direction_pdf(technique, p32, n, l, v);
-              EXPECT_TRUE(std::isfinite(l.x) && std::isfinite(l.y) && std::isfinite(l.z) &&
-                          std::isfinite(pdf))
-                  << "technique " << technique << " d=" << d.name << " alpha=" << alpha
-                  << " theta_v=" << theta << " u=" << u1 << "," << u2;
+              EXPECT_TRUE(std::isfinite(l.x) && std::isfinite(l.y) && std::isfinite(l.z) && std::isfinite(pdf))
+                  << "technique " << technique << " d=" << d.name << " alpha=" << alpha << " theta_v=" << theta
+                  << " u=" << u1 << "," << u2;
 
               f64::BrdfParams p64;
               p64.d_model = d.id;
@@ -60,11 +58,10 @@ TEST(Stability, SamplersAreFiniteAtTheEdgesOfTheUnitSquare) {
               p64.f_model = f64::F_NONE;
               p64.alpha = alpha;
               p64.f0 = p64.eta = p64.k = p64.diffuse = glm::dvec3(0);
-              glm::dvec3 l64 = f64::sample_direction(technique, p64, glm::dvec3(n), glm::dvec3(v),
-                                                     {double(u1), double(u2)});
+              glm::dvec3 l64 =
+                  f64::sample_direction(technique, p64, glm::dvec3(n), glm::dvec3(v), {double(u1), double(u2)});
               double pdf64 = f64::direction_pdf(technique, p64, glm::dvec3(n), l64, glm::dvec3(v));
-              EXPECT_TRUE(std::isfinite(l64.x) && std::isfinite(l64.y) && std::isfinite(l64.z) &&
-                          std::isfinite(pdf64));
+              EXPECT_TRUE(std::isfinite(l64.x) && std::isfinite(l64.y) && std::isfinite(l64.z) && std::isfinite(pdf64));
             }
 }
 

@@ -1,0 +1,117 @@
+// facet render: a scene file (or a bare cage) to EXR with every AOV, and a PNG preview.
+#include <CLI/CLI.hpp>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+
+#include "commands.h"
+#include "engine/image/image_io.h"
+#include "engine/renderer.h"
+#include "scenes/scene_file.h"
+
+namespace facet::cli {
+namespace {
+
+struct RenderOptions {
+  std::string scene;
+  std::string exr;
+  std::string png;
+  std::string size;
+  std::vector<double> eye, target, up;
+  std::optional<double> fov;
+  std::string method;
+  std::optional<int> tessLevel;
+  std::optional<int> spp;
+  std::string backend = "cpu";
+  float exposure = 0;
+};
+
+glm::dvec3 vector3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
+
+// Command-line settings win over the scene file's.
+void applyOverrides(const RenderOptions& o, scene::Scene& scene) {
+  if (!o.size.empty()) {
+    int w = 0, h = 0;
+    char x = 0, trailing = 0;
+    if (std::sscanf(o.size.c_str(), "%d%c%d%c", &w, &x, &h, &trailing) != 3 || x != 'x' || w < 1 || h < 1 ||
+        w > 16384 || h > 16384)
+      throw std::invalid_argument("--size '" + o.size + "': expected WIDTHxHEIGHT, each in 1..16384, e.g. 512x512");
+    scene.render.width = w;
+    scene.render.height = h;
+  }
+  if (!o.eye.empty()) scene.camera.eye = vector3(o.eye);
+  if (!o.target.empty()) scene.camera.target = vector3(o.target);
+  if (!o.up.empty()) scene.camera.up = vector3(o.up);
+  if (o.fov) scene.camera.verticalFovDegrees = *o.fov;
+  const glm::dvec3 view = scene.camera.target - scene.camera.eye;
+  if (glm::length(view) == 0) throw std::invalid_argument("--eye and --target must differ");
+  if (glm::length(glm::cross(view, scene.camera.up)) <= 1e-12 * glm::length(view) * glm::length(scene.camera.up))
+    throw std::invalid_argument("--up must not be zero or parallel to the view direction");
+  if (o.method == "exact") scene.render.method = scene::IntersectionMethod::Exact;
+  if (o.method == "tess") scene.render.method = scene::IntersectionMethod::Tessellated;
+  if (o.tessLevel) scene.render.tessellationRate = *o.tessLevel;
+  if (o.spp) {
+    const int root = int(std::lround(std::sqrt(*o.spp)));
+    if (root * root != *o.spp)
+      throw std::invalid_argument("--spp " + std::to_string(*o.spp) + ": must be a square number (stratified n x n)");
+    scene.render.samplesPerPixel = *o.spp;
+  }
+}
+
+void runRender(const RenderOptions& o) {
+  scene::Scene scene = scene::loadScene(o.scene);
+  applyOverrides(o, scene);
+  const bool interactive = isatty(STDERR_FILENO);
+  auto progress = [&](double done) {
+    if (interactive) std::fprintf(stderr, "\rrendering %3d%%", int(done * 100));
+  };
+  RenderReport report = render(scene, Backend::Cpu, progress);
+  if (interactive) std::fprintf(stderr, "\r              \r");
+
+  writeExr(o.exr, report.image);
+  if (!o.png.empty()) writePng(o.png, report.image, o.exposure);
+
+  std::printf("%s\n", report.geometrySummary.c_str());
+  std::printf("backend: %s; %dx%d, %d spp, %s intersection\n", report.device.c_str(), scene.render.width,
+              scene.render.height, scene.render.samplesPerPixel,
+              scene.render.method == scene::IntersectionMethod::Exact ? "exact" : "tessellated");
+  for (const StageTime& stage : report.stages)
+    std::printf("  %-14s %10.1f ms\n", stage.name.c_str(), stage.milliseconds);
+  const double traceSeconds = report.stages.back().milliseconds * 1e-3;
+  std::printf("rays: %llu primary, %llu shadow, %.2f Mrays/s\n", (unsigned long long)report.primaryRays,
+              (unsigned long long)report.shadowRays,
+              double(report.primaryRays + report.shadowRays) / traceSeconds * 1e-6);
+  std::printf("wrote %s%s%s\n", o.exr.c_str(), o.png.empty() ? "" : " and ", o.png.c_str());
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app) {
+  auto o = std::make_shared<RenderOptions>();
+  auto* c = app.add_subcommand("render", "Render a scene (.json), a control cage (.obj) or a glTF file");
+  c->add_option("scene", o->scene, "Scene file")->required()->check(CLI::ExistingFile);
+  c->add_option("-o,--output", o->exr, "EXR with beauty and every AOV")->required();
+  c->add_option("--png", o->png, "Also write an 8-bit sRGB preview");
+  c->add_option("--exposure", o->exposure, "PNG exposure in stops");
+  c->add_option("--size", o->size, "Image size WIDTHxHEIGHT");
+  auto triple = [&](const char* name, std::vector<double>& v, const char* help) {
+    c->add_option(name, v, help)->delimiter(',')->expected(3)->check(CLI::Number);
+  };
+  triple("--eye", o->eye, "Camera position x,y,z");
+  triple("--target", o->target, "Point the camera looks at x,y,z");
+  triple("--up", o->up, "Camera up vector x,y,z");
+  c->add_option("--fov", o->fov, "Vertical field of view in degrees")->check(CLI::Range(1e-3, 179.0));
+  c->add_option("--method", o->method, "Ray casting: exact limit surface, or tessellated")
+      ->check(CLI::IsMember({"exact", "tess"}));
+  c->add_option("--tess-level", o->tessLevel, "Dicing rate k (k x k per patch) for --method tess")
+      ->check(CLI::Range(1, 256));
+  c->add_option("--spp", o->spp, "Samples per pixel (a square number)")->check(CLI::Range(1, 4096));
+  c->add_option("--backend", o->backend, "Renderer backend")->check(CLI::IsMember({"cpu"}));
+  c->callback([o] { runRender(*o); });
+}
+
+}  // namespace facet::cli

@@ -1,0 +1,41 @@
+#pragma once
+// Rays and hits of the CPU reference. Everything is double precision.
+
+#include <glm/vec3.hpp>
+
+#include <limits>
+
+namespace facet::cpu {
+
+struct Ray {
+  glm::dvec3 origin{0.0};
+  glm::dvec3 direction{0.0, 0.0, 1.0};  // need not be unit; t is in units of |direction|
+  // Hits at t < tMin are ignored. Rays leaving a surface (shadow and
+  // secondary rays) start at the hit point with tMin ~ 1e-6 x the scene
+  // diagonal: a thousand times the exact method's default tolerance, so the
+  // surface they leave is not found again (tested).
+  double tMin = 0.0;
+  double tMax = std::numeric_limits<double>::infinity();
+
+  glm::dvec3 at(double t) const { return origin + t * direction; }
+};
+
+struct SurfaceHit {
+  double t = 0.0;
+  glm::dvec3 position{0.0};
+  // Normals are oriented by the cage's winding (faces counter-clockwise
+  // seen from outside give outward normals), never flipped towards the ray.
+  // Unit normal of the geometry the ray actually hit: the limit surface for
+  // exact intersection, the micro-triangle for tessellated intersection.
+  glm::dvec3 geometricNormal{0.0};
+  // Unit limit normal dP/du x dP/dv at (u, v), with the fallback described
+  // in limit_normal.h where that cross product vanishes.
+  glm::dvec3 shadingNormal{0.0};
+  int patch = -1;  // SubdivisionSurface patch index (PatchRecord::sourcePatch)
+  int ptexFace = -1;
+  int coarseFace = -1;
+  double u = 0.0;  // ptex face parameters
+  double v = 0.0;
+};
+
+}  // namespace facet::cpu

@@ -1,0 +1,175 @@
+#include "engine/cpu/reference_renderer.h"
+
+#include <glm/geometric.hpp>
+
+#include <atomic>
+#include <cmath>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "engine/camera.hpp"
+#include "engine/cpu/intersect.h"
+#include "materials/material.hpp"
+
+namespace facet::cpu {
+namespace {
+
+struct SceneHit {
+  SurfaceHit surface;
+  int object = -1;
+};
+
+class ReferenceScene {
+ public:
+  ReferenceScene(const scene::Scene& scene, const scene::SceneGeometry& geometry)
+      : scene_(scene), geometry_(geometry), epsilon_(1e-6 * geometry.bounds.diagonal()) {
+    int patches = 0, faces = 0;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+      patchOffset_.push_back(patches);
+      faceOffset_.push_back(faces);
+      patches += geometry.objects[i].surface.patchCount();
+      faces += scene.objects[i].cage.faceCount();
+      if (scene.render.method == scene::IntersectionMethod::Tessellated)
+        tessellations_.push_back(
+            TessellatedSurface::dice(geometry.objects[i].surface, geometry.objects[i].refinement.tessellationRate));
+      params_.push_back(materials::toParams64(scene.materials[std::size_t(scene.objects[i].material)]));
+    }
+  }
+
+  // Nearest hit of all objects; `firstOnly` stops at any hit (shadow rays).
+  std::optional<SceneHit> intersect(Ray ray, bool firstOnly) const {
+    std::optional<SceneHit> nearest;
+    for (std::size_t i = 0; i < geometry_.objects.size(); ++i) {
+      const scene::ObjectGeometry& o = geometry_.objects[i];
+      std::optional<SurfaceHit> hit = tessellations_.empty()
+                                          ? intersectExact(o.surface, o.bvh, ray)
+                                          : intersectTessellated(o.surface, o.bvh, tessellations_[i], ray);
+      if (!hit) continue;
+      nearest = SceneHit{*hit, int(i)};
+      if (firstOnly) break;
+      ray.tMax = hit->t;
+    }
+    return nearest;
+  }
+
+  // Radiance leaving the hit towards -direction, from every punctual light.
+  glm::dvec3 shade(const SceneHit& hit, const glm::dvec3& direction, std::uint64_t& shadowRays) const {
+    const glm::dvec3 v = -direction;
+    glm::dvec3 n = hit.surface.shadingNormal, ng = hit.surface.geometricNormal;
+    if (glm::dot(ng, v) < 0) n = -n, ng = -ng;
+    const auto& params = params_[std::size_t(hit.object)];
+    glm::dvec3 radiance(0.0);
+    for (const scene::Light& light : scene_.lights) {
+      glm::dvec3 l;
+      glm::dvec3 cLight = light.color;
+      double distance = INFINITY;
+      if (light.type == scene::LightType::Directional) {
+        l = -light.direction;
+      } else {
+        const glm::dvec3 toLight = light.position - hit.surface.position;
+        distance = glm::length(toLight);
+        l = toLight / distance;
+        cLight /= distance * distance;
+        if (light.type == scene::LightType::Spot) cLight *= spotFalloff(light, -l);
+      }
+      const double nl = glm::dot(n, l);
+      if (nl <= 0 || glm::dot(ng, l) <= 0 || cLight == glm::dvec3(0.0)) continue;
+      Ray shadow{hit.surface.position + epsilon_ * ng, l, epsilon_, distance};
+      ++shadowRays;
+      if (intersect(shadow, true)) continue;
+      radiance += M_PI * materials::f64::brdf_evaluate(params, n, l, v) * cLight * nl;
+    }
+    return radiance;
+  }
+
+  void writeAovs(Image& image, std::size_t pixel, const SceneHit& hit, const glm::dvec3& direction) const {
+    glm::dvec3 n = hit.surface.shadingNormal, ng = hit.surface.geometricNormal;
+    if (glm::dot(ng, direction) > 0) n = -n, ng = -ng;
+    image.depth[pixel] = float(hit.surface.t);
+    image.position[pixel] = glm::vec3(hit.surface.position);
+    image.geometricNormal[pixel] = glm::vec3(ng);
+    image.shadingNormal[pixel] = glm::vec3(n);
+    image.patchId[pixel] = std::uint32_t(patchOffset_[std::size_t(hit.object)] + hit.surface.patch);
+    image.faceId[pixel] = std::uint32_t(faceOffset_[std::size_t(hit.object)] + hit.surface.coarseFace);
+    image.uv[pixel] = glm::vec2(float(hit.surface.u), float(hit.surface.v));
+  }
+
+ private:
+  // glTF's spot profile: a squared linear ramp in cos θ between the cones.
+  static double spotFalloff(const scene::Light& light, const glm::dvec3& fromLight) {
+    const double cosOuter = std::cos(glm::radians(light.outerConeDegrees));
+    const double cosInner = std::cos(glm::radians(light.innerConeDegrees));
+    const double t = (glm::dot(fromLight, light.direction) - cosOuter) / std::max(cosInner - cosOuter, 1e-4);
+    const double ramp = std::clamp(t, 0.0, 1.0);
+    return ramp * ramp;
+  }
+
+  const scene::Scene& scene_;
+  const scene::SceneGeometry& geometry_;
+  double epsilon_;
+  std::vector<int> patchOffset_, faceOffset_;
+  std::vector<TessellatedSurface> tessellations_;
+  std::vector<materials::f64::BrdfParams> params_;
+};
+
+}  // namespace
+
+Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geometry, ReferenceStatistics* statistics,
+                      const std::function<void(double)>& progress) {
+  const int width = scene.render.width, height = scene.render.height;
+  Image image(width, height);
+  const ReferenceScene reference(scene, geometry);
+  const camera::CameraFrame frame = camera::cameraFrame(scene.camera, width, height);
+  const int strata = int(std::lround(std::sqrt(scene.render.samplesPerPixel)));
+
+  std::atomic<int> nextRow{0}, finishedRows{0};
+  std::atomic<std::uint64_t> primaryRays{0}, shadowRays{0};
+  std::mutex progressMutex;
+  auto worker = [&] {
+    std::uint64_t primary = 0, shadow = 0;
+    for (int y = nextRow++; y < height; y = nextRow++) {
+      for (int x = 0; x < width; ++x) {
+        const std::size_t pixel = image.index(x, y);
+        // The ray through the pixel centre gives the AOVs, and the beauty when strata == 1.
+        const glm::dvec3 centre = camera::camera_ray_direction(frame, x + 0.5, y + 0.5, width, height);
+        ++primary;
+        const auto centreHit = reference.intersect(Ray{frame.eye, centre}, false);
+        if (centreHit) reference.writeAovs(image, pixel, *centreHit, centre);
+        glm::dvec3 radiance(0.0);
+        double coverage = 0;
+        if (strata == 1 && centreHit) {
+          radiance = reference.shade(*centreHit, centre, shadow);
+          coverage = 1;
+        }
+        for (int sy = 0; strata > 1 && sy < strata; ++sy) {
+          for (int sx = 0; sx < strata; ++sx) {
+            const double px = x + (sx + 0.5) / strata, py = y + (sy + 0.5) / strata;
+            const glm::dvec3 direction = camera::camera_ray_direction(frame, px, py, width, height);
+            ++primary;
+            const auto hit = reference.intersect(Ray{frame.eye, direction}, false);
+            if (!hit) continue;
+            coverage += 1;
+            radiance += reference.shade(*hit, direction, shadow);
+          }
+        }
+        const double samples = double(strata * strata);
+        image.beauty[pixel] = glm::vec4(glm::vec3(radiance / samples), float(coverage / samples));
+      }
+      const int done = ++finishedRows;
+      if (progress) {
+        std::lock_guard lock(progressMutex);
+        progress(double(done) / height);
+      }
+    }
+    primaryRays += primary;
+    shadowRays += shadow;
+  };
+  std::vector<std::thread> threads;
+  for (unsigned i = 0; i < std::max(1u, std::thread::hardware_concurrency()); ++i) threads.emplace_back(worker);
+  for (auto& t : threads) t.join();
+  if (statistics) *statistics = {primaryRays, shadowRays};
+  return image;
+}
+
+}  // namespace facet::cpu

@@ -1,0 +1,129 @@
+#include "engine/image/image_io.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <system_error>
+
+#include "materials/presets.hpp"
+
+namespace facet {
+namespace {
+
+struct Channel {
+  const char* name;
+  Imf::PixelType type;
+  char* base;
+  std::size_t stride;  // bytes between pixels
+};
+
+// The channel table shared by the writer and the reader.
+std::vector<Channel> channels(Image& image) {
+  auto f = [](auto& plane, int component) { return reinterpret_cast<char*>(plane.data()) + component * sizeof(float); };
+  const std::size_t v4 = sizeof(glm::vec4), v3 = sizeof(glm::vec3), v2 = sizeof(glm::vec2);
+  return {
+      {"R", Imf::FLOAT, f(image.beauty, 0), v4},
+      {"G", Imf::FLOAT, f(image.beauty, 1), v4},
+      {"B", Imf::FLOAT, f(image.beauty, 2), v4},
+      {"A", Imf::FLOAT, f(image.beauty, 3), v4},
+      {"Z", Imf::FLOAT, f(image.depth, 0), sizeof(float)},
+      {"P.X", Imf::FLOAT, f(image.position, 0), v3},
+      {"P.Y", Imf::FLOAT, f(image.position, 1), v3},
+      {"P.Z", Imf::FLOAT, f(image.position, 2), v3},
+      {"Ng.X", Imf::FLOAT, f(image.geometricNormal, 0), v3},
+      {"Ng.Y", Imf::FLOAT, f(image.geometricNormal, 1), v3},
+      {"Ng.Z", Imf::FLOAT, f(image.geometricNormal, 2), v3},
+      {"N.X", Imf::FLOAT, f(image.shadingNormal, 0), v3},
+      {"N.Y", Imf::FLOAT, f(image.shadingNormal, 1), v3},
+      {"N.Z", Imf::FLOAT, f(image.shadingNormal, 2), v3},
+      {"patchId", Imf::UINT, reinterpret_cast<char*>(image.patchId.data()), sizeof(std::uint32_t)},
+      {"faceId", Imf::UINT, reinterpret_cast<char*>(image.faceId.data()), sizeof(std::uint32_t)},
+      {"uv.U", Imf::FLOAT, f(image.uv, 0), v2},
+      {"uv.V", Imf::FLOAT, f(image.uv, 1), v2},
+  };
+}
+
+}  // namespace
+
+void writeAtomically(const std::filesystem::path& path,
+                     const std::function<void(const std::filesystem::path&)>& write) {
+  std::random_device entropy;
+  std::filesystem::path temporary = path;
+  temporary += ".tmp-" + std::to_string(entropy());
+  try {
+    write(temporary);
+    std::filesystem::rename(temporary, path);
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw;
+  }
+}
+
+void writeExr(const std::filesystem::path& path, const Image& image) {
+  writeAtomically(path, [&](const std::filesystem::path& temporary) {
+    Imf::Header header(image.width, image.height);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    Imf::FrameBuffer frame;
+    // The slices only read through these pointers; the table is shared with readExr.
+    for (const Channel& c : channels(const_cast<Image&>(image))) {
+      header.channels().insert(c.name, Imf::Channel(c.type));
+      frame.insert(c.name, Imf::Slice(c.type, c.base, c.stride, c.stride * std::size_t(image.width)));
+    }
+    try {
+      Imf::OutputFile file(temporary.c_str(), header);
+      file.setFrameBuffer(frame);
+      file.writePixels(image.height);
+    } catch (const std::exception& e) {
+      throw std::runtime_error(path.string() + ": cannot write EXR: " + e.what());
+    }
+  });
+}
+
+Image readExr(const std::filesystem::path& path) {
+  try {
+    Imf::InputFile file(path.c_str());
+    const Imath::Box2i window = file.header().dataWindow();
+    Image image(window.max.x - window.min.x + 1, window.max.y - window.min.y + 1);
+    Imf::FrameBuffer frame;
+    for (const Channel& c : channels(image)) {
+      if (!file.header().channels().findChannel(c.name)) continue;  // keep the miss default
+      // OpenEXR addresses slices by absolute pixel coordinates.
+      char* origin = c.base - (std::ptrdiff_t(window.min.x) + std::ptrdiff_t(window.min.y) * image.width) *
+                                  std::ptrdiff_t(c.stride);
+      frame.insert(c.name, Imf::Slice(c.type, origin, c.stride, c.stride * std::size_t(image.width)));
+    }
+    file.setFrameBuffer(frame);
+    file.readPixels(window.min.y, window.max.y);
+    return image;
+  } catch (const std::exception& e) {
+    throw std::runtime_error(path.string() + ": cannot read EXR: " + e.what());
+  }
+}
+
+void writePng(const std::filesystem::path& path, const Image& image, float exposure) {
+  const float scale = std::exp2(exposure);
+  std::vector<std::uint8_t> pixels(image.pixelCount() * 4);
+  for (std::size_t i = 0; i < image.pixelCount(); ++i) {
+    const glm::vec4& p = image.beauty[i];
+    for (int c = 0; c < 3; ++c) {
+      double encoded = materials::linearToSrgb(std::clamp(double(p[c] * scale), 0.0, 1.0));
+      pixels[4 * i + c] = std::uint8_t(std::lround(encoded * 255.0));
+    }
+    pixels[4 * i + 3] = std::uint8_t(std::lround(std::clamp(p.a, 0.0f, 1.0f) * 255.0f));
+  }
+  writeAtomically(path, [&](const std::filesystem::path& temporary) {
+    if (!stbi_write_png(temporary.c_str(), image.width, image.height, 4, pixels.data(), image.width * 4))
+      throw std::runtime_error(path.string() + ": cannot write PNG (is the folder writable?)");
+  });
+}
+
+}  // namespace facet

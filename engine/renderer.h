@@ -1,0 +1,37 @@
+// The renderer front-end: the one place where a scene meets a backend. Both
+// backends fill the same Image; the report says what each stage cost.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "engine/image/image.h"
+#include "scenes/scene.h"
+
+namespace facet {
+
+enum class Backend { Cpu };
+const char* toString(Backend backend);
+
+struct StageTime {
+  std::string name;
+  double milliseconds = 0;
+};
+
+struct RenderReport {
+  Image image;
+  std::string device;           // what ran the render
+  std::string geometrySummary;  // refinement, patch counts and memory per object
+  int patches = 0;
+  std::vector<StageTime> stages;
+  std::uint64_t primaryRays = 0;
+  std::uint64_t shadowRays = 0;
+
+  double totalMilliseconds() const;
+};
+
+RenderReport render(const scene::Scene& scene, Backend backend, const std::function<void(double)>& progress = {});
+
+}  // namespace facet

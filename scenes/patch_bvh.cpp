@@ -1,0 +1,209 @@
+#include "scenes/patch_bvh.h"
+
+#include "scenes/subdivision_surface.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace facet::scene {
+
+namespace {
+
+constexpr int kBins = 16;
+
+double surfaceArea(const Aabb& box) {
+  if (box.empty()) return 0.0;
+  glm::dvec3 e = box.hi - box.lo;
+  return 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
+}
+
+struct BuildItem {
+  Aabb bounds;
+  glm::dvec3 centroid;
+  int patch;
+};
+
+class Builder {
+ public:
+  Builder(std::vector<BuildItem> items, int maxLeafPatches) : items_(std::move(items)), maxLeaf_(maxLeafPatches) {}
+
+  void build(std::vector<PatchBvh::Node>& nodes, std::vector<int>& leafPatches, int& maxDepth) {
+    nodes_ = &nodes;
+    leafPatches_ = &leafPatches;
+    maxDepth_ = &maxDepth;
+    if (!items_.empty()) buildNode(0, static_cast<int>(items_.size()), 0);
+  }
+
+ private:
+  // Returns the index of the node it appended (children follow depth-first).
+  int buildNode(int begin, int end, int depth) {
+    *maxDepth_ = std::max(*maxDepth_, depth);
+    Aabb bounds, centroids;
+    for (int i = begin; i < end; ++i) {
+      bounds.extend(items_[i].bounds);
+      centroids.extend(items_[i].centroid);
+    }
+    const int index = static_cast<int>(nodes_->size());
+    nodes_->push_back({bounds, 0, 0});
+    const int count = end - begin;
+
+    if (count <= maxLeaf_) {
+      (*nodes_)[index].next = static_cast<int>(leafPatches_->size());
+      (*nodes_)[index].patchCount = count;
+      for (int i = begin; i < end; ++i) leafPatches_->push_back(items_[i].patch);
+      return index;
+    }
+    int mid = splitBySah(begin, end, centroids);
+    // All centroids coincide: any halving is as good as another.
+    if (mid < 0) mid = begin + count / 2;
+    buildNode(begin, mid, depth + 1);
+    const int second = buildNode(mid, end, depth + 1);
+    (*nodes_)[index].next = second;
+    return index;
+  }
+
+  // Partition point of the best binned-SAH split, or -1 if the centroids
+  // do not spread along any axis.
+  int splitBySah(int begin, int end, const Aabb& centroids) {
+    double bestCost = std::numeric_limits<double>::infinity();
+    int bestAxis = -1, bestBin = -1;
+    for (int axis = 0; axis < 3; ++axis) {
+      double extent = centroids.hi[axis] - centroids.lo[axis];
+      if (!(extent > 0.0)) continue;
+      Aabb binBounds[kBins];
+      int binCounts[kBins] = {};
+      for (int i = begin; i < end; ++i) {
+        int b = binOf(items_[i].centroid[axis], centroids.lo[axis], extent);
+        binBounds[b].extend(items_[i].bounds);
+        ++binCounts[b];
+      }
+      double rightArea[kBins];
+      int rightCount[kBins];
+      Aabb accumulated;
+      int accumulatedCount = 0;
+      for (int b = kBins - 1; b > 0; --b) {
+        accumulated.extend(binBounds[b]);
+        accumulatedCount += binCounts[b];
+        rightArea[b] = surfaceArea(accumulated);
+        rightCount[b] = accumulatedCount;
+      }
+      accumulated = Aabb();
+      accumulatedCount = 0;
+      for (int b = 1; b < kBins; ++b) {
+        accumulated.extend(binBounds[b - 1]);
+        accumulatedCount += binCounts[b - 1];
+        if (accumulatedCount == 0 || rightCount[b] == 0) continue;
+        double cost = surfaceArea(accumulated) * accumulatedCount + rightArea[b] * rightCount[b];
+        if (cost < bestCost) {
+          bestCost = cost;
+          bestAxis = axis;
+          bestBin = b;
+        }
+      }
+    }
+    if (bestAxis < 0) return -1;
+    double extent = centroids.hi[bestAxis] - centroids.lo[bestAxis];
+    auto middle = std::partition(items_.begin() + begin, items_.begin() + end, [&](const BuildItem& item) {
+      return binOf(item.centroid[bestAxis], centroids.lo[bestAxis], extent) < bestBin;
+    });
+    return static_cast<int>(middle - items_.begin());
+  }
+
+  static int binOf(double value, double lo, double extent) {
+    int b = static_cast<int>(kBins * (value - lo) / extent);
+    return std::clamp(b, 0, kBins - 1);
+  }
+
+  std::vector<BuildItem> items_;
+  int maxLeaf_;
+  std::vector<PatchBvh::Node>* nodes_ = nullptr;
+  std::vector<int>* leafPatches_ = nullptr;
+  int* maxDepth_ = nullptr;
+};
+
+// Float bounds that still contain the double ones.
+float roundDown(double value) {
+  float f = static_cast<float>(value);
+  return static_cast<double>(f) > value ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+float roundUp(double value) {
+  float f = static_cast<float>(value);
+  return static_cast<double>(f) < value ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
+gpu_layout::PatchPoint toGpu(const glm::dvec3& p) {
+  return {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)};
+}
+
+}  // namespace
+
+Aabb patchBounds(const BezierPatch& patch) {
+  Aabb box;
+  for (const glm::dvec3& p : patch.points) box.extend(p);
+  if (patch.gregory)
+    for (const glm::dvec3& p : patch.alternates) box.extend(p);
+  return box;
+}
+
+PatchBvh PatchBvh::build(const SubdivisionSurface& surface, int maxLeafPatches) {
+  std::vector<BuildItem> items;
+  items.reserve(surface.patchCount());
+  for (int p = 0; p < surface.patchCount(); ++p) {
+    Aabb box = patchBounds(surface.bezierPatch(p));
+    items.push_back({box, box.centre(), p});
+  }
+
+  PatchBvh bvh;
+  int maxDepth = 0;
+  Builder(std::move(items), std::max(1, maxLeafPatches)).build(bvh.nodes_, bvh.leafPatches_, maxDepth);
+
+  for (const Node& node : bvh.nodes_) {
+    bvh.gpuNodes_.push_back({roundDown(node.bounds.lo.x), roundDown(node.bounds.lo.y), roundDown(node.bounds.lo.z),
+                             static_cast<gpu_layout::uint>(node.next), roundUp(node.bounds.hi.x),
+                             roundUp(node.bounds.hi.y), roundUp(node.bounds.hi.z),
+                             static_cast<gpu_layout::uint>(node.patchCount)});
+  }
+  for (int source : bvh.leafPatches_) {
+    const PatchInfo& info = surface.patch(source);
+    const BezierPatch& bezier = surface.bezierPatch(source);
+    gpu_layout::PatchRecord record{};
+    record.kind = bezier.gregory ? gpu_layout::FACET_PATCH_GREGORY : gpu_layout::FACET_PATCH_BEZIER;
+    record.firstPoint = static_cast<gpu_layout::uint>(bvh.gpuPoints_.size());
+    record.ptexFace = static_cast<gpu_layout::uint>(info.ptexFace);
+    record.coarseFace = static_cast<gpu_layout::uint>(info.coarseFace);
+    record.faceU0 = static_cast<float>(info.domain.u0);
+    record.faceV0 = static_cast<float>(info.domain.v0);
+    record.faceSize = static_cast<float>(info.domain.size);
+    record.sourcePatch = static_cast<gpu_layout::uint>(source);
+    record.boundaryMask = info.boundaryMask;
+    record.depth = static_cast<gpu_layout::uint>(info.depth);
+    record.pointCount = bezier.gregory ? gpu_layout::FACET_PATCH_POINTS_GREGORY : gpu_layout::FACET_PATCH_POINTS_BEZIER;
+    record.transitionMask = info.transitionMask;
+    for (const glm::dvec3& p : bezier.points) bvh.gpuPoints_.push_back(toGpu(p));
+    if (bezier.gregory)
+      for (const glm::dvec3& p : bezier.alternates) bvh.gpuPoints_.push_back(toGpu(p));
+    bvh.gpuPatches_.push_back(record);
+  }
+
+  PatchBvhStatistics& stats = bvh.statistics_;
+  stats.nodes = static_cast<int>(bvh.nodes_.size());
+  stats.leaves =
+      static_cast<int>(std::count_if(bvh.nodes_.begin(), bvh.nodes_.end(), [](const Node& n) { return n.leaf(); }));
+  stats.maxDepth = maxDepth;
+  stats.patches = static_cast<int>(bvh.leafPatches_.size());
+  stats.gpuBytes = bvh.gpuNodes_.size() * sizeof(gpu_layout::PatchBvhNode) +
+                   bvh.gpuPatches_.size() * sizeof(gpu_layout::PatchRecord) +
+                   bvh.gpuPoints_.size() * sizeof(gpu_layout::PatchPoint);
+  return bvh;
+}
+
+std::string describe(const PatchBvhStatistics& stats) {
+  std::ostringstream out;
+  out << "patch BVH: " << stats.patches << " patches, " << stats.nodes << " nodes (" << stats.leaves
+      << " leaves, depth " << stats.maxDepth << "), " << (stats.gpuBytes + 512) / 1024 << " KiB of GPU arrays";
+  return out.str();
+}
+
+}  // namespace facet::scene

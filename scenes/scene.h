@@ -1,0 +1,73 @@
+// A scene as plain data: what a scene file says, validated, with every path
+// resolved and every cage already in world space. Knows no backend.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scenes/control_cage.h"
+#include "scenes/subdivision_surface.h"
+#include "materials/material.hpp"
+
+namespace facet::scene {
+
+// Pinhole camera. Pixel (i, j) is sampled at its centre; row 0 is the top.
+struct Camera {
+  glm::dvec3 eye{0.0, 0.0, 5.0};
+  glm::dvec3 target{0.0};
+  glm::dvec3 up{0.0, 1.0, 0.0};
+  double verticalFovDegrees = 40.0;
+};
+
+enum class LightType { Directional, Point, Spot };
+
+// Punctual lights in the course's convention: `color` is c_light, the
+// radiance a white Lambertian surface facing the light reflects, so that
+// L_o = π f(l, v) c_light (n·l)+. For point and spot lights c_light is given
+// at distance 1 and falls off as 1/d²; a spot light also fades from 1 inside
+// `innerConeDegrees` to 0 outside `outerConeDegrees` (half-angles).
+struct Light {
+  LightType type = LightType::Directional;
+  glm::dvec3 color{1.0};
+  glm::dvec3 position{0.0};              // point, spot
+  glm::dvec3 direction{0.0, -1.0, 0.0};  // the way the light travels: directional, spot
+  double innerConeDegrees = 30.0;
+  double outerConeDegrees = 45.0;
+};
+
+enum class IntersectionMethod { Exact, Tessellated };
+
+struct RenderSettings {
+  int width = 512;
+  int height = 512;
+  int samplesPerPixel = 1;  // a square number: stratified sqrt x sqrt
+  IntersectionMethod method = IntersectionMethod::Exact;
+  // Screen-space tolerance, in pixels, that chooses refinement and dicing
+  // levels (see chooseRefinement).
+  double pixelTolerance = 0.5;
+  std::optional<int> tessellationRate;  // overrides the choice from pixelTolerance
+};
+
+struct Object {
+  std::string name;
+  ControlCage cage;                   // world space
+  int material = 0;                   // index into Scene::materials
+  std::optional<int> isolationLevel;  // overrides the choice from pixelTolerance
+  EndCapBasis endCaps = EndCapBasis::Gregory;
+};
+
+struct Scene {
+  std::filesystem::path source;
+  Camera camera;
+  std::vector<materials::Material> materials;
+  std::vector<Object> objects;
+  std::vector<Light> lights;
+  RenderSettings render;
+};
+
+}  // namespace facet::scene

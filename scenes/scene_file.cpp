@@ -1,0 +1,79 @@
+#include "scenes/scene_file.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "scenes/input_error.h"
+#include "scenes/obj_cage.h"
+
+namespace facet::scene {
+
+Scene loadScene(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  if (extension == ".json") return loadJsonScene(path);
+  if (extension == ".obj") return sceneFromCage(loadObjCage(path));
+  if (extension == ".gltf" || extension == ".glb") return loadGltfScene(path);
+  throw InputError(path.string(), 0, "unknown scene format",
+                   "expected a .json scene, an .obj control cage, or a .gltf / .glb file");
+}
+
+Scene sceneFromCage(ControlCage cage) {
+  Scene scene;
+  scene.source = cage.source;
+  scene.materials.push_back(defaultMaterial());
+  Object object;
+  object.name = std::filesystem::path(cage.source).stem().string();
+  object.cage = std::move(cage);
+  scene.objects.push_back(std::move(object));
+  scene.camera = frameBounds(cageBounds(scene));
+  scene.lights.push_back(defaultKeyLight(scene.camera));
+  return scene;
+}
+
+materials::Material defaultMaterial() {
+  materials::Material m;
+  m.name = "default";
+  m.distribution = materials::f64::D_GGX;
+  m.geometry = materials::f64::G_SMITH_GGX_CORRELATED;
+  m.fresnel = materials::f64::F_SCHLICK;
+  m.alpha = 0.25;
+  m.f0 = glm::dvec3(0.04);
+  m.diffuse = glm::dvec3(0.5);
+  return m;
+}
+
+Camera frameBounds(const Aabb& bounds, double verticalFovDegrees) {
+  Camera camera;
+  camera.verticalFovDegrees = verticalFovDegrees;
+  camera.target = bounds.centre();
+  const double radius = std::max(0.5 * bounds.diagonal(), 1e-6);
+  const double halfFov = 0.5 * verticalFovDegrees * M_PI / 180.0;
+  const double distance = radius / (0.9 * std::sin(halfFov));
+  camera.eye = camera.target + distance * glm::normalize(glm::dvec3(1.0, 0.75, 1.5));
+  camera.up = {0.0, 1.0, 0.0};
+  return camera;
+}
+
+Light defaultKeyLight(const Camera& camera) {
+  const glm::dvec3 forward = glm::normalize(camera.target - camera.eye);
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, camera.up));
+  const glm::dvec3 up = glm::cross(right, forward);
+  Light light;
+  light.type = LightType::Directional;
+  light.color = glm::dvec3(1.0);
+  light.direction = glm::normalize(forward + 0.6 * right - 1.0 * up);
+  return light;
+}
+
+Aabb cageBounds(const Scene& scene) {
+  Aabb bounds;
+  for (const Object& object : scene.objects)
+    for (const glm::dvec3& p : object.cage.positions) bounds.extend(p);
+  return bounds;
+}
+
+}  // namespace facet::scene

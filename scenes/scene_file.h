@@ -1,0 +1,39 @@
+// Scene files in, validated plain data out.
+//
+//   .json         facet's scene format (docs/scene-format.md)
+//   .obj          a bare OpenSubdiv-style control cage
+//   .gltf / .glb  glTF 2.0: meshes as Catmull-Clark cages, metallic-roughness
+//                 materials, cameras and KHR_lights_punctual lights
+//
+// A scene without a camera is framed from the default direction, one without
+// lights gets the default key light (frameDefaultView). Errors throw
+// InputError naming the file, the line or field, and the rule.
+#pragma once
+
+#include <filesystem>
+
+#include "scenes/scene.h"
+
+namespace facet::scene {
+
+Scene loadScene(const std::filesystem::path& path);
+
+Scene loadJsonScene(const std::filesystem::path& path);
+Scene loadGltfScene(const std::filesystem::path& path);
+Scene sceneFromCage(ControlCage cage);
+
+// The material of objects that name none: grey plastic (diffuse 0.5,
+// F(0) = 0.04 Schlick, GGX alpha 0.25, height-correlated Smith).
+materials::Material defaultMaterial();
+
+// Looks at the centre of all objects' bounds from direction (1, 0.75, 1.5)
+// (right, above, in front), far enough for the bounding sphere to fill 90% of
+// the vertical field of view.
+Camera frameBounds(const Aabb& bounds, double verticalFovDegrees = 40.0);
+// A white directional key light (c_light = 1) from above the camera's left shoulder.
+Light defaultKeyLight(const Camera& camera);
+
+// World-space box of every object's control points (which enclose the limit surface).
+Aabb cageBounds(const Scene& scene);
+
+}  // namespace facet::scene

@@ -1,0 +1,318 @@
+// facet's JSON scene format; the reference is docs/scene-format.md.
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+
+#include "scenes/input_error.h"
+#include "scenes/obj_cage.h"
+#include "scenes/scene_file.h"
+
+namespace facet::scene {
+namespace {
+
+using nlohmann::json;
+
+// A value in the document and the path that names it in error messages.
+class Field {
+ public:
+  Field(const json& value, std::string path, const std::string& source)
+      : value_(value), path_(std::move(path)), source_(source) {}
+
+  [[noreturn]] void fail(const std::string& rule) const { throw InputError(source_, 0, path_, rule); }
+
+  const json& value() const { return value_; }
+  const std::string& path() const { return path_; }
+  bool has(const char* key) const { return value_.contains(key); }
+
+  Field operator[](const char* key) const { return {value_.at(key), child(key), source_}; }
+  Field operator[](std::size_t i) const { return {value_.at(i), path_ + "[" + std::to_string(i) + "]", source_}; }
+
+  // Only `keys` may appear: a misspelt key is an error, not silently ignored.
+  const Field& object(std::initializer_list<const char*> keys) const {
+    if (!value_.is_object()) fail("expected an object");
+    for (const auto& item : value_.items()) {
+      bool known = false;
+      for (const char* key : keys) known = known || item.key() == key;
+      if (!known) {
+        std::string list;
+        for (const char* key : keys) list += (list.empty() ? "" : ", ") + std::string(key);
+        Field{item.value(), child(item.key()), source_}.fail("unknown field (expected one of: " + list + ")");
+      }
+    }
+    return *this;
+  }
+
+  double number(double lo = -HUGE_VAL, double hi = HUGE_VAL) const {
+    if (!value_.is_number()) fail("expected a number");
+    double x = value_.get<double>();
+    if (!std::isfinite(x)) fail("must be finite");
+    if (x < lo || x > hi) fail("must be in [" + format(lo) + ", " + format(hi) + "], is " + format(x));
+    return x;
+  }
+
+  int integer(int lo, int hi) const {
+    double x = number(lo, hi);
+    if (x != std::floor(x)) fail("expected a whole number");
+    return int(x);
+  }
+
+  std::string string() const {
+    if (!value_.is_string()) fail("expected a string");
+    return value_.get<std::string>();
+  }
+
+  glm::dvec3 vec3() const {
+    if (!value_.is_array() || value_.size() != 3) fail("expected an array of 3 numbers");
+    return {(*this)[std::size_t(0)].number(), (*this)[1].number(), (*this)[2].number()};
+  }
+
+  glm::dvec3 direction() const {
+    glm::dvec3 d = vec3();
+    if (glm::length(d) < 1e-12) fail("a direction must not be the zero vector");
+    return glm::normalize(d);
+  }
+
+ private:
+  std::string child(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+  static std::string format(double x) {
+    if (std::isinf(x)) return x < 0 ? "-inf" : "inf";
+    std::string s = std::to_string(x);
+    s.erase(s.find_last_not_of('0') + 1);
+    if (!s.empty() && s.back() == '.') s.pop_back();
+    return s;
+  }
+
+  const json& value_;
+  std::string path_;
+  const std::string& source_;
+};
+
+Camera readCamera(const Field& f) {
+  f.object({"eye", "target", "up", "fov"});
+  Camera c;
+  if (f.has("eye")) c.eye = f["eye"].vec3();
+  if (f.has("target")) c.target = f["target"].vec3();
+  if (f.has("up")) c.up = f["up"].direction();
+  if (f.has("fov")) c.verticalFovDegrees = f["fov"].number(1e-3, 179.0);
+  if (glm::length(c.target - c.eye) < 1e-12) f.fail("eye and target must differ");
+  if (glm::length(glm::cross(glm::normalize(c.target - c.eye), c.up)) < 1e-9)
+    f.fail("up must not be parallel to the view direction");
+  return c;
+}
+
+Light readLight(const Field& f) {
+  f.object({"type", "color", "position", "direction", "inner_cone", "outer_cone"});
+  if (!f.has("type")) f.fail("a light needs a type: directional, point or spot");
+  Light light;
+  const std::string type = f["type"].string();
+  if (type == "directional")
+    light.type = LightType::Directional;
+  else if (type == "point")
+    light.type = LightType::Point;
+  else if (type == "spot")
+    light.type = LightType::Spot;
+  else
+    f["type"].fail("unknown light type '" + type + "' (expected directional, point or spot)");
+  if (f.has("color")) {
+    light.color = f["color"].vec3();
+    if (light.color.r < 0 || light.color.g < 0 || light.color.b < 0) f["color"].fail("must not be negative");
+  }
+  const bool positioned = light.type != LightType::Directional;
+  const bool aimed = light.type != LightType::Point;
+  if (positioned) {
+    if (!f.has("position")) f.fail("a " + type + " light needs a position");
+    light.position = f["position"].vec3();
+  }
+  if (aimed) {
+    if (!f.has("direction")) f.fail("a " + type + " light needs a direction");
+    light.direction = f["direction"].direction();
+  }
+  for (const char* key : {"position", "direction", "inner_cone", "outer_cone"}) {
+    const bool allowed = std::string(key) == "position"    ? positioned
+                         : std::string(key) == "direction" ? aimed
+                                                           : light.type == LightType::Spot;
+    if (f.has(key) && !allowed) f[key].fail("does not apply to a " + type + " light");
+  }
+  if (light.type == LightType::Spot) {
+    if (f.has("outer_cone")) light.outerConeDegrees = f["outer_cone"].number(0.0, 90.0);
+    if (f.has("inner_cone")) light.innerConeDegrees = f["inner_cone"].number(0.0, light.outerConeDegrees);
+    if (light.innerConeDegrees > light.outerConeDegrees) f.fail("inner_cone must not exceed outer_cone");
+  }
+  return light;
+}
+
+materials::Material readMaterial(const Field& f, const std::string& source) {
+  const std::string& where = f.path();
+  try {
+    return materials::buildMaterial(materials::materialSpecFromJson(f.value(), where),
+                                    [&](std::string_view field) { return where + "." + std::string(field); });
+  } catch (const std::invalid_argument& e) {
+    throw InputError(source, 0, "invalid material", e.what());
+  }
+}
+
+glm::dmat4 readTransform(const Field& f) {
+  f.object({"translate", "rotate", "scale", "matrix"});
+  if (f.has("matrix")) {
+    if (f.has("translate") || f.has("rotate") || f.has("scale"))
+      f.fail("give either matrix or translate/rotate/scale, not both");
+    const Field m = f["matrix"];
+    if (!m.value().is_array() || m.value().size() != 16) m.fail("expected 16 numbers, column by column");
+    glm::dmat4 matrix;
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) matrix[c][r] = m[std::size_t(4 * c + r)].number();
+    if (matrix[0][3] != 0 || matrix[1][3] != 0 || matrix[2][3] != 0 || matrix[3][3] != 1)
+      m.fail("must be affine (last row 0, 0, 0, 1)");
+    return matrix;
+  }
+  glm::dmat4 matrix(1.0);
+  if (f.has("translate")) matrix = glm::translate(matrix, f["translate"].vec3());
+  if (f.has("rotate")) {
+    // Degrees about x, then y, then z (applied to the object in that order).
+    const glm::dvec3 r = glm::radians(f["rotate"].vec3());
+    matrix = glm::rotate(matrix, r.z, {0, 0, 1});
+    matrix = glm::rotate(matrix, r.y, {0, 1, 0});
+    matrix = glm::rotate(matrix, r.x, {1, 0, 0});
+  }
+  if (f.has("scale")) {
+    const Field s = f["scale"];
+    const glm::dvec3 scale = s.value().is_array() ? s.vec3() : glm::dvec3(s.number());
+    if (scale.x == 0 || scale.y == 0 || scale.z == 0) s.fail("must not be zero");
+    matrix = glm::scale(matrix, scale);
+  }
+  return matrix;
+}
+
+// Catmull-Clark is affine invariant: transforming the cage transforms the
+// limit surface exactly. A mirroring transform would turn faces inside out,
+// so their winding is reversed to keep normals pointing outwards.
+void transformCage(ControlCage& cage, const glm::dmat4& matrix) {
+  for (glm::dvec3& p : cage.positions) p = glm::dvec3(matrix * glm::dvec4(p, 1.0));
+  if (glm::determinant(glm::dmat3(matrix)) >= 0) return;
+  std::size_t first = 0;
+  for (int count : cage.faceVertexCounts) {
+    std::reverse(cage.faceVertexIndices.begin() + std::ptrdiff_t(first) + 1,
+                 cage.faceVertexIndices.begin() + std::ptrdiff_t(first + std::size_t(count)));
+    first += std::size_t(count);
+  }
+}
+
+void readRender(const Field& f, RenderSettings& r) {
+  f.object({"width", "height", "spp", "method", "tess_level", "pixel_tolerance"});
+  if (f.has("width")) r.width = f["width"].integer(1, 16384);
+  if (f.has("height")) r.height = f["height"].integer(1, 16384);
+  if (f.has("spp")) {
+    r.samplesPerPixel = f["spp"].integer(1, 4096);
+    const int root = int(std::lround(std::sqrt(r.samplesPerPixel)));
+    if (root * root != r.samplesPerPixel) f["spp"].fail("must be a square number (stratified sqrt x sqrt)");
+  }
+  if (f.has("method")) {
+    const std::string method = f["method"].string();
+    if (method == "exact")
+      r.method = IntersectionMethod::Exact;
+    else if (method == "tess")
+      r.method = IntersectionMethod::Tessellated;
+    else
+      f["method"].fail("unknown method '" + method + "' (expected exact or tess)");
+  }
+  if (f.has("tess_level")) r.tessellationRate = f["tess_level"].integer(1, 256);
+  if (f.has("pixel_tolerance")) r.pixelTolerance = f["pixel_tolerance"].number(1e-3, 1e3);
+}
+
+}  // namespace
+
+Scene loadJsonScene(const std::filesystem::path& path) {
+  const std::string source = path.string();
+  std::ifstream in(path);
+  if (!in) throw InputError(source, 0, "cannot open the scene file", "check the path and permissions");
+  json document;
+  try {
+    document = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw InputError(source, 0, "not valid JSON", e.what());
+  }
+  const Field root(document, "", source);
+  root.object({"camera", "materials", "objects", "lights", "render"});
+
+  Scene scene;
+  scene.source = path;
+  std::map<std::string, int> materialIndex;
+  if (root.has("materials")) {
+    const Field materials = root["materials"];
+    if (!materials.value().is_object()) materials.fail("expected an object of named materials");
+    for (const auto& item : materials.value().items()) {
+      materials::Material m = readMaterial(Field(item.value(), "materials." + item.key(), source), source);
+      m.name = item.key();
+      materialIndex[item.key()] = int(scene.materials.size());
+      scene.materials.push_back(std::move(m));
+    }
+  }
+
+  if (!root.has("objects")) root.fail("a scene needs objects");
+  const Field objects = root["objects"];
+  if (!objects.value().is_array() || objects.value().empty()) objects.fail("expected a non-empty array");
+  for (std::size_t i = 0; i < objects.value().size(); ++i) {
+    const Field o = objects[i];
+    o.object({"name", "mesh", "material", "transform", "subdivision"});
+    Object object;
+    object.name = o.has("name") ? o["name"].string() : "object " + std::to_string(i);
+    if (!o.has("mesh")) o.fail("an object needs a mesh (an .obj control cage, relative to the scene file)");
+    const std::filesystem::path mesh = path.parent_path() / o["mesh"].string();
+    if (mesh.extension() != ".obj") o["mesh"].fail("meshes are OpenSubdiv-style .obj cages");
+    object.cage = loadObjCage(mesh);
+    if (o.has("transform")) transformCage(object.cage, readTransform(o["transform"]));
+
+    if (!o.has("material")) {
+      object.material = int(scene.materials.size());
+      scene.materials.push_back(defaultMaterial());
+    } else if (o["material"].value().is_string()) {
+      const std::string name = o["material"].string();
+      auto known = materialIndex.find(name);
+      if (known != materialIndex.end()) {
+        object.material = known->second;
+      } else {
+        // A preset name stands for that preset with default roughness.
+        object.material = int(scene.materials.size());
+        scene.materials.push_back(readMaterial(Field(json{{"preset", name}}, o["material"].path(), source), source));
+        materialIndex[name] = object.material;
+      }
+    } else {
+      object.material = int(scene.materials.size());
+      scene.materials.push_back(readMaterial(o["material"], source));
+    }
+
+    if (o.has("subdivision")) {
+      const Field s = o["subdivision"];
+      s.object({"isolation", "end_caps"});
+      if (s.has("isolation")) object.isolationLevel = s["isolation"].integer(1, 10);
+      if (s.has("end_caps")) {
+        const std::string caps = s["end_caps"].string();
+        if (caps == "gregory")
+          object.endCaps = EndCapBasis::Gregory;
+        else if (caps == "bspline")
+          object.endCaps = EndCapBasis::BSpline;
+        else
+          s["end_caps"].fail("unknown end caps '" + caps + "' (expected gregory or bspline)");
+      }
+    }
+    scene.objects.push_back(std::move(object));
+  }
+
+  if (root.has("render")) readRender(root["render"], scene.render);
+  scene.camera = root.has("camera") ? readCamera(root["camera"]) : frameBounds(cageBounds(scene));
+  if (root.has("lights")) {
+    const Field lights = root["lights"];
+    if (!lights.value().is_array()) lights.fail("expected an array");
+    for (std::size_t i = 0; i < lights.value().size(); ++i) scene.lights.push_back(readLight(lights[i]));
+  } else {
+    scene.lights.push_back(defaultKeyLight(scene.camera));
+  }
+  return scene;
+}
+
+}  // namespace facet::scene

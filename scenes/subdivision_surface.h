@@ -1,0 +1,121 @@
+#pragma once
+// A control cage refined by OpenSubdiv Far into limit-surface patches.
+//
+// Catmull-Clark, feature-adaptive: extraordinary vertices and semi-sharp
+// features are isolated to `isolationLevel`, the regular parts become bicubic
+// B-spline patches (infinitely sharp creases and boundaries included), and the
+// irregular patches left around extraordinary vertices become end caps:
+//
+//   Gregory  (default) 20-point Gregory-basis patches. They interpolate the
+//            exact limit position and tangent plane at every patch corner; the
+//            remaining deviation from the true limit shrinks with each
+//            isolation level.
+//   BSpline  16-point B-spline approximations: cheaper (all patches are
+//            polynomial) but only G0-accurate at the extraordinary vertex;
+//            offered for speed-against-accuracy charts.
+//
+// Points are computed in double precision (refined vertices through
+// PrimvarRefinerReal<double>, end-cap points through the double stencil
+// table) and evaluated with OpenSubdiv's own PatchTable::EvaluateBasis.
+// One exception, for derivatives of Gregory patches only: OpenSubdiv (unless
+// built with OPENSUBDIV_GREGORY_EVAL_TRUE_DERIVATIVES, which Debian's is not)
+// differentiates the Bézier patch with its rational interior frozen at
+// (u, v), which tilts the normal by up to 5e-4 rad on our cages. We return
+// the true derivatives of the same patch (its position is still
+// OpenSubdiv's; the tests hold the two forms equal to 1e-12).
+//
+// Parameters: every patch belongs to a ptex face (a quad of the cage, or one
+// of the n quads a non-quad face is split into) and covers the square
+// domain().u0 + [0, size] x domain().v0 + [0, size] of that face's (u, v).
+// Evaluation takes face (u, v) and returns derivatives with respect to it.
+// (OpenSubdiv 3.5 scales its derivatives on the quads of a non-quad face
+// by 2^depth although they span 2^-(depth-1) of their ptex face, i.e. twice
+// ours; evaluatePatch() rescales them.)
+
+#include "scenes/bezier_patch.h"
+#include "scenes/control_cage.h"
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace facet::scene {
+
+enum class EndCapBasis { Gregory, BSpline };
+
+struct RefinementSettings {
+  int isolationLevel = 3;  // 1..10; raised to cover every semi-sharp crease (see create())
+  EndCapBasis endCaps = EndCapBasis::Gregory;
+};
+
+struct LimitPoint {
+  glm::dvec3 position{0.0};
+  glm::dvec3 du{0.0};  // dP/du in face parameters
+  glm::dvec3 dv{0.0};
+};
+
+struct PatchDomain {
+  double u0 = 0.0;
+  double v0 = 0.0;
+  double size = 1.0;
+};
+
+struct PatchInfo {
+  int ptexFace = 0;
+  int coarseFace = 0;  // the cage face the ptex face came from
+  PatchDomain domain;
+  int depth = 0;                // refinement level the patch was built at
+  unsigned boundaryMask = 0;    // OpenSubdiv edge bits: 1 v=0, 2 u=1, 4 v=1, 8 u=0
+  unsigned transitionMask = 0;  // same bits: the neighbour across is one level deeper
+  bool gregory = false;
+};
+
+struct SurfaceStatistics {
+  int isolationLevel = 0;
+  int cageFaces = 0;
+  int ptexFaces = 0;
+  int regularPatches = 0;
+  int endCapPatches = 0;
+  int refinedVertices = 0;          // all levels
+  int localPoints = 0;              // end-cap points
+  std::size_t openSubdivBytes = 0;  // patch table + point buffer + local-point stencils
+};
+
+std::string describe(const SurfaceStatistics& stats);
+
+class SubdivisionSurface {
+ public:
+  // Throws InputError when OpenSubdiv rejects the topology. The isolation
+  // level used is max(settings.isolationLevel, ceil(sharpest semi-sharp
+  // crease or corner)), capped at 10, so semi-sharp features decay
+  // completely before patches are built (they are then exact, not end caps).
+  static SubdivisionSurface create(const ControlCage& cage, const RefinementSettings& settings = {});
+
+  SubdivisionSurface(SubdivisionSurface&&) noexcept;
+  SubdivisionSurface& operator=(SubdivisionSurface&&) noexcept;
+  ~SubdivisionSurface();
+
+  int patchCount() const;
+  const PatchInfo& patch(int index) const;
+  const BezierPatch& bezierPatch(int index) const;
+
+  // The limit surface on patch `index` at face parameters (u, v).
+  LimitPoint evaluatePatch(int index, double u, double v) const;
+  // The patch containing face point (u, v), found by Far::PatchMap; empty
+  // over holes.
+  std::optional<int> findPatch(int ptexFace, double u, double v) const;
+  std::optional<LimitPoint> evaluateFace(int ptexFace, double u, double v) const;
+
+  // Box of all patch control hulls: it encloses the limit surface.
+  const Aabb& bounds() const;
+  const SurfaceStatistics& statistics() const;
+
+ private:
+  struct Impl;
+  explicit SubdivisionSurface(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace facet::scene

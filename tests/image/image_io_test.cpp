@@ -1,0 +1,107 @@
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <vector>
+#include <random>
+
+#include "engine/image/image_io.h"
+
+#define STB_IMAGE_IMPLEMENTATION
+#include <stb_image.h>
+
+namespace facet {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ImageIo : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("facet_image_io_" + std::to_string(std::random_device{}()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::vector<fs::path> files() const { return {fs::directory_iterator(dir_), fs::directory_iterator()}; }
+  fs::path dir_;
+};
+
+Image randomImage(int w, int h) {
+  Image image(w, h);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(-10.0f, 10.0f);
+  for (std::size_t i = 0; i < image.pixelCount(); ++i) {
+    if (i % 5 == 0) continue;  // leave some misses
+    image.beauty[i] = {u(rng), u(rng), u(rng), 1.0f};
+    image.depth[i] = std::abs(u(rng));
+    image.position[i] = {u(rng), u(rng), u(rng)};
+    image.geometricNormal[i] = {u(rng), u(rng), u(rng)};
+    image.shadingNormal[i] = {u(rng), u(rng), u(rng)};
+    image.patchId[i] = std::uint32_t(rng());
+    image.faceId[i] = std::uint32_t(rng());
+    image.uv[i] = {u(rng), u(rng)};
+  }
+  return image;
+}
+
+TEST_F(ImageIo, ExrRoundTripKeepsEveryChannelBitExact) {
+  Image image = randomImage(37, 19);
+  writeExr(dir_ / "out.exr", image);
+  Image back = readExr(dir_ / "out.exr");
+  ASSERT_EQ(back.width, 37);
+  ASSERT_EQ(back.height, 19);
+  EXPECT_EQ(back.beauty, image.beauty);
+  EXPECT_EQ(back.depth, image.depth);  // +inf on misses survives
+  EXPECT_EQ(back.position, image.position);
+  EXPECT_EQ(back.geometricNormal, image.geometricNormal);
+  EXPECT_EQ(back.shadingNormal, image.shadingNormal);
+  EXPECT_EQ(back.patchId, image.patchId);
+  EXPECT_EQ(back.faceId, image.faceId);
+  EXPECT_EQ(back.uv, image.uv);
+  EXPECT_EQ(files().size(), 1u) << "no temporary file may remain";
+}
+
+TEST_F(ImageIo, PngEncodesSrgbAndCoverage) {
+  Image image(2, 1);
+  image.beauty[0] = {0.5f, 0.0f, 2.0f, 1.0f};  // 0.5 linear is 188 in sRGB; 2.0 clamps to 255
+  writePng(dir_ / "out.png", image);
+  int w = 0, h = 0, channels = 0;
+  stbi_uc* pixels = stbi_load((dir_ / "out.png").c_str(), &w, &h, &channels, 4);
+  ASSERT_NE(pixels, nullptr);
+  std::vector<int> rgba(pixels, pixels + 8);
+  stbi_image_free(pixels);
+  EXPECT_EQ(rgba, (std::vector<int>{188, 0, 255, 255, 0, 0, 0, 0}));
+  EXPECT_EQ(files().size(), 1u);
+}
+
+TEST_F(ImageIo, FailedWritesNameTheFileAndLeaveNothing) {
+  Image image(4, 4);
+  const fs::path missing = dir_ / "no such folder" / "out.exr";
+  try {
+    writeExr(missing, image);
+    FAIL() << "expected an error";
+  } catch (const std::exception& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr(missing.string()));
+  }
+  EXPECT_THROW(writePng(dir_ / "no such folder" / "out.png", image), std::exception);
+  EXPECT_TRUE(files().empty());
+}
+
+TEST_F(ImageIo, ReadingAFileThatIsNotExrNamesIt) {
+  std::ofstream(dir_ / "bad.exr") << "not an exr";
+  try {
+    readExr(dir_ / "bad.exr");
+    FAIL() << "expected an error";
+  } catch (const std::exception& e) {
+    EXPECT_THAT(e.what(), ::testing::AllOf(::testing::HasSubstr("bad.exr"), ::testing::HasSubstr("cannot read EXR")));
+  }
+}
+
+TEST(ImageSize, ImpossibleSizesAreRejected) {
+  EXPECT_THROW(Image(0, 10), std::invalid_argument);
+  EXPECT_THROW(Image(10, -1), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace facet

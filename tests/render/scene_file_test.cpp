@@ -1,0 +1,134 @@
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <fstream>
+#include <random>
+
+#include "scenes/input_error.h"
+#include "scenes/scene_file.h"
+
+namespace facet::scene {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+
+const fs::path kExamples = FACET_EXAMPLES_DIR;
+
+class SceneFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("facet_scene_" + std::to_string(std::random_device{}()));
+    fs::create_directories(dir_);
+    fs::copy_file(kExamples / "superball.obj", dir_ / "ball.obj");
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+    return dir_ / name;
+  }
+  std::string errorOf(const std::string& json) {
+    try {
+      loadScene(write("scene.json", json));
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "(no error)";
+  }
+  fs::path dir_;
+};
+
+TEST_F(SceneFiles, ThePreviewSceneHasEveryPreset) {
+  Scene scene = loadScene(kExamples / "preview.json");
+  EXPECT_EQ(scene.objects.size(), 10u);
+  EXPECT_EQ(scene.materials.size(), 10u);
+  EXPECT_EQ(scene.lights.size(), 2u);
+  EXPECT_EQ(scene.render.width, 768);
+  for (const Object& o : scene.objects) EXPECT_EQ(scene.materials[std::size_t(o.material)].name, o.name);
+}
+
+TEST_F(SceneFiles, TransformsMoveTheCageAndMirrorsKeepNormalsOutward) {
+  Scene plain = loadScene(write("a.json", R"({"objects": [{"mesh": "ball.obj"}]})"));
+  Scene moved = loadScene(write("b.json", R"({"objects": [{"mesh": "ball.obj",
+      "transform": {"translate": [1, 2, 3], "scale": [-1, 1, 1]}}]})"));
+  const ControlCage& a = plain.objects[0].cage;
+  const ControlCage& b = moved.objects[0].cage;
+  ASSERT_EQ(a.vertexCount(), b.vertexCount());
+  for (int i = 0; i < a.vertexCount(); ++i) {
+    const glm::dvec3 expected(-a.positions[std::size_t(i)].x + 1, a.positions[std::size_t(i)].y + 2,
+                              a.positions[std::size_t(i)].z + 3);
+    EXPECT_LT(glm::distance(b.positions[std::size_t(i)], expected), 1e-12);
+  }
+  // The mirror reverses each face's winding (first vertex kept).
+  EXPECT_EQ(b.faceVertexIndices[0], a.faceVertexIndices[0]);
+  EXPECT_EQ(b.faceVertexIndices[1], a.faceVertexIndices[3]);
+  EXPECT_EQ(b.faceVertexIndices[3], a.faceVertexIndices[1]);
+}
+
+TEST_F(SceneFiles, ErrorsNameTheFileTheFieldAndTheRule) {
+  EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj", "colour": [1, 0, 0]}]})"),
+              AllOf(HasSubstr("scene.json"), HasSubstr("objects[0].colour"), HasSubstr("unknown field")));
+  EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj"}], "camera": {"fov": 200}})"),
+              AllOf(HasSubstr("camera.fov"), HasSubstr("must be in [0.001, 179]")));
+  EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "missing.obj"}]})"), HasSubstr("missing.obj"));
+  EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj", "material": "unobtainium"}]})"),
+              AllOf(HasSubstr("objects[0].material"), HasSubstr("unknown preset 'unobtainium'")));
+  EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj"}], "render": {"spp": 3}})"),
+              AllOf(HasSubstr("render.spp"), HasSubstr("square")));
+  EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj"}], "lights": [{"type": "point", "color": [1, 1, 1]}]})"),
+              AllOf(HasSubstr("lights[0]"), HasSubstr("needs a position")));
+  EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj"}],)"),
+              AllOf(HasSubstr("not valid JSON"), HasSubstr("line 1")));
+  EXPECT_THAT(errorOf(R"({"objects": []})"), AllOf(HasSubstr("objects"), HasSubstr("non-empty")));
+  EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj", "material": {"alpha": 2}}]})"),
+              AllOf(HasSubstr("objects[0].material.alpha"), HasSubstr("[0, 1]")));
+}
+
+TEST_F(SceneFiles, UnknownExtensionsAreRejected) {
+  try {
+    loadScene(write("scene.txt", "{}"));
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), AllOf(HasSubstr("scene.txt"), HasSubstr("unknown scene format")));
+  }
+}
+
+TEST_F(SceneFiles, GltfMeshesAreWeldedCagesWithTheirMaterialsCamerasAndLights) {
+  Scene scene = loadScene(kExamples / "gold_cube.gltf");
+  ASSERT_EQ(scene.objects.size(), 1u);
+  const ControlCage& cage = scene.objects[0].cage;
+  EXPECT_EQ(cage.vertexCount(), 8);  // 24 glTF vertices split at the cube's edges
+  EXPECT_EQ(cage.faceCount(), 12);
+  const materials::Material& gold = scene.materials[std::size_t(scene.objects[0].material)];
+  EXPECT_EQ(gold.name, "gold");
+  EXPECT_NEAR(gold.f0.g, 0.71, 1e-6);  // metallic 1: c_spec is the base colour
+  EXPECT_EQ(gold.diffuse, glm::dvec3(0.0));
+  EXPECT_NEAR(gold.alpha, 0.25, 1e-12);  // alpha = roughness^2
+  EXPECT_NEAR(scene.camera.eye.z, 6.0, 1e-12);
+  EXPECT_NEAR(scene.camera.verticalFovDegrees, 0.6 * 180 / M_PI, 1e-9);
+  ASSERT_EQ(scene.lights.size(), 1u);
+  EXPECT_NEAR(scene.lights[0].color.r, 1.0, 1e-6);  // intensity pi / pi
+  EXPECT_NEAR(glm::dot(scene.lights[0].direction, glm::normalize(glm::dvec3(0, -1, -1))), 1.0, 1e-6);
+}
+
+TEST_F(SceneFiles, ABareCageIsFramedAndLit) {
+  Scene scene = loadScene(dir_ / "ball.obj");
+  ASSERT_EQ(scene.objects.size(), 1u);
+  ASSERT_EQ(scene.lights.size(), 1u);
+  // Every control point lies inside the view frustum.
+  const glm::dvec3 forward = glm::normalize(scene.camera.target - scene.camera.eye);
+  const double tanHalf = std::tan(0.5 * scene.camera.verticalFovDegrees * M_PI / 180);
+  for (const glm::dvec3& p : scene.objects[0].cage.positions) {
+    const glm::dvec3 d = p - scene.camera.eye;
+    const double depth = glm::dot(d, forward);
+    ASSERT_GT(depth, 0);
+    EXPECT_LT(glm::length(d - depth * forward) / depth, tanHalf);
+  }
+}
+
+}  // namespace
+}  // namespace facet::scene

@@ -1,0 +1,151 @@
+#include "scenes/input_error.h"
+#include "scenes/obj_cage.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace facet::scene {
+namespace {
+
+// Expects parseObjCage(text) to throw an InputError at `line` for `rule`.
+void expectError(const std::string& text, int line, const std::string& rule) {
+  try {
+    parseObjCage(text, "test.obj");
+    FAIL() << "no error for:\n" << text;
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.source(), "test.obj");
+    EXPECT_EQ(error.line(), line) << error.what();
+    EXPECT_EQ(error.rule(), rule) << error.what();
+    const std::string prefix = "test.obj:" + std::to_string(line) + ": " + rule + ": ";
+    EXPECT_EQ(std::string(error.what()).rfind(prefix, 0), 0u) << error.what();
+  }
+}
+
+const std::string kQuad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+
+TEST(ObjCage, ReadsQuadsTrianglesAndNgonsWithEveryCornerSyntax) {
+  ControlCage cage = parseObjCage(
+      "# comment line\r\n"
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0  1.0\nv 3 0.5 0\n"
+      "vt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 1\n"
+      "s off\ng part\no thing\nusemtl steel\n"
+      "f 1/1/1 2/2/1 3/3/1 4//1   # quad, trailing comment\n"
+      "f 2 5 6 3 \n"
+      "f -3 -1 -2\n"  // negative indices: 5 7 6
+      "f 1 2 5 7 6 3 4\n",
+      "inline");
+  EXPECT_EQ(cage.vertexCount(), 7);
+  ASSERT_EQ(cage.faceCount(), 4);
+  EXPECT_EQ(cage.faceVertexCounts, (std::vector<int>{4, 4, 3, 7}));
+  EXPECT_EQ(std::vector<int>(cage.faceVertexIndices.begin() + 8, cage.faceVertexIndices.begin() + 11),
+            (std::vector<int>{4, 6, 5}));
+  EXPECT_DOUBLE_EQ(cage.positions[6].x, 3.0);
+  EXPECT_DOUBLE_EQ(cage.positions[6].y, 0.5);
+}
+
+TEST(ObjCage, ReadsOpenSubdivTags) {
+  ControlCage cage = parseObjCage(kQuad +
+                                      "v 2 0 0\nv 2 1 0\n"
+                                      "f 1 2 3 4\nf 2 5 6 3\n"
+                                      "t crease 2/1/0 0 1 2.5\n"
+                                      "t crease 4/2/0 1 2 2 3 10 0.5\n"
+                                      "t corner 2/1/0 0 3 4.0\n"
+                                      "t hole 1/0/0 1\n"
+                                      "t interpolateboundary 1/0/0 1\n"
+                                      "t facevaryinginterpolateboundary 1/0/0 3\n"
+                                      "t creasemethod 0/0/1 chaikin\n"
+                                      "t smoothtriangles 0/0/1 smooth\n",
+                                  "tags");
+  ASSERT_EQ(cage.creases.size(), 3u);
+  EXPECT_EQ(cage.creases[0].v0, 0);
+  EXPECT_EQ(cage.creases[0].v1, 1);
+  EXPECT_FLOAT_EQ(cage.creases[0].sharpness, 2.5f);
+  EXPECT_FLOAT_EQ(cage.creases[1].sharpness, 10.0f);
+  EXPECT_FLOAT_EQ(cage.creases[2].sharpness, 0.5f);
+  ASSERT_EQ(cage.corners.size(), 2u);
+  EXPECT_EQ(cage.corners[1].vertex, 3);
+  EXPECT_FLOAT_EQ(cage.corners[1].sharpness, 4.0f);
+  EXPECT_EQ(cage.holes, (std::vector<int>{1}));
+  EXPECT_EQ(cage.options.boundary, BoundaryInterpolation::EdgeAndCorner);
+  EXPECT_EQ(cage.options.faceVarying, FaceVaryingInterpolation::CornersPlus2);
+  EXPECT_EQ(cage.options.creasing, CreasingMethod::Chaikin);
+  EXPECT_EQ(cage.options.triangles, TriangleSubdivision::Smooth);
+
+  EXPECT_EQ(parseObjCage(kQuad + "f 1 2 3 4\n", "defaults").options.boundary, BoundaryInterpolation::EdgeOnly);
+  EXPECT_EQ(parseObjCage(kQuad + "f 1 2 3 4\nt interpolateboundary 1/0/0 0\n", "none").options.boundary,
+            BoundaryInterpolation::None);
+}
+
+TEST(ObjCage, LoadsEveryTortureCage) {
+  int cages = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(FACET_CAGE_DIR)) {
+    if (entry.path().extension() != ".obj") continue;
+    ControlCage cage = loadObjCage(entry.path());
+    EXPECT_GT(cage.faceCount(), 0) << entry.path();
+    EXPECT_EQ(cage.source, entry.path().string());
+    ++cages;
+  }
+  EXPECT_GE(cages, 9);
+}
+
+TEST(ObjCageErrors, MissingFile) {
+  try {
+    loadObjCage("/nonexistent/facet/cage.obj");
+    FAIL();
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.source(), "/nonexistent/facet/cage.obj");
+    EXPECT_EQ(error.line(), 0);
+    EXPECT_EQ(error.rule(), "missing file");
+  }
+}
+
+TEST(ObjCageErrors, MalformedLines) {
+  expectError(kQuad + "v 1 2\nf 1 2 3 4\n", 5, "malformed vertex");
+  expectError(kQuad + "v 1 2 3 4 5\n", 5, "malformed vertex");
+  expectError(kQuad + "v 1 two 3\n", 5, "malformed number");
+  expectError(kQuad + "f 1 2 3 4\nvt 0\n", 6, "malformed texture coordinate");
+  expectError(kQuad + "f 1 2 x 4\n", 5, "malformed integer");
+  expectError(kQuad + "f 1/1/1/1 2 3\n", 5, "malformed face");
+  expectError(kQuad + "f 1 2 3 4\nbogus 1 2\n", 6, "unknown statement");
+  expectError(kQuad + "f 1 2 3 4\nt crease 2/1 0 1 2.0\n", 6, "malformed tag");
+  expectError(kQuad + "f 1 2 3 4\nt crease 2/1/0 0 1\n", 6, "malformed tag");
+  expectError(kQuad + "f 1 2 3 4\nt crease 3/1/0 0 1 2 1.0\n", 6, "malformed tag");
+  expectError(kQuad + "f 1 2 3 4\nt crease 4/3/0 0 1 1 2 1.0 2.0 3.0\n", 6, "malformed tag");
+  expectError(kQuad + "f 1 2 3 4\nt interpolateboundary 1/0/0 7\n", 6, "unknown option");
+  expectError(kQuad + "f 1 2 3 4\nt creasemethod 0/0/1 sharp\n", 6, "unknown option");
+  expectError(kQuad + "f 1 2 3 4\nt vertexedit 1/0/0 0\n", 6, "unknown tag");
+  expectError(kQuad + "f 1 2 3 4\nt crease 2/1/0 0 1 -1.0\n", 6, "negative sharpness");
+  expectError("# nothing but a comment\nv 0 0 0\n", 2, "empty cage");
+}
+
+TEST(ObjCageErrors, NonFiniteCoordinates) {
+  expectError(kQuad + "v nan 0 0\n", 5, "non-finite value");
+  expectError(kQuad + "v 0 inf 0\n", 5, "non-finite value");
+  expectError(kQuad + "v 0 0 -inf\n", 5, "non-finite value");
+  expectError(kQuad + "v 0 0 1e400\n", 5, "malformed number");  // out of double range
+  expectError(kQuad + "f 1 2 3 4\nt crease 2/1/0 0 1 nan\n", 6, "non-finite value");
+}
+
+TEST(ObjCageErrors, IndicesOutOfRange) {
+  expectError(kQuad + "f 1 2 3 5\n", 5, "index out of range");
+  expectError(kQuad + "f 1 2 3 0\n", 5, "index out of range");
+  expectError(kQuad + "f -5 -1 -2\n", 5, "index out of range");
+  expectError(kQuad + "vt 0 0\nf 1/2 2/1 3/1\n", 6, "index out of range");
+  expectError(kQuad + "vn 0 0 1\nf 1//1 2//2 3//1\n", 6, "index out of range");
+  // Reported on the face's line even when found after the last line.
+  expectError(kQuad + "f 1 2 3 4\nf 1 3 9\n# trailer\n", 6, "index out of range");
+  expectError(kQuad + "f 1 2 3 4\nt corner 1/1/0 4 1.0\n", 6, "index out of range");
+  expectError(kQuad + "f 1 2 3 4\nt hole 1/0/0 1\n", 6, "index out of range");
+  expectError(kQuad + "f 1 2 3 4\nt crease 2/1/0 0 2 1.0\n", 6, "crease on a non-edge");
+}
+
+TEST(ObjCageErrors, FacesOpenSubdivCannotSubdivide) {
+  expectError(kQuad + "f 1 2\n", 5, "degenerate face");
+  expectError(kQuad + "f 1 2 2 3\n", 5, "degenerate face");
+  expectError(kQuad + "f 1 2 3 1\n", 5, "degenerate face");
+  expectError(kQuad + "f 1 2 3 -4\n", 5, "degenerate face");
+}
+
+}  // namespace
+}  // namespace facet::scene
