@@ -42,6 +42,14 @@ struct Light {
 
 enum class IntersectionMethod { Exact, Tessellated };
 
+// Samples per pixel form an n x n grid of sub-pixel centres.
+inline bool isSquare(int n) {
+  int root = 0;
+  while ((root + 1) * (root + 1) <= n) ++root;
+  return root * root == n;
+}
+inline constexpr const char* kSamplesPerPixelRule = "samples per pixel must be a square number (an n x n grid)";
+
 struct RenderSettings {
   int width = 512;
   int height = 512;

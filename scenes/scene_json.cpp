@@ -71,6 +71,18 @@ class Field {
     return {(*this)[std::size_t(0)].number(), (*this)[1].number(), (*this)[2].number()};
   }
 
+  // One of `options`, by name; anything else is an error listing them.
+  template <class T>
+  T choice(std::initializer_list<std::pair<const char*, T>> options) const {
+    const std::string name = string();
+    std::string list;
+    for (const auto& [key, value] : options) {
+      if (name == key) return value;
+      list += (list.empty() ? "" : ", ") + std::string(key);
+    }
+    fail("unknown value '" + name + "' (expected one of: " + list + ")");
+  }
+
   glm::dvec3 direction() const {
     glm::dvec3 d = vec3();
     if (glm::length(d) < 1e-12) fail("a direction must not be the zero vector");
@@ -110,14 +122,8 @@ Light readLight(const Field& f) {
   if (!f.has("type")) f.fail("a light needs a type: directional, point or spot");
   Light light;
   const std::string type = f["type"].string();
-  if (type == "directional")
-    light.type = LightType::Directional;
-  else if (type == "point")
-    light.type = LightType::Point;
-  else if (type == "spot")
-    light.type = LightType::Spot;
-  else
-    f["type"].fail("unknown light type '" + type + "' (expected directional, point or spot)");
+  light.type = f["type"].choice<LightType>(
+      {{"directional", LightType::Directional}, {"point", LightType::Point}, {"spot", LightType::Spot}});
   if (f.has("color")) {
     light.color = f["color"].vec3();
     if (light.color.r < 0 || light.color.g < 0 || light.color.b < 0) f["color"].fail("must not be negative");
@@ -208,18 +214,11 @@ void readRender(const Field& f, RenderSettings& r) {
   if (f.has("height")) r.height = f["height"].integer(1, 16384);
   if (f.has("spp")) {
     r.samplesPerPixel = f["spp"].integer(1, 4096);
-    const int root = int(std::lround(std::sqrt(r.samplesPerPixel)));
-    if (root * root != r.samplesPerPixel) f["spp"].fail("must be a square number (stratified sqrt x sqrt)");
+    if (!isSquare(r.samplesPerPixel)) f["spp"].fail(kSamplesPerPixelRule);
   }
-  if (f.has("method")) {
-    const std::string method = f["method"].string();
-    if (method == "exact")
-      r.method = IntersectionMethod::Exact;
-    else if (method == "tess")
-      r.method = IntersectionMethod::Tessellated;
-    else
-      f["method"].fail("unknown method '" + method + "' (expected exact or tess)");
-  }
+  if (f.has("method"))
+    r.method = f["method"].choice<IntersectionMethod>(
+        {{"exact", IntersectionMethod::Exact}, {"tess", IntersectionMethod::Tessellated}});
   if (f.has("tess_level")) r.tessellationRate = f["tess_level"].integer(1, 256);
   if (f.has("pixel_tolerance")) r.pixelTolerance = f["pixel_tolerance"].number(1e-3, 1e3);
 }
@@ -233,7 +232,7 @@ Scene loadJsonScene(const std::filesystem::path& path) {
   json document;
   try {
     document = json::parse(in);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // syntax errors, and numbers beyond double's range
     throw InputError(source, 0, "not valid JSON", e.what());
   }
   const Field root(document, "", source);
@@ -290,15 +289,9 @@ Scene loadJsonScene(const std::filesystem::path& path) {
       const Field s = o["subdivision"];
       s.object({"isolation", "end_caps"});
       if (s.has("isolation")) object.isolationLevel = s["isolation"].integer(1, 10);
-      if (s.has("end_caps")) {
-        const std::string caps = s["end_caps"].string();
-        if (caps == "gregory")
-          object.endCaps = EndCapBasis::Gregory;
-        else if (caps == "bspline")
-          object.endCaps = EndCapBasis::BSpline;
-        else
-          s["end_caps"].fail("unknown end caps '" + caps + "' (expected gregory or bspline)");
-      }
+      if (s.has("end_caps"))
+        object.endCaps =
+            s["end_caps"].choice<EndCapBasis>({{"gregory", EndCapBasis::Gregory}, {"bspline", EndCapBasis::BSpline}});
     }
     scene.objects.push_back(std::move(object));
   }

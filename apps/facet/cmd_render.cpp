@@ -55,9 +55,8 @@ void applyOverrides(const RenderOptions& o, scene::Scene& scene) {
   if (o.method == "tess") scene.render.method = scene::IntersectionMethod::Tessellated;
   if (o.tessLevel) scene.render.tessellationRate = *o.tessLevel;
   if (o.spp) {
-    const int root = int(std::lround(std::sqrt(*o.spp)));
-    if (root * root != *o.spp)
-      throw std::invalid_argument("--spp " + std::to_string(*o.spp) + ": must be a square number (stratified n x n)");
+    if (!scene::isSquare(*o.spp))
+      throw std::invalid_argument("--spp " + std::to_string(*o.spp) + ": " + scene::kSamplesPerPixelRule);
     scene.render.samplesPerPixel = *o.spp;
   }
 }

@@ -88,6 +88,31 @@ TEST_F(SceneFiles, ErrorsNameTheFileTheFieldAndTheRule) {
               AllOf(HasSubstr("objects[0].material.alpha"), HasSubstr("[0, 1]")));
 }
 
+TEST_F(SceneFiles, NonFiniteNumbersAreRejected) {
+  // JSON has no NaN or Inf; a number beyond double's range is the way to write one.
+  EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj", "transform": {"translate": [1e999, 0, 0]}}]})"),
+              AllOf(HasSubstr("scene.json"), HasSubstr("1e999")));
+}
+
+TEST_F(SceneFiles, BrokenGltfFilesNameTheFileAndTheProblem) {
+  const std::string valid = [] {
+    std::ifstream in(kExamples / "gold_cube.gltf");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }();
+  auto errorOfGltf = [&](const std::string& text) {
+    try {
+      loadScene(write("broken.gltf", text));
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_THAT(errorOfGltf(valid.substr(0, valid.size() / 2)), AllOf(HasSubstr("broken.gltf"), HasSubstr("cannot load glTF")));
+  std::string badIndex = valid;
+  badIndex.replace(badIndex.find("\"indices\": 1"), 12, "\"indices\": 9");
+  EXPECT_THAT(errorOfGltf(badIndex), AllOf(HasSubstr("broken.gltf"), HasSubstr("indices")));
+}
+
 TEST_F(SceneFiles, UnknownExtensionsAreRejected) {
   try {
     loadScene(write("scene.txt", "{}"));
