@@ -1,9 +1,12 @@
 #include "engine/renderer.h"
 
 #include <chrono>
+#include <map>
+#include <memory>
 #include <thread>
 
 #include "engine/cpu/reference_renderer.h"
+#include "engine/gpu_backend/gpu_renderer.h"
 #include "scenes/scene_geometry.h"
 
 namespace facet {
@@ -22,12 +25,34 @@ class Stopwatch {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
+// One device and renderer per adapter for the whole process: lavapipe
+// compiles a pipeline at its first dispatch, so keeping them pays that once.
+struct GpuContext {
+  gpu::Instance instance;
+  gpu::Device device;
+  std::unique_ptr<gpu_backend::GpuRenderer> renderer;
+};
+
+GpuContext& gpuContext(const std::string& adapter) {
+  static std::map<std::string, std::unique_ptr<GpuContext>> contexts;
+  std::unique_ptr<GpuContext>& context = contexts[adapter];
+  if (!context) {
+    context = std::make_unique<GpuContext>();
+    context->instance = gpu::Instance::create();
+    context->device = context->instance.requestAdapter({adapter}).requestDevice({"facet render"});
+    context->renderer = std::make_unique<gpu_backend::GpuRenderer>(context->device);
+  }
+  return *context;
+}
+
 }  // namespace
 
 const char* toString(Backend backend) {
   switch (backend) {
     case Backend::Cpu:
       return "cpu";
+    case Backend::Gpu:
+      return "gpu";
   }
   return "?";
 }
@@ -38,7 +63,8 @@ double RenderReport::totalMilliseconds() const {
   return total;
 }
 
-RenderReport render(const scene::Scene& scene, Backend backend, const std::function<void(double)>& progress) {
+RenderReport render(const scene::Scene& scene, Backend backend, const std::function<void(double)>& progress,
+                    const std::string& adapter) {
   RenderReport report;
   Stopwatch clock;
   scene::SceneGeometry geometry = scene::buildGeometry(scene);
@@ -54,6 +80,16 @@ RenderReport render(const scene::Scene& scene, Backend backend, const std::funct
                       std::to_string(std::max(1u, std::thread::hardware_concurrency())) + " threads";
       report.primaryRays = statistics.primaryRays;
       report.shadowRays = statistics.shadowRays;
+      break;
+    }
+    case Backend::Gpu: {
+      GpuContext& context = gpuContext(adapter);
+      gpu_backend::GpuRenderResult result = context.renderer->render(scene, geometry, progress);
+      report.image = std::move(result.image);
+      for (const auto& [name, milliseconds] : result.stageMilliseconds) report.stages.push_back({name, milliseconds});
+      report.device = context.device.adapterInfo().name + " (GPU, float)";
+      report.primaryRays = result.primaryRays;
+      report.shadowRays = result.shadowRays;
       break;
     }
   }

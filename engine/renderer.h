@@ -12,7 +12,7 @@
 
 namespace facet {
 
-enum class Backend { Cpu };
+enum class Backend { Cpu, Gpu };
 const char* toString(Backend backend);
 
 struct StageTime {
@@ -32,6 +32,10 @@ struct RenderReport {
   double totalMilliseconds() const;
 };
 
-RenderReport render(const scene::Scene& scene, Backend backend, const std::function<void(double)>& progress = {});
+// The GPU backend runs on the adapter whose name contains `adapter` (empty:
+// FACET_ADAPTER or the default); its device and pipelines are kept for the
+// process, so each kernel variant is compiled once.
+RenderReport render(const scene::Scene& scene, Backend backend, const std::function<void(double)>& progress = {},
+                    const std::string& adapter = {});
 
 }  // namespace facet

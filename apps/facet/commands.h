@@ -1,8 +1,14 @@
 // Each facet sub-command lives in its own cmd_*.cpp and registers itself here.
 #pragma once
 
+#include <string>
+
 namespace CLI {
 class App;
+}
+
+namespace facet::scene {
+struct Scene;
 }
 
 namespace facet::cli {
@@ -14,5 +20,10 @@ void addAlbedoCommand(CLI::App& app);
 void addPresetsCommand(CLI::App& app);
 void addPlotCommand(CLI::App& app);
 void addBrdfPrecisionCommand(CLI::App& app);
+void addParityCommand(CLI::App& app);
+
+// Shared by render and parity: --size WIDTHxHEIGHT and --method exact|tess.
+void applyImageSize(const std::string& size, scene::Scene& scene);
+void applyMethod(const std::string& method, scene::Scene& scene);
 
 }  // namespace facet::cli

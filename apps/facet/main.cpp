@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   facet::cli::addPresetsCommand(app);
   facet::cli::addPlotCommand(app);
   facet::cli::addBrdfPrecisionCommand(app);
+  facet::cli::addParityCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,96 @@
+// facet parity: render a scene on both backends and compare them AOV by AOV
+// (engine/parity.h); exits with 1 above tolerance.
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+
+#include "commands.h"
+#include "engine/parity.h"
+#include "engine/renderer.h"
+#include "scenes/scene_file.h"
+
+namespace facet::cli {
+namespace {
+
+struct ParityOptions {
+  std::string scene;
+  std::string size;
+  std::string method;
+  std::string heatmap;
+  std::string adapter;
+  bool json = false;
+};
+
+nlohmann::json toJson(const ParityReport& report, const RenderReport& cpu, const RenderReport& gpu) {
+  nlohmann::json aovs = nlohmann::json::array();
+  for (const AovParity& a : report.aovs)
+    aovs.push_back({{"name", a.name},
+                    {"relative", a.unit},
+                    {"maxAbsolute", a.maxAbsolute},
+                    {"meanAbsolute", a.meanAbsolute},
+                    {"maxRelative", a.maxRelative},
+                    {"meanRelative", a.meanRelative},
+                    {"tolerance", a.tolerance},
+                    {"overSilhouette", a.overSilhouette},
+                    {"overInterior", a.overInterior},
+                    {"shareOver", a.shareOver},
+                    {"pass", a.pass}});
+  auto milliseconds = [](const RenderReport& r) {
+    nlohmann::json stages = nlohmann::json::object();
+    for (const StageTime& s : r.stages) stages[s.name] = s.milliseconds;
+    return stages;
+  };
+  return {{"width", report.width},
+          {"height", report.height},
+          {"pixels", report.pixels},
+          {"coveredOnBoth", report.covered},
+          {"silhouettePixels", report.silhouettePixels},
+          {"coverage",
+           {{"mismatches", report.coverageMismatches},
+            {"mismatchesOffSilhouette", report.coverageMismatchesInterior},
+            {"pass", report.coveragePass}}},
+          {"aovs", aovs},
+          {"cpu", {{"device", cpu.device}, {"milliseconds", milliseconds(cpu)}}},
+          {"gpu", {{"device", gpu.device}, {"milliseconds", milliseconds(gpu)}}},
+          {"pass", report.pass}};
+}
+
+void runParity(const ParityOptions& o) {
+  scene::Scene scene = scene::loadScene(o.scene);
+  if (!o.size.empty()) applyImageSize(o.size, scene);
+  if (!o.method.empty()) applyMethod(o.method, scene);
+  const RenderReport cpu = render(scene, Backend::Cpu);
+  const RenderReport gpu = render(scene, Backend::Gpu, {}, o.adapter);
+  const ParityReport report = compareImages(cpu.image, gpu.image);
+  if (!o.heatmap.empty()) writeHeatmap(o.heatmap, report);
+  if (o.json) {
+    std::printf("%s\n", toJson(report, cpu, gpu).dump(2).c_str());
+  } else {
+    std::printf("%s: %s intersection; CPU: %s; GPU: %s\n", o.scene.c_str(),
+                scene.render.method == scene::IntersectionMethod::Exact ? "exact" : "tessellated", cpu.device.c_str(),
+                gpu.device.c_str());
+    std::printf("%s", describe(report).c_str());
+    if (!o.heatmap.empty()) std::printf("wrote %s\n", o.heatmap.c_str());
+  }
+  if (!report.pass) throw std::runtime_error("parity: " + o.scene + " is out of tolerance");
+}
+
+}  // namespace
+
+void addParityCommand(CLI::App& app) {
+  auto o = std::make_shared<ParityOptions>();
+  auto* c = app.add_subcommand("parity", "Render a scene on the GPU and the CPU reference and compare every AOV");
+  c->add_option("scene", o->scene, "Scene file (.json, .obj cage or glTF)")->required()->check(CLI::ExistingFile);
+  c->add_option("--size", o->size, "Image size WIDTHxHEIGHT");
+  c->add_option("--method", o->method, "Ray casting: exact limit surface, or tessellated")
+      ->check(CLI::IsMember({"exact", "tess"}));
+  c->add_option("--heatmap", o->heatmap, "Write the per-pixel error (in units of tolerance) as a PNG");
+  c->add_option("--adapter", o->adapter, "GPU adapter: a substring of its name");
+  c->add_flag("--json", o->json, "Machine-readable report");
+  c->callback([o] { runParity(*o); });
+}
+
+}  // namespace facet::cli

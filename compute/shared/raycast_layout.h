@@ -1,0 +1,139 @@
+// The GPU ray caster's buffers as both languages see them (the rules of
+// compute/shared/patch_bvh.h: 32-bit scalar members only, so std430 and C++
+// agree without padding). C++ includes it through
+// engine/gpu_backend/raycast_layout.hpp.
+#ifndef FACET_SHARED_RAYCAST_LAYOUT_H
+#define FACET_SHARED_RAYCAST_LAYOUT_H
+
+// Where one object's arrays start in the concatenated scene arrays. BVH
+// `next` and PatchRecord `firstPoint` stay relative to their object; every
+// other index below is absolute.
+struct ObjectRange {
+  uint firstNode;
+  uint firstPatch;  // PatchRecord index; also the tessellation's patch index
+  uint firstPoint;
+  uint patchIdOffset;  // patch and cage-face ids count on across objects
+  uint faceIdOffset;
+  uint material;
+  uint rate;             // tessellated: k
+  uint firstGridVertex;  // tessellated: (k + 1)^2 limit points per patch
+  uint firstEdgeMidpoint;  // tessellated: 4 k per patch (those of unsplit edges unused)
+  uint firstRow;           // tessellated: k row boxes per patch
+};
+
+// A ray; tMax < 0 marks a ray that is not traced (a shadow ray the light
+// model skipped).
+struct RayRecord {
+  float originX;
+  float originY;
+  float originZ;
+  float tMin;
+  float directionX;
+  float directionY;
+  float directionZ;
+  float tMax;
+};
+
+// The closest hit; patchIndex == FACET_NO_HIT on a miss. (s, t) is patch-local.
+// The geometric normal is the micro-triangle's (tessellated only; the exact
+// method's is the limit normal, found when shading).
+struct HitRecord {
+  float t;
+  uint patchIndex;  // absolute PatchRecord index
+  uint object;
+  float s;
+  float tParam;
+  float geometricX;
+  float geometricY;
+  float geometricZ;
+};
+
+const uint FACET_NO_HIT = 0xFFFFFFFFu;
+
+// A punctual light in world space; the spot cones are given as cosines.
+const uint FACET_LIGHT_DIRECTIONAL = 0u;
+const uint FACET_LIGHT_POINT = 1u;
+const uint FACET_LIGHT_SPOT = 2u;
+struct LightRecord {
+  uint type;
+  float colorR;
+  float colorG;
+  float colorB;
+  float positionX;
+  float positionY;
+  float positionZ;
+  float cosOuter;
+  float directionX;
+  float directionY;
+  float directionZ;
+  float cosInner;
+};
+
+// A material as BrdfParams wants it (materials/shading/brdf.h).
+struct MaterialRecord {
+  int dModel;
+  int gModel;
+  int fModel;
+  float alpha;
+  float f0R;
+  float f0G;
+  float f0B;
+  float etaR;
+  float etaG;
+  float etaB;
+  float kR;
+  float kG;
+  float kB;
+  float diffuseR;
+  float diffuseG;
+  float diffuseB;
+};
+
+// What the camera-side kernels need, one uniform block (std140 agrees: all
+// members are scalars, the camera first).
+struct FrameParams {
+  float eyeX;
+  float eyeY;
+  float eyeZ;
+  float tanHalfFovY;
+  float forwardX;
+  float forwardY;
+  float forwardZ;
+  float aspect;
+  float rightX;
+  float rightY;
+  float rightZ;
+  float width;
+  float upX;
+  float upY;
+  float upZ;
+  float height;
+  uint firstPixel;  // the band of pixels this pass renders
+  uint pixelCount;
+  uint strata;         // samples per pixel = strata^2
+  uint raysPerPixel;   // 1 when strata == 1, else the centre ray plus strata^2
+  uint objectCount;
+  float tolerance;      // exact method: largest ray-to-surface distance of a root
+  float minimumPiece;   // exact method: pieces are not split below this size
+  float shadowOffset;   // 1e-6 x the scene diagonal (docs/rendering.md)
+};
+
+// The AOVs of one pixel (beauty is written separately, as a vec4).
+struct PixelAovs {
+  float depth;
+  float positionX;
+  float positionY;
+  float positionZ;
+  float geometricX;
+  float geometricY;
+  float geometricZ;
+  float shadingX;
+  float shadingY;
+  float shadingZ;
+  uint patchId;
+  uint faceId;
+  float u;
+  float v;
+};
+
+#endif

@@ -1,0 +1,97 @@
+// The comparison behind `facet parity`: what passes, what fails, and where
+// the failures are counted.
+#include <gtest/gtest.h>
+
+#include "engine/parity.h"
+
+namespace facet {
+namespace {
+
+// A 20x20 image whose centre 10x10 square is covered by a lit surface.
+Image square() {
+  Image image(20, 20);
+  for (int y = 5; y < 15; ++y)
+    for (int x = 5; x < 15; ++x) {
+      const std::size_t p = image.index(x, y);
+      image.beauty[p] = {0.5f, 0.25f, 0.125f, 1.0f};
+      image.depth[p] = 10.0f;
+      image.shadingNormal[p] = {0.0f, 0.0f, 1.0f};
+      image.geometricNormal[p] = {0.0f, 0.0f, 1.0f};
+      image.patchId[p] = 0;
+      image.faceId[p] = 0;
+    }
+  return image;
+}
+
+const AovParity& aov(const ParityReport& report, const std::string& name) {
+  for (const AovParity& a : report.aovs)
+    if (a.name == name) return a;
+  throw std::invalid_argument(name);
+}
+
+TEST(Parity, IdenticalImagesPass) {
+  const ParityReport report = compareImages(square(), square());
+  EXPECT_TRUE(report.pass) << describe(report);
+  EXPECT_EQ(report.covered, 100u);
+  // The ring of pixels on either side of the square's edge.
+  EXPECT_EQ(report.silhouettePixels, 12u * 12u - 8u * 8u);
+}
+
+TEST(Parity, DepthOverToleranceInTheInteriorFails) {
+  Image candidate = square();
+  candidate.depth[candidate.index(10, 10)] = 10.0f * (1.0f + 2e-4f);
+  const ParityReport report = compareImages(square(), candidate);
+  EXPECT_FALSE(report.pass);
+  EXPECT_EQ(aov(report, "depth").overInterior, 1u);
+  EXPECT_GT(report.heat[candidate.index(10, 10)], 1.0f);
+}
+
+TEST(Parity, DepthWithinToleranceAndSilhouetteErrorsPass) {
+  Image candidate = square();
+  candidate.depth[candidate.index(10, 10)] = 10.0f * (1.0f + 5e-5f);
+  candidate.depth[candidate.index(5, 5)] = 11.0f;  // a silhouette pixel
+  const ParityReport report = compareImages(square(), candidate);
+  EXPECT_TRUE(report.pass) << describe(report);
+  EXPECT_EQ(aov(report, "depth").overSilhouette, 1u);
+}
+
+TEST(Parity, NormalAngleIsGated) {
+  Image candidate = square();
+  candidate.shadingNormal[candidate.index(9, 9)] = {0.002f, 0.0f, 1.0f};
+  EXPECT_FALSE(compareImages(square(), candidate).pass);
+}
+
+TEST(Parity, BeautyAllowsOneTenthOfAPercentRoundedUpToAPixel) {
+  Image candidate = square();
+  candidate.beauty[candidate.index(8, 8)].r *= 1.01f;
+  EXPECT_TRUE(compareImages(square(), candidate).pass);
+  candidate.beauty[candidate.index(9, 8)].g *= 1.01f;
+  const ParityReport report = compareImages(square(), candidate);
+  EXPECT_FALSE(report.pass);
+  EXPECT_EQ(aov(report, "beauty").overInterior, 2u);
+}
+
+TEST(Parity, CoverageHoleAwayFromSilhouettesFails) {
+  Image candidate = square();
+  for (int y = 8; y < 11; ++y)
+    for (int x = 8; x < 11; ++x) candidate.patchId[candidate.index(x, y)] = Image::kNoId;
+  const ParityReport report = compareImages(square(), candidate);
+  EXPECT_FALSE(report.coveragePass);
+  EXPECT_EQ(report.coverageMismatches, 9u);
+  // Only the centre of the hole has no covered neighbour on the candidate.
+  EXPECT_EQ(report.coverageMismatchesInterior, 1u);
+  EXPECT_LT(report.heat[candidate.index(9, 9)], 0.0f);
+}
+
+TEST(Parity, CoverageDifferingOnOneSilhouettePixelPasses) {
+  Image candidate = square();
+  candidate.patchId[candidate.index(5, 5)] = Image::kNoId;
+  const ParityReport report = compareImages(square(), candidate);
+  EXPECT_TRUE(report.coveragePass);
+  EXPECT_EQ(report.coverageMismatches, 1u);
+}
+
+TEST(Parity, DifferentSizesAreAnError) { EXPECT_THROW(compareImages(Image(2, 2), Image(3, 2)), std::invalid_argument); }
+
+}  // namespace
+}  // namespace facet
