@@ -1,4 +1,6 @@
 // Command encoders, compute passes and timestamp queries.
+#include <algorithm>
+
 #include "engine/gpu/vk_state.h"
 
 namespace facet::gpu {
@@ -45,13 +47,13 @@ namespace {
 
 void checkRange(const std::string& what, const Buffer& buffer, BufferUsage usage, std::uint64_t offset,
                 std::uint64_t size) {
-  auto name = what + " " + describe("buffer", buffer.label());
+  auto name = what + " " + describe("buffer", require(buffer, what + " buffer").label);
   if (!has(buffer.usage(), usage))
     throw Error(name + ": needs usage " + toString(usage) + ", has " + toString(buffer.usage()));
   if (offset % 4 != 0 || size % 4 != 0) throw Error(name + ": offset and size must be multiples of 4 bytes");
   if (offset > buffer.size() || size > buffer.size() - offset)
-    throw Error(name + ": range [" + std::to_string(offset) + ", " + std::to_string(offset + size) +
-                ") exceeds the size " + std::to_string(buffer.size()));
+    throw Error(name + ": range of " + std::to_string(size) + " bytes at offset " + std::to_string(offset) +
+                " exceeds the size " + std::to_string(buffer.size()));
 }
 
 // Dispatch preconditions: a pipeline, every bind group it uses, ranges large
@@ -59,22 +61,42 @@ void checkRange(const std::string& what, const Buffer& buffer, BufferUsage usage
 void prepareDispatch(CommandRecording& r, std::vector<const BufferState*>& reads,
                      std::vector<const BufferState*>& writes) {
   auto pass = describe("compute pass", r.passLabel);
-  if (!r.passOpen) throw Error(pass + ": dispatch after end()");
   if (!r.pipeline) throw Error(pass + ": dispatch without setPipeline");
-  const auto& groups = r.pipeline->layout->groups;
+  const PipelineLayoutState& layout = *r.pipeline->layout;
+  const auto& groups = layout.groups;
+  const auto pipeline = describe("compute pipeline", r.pipeline->label);
   for (std::size_t i = 0; i < groups.size(); ++i) {
     if (i >= r.bindGroups.size() || !r.bindGroups[i])
-      throw Error(pass + ": " + describe("compute pipeline", r.pipeline->label) + " uses bind group " +
-                  std::to_string(i) + ", which is not set");
+      throw Error(pass + ": " + pipeline + " uses bind group " + std::to_string(i) + ", which is not set");
+    // setBindGroup checked the group against the pipeline set then; a later
+    // setPipeline may have switched to a layout the group was not made for.
+    const BindGroupState& group = *r.bindGroups[i];
+    if (!group.layout->matches(*groups[i]))
+      throw Error(pass + ": " + describe("bind group", group.label) + " at group " + std::to_string(i) +
+                  " was made for " + describe("bind group layout", group.layout->label) + ", which does not match " +
+                  describe("bind group layout", groups[i]->label) + " of " + pipeline);
   }
   for (const auto& b : r.pipeline->shaderBindings) {
-    for (const BoundBuffer& bound : r.bindGroups[b.set]->buffers) {
-      if (bound.binding == b.binding && bound.size < b.minSize)
-        throw Error(pass + ": " + describe("buffer", bound.buffer->label) + " bound at group " + std::to_string(b.set) +
-                    ", binding " + std::to_string(b.binding) + " is too small for the shader's block" +
-                    (b.name.empty() ? "" : " '" + b.name + "'") + ": " + std::to_string(bound.size) +
-                    " bytes bound, at least " + std::to_string(b.minSize) + " needed");
-    }
+    const auto& bound = r.bindGroups[b.set]->buffers;
+    auto it = std::find_if(bound.begin(), bound.end(), [&](const BoundBuffer& e) { return e.binding == b.binding; });
+    const std::string where = "group " + std::to_string(b.set) + ", binding " + std::to_string(b.binding);
+    const std::string block = b.name.empty() ? "" : " '" + b.name + "'";
+    if (it == bound.end())
+      throw Error(pass + ": " + describe("bind group", r.bindGroups[b.set]->label) + " has no buffer at " + where +
+                  ", which the shader's block" + block + " of " + pipeline + " uses");
+    if (it->size < b.minSize)
+      throw Error(pass + ": " + describe("buffer", it->buffer->label) + " bound at " + where +
+                  " is too small for the shader's block" + block + ": " + std::to_string(it->size) +
+                  " bytes bound, at least " + std::to_string(b.minSize) + " needed");
+  }
+  // Vulkan keeps a set bound across vkCmdBindPipeline only while the pipeline
+  // layouts are compatible up to that set; binding again with the current
+  // layout is always right and costs little.
+  for (std::uint32_t i = 0; i < groups.size(); ++i) {
+    if (r.bindGroupPipelineLayouts[i] == layout.layout) continue;
+    vkCmdBindDescriptorSets(r.commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, layout.layout, i, 1, &r.bindGroups[i]->set,
+                            0, nullptr);
+    r.bindGroupPipelineLayouts[i] = layout.layout;
   }
   for (std::size_t i = 0; i < groups.size(); ++i) {
     for (const BoundBuffer& bound : r.bindGroups[i]->buffers)
@@ -88,6 +110,7 @@ void prepareDispatch(CommandRecording& r, std::vector<const BufferState*>& reads
 // ---------------------------------------------------------------- encoder
 
 CommandEncoder Device::createCommandEncoder(const CommandEncoderDescriptor& descriptor) {
+  detail::require(*this, "device");
   auto state = std::make_shared<detail::CommandRecording>();
   state->device = state_;
   state->label = descriptor.label;
@@ -96,10 +119,11 @@ CommandEncoder Device::createCommandEncoder(const CommandEncoderDescriptor& desc
 }
 
 ComputePassEncoder CommandEncoder::beginComputePass(const ComputePassDescriptor& descriptor) {
-  detail::CommandRecording& r = *state_;
+  detail::CommandRecording& r = detail::require(*this, "command encoder");
   r.requireRecording("beginComputePass");
   const auto& ts = descriptor.timestampWrites;
   if (ts.querySet) {
+    detail::require(*ts.querySet, detail::describe("compute pass", descriptor.label) + " timestamp query set");
     const auto& set = ts.querySet->state();
     auto name = detail::describe("compute pass", descriptor.label) + " timestamps in " +
                 detail::describe("query set", set->label);
@@ -117,15 +141,17 @@ ComputePassEncoder CommandEncoder::beginComputePass(const ComputePassDescriptor&
     r.resources.push_back(set);
   }
   r.passOpen = true;
+  ++r.passNumber;
   r.passLabel = descriptor.label;
   r.pipeline.reset();
   r.bindGroups.clear();
-  return ComputePassEncoder(state_);
+  r.bindGroupPipelineLayouts.clear();
+  return ComputePassEncoder(state_, r.passNumber);
 }
 
 void CommandEncoder::copyBufferToBuffer(const Buffer& source, std::uint64_t sourceOffset, const Buffer& destination,
                                         std::uint64_t destinationOffset, std::uint64_t size) {
-  detail::CommandRecording& r = *state_;
+  detail::CommandRecording& r = detail::require(*this, "command encoder");
   r.requireRecording("copyBufferToBuffer");
   detail::checkRange("copyBufferToBuffer source", source, BufferUsage::CopySrc, sourceOffset, size);
   detail::checkRange("copyBufferToBuffer destination", destination, BufferUsage::CopyDst, destinationOffset, size);
@@ -141,8 +167,9 @@ void CommandEncoder::copyBufferToBuffer(const Buffer& source, std::uint64_t sour
 }
 
 void CommandEncoder::clearBuffer(const Buffer& buffer, std::uint64_t offset, std::uint64_t size) {
-  detail::CommandRecording& r = *state_;
+  detail::CommandRecording& r = detail::require(*this, "command encoder");
   r.requireRecording("clearBuffer");
+  detail::require(buffer, "clearBuffer buffer");
   if (offset > buffer.size())
     throw Error("clearBuffer " + detail::describe("buffer", buffer.label()) + ": offset past the end");
   if (size == kWholeSize) size = buffer.size() - offset;
@@ -154,40 +181,50 @@ void CommandEncoder::clearBuffer(const Buffer& buffer, std::uint64_t offset, std
 }
 
 CommandBuffer CommandEncoder::finish() {
-  detail::CommandRecording& r = *state_;
+  detail::CommandRecording& r = detail::require(*this, "command encoder");
   r.requireRecording("finish");
   detail::endCommandBuffer(r.commandBuffer);
   r.finished = true;
-  return CommandBuffer(std::exchange(state_, nullptr));
+  // The encoder keeps the recording so that later calls on it report
+  // "after finish()" instead of finding nothing.
+  return CommandBuffer(state_);
 }
 
 // ---------------------------------------------------------------- pass
 
-ComputePassEncoder::ComputePassEncoder(std::shared_ptr<detail::CommandRecording> recording)
-    : recording_(std::move(recording)) {}
+ComputePassEncoder::ComputePassEncoder(std::shared_ptr<detail::CommandRecording> recording, std::uint64_t passNumber)
+    : recording_(std::move(recording)), passNumber_(passNumber) {}
 
 ComputePassEncoder::ComputePassEncoder(ComputePassEncoder&& other) noexcept
-    : recording_(std::exchange(other.recording_, nullptr)) {}
+    : recording_(std::exchange(other.recording_, nullptr)), passNumber_(other.passNumber_) {}
 
 ComputePassEncoder::~ComputePassEncoder() {
-  if (recording_ && recording_->passOpen) end();
+  if (recording_ && recording_->passOpen && recording_->passNumber == passNumber_) end();
 }
 
+namespace {
+// The recording, if this pass is still the open one.
+detail::CommandRecording& requirePass(const std::shared_ptr<detail::CommandRecording>& recording,
+                                      std::uint64_t passNumber) {
+  if (!recording) throw Error("compute pass encoder is moved-from or empty");
+  if (!recording->passOpen || recording->passNumber != passNumber)
+    throw Error("compute pass encoder used after its end()");
+  return *recording;
+}
+}  // namespace
+
 void ComputePassEncoder::setPipeline(const ComputePipeline& pipeline) {
-  detail::CommandRecording& r = *recording_;
-  if (!r.passOpen) throw Error(detail::describe("compute pass", r.passLabel) + ": setPipeline after end()");
-  if (!pipeline)
-    throw Error(detail::describe("compute pass", r.passLabel) + ": setPipeline with a moved-from pipeline");
+  detail::CommandRecording& r = requirePass(recording_, passNumber_);
+  detail::require(pipeline, detail::describe("compute pass", r.passLabel) + ": setPipeline's pipeline");
   r.pipeline = pipeline.state();
   vkCmdBindPipeline(r.commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, r.pipeline->pipeline);
   r.resources.push_back(r.pipeline);
 }
 
 void ComputePassEncoder::setBindGroup(std::uint32_t index, const BindGroup& group) {
-  detail::CommandRecording& r = *recording_;
+  detail::CommandRecording& r = requirePass(recording_, passNumber_);
   auto pass = detail::describe("compute pass", r.passLabel);
-  if (!r.passOpen) throw Error(pass + ": setBindGroup after end()");
-  if (!group) throw Error(pass + ": setBindGroup(" + std::to_string(index) + ") with a moved-from bind group");
+  detail::require(group, pass + ": setBindGroup(" + std::to_string(index) + ")'s bind group");
   if (!r.pipeline) throw Error(pass + ": setBindGroup(" + std::to_string(index) + ") before setPipeline");
   const auto& groups = r.pipeline->layout->groups;
   const auto& state = group.state();
@@ -195,28 +232,24 @@ void ComputePassEncoder::setBindGroup(std::uint32_t index, const BindGroup& grou
     throw Error(pass + ": setBindGroup(" + std::to_string(index) +
                 "): " + detail::describe("compute pipeline", r.pipeline->label) + " has " +
                 std::to_string(groups.size()) + " bind group(s)");
-  const auto& expected = *groups[index];
   const auto& given = *state->layout;
-  auto sameEntries = [](const auto& a, const auto& b) {
-    if (a.size() != b.size()) return false;
-    for (std::size_t i = 0; i < a.size(); ++i)
-      if (a[i].binding != b[i].binding || a[i].type != b[i].type || a[i].minBindingSize != b[i].minBindingSize)
-        return false;
-    return true;
-  };
-  if (&expected != &given && !sameEntries(expected.entries, given.entries))
+  if (!given.matches(*groups[index]))
     throw Error(pass + ": " + detail::describe("bind group", state->label) + " was made for " +
                 detail::describe("bind group layout", given.label) + ", which does not match group " +
                 std::to_string(index) + " of " + detail::describe("compute pipeline", r.pipeline->label));
-  if (r.bindGroups.size() <= index) r.bindGroups.resize(index + 1);
+  if (r.bindGroups.size() <= index) {
+    r.bindGroups.resize(index + 1);
+    r.bindGroupPipelineLayouts.resize(index + 1, VK_NULL_HANDLE);
+  }
   r.bindGroups[index] = state;
+  r.bindGroupPipelineLayouts[index] = r.pipeline->layout->layout;
   vkCmdBindDescriptorSets(r.commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, r.pipeline->layout->layout, index, 1,
                           &state->set, 0, nullptr);
   r.resources.push_back(state);
 }
 
 void ComputePassEncoder::dispatchWorkgroups(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
-  detail::CommandRecording& r = *recording_;
+  detail::CommandRecording& r = requirePass(recording_, passNumber_);
   std::vector<const detail::BufferState*> reads, writes;
   detail::prepareDispatch(r, reads, writes);
   const auto& max = r.device->limits().maxComputeWorkgroupsPerDimension;
@@ -233,7 +266,8 @@ void ComputePassEncoder::dispatchWorkgroups(std::uint32_t x, std::uint32_t y, st
 }
 
 void ComputePassEncoder::dispatchWorkgroupsIndirect(const Buffer& indirect, std::uint64_t offset) {
-  detail::CommandRecording& r = *recording_;
+  detail::CommandRecording& r = requirePass(recording_, passNumber_);
+  detail::require(indirect, "dispatchWorkgroupsIndirect buffer");
   std::vector<const detail::BufferState*> reads, writes;
   detail::prepareDispatch(r, reads, writes);
   detail::checkRange("dispatchWorkgroupsIndirect", indirect, BufferUsage::Indirect, offset, 3 * sizeof(std::uint32_t));
@@ -244,8 +278,7 @@ void ComputePassEncoder::dispatchWorkgroupsIndirect(const Buffer& indirect, std:
 }
 
 void ComputePassEncoder::end() {
-  detail::CommandRecording& r = *recording_;
-  if (!r.passOpen) throw Error(detail::describe("compute pass", r.passLabel) + ": end() called twice");
+  detail::CommandRecording& r = requirePass(recording_, passNumber_);
   if (r.passTimestamps) {
     vkCmdWriteTimestamp(r.commandBuffer, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, r.passTimestamps->pool,
                         r.passEndTimestampIndex);
@@ -254,11 +287,13 @@ void ComputePassEncoder::end() {
   r.passOpen = false;
   r.pipeline.reset();
   r.bindGroups.clear();
+  r.bindGroupPipelineLayouts.clear();
 }
 
 // ---------------------------------------------------------------- queries
 
 QuerySet Device::createQuerySet(const QuerySetDescriptor& descriptor) {
+  detail::require(*this, "device");
   if (descriptor.count == 0) throw Error(detail::describe("query set", descriptor.label) + ": count must be positive");
   auto state = std::make_shared<detail::QuerySetState>();
   state->device = state_;
@@ -272,9 +307,10 @@ QuerySet Device::createQuerySet(const QuerySetDescriptor& descriptor) {
   return QuerySet(std::move(state));
 }
 
-std::uint32_t QuerySet::count() const { return state_->count; }
+std::uint32_t QuerySet::count() const { return detail::require(*this, "query set").count; }
 
 std::vector<double> QuerySet::readTimestampsNs(std::uint32_t first, std::uint32_t count) const {
+  detail::require(*this, "query set");
   if (first + count > state_->count || first + count < first)
     throw Error(detail::describe("query set", state_->label) + ": reading [" + std::to_string(first) + ", " +
                 std::to_string(first + count) + ") past its count " + std::to_string(state_->count));

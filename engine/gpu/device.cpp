@@ -1,4 +1,5 @@
 // Device, queue and buffers.
+#include <cstdio>
 #include <cstring>
 
 #include "engine/gpu/vk_state.h"
@@ -26,6 +27,16 @@ void barrierToHost(VkCommandBuffer cmd) {
                        0, nullptr);
 }
 
+constexpr BufferUsage kKnownUsages = BufferUsage::MapRead | BufferUsage::MapWrite | BufferUsage::CopySrc |
+                                     BufferUsage::CopyDst | BufferUsage::Uniform | BufferUsage::Storage |
+                                     BufferUsage::Indirect;
+
+std::string hex(std::uint32_t value) {
+  char text[16];
+  std::snprintf(text, sizeof text, "0x%x", value);
+  return text;
+}
+
 VkBufferUsageFlags vulkanUsage(BufferUsage usage) {
   VkBufferUsageFlags flags = 0;
   if (has(usage, BufferUsage::CopySrc)) flags |= VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
@@ -40,13 +51,22 @@ void checkBufferDescriptor(const BufferDescriptor& d, const Limits& limits) {
   auto fail = [&](const std::string& rule) { throw Error(describe("buffer", d.label) + ": " + rule); };
   if (d.size == 0) fail("size must be greater than 0");
   if (d.usage == BufferUsage::None) fail("usage must name at least one usage");
+  const std::uint32_t unknown = std::uint32_t(d.usage) & ~std::uint32_t(kKnownUsages);
+  if (unknown != 0) fail("usage has unknown bits " + hex(unknown));
   if (d.size > limits.maxBufferSize)
     fail("size " + std::to_string(d.size) + " exceeds the device's maxBufferSize " +
          std::to_string(limits.maxBufferSize));
+  // WebGPU allows MapRead or MapWrite alone, but with no copy usage such a
+  // buffer could never receive or hand on data here: requiring the partner
+  // turns a useless buffer into an Error at the point of the mistake.
   const auto allowedWith = [&](BufferUsage mapping, BufferUsage partner) {
+    if (!has(d.usage, mapping)) return;
     std::uint32_t others = std::uint32_t(d.usage) & ~std::uint32_t(mapping | partner);
-    if (has(d.usage, mapping) && others != 0)
+    if (others != 0)
       fail("usage " + toString(d.usage) + ": " + toString(mapping) + " may only be combined with " + toString(partner));
+    if (!has(d.usage, partner))
+      fail("usage " + toString(d.usage) + ": " + toString(mapping) + " needs " + toString(partner) +
+           ", as nothing else can move data into or out of a mapped buffer");
   };
   allowedWith(BufferUsage::MapRead, BufferUsage::CopyDst);
   allowedWith(BufferUsage::MapWrite, BufferUsage::CopySrc);
@@ -166,11 +186,12 @@ std::string toString(BufferUsage usage) {
 
 // ---------------------------------------------------------------- Buffer
 
-const std::string& Buffer::label() const { return state_->label; }
-std::uint64_t Buffer::size() const { return state_->size; }
-BufferUsage Buffer::usage() const { return state_->usage; }
+const std::string& Buffer::label() const { return detail::require(*this, "buffer").label; }
+std::uint64_t Buffer::size() const { return detail::require(*this, "buffer").size; }
+BufferUsage Buffer::usage() const { return detail::require(*this, "buffer").usage; }
 
 std::span<std::byte> Buffer::mappedRange() {
+  detail::require(*this, "buffer");
   if (!state_->mapped)
     throw Error(detail::describe("buffer", state_->label) + ": mappedRange needs usage MapRead or MapWrite, not " +
                 toString(state_->usage));
@@ -201,8 +222,13 @@ Device& Device::operator=(Device&& other) noexcept {
   return *this;
 }
 
-const AdapterInfo& Device::adapterInfo() const { return state_->info(); }
-const Limits& Device::limits() const { return state_->limits(); }
+const AdapterInfo& Device::adapterInfo() const { return detail::require(*this, "device").info(); }
+const Limits& Device::limits() const { return detail::require(*this, "device").limits(); }
+
+Queue& Device::queue() {
+  detail::require(*this, "device");
+  return queue_;
+}
 
 Buffer Device::createBuffer(const BufferDescriptor& descriptor) {
   detail::checkBufferDescriptor(descriptor, limits());
@@ -243,9 +269,16 @@ std::vector<detail::InFlight> takePendingUploads(detail::DeviceState& d) {
   return work;
 }
 
+// Device::queue() checks its device, but a Queue& taken before the Device was
+// moved from outlives that check.
+detail::DeviceState& requireDevice(const std::shared_ptr<detail::DeviceState>& device) {
+  if (!device) throw Error("queue is moved-from or empty: its Device was moved from or never created");
+  return *device;
+}
 }  // namespace
 
 void Queue::submit(CommandBuffer&& commands) {
+  requireDevice(device_);
   auto recording = commands.state();
   if (!recording) throw Error("Queue::submit: the command buffer is empty (moved from or already submitted)");
   if (!recording->finished)
@@ -258,13 +291,15 @@ void Queue::submit(CommandBuffer&& commands) {
 }
 
 void Queue::writeBuffer(const Buffer& buffer, std::uint64_t offset, const void* data, std::size_t size) {
+  requireDevice(device_);
+  detail::require(buffer, "Queue::writeBuffer's buffer");
   auto fail = [&](const std::string& rule) {
     throw Error("Queue::writeBuffer to " + detail::describe("buffer", buffer.label()) + ": " + rule);
   };
   if (!has(buffer.usage(), BufferUsage::CopyDst)) fail("needs usage CopyDst, has " + toString(buffer.usage()));
   if (offset % 4 != 0 || size % 4 != 0) fail("offset and size must be multiples of 4 bytes");
-  if (offset + size > buffer.size())
-    fail("range [" + std::to_string(offset) + ", " + std::to_string(offset + size) + ") exceeds the size " +
+  if (offset > buffer.size() || size > buffer.size() - offset)
+    fail("range of " + std::to_string(size) + " bytes at offset " + std::to_string(offset) + " exceeds the size " +
          std::to_string(buffer.size()));
   if (size == 0) return;
 
@@ -286,7 +321,7 @@ void Queue::writeBuffer(const Buffer& buffer, std::uint64_t offset, const void* 
 }
 
 void Queue::waitIdle() {
-  detail::DeviceState& d = *device_;
+  detail::DeviceState& d = requireDevice(device_);
   if (auto uploads = takePendingUploads(d); !uploads.empty()) submitBatch(d, std::move(uploads));
   VkSemaphoreWaitInfo wait{VK_STRUCTURE_TYPE_SEMAPHORE_WAIT_INFO};
   wait.semaphoreCount = 1;

@@ -9,7 +9,12 @@
 // dropping a handle early is never a use-after-free on the device.
 //
 // Misuse raises facet::gpu::Error naming the object (by label) and the rule,
-// before anything reaches Vulkan. No Vulkan type appears in this header.
+// before anything reaches Vulkan; so does using a moved-from (empty) handle.
+// No Vulkan type appears in this header.
+//
+// Threads: facet::gpu objects are not thread-safe. Use a Device, and every
+// object created from it, from one thread at a time (one thread per Device);
+// nothing here locks, as recording and submission state is shared unguarded.
 #pragma once
 
 #include <array>
@@ -120,7 +125,10 @@ struct BufferDescriptor {
 
 // A MapRead or MapWrite buffer stays mapped for its whole life (WebGPU's
 // mapAsync collapsed to "wait on the queue first"); mappedRange() is valid once
-// the work that writes it has finished (Queue::waitIdle).
+// the work that writes it has finished (Queue::waitIdle). Nothing guards the
+// other direction either: do not write a MapWrite buffer's mapped range while a
+// submitted copy from it is in flight (wait for the queue first), or the copy
+// may read a mix of old and new bytes.
 class Buffer : public Handle<detail::BufferState> {
  public:
   using Handle::Handle;
@@ -248,7 +256,7 @@ class CommandBuffer : public Handle<detail::CommandRecording> {
 
 class ComputePassEncoder {
  public:
-  explicit ComputePassEncoder(std::shared_ptr<detail::CommandRecording> recording);
+  ComputePassEncoder(std::shared_ptr<detail::CommandRecording> recording, std::uint64_t passNumber);
   ComputePassEncoder(ComputePassEncoder&&) noexcept;
   ComputePassEncoder& operator=(ComputePassEncoder&&) = delete;
   ComputePassEncoder(const ComputePassEncoder&) = delete;
@@ -262,6 +270,7 @@ class ComputePassEncoder {
 
  private:
   std::shared_ptr<detail::CommandRecording> recording_;
+  std::uint64_t passNumber_;  // which of the encoder's passes this one is
 };
 
 struct CommandEncoderDescriptor {
@@ -282,9 +291,15 @@ class CommandEncoder : public Handle<detail::CommandRecording> {
 
 // ---------------------------------------------------------------- device
 
+// Lives inside its Device (Device::queue()); not copyable, so a copy cannot
+// outlive or diverge from the device it submits to.
 class Queue {
  public:
   explicit Queue(std::shared_ptr<detail::DeviceState> device) : device_(std::move(device)) {}
+  Queue(Queue&&) noexcept = default;
+  Queue& operator=(Queue&&) noexcept = default;
+  Queue(const Queue&) = delete;
+  Queue& operator=(const Queue&) = delete;
   void submit(CommandBuffer&& commands);
   void writeBuffer(const Buffer& buffer, std::uint64_t offset, const void* data, std::size_t size);
   template <class T>
@@ -312,7 +327,7 @@ class Device : public Handle<detail::DeviceState> {
 
   const AdapterInfo& adapterInfo() const;
   const Limits& limits() const;
-  Queue& queue() { return queue_; }
+  Queue& queue();
 
   Buffer createBuffer(const BufferDescriptor& descriptor);
   ShaderModule createShaderModule(const ShaderModuleDescriptor& descriptor);

@@ -259,9 +259,10 @@ Instance Instance::create(const InstanceDescriptor& descriptor) {
   return Instance(std::move(state));
 }
 
-std::vector<AdapterInfo> Instance::enumerateAdapters() const { return state_->infos; }
+std::vector<AdapterInfo> Instance::enumerateAdapters() const { return detail::require(*this, "instance").infos; }
 
 Adapter Instance::requestAdapter(const AdapterOptions& options) const {
+  detail::require(*this, "instance");
   std::string wanted = options.name;
   if (wanted.empty()) {
     if (const char* env = std::getenv("FACET_ADAPTER")) wanted = env;
@@ -282,10 +283,10 @@ Adapter Instance::requestAdapter(const AdapterOptions& options) const {
   return Adapter(state_, best);
 }
 
-bool Instance::validationEnabled() const { return state_->messenger != VK_NULL_HANDLE; }
+bool Instance::validationEnabled() const { return detail::require(*this, "instance").messenger != VK_NULL_HANDLE; }
 
 std::vector<std::string> Instance::takeValidationMessages() const {
-  std::lock_guard lock(state_->messagesMutex);
+  std::lock_guard lock(detail::require(*this, "instance").messagesMutex);
   return std::exchange(state_->validationMessages, {});
 }
 

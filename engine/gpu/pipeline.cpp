@@ -30,6 +30,16 @@ const BindGroupLayoutEntry* BindGroupLayoutState::find(std::uint32_t binding) co
   return it == entries.end() ? nullptr : &*it;
 }
 
+bool BindGroupLayoutState::matches(const BindGroupLayoutState& other) const {
+  if (this == &other) return true;
+  if (entries.size() != other.entries.size()) return false;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const auto &a = entries[i], &b = other.entries[i];
+    if (a.binding != b.binding || a.type != b.type || a.minBindingSize != b.minBindingSize) return false;
+  }
+  return true;
+}
+
 namespace {
 
 VkDescriptorType descriptorType(BindingType type) {
@@ -184,6 +194,7 @@ const char* toString(BindingType type) {
 }
 
 ShaderModule Device::createShaderModule(const ShaderModuleDescriptor& descriptor) {
+  detail::require(*this, "device");
   auto state = std::make_shared<detail::ShaderModuleState>();
   state->device = state_;
   state->label = descriptor.label;
@@ -196,16 +207,18 @@ ShaderModule Device::createShaderModule(const ShaderModuleDescriptor& descriptor
 }
 
 BindGroupLayout Device::createBindGroupLayout(const BindGroupLayoutDescriptor& descriptor) {
+  detail::require(*this, "device");
   return BindGroupLayout(detail::createBindGroupLayoutState(state_, descriptor));
 }
 
 PipelineLayout Device::createPipelineLayout(const PipelineLayoutDescriptor& descriptor) {
+  detail::require(*this, "device");
   std::vector<std::shared_ptr<detail::BindGroupLayoutState>> groups;
   for (std::size_t i = 0; i < descriptor.bindGroupLayouts.size(); ++i) {
     const BindGroupLayout* layout = descriptor.bindGroupLayouts[i];
     if (!layout || !*layout)
       throw Error(detail::describe("pipeline layout", descriptor.label) + ": bind group layout " + std::to_string(i) +
-                  " is null");
+                  " is null, moved-from or empty");
     groups.push_back(layout->state());
   }
   return PipelineLayout(detail::createPipelineLayoutState(state_, descriptor.label, std::move(groups)));
@@ -213,8 +226,9 @@ PipelineLayout Device::createPipelineLayout(const PipelineLayoutDescriptor& desc
 
 BindGroup Device::createBindGroup(const BindGroupDescriptor& descriptor) {
   using namespace detail;
+  require(*this, "device");
   const std::string name = describe("bind group", descriptor.label);
-  if (!descriptor.layout || !*descriptor.layout) throw Error(name + ": layout is null");
+  if (!descriptor.layout || !*descriptor.layout) throw Error(name + ": layout is null, moved-from or empty");
   auto state = std::make_shared<BindGroupState>();
   state->device = state_;
   state->label = descriptor.label;
@@ -231,7 +245,7 @@ BindGroup Device::createBindGroup(const BindGroupDescriptor& descriptor) {
     const BindGroupLayoutEntry* entry = layout.find(e.binding);
     if (!entry) fail("not in " + describe("bind group layout", layout.label) + " (it has " + bindingList(layout) + ")");
     if (std::find(layoutEntries.begin(), layoutEntries.end(), entry) != layoutEntries.end()) fail("bound twice");
-    if (!e.buffer || !*e.buffer) fail("buffer is null");
+    if (!e.buffer || !*e.buffer) fail("buffer is null, moved-from or empty");
     const Buffer& buffer = *e.buffer;
     const std::string bufferName = describe("buffer", buffer.label());
     BufferUsage needed = entry->type == BindingType::Uniform ? BufferUsage::Uniform : BufferUsage::Storage;
@@ -244,9 +258,10 @@ BindGroup Device::createBindGroup(const BindGroupDescriptor& descriptor) {
       fail("offset " + std::to_string(e.offset) + " is not a multiple of " + std::to_string(alignment));
     if (e.offset >= buffer.size()) fail("offset " + std::to_string(e.offset) + " is past the end of " + bufferName);
     std::uint64_t size = e.size == kWholeSize ? buffer.size() - e.offset : e.size;
-    if (e.offset + size > buffer.size())
-      fail("range [" + std::to_string(e.offset) + ", " + std::to_string(e.offset + size) + ") exceeds " + bufferName +
-           " of size " + std::to_string(buffer.size()));
+    if (size == 0) fail("size must be greater than 0");
+    if (size > buffer.size() - e.offset)
+      fail("range of " + std::to_string(size) + " bytes at offset " + std::to_string(e.offset) + " exceeds " +
+           bufferName + " of size " + std::to_string(buffer.size()));
     if (size < entry->minBindingSize)
       fail(bufferName + " is too small for the binding: " + std::to_string(size) + " bytes bound, at least " +
            std::to_string(entry->minBindingSize) + " needed");
@@ -298,8 +313,9 @@ BindGroup Device::createBindGroup(const BindGroupDescriptor& descriptor) {
 
 ComputePipeline Device::createComputePipeline(const ComputePipelineDescriptor& descriptor) {
   using namespace detail;
+  require(*this, "device");
   const std::string name = describe("compute pipeline", descriptor.label);
-  if (!descriptor.module || !*descriptor.module) throw Error(name + ": shader module is null");
+  if (!descriptor.module || !*descriptor.module) throw Error(name + ": shader module is null, moved-from or empty");
   const ShaderModuleState& module = *descriptor.module->state();
   const spirv::Reflection& reflection = module.reflection;
   const auto& entries = reflection.computeEntryPoints;
@@ -348,7 +364,7 @@ ComputePipeline Device::createComputePipeline(const ComputePipelineDescriptor& d
                 "maxComputeInvocationsPerWorkgroup " + std::to_string(limits.maxComputeInvocationsPerWorkgroup));
 
   if (descriptor.layout) {
-    if (!*descriptor.layout) throw Error(name + ": pipeline layout is moved-from");
+    if (!*descriptor.layout) throw Error(name + ": pipeline layout is moved-from or empty");
     state->layout = descriptor.layout->state();
     checkLayoutAgainstShader(descriptor.label, *state->layout, reflection);
   } else {
@@ -373,13 +389,15 @@ ComputePipeline Device::createComputePipeline(const ComputePipelineDescriptor& d
 }
 
 BindGroupLayout ComputePipeline::getBindGroupLayout(std::uint32_t index) const {
-  const auto& groups = state_->layout->groups;
+  const auto& groups = detail::require(*this, "compute pipeline").layout->groups;
   if (index >= groups.size())
     throw Error(detail::describe("compute pipeline", state_->label) + ": getBindGroupLayout(" + std::to_string(index) +
                 "): the layout has " + std::to_string(groups.size()) + " group(s)");
   return BindGroupLayout(groups[index]);
 }
 
-std::array<std::uint32_t, 3> ComputePipeline::workgroupSize() const { return state_->workgroupSize; }
+std::array<std::uint32_t, 3> ComputePipeline::workgroupSize() const {
+  return detail::require(*this, "compute pipeline").workgroupSize;
+}
 
 }  // namespace facet::gpu

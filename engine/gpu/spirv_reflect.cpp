@@ -38,6 +38,7 @@ enum Op : std::uint32_t {
 enum Decoration : std::uint32_t {
   SpecId = 1,
   BufferBlock = 3,
+  RowMajor = 4,
   ArrayStride = 6,
   MatrixStride = 7,
   BuiltIn = 11,
@@ -51,6 +52,7 @@ constexpr std::uint32_t kExecutionModelGLCompute = 5;
 constexpr std::uint32_t kExecutionModeLocalSize = 17;
 constexpr std::uint32_t kExecutionModeLocalSizeId = 38;
 constexpr std::uint32_t kBuiltInWorkgroupSize = 25;
+constexpr std::uint32_t kStorageClassUniformConstant = 0;
 constexpr std::uint32_t kStorageClassUniform = 2;
 constexpr std::uint32_t kStorageClassPushConstant = 9;
 constexpr std::uint32_t kStorageClassStorageBuffer = 12;
@@ -78,6 +80,13 @@ struct Decorations {
   std::uint32_t literal(std::uint32_t d) const { return byKind.at(d).empty() ? 0 : byKind.at(d)[0]; }
 };
 
+// How a struct member lays out the matrices in it (SPIR-V puts these on the
+// member, not the matrix type).
+struct MatrixLayout {
+  std::uint32_t stride = 0;  // 0: tightly packed
+  bool rowMajor = false;
+};
+
 class Module {
  public:
   Module(std::span<const std::uint32_t> words, const std::string& label) : label_(label) {
@@ -94,11 +103,8 @@ class Module {
     Reflection r;
     r.computeEntryPoints = entryPoints_;
     r.workgroupSize = workgroupSize_;
-    for (int i = 0; i < 3; ++i) {
-      if (workgroupSizeIds_[i]) resolveWorkgroupDimension(*workgroupSizeIds_[i], r, i);
-    }
     if (builtinWorkgroupSize_) {
-      const auto& components = constants_.at(*builtinWorkgroupSize_).operands;
+      const auto& components = constant(*builtinWorkgroupSize_, "the WorkgroupSize built-in").operands;
       for (int i = 0; i < 3 && std::size_t(i) < components.size(); ++i) resolveWorkgroupDimension(components[i], r, i);
     }
     for (const auto& [id, c] : constants_) {
@@ -115,9 +121,59 @@ class Module {
     throw Error(detail::describe("shader module", label_) + ": " + rule);
   }
 
+  // Looks up what an instruction refers to; an id this reflection did not
+  // parse (OpSpecConstantOp, OpConstantNull, or a bad module) is an Error.
+  const Type& type(std::uint32_t id, const char* usedAs) const {
+    auto it = types_.find(id);
+    if (it == types_.end()) fail(std::string(usedAs) + " %" + std::to_string(id) + " is not a type facet::gpu knows");
+    return it->second;
+  }
+  const Type& constant(std::uint32_t id, const char* usedAs) const {
+    auto it = constants_.find(id);
+    if (it == constants_.end())
+      fail(std::string(usedAs) + " %" + std::to_string(id) +
+           " is not a literal constant (facet::gpu cannot evaluate OpSpecConstantOp or OpConstantNull there)");
+    return it->second;
+  }
+
+  // Operand words a type instruction needs, its result id included; sizeOf
+  // and scalarValue read these without further checks.
+  static std::size_t typeOperandWords(std::uint32_t op) {
+    switch (op) {
+      case OpTypeBool:
+      case OpTypeStruct:  // member types follow, any number
+        return 1;
+      case OpTypeFloat:         // width
+      case OpTypeRuntimeArray:  // element type
+        return 2;
+      default:  // int: width, signedness; vector, matrix: component type, count;
+                // array: element type, length; pointer: storage class, type
+        return 3;
+    }
+  }
+
+  // Decorations whose one literal operand reflection reads.
+  static bool takesLiteral(std::uint32_t decoration) {
+    switch (decoration) {
+      case SpecId:
+      case ArrayStride:
+      case MatrixStride:
+      case BuiltIn:
+      case BindingDecoration:
+      case DescriptorSet:
+      case Offset:
+        return true;
+      default:
+        return false;
+    }
+  }
+
   void parse(std::uint32_t op, std::span<const std::uint32_t> w) {
+    // `n`: the instruction's operand words after the opcode, per the specification.
     auto need = [&](std::size_t n) {
-      if (w.size() < n) fail("malformed instruction (opcode " + std::to_string(op) + ")");
+      if (w.size() < n)
+        fail("malformed instruction (opcode " + std::to_string(op) + " has " + std::to_string(w.size()) +
+             " operand words, at least " + std::to_string(n) + " needed)");
     };
     switch (op) {
       case OpName:
@@ -130,32 +186,44 @@ class Module {
         break;
       case OpExecutionMode:
         need(2);
-        if (w[1] == kExecutionModeLocalSize && w.size() >= 5) workgroupSize_ = {w[2], w[3], w[4]};
+        if (w[1] == kExecutionModeLocalSize) {
+          need(5);
+          workgroupSize_ = {w[2], w[3], w[4]};
+        }
         break;
       case OpExecutionModeId:
-        need(5);
+        need(2);
+        // LocalSizeId in a Vulkan 1.2 module needs the maintenance4 feature,
+        // which facet::gpu does not enable: Vulkan would reject the pipeline.
         if (w[1] == kExecutionModeLocalSizeId)
-          for (int i = 0; i < 3; ++i) workgroupSizeIds_[i] = w[2 + i];
+          fail(
+              "uses the LocalSizeId execution mode, which needs Vulkan's maintenance4 (not enabled); compile for "
+              "Vulkan 1.2 (glslangValidator --target-env vulkan1.2) so local_size_x_id becomes a WorkgroupSize "
+              "constant");
         break;
       case OpTypeBool:
-      case OpTypeInt:
+      case OpTypeStruct:
       case OpTypeFloat:
+      case OpTypeRuntimeArray:
+      case OpTypeInt:
       case OpTypeVector:
       case OpTypeMatrix:
       case OpTypeArray:
-      case OpTypeRuntimeArray:
-      case OpTypeStruct:
       case OpTypePointer:
-        need(1);
+        need(typeOperandWords(op));
         types_[w[0]] = Type{op, {w.begin() + 1, w.end()}};
         break;
       case OpConstant:
+      case OpSpecConstant:
+        need(3);  // result type, result id, value
+        constants_[w[1]] = Type{op, {w.begin() + 2, w.end()}};
+        constantTypes_[w[1]] = w[0];
+        break;
       case OpConstantComposite:
       case OpSpecConstantTrue:
       case OpSpecConstantFalse:
-      case OpSpecConstant:
       case OpSpecConstantComposite:
-        need(2);  // result type, result id, values
+        need(2);  // result type, result id, constituents
         constants_[w[1]] = Type{op, {w.begin() + 2, w.end()}};
         constantTypes_[w[1]] = w[0];
         break;
@@ -164,12 +232,12 @@ class Module {
         variables_[w[1]] = Type{op, {w[0], w[2]}};  // pointer type, storage class
         break;
       case OpDecorate:
-        need(2);
+        need(takesLiteral(w.size() >= 2 ? w[1] : 0) ? 3 : 2);
         decorations_[w[0]].byKind[w[1]] = {w.begin() + 2, w.end()};
         if (w[1] == BuiltIn && w.size() >= 3 && w[2] == kBuiltInWorkgroupSize) builtinWorkgroupSize_ = w[0];
         break;
       case OpMemberDecorate:
-        need(3);
+        need(takesLiteral(w.size() >= 3 ? w[2] : 0) ? 4 : 3);
         memberDecorations_[w[0]][w[1]].byKind[w[2]] = {w.begin() + 3, w.end()};
         break;
       default:
@@ -177,12 +245,13 @@ class Module {
     }
   }
 
-  double scalarValue(std::uint32_t constantId) const {
-    const Type& c = constants_.at(constantId);
+  double scalarValue(std::uint32_t constantId, const char* usedAs) const {
+    const Type& c = constant(constantId, usedAs);
     if (c.op == OpSpecConstantTrue) return 1;
     if (c.op == OpSpecConstantFalse) return 0;
-    const Type& t = types_.at(constantTypes_.at(constantId));
-    if (c.operands.empty()) return 0;
+    const Type& t = scalarType(constantId, usedAs);
+    if (c.operands.empty())
+      fail(std::string(usedAs) + " %" + std::to_string(constantId) + " is a composite, not a scalar");
     if (t.op == OpTypeFloat) {
       if (t.operands[0] == 64 && c.operands.size() >= 2) {
         std::uint64_t bits = c.operands[0] | (std::uint64_t(c.operands[1]) << 32);
@@ -198,32 +267,47 @@ class Module {
     return double(c.operands[0]);
   }
 
+  // The type of a scalar constant: bool, int or float.
+  const Type& scalarType(std::uint32_t constantId, const char* usedAs) const {
+    const Type& t = type(constantTypes_.at(constantId), usedAs);
+    if (t.op != OpTypeBool && t.op != OpTypeInt && t.op != OpTypeFloat)
+      fail(std::string(usedAs) + " %" + std::to_string(constantId) + " is not a scalar constant");
+    return t;
+  }
+
   SpecConstant specConstant(std::uint32_t id, const Type& c, std::uint32_t specId) const {
     SpecConstant s;
     s.id = specId;
     auto name = names_.find(id);
     s.name = name != names_.end() ? name->second : "";
-    s.defaultValue = scalarValue(id);
+    s.defaultValue = scalarValue(id, "specialization constant");
     if (c.op == OpSpecConstantTrue || c.op == OpSpecConstantFalse) {
       s.kind = ScalarKind::Bool;
       return s;
     }
-    const Type& t = types_.at(constantTypes_.at(id));
-    s.width = t.operands.empty() ? 32 : t.operands[0];
-    s.kind = t.op == OpTypeFloat ? ScalarKind::Float
-                                 : (t.operands.size() > 1 && t.operands[1] ? ScalarKind::Int : ScalarKind::UInt);
+    const Type& t = scalarType(id, "specialization constant");
+    s.width = t.op == OpTypeBool ? 32 : t.operands[0];
+    s.kind = t.op == OpTypeFloat  ? ScalarKind::Float
+             : t.op == OpTypeBool ? ScalarKind::Bool
+             : t.operands[1]      ? ScalarKind::Int
+                                  : ScalarKind::UInt;
     return s;
   }
 
   void resolveWorkgroupDimension(std::uint32_t constantId, Reflection& r, int dim) const {
-    r.workgroupSize[dim] = std::uint32_t(scalarValue(constantId));
+    r.workgroupSize[dim] = std::uint32_t(scalarValue(constantId, "workgroup size component"));
     auto deco = decorations_.find(constantId);
     if (deco != decorations_.end() && deco->second.has(SpecId))
       r.workgroupSizeSpecIds[dim] = deco->second.literal(SpecId);
   }
 
-  std::uint64_t sizeOf(std::uint32_t typeId, std::uint32_t matrixStride = 0) const {
-    const Type& t = types_.at(typeId);
+  // Real blocks nest a few levels; a type that contains itself (invalid
+  // SPIR-V) would otherwise recurse until the stack overflows.
+  static constexpr int kMaxTypeDepth = 64;
+
+  std::uint64_t sizeOf(std::uint32_t typeId, MatrixLayout matrix = {}, int depth = 0) const {
+    if (depth > kMaxTypeDepth) fail("type %" + std::to_string(typeId) + " nests too deeply (does it contain itself?)");
+    const Type& t = type(typeId, "block member type");
     switch (t.op) {
       case OpTypeBool:
         return 4;
@@ -231,29 +315,42 @@ class Module {
       case OpTypeFloat:
         return t.operands[0] / 8;
       case OpTypeVector:
-        return t.operands[1] * sizeOf(t.operands[0]);
-      case OpTypeMatrix:
-        return t.operands[1] * (matrixStride ? matrixStride : sizeOf(t.operands[0]));
-      case OpTypeArray:
-        return std::uint64_t(scalarValue(t.operands[1])) * decorationOr(typeId, ArrayStride, sizeOf(t.operands[0]));
+        return t.operands[1] * sizeOf(t.operands[0], {}, depth + 1);
+      case OpTypeMatrix: {
+        const std::uint64_t columns = t.operands[1];
+        if (!matrix.stride) return columns * sizeOf(t.operands[0], {}, depth + 1);
+        // Each column (column-major) or each row (row-major) takes one stride;
+        // a column vector has one component per row.
+        const Type& column = type(t.operands[0], "matrix column type");
+        if (column.op != OpTypeVector) fail("matrix type %" + std::to_string(typeId) + " has non-vector columns");
+        const std::uint64_t rows = column.operands[1];
+        return (matrix.rowMajor ? rows : columns) * matrix.stride;
+      }
+      case OpTypeArray: {
+        const double length = scalarValue(t.operands[1], "array length");
+        if (!(length >= 1)) fail("array type %" + std::to_string(typeId) + " has length " + std::to_string(length));
+        return std::uint64_t(length) * decorationOr(typeId, ArrayStride, sizeOf(t.operands[0], matrix, depth + 1));
+      }
       case OpTypeRuntimeArray:
-        return decorationOr(typeId, ArrayStride, sizeOf(t.operands[0]));
+        return decorationOr(typeId, ArrayStride, sizeOf(t.operands[0], matrix, depth + 1));
       case OpTypeStruct: {
         std::uint64_t size = 0;
         auto members = memberDecorations_.find(typeId);
         for (std::uint32_t m = 0; m < t.operands.size(); ++m) {
-          std::uint64_t offset = 0, stride = 0;
+          std::uint64_t offset = 0;
+          MatrixLayout memberMatrix;
           if (members != memberDecorations_.end() && members->second.count(m)) {
             const Decorations& d = members->second.at(m);
             if (d.has(Offset)) offset = d.literal(Offset);
-            if (d.has(MatrixStride)) stride = d.literal(MatrixStride);
+            if (d.has(MatrixStride)) memberMatrix.stride = d.literal(MatrixStride);
+            memberMatrix.rowMajor = d.has(RowMajor);
           }
-          size = std::max(size, offset + sizeOf(t.operands[m], std::uint32_t(stride)));
+          size = std::max(size, offset + sizeOf(t.operands[m], memberMatrix, depth + 1));
         }
         return size;
       }
       default:
-        return 0;
+        fail("type %" + std::to_string(typeId) + " (opcode " + std::to_string(t.op) + ") cannot be in a buffer block");
     }
   }
 
@@ -263,7 +360,7 @@ class Module {
   }
 
   bool allMembersNonWritable(std::uint32_t structId) const {
-    const Type& t = types_.at(structId);
+    const Type& t = type(structId, "block type");
     auto members = memberDecorations_.find(structId);
     if (members == memberDecorations_.end()) return false;
     for (std::uint32_t m = 0; m < t.operands.size(); ++m) {
@@ -276,11 +373,23 @@ class Module {
   void reflectVariable(std::uint32_t id, const Type& var, Reflection& r) const {
     std::uint32_t storageClass = var.operands[1];
     if (storageClass == kStorageClassPushConstant) r.usesPushConstants = true;
-    if (storageClass != kStorageClassUniform && storageClass != kStorageClassStorageBuffer) return;
     auto deco = decorations_.find(id);
     if (deco == decorations_.end() || !deco->second.has(BindingDecoration)) return;
-    const Type& pointer = types_.at(var.operands[0]);
+    auto name = names_.find(id);
+    const std::string binding =
+        "binding (group " + std::to_string(deco->second.has(DescriptorSet) ? deco->second.literal(DescriptorSet) : 0) +
+        ", binding " + std::to_string(deco->second.literal(BindingDecoration)) +
+        (name != names_.end() && !name->second.empty() ? ", '" + name->second + "'" : "") + ")";
+    if (storageClass == kStorageClassUniformConstant)
+      fail(binding + " is an image, sampler or texel buffer: facet::gpu supports only uniform and storage buffers");
+    if (storageClass != kStorageClassUniform && storageClass != kStorageClassStorageBuffer) return;
+    const Type& pointer = type(var.operands[0], "variable type");
+    if (pointer.op != OpTypePointer) fail(binding + " does not have a pointer type");
     std::uint32_t blockType = pointer.operands[1];
+    const Type& block = type(blockType, "block type");
+    if (block.op == OpTypeArray || block.op == OpTypeRuntimeArray)
+      fail(binding + " is an array of blocks: facet::gpu supports one buffer per binding; give each its own binding");
+    if (block.op != OpTypeStruct) fail(binding + " is not a block (struct) type");
     bool bufferBlock = decorations_.count(blockType) && decorations_.at(blockType).has(BufferBlock);
     Binding b;
     b.set = deco->second.has(DescriptorSet) ? deco->second.literal(DescriptorSet) : 0;
@@ -289,7 +398,6 @@ class Module {
     bool readOnly = deco->second.has(NonWritable) || allMembersNonWritable(blockType);
     b.type = !storage ? BindingType::Uniform : readOnly ? BindingType::ReadOnlyStorage : BindingType::Storage;
     b.minSize = sizeOf(blockType);
-    auto name = names_.find(id);
     b.name = name != names_.end() && !name->second.empty() ? name->second
              : names_.count(blockType)                     ? names_.at(blockType)
                                                            : "";
@@ -300,7 +408,6 @@ class Module {
   std::map<std::uint32_t, std::string> names_;
   std::vector<std::string> entryPoints_;
   std::array<std::uint32_t, 3> workgroupSize_{1, 1, 1};
-  std::array<std::optional<std::uint32_t>, 3> workgroupSizeIds_;
   std::optional<std::uint32_t> builtinWorkgroupSize_;
   std::map<std::uint32_t, Type> types_;
   std::map<std::uint32_t, Type> constants_;

@@ -16,6 +16,14 @@
 
 namespace facet::gpu::detail {
 
+// The state behind `handle`, or Error("<what> is moved-from or empty"): every
+// public entry point goes through this before touching a handle's state.
+template <class HandleType>
+auto& require(const HandleType& handle, const std::string& what) {
+  if (!handle) throw Error(what + " is moved-from or empty");
+  return *handle.state();
+}
+
 // Throws Error("<what>: <VkResult name>") when a Vulkan call fails.
 void check(VkResult result, const char* what);
 const char* resultName(VkResult result);
@@ -101,6 +109,9 @@ struct BindGroupLayoutState {
   std::vector<BindGroupLayoutEntry> entries;  // sorted by binding
   VkDescriptorSetLayout layout = VK_NULL_HANDLE;
   const BindGroupLayoutEntry* find(std::uint32_t binding) const;
+  // The same object, or entries that agree binding by binding: a bind group
+  // made for one can be used where the other is expected.
+  bool matches(const BindGroupLayoutState& other) const;
   ~BindGroupLayoutState();
 };
 
@@ -161,11 +172,16 @@ struct CommandRecording {
   std::unordered_set<const BufferState*> writtenSinceBarrier;
   std::unordered_set<const BufferState*> readSinceBarrier;
 
-  // Open compute pass, if any.
+  // Open compute pass, if any. Passes are numbered so that a pass encoder
+  // kept after its end() cannot act on a later pass.
   bool passOpen = false;
+  std::uint64_t passNumber = 0;
   std::string passLabel;
   std::shared_ptr<ComputePipelineState> pipeline;
   std::vector<std::shared_ptr<BindGroupState>> bindGroups;
+  // The pipeline layout each bind group was bound with: after setPipeline
+  // switches layouts, dispatch binds the groups again with the current one.
+  std::vector<VkPipelineLayout> bindGroupPipelineLayouts;
   std::shared_ptr<QuerySetState> passTimestamps;
   std::uint32_t passEndTimestampIndex = 0;
 

@@ -1,4 +1,5 @@
 #include <chrono>
+#include <cmath>
 
 #include "facet_kernels/spirv.h"
 #include "gpu_test.h"
@@ -8,7 +9,8 @@ namespace {
 
 class Timestamps : public GpuTest {
  protected:
-  // GPU time of one busy-loop dispatch, and the host's wall time around it.
+  // GPU time of a busy-loop dispatch, and the host's wall time around it: the
+  // fastest of three runs, since another process can only ever add time.
   std::pair<double, double> timeBusyLoop(int iterations) {
     auto shader = module("fma_chain", spirv::fma_chain);
     auto pipeline =
@@ -29,18 +31,22 @@ class Timestamps : public GpuTest {
       device_.queue().waitIdle();
     };
     run(nullptr);  // lavapipe compiles the shader at its first dispatch
-    auto start = std::chrono::steady_clock::now();
-    run(&queries);
-    double hostNs = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
-    auto ns = queries.readTimestampsNs(0, 2);
-    return {ns[1] - ns[0], hostNs};
+    std::pair<double, double> fastest{INFINITY, INFINITY};
+    for (int repeat = 0; repeat < 3; ++repeat) {
+      auto start = std::chrono::steady_clock::now();
+      run(&queries);
+      double hostNs = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
+      auto ns = queries.readTimestampsNs(0, 2);
+      if (ns[1] - ns[0] < fastest.first) fastest = {ns[1] - ns[0], hostNs};
+    }
+    return fastest;
   }
 };
 
 TEST_F(Timestamps, PassDurationsArePositiveAndPlausible) {
   ASSERT_GT(device_.limits().timestampPeriodNs, 0.0) << "this adapter's queue cannot write timestamps";
-  auto [shortGpu, shortHost] = timeBusyLoop(64);
-  auto [longGpu, longHost] = timeBusyLoop(1024);
+  auto [shortGpu, shortHost] = timeBusyLoop(256);  // ~0.7 ms of arithmetic on lavapipe, 2 cores
+  auto [longGpu, longHost] = timeBusyLoop(4096);
   EXPECT_GT(shortGpu, 0.0);
   // The device cannot take longer than the host waited for it.
   EXPECT_LE(shortGpu, shortHost);
