@@ -161,11 +161,6 @@ layout::FrameParams frameParams(const scene::Scene& scene, const scene::SceneGeo
   return f;
 }
 
-struct Binding {
-  std::uint32_t binding;
-  const gpu::Buffer* buffer;
-};
-
 }  // namespace
 
 GpuRenderer::GpuRenderer(gpu::Device& device) : device_(device) {
@@ -232,11 +227,16 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   gpu::Buffer countersHost = d.createBuffer({"counter readback", 16, BufferUsage::MapRead | BufferUsage::CopyDst});
   gpu::QuerySet timestamps = d.createQuerySet({"stage timestamps", 2 * kStageCount});
 
-  auto bindGroup = [&](gpu::ComputePipeline& p, const char* label, std::initializer_list<Binding> bindings) {
+  auto bindGroup = [&](gpu::ComputePipeline& p, const char* label, std::vector<gpu::BindGroupEntry> entries) {
     gpu::BindGroupLayout groupLayout = p.getBindGroupLayout(0);
-    std::vector<gpu::BindGroupEntry> entries;
-    for (const Binding& b : bindings) entries.push_back({b.binding, b.buffer});
-    return d.createBindGroup({label, &groupLayout, entries});
+    return d.createBindGroup({label, &groupLayout, std::move(entries)});
+  };
+  // Bindings 0-4 (scene_bindings.glsl) followed by a kernel's own.
+  auto withScene = [&](std::initializer_list<gpu::BindGroupEntry> own) {
+    std::vector<gpu::BindGroupEntry> entries{
+        {0, &frameBuffer}, {1, &nodes}, {2, &patches}, {3, &points}, {4, &objects}};
+    entries.insert(entries.end(), own);
+    return entries;
   };
   const std::vector<gpu::ConstantEntry> methodConstant{{"METHOD", method}};
   const std::vector<gpu::ConstantEntry> lightConstant{{"LIGHT_COUNT", double(lightCount)}};
@@ -249,38 +249,27 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
                            {"G_MODEL", sharedModel(scene, &materials::Material::geometry)},
                            {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)}});
   gpu::ComputePipeline& resolve = pipeline("resolve", lightConstant);
-  const Binding sceneBindings[] = {{0, &frameBuffer}, {1, &nodes}, {2, &patches}, {3, &points}, {4, &objects}};
   gpu::BindGroup raygenGroup = bindGroup(raygen, "raygen", {{0, &frameBuffer}, {8, &rays}});
   auto intersectGroup = [&](const char* label, gpu::Buffer& rayBuffer, gpu::Buffer& hitBuffer, gpu::Buffer& count) {
     return bindGroup(intersect, label,
-                     {sceneBindings[0],
-                      sceneBindings[1],
-                      sceneBindings[2],
-                      sceneBindings[3],
-                      sceneBindings[4],
-                      {5, &gridVertices},
-                      {6, &edgeMidpoints},
-                      {7, &rowBounds},
-                      {8, &rayBuffer},
-                      {9, &hitBuffer},
-                      {10, &count}});
+                     withScene({{5, &gridVertices},
+                                {6, &edgeMidpoints},
+                                {7, &rowBounds},
+                                {8, &rayBuffer},
+                                {9, &hitBuffer},
+                                {10, &count}}));
   };
   gpu::BindGroup primaryGroup = intersectGroup("intersect camera rays", rays, hits, primaryCount);
   gpu::BindGroup shadowGroup = intersectGroup("intersect shadow rays", shadowRays, shadowHits, shadowCount);
   gpu::BindGroup surfaceGroup = bindGroup(surface, "surface",
-                                          {sceneBindings[0],
-                                           sceneBindings[1],
-                                           sceneBindings[2],
-                                           sceneBindings[3],
-                                           sceneBindings[4],
-                                           {8, &rays},
-                                           {9, &hits},
-                                           {11, &materialBuffer},
-                                           {12, &lightBuffer},
-                                           {13, &aovs},
-                                           {14, &shadowRays},
-                                           {15, &contributions},
-                                           {16, &counters}});
+                                          withScene({{8, &rays},
+                                                     {9, &hits},
+                                                     {11, &materialBuffer},
+                                                     {12, &lightBuffer},
+                                                     {13, &aovs},
+                                                     {14, &shadowRays},
+                                                     {15, &contributions},
+                                                     {16, &counters}}));
   gpu::BindGroup resolveGroup = bindGroup(
       resolve, "resolve", {{0, &frameBuffer}, {9, &hits}, {15, &contributions}, {17, &shadowHits}, {18, &beauty}});
 
@@ -306,15 +295,8 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   d.queue().writeBuffer(frameBuffer, 0, &frame, sizeof(frame));
   if (tessellated) {
     gpu::ComputePipeline& dice = pipeline("dice", {});
-    gpu::BindGroup diceGroup = bindGroup(dice, "dice",
-                                         {sceneBindings[0],
-                                          sceneBindings[1],
-                                          sceneBindings[2],
-                                          sceneBindings[3],
-                                          sceneBindings[4],
-                                          {5, &gridVertices},
-                                          {6, &edgeMidpoints},
-                                          {7, &rowBounds}});
+    gpu::BindGroup diceGroup =
+        bindGroup(dice, "dice", withScene({{5, &gridVertices}, {6, &edgeMidpoints}, {7, &rowBounds}}));
     gpu::CommandEncoder encoder = d.createCommandEncoder({"dice"});
     pass(encoder, kDice, dice, diceGroup, arrays.patches.size());
     d.queue().submit(encoder.finish());
