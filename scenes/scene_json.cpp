@@ -263,6 +263,7 @@ Scene loadJsonScene(const std::filesystem::path& path) {
     if (!o.has("mesh")) o.fail("an object needs a mesh (an .obj control cage, relative to the scene file)");
     const std::filesystem::path mesh = path.parent_path() / o["mesh"].string();
     if (mesh.extension() != ".obj") o["mesh"].fail("meshes are OpenSubdiv-style .obj cages");
+    if (!std::filesystem::is_regular_file(mesh)) o["mesh"].fail("no such file: " + mesh.string());
     object.cage = loadObjCage(mesh);
     if (o.has("transform")) transformCage(object.cage, readTransform(o["transform"]));
 
