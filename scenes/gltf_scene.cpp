@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <numbers>
 #include <tuple>
 
 #include "scenes/input_error.h"
@@ -140,7 +141,7 @@ Light toLight(const tinygltf::Light& gltf, const glm::dmat4& world, const GltfRe
   glm::dvec3 color(1.0);
   if (gltf.color.size() == 3) color = {gltf.color[0], gltf.color[1], gltf.color[2]};
   if (gltf.intensity < 0) reader.fail(where, "light intensity must not be negative");
-  light.color = color * gltf.intensity / M_PI;
+  light.color = color * gltf.intensity / std::numbers::pi;
   light.position = glm::dvec3(world[3]);
   light.direction = glm::normalize(glm::dvec3(world * glm::dvec4(0, 0, -1, 0)));
   if (gltf.type == "directional") {

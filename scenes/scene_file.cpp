@@ -3,7 +3,9 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <numbers>
 
 #include "scenes/input_error.h"
 #include "scenes/obj_cage.h"
@@ -51,7 +53,7 @@ Camera frameBounds(const Aabb& bounds, double verticalFovDegrees) {
   camera.verticalFovDegrees = verticalFovDegrees;
   camera.target = bounds.centre();
   const double radius = std::max(0.5 * bounds.diagonal(), 1e-6);
-  const double halfFov = 0.5 * verticalFovDegrees * M_PI / 180.0;
+  const double halfFov = 0.5 * verticalFovDegrees * std::numbers::pi / 180.0;
   const double distance = radius / (0.9 * std::sin(halfFov));
   camera.eye = camera.target + distance * glm::normalize(glm::dvec3(1.0, 0.75, 1.5));
   camera.up = {0.0, 1.0, 0.0};

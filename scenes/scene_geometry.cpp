@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
 namespace facet::scene {
@@ -38,7 +39,7 @@ RefinementChoice chooseRefinement(const Object& object, const Camera& camera, co
   // small floor keeps the projection finite.
   const double distance = std::max(distanceToBox(camera.eye, bounds), 1e-3 * std::max(bounds.diagonal(), 1e-12));
   const double pixelsPerUnit =
-      settings.height / (2.0 * std::tan(0.5 * camera.verticalFovDegrees * M_PI / 180.0) * distance);
+      settings.height / (2.0 * std::tan(0.5 * camera.verticalFovDegrees * std::numbers::pi / 180.0) * distance);
   RefinementChoice choice;
   choice.edgePixels = meanEdgeLength(object.cage) * pixelsPerUnit;
   const double ratio = std::max(choice.edgePixels / settings.pixelTolerance, 1.0);

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cmath>
 #include <mutex>
+#include <numbers>
 #include <optional>
 #include <thread>
 
@@ -78,7 +79,7 @@ class ReferenceScene {
       Ray shadow{hit.surface.position + epsilon_ * ng, l, epsilon_, distance};
       ++shadowRays;
       if (intersect(shadow, true)) continue;
-      radiance += M_PI * materials::f64::brdf_evaluate(params, n, l, v) * cLight * nl;
+      radiance += std::numbers::pi * materials::f64::brdf_evaluate(params, n, l, v) * cLight * nl;
     }
     return radiance;
   }

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <iostream>
+#include <numbers>
 
 namespace facet::cpu {
 namespace {
@@ -176,7 +177,7 @@ TEST(ExactIntersection, GlancingRaysOnNearlyFlatPatches) {
   for (const double elevation : {0.3, 1e-2, 1e-3}) {
     for (const testing::AimedRay& aimed : aimRays(geometry, 40, 31)) {
       const scene::LimitPoint target = geometry.surface.evaluatePatch(aimed.patch, aimed.u, aimed.v);
-      const double azimuth = 2.0 * M_PI * unit(random);
+      const double azimuth = 2.0 * std::numbers::pi * unit(random);
       const glm::dvec3 towards(std::cos(azimuth) * std::cos(elevation), std::sin(azimuth) * std::cos(elevation),
                                -std::sin(elevation));
       Ray ray;

@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "facet_materials_spirv/spirv.h"
@@ -29,7 +30,7 @@ class BrdfGpuParity : public gpu::testing::GpuTest, public ::testing::WithParamI
 glm::dvec3 randomDirection(std::mt19937& rng, double minCos) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const double z = minCos + (1.0 - minCos) * u(rng);
-  const double phi = 2.0 * M_PI * u(rng);
+  const double phi = 2.0 * std::numbers::pi * u(rng);
   const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
   return {r * std::cos(phi), r * std::sin(phi), z};
 }

@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 
 #include <fstream>
+#include <numbers>
 #include <random>
 
 #include "scenes/input_error.h"
@@ -107,7 +108,8 @@ TEST_F(SceneFiles, BrokenGltfFilesNameTheFileAndTheProblem) {
     }
     return std::string("(no error)");
   };
-  EXPECT_THAT(errorOfGltf(valid.substr(0, valid.size() / 2)), AllOf(HasSubstr("broken.gltf"), HasSubstr("cannot load glTF")));
+  EXPECT_THAT(errorOfGltf(valid.substr(0, valid.size() / 2)),
+              AllOf(HasSubstr("broken.gltf"), HasSubstr("cannot load glTF")));
   std::string badIndex = valid;
   badIndex.replace(badIndex.find("\"indices\": 1"), 12, "\"indices\": 9");
   EXPECT_THAT(errorOfGltf(badIndex), AllOf(HasSubstr("broken.gltf"), HasSubstr("indices")));
@@ -134,7 +136,7 @@ TEST_F(SceneFiles, GltfMeshesAreWeldedCagesWithTheirMaterialsCamerasAndLights) {
   EXPECT_EQ(gold.diffuse, glm::dvec3(0.0));
   EXPECT_NEAR(gold.alpha, 0.25, 1e-12);  // alpha = roughness^2
   EXPECT_NEAR(scene.camera.eye.z, 6.0, 1e-12);
-  EXPECT_NEAR(scene.camera.verticalFovDegrees, 0.6 * 180 / M_PI, 1e-9);
+  EXPECT_NEAR(scene.camera.verticalFovDegrees, 0.6 * 180 / std::numbers::pi, 1e-9);
   ASSERT_EQ(scene.lights.size(), 1u);
   EXPECT_NEAR(scene.lights[0].color.r, 1.0, 1e-6);  // intensity pi / pi
   EXPECT_NEAR(glm::dot(scene.lights[0].direction, glm::normalize(glm::dvec3(0, -1, -1))), 1.0, 1e-6);
@@ -146,7 +148,7 @@ TEST_F(SceneFiles, ABareCageIsFramedAndLit) {
   ASSERT_EQ(scene.lights.size(), 1u);
   // Every control point lies inside the view frustum.
   const glm::dvec3 forward = glm::normalize(scene.camera.target - scene.camera.eye);
-  const double tanHalf = std::tan(0.5 * scene.camera.verticalFovDegrees * M_PI / 180);
+  const double tanHalf = std::tan(0.5 * scene.camera.verticalFovDegrees * std::numbers::pi / 180);
   for (const glm::dvec3& p : scene.objects[0].cage.positions) {
     const glm::dvec3 d = p - scene.camera.eye;
     const double depth = glm::dot(d, forward);
