@@ -51,6 +51,18 @@ class GpuTest : public ::testing::Test {
     return out;
   }
 
+  // One compute pass with one dispatch, submitted (readBack waits for it).
+  void dispatchOnce(const ComputePipeline& pipeline, const BindGroup& group, std::uint32_t workgroups) {
+    auto encoder = device_.createCommandEncoder();
+    {
+      auto pass = encoder.beginComputePass();
+      pass.setPipeline(pipeline);
+      pass.setBindGroup(0, group);
+      pass.dispatchWorkgroups(workgroups);
+    }
+    device_.queue().submit(encoder.finish());
+  }
+
   ShaderModule module(const char* label, std::span<const std::uint32_t> code) {
     return device_.createShaderModule({label, code});
   }

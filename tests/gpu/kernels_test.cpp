@@ -36,14 +36,7 @@ TEST_F(GpuTest, NonTrivialMathMatchesTheHostElementByElement) {
   auto pipeline = device_.createComputePipeline({"math", nullptr, &shader});
   auto layout = pipeline.getBindGroupLayout(0);
   auto group = device_.createBindGroup({"math", &layout, {{0, &in}, {1, &out}}});
-  auto encoder = device_.createCommandEncoder();
-  {
-    auto pass = encoder.beginComputePass();
-    pass.setPipeline(pipeline);
-    pass.setBindGroup(0, group);
-    pass.dispatchWorkgroups(std::uint32_t((n + 63) / 64));
-  }
-  device_.queue().submit(encoder.finish());
+  dispatchOnce(pipeline, group, std::uint32_t((n + 63) / 64));
   auto result = readBack<float>(out);
 
   // Tolerance: 4 ULP. Every operation here is correctly rounded on lavapipe
@@ -81,14 +74,7 @@ TEST_P(SpecializationConstants, ChangeTheResultAndTheWorkgroupSize) {
   EXPECT_EQ(pipeline.workgroupSize()[0], c.workgroup);
   auto layout = pipeline.getBindGroupLayout(0);
   auto group = device_.createBindGroup({"fill", &layout, {{0, &out}}});
-  auto encoder = device_.createCommandEncoder();
-  {
-    auto pass = encoder.beginComputePass();
-    pass.setPipeline(pipeline);
-    pass.setBindGroup(0, group);
-    pass.dispatchWorkgroups((n + c.workgroup - 1) / c.workgroup);
-  }
-  device_.queue().submit(encoder.finish());
+  dispatchOnce(pipeline, group, (n + c.workgroup - 1) / c.workgroup);
   auto values = readBack<float>(out);
   for (std::uint32_t i = 0; i < n; ++i) {
     float v = c.mode == 0 ? float(i) * c.scale : float(i * i) + c.scale;

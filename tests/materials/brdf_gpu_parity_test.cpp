@@ -79,14 +79,7 @@ TEST_P(BrdfGpuParity, GlslFloatMatchesCppDouble) {
        {{"D_MODEL", double(variant.d)}, {"G_MODEL", double(variant.g)}, {"F_MODEL", double(variant.f)}}});
   auto layout = pipeline.getBindGroupLayout(0);
   auto group = device_.createBindGroup({"brdf", &layout, {{0, &caseBuffer}, {1, &results}, {2, &uniforms}}});
-  auto encoder = device_.createCommandEncoder();
-  {
-    auto pass = encoder.beginComputePass();
-    pass.setPipeline(pipeline);
-    pass.setBindGroup(0, group);
-    pass.dispatchWorkgroups(count / 64);
-  }
-  device_.queue().submit(encoder.finish());
+  dispatchOnce(pipeline, group, count / 64);
   const std::vector<glm::vec4> out = readBack<glm::vec4>(results);
 
   // Tolerance: 1e-4 relative to the largest channel of f, the bound the
