@@ -75,7 +75,9 @@ RenderReport render(const scene::Scene& scene, Backend backend, const std::funct
     case Backend::Cpu: {
       cpu::ReferenceStatistics statistics;
       report.image = cpu::renderReference(scene, geometry, &statistics, progress);
-      report.stages.push_back({"trace + shade", clock.lap()});
+      const double milliseconds = clock.lap();
+      if (scene.environment) report.stages.push_back({"environment", statistics.environmentMilliseconds});
+      report.stages.push_back({"trace + shade", milliseconds - statistics.environmentMilliseconds});
       report.device = "CPU reference, double precision, " +
                       std::to_string(std::max(1u, std::thread::hardware_concurrency())) + " threads";
       report.primaryRays = statistics.primaryRays;

@@ -6,11 +6,13 @@
 #include <glm/vec3.hpp>
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "scenes/control_cage.h"
+#include "scenes/environment_map.h"
 #include "scenes/subdivision_surface.h"
 #include "materials/material.hpp"
 
@@ -61,6 +63,27 @@ struct RenderSettings {
   std::optional<int> tessellationRate;  // overrides the choice from pixelTolerance
 };
 
+// How an environment lights the surface (docs/rendering.md, "Image-based
+// lighting"):
+//   Sampled      a Monte Carlo estimate of the reflectance equation: per
+//                camera sample, `samples` pairs of one environment
+//                (luminance) sample and one BRDF sample, combined by
+//                multiple importance sampling; shadow rays when `occlusion`;
+//   Prefiltered  the split sum: GGX-prefiltered radiance by roughness x a
+//                DFG table, plus spherical-harmonic irradiance; no occlusion.
+enum class IblMethod { Sampled, Prefiltered };
+
+// Radiance arriving from world direction w is intensity x map(R^-1 w), R a
+// rotation by `rotationDegrees` about +y. Camera rays that miss see it too.
+struct Environment {
+  std::shared_ptr<const EnvironmentMap> map;
+  double intensity = 1.0;
+  double rotationDegrees = 0.0;
+  IblMethod method = IblMethod::Prefiltered;
+  int samples = 16;  // sampled: pairs per camera sample
+  bool occlusion = true;
+};
+
 struct Object {
   std::string name;
   ControlCage cage;                   // world space
@@ -75,6 +98,7 @@ struct Scene {
   std::vector<materials::Material> materials;
   std::vector<Object> objects;
   std::vector<Light> lights;
+  std::optional<Environment> environment;
   RenderSettings render;
 };
 

@@ -6,8 +6,10 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <set>
 
+#include "scenes/environment_map.h"
 #include "scenes/input_error.h"
 #include "scenes/obj_cage.h"
 #include "scenes/scene_file.h"
@@ -59,6 +61,11 @@ class Field {
     double x = number(lo, hi);
     if (x != std::floor(x)) fail("expected a whole number");
     return int(x);
+  }
+
+  bool boolean() const {
+    if (!value_.is_boolean()) fail("expected true or false");
+    return value_.get<bool>();
   }
 
   std::string string() const {
@@ -223,6 +230,33 @@ void readRender(const Field& f, RenderSettings& r) {
   if (f.has("pixel_tolerance")) r.pixelTolerance = f["pixel_tolerance"].number(1e-3, 1e3);
 }
 
+Environment readEnvironment(const Field& f, const std::filesystem::path& sceneFile) {
+  f.object({"file", "color", "intensity", "rotation", "method", "samples", "occlusion"});
+  if (f.has("file") == f.has("color")) f.fail("give exactly one of file (an .exr or .hdr map) and color");
+  Environment environment;
+  if (f.has("file")) {
+    const Field file = f["file"];
+    try {
+      environment.map =
+          std::make_shared<const EnvironmentMap>(loadEnvironmentMap(sceneFile.parent_path() / file.string()));
+    } catch (const InputError& e) {
+      file.fail(e.what());
+    }
+  } else {
+    const glm::dvec3 color = f["color"].vec3();
+    if (color.r < 0 || color.g < 0 || color.b < 0) f["color"].fail("must not be negative");
+    environment.map = std::make_shared<const EnvironmentMap>(constantEnvironment(color));
+  }
+  if (f.has("intensity")) environment.intensity = f["intensity"].number(0.0);
+  if (f.has("rotation")) environment.rotationDegrees = f["rotation"].number();
+  if (f.has("method"))
+    environment.method =
+        f["method"].choice<IblMethod>({{"sampled", IblMethod::Sampled}, {"prefiltered", IblMethod::Prefiltered}});
+  if (f.has("samples")) environment.samples = f["samples"].integer(1, 16384);
+  if (f.has("occlusion")) environment.occlusion = f["occlusion"].boolean();
+  return environment;
+}
+
 }  // namespace
 
 Scene loadJsonScene(const std::filesystem::path& path) {
@@ -236,7 +270,7 @@ Scene loadJsonScene(const std::filesystem::path& path) {
     throw InputError(source, 0, "not valid JSON", e.what());
   }
   const Field root(document, "", source);
-  root.object({"camera", "materials", "objects", "lights", "render"});
+  root.object({"camera", "materials", "objects", "lights", "render", "environment"});
 
   Scene scene;
   scene.source = path;
@@ -298,6 +332,7 @@ Scene loadJsonScene(const std::filesystem::path& path) {
   }
 
   if (root.has("render")) readRender(root["render"], scene.render);
+  if (root.has("environment")) scene.environment = readEnvironment(root["environment"], path);
   scene.camera = root.has("camera") ? readCamera(root["camera"]) : frameBounds(cageBounds(scene));
   if (root.has("lights")) {
     const Field lights = root["lights"];

@@ -3,15 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <memory>
 #include <numbers>
 #include <sstream>
@@ -19,16 +11,13 @@
 #include <vector>
 
 #include "commands.h"
+#include "gnuplot.h"
 #include "material_options.h"
 #include "materials/albedo.hpp"
 #include "materials/models.hpp"
 
-extern char** environ;
-
 namespace facet::cli {
 namespace {
-
-namespace fs = std::filesystem;
 
 struct PlotOptions {
   MaterialOptions material;
@@ -43,47 +32,6 @@ std::string describe(const materials::Material& m) {
        << materials::modelName(materials::kGeometryTerms, m.geometry) << " / "
        << materials::modelName(materials::kFresnelTerms, m.fresnel) << ", alpha " << m.alpha;
   return text.str();
-}
-
-// Runs gnuplot on `script` (which reads `data` through the placeholder
-// DATA and writes the placeholder OUTPUT). The image is written next to
-// `out` under a temporary name and renamed, so `out` is never half-written.
-void runGnuplot(std::string script, const std::string& data, const fs::path& out) {
-  std::string terminal;
-  if (out.extension() == ".svg")
-    terminal = "svg size 800,640 dynamic background rgb 'white'";
-  else if (out.extension() == ".png")
-    terminal = "pngcairo size 800,640";
-  else
-    throw std::invalid_argument("--out: must end in .svg or .png, got '" + out.string() + "'");
-
-  fs::path work = fs::temp_directory_path() / ("facet-plot-" + std::to_string(getpid()));
-  fs::create_directories(work);
-  fs::path data_file = work / "data.txt", script_file = work / "plot.gp";
-  fs::path partial = out;
-  partial += ".partial";
-  std::ofstream(data_file) << data;
-  auto quote = [](const fs::path& p) { return "'" + p.string() + "'"; };
-  for (auto [placeholder, value] :
-       {std::pair{std::string("DATA"), quote(data_file)}, std::pair{std::string("OUTPUT"), quote(partial)}})
-    for (size_t at; (at = script.find(placeholder)) != std::string::npos;)
-      script.replace(at, placeholder.size(), value);
-  std::ofstream(script_file) << "set terminal " << terminal << "\n" << script;
-
-  std::string program = "gnuplot", argument = script_file.string();
-  char* argv[] = {program.data(), argument.data(), nullptr};
-  pid_t pid = 0;
-  int spawn_error = posix_spawnp(&pid, "gnuplot", nullptr, nullptr, argv, environ);
-  int status = 0;
-  if (spawn_error == 0) waitpid(pid, &status, 0);
-  fs::remove_all(work);
-  if (spawn_error == ENOENT) throw std::runtime_error("gnuplot not found on PATH; install it (Debian: gnuplot-nox)");
-  if (spawn_error != 0) throw std::runtime_error(std::string("cannot start gnuplot: ") + std::strerror(spawn_error));
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !fs::exists(partial)) {
-    fs::remove(partial);
-    throw std::runtime_error("gnuplot failed (status " + std::to_string(status) + ")");
-  }
-  fs::rename(partial, out);
 }
 
 // Polar lobe in the plane of incidence: r(theta_l) = f(l, v)(n.l), v fixed

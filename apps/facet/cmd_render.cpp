@@ -30,6 +30,12 @@ struct RenderOptions {
   std::string backend = "gpu";
   std::string adapter;
   float exposure = 0;
+  std::string environment;
+  std::optional<double> environmentIntensity;
+  std::optional<double> environmentRotation;
+  std::string ibl;
+  std::optional<int> iblSamples;
+  std::string occlusion;
 };
 
 }  // namespace
@@ -52,6 +58,28 @@ namespace {
 
 glm::dvec3 vector3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
 
+// --env replaces the scene's map and keeps its other settings; the other
+// environment flags need an environment from either.
+void applyEnvironmentOverrides(const RenderOptions& o, scene::Scene& scene) {
+  if (!o.environment.empty()) {
+    if (!scene.environment) scene.environment.emplace();
+    scene.environment->map = std::make_shared<const scene::EnvironmentMap>(scene::loadEnvironmentMap(o.environment));
+  }
+  const bool anyEnvironmentFlag =
+      o.environmentIntensity || o.environmentRotation || !o.ibl.empty() || o.iblSamples || !o.occlusion.empty();
+  if (!anyEnvironmentFlag) return;
+  if (!scene.environment)
+    throw std::invalid_argument(
+        "--env-intensity, --env-rotation, --ibl, --ibl-samples and --occlusion need an environment: give --env FILE "
+        "or an \"environment\" block in the scene");
+  scene::Environment& e = *scene.environment;
+  if (o.environmentIntensity) e.intensity = *o.environmentIntensity;
+  if (o.environmentRotation) e.rotationDegrees = *o.environmentRotation;
+  if (!o.ibl.empty()) e.method = o.ibl == "sampled" ? scene::IblMethod::Sampled : scene::IblMethod::Prefiltered;
+  if (o.iblSamples) e.samples = *o.iblSamples;
+  if (!o.occlusion.empty()) e.occlusion = o.occlusion == "on";
+}
+
 // Command-line settings win over the scene file's.
 void applyOverrides(const RenderOptions& o, scene::Scene& scene) {
   if (!o.size.empty()) applyImageSize(o.size, scene);
@@ -70,11 +98,25 @@ void applyOverrides(const RenderOptions& o, scene::Scene& scene) {
       throw std::invalid_argument("--spp " + std::to_string(*o.spp) + ": " + scene::kSamplesPerPixelRule);
     scene.render.samplesPerPixel = *o.spp;
   }
+  applyEnvironmentOverrides(o, scene);
+}
+
+std::string describeEnvironment(const scene::Environment& e) {
+  const std::string source = e.map->source.empty() ? "constant colour" : e.map->source.string();
+  std::string text =
+      "environment: " + source + " (" + std::to_string(e.map->width) + "x" + std::to_string(e.map->height) + "), " +
+      (e.method == scene::IblMethod::Sampled ? "sampled, " + std::to_string(e.samples) +
+                                                   " pairs per camera sample, occlusion " + (e.occlusion ? "on" : "off")
+                                             : std::string("prefiltered"));
+  return text;
 }
 
 void runRender(const RenderOptions& o) {
   scene::Scene scene = scene::loadScene(o.scene);
   applyOverrides(o, scene);
+  if (scene.environment && scene.environment->map->clampedTexels > 0)
+    std::fprintf(stderr, "warning: %s: %zu texels were negative, NaN or Inf and are set to 0\n",
+                 scene.environment->map->source.c_str(), scene.environment->map->clampedTexels);
   const bool interactive = isatty(STDERR_FILENO);
   auto progress = [&](double done) {
     if (interactive) std::fprintf(stderr, "\rrendering %3d%%", int(done * 100));
@@ -89,6 +131,7 @@ void runRender(const RenderOptions& o) {
   if (!o.png.empty()) writePng(o.png, report.image, o.exposure);
 
   std::printf("%s\n", report.geometrySummary.c_str());
+  if (scene.environment) std::printf("%s\n", describeEnvironment(*scene.environment).c_str());
   std::printf("backend: %s; %dx%d, %d spp, %s intersection\n", report.device.c_str(), scene.render.width,
               scene.render.height, scene.render.samplesPerPixel,
               scene.render.method == scene::IntersectionMethod::Exact ? "exact" : "tessellated");
@@ -125,6 +168,17 @@ void addRenderCommand(CLI::App& app) {
   c->add_option("--tess-level", o->tessLevel, "Dicing rate k (k x k per patch) for --method tess")
       ->check(CLI::Range(1, 256));
   c->add_option("--spp", o->spp, "Samples per pixel (a square number)")->check(CLI::Range(1, 4096));
+  c->add_option("--env", o->environment, "Environment map (.exr or .hdr, equirectangular 2:1) lighting the scene")
+      ->check(CLI::ExistingFile);
+  c->add_option("--env-intensity", o->environmentIntensity, "Environment radiance scale")->check(CLI::Range(0.0, 1e30));
+  c->add_option("--env-rotation", o->environmentRotation, "Environment rotation about +y, in degrees");
+  c->add_option("--ibl", o->ibl, "Image-based lighting: Monte Carlo with MIS, or the prefiltered split sum")
+      ->check(CLI::IsMember({"sampled", "prefiltered"}));
+  c->add_option("--ibl-samples", o->iblSamples,
+                "Sampled IBL: environment + BRDF sample pairs per camera sample (--spp camera samples per pixel)")
+      ->check(CLI::Range(1, 16384));
+  c->add_option("--occlusion", o->occlusion, "Sampled IBL: shadow rays towards the environment")
+      ->check(CLI::IsMember({"on", "off"}));
   c->add_option("--backend", o->backend, "Renderer backend: the GPU kernels or the CPU reference")
       ->check(CLI::IsMember({"gpu", "cpu"}));
   c->add_option("--adapter", o->adapter, "GPU adapter: a substring of its name (default: FACET_ADAPTER or the first)");

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   facet::cli::addPlotCommand(app);
   facet::cli::addBrdfPrecisionCommand(app);
   facet::cli::addParityCommand(app);
+  facet::cli::addIblChartCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

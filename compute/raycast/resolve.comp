@@ -1,14 +1,13 @@
-// The beauty of each pixel: the mean over its shaded samples of the light
-// contributions whose shadow rays reached the light (misses count as
-// black); alpha is the fraction of samples that hit.
+// The beauty of each pixel: the mean over its shaded samples of the slot
+// contributions (lights, environment, or what a miss sees) whose shadow rays
+// reached their source or were never traced; alpha is the fraction of
+// samples that hit.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
 #include "compute/shared/raycast_layout.h"
 
 layout(local_size_x = 64) in;
-
-layout(constant_id = 1) const int LIGHT_COUNT = 1;
 
 layout(set = 0, binding = 0, std140) uniform FrameBlock { FrameParams frame; };
 layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
@@ -24,12 +23,9 @@ void main() {
   float covered = 0.0;
   for (uint sample_index = first; sample_index < frame.raysPerPixel; ++sample_index) {
     uint ray = pixel * frame.raysPerPixel + sample_index;
-    if (hits[ray].patchIndex == FACET_NO_HIT) continue;
-    covered += 1.0;
-    for (int l = 0; l < LIGHT_COUNT; ++l) {
-      uint shadow = ray * uint(LIGHT_COUNT) + uint(l);
-      if (shadowHits[shadow].patchIndex == FACET_NO_HIT) radiance += contributions[shadow].xyz;
-    }
+    if (hits[ray].patchIndex != FACET_NO_HIT) covered += 1.0;
+    for (uint slot = ray * frame.slotsPerRay; slot < (ray + 1u) * frame.slotsPerRay; ++slot)
+      if (shadowHits[slot].patchIndex == FACET_NO_HIT) radiance += contributions[slot].xyz;
   }
   float samples = float(frame.strata * frame.strata);
   beauty[pixel] = vec4(radiance / samples, covered / samples);

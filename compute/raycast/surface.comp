@@ -1,23 +1,33 @@
 // Per camera ray that hit: the surface point, its limit normal and, from the
 // centre ray, the pixel's AOVs; per light of a shaded sample, the unshadowed
-// radiance pi f(l, v) c_light (n.l) and the shadow ray that decides it
-// (docs/rendering.md). Rays that miss only write the miss AOVs; a shadow ray
-// the light model skips gets tMax = -1 and is not traced.
+// radiance pi f(l, v) c_light (n.l) and the shadow ray that decides it; then
+// the environment's share (docs/rendering.md): prefiltered, or sampled
+// without occlusion, in one slot that no ray tests; sampled with occlusion,
+// one slot and shadow ray per environment and per BRDF sample. A ray that
+// misses writes the miss AOVs and, with an environment, the radiance it
+// sees in the environment's first slot. A slot the shading skips gets
+// tMax = -1 and is not traced.
 //
-// Specialization: METHOD (0 exact, 1 tessellated), LIGHT_COUNT, and the
-// BRDF models D_MODEL, G_MODEL, F_MODEL, each -1 when the scene's materials
-// use several (the model is then read per material).
+// Specialization: METHOD (0 exact, 1 tessellated), LIGHT_COUNT, ENVIRONMENT
+// (0 none, 1 sampled, 2 prefiltered), OCCLUSION (sampled: 1 traces the
+// environment's shadow rays), and the BRDF models D_MODEL, G_MODEL,
+// F_MODEL, each -1 when the scene's materials use several (the model is then
+// read per material).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
 #include "compute/raycast/scene_bindings.glsl"
 #include "materials/shading.glsl"
+#include "compute/shared/environment.h"
+#include "compute/shared/random.h"
 
 layout(constant_id = 0) const int METHOD = 0;
 layout(constant_id = 1) const int LIGHT_COUNT = 1;
 layout(constant_id = 2) const int D_MODEL = -1;
 layout(constant_id = 3) const int G_MODEL = -1;
 layout(constant_id = 4) const int F_MODEL = -1;
+layout(constant_id = 5) const int ENVIRONMENT = 0;
+layout(constant_id = 6) const int OCCLUSION = 1;
 
 layout(set = 0, binding = 8, std430) readonly buffer Rays { RayRecord rays[]; };
 layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
@@ -30,6 +40,7 @@ layout(set = 0, binding = 16, std430) buffer Counters { uint shadowRayCount; };
 
 #include "compute/raycast/patch_eval.glsl"
 #include "compute/raycast/limit_normal.glsl"
+#include "compute/raycast/environment.glsl"
 
 float infinity() { return uintBitsToFloat(0x7f800000u); }
 
@@ -45,6 +56,67 @@ BrdfParams brdf_params(uint index) {
   p.k = vec3(m.kR, m.kG, m.kB);
   p.diffuse = vec3(m.diffuseR, m.diffuseG, m.diffuseB);
   return p;
+}
+
+const RayRecord NO_RAY = RayRecord(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0);
+
+// A slot whose radiance arrives without a test.
+void write_unshadowed(uint slot, vec3 radiance) {
+  shadowRays[slot] = NO_RAY;
+  contributions[slot] = vec4(radiance, 0.0);
+}
+
+// Sampled method, one sample l of either technique (density `pdf`, the other
+// technique's `other_pdf`): its MIS-weighted share, and with OCCLUSION its
+// shadow ray in `slot`. Returns 1 if that ray is traced.
+uint environment_sample(uint slot, BrdfParams params, vec3 position, vec3 n, vec3 ng, vec3 v, vec3 l, float pdf,
+                        float other_pdf, inout vec3 unshadowed) {
+  float nl = dot(n, l);
+  bool lit = pdf > 0.0 && nl > 0.0 && dot(ng, l) > 0.0;
+  vec3 radiance = lit ? brdf_evaluate(params, n, l, v) * environment_radiance(l) * nl *
+                            (power_heuristic(pdf, other_pdf) / pdf) / float(frame.environmentSamples)
+                      : vec3(0.0);
+  if (OCCLUSION == 0) {
+    unshadowed += radiance;
+    return 0u;
+  }
+  vec3 origin = position + frame.shadowOffset * ng;
+  shadowRays[slot] = RayRecord(origin.x, origin.y, origin.z, frame.shadowOffset, l.x, l.y, l.z,
+                               lit ? infinity() : -1.0);
+  contributions[slot] = vec4(radiance, 0.0);
+  return lit ? 1u : 0u;
+}
+
+// The environment's slots from `first` on; returns the shadow rays traced.
+uint shade_environment(uint first, uint pixel, uint sample_index, uint material, BrdfParams params, vec3 position,
+                       vec3 n, vec3 ng, vec3 v) {
+  if (ENVIRONMENT == 2) {
+    float nv = dot(n, v);
+    vec3 lobe = split_sum_direction(n, v, params.alpha);
+    vec3 radiance = split_sum(params, nv, prefiltered_radiance(to_map(lobe), params.alpha),
+                              dfg_lookup(materials[material].dfgTable, nv, params.alpha),
+                              irradiance_over_pi(to_map(n)));
+    write_unshadowed(first, frame.environmentIntensity * radiance);
+    return 0u;
+  }
+  uint traced = 0u;
+  vec3 unshadowed = vec3(0.0);
+  for (uint k = 0u; k < frame.environmentSamples; ++k) {
+    uint d = k * IBL_DIMENSIONS;
+    vec4 u = vec4(sample_uniform(pixel, sample_index, d), sample_uniform(pixel, sample_index, d + 1u),
+                  sample_uniform(pixel, sample_index, d + 2u), sample_uniform(pixel, sample_index, d + 3u));
+    vec4 e = sample_environment(u);
+    vec3 le = from_map(e.xyz);
+    traced += environment_sample(first + 2u * k, params, position, n, ng, v, le, e.w,
+                                 brdf_lobes_pdf(params, n, le, v), unshadowed);
+    vec3 ub = vec3(sample_uniform(pixel, sample_index, d + 4u), sample_uniform(pixel, sample_index, d + 5u),
+                   sample_uniform(pixel, sample_index, d + 6u));
+    vec3 lb = sample_brdf_lobes(params, n, v, ub);
+    traced += environment_sample(first + 2u * k + 1u, params, position, n, ng, v, lb,
+                                 brdf_lobes_pdf(params, n, lb, v), environment_pdf(to_map(lb)), unshadowed);
+  }
+  if (OCCLUSION == 0) write_unshadowed(first, unshadowed);
+  return traced;
 }
 
 // glTF's spot profile: a squared linear ramp in cos(theta) between the cones.
@@ -63,21 +135,19 @@ void main() {
   bool shaded = frame.raysPerPixel == 1u || sample_index > 0u;
   uint pixel = index / frame.raysPerPixel;
   HitRecord hit = hits[index];
-  uint firstShadow = index * uint(LIGHT_COUNT);
+  uint firstSlot = index * frame.slotsPerRay;
+  RayRecord ray = rays[index];
+  vec3 direction = vec3(ray.directionX, ray.directionY, ray.directionZ);
 
   if (hit.patchIndex == FACET_NO_HIT) {
     if (centre) aovs[pixel] = PixelAovs(infinity(), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, FACET_NO_HIT,
                                         FACET_NO_HIT, 0.0, 0.0);
-    for (int l = 0; l < LIGHT_COUNT; ++l) {
-      shadowRays[firstShadow + l] = RayRecord(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0);
-      contributions[firstShadow + l] = vec4(0.0);
-    }
+    for (uint slot = 0u; slot < frame.slotsPerRay; ++slot) write_unshadowed(firstSlot + slot, vec3(0.0));
+    if (ENVIRONMENT != 0 && shaded) write_unshadowed(firstSlot + uint(LIGHT_COUNT), environment_radiance(direction));
     return;
   }
 
-  RayRecord ray = rays[index];
   vec3 origin = vec3(ray.originX, ray.originY, ray.originZ);
-  vec3 direction = vec3(ray.directionX, ray.directionY, ray.directionZ);
   ObjectRange range = objects[hit.object];
   PatchRecord record = patches[hit.patchIndex];
   ControlPoints c = load_control_points(range.firstPoint, record);
@@ -116,11 +186,18 @@ void main() {
     float nl = dot(n, toLight);
     bool lit = shaded && nl > 0.0 && dot(ng, toLight) > 0.0 && cLight != vec3(0.0);
     vec3 shadowOrigin = position + frame.shadowOffset * ng;
-    shadowRays[firstShadow + l] = RayRecord(shadowOrigin.x, shadowOrigin.y, shadowOrigin.z, frame.shadowOffset,
-                                            toLight.x, toLight.y, toLight.z, lit ? distance : -1.0);
-    contributions[firstShadow + l] =
+    shadowRays[firstSlot + l] = RayRecord(shadowOrigin.x, shadowOrigin.y, shadowOrigin.z, frame.shadowOffset,
+                                          toLight.x, toLight.y, toLight.z, lit ? distance : -1.0);
+    contributions[firstSlot + l] =
         lit ? vec4(PI * brdf_evaluate(params, n, toLight, v) * cLight * nl, 0.0) : vec4(0.0);
     if (lit) ++traced;
+  }
+  if (ENVIRONMENT != 0) {
+    uint first = firstSlot + uint(LIGHT_COUNT);
+    for (uint slot = first; slot < firstSlot + frame.slotsPerRay; ++slot) write_unshadowed(slot, vec3(0.0));
+    if (shaded)
+      traced += shade_environment(first, frame.firstPixel + pixel, sample_index, range.material, params, position,
+                                  n, ng, v);
   }
   if (traced > 0u) atomicAdd(shadowRayCount, traced);
 }

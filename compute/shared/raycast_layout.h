@@ -15,8 +15,8 @@ struct ObjectRange {
   uint patchIdOffset;  // patch and cage-face ids count on across objects
   uint faceIdOffset;
   uint material;
-  uint rate;             // tessellated: k
-  uint firstGridVertex;  // tessellated: (k + 1)^2 limit points per patch
+  uint rate;               // tessellated: k
+  uint firstGridVertex;    // tessellated: (k + 1)^2 limit points per patch
   uint firstEdgeMidpoint;  // tessellated: 4 k per patch (those of unsplit edges unused)
   uint firstRow;           // tessellated: k row boxes per patch
 };
@@ -87,6 +87,7 @@ struct MaterialRecord {
   float diffuseR;
   float diffuseG;
   float diffuseB;
+  uint dfgTable;  // prefiltered environment: which DFG table (by the material's D and G)
 };
 
 // What the camera-side kernels need, one uniform block (std140 agrees: all
@@ -110,12 +111,35 @@ struct FrameParams {
   float height;
   uint firstPixel;  // the band of pixels this pass renders
   uint pixelCount;
-  uint strata;         // samples per pixel = strata^2
-  uint raysPerPixel;   // 1 when strata == 1, else the centre ray plus strata^2
+  uint strata;        // samples per pixel = strata^2
+  uint raysPerPixel;  // 1 when strata == 1, else the centre ray plus strata^2
   uint objectCount;
-  float tolerance;      // exact method: largest ray-to-surface distance of a root
-  float minimumPiece;   // exact method: pieces are not split below this size
-  float shadowOffset;   // 1e-6 x the scene diagonal (docs/rendering.md)
+  float tolerance;     // exact method: largest ray-to-surface distance of a root
+  float minimumPiece;  // exact method: pieces are not split below this size
+  float shadowOffset;  // 1e-6 x the scene diagonal (docs/rendering.md)
+  uint slotsPerRay;    // shadow-ray slots per camera ray: one per light, then the environment's
+  // The environment (compute/raycast/environment.glsl); offsets count floats
+  // in the environment data buffer, whose texels start at 0.
+  float environmentIntensity;
+  float environmentCosRotation;
+  float environmentSinRotation;
+  uint environmentSamples;  // sampled: pairs per camera sample
+  uint environmentWidth;
+  uint environmentHeight;
+  uint keepOffset;      // sampled: the alias table's keep probabilities, width x height floats
+  uint texelPdfOffset;  // sampled: width x height floats
+  uint levelCount;      // prefiltered: radiance levels (EnvironmentLevel records)
+  uint shOffset;        // prefiltered: 9 x RGB SH coefficients
+  uint dfgOffset;       // prefiltered: the DFG tables, each dfgSize^2 (scale, bias) pairs
+  uint dfgSize;
+};
+
+// One prefiltered radiance level in the environment data buffer.
+struct EnvironmentLevel {
+  uint offset;
+  uint width;
+  uint height;
+  float alpha;
 };
 
 // The AOVs of one pixel (beauty is written separately, as a vec4).

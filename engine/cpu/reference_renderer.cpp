@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <mutex>
 #include <numbers>
@@ -11,10 +12,15 @@
 
 #include "engine/camera.hpp"
 #include "engine/cpu/intersect.h"
+#include "engine/ibl/environment_lighting.h"
+#include "engine/ibl/environment_lookup.h"
+#include "engine/ibl/environment_math.hpp"
 #include "materials/material.hpp"
 
 namespace facet::cpu {
 namespace {
+
+namespace m = materials::f64;
 
 struct SceneHit {
   SurfaceHit surface;
@@ -23,8 +29,9 @@ struct SceneHit {
 
 class ReferenceScene {
  public:
-  ReferenceScene(const scene::Scene& scene, const scene::SceneGeometry& geometry)
-      : scene_(scene), geometry_(geometry), epsilon_(1e-6 * geometry.bounds.diagonal()) {
+  ReferenceScene(const scene::Scene& scene, const scene::SceneGeometry& geometry,
+                 const ibl::EnvironmentLighting* environment)
+      : scene_(scene), geometry_(geometry), environment_(environment), epsilon_(1e-6 * geometry.bounds.diagonal()) {
     int patches = 0, faces = 0;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
       patchOffset_.push_back(patches);
@@ -54,13 +61,21 @@ class ReferenceScene {
     return nearest;
   }
 
-  // Radiance leaving the hit towards -direction, from every punctual light.
-  glm::dvec3 shade(const SceneHit& hit, const glm::dvec3& direction, std::uint64_t& shadowRays) const {
+  // Radiance leaving the hit towards -direction, from every punctual light
+  // and the environment; (pixel, sample) name the sample's random numbers.
+  glm::dvec3 shade(const SceneHit& hit, const glm::dvec3& direction, std::uint32_t pixel, std::uint32_t sample,
+                   std::uint64_t& shadowRays) const {
     const glm::dvec3 v = -direction;
     glm::dvec3 n = hit.surface.shadingNormal, ng = hit.surface.geometricNormal;
     if (glm::dot(ng, v) < 0) n = -n, ng = -ng;
     const auto& params = params_[std::size_t(hit.object)];
     glm::dvec3 radiance(0.0);
+    if (environment_) {
+      const int material = scene_.objects[std::size_t(hit.object)].material;
+      radiance += environment_->environment->method == scene::IblMethod::Sampled
+                      ? sampledEnvironment(params, hit.surface.position, n, ng, v, pixel, sample, shadowRays)
+                      : prefilteredEnvironment(params, material, n, v);
+    }
     for (const scene::Light& light : scene_.lights) {
       glm::dvec3 l;
       glm::dvec3 cLight = light.color;
@@ -76,9 +91,7 @@ class ReferenceScene {
       }
       const double nl = glm::dot(n, l);
       if (nl <= 0 || glm::dot(ng, l) <= 0 || cLight == glm::dvec3(0.0)) continue;
-      Ray shadow{hit.surface.position + epsilon_ * ng, l, epsilon_, distance};
-      ++shadowRays;
-      if (intersect(shadow, true)) continue;
+      if (occluded(hit.surface.position, ng, l, distance, shadowRays)) continue;
       radiance += std::numbers::pi * materials::f64::brdf_evaluate(params, n, l, v) * cLight * nl;
     }
     return radiance;
@@ -96,7 +109,69 @@ class ReferenceScene {
     image.uv[pixel] = glm::vec2(float(hit.surface.u), float(hit.surface.v));
   }
 
+  // What a camera ray that hits nothing sees.
+  glm::dvec3 background(const glm::dvec3& direction) const {
+    return environment_ ? environmentRadiance(direction) : glm::dvec3(0.0);
+  }
+
  private:
+  bool occluded(const glm::dvec3& position, const glm::dvec3& ng, const glm::dvec3& l, double distance,
+                std::uint64_t& shadowRays) const {
+    ++shadowRays;
+    return intersect(Ray{position + epsilon_ * ng, l, epsilon_, distance}, true).has_value();
+  }
+
+  glm::dvec3 toMap(const glm::dvec3& world) const {
+    return m::environment_to_map(world, environment_->cosRotation, environment_->sinRotation);
+  }
+
+  glm::dvec3 environmentRadiance(const glm::dvec3& world) const {
+    const scene::EnvironmentMap& map = *environment_->environment->map;
+    return environment_->environment->intensity *
+           ibl::bilinearLookup(map.rgb.data(), map.width, map.height, m::environment_uv(toMap(world)));
+  }
+
+  // The sampled method (docs/rendering.md): per pair, one environment and
+  // one BRDF sample, each weighted by the power heuristic against the other
+  // technique's density.
+  glm::dvec3 sampledEnvironment(const m::BrdfParams& params, const glm::dvec3& position, const glm::dvec3& n,
+                                const glm::dvec3& ng, const glm::dvec3& v, std::uint32_t pixel, std::uint32_t sample,
+                                std::uint64_t& shadowRays) const {
+    const scene::Environment& environment = *environment_->environment;
+    const ibl::EnvironmentDistribution& distribution = environment_->distribution;
+    auto contribution = [&](const glm::dvec3& l, double pdf, double otherPdf) {
+      const double nl = glm::dot(n, l);
+      if (pdf <= 0 || nl <= 0 || glm::dot(ng, l) <= 0) return glm::dvec3(0.0);
+      if (environment.occlusion && occluded(position, ng, l, INFINITY, shadowRays)) return glm::dvec3(0.0);
+      return m::brdf_evaluate(params, n, l, v) * environmentRadiance(l) * nl *
+             (m::power_heuristic(pdf, otherPdf) / pdf);
+    };
+    glm::dvec3 sum(0.0);
+    for (int k = 0; k < environment.samples; ++k) {
+      auto u = [&](std::uint32_t dimension) {
+        return m::sample_uniform(pixel, sample, std::uint32_t(k) * m::IBL_DIMENSIONS + dimension);
+      };
+      const ibl::EnvironmentSample e = ibl::sampleEnvironment(distribution, glm::dvec4(u(0), u(1), u(2), u(3)));
+      const glm::dvec3 le = m::environment_from_map(e.direction, environment_->cosRotation, environment_->sinRotation);
+      sum += contribution(le, e.pdf, m::brdf_lobes_pdf(params, n, le, v));
+      const glm::dvec3 lb = m::sample_brdf_lobes(params, n, v, glm::dvec3(u(4), u(5), u(6)));
+      sum += contribution(lb, m::brdf_lobes_pdf(params, n, lb, v), ibl::environmentPdf(distribution, toMap(lb)));
+    }
+    return sum / double(environment.samples);
+  }
+
+  glm::dvec3 prefilteredEnvironment(const m::BrdfParams& params, int material, const glm::dvec3& n,
+                                    const glm::dvec3& v) const {
+    const ibl::PrefilteredEnvironment& prefiltered = environment_->prefiltered;
+    const double nv = glm::dot(n, v);
+    const glm::dvec3 lobe = m::split_sum_direction(n, v, params.alpha);
+    return environment_->environment->intensity *
+           m::split_sum(params, nv, ibl::prefilteredRadiance(prefiltered, toMap(lobe), params.alpha),
+                        ibl::dfgLookup(prefiltered.dfg[std::size_t(environment_->dfgTable[std::size_t(material)])], nv,
+                                       params.alpha),
+                        ibl::irradianceOverPi(prefiltered, toMap(n)));
+  }
+
   // glTF's spot profile: a squared linear ramp in cos θ between the cones.
   static double spotFalloff(const scene::Light& light, const glm::dvec3& fromLight) {
     const double cosOuter = std::cos(glm::radians(light.outerConeDegrees));
@@ -108,6 +183,7 @@ class ReferenceScene {
 
   const scene::Scene& scene_;
   const scene::SceneGeometry& geometry_;
+  const ibl::EnvironmentLighting* environment_;
   double epsilon_;
   std::vector<int> patchOffset_, faceOffset_;
   std::vector<TessellatedSurface> tessellations_;
@@ -120,7 +196,18 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
                       const std::function<void(double)>& progress) {
   const int width = scene.render.width, height = scene.render.height;
   Image image(width, height);
-  const ReferenceScene reference(scene, geometry);
+  const auto environmentStart = std::chrono::steady_clock::now();
+  std::optional<ibl::EnvironmentLighting> environment;
+  if (scene.environment)
+    environment =
+        ibl::prepareEnvironmentLighting(scene, [](const scene::EnvironmentMap& map, const ibl::ModelPairs& models) {
+          const ibl::PrefilterSettings settings;
+          return ibl::cachedPrefilter(map, models, settings, "cpu",
+                                      [&] { return ibl::prefilterOnCpu(map, models, settings); });
+        });
+  const double environmentMilliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - environmentStart).count();
+  const ReferenceScene reference(scene, geometry, environment ? &*environment : nullptr);
   const camera::CameraFrame frame = camera::cameraFrame(scene.camera, width, height);
   const int strata = int(std::lround(std::sqrt(scene.render.samplesPerPixel)));
 
@@ -132,6 +219,7 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
     for (int y = nextRow++; y < height; y = nextRow++) {
       for (int x = 0; x < width; ++x) {
         const std::size_t pixel = image.index(x, y);
+        const auto pixelId = std::uint32_t(pixel);
         // The ray through the pixel centre gives the AOVs, and the beauty when strata == 1.
         const glm::dvec3 centre = camera::camera_ray_direction(frame, x + 0.5, y + 0.5, width, height);
         ++primary;
@@ -139,9 +227,9 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
         if (centreHit) reference.writeAovs(image, pixel, *centreHit, centre);
         glm::dvec3 radiance(0.0);
         double coverage = 0;
-        if (strata == 1 && centreHit) {
-          radiance = reference.shade(*centreHit, centre, shadow);
-          coverage = 1;
+        if (strata == 1) {
+          radiance = centreHit ? reference.shade(*centreHit, centre, pixelId, 0, shadow) : reference.background(centre);
+          coverage = centreHit ? 1 : 0;
         }
         for (int sy = 0; strata > 1 && sy < strata; ++sy) {
           for (int sx = 0; sx < strata; ++sx) {
@@ -149,9 +237,13 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
             const glm::dvec3 direction = camera::camera_ray_direction(frame, px, py, width, height);
             ++primary;
             const auto hit = reference.intersect(Ray{frame.eye, direction}, false);
-            if (!hit) continue;
+            if (!hit) {
+              radiance += reference.background(direction);
+              continue;
+            }
             coverage += 1;
-            radiance += reference.shade(*hit, direction, shadow);
+            // Sample 0 is the centre ray's; the strata count on from 1.
+            radiance += reference.shade(*hit, direction, pixelId, std::uint32_t(sy * strata + sx + 1), shadow);
           }
         }
         const double samples = double(strata * strata);
@@ -169,7 +261,7 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
   std::vector<std::thread> threads;
   for (unsigned i = 0; i < std::max(1u, std::thread::hardware_concurrency()); ++i) threads.emplace_back(worker);
   for (auto& t : threads) t.join();
-  if (statistics) *statistics = {primaryRays, shadowRays};
+  if (statistics) *statistics = {primaryRays, shadowRays, environmentMilliseconds};
   return image;
 }
 

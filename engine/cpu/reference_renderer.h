@@ -9,6 +9,10 @@
 //   - surfaces are two-sided: normals are flipped to face the eye;
 //   - L_o = Σ π f(l, v) c_light (n·l)+ V(l), V from a shadow ray that leaves
 //     the surface 1e-6 × scene diagonal along the geometric normal;
+//   - plus the environment's reflected radiance by the scene's IBL method
+//     (the random numbers of sample s of pixel p come from
+//     sample_uniform(p, s, ...), s = 0 the centre ray, 1 + stratum the
+//     others); camera rays that miss see the environment;
 //   - ids are global: patchId and faceId count on from the previous objects.
 #pragma once
 
@@ -24,6 +28,7 @@ namespace facet::cpu {
 struct ReferenceStatistics {
   std::uint64_t primaryRays = 0;
   std::uint64_t shadowRays = 0;
+  double environmentMilliseconds = 0;  // preparing the environment (sampling tables or prefiltering)
 };
 
 // `progress` receives the finished fraction, from any thread, at most once per row.

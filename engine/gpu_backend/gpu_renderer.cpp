@@ -3,10 +3,14 @@
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "engine/camera.hpp"
+#include "engine/gpu_backend/prefilter_gpu.h"
 #include "engine/gpu_backend/raycast_layout.hpp"
+#include "engine/ibl/environment_lighting.h"
 #include "facet_raycast_kernels/spirv.h"
 #include "materials/material.hpp"
 
@@ -38,8 +42,9 @@ std::pair<std::uint32_t, std::uint32_t> workgroups(std::uint64_t invocations) {
 
 template <class T>
 gpu::Buffer upload(gpu::Device& device, const char* label, const std::vector<T>& data, BufferUsage usage) {
-  // Vulkan has no empty buffers; an unused array gets one element's worth.
-  const std::uint64_t bytes = std::max<std::uint64_t>(16, data.size() * sizeof(T));
+  // Vulkan has no empty buffers, and a binding holds at least one element:
+  // an unused array gets one element's worth.
+  const std::uint64_t bytes = std::max<std::uint64_t>({16, sizeof(T), data.size() * sizeof(T)});
   gpu::Buffer buffer = device.createBuffer({label, bytes, usage | BufferUsage::CopyDst});
   if (!data.empty()) device.queue().writeBuffer(buffer, 0, data.data(), data.size() * sizeof(T));
   return buffer;
@@ -95,14 +100,70 @@ SceneArrays sceneArrays(const scene::Scene& scene, const scene::SceneGeometry& g
   return arrays;
 }
 
-std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene) {
+std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
+                                                    const ibl::EnvironmentLighting* environment) {
   std::vector<layout::MaterialRecord> records;
-  for (const materials::Material& material : scene.materials) {
-    const materials::f32::BrdfParams p = materials::toParams32(material);
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    const materials::f32::BrdfParams p = materials::toParams32(scene.materials[i]);
+    const bool prefiltered = environment && !environment->dfgTable.empty();
     records.push_back({p.d_model, p.g_model, p.f_model, p.alpha, p.f0.x, p.f0.y, p.f0.z, p.eta.x, p.eta.y, p.eta.z,
-                       p.k.x, p.k.y, p.k.z, p.diffuse.x, p.diffuse.y, p.diffuse.z});
+                       p.k.x, p.k.y, p.k.z, p.diffuse.x, p.diffuse.y, p.diffuse.z,
+                       prefiltered ? std::uint32_t(environment->dfgTable[i]) : 0u});
   }
   return records;
+}
+
+// Everything the environment's kernels read, in one float array, with its
+// offsets and sizes set in `frame` (compute/raycast/environment.glsl).
+struct EnvironmentData {
+  std::vector<float> values;
+  std::vector<std::uint32_t> alias;  // sampled: the alias table's other texel
+  std::vector<layout::EnvironmentLevel> levels;
+};
+
+EnvironmentData environmentData(const ibl::EnvironmentLighting& lighting, layout::FrameParams& frame) {
+  const scene::Environment& environment = *lighting.environment;
+  const scene::EnvironmentMap& map = *environment.map;
+  EnvironmentData data;
+  std::vector<float>& v = data.values;
+  auto offset = [&] { return std::uint32_t(v.size()); };
+  auto append = [&](const auto& values) { v.insert(v.end(), values.begin(), values.end()); };
+  v = map.rgb;
+  frame.environmentIntensity = float(environment.intensity);
+  frame.environmentCosRotation = float(lighting.cosRotation);
+  frame.environmentSinRotation = float(lighting.sinRotation);
+  frame.environmentSamples = std::uint32_t(environment.samples);
+  frame.environmentWidth = std::uint32_t(map.width);
+  frame.environmentHeight = std::uint32_t(map.height);
+  if (environment.method == scene::IblMethod::Sampled) {
+    const ibl::EnvironmentDistribution& d = lighting.distribution;
+    frame.keepOffset = offset();
+    append(d.keep);
+    frame.texelPdfOffset = offset();
+    append(d.texelPdf);
+    data.alias = d.alias;
+    return data;
+  }
+  const ibl::PrefilteredEnvironment& p = lighting.prefiltered;
+  for (const ibl::RadianceLevel& level : p.levels) {
+    data.levels.push_back({offset(), std::uint32_t(level.width), std::uint32_t(level.height), float(level.alpha)});
+    append(level.rgb);
+  }
+  frame.levelCount = std::uint32_t(p.levels.size());
+  frame.shOffset = offset();
+  for (const glm::dvec3& c : p.irradianceSh) v.insert(v.end(), {float(c.r), float(c.g), float(c.b)});
+  frame.dfgOffset = offset();
+  frame.dfgSize = std::uint32_t(p.dfg.front().size);
+  for (const ibl::DfgTable& table : p.dfg) append(table.scaleBias);
+  return data;
+}
+
+// Slots per camera ray after the lights': none without an environment; one
+// for what it adds without shadow rays; two per pair when they are traced.
+std::uint32_t environmentSlots(const scene::Scene& scene) {
+  if (!scene.environment) return 0;
+  const scene::Environment& e = *scene.environment;
+  return e.method == scene::IblMethod::Sampled && e.occlusion ? 2 * std::uint32_t(e.samples) : 1;
 }
 
 std::vector<layout::LightRecord> lightRecords(const scene::Scene& scene) {
@@ -188,23 +249,42 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   const bool tessellated = scene.render.method == scene::IntersectionMethod::Tessellated;
   const double method = tessellated ? 1 : 0;
   const std::uint32_t lightCount = std::uint32_t(scene.lights.size());
-  const std::uint32_t shadowsPerRay = std::max(1u, lightCount);
+  gpu::Device& d = device_;
+
+  GpuRenderResult result;
+  const auto environmentStart = std::chrono::steady_clock::now();
+  std::optional<ibl::EnvironmentLighting> lighting;
+  if (scene.environment)
+    lighting =
+        ibl::prepareEnvironmentLighting(scene, [&](const scene::EnvironmentMap& map, const ibl::ModelPairs& models) {
+          const ibl::PrefilterSettings settings;
+          return ibl::cachedPrefilter(map, models, settings, "gpu",
+                                      [&] { return prefilterOnGpu(d, map, models, settings); });
+        });
 
   const SceneArrays arrays = sceneArrays(scene, geometry);
   layout::FrameParams frame = frameParams(scene, geometry, strata);
+  frame.slotsPerRay = lightCount + environmentSlots(scene);
+  const EnvironmentData environment = lighting ? environmentData(*lighting, frame) : EnvironmentData{};
+  if (lighting)
+    result.stageMilliseconds.emplace_back(
+        "environment",
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - environmentStart).count());
   const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
   const std::uint64_t bandPixels = std::min<std::uint64_t>(
-      pixels, std::max<std::uint64_t>(
-                  1, kMaxRayBufferBytes / (sizeof(layout::RayRecord) * frame.raysPerPixel * shadowsPerRay)));
+      pixels, std::max<std::uint64_t>(1, kMaxRayBufferBytes / (sizeof(layout::RayRecord) * frame.raysPerPixel *
+                                                               std::max(1u, frame.slotsPerRay))));
   const std::uint64_t bandRays = bandPixels * frame.raysPerPixel;
 
-  gpu::Device& d = device_;
   const BufferUsage in = BufferUsage::Storage;
   gpu::Buffer nodes = upload(d, "BVH nodes", arrays.nodes, in);
   gpu::Buffer patches = upload(d, "patch records", arrays.patches, in);
   gpu::Buffer points = upload(d, "patch points", arrays.points, in);
   gpu::Buffer objects = upload(d, "object ranges", arrays.objects, in);
-  gpu::Buffer materialBuffer = upload(d, "materials", materialRecords(scene), in);
+  gpu::Buffer materialBuffer = upload(d, "materials", materialRecords(scene, lighting ? &*lighting : nullptr), in);
+  gpu::Buffer environmentBuffer = upload(d, "environment", environment.values, in);
+  gpu::Buffer levelBuffer = upload(d, "environment levels", environment.levels, in);
+  gpu::Buffer aliasBuffer = upload(d, "environment aliases", environment.alias, in);
   gpu::Buffer lightBuffer = upload(d, "lights", lightRecords(scene), in);
   const std::uint64_t tessellationScale = tessellated ? 1 : 0;
   gpu::Buffer gridVertices = storage(d, "grid vertices", tessellationScale * arrays.gridVertices * 12);
@@ -215,9 +295,9 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   gpu::Buffer shadowCount = d.createBuffer({"shadow ray batch", 16, BufferUsage::Uniform | BufferUsage::CopyDst});
   gpu::Buffer rays = storage(d, "camera rays", bandRays * sizeof(layout::RayRecord));
   gpu::Buffer hits = storage(d, "camera hits", bandRays * sizeof(layout::HitRecord));
-  gpu::Buffer shadowRays = storage(d, "shadow rays", bandRays * lightCount * sizeof(layout::RayRecord));
-  gpu::Buffer shadowHits = storage(d, "shadow hits", bandRays * lightCount * sizeof(layout::HitRecord));
-  gpu::Buffer contributions = storage(d, "light contributions", bandRays * lightCount * 16);
+  gpu::Buffer shadowRays = storage(d, "shadow rays", bandRays * frame.slotsPerRay * sizeof(layout::RayRecord));
+  gpu::Buffer shadowHits = storage(d, "shadow hits", bandRays * frame.slotsPerRay * sizeof(layout::HitRecord));
+  gpu::Buffer contributions = storage(d, "light contributions", bandRays * frame.slotsPerRay * 16);
   gpu::Buffer aovs = storage(d, "AOVs", bandPixels * sizeof(layout::PixelAovs), BufferUsage::CopySrc);
   gpu::Buffer beauty = storage(d, "beauty", bandPixels * 16, BufferUsage::CopySrc);
   gpu::Buffer counters = storage(d, "shadow ray counter", 16, BufferUsage::CopyDst | BufferUsage::CopySrc);
@@ -239,16 +319,20 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
     return entries;
   };
   const std::vector<gpu::ConstantEntry> methodConstant{{"METHOD", method}};
-  const std::vector<gpu::ConstantEntry> lightConstant{{"LIGHT_COUNT", double(lightCount)}};
+  const double environmentMethod = !scene.environment                                       ? 0
+                                   : scene.environment->method == scene::IblMethod::Sampled ? 1
+                                                                                            : 2;
   gpu::ComputePipeline& raygen = pipeline("raygen", {});
   gpu::ComputePipeline& intersect = pipeline("intersect", methodConstant);
   gpu::ComputePipeline& surface =
       pipeline("surface", {{"METHOD", method},
                            {"LIGHT_COUNT", double(lightCount)},
+                           {"ENVIRONMENT", environmentMethod},
+                           {"OCCLUSION", scene.environment && scene.environment->occlusion ? 1.0 : 0.0},
                            {"D_MODEL", sharedModel(scene, &materials::Material::distribution)},
                            {"G_MODEL", sharedModel(scene, &materials::Material::geometry)},
                            {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)}});
-  gpu::ComputePipeline& resolve = pipeline("resolve", lightConstant);
+  gpu::ComputePipeline& resolve = pipeline("resolve", {});
   gpu::BindGroup raygenGroup = bindGroup(raygen, "raygen", {{0, &frameBuffer}, {8, &rays}});
   auto intersectGroup = [&](const char* label, gpu::Buffer& rayBuffer, gpu::Buffer& hitBuffer, gpu::Buffer& count) {
     return bindGroup(intersect, label,
@@ -269,11 +353,13 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
                                                      {13, &aovs},
                                                      {14, &shadowRays},
                                                      {15, &contributions},
-                                                     {16, &counters}}));
+                                                     {16, &counters},
+                                                     {19, &environmentBuffer},
+                                                     {20, &levelBuffer},
+                                                     {21, &aliasBuffer}}));
   gpu::BindGroup resolveGroup = bindGroup(
       resolve, "resolve", {{0, &frameBuffer}, {9, &hits}, {15, &contributions}, {17, &shadowHits}, {18, &beauty}});
 
-  GpuRenderResult result;
   result.image = Image(width, height);
   double stageNs[kStageCount] = {};
   auto pass = [&](gpu::CommandEncoder& encoder, Stage stage, gpu::ComputePipeline& p, const gpu::BindGroup& group,
@@ -310,7 +396,7 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
     frame.pixelCount = std::uint32_t(count);
     // {ray count, any hit}: shadow rays only need to know whether something is in the way.
     const std::uint32_t primary[4] = {std::uint32_t(count * frame.raysPerPixel), 0, 0, 0};
-    const std::uint32_t shadow[4] = {primary[0] * lightCount, 1, 0, 0};
+    const std::uint32_t shadow[4] = {primary[0] * frame.slotsPerRay, 1, 0, 0};
     d.queue().writeBuffer(frameBuffer, 0, &frame, sizeof(frame));
     d.queue().writeBuffer(primaryCount, 0, primary, sizeof(primary));
     d.queue().writeBuffer(shadowCount, 0, shadow, sizeof(shadow));

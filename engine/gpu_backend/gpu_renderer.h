@@ -2,13 +2,17 @@
 // compute/raycast/ on a gpu::Device, into the same Image as the CPU
 // reference and under the same conventions (docs/rendering.md).
 //
-// Stages, one compute pass each (GPU timestamps per stage):
+// Stages, one compute pass each (GPU timestamps per stage), after the
+// environment's preparation (wall clock: sampling tables, or the prefiltered
+// maps from compute kernels or the disk cache):
 //   dice       tessellated method only: k x k limit points per patch, the
 //              midpoints of split transition edges, row boxes
 //   raygen     camera rays (the centre ray, plus spp stratified ones if > 1)
 //   intersect  closest hit per camera ray through the patch BVHs
 //   surface    hit point, limit normal, AOVs, per-light unshadowed radiance
-//              and the shadow rays; misses do no shading work
+//              and the shadow rays, the environment's share (its shadow
+//              rays for the sampled method with occlusion); misses only
+//              look up the environment
 //   shadow     the intersect kernel again, on the shadow rays
 //   resolve    beauty and coverage per pixel
 // Large images are rendered in bands of pixels so that no buffer exceeds
@@ -25,8 +29,8 @@
 // shadow ray find the surface it leaves.
 //
 // Specialization constants keep each pipeline to what the scene uses: the
-// method, the number of lights, and each BRDF model (D, G, F) when all
-// materials share it. Pipelines are created once per variant and kept, so a
+// method, the number of lights, the IBL method and its occlusion, and each
+// BRDF model (D, G, F) when all materials share it. Pipelines are created once per variant and kept, so a
 // renderer that draws many scenes JITs each variant once.
 #pragma once
 

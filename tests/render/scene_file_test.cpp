@@ -47,7 +47,9 @@ TEST_F(SceneFiles, ThePreviewSceneHasEveryPreset) {
   Scene scene = loadScene(kExamples / "preview.json");
   EXPECT_EQ(scene.objects.size(), 10u);
   EXPECT_EQ(scene.materials.size(), 10u);
-  EXPECT_EQ(scene.lights.size(), 2u);
+  EXPECT_EQ(scene.lights.size(), 1u);
+  ASSERT_TRUE(scene.environment.has_value());
+  EXPECT_EQ(scene.environment->map->width, 256);
   EXPECT_EQ(scene.render.width, 768);
   for (const Object& o : scene.objects) EXPECT_EQ(scene.materials[std::size_t(o.material)].name, o.name);
 }
@@ -155,6 +157,81 @@ TEST_F(SceneFiles, ABareCageIsFramedAndLit) {
     ASSERT_GT(depth, 0);
     EXPECT_LT(glm::length(d - depth * forward) / depth, tanHalf);
   }
+}
+
+TEST_F(SceneFiles, AnEnvironmentMapIsReadRelativeToTheSceneFile) {
+  fs::create_directories(dir_ / "maps");
+  fs::copy_file(kExamples / "../environments/courtyard_256x128.hdr", dir_ / "maps/court.hdr");
+  const Scene scene = loadScene(write("env.json", R"({"objects": [{"mesh": "ball.obj"}],
+      "environment": {"file": "maps/court.hdr", "intensity": 2.5, "rotation": -90, "method": "sampled",
+                      "samples": 64, "occlusion": false}})"));
+  ASSERT_TRUE(scene.environment.has_value());
+  const Environment& environment = *scene.environment;
+  ASSERT_NE(environment.map, nullptr);
+  EXPECT_EQ(environment.map->source, dir_ / "maps/court.hdr");
+  EXPECT_EQ(environment.map->width, 256);
+  EXPECT_EQ(environment.map->height, 128);
+  EXPECT_EQ(environment.intensity, 2.5);
+  EXPECT_EQ(environment.rotationDegrees, -90.0);
+  EXPECT_EQ(environment.method, IblMethod::Sampled);
+  EXPECT_EQ(environment.samples, 64);
+  EXPECT_FALSE(environment.occlusion);
+}
+
+TEST_F(SceneFiles, AConstantEnvironmentTakesTheDefaults) {
+  const Scene scene =
+      loadScene(write("env.json", R"({"objects": [{"mesh": "ball.obj"}], "environment": {"color": [0.1, 0.2, 0.3]}})"));
+  ASSERT_TRUE(scene.environment.has_value());
+  const Environment& environment = *scene.environment;
+  ASSERT_NE(environment.map, nullptr);
+  EXPECT_TRUE(environment.map->source.empty());
+  EXPECT_EQ(environment.map->texel(5, 2), glm::vec3(0.1f, 0.2f, 0.3f));
+  EXPECT_EQ(environment.intensity, 1.0);
+  EXPECT_EQ(environment.rotationDegrees, 0.0);
+  EXPECT_EQ(environment.method, IblMethod::Prefiltered);
+  EXPECT_EQ(environment.samples, 16);
+  EXPECT_TRUE(environment.occlusion);
+
+  EXPECT_FALSE(loadScene(write("plain.json", R"({"objects": [{"mesh": "ball.obj"}]})")).environment.has_value());
+}
+
+TEST_F(SceneFiles, EnvironmentErrorsNameTheField) {
+  auto errorOfEnvironment = [&](const std::string& block) {
+    return errorOf(R"({"objects": [{"mesh": "ball.obj"}], "environment": )" + block + "}");
+  };
+  // A flat (uncompressed) Radiance file of 6 x 2 black texels: not 2:1.
+  write("wide.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 6\n" + std::string(12 * 4, '\0'));
+  EXPECT_THAT(errorOfEnvironment(R"({"file": "wide.hdr"})"),
+              AllOf(HasSubstr("scene.json"), HasSubstr("environment.file"), HasSubstr("wide.hdr"),
+                    HasSubstr("must be 2:1"), HasSubstr("6 x 2")));
+  EXPECT_THAT(errorOfEnvironment(R"({"file": "missing.exr"})"),
+              AllOf(HasSubstr("environment.file"), HasSubstr("missing.exr"), HasSubstr("cannot open")));
+  EXPECT_THAT(errorOfEnvironment(R"({"file": "ball.obj"})"),
+              AllOf(HasSubstr("environment.file"), HasSubstr("unknown environment map format")));
+  EXPECT_THAT(errorOfEnvironment(R"({"file": 3})"),
+              AllOf(HasSubstr("environment.file"), HasSubstr("expected a string")));
+  EXPECT_THAT(errorOfEnvironment(R"({"color": [1, -1, 1]})"),
+              AllOf(HasSubstr("environment.color"), HasSubstr("must not be negative")));
+  EXPECT_THAT(errorOfEnvironment(R"({"color": [1, 1]})"),
+              AllOf(HasSubstr("environment.color"), HasSubstr("expected an array of 3 numbers")));
+  EXPECT_THAT(errorOfEnvironment(R"({"color": [1, 1, 1], "intensity": -0.5})"),
+              AllOf(HasSubstr("environment.intensity"), HasSubstr("must be in [0, inf]")));
+  EXPECT_THAT(errorOfEnvironment(R"({"color": [1, 1, 1], "rotation": "east"})"),
+              AllOf(HasSubstr("environment.rotation"), HasSubstr("expected a number")));
+  EXPECT_THAT(errorOfEnvironment(R"({"color": [1, 1, 1], "method": "exact"})"),
+              AllOf(HasSubstr("environment.method"), HasSubstr("unknown value 'exact'"), HasSubstr("sampled")));
+  EXPECT_THAT(errorOfEnvironment(R"({"color": [1, 1, 1], "samples": 0})"),
+              AllOf(HasSubstr("environment.samples"), HasSubstr("must be in [1, 16384]")));
+  EXPECT_THAT(errorOfEnvironment(R"({"color": [1, 1, 1], "samples": 2.5})"),
+              AllOf(HasSubstr("environment.samples"), HasSubstr("whole number")));
+  EXPECT_THAT(errorOfEnvironment(R"({"color": [1, 1, 1], "occlusion": 1})"),
+              AllOf(HasSubstr("environment.occlusion"), HasSubstr("expected true or false")));
+  EXPECT_THAT(errorOfEnvironment(R"({"file": "wide.hdr", "color": [1, 1, 1]})"),
+              AllOf(HasSubstr("environment"), HasSubstr("exactly one of file")));
+  EXPECT_THAT(errorOfEnvironment(R"({"intensity": 2})"), HasSubstr("exactly one of file"));
+  EXPECT_THAT(errorOfEnvironment(R"({"color": [1, 1, 1], "colour": [1, 1, 1]})"),
+              AllOf(HasSubstr("environment.colour"), HasSubstr("unknown field")));
+  EXPECT_THAT(errorOfEnvironment(R"("sky.hdr")"), AllOf(HasSubstr("environment"), HasSubstr("expected an object")));
 }
 
 }  // namespace

@@ -1,0 +1,16 @@
+// gnuplot, run as a separate process, draws every plot of the facet command.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace facet::cli {
+
+// Runs gnuplot on `script`, which reads `data` through the placeholder DATA
+// and writes the placeholder OUTPUT; the terminal (SVG or PNG, `width` x
+// `height`) follows the extension of `out`. The image is written next to
+// `out` under a temporary name and renamed, so `out` is never half-written.
+void runGnuplot(std::string script, const std::string& data, const std::filesystem::path& out, int width = 800,
+                int height = 640);
+
+}  // namespace facet::cli

@@ -1,0 +1,19 @@
+// Shared GLSL / C++ source (rules of materials/shading/common.h; `uint` is
+// 32 bits on both sides): the random numbers of Monte Carlo estimates,
+// drawn as a pure function of (pixel, sample, dimension) so that the GPU
+// kernels and the CPU reference draw exactly the same ones, in any order.
+// No include guard (C++ includes it once per real type).
+
+// PCG hash (Jarzynski & Olano 2020, "Hash Functions for GPU Rendering").
+FACET_FN uint pcg_hash(uint value) {
+  uint state = value * 747796405u + 2891336453u;
+  uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+  return (word >> 22u) ^ word;
+}
+
+// A number in [0, 1) with 24 random bits: exact in float and in double, so
+// both backends start from the same value.
+FACET_FN real sample_uniform(uint pixel, uint sample_index, uint dimension) {
+  uint bits = pcg_hash(pixel ^ pcg_hash(sample_index ^ pcg_hash(dimension)));
+  return real(bits >> 8u) * real(5.9604644775390625e-8);
+}

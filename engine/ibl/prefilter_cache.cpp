@@ -1,0 +1,220 @@
+// The prefiltered environment's disk cache. One file per key; the file
+// repeats the key's text, so that a hash collision reads as a miss, and
+// ends in a magic, so that a truncated file does too. Any failure to read
+// or write only costs the build.
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <random>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "engine/ibl/prefiltered_environment.h"
+
+namespace facet::ibl {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr char kMagic[8] = {'F', 'A', 'C', 'E', 'T', 'I', 'B', 'L'};
+// Bump whenever the file layout or what the builders compute changes.
+constexpr std::uint32_t kFormatVersion = 1;
+
+std::uint64_t fnv1a(const std::string& text) {
+  std::uint64_t hash = 14695981039346656037ull;
+  for (unsigned char c : text) {
+    hash ^= c;
+    hash *= 1099511628211ull;
+  }
+  return hash;
+}
+
+std::string keyText(const scene::EnvironmentMap& map, const ModelPairs& models, const PrefilterSettings& settings,
+                    const std::string& builder) {
+  std::ostringstream key;
+  key << "facet prefiltered environment v" << kFormatVersion << " map " << std::hex << map.contentHash() << std::dec
+      << " levels " << settings.levels << " firstLevelWidth " << settings.firstLevelWidth << " samples "
+      << settings.samples << " dfgSize " << settings.dfgSize << " dfgSamples " << settings.dfgSamples << " models";
+  for (const auto& [distribution, geometry] : models) key << " " << distribution << "/" << geometry;
+  key << " builder " << builder;
+  return key.str();
+}
+
+std::optional<fs::path> cacheDirectory() {
+  if (const char* dir = std::getenv("FACET_CACHE_DIR"); dir && *dir) return fs::path(dir);
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return fs::path(xdg) / "facet";
+  if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".cache" / "facet";
+  return std::nullopt;
+}
+
+class Writer {
+ public:
+  template <class T>
+  void put(const T& value) {
+    const auto* bytes = reinterpret_cast<const char*>(&value);
+    data_.insert(data_.end(), bytes, bytes + sizeof(T));
+  }
+  template <class T>
+  void putArray(const std::vector<T>& values) {
+    put(std::uint64_t(values.size()));
+    const auto* bytes = reinterpret_cast<const char*>(values.data());
+    data_.insert(data_.end(), bytes, bytes + values.size() * sizeof(T));
+  }
+  void putBytes(const char* bytes, std::size_t size) { data_.insert(data_.end(), bytes, bytes + size); }
+  const std::vector<char>& data() const { return data_; }
+
+ private:
+  std::vector<char> data_;
+};
+
+// Reads what Writer wrote; every read checks the bounds, and a failed one
+// leaves ok() false for good.
+class Reader {
+ public:
+  explicit Reader(const std::vector<char>& data) : data_(data) {}
+  template <class T>
+  T get() {
+    T value{};
+    if (take(sizeof(T))) std::memcpy(&value, data_.data() + position_ - sizeof(T), sizeof(T));
+    return value;
+  }
+  template <class T>
+  std::vector<T> getArray(std::uint64_t expectedCount) {
+    const auto count = get<std::uint64_t>();
+    if (count != expectedCount || !take(count * sizeof(T))) {
+      ok_ = false;
+      return {};
+    }
+    std::vector<T> values(count);
+    std::memcpy(values.data(), data_.data() + position_ - count * sizeof(T), count * sizeof(T));
+    return values;
+  }
+  bool matches(const char* bytes, std::size_t size) {
+    return take(size) && std::memcmp(data_.data() + position_ - size, bytes, size) == 0;
+  }
+  bool ok() const { return ok_; }
+  bool atEnd() const { return position_ == data_.size(); }
+
+ private:
+  bool take(std::uint64_t size) {
+    if (!ok_ || size > data_.size() - position_) return ok_ = false;
+    position_ += size;
+    return true;
+  }
+  const std::vector<char>& data_;
+  std::size_t position_ = 0;
+  bool ok_ = true;
+};
+
+std::vector<char> serialize(const PrefilteredEnvironment& env, const std::string& key) {
+  Writer w;
+  w.putBytes(kMagic, sizeof kMagic);
+  w.put(kFormatVersion);
+  w.putArray(std::vector<char>(key.begin(), key.end()));
+  w.put(std::uint32_t(env.levels.size()));
+  for (const RadianceLevel& level : env.levels) {
+    w.put(std::int32_t(level.width));
+    w.put(std::int32_t(level.height));
+    w.put(level.alpha);
+    w.putArray(level.rgb);
+  }
+  for (const glm::dvec3& c : env.irradianceSh) w.put(c);
+  w.put(std::uint32_t(env.dfg.size()));
+  for (const DfgTable& table : env.dfg) {
+    w.put(std::int32_t(table.distribution));
+    w.put(std::int32_t(table.geometry));
+    w.put(std::int32_t(table.size));
+    w.putArray(table.scaleBias);
+  }
+  w.putBytes(kMagic, sizeof kMagic);
+  return w.data();
+}
+
+std::optional<PrefilteredEnvironment> deserialize(const std::vector<char>& data, const std::string& key) {
+  Reader r(data);
+  if (!r.matches(kMagic, sizeof kMagic) || r.get<std::uint32_t>() != kFormatVersion) return std::nullopt;
+  const auto storedKey = r.getArray<char>(key.size());
+  if (!r.ok() || std::string(storedKey.begin(), storedKey.end()) != key) return std::nullopt;
+  PrefilteredEnvironment env;
+  const auto levels = r.get<std::uint32_t>();
+  for (std::uint32_t i = 0; i < levels && r.ok(); ++i) {
+    RadianceLevel level;
+    level.width = r.get<std::int32_t>();
+    level.height = r.get<std::int32_t>();
+    level.alpha = r.get<double>();
+    if (level.width <= 0 || level.height <= 0) return std::nullopt;
+    level.rgb = r.getArray<float>(3 * std::uint64_t(level.width) * std::uint64_t(level.height));
+    env.levels.push_back(std::move(level));
+  }
+  for (glm::dvec3& c : env.irradianceSh) c = r.get<glm::dvec3>();
+  const auto tables = r.get<std::uint32_t>();
+  for (std::uint32_t i = 0; i < tables && r.ok(); ++i) {
+    DfgTable table;
+    table.distribution = r.get<std::int32_t>();
+    table.geometry = r.get<std::int32_t>();
+    table.size = r.get<std::int32_t>();
+    if (table.size <= 0) return std::nullopt;
+    table.scaleBias = r.getArray<float>(2 * std::uint64_t(table.size) * std::uint64_t(table.size));
+    env.dfg.push_back(std::move(table));
+  }
+  if (!r.matches(kMagic, sizeof kMagic) || !r.ok() || !r.atEnd()) return std::nullopt;
+  return env;
+}
+
+std::optional<std::vector<char>> readFile(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::vector<char> data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) return std::nullopt;
+  return data;
+}
+
+void writeFileAtomically(const fs::path& file, const std::vector<char>& data) {
+  std::error_code error;
+  fs::create_directories(file.parent_path(), error);
+  // A name of its own per writer, so that concurrent renders never write
+  // into one temporary file; rename then replaces the file whole.
+  const fs::path temporary =
+      file.string() + ".tmp" + std::to_string(std::random_device{}()) + std::to_string(std::random_device{}());
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out.write(data.data(), std::streamsize(data.size()));
+    out.close();
+    if (!out) {
+      fs::remove(temporary, error);
+      return;
+    }
+  }
+  fs::rename(temporary, file, error);
+  if (error) fs::remove(temporary, error);
+}
+
+}  // namespace
+
+PrefilteredEnvironment cachedPrefilter(const scene::EnvironmentMap& map, const ModelPairs& models,
+                                       const PrefilterSettings& settings, const std::string& builder,
+                                       const std::function<PrefilteredEnvironment()>& build) {
+  const std::optional<fs::path> directory = cacheDirectory();
+  if (!directory) return build();
+  const std::string key = keyText(map, models, settings, builder);
+  char name[40];
+  std::snprintf(name, sizeof name, "prefiltered-%016llx.bin", static_cast<unsigned long long>(fnv1a(key)));
+  const fs::path file = *directory / name;
+  if (const auto data = readFile(file))
+    if (auto stored = deserialize(*data, key)) return std::move(*stored);
+  PrefilteredEnvironment env = build();
+  writeFileAtomically(file, serialize(env, key));
+  return env;
+}
+
+}  // namespace facet::ibl

@@ -1,0 +1,35 @@
+// The pieces of the prefiltered environment's build that the CPU reference
+// (prefiltered_environment.cpp) and the GPU build
+// (engine/gpu_backend/prefilter_gpu.cpp) must do alike.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <vector>
+
+#include "engine/ibl/prefiltered_environment.h"
+
+namespace facet::ibl {
+
+struct LevelSize {
+  int width = 0;
+  int height = 0;
+};
+
+// Level i >= 1 of the ladder: max(16, min(map width, firstLevelWidth) >> (i - 1)) wide, 2:1.
+LevelSize prefilteredLevelSize(const scene::EnvironmentMap& map, const PrefilterSettings& settings, int level);
+
+// The 2x2-box mip chain of a map: levels while both sides halve evenly,
+// down to a single row.
+std::vector<LevelSize> sourceChainSizes(int width, int height);
+
+// Per row y, the radiance summed over the row weighted by each of the five
+// azimuthal integrals of sh_column_integrals (one, sin, cos, cos^2, sin cos).
+using ShRowSums = std::array<glm::dvec3, 5>;
+
+// The SH coefficients (bands 0-2) of a piecewise-constant map from its row
+// sums: each row's polar integrals, taken exactly in double, times its sums.
+std::array<glm::dvec3, 9> shFromRowSums(const std::vector<ShRowSums>& rows);
+
+}  // namespace facet::ibl

@@ -1,0 +1,241 @@
+#include "engine/ibl/prefiltered_environment.h"
+
+#include <glm/common.hpp>
+#include <glm/vec2.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <thread>
+
+#include "engine/ibl/environment_lookup.h"
+#include "engine/ibl/environment_math.hpp"
+#include "engine/ibl/prefilter_steps.h"
+
+namespace facet::ibl {
+
+namespace m = materials::f64;
+
+LevelSize prefilteredLevelSize(const scene::EnvironmentMap& map, const PrefilterSettings& settings, int level) {
+  const int width = std::max(16, std::min(map.width, settings.firstLevelWidth) >> (level - 1));
+  return {width, width / 2};
+}
+
+std::vector<LevelSize> sourceChainSizes(int width, int height) {
+  std::vector<LevelSize> sizes{{width, height}};
+  while (sizes.back().height > 1 && sizes.back().width % 2 == 0 && sizes.back().height % 2 == 0)
+    sizes.push_back({sizes.back().width / 2, sizes.back().height / 2});
+  return sizes;
+}
+
+std::array<glm::dvec3, 9> shFromRowSums(const std::vector<ShRowSums>& rows) {
+  // The basis' normalizations, read off the shared basis itself.
+  const double k0 = m::sh_basis(0, glm::dvec3(0.0));
+  const double k1 = m::sh_basis(1, glm::dvec3(0, 1, 0));
+  const double k2 = m::sh_basis(4, glm::dvec3(1, 1, 0));
+  const double k6 = -m::sh_basis(6, glm::dvec3(0.0));
+  const double k8 = m::sh_basis(8, glm::dvec3(1, 0, 0));
+  const int height = int(rows.size());
+  std::array<glm::dvec3, 9> sh{};
+  for (int y = 0; y < height; ++y) {
+    const double theta0 = m::PI * y / height, theta1 = m::PI * (y + 1) / height;
+    const double c0 = std::cos(theta0), c1 = std::cos(theta1);
+    const double s0 = std::sin(theta0), s1 = std::sin(theta1);
+    // Integrals over cos theta in [c1, c0] (d omega = d cos theta d phi).
+    const double one = c0 - c1;
+    const double c = 0.5 * (c0 * c0 - c1 * c1);
+    const double cc = (c0 * c0 * c0 - c1 * c1 * c1) / 3;
+    const double ss = one - cc;
+    const double s = 0.5 * (c0 * s0 - c1 * s1 + theta1 - theta0);
+    const double cs = (s1 * s1 * s1 - s0 * s0 * s0) / 3;
+    const auto& [rowOne, rowSin, rowCos, rowCos2, rowSinCos] = rows[y];
+    sh[0] += k0 * one * rowOne;
+    sh[1] += k1 * c * rowOne;
+    sh[2] -= k1 * s * rowCos;
+    sh[3] += k1 * s * rowSin;
+    sh[4] += k2 * cs * rowSin;
+    sh[5] -= k2 * cs * rowCos;
+    sh[6] += k6 * (3 * ss * rowCos2 - one * rowOne);
+    sh[7] -= k2 * ss * rowSinCos;
+    sh[8] += k8 * (ss * (rowOne - rowCos2) - cc * rowOne);
+  }
+  return sh;
+}
+
+namespace {
+
+// Runs rowTask(y) for every row, rows interleaved over the machine's cores.
+void forEachRow(int rows, const std::function<void(int)>& rowTask) {
+  const int threads = std::clamp(int(std::thread::hardware_concurrency()), 1, std::max(1, rows));
+  std::vector<std::jthread> workers;
+  for (int t = 1; t < threads; ++t)
+    workers.emplace_back([&, t] {
+      for (int y = t; y < rows; y += threads) rowTask(y);
+    });
+  for (int y = 0; y < rows; y += threads) rowTask(y);
+}
+
+struct SourceLevel {
+  LevelSize size;
+  std::vector<double> rgb;
+};
+
+std::vector<SourceLevel> sourceChain(const scene::EnvironmentMap& map) {
+  std::vector<SourceLevel> chain;
+  for (const LevelSize& size : sourceChainSizes(map.width, map.height)) {
+    SourceLevel level{size, {}};
+    if (chain.empty()) {
+      level.rgb.assign(map.rgb.begin(), map.rgb.end());
+    } else {
+      const SourceLevel& finer = chain.back();
+      level.rgb.resize(3 * std::size_t(size.width) * std::size_t(size.height));
+      for (int y = 0; y < size.height; ++y)
+        for (int x = 0; x < size.width; ++x) {
+          const int fw = finer.size.width;
+          const double upper = m::environment_upper_row_share(y, finer.size.height);
+          const glm::dvec3 mean =
+              0.5 *
+              (upper * (texelAt(finer.rgb.data(), fw, 2 * x, 2 * y) + texelAt(finer.rgb.data(), fw, 2 * x + 1, 2 * y)) +
+               (1 - upper) * (texelAt(finer.rgb.data(), fw, 2 * x, 2 * y + 1) +
+                              texelAt(finer.rgb.data(), fw, 2 * x + 1, 2 * y + 1)));
+          for (int channel = 0; channel < 3; ++channel)
+            level.rgb[3 * (std::size_t(y) * size.width + x) + channel] = mean[channel];
+        }
+    }
+    chain.push_back(std::move(level));
+  }
+  return chain;
+}
+
+glm::dvec3 trilinear(const std::vector<SourceLevel>& chain, const glm::dvec2& uv, double lod) {
+  const int coarser = int(chain.size()) - 1;
+  const int l0 = std::min(int(std::floor(lod)), coarser);
+  const int l1 = std::min(l0 + 1, coarser);
+  const auto at = [&](int l) {
+    return bilinearLookup(chain[l].rgb.data(), chain[l].size.width, chain[l].size.height, uv);
+  };
+  return glm::mix(at(l0), at(l1), lod - l0);
+}
+
+struct PrefilterSample {
+  glm::dvec3 localNormal;
+  double weight = 0;
+  double lod = 0;
+};
+
+RadianceLevel prefilterLevel(const std::vector<SourceLevel>& chain, LevelSize size, double alpha, int samples) {
+  const LevelSize source = chain.front().size;
+  std::vector<PrefilterSample> lobe;
+  for (int k = 0; k < samples; ++k) {
+    const glm::dvec3 normal = m::prefilter_sample_normal(k, samples, alpha);
+    const double weight = m::prefilter_sample_weight(alpha, normal);
+    if (weight <= 0) continue;
+    lobe.push_back({normal, weight,
+                    m::prefilter_source_lod(alpha, normal, samples, source.width, source.height, int(chain.size()))});
+  }
+  RadianceLevel level{size.width, size.height, alpha, {}};
+  level.rgb.resize(3 * std::size_t(size.width) * std::size_t(size.height));
+  forEachRow(size.height, [&](int y) {
+    for (int x = 0; x < size.width; ++x) {
+      const glm::dvec3 r = m::environment_direction(glm::dvec2((x + 0.5) / size.width, (y + 0.5) / size.height));
+      const m::Frame frame = m::frame_from_normal(r);
+      glm::dvec3 sum(0.0);
+      double weight = 0;
+      for (const PrefilterSample& s : lobe) {
+        const glm::dvec3 l = glm::reflect(-r, m::from_local(frame, s.localNormal));
+        sum += s.weight * trilinear(chain, m::environment_uv(l), s.lod);
+        weight += s.weight;
+      }
+      const glm::dvec3 radiance = weight > 0 ? sum / weight : glm::dvec3(0.0);
+      for (int channel = 0; channel < 3; ++channel)
+        level.rgb[3 * (std::size_t(y) * size.width + x) + channel] = float(radiance[channel]);
+    }
+  });
+  return level;
+}
+
+std::array<glm::dvec3, 9> projectOnSh(const scene::EnvironmentMap& map) {
+  std::vector<m::ShColumnIntegrals> columns;
+  for (int x = 0; x < map.width; ++x) columns.push_back(m::sh_column_integrals(x, map.width));
+  std::vector<ShRowSums> rows(map.height);
+  for (int y = 0; y < map.height; ++y) {
+    ShRowSums& row = rows[y];
+    row.fill(glm::dvec3(0.0));
+    for (int x = 0; x < map.width; ++x) {
+      const glm::dvec3 radiance = map.texel(x, y);
+      const m::ShColumnIntegrals& c = columns[x];
+      row[0] += c.one * radiance;
+      row[1] += c.sin_phi * radiance;
+      row[2] += c.cos_phi * radiance;
+      row[3] += c.cos2_phi * radiance;
+      row[4] += c.sin_cos_phi * radiance;
+    }
+  }
+  return shFromRowSums(rows);
+}
+
+DfgTable dfgTable(int distribution, int geometry, const PrefilterSettings& settings) {
+  const int size = settings.dfgSize;
+  DfgTable table{distribution, geometry, size, std::vector<float>(2 * std::size_t(size) * std::size_t(size))};
+  forEachRow(size, [&](int j) {
+    const double alpha = m::dfg_grid_alpha(j, size);
+    for (int i = 0; i < size; ++i) {
+      const glm::dvec2 scaleBias =
+          m::dfg_integrals(distribution, geometry, m::dfg_grid_nv(i, size), alpha, settings.dfgSamples);
+      table.scaleBias[2 * (std::size_t(j) * size + i)] = float(scaleBias.x);
+      table.scaleBias[2 * (std::size_t(j) * size + i) + 1] = float(scaleBias.y);
+    }
+  });
+  return table;
+}
+
+}  // namespace
+
+PrefilteredEnvironment prefilterOnCpu(const scene::EnvironmentMap& map, const ModelPairs& models,
+                                      const PrefilterSettings& settings) {
+  PrefilteredEnvironment env;
+  env.levels.push_back({map.width, map.height, 0.0, map.rgb});
+  const std::vector<SourceLevel> chain = sourceChain(map);
+  for (int i = 1; i < settings.levels; ++i)
+    env.levels.push_back(prefilterLevel(chain, prefilteredLevelSize(map, settings, i),
+                                        m::prefiltered_level_alpha(i, settings.levels), settings.samples));
+  env.irradianceSh = projectOnSh(map);
+  for (const auto& [distribution, geometry] : models) env.dfg.push_back(dfgTable(distribution, geometry, settings));
+  return env;
+}
+
+glm::dvec3 prefilteredRadiance(const PrefilteredEnvironment& env, const glm::dvec3& direction, double alpha) {
+  if (env.levels.empty()) return glm::dvec3(0.0);
+  const int last = int(env.levels.size()) - 1;
+  const double level = m::prefiltered_level(alpha, last + 1);
+  const int l0 = std::min(int(std::floor(level)), last);
+  const int l1 = std::min(l0 + 1, last);
+  const glm::dvec2 uv = m::environment_uv(direction);
+  const auto at = [&](int l) {
+    const RadianceLevel& r = env.levels[l];
+    return bilinearLookup(r.rgb.data(), r.width, r.height, uv);
+  };
+  return glm::mix(at(l0), at(l1), level - l0);
+}
+
+glm::dvec2 dfgLookup(const DfgTable& table, double nv, double alpha) {
+  const int size = table.size;
+  const glm::dvec2 position = m::dfg_grid_position(nv, alpha, size);
+  const double i = position.x, j = position.y;
+  const int i0 = int(std::floor(i)), j0 = int(std::floor(j));
+  const int i1 = std::min(i0 + 1, size - 1), j1 = std::min(j0 + 1, size - 1);
+  const auto at = [&](int a, int b) {
+    const std::size_t index = 2 * (std::size_t(b) * size + a);
+    return glm::dvec2(table.scaleBias[index], table.scaleBias[index + 1]);
+  };
+  return glm::mix(glm::mix(at(i0, j0), at(i1, j0), i - i0), glm::mix(at(i0, j1), at(i1, j1), i - i0), j - j0);
+}
+
+glm::dvec3 irradianceOverPi(const PrefilteredEnvironment& env, const glm::dvec3& n) {
+  glm::dvec3 sum(0.0);
+  for (int i = 0; i < 9; ++i) sum += env.irradianceSh[i] * (m::sh_cosine_band(i) * m::sh_basis(i, n));
+  return glm::max(sum, glm::dvec3(0.0));
+}
+
+}  // namespace facet::ibl

@@ -1,0 +1,82 @@
+// The split sum's precomputed half (docs/rendering.md, "Image-based
+// lighting"): an environment prefiltered by GGX at a ladder of roughnesses,
+// its irradiance as spherical harmonics, and the DFG tables of the BRDF
+// models a scene uses. Built in double on the CPU (the reference) or by
+// compute kernels on the GPU (engine/gpu_backend/prefilter_gpu.h), both into
+// this struct; kept in a disk cache keyed by the map and the settings.
+//
+// Everything here lives in the map's own frame: rotation and intensity are
+// applied by whoever looks it up, so they never invalidate the cache.
+#pragma once
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "scenes/environment_map.h"
+
+namespace facet::ibl {
+
+struct PrefilterSettings {
+  int levels = 6;             // level i: alpha = (i / (levels - 1))^2; level 0 is the map itself
+  int firstLevelWidth = 256;  // level 1's width (at most the map's); each further level halves, down to 16
+  int samples = 256;          // GGX samples per prefiltered texel
+  int dfgSize = 64;           // DFG table: dfgSize x dfgSize over (n.v, sqrt(alpha))
+  int dfgSamples = 4096;      // samples per DFG entry
+};
+
+struct RadianceLevel {
+  int width = 0;
+  int height = 0;
+  double alpha = 0;        // the GGX roughness this level was filtered at
+  std::vector<float> rgb;  // row-major, 3 floats per texel, the map's layout
+};
+
+// For one (D, G) pair: entry (i, j) at n.v = (i + 1) / size and
+// sqrt(alpha) = j / (size - 1) (dfg_grid_nv, dfg_grid_alpha in
+// compute/shared/environment.h) holds (scale, bias), so that for Schlick's
+// F the directional albedo of the specular lobe is F(0) scale + bias.
+struct DfgTable {
+  int distribution = 0;
+  int geometry = 0;
+  int size = 0;
+  std::vector<float> scaleBias;  // 2 floats per entry, index 2 (j size + i)
+};
+
+struct PrefilteredEnvironment {
+  std::vector<RadianceLevel> levels;
+  std::array<glm::dvec3, 9> irradianceSh{};  // radiance projected on SH bands 0-2
+  std::vector<DfgTable> dfg;                 // one per requested (D, G) pair, in request order
+};
+
+using ModelPairs = std::vector<std::pair<int, int>>;  // (distribution, geometry) ids of materials/shading
+
+PrefilteredEnvironment prefilterOnCpu(const scene::EnvironmentMap& map, const ModelPairs& models,
+                                      const PrefilterSettings& settings = {});
+
+// Lookups, in double, with the same bilinear/level interpolation the GPU
+// kernels use. `direction` is in the map's frame.
+glm::dvec3 prefilteredRadiance(const PrefilteredEnvironment& env, const glm::dvec3& direction, double alpha);
+glm::dvec2 dfgLookup(const DfgTable& table, double nv, double alpha);
+// Irradiance / pi at normal n from the SH coefficients (c_diff times this is
+// the Lambertian radiance), clamped at 0 (bands 0-2 ring below 0 around
+// very bright sources).
+glm::dvec3 irradianceOverPi(const PrefilteredEnvironment& env, const glm::dvec3& n);
+
+// The cache: returns the stored result for (map, models, settings, builder)
+// when present and intact, else runs `build` and stores its result (written
+// to a temporary file and renamed). The directory is FACET_CACHE_DIR, else
+// $XDG_CACHE_HOME/facet, else ~/.cache/facet; an unwritable directory only
+// costs the rebuild.
+PrefilteredEnvironment cachedPrefilter(const scene::EnvironmentMap& map, const ModelPairs& models,
+                                       const PrefilterSettings& settings, const std::string& builder,
+                                       const std::function<PrefilteredEnvironment()>& build);
+
+}  // namespace facet::ibl
