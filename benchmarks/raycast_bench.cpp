@@ -17,7 +17,6 @@
 #include <opensubdiv/far/topologyDescriptor.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -30,10 +29,8 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
-#include "engine/camera.hpp"
 #include "engine/image/image_io.h"
 #include "engine/renderer.h"
 #include "scenes/obj_cage.h"
@@ -41,7 +38,7 @@
 #include "scenes/scene_geometry.h"
 
 #if FACET_HAVE_EMBREE
-#include <embree3/rtcore.h>
+#include "benchmarks/embree_peer.h"
 #endif
 
 namespace {
@@ -228,145 +225,6 @@ Row runFacet(const NamedCage& cage, const Scene& scene, facet::Backend backend, 
   return row;
 }
 
-// ---------------------------------------------------------------- Embree
-
-#if FACET_HAVE_EMBREE
-struct Embree {
-  RTCDevice device = nullptr;
-  RTCScene scene = nullptr;
-  RTCGeometry geometry = nullptr;
-  std::string notes;
-
-  Embree(const Embree&) = delete;
-  Embree& operator=(const Embree&) = delete;
-
-  explicit Embree(const ControlCage& cage) {
-    device = rtcNewDevice("threads=2");
-    if (!device) throw std::runtime_error("rtcNewDevice failed");
-    scene = rtcNewScene(device);
-    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_MEDIUM);
-    geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SUBDIVISION);
-
-    auto* faces = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_FACE, 0, RTC_FORMAT_UINT,
-                                                                 sizeof(unsigned), cage.faceVertexCounts.size()));
-    for (std::size_t i = 0; i < cage.faceVertexCounts.size(); ++i) faces[i] = unsigned(cage.faceVertexCounts[i]);
-    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT,
-                                                                   sizeof(unsigned), cage.faceVertexIndices.size()));
-    for (std::size_t i = 0; i < cage.faceVertexIndices.size(); ++i) indices[i] = unsigned(cage.faceVertexIndices[i]);
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                 4 * sizeof(float), cage.positions.size()));
-    for (std::size_t i = 0; i < cage.positions.size(); ++i) {
-      vertices[4 * i + 0] = float(cage.positions[i].x);
-      vertices[4 * i + 1] = float(cage.positions[i].y);
-      vertices[4 * i + 2] = float(cage.positions[i].z);
-      vertices[4 * i + 3] = 0.0f;
-    }
-    // OpenSubdiv treats sharpness >= 10 as infinitely sharp; Embree takes +inf.
-    auto sharpness = [](float s) { return s >= 10.0f ? std::numeric_limits<float>::infinity() : s; };
-    if (!cage.creases.empty()) {
-      auto* pairs = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-          geometry, RTC_BUFFER_TYPE_EDGE_CREASE_INDEX, 0, RTC_FORMAT_UINT2, 2 * sizeof(unsigned), cage.creases.size()));
-      auto* weights = static_cast<float*>(rtcSetNewGeometryBuffer(
-          geometry, RTC_BUFFER_TYPE_EDGE_CREASE_WEIGHT, 0, RTC_FORMAT_FLOAT, sizeof(float), cage.creases.size()));
-      for (std::size_t i = 0; i < cage.creases.size(); ++i) {
-        pairs[2 * i] = unsigned(cage.creases[i].v0);
-        pairs[2 * i + 1] = unsigned(cage.creases[i].v1);
-        weights[i] = sharpness(cage.creases[i].sharpness);
-      }
-    }
-    if (!cage.corners.empty()) {
-      auto* ids = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-          geometry, RTC_BUFFER_TYPE_VERTEX_CREASE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned), cage.corners.size()));
-      auto* weights = static_cast<float*>(rtcSetNewGeometryBuffer(
-          geometry, RTC_BUFFER_TYPE_VERTEX_CREASE_WEIGHT, 0, RTC_FORMAT_FLOAT, sizeof(float), cage.corners.size()));
-      for (std::size_t i = 0; i < cage.corners.size(); ++i) {
-        ids[i] = unsigned(cage.corners[i].vertex);
-        weights[i] = sharpness(cage.corners[i].sharpness);
-      }
-    }
-    if (!cage.holes.empty()) {
-      auto* holes = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_HOLE, 0, RTC_FORMAT_UINT,
-                                                                   sizeof(unsigned), cage.holes.size()));
-      for (std::size_t i = 0; i < cage.holes.size(); ++i) holes[i] = unsigned(cage.holes[i]);
-    }
-    switch (cage.options.boundary) {
-      case facet::scene::BoundaryInterpolation::None:
-        rtcSetGeometrySubdivisionMode(geometry, 0, RTC_SUBDIVISION_MODE_NO_BOUNDARY);
-        break;
-      case facet::scene::BoundaryInterpolation::EdgeOnly:
-        rtcSetGeometrySubdivisionMode(geometry, 0, RTC_SUBDIVISION_MODE_SMOOTH_BOUNDARY);
-        break;
-      case facet::scene::BoundaryInterpolation::EdgeAndCorner:
-        rtcSetGeometrySubdivisionMode(geometry, 0, RTC_SUBDIVISION_MODE_PIN_CORNERS);
-        break;
-    }
-    if (cage.options.creasing != facet::scene::CreasingMethod::Uniform)
-      notes = "Chaikin creasing not available in Embree (uniform used)";
-    rtcAttachGeometryByID(scene, geometry, 0);
-  }
-
-  ~Embree() {
-    rtcReleaseGeometry(geometry);
-    rtcReleaseScene(scene);
-    rtcReleaseDevice(device);
-  }
-
-  // Returns the commit (tessellation + BVH build) time in ms.
-  double setRate(int rate) {
-    const double start = nowMs();
-    rtcSetGeometryTessellationRate(geometry, float(rate));
-    rtcCommitGeometry(geometry);
-    rtcCommitScene(scene);
-    return nowMs() - start;
-  }
-
-  // Casts the camera's primary rays with rtcIntersect1 on kThreads threads
-  // (rows handed out in blocks); returns ms, fills the depth image.
-  double castPrimary(const facet::scene::Camera& camera, int size, std::vector<float>& depth) const {
-    depth.assign(std::size_t(size) * std::size_t(size), std::numeric_limits<float>::infinity());
-    const facet::camera::CameraFrame frame = facet::camera::cameraFrame(camera, size, size);
-    std::atomic<int> nextRow{0};
-    constexpr int kRowsPerBlock = 8;
-    auto work = [&] {
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
-      for (;;) {
-        const int row0 = nextRow.fetch_add(kRowsPerBlock);
-        if (row0 >= size) break;
-        for (int y = row0; y < std::min(size, row0 + kRowsPerBlock); ++y) {
-          for (int x = 0; x < size; ++x) {
-            const glm::dvec3 d =
-                facet::camera::camera_ray_direction(frame, x + 0.5, y + 0.5, double(size), double(size));
-            RTCRayHit rh;
-            rh.ray.org_x = float(camera.eye.x);
-            rh.ray.org_y = float(camera.eye.y);
-            rh.ray.org_z = float(camera.eye.z);
-            rh.ray.tnear = 0.0f;
-            rh.ray.dir_x = float(d.x);
-            rh.ray.dir_y = float(d.y);
-            rh.ray.dir_z = float(d.z);
-            rh.ray.time = 0.0f;
-            rh.ray.tfar = std::numeric_limits<float>::infinity();
-            rh.ray.mask = 0xFFFFFFFFu;
-            rh.ray.id = 0;
-            rh.ray.flags = 0;
-            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-            rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-            rtcIntersect1(scene, &context, &rh);
-            if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) depth[std::size_t(y) * std::size_t(size) + x] = rh.ray.tfar;
-          }
-        }
-      }
-    };
-    const double start = nowMs();
-    std::vector<std::thread> threads;
-    for (int t = 0; t < kThreads; ++t) threads.emplace_back(work);
-    for (std::thread& t : threads) t.join();
-    return nowMs() - start;
-  }
-};
-#endif
-
 // ---------------------------------------------------------------- matching
 
 // Among `candidates`, the Embree row whose mean depth error is the largest not
@@ -458,7 +316,7 @@ int main(int argc, char** argv) {
 
     for (const NamedCage& cage : cages) {
 #if FACET_HAVE_EMBREE
-      Embree embree(cage.cage);
+      facet::peers::EmbreeSubdivision embree(cage.cage, kThreads);
       std::vector<int> rates;
       for (int rate : allRates)
         if (double(cage.cage.faceCount()) * rate * rate <= kEmbreeGridBudget) rates.push_back(rate);
@@ -497,9 +355,9 @@ int main(int argc, char** argv) {
 
 #if FACET_HAVE_EMBREE
         for (std::size_t r = 0; r < rates.size(); ++r) {
-          commitMs[r] = embree.setRate(rates[r]);
+          commitMs[r] = embree.setTessellationRate(rates[r]);
           std::vector<double> times;
-          for (int rep = 0; rep < 3; ++rep) times.push_back(embree.castPrimary(scene.camera, size, depth));
+          for (int rep = 0; rep < 3; ++rep) times.push_back(embree.castPrimary(scene.camera, size, size, depth));
           std::sort(times.begin(), times.end());
           Row row;
           row.cage = cage.name;
@@ -513,7 +371,7 @@ int main(int argc, char** argv) {
           row.primaryRays = std::uint64_t(size) * std::uint64_t(size);
           row.error = depthError(depth, referenceDepth);
           row.stages = "commit=" + fmt(commitMs[r], "%.2f") + ";intersect(median of 3)=" + fmt(times[1], "%.2f") + ";";
-          row.note = embree.notes;
+          row.note = embree.notes();
           rows.push_back(row);
         }
 #endif

@@ -5,6 +5,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -61,6 +62,11 @@ struct RenderSettings {
   // levels (see chooseRefinement).
   double pixelTolerance = 0.5;
   std::optional<int> tessellationRate;  // overrides the choice from pixelTolerance
+  // Exact method: the largest distance from the ray at which a root is
+  // accepted, as a fraction of the scene's bounding-box diagonal. Unset: 1e-9
+  // of each object's diagonal on the CPU; the GPU never goes below 8 float
+  // ulps of the scene's largest coordinate (docs/rendering.md).
+  std::optional<double> exactTolerance;
 };
 
 // How an environment lights the surface (docs/rendering.md, "Image-based
@@ -82,6 +88,9 @@ struct Environment {
   IblMethod method = IblMethod::Prefiltered;
   int samples = 16;  // sampled: pairs per camera sample
   bool occlusion = true;
+  // Sampled: which random numbers (compute/shared/environment.h); renders
+  // with different seeds are statistically independent.
+  std::uint32_t seed = 0;
 };
 
 struct Object {

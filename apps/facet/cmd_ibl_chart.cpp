@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench.h"
 #include "commands.h"
 #include "engine/image/image_io.h"
 #include "engine/renderer.h"
@@ -53,52 +54,6 @@ struct Point {
   double relativeRmse = 0;
   double maxAbsError = 0;
 };
-
-struct Error {
-  double relativeRmse = 0;
-  double maxAbsError = 0;
-};
-
-// Over the pixels the geometry covers only: a camera ray that misses looks
-// the environment up directly, identically for both methods, and the sky
-// (the sun at ~3e4 on sunrise) would otherwise set the scale of the error.
-Error compare(const Image& image, const Image& reference) {
-  double squared = 0, sum = 0, maxAbs = 0;
-  std::size_t count = 0;
-  for (std::size_t i = 0; i < reference.pixelCount(); ++i) {
-    if (reference.beauty[i].a <= 0) continue;
-    for (int c = 0; c < 3; ++c) {
-      const double difference = double(image.beauty[i][c]) - double(reference.beauty[i][c]);
-      squared += difference * difference;
-      sum += reference.beauty[i][c];
-      maxAbs = std::max(maxAbs, std::abs(difference));
-      ++count;
-    }
-  }
-  if (count == 0 || sum <= 0) throw std::runtime_error("ibl-chart: the reference image covers no lit pixel");
-  return {std::sqrt(squared / double(count)) / (sum / double(count)), maxAbs};
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-// The cost of lighting the image: every stage but refinement and the
-// environment's preparation, which the CSV reports on its own.
-double traceMilliseconds(const RenderReport& report) {
-  double total = 0;
-  for (const StageTime& stage : report.stages)
-    if (stage.name != "refine + BVH" && stage.name != "environment") total += stage.milliseconds;
-  return total;
-}
-
-double preparationMilliseconds(const RenderReport& report) {
-  for (const StageTime& stage : report.stages)
-    if (stage.name == "environment") return stage.milliseconds;
-  return 0;
-}
 
 std::vector<double> parseAlphas(const std::string& text) {
   std::vector<double> alphas;
@@ -148,16 +103,15 @@ void writeComparison(const fs::path& path, const Image& reference, const Image& 
 }
 
 void writeCsv(const fs::path& path, const std::vector<Point>& points) {
-  writeAtomically(path, [&](const fs::path& temporary) {
-    std::ofstream csv(temporary);
-    csv << "setup,alpha,method,samples,milliseconds,prep_milliseconds,relative_rmse,max_abs_error\n";
-    for (const Point& p : points)
-      csv << p.setup << "," << formatNumber(p.alpha) << "," << (p.sampled ? "sampled" : "prefiltered") << ","
-          << (p.sampled ? std::to_string(p.samples) : "") << "," << formatNumber(p.milliseconds) << ","
-          << formatNumber(p.prepMilliseconds) << "," << formatNumber(p.relativeRmse) << ","
-          << formatNumber(p.maxAbsError) << "\n";
-    if (!csv.flush()) throw std::runtime_error("cannot write " + path.string());
-  });
+  std::vector<std::vector<std::string>> rows;
+  for (const Point& p : points)
+    rows.push_back({p.setup, formatNumber(p.alpha), p.sampled ? "sampled" : "prefiltered",
+                    p.sampled ? std::to_string(p.samples) : "", formatNumber(p.milliseconds),
+                    formatNumber(p.prepMilliseconds), formatNumber(p.relativeRmse), formatNumber(p.maxAbsError)});
+  bench::writeCsv(
+      path,
+      {"setup", "alpha", "method", "samples", "milliseconds", "prep_milliseconds", "relative_rmse", "max_abs_error"},
+      rows);
 }
 
 // One panel per setup; per alpha a colour, sampled as a line through its N
@@ -240,32 +194,37 @@ void runIblChart(ChartOptions o) {
         scene.environment->samples = samples;
         return render(scene, on, {}, o.adapter);
       };
+      // Its own random numbers: sharing the estimates' would under-report their error.
+      scene.environment->seed = 1;
       const RenderReport reference = renderWith(scene::IblMethod::Sampled, referenceSamples, backend);
+      scene.environment->seed = 0;
       // Untimed first runs: they compile each method's kernels and warm the
       // prefilter's disk cache.
       renderWith(scene::IblMethod::Sampled, 1, backend);
       const RenderReport firstPrefiltered = renderWith(scene::IblMethod::Prefiltered, 1, backend);
       std::printf("%s, alpha %g: reference N=%d %.0f ms; first prefiltered run: preparation %.1f ms\n", setup.c_str(),
-                  alpha, referenceSamples, traceMilliseconds(reference), preparationMilliseconds(firstPrefiltered));
+                  alpha, referenceSamples, bench::traceMilliseconds(reference),
+                  bench::preparationMilliseconds(firstPrefiltered));
 
       auto measure = [&](scene::IblMethod method, int samples) {
         std::vector<double> times, preparations;
         Image image;
         for (int r = 0; r < o.repeats; ++r) {
           RenderReport report = renderWith(method, samples, backend);
-          times.push_back(traceMilliseconds(report));
-          preparations.push_back(preparationMilliseconds(report));
+          times.push_back(bench::traceMilliseconds(report));
+          preparations.push_back(bench::preparationMilliseconds(report));
           if (r == 0) image = std::move(report.image);
         }
-        const Error error = compare(image, reference.image);
+        const bench::ImageError error = bench::compareToReference(image, reference.image);
+        if (error.compared == 0) throw std::runtime_error("ibl-chart: the reference image covers no pixel");
         Point p{setup,
                 alpha,
                 method == scene::IblMethod::Sampled,
                 samples,
-                median(times),
-                median(preparations),
+                bench::median(times),
+                bench::median(preparations),
                 error.relativeRmse,
-                error.maxAbsError};
+                error.maxAbsolute};
         std::printf("  %-18s %9.1f ms  (+%.1f ms preparation)  relative RMSE %.3g  max |error| %.3g\n",
                     p.sampled ? ("sampled N=" + std::to_string(samples)).c_str() : "prefiltered", p.milliseconds,
                     p.prepMilliseconds, p.relativeRmse, p.maxAbsError);

@@ -73,6 +73,10 @@ void applyEnvironmentOverrides(const RenderOptions& o, scene::Scene& scene) {
         "--env-intensity, --env-rotation, --ibl, --ibl-samples and --occlusion need an environment: give --env FILE "
         "or an \"environment\" block in the scene");
   scene::Environment& e = *scene.environment;
+  // CLI11's ranges let NaN through (every comparison with it is false).
+  for (const auto& [flag, value] :
+       {std::pair{"--env-intensity", o.environmentIntensity}, std::pair{"--env-rotation", o.environmentRotation}})
+    if (value && !std::isfinite(*value)) throw std::invalid_argument(std::string(flag) + ": must be a finite number");
   if (o.environmentIntensity) e.intensity = *o.environmentIntensity;
   if (o.environmentRotation) e.rotationDegrees = *o.environmentRotation;
   if (!o.ibl.empty()) e.method = o.ibl == "sampled" ? scene::IblMethod::Sampled : scene::IblMethod::Prefiltered;

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   facet::cli::addBrdfPrecisionCommand(app);
   facet::cli::addParityCommand(app);
   facet::cli::addIblChartCommand(app);
+  facet::cli::addBenchCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

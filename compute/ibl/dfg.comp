@@ -1,4 +1,4 @@
-// One DFG table: entry (i, j) at n.v = (i + 1/2) / size and sqrt(alpha) =
+// One DFG table: entry (i, j) at n.v = (i + 1) / size and sqrt(alpha) =
 // j / (size - 1) (engine/ibl/prefiltered_environment.h). The BRDF models are
 // specialization constants, so each (D, G) pair keeps only its branches.
 #version 460

@@ -92,6 +92,10 @@ uint shade_environment(uint first, uint pixel, uint sample_index, uint material,
                        vec3 n, vec3 ng, vec3 v) {
   if (ENVIRONMENT == 2) {
     float nv = dot(n, v);
+    if (nv <= COS_EPSILON) {  // nothing to look up (the lobe may not even exist)
+      write_unshadowed(first, vec3(0.0));
+      return 0u;
+    }
     vec3 lobe = split_sum_direction(n, v, params.alpha);
     vec3 radiance = split_sum(params, nv, prefiltered_radiance(to_map(lobe), params.alpha),
                               dfg_lookup(materials[material].dfgTable, nv, params.alpha),
@@ -102,10 +106,11 @@ uint shade_environment(uint first, uint pixel, uint sample_index, uint material,
   uint traced = 0u;
   vec3 unshadowed = vec3(0.0);
   for (uint k = 0u; k < frame.environmentSamples; ++k) {
-    uint d = k * IBL_DIMENSIONS;
-    vec4 u = vec4(sample_uniform(pixel, sample_index, d), sample_uniform(pixel, sample_index, d + 1u),
-                  sample_uniform(pixel, sample_index, d + 2u), sample_uniform(pixel, sample_index, d + 3u));
-    vec4 e = sample_environment(u);
+    uint d = ibl_dimension(frame.environmentSeed, k, 0u);
+    vec4 e = sample_environment(sample_bits(pixel, sample_index, d),
+                                vec3(sample_uniform(pixel, sample_index, d + 1u),
+                                     sample_uniform(pixel, sample_index, d + 2u),
+                                     sample_uniform(pixel, sample_index, d + 3u)));
     vec3 le = from_map(e.xyz);
     traced += environment_sample(first + 2u * k, params, position, n, ng, v, le, e.w,
                                  brdf_lobes_pdf(params, n, le, v), unshadowed);
@@ -193,11 +198,14 @@ void main() {
     if (lit) ++traced;
   }
   if (ENVIRONMENT != 0) {
+    // Every environment slot is written exactly once either way: the loops
+    // of one invocation count against lavapipe's limit of 65535.
     uint first = firstSlot + uint(LIGHT_COUNT);
-    for (uint slot = first; slot < firstSlot + frame.slotsPerRay; ++slot) write_unshadowed(slot, vec3(0.0));
     if (shaded)
       traced += shade_environment(first, frame.firstPixel + pixel, sample_index, range.material, params, position,
                                   n, ng, v);
+    else
+      for (uint slot = first; slot < firstSlot + frame.slotsPerRay; ++slot) write_unshadowed(slot, vec3(0.0));
   }
   if (traced > 0u) atomicAdd(shadowRayCount, traced);
 }

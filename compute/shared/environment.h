@@ -73,8 +73,8 @@ FACET_FN BilinearTaps environment_bilinear(vec2 uv, int width, int height) {
   BilinearTaps b;
   b.fx = x - xf;
   b.fy = y - yf;
-  int xi = int(xf);
-  b.x0 = ((xi % width) + width) % width;
+  int xi = int(xf);  // >= -1: uv.x >= 0
+  b.x0 = xi < 0 ? xi + width : xi % width;
   b.x1 = (b.x0 + 1) % width;
   b.y0 = int(yf);
   b.y1 = min(b.y0 + 1, height - 1);
@@ -204,24 +204,35 @@ FACET_FN vec3 split_sum(BrdfParams p, real nv, vec3 prefiltered, vec2 dfg, vec3 
 }
 
 // Random dimensions one environment/BRDF pair of the sampled method uses:
-// 4 for the environment sample (texel, alias, position in the texel), 3 for
-// the BRDF sample (lobe, direction). Pair k uses k * IBL_DIMENSIONS + 0...6.
+// 4 for the environment sample (texel as 32 bits, alias, position in the
+// texel), 3 for the BRDF sample (lobe, direction). Pair k of seed s uses
+// IBL_DIMENSIONS (s IBL_MAX_SAMPLES + k) + 0...6: a different seed draws
+// numbers independent of seed 0's (a reference that shares its numbers
+// with the estimate it judges would under-report the estimate's error).
 const uint IBL_DIMENSIONS = 7u;
+const uint IBL_MAX_SAMPLES = 16384u;
 
-// Base-2 radical inverse of i >= 0 (van der Corput). Paired with (i + 1/2)
-// / n it makes Hammersley's points: for n = 2^m a (0, m, 2)-net, every
-// elementary box of area 1/n holds exactly one point, so the samples are
-// stratified and the same on every run and both backends. Both coordinates
-// sit at the middle of their 1/n cells: the radical inverse alone starts at
-// 0 and would bias every integral by half a cell (5e-4 in DFG at n = 1024).
+FACET_FN uint ibl_dimension(uint seed, uint pair, uint d) {
+  return IBL_DIMENSIONS * (seed * IBL_MAX_SAMPLES + pair) + d;
+}
+
+// Base-2 radical inverse of i >= 0 (van der Corput): its bits mirrored
+// about the binary point, by swapping halves, bytes, nibbles, pairs and
+// bits — no loop, so a kernel's sample loop stays far from lavapipe's limit
+// of 65535 iterations per invocation. Paired with (i + 1/2) / n it makes
+// Hammersley's points: for n = 2^m a (0, m, 2)-net, every elementary box of
+// area 1/n holds exactly one point, so the samples are stratified and the
+// same on every run and both backends. Both coordinates sit at the middle of
+// their 1/n cells: the radical inverse alone starts at 0 and would bias
+// every integral by half a cell (5e-4 in DFG at n = 1024).
 FACET_FN real radical_inverse_base2(int i) {
-  real inverse = real(0);
-  real digit = real(0.5);
-  for (int k = i; k > 0; k /= 2) {
-    if (k % 2 == 1) inverse += digit;
-    digit *= real(0.5);
-  }
-  return inverse;
+  uint bits = uint(i);
+  bits = (bits << 16u) | (bits >> 16u);
+  bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
+  bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
+  bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
+  bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
+  return real(bits) * real(2.3283064365386963e-10);
 }
 
 FACET_FN vec2 hammersley_point(int i, int n) {

@@ -11,9 +11,13 @@ FACET_FN uint pcg_hash(uint value) {
   return (word >> 22u) ^ word;
 }
 
-// A number in [0, 1) with 24 random bits: exact in float and in double, so
+// The 32 random bits of (pixel, sample, dimension).
+FACET_FN uint sample_bits(uint pixel, uint sample_index, uint dimension) {
+  return pcg_hash(pixel ^ pcg_hash(sample_index ^ pcg_hash(dimension)));
+}
+
+// A number in [0, 1) with 24 of those bits: exact in float and in double, so
 // both backends start from the same value.
 FACET_FN real sample_uniform(uint pixel, uint sample_index, uint dimension) {
-  uint bits = pcg_hash(pixel ^ pcg_hash(sample_index ^ pcg_hash(dimension)));
-  return real(bits >> 8u) * real(5.9604644775390625e-8);
+  return real(sample_bits(pixel, sample_index, dimension) >> 8u) * real(5.9604644775390625e-8);
 }

@@ -119,11 +119,12 @@ struct FrameParams {
   float shadowOffset;  // 1e-6 x the scene diagonal (docs/rendering.md)
   uint slotsPerRay;    // shadow-ray slots per camera ray: one per light, then the environment's
   // The environment (compute/raycast/environment.glsl); offsets count floats
-  // in the environment data buffer, whose texels start at 0.
+  // in the environment tables buffer (the map's texels have their own).
   float environmentIntensity;
   float environmentCosRotation;
   float environmentSinRotation;
   uint environmentSamples;  // sampled: pairs per camera sample
+  uint environmentSeed;
   uint environmentWidth;
   uint environmentHeight;
   uint keepOffset;      // sampled: the alias table's keep probabilities, width x height floats
@@ -134,12 +135,12 @@ struct FrameParams {
   uint dfgSize;
 };
 
-// One prefiltered radiance level in the environment data buffer.
+// One prefiltered radiance level in the environment tables buffer (level 0,
+// the map itself, is read from the texels buffer).
 struct EnvironmentLevel {
   uint offset;
   uint width;
   uint height;
-  float alpha;
 };
 
 // The AOVs of one pixel (beauty is written separately, as a vec4).

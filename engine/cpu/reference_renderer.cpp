@@ -32,6 +32,12 @@ class ReferenceScene {
   ReferenceScene(const scene::Scene& scene, const scene::SceneGeometry& geometry,
                  const ibl::EnvironmentLighting* environment)
       : scene_(scene), geometry_(geometry), environment_(environment), epsilon_(1e-6 * geometry.bounds.diagonal()) {
+    // A coarser root tolerance moves hits off the surface by as much: shadow
+    // rays leave by 32 tolerances then, as on the GPU (gpu_renderer.h).
+    if (scene.render.exactTolerance) {
+      exactSettings_.tolerance = *scene.render.exactTolerance * geometry.bounds.diagonal();
+      epsilon_ = std::max(epsilon_, 32 * exactSettings_.tolerance);
+    }
     int patches = 0, faces = 0;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
       patchOffset_.push_back(patches);
@@ -51,7 +57,7 @@ class ReferenceScene {
     for (std::size_t i = 0; i < geometry_.objects.size(); ++i) {
       const scene::ObjectGeometry& o = geometry_.objects[i];
       std::optional<SurfaceHit> hit = tessellations_.empty()
-                                          ? intersectExact(o.surface, o.bvh, ray)
+                                          ? intersectExact(o.surface, o.bvh, ray, exactSettings_)
                                           : intersectTessellated(o.surface, o.bvh, tessellations_[i], ray);
       if (!hit) continue;
       nearest = SceneHit{*hit, int(i)};
@@ -148,10 +154,10 @@ class ReferenceScene {
     };
     glm::dvec3 sum(0.0);
     for (int k = 0; k < environment.samples; ++k) {
-      auto u = [&](std::uint32_t dimension) {
-        return m::sample_uniform(pixel, sample, std::uint32_t(k) * m::IBL_DIMENSIONS + dimension);
-      };
-      const ibl::EnvironmentSample e = ibl::sampleEnvironment(distribution, glm::dvec4(u(0), u(1), u(2), u(3)));
+      const std::uint32_t d = m::ibl_dimension(environment.seed, std::uint32_t(k), 0);
+      auto u = [&](std::uint32_t dimension) { return m::sample_uniform(pixel, sample, d + dimension); };
+      const ibl::EnvironmentSample e =
+          ibl::sampleEnvironment(distribution, m::sample_bits(pixel, sample, d), glm::dvec3(u(1), u(2), u(3)));
       const glm::dvec3 le = m::environment_from_map(e.direction, environment_->cosRotation, environment_->sinRotation);
       sum += contribution(le, e.pdf, m::brdf_lobes_pdf(params, n, le, v));
       const glm::dvec3 lb = m::sample_brdf_lobes(params, n, v, glm::dvec3(u(4), u(5), u(6)));
@@ -164,6 +170,7 @@ class ReferenceScene {
                                     const glm::dvec3& v) const {
     const ibl::PrefilteredEnvironment& prefiltered = environment_->prefiltered;
     const double nv = glm::dot(n, v);
+    if (nv <= m::COS_EPSILON) return glm::dvec3(0.0);  // nothing to look up (the lobe may not even exist)
     const glm::dvec3 lobe = m::split_sum_direction(n, v, params.alpha);
     return environment_->environment->intensity *
            m::split_sum(params, nv, ibl::prefilteredRadiance(prefiltered, toMap(lobe), params.alpha),
@@ -185,6 +192,7 @@ class ReferenceScene {
   const scene::SceneGeometry& geometry_;
   const ibl::EnvironmentLighting* environment_;
   double epsilon_;
+  ExactSettings exactSettings_;
   std::vector<int> patchOffset_, faceOffset_;
   std::vector<TessellatedSurface> tessellations_;
   std::vector<materials::f64::BrdfParams> params_;

@@ -29,8 +29,9 @@ constexpr double kShadowOffsetInTolerances = 32;
 // Bands of pixels keep each ray buffer within this (lavapipe binds at most 128 MiB).
 constexpr std::uint64_t kMaxRayBufferBytes = std::uint64_t(64) << 20;
 
-enum Stage { kDice, kRaygen, kIntersect, kSurface, kShadow, kResolve, kStageCount };
-const char* const kStageNames[kStageCount] = {"dice", "raygen", "intersect", "surface", "shadow rays", "resolve"};
+enum Stage { kDice, kRaygen, kIntersect, kSurface, kShadow, kGather, kResolve, kStageCount };
+const char* const kStageNames[kStageCount] = {"dice",        "raygen", "intersect", "surface",
+                                              "shadow rays", "gather", "resolve"};
 
 // A 2D grid of 64-wide workgroups covering `invocations` (kernels index with
 // invocation_index()).
@@ -113,10 +114,11 @@ std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
   return records;
 }
 
-// Everything the environment's kernels read, in one float array, with its
-// offsets and sizes set in `frame` (compute/raycast/environment.glsl).
+// Everything the environment's kernels read (compute/raycast/environment.glsl),
+// with its offsets and sizes set in `frame`: the map's texels, and in one
+// float array what is derived from it.
 struct EnvironmentData {
-  std::vector<float> values;
+  std::vector<float> tables;
   std::vector<std::uint32_t> alias;  // sampled: the alias table's other texel
   std::vector<layout::EnvironmentLevel> levels;
 };
@@ -125,14 +127,14 @@ EnvironmentData environmentData(const ibl::EnvironmentLighting& lighting, layout
   const scene::Environment& environment = *lighting.environment;
   const scene::EnvironmentMap& map = *environment.map;
   EnvironmentData data;
-  std::vector<float>& v = data.values;
-  auto offset = [&] { return std::uint32_t(v.size()); };
-  auto append = [&](const auto& values) { v.insert(v.end(), values.begin(), values.end()); };
-  v = map.rgb;
+  std::vector<float>& t = data.tables;
+  auto offset = [&] { return std::uint32_t(t.size()); };
+  auto append = [&](const auto& values) { t.insert(t.end(), values.begin(), values.end()); };
   frame.environmentIntensity = float(environment.intensity);
   frame.environmentCosRotation = float(lighting.cosRotation);
   frame.environmentSinRotation = float(lighting.sinRotation);
   frame.environmentSamples = std::uint32_t(environment.samples);
+  frame.environmentSeed = environment.seed;
   frame.environmentWidth = std::uint32_t(map.width);
   frame.environmentHeight = std::uint32_t(map.height);
   if (environment.method == scene::IblMethod::Sampled) {
@@ -145,15 +147,17 @@ EnvironmentData environmentData(const ibl::EnvironmentLighting& lighting, layout
     return data;
   }
   const ibl::PrefilteredEnvironment& p = lighting.prefiltered;
-  for (const ibl::RadianceLevel& level : p.levels) {
-    data.levels.push_back({offset(), std::uint32_t(level.width), std::uint32_t(level.height), float(level.alpha)});
+  data.levels.push_back({0, std::uint32_t(map.width), std::uint32_t(map.height)});  // read from the texels
+  for (std::size_t i = 1; i < p.levels.size(); ++i) {
+    const ibl::RadianceLevel& level = p.levels[i];
+    data.levels.push_back({offset(), std::uint32_t(level.width), std::uint32_t(level.height)});
     append(level.rgb);
   }
   frame.levelCount = std::uint32_t(p.levels.size());
   frame.shOffset = offset();
-  for (const glm::dvec3& c : p.irradianceSh) v.insert(v.end(), {float(c.r), float(c.g), float(c.b)});
+  for (const glm::dvec3& c : p.irradianceSh) t.insert(t.end(), {float(c.r), float(c.g), float(c.b)});
   frame.dfgOffset = offset();
-  frame.dfgSize = std::uint32_t(p.dfg.front().size);
+  frame.dfgSize = p.dfg.empty() ? 0 : std::uint32_t(p.dfg.front().size);
   for (const ibl::DfgTable& table : p.dfg) append(table.scaleBias);
   return data;
 }
@@ -215,7 +219,8 @@ layout::FrameParams frameParams(const scene::Scene& scene, const scene::SceneGeo
   for (int axis = 0; axis < 3; ++axis)
     largestCoordinate = std::max({largestCoordinate, std::abs(geometry.bounds.lo[axis]),
                                   std::abs(geometry.bounds.hi[axis]), std::abs(scene.camera.eye[axis])});
-  const double tolerance = std::max(1e-9 * diagonal, std::ldexp(largestCoordinate, -20));
+  const double tolerance =
+      std::max(scene.render.exactTolerance.value_or(1e-9) * diagonal, std::ldexp(largestCoordinate, -20));
   f.tolerance = float(tolerance);
   f.minimumPiece = float(std::max(4 * tolerance, 1e-6 * diagonal));
   f.shadowOffset = float(std::max(1e-6 * diagonal, kShadowOffsetInTolerances * tolerance));
@@ -225,11 +230,10 @@ layout::FrameParams frameParams(const scene::Scene& scene, const scene::SceneGeo
 }  // namespace
 
 GpuRenderer::GpuRenderer(gpu::Device& device) : device_(device) {
-  const std::pair<const char*, std::span<const std::uint32_t>> kernels[] = {{"dice", raycast::spirv::dice},
-                                                                            {"raygen", raycast::spirv::raygen},
-                                                                            {"intersect", raycast::spirv::intersect},
-                                                                            {"surface", raycast::spirv::surface},
-                                                                            {"resolve", raycast::spirv::resolve}};
+  const std::pair<const char*, std::span<const std::uint32_t>> kernels[] = {
+      {"dice", raycast::spirv::dice},           {"raygen", raycast::spirv::raygen},
+      {"intersect", raycast::spirv::intersect}, {"surface", raycast::spirv::surface},
+      {"gather", raycast::spirv::gather},       {"resolve", raycast::spirv::resolve}};
   for (const auto& [name, code] : kernels) modules_.emplace(name, device_.createShaderModule({name, code}));
 }
 
@@ -258,7 +262,8 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
     lighting =
         ibl::prepareEnvironmentLighting(scene, [&](const scene::EnvironmentMap& map, const ibl::ModelPairs& models) {
           const ibl::PrefilterSettings settings;
-          return ibl::cachedPrefilter(map, models, settings, "gpu",
+          // Keyed by the device too: its limits decide how large a map it prefilters whole.
+          return ibl::cachedPrefilter(map, models, settings, "gpu " + d.adapterInfo().name,
                                       [&] { return prefilterOnGpu(d, map, models, settings); });
         });
 
@@ -282,7 +287,17 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   gpu::Buffer points = upload(d, "patch points", arrays.points, in);
   gpu::Buffer objects = upload(d, "object ranges", arrays.objects, in);
   gpu::Buffer materialBuffer = upload(d, "materials", materialRecords(scene, lighting ? &*lighting : nullptr), in);
-  gpu::Buffer environmentBuffer = upload(d, "environment", environment.values, in);
+  const std::vector<float> noTexels;
+  const std::vector<float>& texels = lighting ? scene.environment->map->rgb : noTexels;
+  for (const auto& [name, bytes] : {std::pair{"the environment map's texels", texels.size() * sizeof(float)},
+                                    std::pair{"the environment's tables", environment.tables.size() * sizeof(float)}})
+    if (bytes > d.limits().maxStorageBufferBindingSize)
+      throw gpu::Error(name + std::string(" need ") + std::to_string(bytes >> 20) + " MiB in one binding; " +
+                       d.adapterInfo().name + " binds at most " +
+                       std::to_string(d.limits().maxStorageBufferBindingSize >> 20) +
+                       " MiB: use a smaller map (4096 x 2048 fits lavapipe)");
+  gpu::Buffer texelBuffer = upload(d, "environment texels", texels, in);
+  gpu::Buffer tableBuffer = upload(d, "environment tables", environment.tables, in);
   gpu::Buffer levelBuffer = upload(d, "environment levels", environment.levels, in);
   gpu::Buffer aliasBuffer = upload(d, "environment aliases", environment.alias, in);
   gpu::Buffer lightBuffer = upload(d, "lights", lightRecords(scene), in);
@@ -299,6 +314,7 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   gpu::Buffer shadowHits = storage(d, "shadow hits", bandRays * frame.slotsPerRay * sizeof(layout::HitRecord));
   gpu::Buffer contributions = storage(d, "light contributions", bandRays * frame.slotsPerRay * 16);
   gpu::Buffer aovs = storage(d, "AOVs", bandPixels * sizeof(layout::PixelAovs), BufferUsage::CopySrc);
+  gpu::Buffer rayRadiance = storage(d, "camera ray radiance", bandRays * 16);
   gpu::Buffer beauty = storage(d, "beauty", bandPixels * 16, BufferUsage::CopySrc);
   gpu::Buffer counters = storage(d, "shadow ray counter", 16, BufferUsage::CopyDst | BufferUsage::CopySrc);
   gpu::Buffer aovsHost = d.createBuffer({"AOVs readback", aovs.size(), BufferUsage::MapRead | BufferUsage::CopyDst});
@@ -332,6 +348,7 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
                            {"D_MODEL", sharedModel(scene, &materials::Material::distribution)},
                            {"G_MODEL", sharedModel(scene, &materials::Material::geometry)},
                            {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)}});
+  gpu::ComputePipeline& gather = pipeline("gather", {});
   gpu::ComputePipeline& resolve = pipeline("resolve", {});
   gpu::BindGroup raygenGroup = bindGroup(raygen, "raygen", {{0, &frameBuffer}, {8, &rays}});
   auto intersectGroup = [&](const char* label, gpu::Buffer& rayBuffer, gpu::Buffer& hitBuffer, gpu::Buffer& count) {
@@ -354,11 +371,13 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
                                                      {14, &shadowRays},
                                                      {15, &contributions},
                                                      {16, &counters},
-                                                     {19, &environmentBuffer},
+                                                     {19, &texelBuffer},
                                                      {20, &levelBuffer},
-                                                     {21, &aliasBuffer}}));
-  gpu::BindGroup resolveGroup = bindGroup(
-      resolve, "resolve", {{0, &frameBuffer}, {9, &hits}, {15, &contributions}, {17, &shadowHits}, {18, &beauty}});
+                                                     {21, &aliasBuffer},
+                                                     {23, &tableBuffer}}));
+  gpu::BindGroup gatherGroup = bindGroup(
+      gather, "gather", {{0, &frameBuffer}, {9, &hits}, {15, &contributions}, {17, &shadowHits}, {22, &rayRadiance}});
+  gpu::BindGroup resolveGroup = bindGroup(resolve, "resolve", {{0, &frameBuffer}, {18, &beauty}, {22, &rayRadiance}});
 
   result.image = Image(width, height);
   double stageNs[kStageCount] = {};
@@ -407,13 +426,14 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
     pass(encoder, kIntersect, intersect, primaryGroup, primary[0]);
     pass(encoder, kSurface, surface, surfaceGroup, primary[0]);
     pass(encoder, kShadow, intersect, shadowGroup, shadow[0]);
+    pass(encoder, kGather, gather, gatherGroup, primary[0]);
     pass(encoder, kResolve, resolve, resolveGroup, count);
     encoder.copyBufferToBuffer(aovs, 0, aovsHost, 0, count * sizeof(layout::PixelAovs));
     encoder.copyBufferToBuffer(beauty, 0, beautyHost, 0, count * 16);
     encoder.copyBufferToBuffer(counters, 0, countersHost, 0, 16);
     d.queue().submit(encoder.finish());
     d.queue().waitIdle();
-    addStageTimes({kRaygen, kIntersect, kSurface, kShadow, kResolve});
+    addStageTimes({kRaygen, kIntersect, kSurface, kShadow, kGather, kResolve});
 
     const auto pixelAovs = aovsHost.mapped<layout::PixelAovs>();
     const auto pixelBeauty = beautyHost.mapped<glm::vec4>();

@@ -14,6 +14,7 @@
 //              rays for the sampled method with occlusion); misses only
 //              look up the environment
 //   shadow     the intersect kernel again, on the shadow rays
+//   gather     per camera ray, the contributions whose shadow rays got through
 //   resolve    beauty and coverage per pixel
 // Large images are rendered in bands of pixels so that no buffer exceeds
 // 64 MiB (lavapipe binds at most 128 MiB).

@@ -124,10 +124,9 @@ scene::EnvironmentMap halved(const scene::EnvironmentMap& map) {
   half.rgb.resize(3 * std::size_t(half.width) * std::size_t(half.height));
   for (int y = 0; y < half.height; ++y)
     for (int x = 0; x < half.width; ++x) {
-      const glm::vec3 box = map.texel(2 * x, 2 * y) + map.texel(2 * x + 1, 2 * y) + map.texel(2 * x, 2 * y + 1) +
-                            map.texel(2 * x + 1, 2 * y + 1);
+      const glm::dvec3 mean = facet::ibl::coarserTexel(map.rgb.data(), map.width, map.height, x, y);
       for (int channel = 0; channel < 3; ++channel)
-        half.rgb[3 * (std::size_t(y) * half.width + x) + channel] = 0.25f * box[channel];
+        half.rgb[3 * (std::size_t(y) * half.width + x) + channel] = float(mean[channel]);
     }
   return half;
 }

@@ -16,6 +16,6 @@ static_assert(sizeof(facet::gpu_layout::RayRecord) == 32);
 static_assert(sizeof(facet::gpu_layout::HitRecord) == 32);
 static_assert(sizeof(facet::gpu_layout::LightRecord) == 48);
 static_assert(sizeof(facet::gpu_layout::MaterialRecord) == 68);
-static_assert(sizeof(facet::gpu_layout::FrameParams) == 148);
+static_assert(sizeof(facet::gpu_layout::FrameParams) == 152);
 static_assert(sizeof(facet::gpu_layout::PixelAovs) == 56);
-static_assert(sizeof(facet::gpu_layout::EnvironmentLevel) == 16);
+static_assert(sizeof(facet::gpu_layout::EnvironmentLevel) == 12);

@@ -81,14 +81,13 @@ EnvironmentDistribution buildDistribution(const scene::EnvironmentMap& map) {
   return d;
 }
 
-EnvironmentSample sampleEnvironment(const EnvironmentDistribution& d, const glm::dvec4& u) {
-  const std::size_t n = d.texelPdf.size();
-  std::size_t texel = std::min(std::size_t(u.x * double(n)), n - 1);
-  if (u.y >= d.keep[texel]) texel = d.alias[texel];
+EnvironmentSample sampleEnvironment(const EnvironmentDistribution& d, std::uint32_t texelBits, const glm::dvec3& u) {
+  std::size_t texel = std::size_t((std::uint64_t(texelBits) * d.texelPdf.size()) >> 32);
+  if (u.x >= d.keep[texel]) texel = d.alias[texel];
   const int x = int(texel % std::size_t(d.width)), y = int(texel / std::size_t(d.width));
   const double cosTop = m::environment_row_cos(y, d.height), cosBottom = m::environment_row_cos(y + 1, d.height);
   EnvironmentSample s;
-  s.direction = m::environment_direction_cos((x + u.z) / d.width, cosTop + u.w * (cosBottom - cosTop));
+  s.direction = m::environment_direction_cos((x + u.y) / d.width, cosTop + u.z * (cosBottom - cosTop));
   s.pdf = d.texelPdf[texel];
   return s;
 }

@@ -18,7 +18,6 @@
 #pragma once
 
 #include <glm/vec3.hpp>
-#include <glm/vec4.hpp>
 
 #include <cstdint>
 #include <vector>
@@ -42,9 +41,12 @@ struct EnvironmentSample {
   double pdf = 0;        // per unit solid angle
 };
 
-// u: four numbers in [0, 1): the texel, keep or alias, and the position
+// `texelBits`: 32 random bits that pick a texel (as the high word of
+// bits x texel count, so that every texel of a map beyond 2^24 texels is
+// reachable); u: numbers in [0, 1) for keep or alias and the position
 // inside the texel.
-EnvironmentSample sampleEnvironment(const EnvironmentDistribution& distribution, const glm::dvec4& u);
+EnvironmentSample sampleEnvironment(const EnvironmentDistribution& distribution, std::uint32_t texelBits,
+                                    const glm::dvec3& u);
 
 // Density of sampleEnvironment at `direction` (map frame).
 double environmentPdf(const EnvironmentDistribution& distribution, const glm::dvec3& direction);

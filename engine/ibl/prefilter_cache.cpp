@@ -27,7 +27,9 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr char kMagic[8] = {'F', 'A', 'C', 'E', 'T', 'I', 'B', 'L'};
-// Bump whenever the file layout or what the builders compute changes.
+// Bump whenever the file layout changes. What the builders compute is
+// keyed by FACET_PREFILTER_FINGERPRINT, a digest of their sources that
+// engine/ibl/CMakeLists.txt takes at configure time.
 constexpr std::uint32_t kFormatVersion = 1;
 
 std::uint64_t fnv1a(const std::string& text) {
@@ -42,9 +44,10 @@ std::uint64_t fnv1a(const std::string& text) {
 std::string keyText(const scene::EnvironmentMap& map, const ModelPairs& models, const PrefilterSettings& settings,
                     const std::string& builder) {
   std::ostringstream key;
-  key << "facet prefiltered environment v" << kFormatVersion << " map " << std::hex << map.contentHash() << std::dec
-      << " levels " << settings.levels << " firstLevelWidth " << settings.firstLevelWidth << " samples "
-      << settings.samples << " dfgSize " << settings.dfgSize << " dfgSamples " << settings.dfgSamples << " models";
+  key << "facet prefiltered environment v" << kFormatVersion << " code " << FACET_PREFILTER_FINGERPRINT << " map "
+      << std::hex << map.contentHash() << std::dec << " levels " << settings.levels << " firstLevelWidth "
+      << settings.firstLevelWidth << " samples " << settings.samples << " dfgSize " << settings.dfgSize
+      << " dfgSamples " << settings.dfgSamples << " models";
   for (const auto& [distribution, geometry] : models) key << " " << distribution << "/" << geometry;
   key << " builder " << builder;
   return key.str();
@@ -91,7 +94,8 @@ class Reader {
   template <class T>
   std::vector<T> getArray(std::uint64_t expectedCount) {
     const auto count = get<std::uint64_t>();
-    if (count != expectedCount || !take(count * sizeof(T))) {
+    // Compared by division: a crafted count times sizeof(T) could wrap.
+    if (count != expectedCount || count > (data_.size() - position_) / sizeof(T) || !take(count * sizeof(T))) {
       ok_ = false;
       return {};
     }
@@ -210,8 +214,11 @@ PrefilteredEnvironment cachedPrefilter(const scene::EnvironmentMap& map, const M
   char name[40];
   std::snprintf(name, sizeof name, "prefiltered-%016llx.bin", static_cast<unsigned long long>(fnv1a(key)));
   const fs::path file = *directory / name;
-  if (const auto data = readFile(file))
-    if (auto stored = deserialize(*data, key)) return std::move(*stored);
+  try {
+    if (const auto data = readFile(file))
+      if (auto stored = deserialize(*data, key)) return std::move(*stored);
+  } catch (const std::exception&) {  // a file too large to hold: a miss like any other bad file
+  }
   PrefilteredEnvironment env = build();
   writeFileAtomically(file, serialize(env, key));
   return env;

@@ -8,6 +8,7 @@
 #include <array>
 #include <vector>
 
+#include "engine/ibl/environment_lookup.h"
 #include "engine/ibl/prefiltered_environment.h"
 
 namespace facet::ibl {
@@ -23,6 +24,17 @@ LevelSize prefilteredLevelSize(const scene::EnvironmentMap& map, const Prefilter
 // The 2x2-box mip chain of a map: levels while both sides halve evenly,
 // down to a single row.
 std::vector<LevelSize> sourceChainSizes(int width, int height);
+
+// Texel (x, y) of the next coarser level of a mip chain: the solid-angle-
+// weighted mean of the 2 x 2 texels it covers (environment_upper_row_share),
+// as downsample.comp computes it.
+template <class Real>
+glm::dvec3 coarserTexel(const Real* finer, int finerWidth, int finerHeight, int x, int y) {
+  const double upper = materials::f64::environment_upper_row_share(y, finerHeight);
+  return 0.5 * (upper * (texelAt(finer, finerWidth, 2 * x, 2 * y) + texelAt(finer, finerWidth, 2 * x + 1, 2 * y)) +
+                (1 - upper) *
+                    (texelAt(finer, finerWidth, 2 * x, 2 * y + 1) + texelAt(finer, finerWidth, 2 * x + 1, 2 * y + 1)));
+}
 
 // Per row y, the radiance summed over the row weighted by each of the five
 // azimuthal integrals of sh_column_integrals (one, sin, cos, cos^2, sin cos).

@@ -92,13 +92,7 @@ std::vector<SourceLevel> sourceChain(const scene::EnvironmentMap& map) {
       level.rgb.resize(3 * std::size_t(size.width) * std::size_t(size.height));
       for (int y = 0; y < size.height; ++y)
         for (int x = 0; x < size.width; ++x) {
-          const int fw = finer.size.width;
-          const double upper = m::environment_upper_row_share(y, finer.size.height);
-          const glm::dvec3 mean =
-              0.5 *
-              (upper * (texelAt(finer.rgb.data(), fw, 2 * x, 2 * y) + texelAt(finer.rgb.data(), fw, 2 * x + 1, 2 * y)) +
-               (1 - upper) * (texelAt(finer.rgb.data(), fw, 2 * x, 2 * y + 1) +
-                              texelAt(finer.rgb.data(), fw, 2 * x + 1, 2 * y + 1)));
+          const glm::dvec3 mean = coarserTexel(finer.rgb.data(), finer.size.width, finer.size.height, x, y);
           for (int channel = 0; channel < 3; ++channel)
             level.rgb[3 * (std::size_t(y) * size.width + x) + channel] = mean[channel];
         }

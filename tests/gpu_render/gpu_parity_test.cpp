@@ -103,7 +103,8 @@ TEST_F(GpuRendererTest, ReportsGpuTimePerStage) {
     names.push_back(name);
     EXPECT_GT(milliseconds, 0.0) << name;
   }
-  EXPECT_EQ(names, (std::vector<std::string>{"dice", "raygen", "intersect", "surface", "shadow rays", "resolve"}));
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"dice", "raygen", "intersect", "surface", "shadow rays", "gather", "resolve"}));
 }
 
 }  // namespace

@@ -1,0 +1,523 @@
+// facet bench, section "stability": where each method fails. Each sweep
+// pushes one condition (grazing view, roughness, valence, crease sharpness,
+// scale, distance from the origin, the environment's dynamic range) and
+// renders small images with every method, each compared against the CPU
+// exact reference (double precision) at the same condition
+// (stability_map.h for what counts as a failure).
+#include <glm/geometric.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bench.h"
+#include "scenes/obj_cage.h"
+#include "scenes/scene_file.h"
+#include "stability_map.h"
+
+namespace facet::cli::bench {
+namespace {
+
+namespace fs = std::filesystem;
+using scene::IblMethod;
+using scene::IntersectionMethod;
+using stability::Cell;
+using stability::Sweep;
+using stability::Tolerance;
+
+constexpr int kTessellationRate = 8;
+// Dense enough that its chords are far below a pixel here: the coverage
+// against which an exact method's misses count as Newton failures.
+constexpr int kCoverageRate = 24;
+
+struct Method {
+  std::string label;
+  Backend backend = Backend::Cpu;
+  IntersectionMethod intersection = IntersectionMethod::Exact;
+  std::string lighting;  // a key the sweep's lighting function understands; "" for its default
+};
+
+std::vector<Method> geometryMethods() {
+  return {{"gpu exact", Backend::Gpu, IntersectionMethod::Exact, ""},
+          {"gpu tess k=8", Backend::Gpu, IntersectionMethod::Tessellated, ""},
+          {"cpu exact", Backend::Cpu, IntersectionMethod::Exact, ""},
+          {"cpu tess k=8", Backend::Cpu, IntersectionMethod::Tessellated, ""}};
+}
+
+// Per-method tolerances: the tessellated method's depth and normal differ
+// from the limit surface by its chord error, which is its design, not a
+// failure. Its bounds are about 1.5x what k = 8 measured on these cages at
+// scale 1 and the origin (depth 3.5e-3, normal 0.065 rad), so that what
+// fails is what the condition broke.
+struct Tolerances {
+  Tolerance exact;
+  Tolerance tessellated{5e-3, 0.1, 5e-2};
+  const Tolerance& of(IntersectionMethod m) const { return m == IntersectionMethod::Exact ? exact : tessellated; }
+};
+
+std::string methodsText(const Tolerances& t) {
+  std::ostringstream text;
+  text << "Tolerances: exact methods depth " << cell(t.exact.depthRelative) << " relative, normal "
+       << cell(t.exact.normalRadians) << " rad, beauty " << cell(t.exact.beautyRelative)
+       << " relative; tessellated (k = " << kTessellationRate << ", chord error included) depth "
+       << cell(t.tessellated.depthRelative) << ", normal " << cell(t.tessellated.normalRadians) << " rad, beauty "
+       << cell(t.tessellated.beautyRelative)
+       << ". A hole is a pixel the reference covers with all 8 neighbours that the method misses; a Newton miss "
+          "a pixel a CPU tessellation at k = "
+       << kCoverageRate << " covers with all 8 neighbours that an exact method misses.";
+  return text.str();
+}
+
+class Runner {
+ public:
+  Runner(const BenchOptions& options) : options_(options), size_(options.quick ? 24 : 128) {}
+
+  int size() const { return size_; }
+  bool quick() const { return options_.quick; }
+  const fs::path& root() const { return options_.root; }
+
+  scene::Scene sceneOf(scene::ControlCage cage) const {
+    scene::Scene scene = scene::sceneFromCage(std::move(cage));
+    scene.render.width = scene.render.height = size_;
+    return scene;
+  }
+
+  Image render(scene::Scene scene, const Method& method, double* milliseconds = nullptr) {
+    scene.render.method = method.intersection;
+    if (method.intersection == IntersectionMethod::Tessellated) scene.render.tessellationRate = kTessellationRate;
+    const auto start = std::chrono::steady_clock::now();
+    RenderReport report = facet::render(scene, method.backend, {}, options_.adapter);
+    if (milliseconds)
+      *milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    ++renders_;
+    return std::move(report.image);
+  }
+
+  // Renders `scene` at column `column` of `sweep` with every method, each
+  // against the CPU exact render with the same lighting. `light` sets a
+  // method's lighting on a copy of the scene; `newton` adds the dense
+  // coverage that Newton misses are counted against; `converged`, when set,
+  // gives the reference each cell's methodError is measured against.
+  void run(Sweep& sweep, std::size_t column, const scene::Scene& scene, const std::vector<Method>& methods,
+           const std::function<void(scene::Scene&, const std::string&)>& light, bool newton,
+           const std::function<Image()>& converged = {}) {
+    struct Timed {
+      Image image;
+      double milliseconds = 0;
+    };
+    std::map<std::string, Timed> references;
+    auto lit = [&](const std::string& lighting) {
+      scene::Scene copy = scene;
+      if (light) light(copy, lighting);
+      return copy;
+    };
+    std::optional<Image> coverage;
+    if (newton) {
+      // Coverage only: no environment to prepare or sample.
+      scene::Scene dense = scene;
+      dense.environment.reset();
+      dense.render.method = IntersectionMethod::Tessellated;
+      dense.render.tessellationRate = kCoverageRate;
+      coverage = facet::render(dense, Backend::Cpu, {}, options_.adapter).image;
+      ++renders_;
+    }
+    std::optional<Image> convergedImage;
+    if (converged) convergedImage = converged();
+    for (const Method& method : methods) {
+      if (!references.count(method.lighting)) {
+        Timed& reference = references[method.lighting];
+        reference.image = render(lit(method.lighting), {"", Backend::Cpu, IntersectionMethod::Exact, method.lighting},
+                                 &reference.milliseconds);
+      }
+      const Timed& reference = references[method.lighting];
+      const bool isReference = method.backend == Backend::Cpu && method.intersection == IntersectionMethod::Exact;
+      double milliseconds = reference.milliseconds;
+      const Image image = isReference ? reference.image : render(lit(method.lighting), method, &milliseconds);
+      const Image* dense = coverage && method.intersection == IntersectionMethod::Exact ? &*coverage : nullptr;
+      Cell c = stability::measure(image, reference.image, dense, tolerances_.of(method.intersection));
+      c.row = method.label;
+      c.column = column;
+      c.milliseconds = milliseconds;
+      if (convergedImage) c.methodError = compareToReference(image, *convergedImage).relativeRmse;
+      sweep.cells.push_back(c);
+    }
+  }
+
+  const Tolerances& tolerances() const { return tolerances_; }
+  int renders() const { return renders_; }
+
+ private:
+  const BenchOptions& options_;
+  int size_;
+  Tolerances tolerances_;
+  int renders_ = 0;
+};
+
+std::vector<std::string> labelsOf(const std::vector<Method>& methods) {
+  std::vector<std::string> labels;
+  for (const Method& m : methods) labels.push_back(m.label);
+  return labels;
+}
+
+std::string shortLabel(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+// A flat open grid in the xz plane, normal +y, 8 x 8 quads over [-6, 6]^2.
+scene::ControlCage planeCage() {
+  std::ostringstream obj;
+  constexpr int n = 8;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) obj << "v " << -6 + 12.0 * i / n << " 0 " << -6 + 12.0 * j / n << "\n";
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i + 1;
+      obj << "f " << a << " " << a + n + 1 << " " << a + n + 2 << " " << a + 1 << "\n";
+    }
+  return scene::parseObjCage(obj.str(), "stability plane");
+}
+
+// A closed quad cage with two poles of valence n on the unit sphere (at
+// +-y); between them two rings of 2n vertices, whose alternate vertices are
+// valence 3 for every n, so only the poles change along the sweep.
+scene::ControlCage poleCage(int n) {
+  std::ostringstream obj;
+  const int m = 2 * n;
+  auto ring = [&](double y, double radius) {
+    for (int k = 0; k < m; ++k) {
+      const double phi = 2 * std::numbers::pi * k / m;
+      obj << "v " << radius * std::cos(phi) << " " << y << " " << radius * std::sin(phi) << "\n";
+    }
+  };
+  ring(0.5, std::sqrt(0.75));
+  ring(-0.5, std::sqrt(0.75));
+  obj << "v 0 1 0\nv 0 -1 0\n";
+  const int top = 2 * m + 1, bottom = 2 * m + 2;
+  auto upper = [&](int k) { return k % m + 1; };
+  auto lower = [&](int k) { return m + k % m + 1; };
+  for (int i = 0; i < n; ++i) {
+    obj << "f " << top << " " << upper(2 * i + 2) << " " << upper(2 * i + 1) << " " << upper(2 * i) << "\n";
+    obj << "f " << bottom << " " << lower(2 * i) << " " << lower(2 * i + 1) << " " << lower(2 * i + 2) << "\n";
+  }
+  for (int k = 0; k < m; ++k)
+    obj << "f " << upper(k) << " " << upper(k + 1) << " " << lower(k + 1) << " " << lower(k) << "\n";
+  return scene::parseObjCage(obj.str(), "stability pole " + std::to_string(n));
+}
+
+// The unit cube cage with the loop of its four top edges creased.
+scene::ControlCage creasedCube(double sharpness) {
+  std::ostringstream obj;
+  obj << "v -1 -1 -1\nv 1 -1 -1\nv -1 1 -1\nv 1 1 -1\nv -1 -1 1\nv 1 -1 1\nv -1 1 1\nv 1 1 1\n"
+         "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
+  if (sharpness > 0) obj << "t crease 8/1/0 2 6 6 7 7 3 3 2 " << sharpness << "\n";
+  return scene::parseObjCage(obj.str(), "stability creased cube");
+}
+
+scene::ControlCage cubeCage() { return creasedCube(0); }
+
+scene::Environment environmentOf(scene::EnvironmentMap map) {
+  scene::Environment environment;
+  environment.map = std::make_shared<const scene::EnvironmentMap>(std::move(map));
+  return environment;
+}
+
+// A constant sky of radiance 1 with a 2 x 2 texel sun of radiance `sun`,
+// 31 degrees above the horizon, on the camera's side.
+scene::EnvironmentMap sunEnvironment(double sun) {
+  scene::EnvironmentMap map;
+  map.width = 64;
+  map.height = 32;
+  map.rgb.assign(std::size_t(map.width) * map.height * 3, 1.0f);
+  for (int y = 10; y < 12; ++y)
+    for (int x = 54; x < 56; ++x)
+      for (int c = 0; c < 3; ++c) map.rgb[3 * (std::size_t(y) * map.width + x) + c] = float(sun);
+  return map;
+}
+
+materials::Material metal(double alpha, const glm::dvec3& f0) {
+  materials::Material m = scene::defaultMaterial();
+  m.name = "metal";
+  m.f0 = f0;
+  m.diffuse = glm::dvec3(0.0);
+  m.alpha = alpha;
+  return m;
+}
+
+void setIbl(scene::Scene& scene, const std::string& lighting) {
+  scene.environment->method = lighting == "prefiltered" ? IblMethod::Prefiltered : IblMethod::Sampled;
+}
+
+std::vector<Method> iblMethods(bool withTessellated) {
+  std::vector<Method> methods;
+  for (Backend backend : {Backend::Gpu, Backend::Cpu})
+    for (IntersectionMethod intersection : {IntersectionMethod::Exact, IntersectionMethod::Tessellated}) {
+      if (intersection == IntersectionMethod::Tessellated && !withTessellated) continue;
+      for (const char* ibl : {"sampled", "prefiltered"})
+        methods.push_back({std::string(backend == Backend::Gpu ? "gpu" : "cpu") +
+                               (intersection == IntersectionMethod::Exact ? " exact " : " tess k=8 ") + ibl,
+                           backend, intersection, ibl});
+    }
+  return methods;
+}
+
+void grazing(Runner& runner, std::vector<Sweep>& sweeps) {
+  Sweep s;
+  s.name = "stability_grazing";
+  s.title = "grazing view";
+  s.condition = "view angle from the normal (deg)";
+  s.values = runner.quick() ? std::vector<double>{0, 89, 89.99}
+                            : std::vector<double>{0, 60, 80, 85, 88, 89, 89.5, 89.9, 89.99, 89.999};
+  const std::vector<Method> methods = iblMethods(true);
+  s.rows = labelsOf(methods);
+  s.metrics = {"beauty_max", "beauty_mean", "relative_rmse", "depth_rel_max"};
+  std::ostringstream setup;
+  setup << "A flat 8 x 8 quad cage (12 units wide) seen from 3 units at an angle from its normal (n·v of the "
+           "centre ray: ";
+  for (double angle : s.values) {
+    s.valueLabels.push_back(shortLabel(angle));
+    setup << shortLabel(std::cos(angle * std::numbers::pi / 180)) << (angle == s.values.back() ? "" : ", ");
+  }
+  setup << "), 30° field of view, so each image also holds the other n·v within ±15° of elevation around the "
+           "centre ray's (from 89° on: n·v from 0 at the plane's horizon to about 0.27). Lit only by a white furnace "
+           "(constant environment of radiance 1, occlusion on, "
+           "sampled N = 16 or prefiltered) on a white metal (Schlick F0 = 1, GGX alpha 0.25): no pixel may exceed "
+           "1 (`beauty_max`; sampled pixels are noisy, so for them only `beauty_mean` is bound). Each method is "
+           "compared with "
+           "the CPU exact render using the same IBL method. "
+        << methodsText(runner.tolerances());
+  s.setup = setup.str();
+  for (std::size_t column = 0; column < s.values.size(); ++column) {
+    scene::Scene scene = runner.sceneOf(planeCage());
+    const double angle = s.values[column] * std::numbers::pi / 180;
+    scene.camera.target = glm::dvec3(0.0);
+    scene.camera.eye = 3.0 * glm::dvec3(0.0, std::cos(angle), std::sin(angle));
+    scene.camera.up = glm::dvec3(0.0, std::sin(angle), -std::cos(angle));
+    scene.camera.verticalFovDegrees = 30;
+    scene.lights.clear();
+    scene.materials = {metal(0.25, glm::dvec3(1.0))};
+    scene.environment = environmentOf(scene::constantEnvironment(glm::dvec3(1.0)));
+    runner.run(s, column, scene, methods, setIbl, true);
+  }
+  sweeps.push_back(std::move(s));
+}
+
+void roughness(Runner& runner, std::vector<Sweep>& sweeps) {
+  Sweep s;
+  s.name = "stability_roughness";
+  s.title = "roughness";
+  s.condition = "GGX alpha";
+  s.values = runner.quick() ? std::vector<double>{1e-1, 1e-3, 0} : std::vector<double>{1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 0};
+  for (double alpha : s.values) s.valueLabels.push_back(shortLabel(alpha));
+  std::vector<Method> methods;
+  for (Backend backend : {Backend::Gpu, Backend::Cpu})
+    for (const char* lighting : {"point light", "sunrise sampled", "sunrise prefiltered"})
+      methods.push_back({std::string(backend == Backend::Gpu ? "gpu " : "cpu ") + lighting, backend,
+                         IntersectionMethod::Exact, lighting});
+  s.rows = labelsOf(methods);
+  s.metrics = {"relative_rmse", "firefly_ratio"};
+  s.setup =
+      "The cube cage's limit surface (a rounded blob), exact ray casting, a gold-like metal (Schlick F0 = (0.95, "
+      "0.64, 0.54), GGX) whose alpha goes below the 1e-3 clamp (docs/shading.md: alpha is raised to 1e-3, so "
+      "1e-4, 1e-5 and 0 must render as 1e-3 does). Lit by a point light alone, or by `sunrise.exr` alone (sun near "
+      "3e4; sampled N = 16 with occlusion, or prefiltered). Each GPU render is compared with the CPU render of the "
+      "same lighting; `firefly_ratio` is the largest covered pixel channel over the mean (a measure of how "
+      "concentrated the highlight is, not a failure by itself). " +
+      methodsText(runner.tolerances());
+  const auto sunrise = std::make_shared<const scene::EnvironmentMap>(
+      scene::loadEnvironmentMap(runner.root() / "scenes/environments/sunrise.exr"));
+  auto light = [&](scene::Scene& scene, const std::string& lighting) {
+    if (lighting == "point light") {
+      scene::Light point;
+      point.type = scene::LightType::Point;
+      point.position = scene.camera.eye + glm::dvec3(2.0, 3.0, -1.0);
+      point.color = glm::dvec3(30.0);
+      scene.lights = {point};
+      return;
+    }
+    scene.lights.clear();
+    scene::Environment environment;
+    environment.map = sunrise;
+    environment.method = lighting == "sunrise prefiltered" ? IblMethod::Prefiltered : IblMethod::Sampled;
+    scene.environment = environment;
+  };
+  for (std::size_t column = 0; column < s.values.size(); ++column) {
+    scene::Scene scene = runner.sceneOf(cubeCage());
+    scene.materials = {metal(s.values[column], {0.95, 0.64, 0.54})};
+    runner.run(s, column, scene, methods, light, false);
+  }
+  sweeps.push_back(std::move(s));
+}
+
+// Sweeps a geometric condition with the four geometry methods under the
+// default key light and material.
+void geometrySweep(Runner& runner, std::vector<Sweep>& sweeps, Sweep s,
+                   const std::function<scene::Scene(double)>& sceneAt) {
+  const std::vector<Method> methods = geometryMethods();
+  s.rows = labelsOf(methods);
+  s.setup += " Default grey plastic under the default key light. " + methodsText(runner.tolerances());
+  for (std::size_t column = 0; column < s.values.size(); ++column)
+    runner.run(s, column, sceneAt(s.values[column]), methods, {}, true);
+  sweeps.push_back(std::move(s));
+}
+
+void valence(Runner& runner, std::vector<Sweep>& sweeps) {
+  Sweep s;
+  s.name = "stability_valence";
+  s.title = "valence of extraordinary vertices";
+  s.condition = "pole valence";
+  s.values = runner.quick() ? std::vector<double>{3, 12} : std::vector<double>{3, 4, 5, 6, 8, 10, 12, 16, 24};
+  for (double n : s.values) s.valueLabels.push_back(shortLabel(n));
+  s.metrics = {"normal_rad_max", "depth_rel_max"};
+  s.setup =
+      "A closed quad cage with two poles of valence n (the other vertices are valence 3 or 4 for every n), "
+      "viewed close up from above one pole (25° field of view), so the Gregory end caps around it fill the image.";
+  geometrySweep(runner, sweeps, std::move(s), [&](double n) {
+    scene::Scene scene = runner.sceneOf(poleCage(int(n)));
+    scene.camera.target = glm::dvec3(0.0, 0.9, 0.0);
+    scene.camera.eye = scene.camera.target + 2.5 * glm::normalize(glm::dvec3(0.4, 1.0, 0.7));
+    scene.camera.verticalFovDegrees = 25;
+    scene.lights = {scene::defaultKeyLight(scene.camera)};
+    return scene;
+  });
+}
+
+void crease(Runner& runner, std::vector<Sweep>& sweeps) {
+  Sweep s;
+  s.name = "stability_crease";
+  s.title = "crease sharpness";
+  s.condition = "crease sharpness";
+  s.values = runner.quick() ? std::vector<double>{0, 2, 10} : std::vector<double>{0, 0.5, 1, 2, 4, 8, 10};
+  for (double v : s.values) s.valueLabels.push_back(shortLabel(v));
+  s.metrics = {"depth_rel_max", "normal_rad_max"};
+  s.setup =
+      "The cube cage with its four top edges creased as one loop (sharpness 10 is infinitely sharp), framed by "
+      "the default view.";
+  geometrySweep(runner, sweeps, std::move(s), [&](double sharpness) { return runner.sceneOf(creasedCube(sharpness)); });
+}
+
+void scale(Runner& runner, std::vector<Sweep>& sweeps) {
+  Sweep s;
+  s.name = "stability_scale";
+  s.title = "object scale";
+  s.condition = "scale factor";
+  s.values = runner.quick() ? std::vector<double>{1e-16, 1, 1e16}
+                            : std::vector<double>{1e-16, 1e-12, 1e-8, 1e-4, 1, 1e4, 1e8, 1e12, 1e16};
+  for (double v : s.values) s.valueLabels.push_back(shortLabel(v));
+  s.metrics = {"depth_rel_max", "normal_rad_max"};
+  s.setup =
+      "The cube cage scaled about the origin, seen from the default view of the unscaled cage scaled by the "
+      "same factor (so the image is the same).";
+  const scene::Camera unit = runner.sceneOf(cubeCage()).camera;
+  geometrySweep(runner, sweeps, std::move(s), [&](double factor) {
+    scene::ControlCage cage = cubeCage();
+    for (glm::dvec3& p : cage.positions) p *= factor;
+    scene::Scene scene = runner.sceneOf(std::move(cage));
+    // frameBounds keeps a radius of at least 1e-6, which would shrink the
+    // smallest cages in the image.
+    scene.camera = unit;
+    scene.camera.eye *= factor;
+    scene.camera.target *= factor;
+    return scene;
+  });
+}
+
+void distance(Runner& runner, std::vector<Sweep>& sweeps) {
+  Sweep s;
+  s.name = "stability_distance";
+  s.title = "distance from the origin";
+  s.condition = "distance from the origin";
+  s.values =
+      runner.quick() ? std::vector<double>{1, 1e4, 1e7} : std::vector<double>{1, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7};
+  for (double v : s.values) s.valueLabels.push_back(shortLabel(v));
+  s.metrics = {"depth_rel_max", "normal_rad_max"};
+  s.setup =
+      "The cube cage (size 2) moved along (1, 1, 1) by this distance, camera and light moved with it (the "
+      "image is the same): float positions on the GPU lose digits as the coordinates grow.";
+  geometrySweep(runner, sweeps, std::move(s), [&](double d) {
+    scene::ControlCage cage = cubeCage();
+    const glm::dvec3 offset = d * glm::normalize(glm::dvec3(1.0));
+    for (glm::dvec3& p : cage.positions) p += offset;
+    return runner.sceneOf(std::move(cage));
+  });
+}
+
+void dynamicRange(Runner& runner, std::vector<Sweep>& sweeps) {
+  Sweep s;
+  s.name = "stability_dynamic_range";
+  s.title = "environment dynamic range";
+  s.condition = "sun radiance (sky = 1)";
+  s.values =
+      runner.quick() ? std::vector<double>{1, 1e4, 1e8} : std::vector<double>{1, 1e2, 1e4, 1e8, 1e12, 1e16, 1e20};
+  for (double v : s.values) s.valueLabels.push_back(shortLabel(v));
+  const std::vector<Method> methods = iblMethods(false);
+  s.rows = labelsOf(methods);
+  s.metrics = {"method_error", "relative_rmse"};
+  const int convergedSamples = runner.quick() ? 256 : 4096;
+  s.setup =
+      "The cube cage's blob in default grey plastic (alpha 0.25), no lights, under a 64 x 32 environment: "
+      "radiance 1 everywhere but a 2 x 2 texel sun (0.35% of the sphere) of the given radiance. Failures "
+      "are against the CPU render of the same IBL method; `method_error` is the relative RMSE against the "
+      "GPU sampled with N = " +
+      std::to_string(convergedSamples) +
+      " (the GPU because it is the faster, and sampled GPU and CPU agree to about 1e-4 here), the accuracy a user "
+      "gets from each method. Occlusion is off for every render: the blob is convex, so it changes nothing but "
+      "the cost (2N shadow rays per pixel). " +
+      methodsText(runner.tolerances());
+  for (std::size_t column = 0; column < s.values.size(); ++column) {
+    scene::Scene scene = runner.sceneOf(cubeCage());
+    scene.lights.clear();
+    scene.environment = environmentOf(sunEnvironment(s.values[column]));
+    scene.environment->occlusion = false;
+    runner.run(s, column, scene, methods, setIbl, false, [&] {
+      scene::Scene converged = scene;
+      converged.environment->method = IblMethod::Sampled;
+      converged.environment->samples = convergedSamples;
+      return runner.render(converged, {"", Backend::Gpu, IntersectionMethod::Exact, ""});
+    });
+  }
+  sweeps.push_back(std::move(s));
+}
+
+}  // namespace
+
+void runStability(const BenchOptions& options, Report& report) {
+  Runner runner(options);
+  std::vector<Sweep> sweeps;
+  const std::vector<std::pair<const char*, std::function<void(Runner&, std::vector<Sweep>&)>>> steps{
+      {"grazing", grazing}, {"roughness", roughness}, {"valence", valence},           {"crease", crease},
+      {"scale", scale},     {"distance", distance},   {"dynamic range", dynamicRange}};
+  const auto start = std::chrono::steady_clock::now();
+  for (const auto& [name, step] : steps) {
+    const auto stepStart = std::chrono::steady_clock::now();
+    const int before = runner.renders();
+    step(runner, sweeps);
+    std::printf("stability: %s, %d renders, %.1f s\n", name, runner.renders() - before,
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - stepStart).count());
+    std::fflush(stdout);
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.heading("Stability map");
+  report.paragraph(
+      "Where each method fails, sweep by sweep: every cell is one " + std::to_string(runner.size()) + "x" +
+      std::to_string(runner.size()) +
+      " render compared pixel by pixel with the CPU exact reference (double precision) at the same condition. "
+      "A pixel fails when it is non-finite, a hole (the reference covers it and its 8 neighbours), extra (the "
+      "reference misses it and its 8 neighbours), a Newton miss (exact methods: a dense CPU tessellation covers "
+      "it and its neighbours, the ray cast found no root), or over tolerance in depth, normal or beauty; the "
+      "colour is the failing share of the reference's covered pixels. All cells: `stability.csv` (" +
+      std::to_string(runner.renders()) + " renders, " + cell(std::round(seconds)) + " s).");
+  for (const Sweep& sweep : sweeps) stability::writeSweep(options.output, sweep, report);
+  stability::writeStabilityCsv(options.output / "stability.csv", sweeps);
+}
+
+}  // namespace facet::cli::bench
