@@ -130,21 +130,36 @@ class ExactPatchIntersector {
     double s = 0.5 * (piece.s0 + piece.s1), t = 0.5 * (piece.t0 + piece.t1);
     scene::LimitPoint point = surface_.evaluatePatch(index, faceU(s), faceV(t));
     double rayT = glm::dot(point.position - ray_.origin, ray_.direction) / dd;
+    // One Newton step from (s, t) on the residual: the clamped parameters,
+    // the limit point there and its ray parameter; false where the system
+    // is singular.
+    auto step = [&](const glm::dvec3& residual, double& s1, double& t1, scene::LimitPoint& p1, double& rayT1) {
+      glm::dvec3 delta;
+      if (!solve3(point.du * domain.size, point.dv * domain.size, -ray_.direction, residual, delta)) return false;
+      s1 = std::clamp(s - delta.x, 0.0, 1.0);
+      t1 = std::clamp(t - delta.y, 0.0, 1.0);
+      p1 = surface_.evaluatePatch(index, faceU(s1), faceV(t1));
+      // Re-projecting keeps t consistent with the clamped (s, t).
+      rayT1 = glm::dot(p1.position - ray_.origin, ray_.direction) / dd;
+      return true;
+    };
     constexpr int kMaxIterations = 40;
     bool converged = false;
     for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
-      glm::dvec3 residual = point.position - ray_.at(rayT);
-      if (glm::length(residual) <= tolerance_) {
+      const glm::dvec3 residual = point.position - ray_.at(rayT);
+      const double error = glm::length(residual);
+      if (error <= tolerance_) {
         converged = true;
+        // Past the tolerance, one more step, as the GPU takes (trace.glsl):
+        // convergence is quadratic, so the root lands at double's
+        // resolution whatever the tolerance; kept only if it is no worse.
+        double s1, t1, rayT1;
+        scene::LimitPoint p1;
+        if (step(residual, s1, t1, p1, rayT1) && glm::length(p1.position - ray_.at(rayT1)) <= error)
+          s = s1, t = t1, point = p1, rayT = rayT1;
         break;
       }
-      glm::dvec3 step;
-      if (!solve3(point.du * domain.size, point.dv * domain.size, -ray_.direction, residual, step)) return false;
-      s = std::clamp(s - step.x, 0.0, 1.0);
-      t = std::clamp(t - step.y, 0.0, 1.0);
-      point = surface_.evaluatePatch(index, faceU(s), faceV(t));
-      // Re-projecting keeps t consistent with the clamped (s, t).
-      rayT = glm::dot(point.position - ray_.origin, ray_.direction) / dd;
+      if (!step(residual, s, t, point, rayT)) return false;
     }
     if (!converged) return false;
 
