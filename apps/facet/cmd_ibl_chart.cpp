@@ -86,20 +86,13 @@ std::string formatNumber(double value) {
 // reference's mean covered radiance lands at middle grey.
 void writeComparison(const fs::path& path, const Image& reference, const Image& prefiltered) {
   Image pair(2 * reference.width, reference.height);
-  double sum = 0;
-  std::size_t count = 0;
   for (int y = 0; y < reference.height; ++y)
     for (int x = 0; x < reference.width; ++x) {
       const std::size_t i = reference.index(x, y);
       pair.beauty[pair.index(x, y)] = reference.beauty[i];
       pair.beauty[pair.index(x + reference.width, y)] = prefiltered.beauty[i];
-      if (reference.beauty[i].a > 0) {
-        sum += (reference.beauty[i].r + reference.beauty[i].g + reference.beauty[i].b) / 3.0;
-        ++count;
-      }
     }
-  const double mean = count ? sum / double(count) : 0;
-  writePng(path, pair, mean > 0 ? float(std::log2(0.18 / mean)) : 0.0f);
+  writePng(path, pair, bench::middleGreyExposure(reference));
 }
 
 void writeCsv(const fs::path& path, const std::vector<Point>& points) {

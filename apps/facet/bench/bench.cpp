@@ -86,21 +86,42 @@ double preparationMilliseconds(const RenderReport& report) {
   return 0;
 }
 
-namespace {
-
 bool covered(const Image& image, int x, int y) { return image.beauty[image.index(x, y)].a > 0; }
 
-// Every pixel of the 3 x 3 neighbourhood (clipped at the border) as `state`.
-bool neighbourhood(const Image& image, int x, int y, bool state) {
+bool neighbourhoodIs(const Image& image, int x, int y, bool coveredState) {
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) {
       const int nx = std::clamp(x + dx, 0, image.width - 1), ny = std::clamp(y + dy, 0, image.height - 1);
-      if (covered(image, nx, ny) != state) return false;
+      if (covered(image, nx, ny) != coveredState) return false;
     }
   return true;
 }
 
-}  // namespace
+bool finitePixel(const Image& image, int x, int y) {
+  const std::size_t i = image.index(x, y);
+  const glm::vec4& b = image.beauty[i];
+  const glm::vec3& n = image.shadingNormal[i];
+  return std::isfinite(b.r) && std::isfinite(b.g) && std::isfinite(b.b) && std::isfinite(n.x) && std::isfinite(n.y) &&
+         std::isfinite(n.z) && (!covered(image, x, y) || std::isfinite(image.depth[i]));
+}
+
+double normalAngle(const glm::vec3& a, const glm::vec3& b) {
+  const glm::dvec3 da(a), db(b);
+  const double lengths = glm::length(da) * glm::length(db);
+  return lengths > 0 ? std::acos(std::clamp(glm::dot(da, db) / lengths, -1.0, 1.0)) : M_PI;
+}
+
+float middleGreyExposure(const Image& reference) {
+  double sum = 0;
+  std::size_t count = 0;
+  for (const glm::vec4& b : reference.beauty)
+    if (b.a > 0) {
+      sum += (b.r + b.g + b.b) / 3.0;
+      ++count;
+    }
+  const double mean = count ? sum / double(count) : 0;
+  return mean > 0 ? float(std::log2(0.18 / mean)) : 0.0f;
+}
 
 ImageError compareToReference(const Image& candidate, const Image& reference) {
   if (candidate.width != reference.width || candidate.height != reference.height)
@@ -111,17 +132,13 @@ ImageError compareToReference(const Image& candidate, const Image& reference) {
     for (int x = 0; x < reference.width; ++x) {
       const std::size_t i = reference.index(x, y);
       const glm::vec4& b = candidate.beauty[i];
-      const bool finite = std::isfinite(b.r) && std::isfinite(b.g) && std::isfinite(b.b) &&
-                          std::isfinite(candidate.shadingNormal[i].x) && std::isfinite(candidate.shadingNormal[i].y) &&
-                          std::isfinite(candidate.shadingNormal[i].z) &&
-                          (!covered(candidate, x, y) || std::isfinite(candidate.depth[i]));
-      if (!finite) {
+      if (!finitePixel(candidate, x, y)) {
         ++e.nonFinite;
         continue;
       }
       const bool here = covered(candidate, x, y), there = covered(reference, x, y);
-      if (there && !here && neighbourhood(reference, x, y, true)) ++e.holes;
-      if (here && !there && neighbourhood(reference, x, y, false)) ++e.extra;
+      if (there && !here && neighbourhoodIs(reference, x, y, true)) ++e.holes;
+      if (here && !there && neighbourhoodIs(reference, x, y, false)) ++e.extra;
       if (!here || !there) continue;
       ++e.compared;
       for (int c = 0; c < 3; ++c) {
@@ -133,11 +150,7 @@ ImageError compareToReference(const Image& candidate, const Image& reference) {
       const double depth = std::abs(double(candidate.depth[i]) - reference.depth[i]) / reference.depth[i];
       e.depthRelativeMax = std::max(e.depthRelativeMax, depth);
       depthSum += depth;
-      // A zero-length normal (float underflow far from unit scale) has no
-      // direction at all: it counts as the worst angle, not as NaN.
-      const glm::dvec3 a(candidate.shadingNormal[i]), r(reference.shadingNormal[i]);
-      const double lengths = glm::length(a) * glm::length(r);
-      const double angle = lengths > 0 ? std::acos(std::clamp(glm::dot(a, r) / lengths, -1.0, 1.0)) : M_PI;
+      const double angle = normalAngle(candidate.shadingNormal[i], reference.shadingNormal[i]);
       e.normalRadiansMax = std::max(e.normalRadiansMax, angle);
       normalSum += angle;
     }

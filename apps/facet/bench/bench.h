@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "engine/image/image.h"
 #include "engine/renderer.h"
 
@@ -53,6 +55,21 @@ std::string cell(double value);
 // environment's preparation (sampling tables, prefiltering or its cache).
 double traceMilliseconds(const RenderReport& report);
 double preparationMilliseconds(const RenderReport& report);
+
+// Pixel tests every section judges renders by.
+bool covered(const Image& image, int x, int y);
+// Every pixel of the 3 x 3 neighbourhood (clipped at the border) covered,
+// or every one missed (`coveredState` false).
+bool neighbourhoodIs(const Image& image, int x, int y, bool coveredState);
+// Beauty and shading normal finite, and the depth where the pixel is covered.
+bool finitePixel(const Image& image, int x, int y);
+// Angle between two normals; a zero-length one (float underflow far from
+// unit scale) has no direction and counts as the worst angle, pi.
+double normalAngle(const glm::vec3& a, const glm::vec3& b);
+
+// The PNG exposure, in stops, that puts the reference's mean covered
+// radiance at middle grey (0.18): one exposure for every render of a scene.
+float middleGreyExposure(const Image& reference);
 
 // A render against a reference of the same scene, pixel by pixel.
 struct ImageError {

@@ -338,20 +338,6 @@ void writeChart(const fs::path& directory, const Scenario& s, const std::vector<
   runGnuplot(script.str(), data.str(), directory / ("pareto_" + s.name + ".png"), 960, 600);
 }
 
-// Exposed so that the reference's mean covered radiance lands at middle grey,
-// the same exposure for every render of a scene.
-float exposureFor(const Image& reference) {
-  double sum = 0;
-  std::size_t count = 0;
-  for (const glm::vec4& b : reference.beauty)
-    if (b.a > 0) {
-      sum += (b.r + b.g + b.b) / 3.0;
-      ++count;
-    }
-  const double mean = count ? sum / double(count) : 0;
-  return mean > 0 ? float(std::log2(0.18 / mean)) : 0.0f;
-}
-
 std::string describe(const Point& p, ErrorAxis axis) {
   return p.backend + " " + p.setting.label() + " (" + threeDigits(p.milliseconds) + " ms, " +
          threeDigits(chartedError(p.error, axis)) + ")";
@@ -415,7 +401,7 @@ void reportScenario(const Scenario& s, const std::vector<Point>& points, const I
   writePointsCsv(directory / ("pareto_" + s.name + ".csv"), s.name, points);
   writeChart(directory, s, points, frontier, subtitle);
 
-  const float exposure = exposureFor(reference);
+  const float exposure = middleGreyExposure(reference);
   writePng(directory / ("pareto_" + s.name + "_reference.png"), reference, exposure);
   const Point& shown = shownRender(points, s.axis);
   const bool shownIsGoodEnough = chartedError(shown.error, s.axis) <= goodEnough(s.axis);

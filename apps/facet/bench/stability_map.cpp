@@ -14,33 +14,6 @@
 namespace facet::cli::bench::stability {
 namespace {
 
-bool covered(const Image& image, std::size_t i) { return image.beauty[i].a > 0; }
-
-bool coveredWithNeighbours(const Image& image, int x, int y) {
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) {
-      const int nx = std::clamp(x + dx, 0, image.width - 1), ny = std::clamp(y + dy, 0, image.height - 1);
-      if (!covered(image, image.index(nx, ny))) return false;
-    }
-  return true;
-}
-
-bool missedWithNeighbours(const Image& image, int x, int y) {
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) {
-      const int nx = std::clamp(x + dx, 0, image.width - 1), ny = std::clamp(y + dy, 0, image.height - 1);
-      if (covered(image, image.index(nx, ny))) return false;
-    }
-  return true;
-}
-
-bool finitePixel(const Image& image, std::size_t i) {
-  const glm::vec4& b = image.beauty[i];
-  const glm::vec3& n = image.shadingNormal[i];
-  return std::isfinite(b.r) && std::isfinite(b.g) && std::isfinite(b.b) && std::isfinite(n.x) && std::isfinite(n.y) &&
-         std::isfinite(n.z) && (!covered(image, i) || std::isfinite(image.depth[i]));
-}
-
 std::string shortNumber(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.2g", value);
@@ -188,7 +161,7 @@ Cell measure(const Image& candidate, const Image& reference, const Image* covera
   cell.error = compareToReference(candidate, reference);
   float brightest = 0;
   for (std::size_t i = 0; i < reference.pixelCount(); ++i)
-    if (covered(reference, i))
+    if (reference.beauty[i].a > 0)
       brightest = std::max({brightest, reference.beauty[i].r, reference.beauty[i].g, reference.beauty[i].b});
   const double beautyFloor = 1e-4 * brightest;
   std::size_t failing = 0, misses = 0, coveredHere = 0;
@@ -196,9 +169,9 @@ Cell measure(const Image& candidate, const Image& reference, const Image* covera
   for (int y = 0; y < reference.height; ++y)
     for (int x = 0; x < reference.width; ++x) {
       const std::size_t i = reference.index(x, y);
-      const bool here = covered(candidate, i), there = covered(reference, i);
+      const bool here = covered(candidate, x, y), there = covered(reference, x, y);
       if (there) ++cell.referencePixels;
-      if (!finitePixel(candidate, i)) {
+      if (!finitePixel(candidate, x, y)) {
         ++failing;
         continue;
       }
@@ -208,23 +181,21 @@ Cell measure(const Image& candidate, const Image& reference, const Image* covera
         beautySum += (double(b.r) + double(b.g) + double(b.b)) / 3;
         ++coveredHere;
       }
-      const bool newtonMiss = coverage && !here && coveredWithNeighbours(*coverage, x, y);
+      const bool newtonMiss = coverage && !here && neighbourhoodIs(*coverage, x, y, true);
       if (newtonMiss) ++misses;
-      bool fails = newtonMiss || (there && !here && coveredWithNeighbours(reference, x, y)) ||
-                   (here && !there && missedWithNeighbours(reference, x, y));
+      bool fails = newtonMiss || (there && !here && neighbourhoodIs(reference, x, y, true)) ||
+                   (here && !there && neighbourhoodIs(reference, x, y, false));
       // As in `facet parity`: silhouette pixels (a 3 x 3 neighbourhood mixing
       // covered and missed on either image) are judged by coverage alone.
-      const bool interior = coveredWithNeighbours(candidate, x, y) && coveredWithNeighbours(reference, x, y);
+      const bool interior = neighbourhoodIs(candidate, x, y, true) && neighbourhoodIs(reference, x, y, true);
       if (interior) {
         const double depth = std::abs(double(candidate.depth[i]) - reference.depth[i]) / reference.depth[i];
-        const double angle = std::acos(std::clamp(
-            double(glm::dot(glm::normalize(candidate.shadingNormal[i]), glm::normalize(reference.shadingNormal[i]))),
-            -1.0, 1.0));
+        const double angle = normalAngle(candidate.shadingNormal[i], reference.shadingNormal[i]);
         const glm::vec4& r = reference.beauty[i];
         const double scale = std::max({double(r.r), double(r.g), double(r.b), beautyFloor});
         double beauty = 0;
         for (int c = 0; c < 3; ++c) beauty = std::max(beauty, std::abs(double(candidate.beauty[i][c]) - r[c]));
-        // Written as !(within) so that a NaN error (a zero-length normal) fails.
+        // Written as !(within) so that a NaN error fails.
         const bool over = !(depth <= tolerance.depthRelative) || !(angle <= tolerance.normalRadians) ||
                           (scale > 0 && !(beauty / scale <= tolerance.beautyRelative));
         if (over) ++cell.overTolerance;
