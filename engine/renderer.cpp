@@ -92,6 +92,9 @@ RenderReport render(const scene::Scene& scene, Backend backend, const std::funct
       report.device = context.device.adapterInfo().name + " (GPU, float)";
       report.primaryRays = result.primaryRays;
       report.shadowRays = result.shadowRays;
+      report.newtonFallbacks = result.newtonFallbacks;
+      report.cells = result.cells;
+      report.gpuBytes = result.gpuBytes;
       break;
     }
   }

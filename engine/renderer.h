@@ -28,6 +28,9 @@ struct RenderReport {
   std::vector<StageTime> stages;
   std::uint64_t primaryRays = 0;
   std::uint64_t shadowRays = 0;
+  std::uint64_t newtonFallbacks = 0;  // GPU exact method: cells whose domain was subdivided
+  std::uint64_t cells = 0;            // GPU: of the micro-grid
+  std::uint64_t gpuBytes = 0;         // GPU: scene arrays and one band's ray buffers
 
   double totalMilliseconds() const;
 };

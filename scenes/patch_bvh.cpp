@@ -123,20 +123,6 @@ class Builder {
   int* maxDepth_ = nullptr;
 };
 
-// Float bounds that still contain the double ones.
-float roundDown(double value) {
-  float f = static_cast<float>(value);
-  return static_cast<double>(f) > value ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
-}
-float roundUp(double value) {
-  float f = static_cast<float>(value);
-  return static_cast<double>(f) < value ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-}
-
-gpu_layout::PatchPoint toGpu(const glm::dvec3& p) {
-  return {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)};
-}
-
 }  // namespace
 
 Aabb patchBounds(const BezierPatch& patch) {
@@ -159,50 +145,20 @@ PatchBvh PatchBvh::build(const SubdivisionSurface& surface, int maxLeafPatches) 
   int maxDepth = 0;
   Builder(std::move(items), std::max(1, maxLeafPatches)).build(bvh.nodes_, bvh.leafPatches_, maxDepth);
 
-  for (const Node& node : bvh.nodes_) {
-    bvh.gpuNodes_.push_back({roundDown(node.bounds.lo.x), roundDown(node.bounds.lo.y), roundDown(node.bounds.lo.z),
-                             static_cast<gpu_layout::uint>(node.next), roundUp(node.bounds.hi.x),
-                             roundUp(node.bounds.hi.y), roundUp(node.bounds.hi.z),
-                             static_cast<gpu_layout::uint>(node.patchCount)});
-  }
-  for (int source : bvh.leafPatches_) {
-    const PatchInfo& info = surface.patch(source);
-    const BezierPatch& bezier = surface.bezierPatch(source);
-    gpu_layout::PatchRecord record{};
-    record.kind = bezier.gregory ? gpu_layout::FACET_PATCH_GREGORY : gpu_layout::FACET_PATCH_BEZIER;
-    record.firstPoint = static_cast<gpu_layout::uint>(bvh.gpuPoints_.size());
-    record.ptexFace = static_cast<gpu_layout::uint>(info.ptexFace);
-    record.coarseFace = static_cast<gpu_layout::uint>(info.coarseFace);
-    record.faceU0 = static_cast<float>(info.domain.u0);
-    record.faceV0 = static_cast<float>(info.domain.v0);
-    record.faceSize = static_cast<float>(info.domain.size);
-    record.sourcePatch = static_cast<gpu_layout::uint>(source);
-    record.boundaryMask = info.boundaryMask;
-    record.depth = static_cast<gpu_layout::uint>(info.depth);
-    record.pointCount = bezier.gregory ? gpu_layout::FACET_PATCH_POINTS_GREGORY : gpu_layout::FACET_PATCH_POINTS_BEZIER;
-    record.transitionMask = info.transitionMask;
-    for (const glm::dvec3& p : bezier.points) bvh.gpuPoints_.push_back(toGpu(p));
-    if (bezier.gregory)
-      for (const glm::dvec3& p : bezier.alternates) bvh.gpuPoints_.push_back(toGpu(p));
-    bvh.gpuPatches_.push_back(record);
-  }
-
   PatchBvhStatistics& stats = bvh.statistics_;
   stats.nodes = static_cast<int>(bvh.nodes_.size());
   stats.leaves =
       static_cast<int>(std::count_if(bvh.nodes_.begin(), bvh.nodes_.end(), [](const Node& n) { return n.leaf(); }));
   stats.maxDepth = maxDepth;
   stats.patches = static_cast<int>(bvh.leafPatches_.size());
-  stats.gpuBytes = bvh.gpuNodes_.size() * sizeof(gpu_layout::PatchBvhNode) +
-                   bvh.gpuPatches_.size() * sizeof(gpu_layout::PatchRecord) +
-                   bvh.gpuPoints_.size() * sizeof(gpu_layout::PatchPoint);
+  stats.bytes = bvh.nodes_.size() * sizeof(Node) + bvh.leafPatches_.size() * sizeof(int);
   return bvh;
 }
 
 std::string describe(const PatchBvhStatistics& stats) {
   std::ostringstream out;
   out << "patch BVH: " << stats.patches << " patches, " << stats.nodes << " nodes (" << stats.leaves
-      << " leaves, depth " << stats.maxDepth << "), " << (stats.gpuBytes + 512) / 1024 << " KiB of GPU arrays";
+      << " leaves, depth " << stats.maxDepth << "), " << (stats.bytes + 512) / 1024 << " KiB";
   return out.str();
 }
 

@@ -4,12 +4,10 @@
 // Each patch is bounded by the box of its Bézier control points (plus the
 // Gregory alternates): the convex-hull property makes that conservative. The
 // tree is built top-down with a binned surface-area heuristic and stored
-// depth-first, twice: in double for the CPU reference, and as the flat float
-// arrays of compute/shared/patch_bvh.h that the GPU uploads as they are.
-// Both have the same nodes in the same order.
+// depth-first, in double. The CPU reference traverses it as it is; the GPU
+// backend collapses it to four wide (engine/gpu_backend/gpu_scene.h).
 
 #include "scenes/bezier_patch.h"
-#include "scenes/gpu_layout.h"
 
 #include <cstddef>
 #include <string>
@@ -24,7 +22,7 @@ struct PatchBvhStatistics {
   int leaves = 0;
   int maxDepth = 0;
   int patches = 0;
-  std::size_t gpuBytes = 0;  // nodes + patch records + points
+  std::size_t bytes = 0;  // nodes + leaf slots
 };
 
 std::string describe(const PatchBvhStatistics& stats);
@@ -41,21 +39,14 @@ class PatchBvh {
   static PatchBvh build(const SubdivisionSurface& surface, int maxLeafPatches = 4);
 
   const std::vector<Node>& nodes() const { return nodes_; }
-  // Leaf slot -> SubdivisionSurface patch index (same order as gpuPatches()).
+  // Leaf slot -> SubdivisionSurface patch index.
   const std::vector<int>& leafPatches() const { return leafPatches_; }
-
-  const std::vector<gpu_layout::PatchBvhNode>& gpuNodes() const { return gpuNodes_; }
-  const std::vector<gpu_layout::PatchRecord>& gpuPatches() const { return gpuPatches_; }
-  const std::vector<gpu_layout::PatchPoint>& gpuPoints() const { return gpuPoints_; }
 
   const PatchBvhStatistics& statistics() const { return statistics_; }
 
  private:
   std::vector<Node> nodes_;
   std::vector<int> leafPatches_;
-  std::vector<gpu_layout::PatchBvhNode> gpuNodes_;
-  std::vector<gpu_layout::PatchRecord> gpuPatches_;
-  std::vector<gpu_layout::PatchPoint> gpuPoints_;
   PatchBvhStatistics statistics_;
 };
 

@@ -57,7 +57,7 @@ int SceneGeometry::patchCount() const {
 
 std::size_t SceneGeometry::bytes() const {
   std::size_t total = 0;
-  for (const ObjectGeometry& o : objects) total += o.surface.statistics().openSubdivBytes + o.bvh.statistics().gpuBytes;
+  for (const ObjectGeometry& o : objects) total += o.surface.statistics().openSubdivBytes + o.bvh.statistics().bytes;
   return total;
 }
 

@@ -40,7 +40,7 @@ struct SceneGeometry {
   std::vector<ObjectGeometry> objects;  // parallel to Scene::objects
   Aabb bounds;
   int patchCount() const;
-  std::size_t bytes() const;  // OpenSubdiv data + GPU arrays
+  std::size_t bytes() const;  // OpenSubdiv data + patch BVHs
 };
 
 SceneGeometry buildGeometry(const Scene& scene);

@@ -147,6 +147,10 @@ void runRender(const RenderOptions& o) {
   std::printf("rays: %llu primary, %llu shadow, %.2f Mrays/s\n", (unsigned long long)report.primaryRays,
               (unsigned long long)report.shadowRays,
               double(report.primaryRays + report.shadowRays) / traceSeconds * 1e-6);
+  if (report.cells)
+    std::printf("micro-grid: %llu cells, %llu exact fallbacks, %.1f MiB of GPU arrays\n",
+                (unsigned long long)report.cells, (unsigned long long)report.newtonFallbacks,
+                double(report.gpuBytes) / (1 << 20));
   std::printf("wrote %s%s%s\n", o.exr.c_str(), o.png.empty() ? "" : " and ", o.png.c_str());
 }
 

@@ -1,7 +1,6 @@
-// Bicubic Bézier / Gregory patches in float, from the flat arrays of
-// compute/shared/patch_bvh.h (the same formulas as scenes/bezier_patch.h).
-// The including kernel declares `patches[]` (PatchRecord) and `points[]`
-// (PatchPoint).
+// Bicubic Bézier / Gregory patches in float (the same formulas as
+// scenes/bezier_patch.h). The including kernel declares the texel buffer
+// `patchPoints` (compute/shared/patch_records.h).
 #ifndef FACET_RAYCAST_PATCH_EVAL_GLSL
 #define FACET_RAYCAST_PATCH_EVAL_GLSL
 
@@ -18,25 +17,22 @@ struct ControlPoints {
   bool gregory;
 };
 
-ControlPoints load_control_points(uint firstPoint, PatchRecord record) {
+vec3 patch_point(uint index) { return texelFetch(patchPoints, int(index)).xyz; }
+
+ControlPoints load_control_points(uint firstPoint, uint kind) {
   ControlPoints c;
-  uint first = firstPoint + record.firstPoint;
   for (int j = 0; j < 4; ++j) {
     for (int i = 0; i < 4; ++i) {
-      PatchPoint p = points[first + uint(4 * j + i)];
+      vec3 p = patch_point(firstPoint + uint(4 * j + i));
       c.x[i][j] = p.x;
       c.y[i][j] = p.y;
       c.z[i][j] = p.z;
     }
   }
-  c.gregory = record.kind == FACET_PATCH_GREGORY;
+  c.gregory = kind == FACET_PATCH_GREGORY;
   c.alternates = mat4x3(0.0);
-  if (c.gregory) {
-    for (int k = 0; k < 4; ++k) {
-      PatchPoint p = points[first + 16u + uint(k)];
-      c.alternates[k] = vec3(p.x, p.y, p.z);
-    }
-  }
+  if (c.gregory)
+    for (int k = 0; k < 4; ++k) c.alternates[k] = patch_point(firstPoint + 16u + uint(k));
   return c;
 }
 

@@ -5,8 +5,10 @@
 // without occlusion, in one slot that no ray tests; sampled with occlusion,
 // one slot and shadow ray per environment and per BRDF sample. A ray that
 // misses writes the miss AOVs and, with an environment, the radiance it
-// sees in the environment's first slot. A slot the shading skips gets
-// tMax = -1 and is not traced.
+// sees in the environment's first slot. Every slot gets its contribution;
+// the shadow rays that decide some of them are appended to one compacted
+// list (counters.shadowRays), so the shadow pass costs nothing for slots,
+// samples or pixels that need no ray.
 //
 // Specialization: METHOD (0 exact, 1 tessellated), LIGHT_COUNT, ENVIRONMENT
 // (0 none, 1 sampled, 2 prefiltered), OCCLUSION (sampled: 1 traces the
@@ -34,9 +36,9 @@ layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
 layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord materials[]; };
 layout(set = 0, binding = 12, std430) readonly buffer Lights { LightRecord lights[]; };
 layout(set = 0, binding = 13, std430) writeonly buffer Aovs { PixelAovs aovs[]; };
-layout(set = 0, binding = 14, std430) writeonly buffer ShadowRays { RayRecord shadowRays[]; };
+layout(set = 0, binding = 14, std430) writeonly buffer ShadowRays { ShadowRayRecord shadowRays[]; };
 layout(set = 0, binding = 15, std430) writeonly buffer Contributions { vec4 contributions[]; };
-layout(set = 0, binding = 16, std430) buffer Counters { uint shadowRayCount; };
+layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters; };
 
 #include "compute/raycast/patch_eval.glsl"
 #include "compute/raycast/limit_normal.glsl"
@@ -58,52 +60,51 @@ BrdfParams brdf_params(uint index) {
   return p;
 }
 
-const RayRecord NO_RAY = RayRecord(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0);
-
 // A slot whose radiance arrives without a test.
-void write_unshadowed(uint slot, vec3 radiance) {
-  shadowRays[slot] = NO_RAY;
+void write_unshadowed(uint slot, vec3 radiance) { contributions[slot] = vec4(radiance, 0.0); }
+
+// A slot whose radiance arrives unless something lies in [tMin, tMax)
+// along the shadow ray; the shadow pass clears it then.
+void write_shadowed(uint slot, vec3 radiance, vec3 origin, vec3 direction, float tMax) {
   contributions[slot] = vec4(radiance, 0.0);
+  shadowRays[atomicAdd(counters.shadowRays, 1u)] = ShadowRayRecord(
+      RayRecord(origin.x, origin.y, origin.z, frame.shadowOffset, direction.x, direction.y, direction.z, tMax), slot);
 }
 
 // Sampled method, one sample l of either technique (density `pdf`, the other
 // technique's `other_pdf`): its MIS-weighted share, and with OCCLUSION its
-// shadow ray in `slot`. Returns 1 if that ray is traced.
-uint environment_sample(uint slot, BrdfParams params, vec3 position, vec3 n, vec3 ng, vec3 v, vec3 l, float pdf,
+// shadow ray for `slot`.
+void environment_sample(uint slot, BrdfParams params, vec3 position, vec3 n, vec3 ng, vec3 v, vec3 l, float pdf,
                         float other_pdf, inout vec3 unshadowed) {
   float nl = dot(n, l);
   bool lit = pdf > 0.0 && nl > 0.0 && dot(ng, l) > 0.0;
   vec3 radiance = lit ? brdf_evaluate(params, n, l, v) * environment_radiance(l) * nl *
                             (power_heuristic(pdf, other_pdf) / pdf) / float(frame.environmentSamples)
                       : vec3(0.0);
-  if (OCCLUSION == 0) {
+  if (OCCLUSION == 0)
     unshadowed += radiance;
-    return 0u;
-  }
-  vec3 origin = position + frame.shadowOffset * ng;
-  shadowRays[slot] = RayRecord(origin.x, origin.y, origin.z, frame.shadowOffset, l.x, l.y, l.z,
-                               lit ? infinity() : -1.0);
-  contributions[slot] = vec4(radiance, 0.0);
-  return lit ? 1u : 0u;
+  else if (lit)
+    write_shadowed(slot, radiance, position + frame.shadowOffset * ng, l, infinity());
+  else
+    write_unshadowed(slot, vec3(0.0));
 }
 
-// The environment's slots from `first` on; returns the shadow rays traced.
-uint shade_environment(uint first, uint pixel, uint sample_index, uint material, BrdfParams params, vec3 position,
+// The environment's slots from `first` on.
+void shade_environment(uint first, uint pixel, uint sample_index, uint material, BrdfParams params, vec3 position,
                        vec3 n, vec3 ng, vec3 v) {
   if (ENVIRONMENT == 2) {
     float nv = dot(n, v);
     if (nv <= COS_EPSILON) {  // nothing to look up (the lobe may not even exist)
       write_unshadowed(first, vec3(0.0));
-      return 0u;
+      return;
     }
     vec3 lobe = split_sum_direction(n, v, params.alpha);
     vec3 radiance = split_sum(params, nv, prefiltered_radiance(to_map(lobe), params.alpha),
                               dfg_lookup(materials[material].dfgTable, nv, params.alpha),
                               irradiance_over_pi(to_map(n)));
     write_unshadowed(first, frame.environmentIntensity * radiance);
-    return 0u;
+    return;
   }
-  uint traced = 0u;
   vec3 unshadowed = vec3(0.0);
   for (uint k = 0u; k < frame.environmentSamples; ++k) {
     uint d = ibl_dimension(frame.environmentSeed, k, 0u);
@@ -112,16 +113,15 @@ uint shade_environment(uint first, uint pixel, uint sample_index, uint material,
                                      sample_uniform(pixel, sample_index, d + 2u),
                                      sample_uniform(pixel, sample_index, d + 3u)));
     vec3 le = from_map(e.xyz);
-    traced += environment_sample(first + 2u * k, params, position, n, ng, v, le, e.w,
+    environment_sample(first + 2u * k, params, position, n, ng, v, le, e.w,
                                  brdf_lobes_pdf(params, n, le, v), unshadowed);
     vec3 ub = vec3(sample_uniform(pixel, sample_index, d + 4u), sample_uniform(pixel, sample_index, d + 5u),
                    sample_uniform(pixel, sample_index, d + 6u));
     vec3 lb = sample_brdf_lobes(params, n, v, ub);
-    traced += environment_sample(first + 2u * k + 1u, params, position, n, ng, v, lb,
+    environment_sample(first + 2u * k + 1u, params, position, n, ng, v, lb,
                                  brdf_lobes_pdf(params, n, lb, v), environment_pdf(to_map(lb)), unshadowed);
   }
   if (OCCLUSION == 0) write_unshadowed(first, unshadowed);
-  return traced;
 }
 
 // glTF's spot profile: a squared linear ramp in cos(theta) between the cones.
@@ -155,7 +155,7 @@ void main() {
   vec3 origin = vec3(ray.originX, ray.originY, ray.originZ);
   ObjectRange range = objects[hit.object];
   PatchRecord record = patches[hit.patchIndex];
-  ControlPoints c = load_control_points(range.firstPoint, record);
+  ControlPoints c = load_control_points(record.firstPoint, record.kind);
   vec3 n = limit_normal(c, hit.s, hit.tParam);
   // The exact method's hit point is the limit point; the tessellated one's
   // lies on the micro-triangle.
@@ -173,7 +173,6 @@ void main() {
 
   BrdfParams params = brdf_params(range.material);
   vec3 v = -direction;
-  uint traced = 0u;
   for (int l = 0; l < LIGHT_COUNT; ++l) {
     LightRecord light = lights[l];
     vec3 cLight = vec3(light.colorR, light.colorG, light.colorB);
@@ -190,22 +189,20 @@ void main() {
     }
     float nl = dot(n, toLight);
     bool lit = shaded && nl > 0.0 && dot(ng, toLight) > 0.0 && cLight != vec3(0.0);
-    vec3 shadowOrigin = position + frame.shadowOffset * ng;
-    shadowRays[firstSlot + l] = RayRecord(shadowOrigin.x, shadowOrigin.y, shadowOrigin.z, frame.shadowOffset,
-                                          toLight.x, toLight.y, toLight.z, lit ? distance : -1.0);
-    contributions[firstSlot + l] =
-        lit ? vec4(PI * brdf_evaluate(params, n, toLight, v) * cLight * nl, 0.0) : vec4(0.0);
-    if (lit) ++traced;
+    if (lit)
+      write_shadowed(firstSlot + l, PI * brdf_evaluate(params, n, toLight, v) * cLight * nl,
+                     position + frame.shadowOffset * ng, toLight, distance);
+    else
+      write_unshadowed(firstSlot + l, vec3(0.0));
   }
   if (ENVIRONMENT != 0) {
     // Every environment slot is written exactly once either way: the loops
     // of one invocation count against lavapipe's limit of 65535.
     uint first = firstSlot + uint(LIGHT_COUNT);
     if (shaded)
-      traced += shade_environment(first, frame.firstPixel + pixel, sample_index, range.material, params, position,
+      shade_environment(first, frame.firstPixel + pixel, sample_index, range.material, params, position,
                                   n, ng, v);
     else
       for (uint slot = first; slot < firstSlot + frame.slotsPerRay; ++slot) write_unshadowed(slot, vec3(0.0));
   }
-  if (traced > 0u) atomicAdd(shadowRayCount, traced);
 }

@@ -5,24 +5,29 @@
 #ifndef FACET_SHARED_RAYCAST_LAYOUT_H
 #define FACET_SHARED_RAYCAST_LAYOUT_H
 
-// Where one object's arrays start in the concatenated scene arrays. BVH
-// `next` and PatchRecord `firstPoint` stay relative to their object; every
-// other index below is absolute.
+// Where one object's data starts in the concatenated scene arrays; every
+// index is absolute. Its micro-grid has k x k cells per patch; each patch's
+// quadtree (compute/shared/wide_bvh.h) has `quadtreeLevels` levels of nodes
+// over a side^2 grid, side = 2^quadtreeLevels >= k, whose last level holds
+// 2 x 2 cells a node.
 struct ObjectRange {
-  uint firstNode;
-  uint firstPatch;  // PatchRecord index; also the tessellation's patch index
-  uint firstPoint;
+  uint rootNode;
+  uint firstPatch;  // PatchRecord and patch header index
+  uint patchCount;
   uint patchIdOffset;  // patch and cage-face ids count on across objects
   uint faceIdOffset;
   uint material;
-  uint rate;               // tessellated: k
+  uint rate;  // k
+  uint quadtreeLevels;
+  uint firstQuadtreeNode;  // patch p's quadtree starts at firstQuadtreeNode + p * quadtreeNodes
+  uint quadtreeNodes;
+  uint firstBlock;         // dicing: the object's first 2 x 2 block of cells
+  uint firstCell;          // exact: FACET_CELL_TEXELS of bounds per cell
   uint firstGridVertex;    // tessellated: (k + 1)^2 limit points per patch
   uint firstEdgeMidpoint;  // tessellated: 4 k per patch (those of unsplit edges unused)
-  uint firstRow;           // tessellated: k row boxes per patch
 };
 
-// A ray; tMax < 0 marks a ray that is not traced (a shadow ray the light
-// model skipped).
+// A ray from `origin` along `direction`, over [tMin, tMax).
 struct RayRecord {
   float originX;
   float originY;
@@ -32,6 +37,21 @@ struct RayRecord {
   float directionY;
   float directionZ;
   float tMax;
+};
+
+// A shadow ray of the compacted list, with the light slot it decides.
+struct ShadowRayRecord {
+  RayRecord ray;
+  uint slot;
+};
+
+// Counted by the kernels, read back per band.
+struct RenderCounters {
+  uint shadowRays;       // appended by the surface kernel: the shadow pass's ray count
+  uint newtonFallbacks;  // exact cells where Newton failed and the cell's domain was subdivided
+  uint dispatchX;        // the shadow pass's indirect dispatch, from shadowRays
+  uint dispatchY;
+  uint dispatchZ;
 };
 
 // The closest hit; patchIndex == FACET_NO_HIT on a miss. (s, t) is patch-local.
@@ -114,6 +134,10 @@ struct FrameParams {
   uint strata;        // samples per pixel = strata^2
   uint raysPerPixel;  // 1 when strata == 1, else the centre ray plus strata^2
   uint objectCount;
+  uint cellBlockCount;      // dicing: 2 x 2 blocks of cells in all
+  uint gridVertexCount;     // tessellated dicing: grid vertices, then edge midpoints
+  uint edgeMidpointCount;
+  uint patchCount;
   float tolerance;     // exact method: largest ray-to-surface distance of a root
   float minimumPiece;  // exact method: pieces are not split below this size
   float shadowOffset;  // 1e-6 x the scene diagonal (docs/rendering.md)

@@ -98,9 +98,16 @@ void prepareDispatch(CommandRecording& r, std::vector<const BufferState*>& reads
                             0, nullptr);
     r.bindGroupPipelineLayouts[i] = layout.layout;
   }
-  for (std::size_t i = 0; i < groups.size(); ++i) {
-    for (const BoundBuffer& bound : r.bindGroups[i]->buffers)
-      (bound.written ? writes : reads).push_back(bound.buffer.get());
+  // A binding the layout lets the shader write is a read when the shader
+  // declares it read-only: a storage texel buffer has no read-only type.
+  const auto& shader = r.pipeline->shaderBindings;
+  for (std::uint32_t i = 0; i < groups.size(); ++i) {
+    for (const BoundBuffer& bound : r.bindGroups[i]->buffers) {
+      auto b = std::find_if(shader.begin(), shader.end(),
+                            [&](const spirv::Binding& s) { return s.set == i && s.binding == bound.binding; });
+      bool written = bound.written && (b == shader.end() || b->written);
+      (written ? writes : reads).push_back(bound.buffer.get());
+    }
   }
 }
 

@@ -29,7 +29,7 @@ void barrierToHost(VkCommandBuffer cmd) {
 
 constexpr BufferUsage kKnownUsages = BufferUsage::MapRead | BufferUsage::MapWrite | BufferUsage::CopySrc |
                                      BufferUsage::CopyDst | BufferUsage::Uniform | BufferUsage::Storage |
-                                     BufferUsage::Indirect;
+                                     BufferUsage::Indirect | BufferUsage::Texel | BufferUsage::StorageTexel;
 
 std::string hex(std::uint32_t value) {
   char text[16];
@@ -44,6 +44,8 @@ VkBufferUsageFlags vulkanUsage(BufferUsage usage) {
   if (has(usage, BufferUsage::Uniform)) flags |= VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
   if (has(usage, BufferUsage::Storage)) flags |= VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   if (has(usage, BufferUsage::Indirect)) flags |= VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
+  if (has(usage, BufferUsage::Texel)) flags |= VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
+  if (has(usage, BufferUsage::StorageTexel)) flags |= VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT;
   return flags;
 }
 
@@ -172,9 +174,11 @@ std::shared_ptr<BufferState> createBufferState(const std::shared_ptr<DeviceState
 
 std::string toString(BufferUsage usage) {
   static constexpr std::pair<BufferUsage, const char*> kNames[] = {
-      {BufferUsage::MapRead, "MapRead"},  {BufferUsage::MapWrite, "MapWrite"}, {BufferUsage::CopySrc, "CopySrc"},
-      {BufferUsage::CopyDst, "CopyDst"},  {BufferUsage::Uniform, "Uniform"},   {BufferUsage::Storage, "Storage"},
-      {BufferUsage::Indirect, "Indirect"}};
+      {BufferUsage::MapRead, "MapRead"},          {BufferUsage::MapWrite, "MapWrite"},
+      {BufferUsage::CopySrc, "CopySrc"},          {BufferUsage::CopyDst, "CopyDst"},
+      {BufferUsage::Uniform, "Uniform"},          {BufferUsage::Storage, "Storage"},
+      {BufferUsage::Indirect, "Indirect"},        {BufferUsage::Texel, "Texel"},
+      {BufferUsage::StorageTexel, "StorageTexel"}};
   std::string names;
   for (auto [bit, name] : kNames) {
     if (!has(usage, bit)) continue;

@@ -85,6 +85,8 @@ struct Limits {
   std::uint32_t subgroupSize = 0;
   double timestampPeriodNs = 0;  // 0: the queue cannot write timestamps
   bool shaderFloat64 = false;
+  std::uint64_t maxTexelBufferElements = 0;  // texels in one texel binding
+  std::uint32_t minTexelBufferOffsetAlignment = 0;
 };
 
 struct AdapterInfo {
@@ -108,6 +110,8 @@ enum class BufferUsage : std::uint32_t {
   Uniform = 1u << 6,
   Storage = 1u << 7,
   Indirect = 1u << 8,
+  Texel = 1u << 9,          // BindingType::TexelBuffer
+  StorageTexel = 1u << 10,  // BindingType::StorageTexelBuffer
 };
 constexpr BufferUsage operator|(BufferUsage a, BufferUsage b) {
   return BufferUsage(std::uint32_t(a) | std::uint32_t(b));
@@ -153,13 +157,25 @@ class ShaderModule : public Handle<detail::ShaderModuleState> {
   using Handle::Handle;
 };
 
-enum class BindingType { Uniform, Storage, ReadOnlyStorage };
+// Texel buffers are buffers read through the texture path: GLSL `uniform
+// usamplerBuffer` with texelFetch (TexelBuffer), `layout(rgba32ui) uniform
+// uimageBuffer` with imageLoad/imageStore (StorageTexelBuffer). Where a driver
+// turns an SSBO load at a computed index into a loop over lanes (lavapipe), a
+// texel fetch is one load; and a texel binding is bounded by
+// maxTexelBufferElements, not maxStorageBufferBindingSize (2 GiB against
+// 128 MiB on lavapipe). The bind group makes the buffer view.
+enum class BindingType { Uniform, Storage, ReadOnlyStorage, TexelBuffer, StorageTexelBuffer };
 const char* toString(BindingType type);
+
+// Four 32-bit components: 16 bytes per texel. GLSL vec4, uvec4 and ivec4.
+enum class TexelFormat { Rgba32Float, Rgba32Uint, Rgba32Sint };
+const char* toString(TexelFormat format);
 
 struct BindGroupLayoutEntry {
   std::uint32_t binding = 0;
   BindingType type = BindingType::Storage;
-  std::uint64_t minBindingSize = 0;  // 0: any size
+  std::uint64_t minBindingSize = 0;                    // 0: any size
+  TexelFormat texelFormat = TexelFormat::Rgba32Float;  // texel bindings only
 };
 
 struct BindGroupLayoutDescriptor {
@@ -170,6 +186,8 @@ struct BindGroupLayoutDescriptor {
 class BindGroupLayout : public Handle<detail::BindGroupLayoutState> {
  public:
   using Handle::Handle;
+  // Sorted by binding; for a derived layout, what the shader declares.
+  const std::vector<BindGroupLayoutEntry>& entries() const;
 };
 
 struct PipelineLayoutDescriptor {

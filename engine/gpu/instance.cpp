@@ -161,6 +161,8 @@ void describeAdapter(VkPhysicalDevice device, AdapterInfo& info, Limits& limits)
   computeQueueFamily(device, &timestampBits);
   limits.timestampPeriodNs = timestampBits > 0 && l.timestampComputeAndGraphics ? l.timestampPeriod : 0.0;
   limits.shaderFloat64 = features.shaderFloat64;
+  limits.maxTexelBufferElements = l.maxTexelBufferElements;
+  limits.minTexelBufferOffsetAlignment = std::uint32_t(l.minTexelBufferOffsetAlignment);
 }
 
 std::string lowercase(std::string s) {

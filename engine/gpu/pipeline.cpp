@@ -20,6 +20,8 @@ PipelineLayoutState::~PipelineLayoutState() {
 }
 BindGroupState::~BindGroupState() {
   if (pool) vkDestroyDescriptorPool(device->device, pool, nullptr);
+  for (const BoundBuffer& b : buffers)
+    if (b.view) vkDestroyBufferView(device->device, b.view, nullptr);
 }
 ComputePipelineState::~ComputePipelineState() {
   if (pipeline) vkDestroyPipeline(device->device, pipeline, nullptr);
@@ -30,12 +32,17 @@ const BindGroupLayoutEntry* BindGroupLayoutState::find(std::uint32_t binding) co
   return it == entries.end() ? nullptr : &*it;
 }
 
+namespace {
+bool isTexel(BindingType type) { return type == BindingType::TexelBuffer || type == BindingType::StorageTexelBuffer; }
+}  // namespace
+
 bool BindGroupLayoutState::matches(const BindGroupLayoutState& other) const {
   if (this == &other) return true;
   if (entries.size() != other.entries.size()) return false;
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const auto &a = entries[i], &b = other.entries[i];
     if (a.binding != b.binding || a.type != b.type || a.minBindingSize != b.minBindingSize) return false;
+    if (isTexel(a.type) && a.texelFormat != b.texelFormat) return false;
   }
   return true;
 }
@@ -43,7 +50,40 @@ bool BindGroupLayoutState::matches(const BindGroupLayoutState& other) const {
 namespace {
 
 VkDescriptorType descriptorType(BindingType type) {
-  return type == BindingType::Uniform ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  switch (type) {
+    case BindingType::Uniform:
+      return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    case BindingType::TexelBuffer:
+      return VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    case BindingType::StorageTexelBuffer:
+      return VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
+    default:
+      return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  }
+}
+
+VkFormat vulkanFormat(TexelFormat format) {
+  switch (format) {
+    case TexelFormat::Rgba32Uint:
+      return VK_FORMAT_R32G32B32A32_UINT;
+    case TexelFormat::Rgba32Sint:
+      return VK_FORMAT_R32G32B32A32_SINT;
+    default:
+      return VK_FORMAT_R32G32B32A32_SFLOAT;
+  }
+}
+
+// Vulkan requires these formats for texel buffers, but a driver that lacks
+// one would otherwise fail only inside vkCreateBufferView.
+void checkTexelFormat(const DeviceState& device, const std::string& layoutLabel, const BindGroupLayoutEntry& e) {
+  VkFormatProperties properties;
+  vkGetPhysicalDeviceFormatProperties(device.physicalDevice, vulkanFormat(e.texelFormat), &properties);
+  const VkFormatFeatureFlags needed = e.type == BindingType::TexelBuffer ? VK_FORMAT_FEATURE_UNIFORM_TEXEL_BUFFER_BIT
+                                                                         : VK_FORMAT_FEATURE_STORAGE_TEXEL_BUFFER_BIT;
+  if ((properties.bufferFeatures & needed) == 0)
+    throw Error(describe("bind group layout", layoutLabel) + ", binding " + std::to_string(e.binding) + ": " +
+                describe("adapter", device.info().name) + " does not support " + toString(e.texelFormat) + " in a " +
+                toString(e.type));
 }
 
 std::string bindingList(const BindGroupLayoutState& layout) {
@@ -66,8 +106,10 @@ std::shared_ptr<BindGroupLayoutState> createBindGroupLayoutState(const std::shar
                   " appears twice");
   }
   std::vector<VkDescriptorSetLayoutBinding> bindings;
-  for (const auto& e : state->entries)
+  for (const auto& e : state->entries) {
+    if (isTexel(e.type)) checkTexelFormat(*device, d.label, e);
     bindings.push_back({e.binding, descriptorType(e.type), 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+  }
   VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   info.bindingCount = std::uint32_t(bindings.size());
   info.pBindings = bindings.data();
@@ -103,7 +145,7 @@ std::shared_ptr<PipelineLayoutState> deriveLayout(const std::shared_ptr<DeviceSt
   for (std::uint32_t set = 0; set < groupCount; ++set) {
     BindGroupLayoutDescriptor d{label + " group " + std::to_string(set), {}};
     for (const auto& b : reflection.bindings)
-      if (b.set == set) d.entries.push_back({b.binding, b.type, b.minSize});
+      if (b.set == set) d.entries.push_back({b.binding, b.type, b.minSize, b.texelFormat});
     groups.push_back(createBindGroupLayoutState(device, d));
   }
   return createPipelineLayoutState(device, label, std::move(groups));
@@ -131,6 +173,9 @@ void checkLayoutAgainstShader(const std::string& pipelineLabel, const PipelineLa
     if (!compatible(b.type, entry->type))
       fail("is " + std::string(toString(b.type)) + " in the shader but " + toString(entry->type) + " in " +
            describe("bind group layout", group.label));
+    if (isTexel(b.type) && b.texelFormat != entry->texelFormat)
+      fail("is " + std::string(toString(b.texelFormat)) + " in the shader but " + toString(entry->texelFormat) +
+           " in " + describe("bind group layout", group.label));
   }
 }
 
@@ -189,6 +234,22 @@ const char* toString(BindingType type) {
       return "storage";
     case BindingType::ReadOnlyStorage:
       return "read-only storage";
+    case BindingType::TexelBuffer:
+      return "texel buffer";
+    case BindingType::StorageTexelBuffer:
+      return "storage texel buffer";
+  }
+  return "?";
+}
+
+const char* toString(TexelFormat format) {
+  switch (format) {
+    case TexelFormat::Rgba32Float:
+      return "rgba32float";
+    case TexelFormat::Rgba32Uint:
+      return "rgba32uint";
+    case TexelFormat::Rgba32Sint:
+      return "rgba32sint";
   }
   return "?";
 }
@@ -248,12 +309,17 @@ BindGroup Device::createBindGroup(const BindGroupDescriptor& descriptor) {
     if (!e.buffer || !*e.buffer) fail("buffer is null, moved-from or empty");
     const Buffer& buffer = *e.buffer;
     const std::string bufferName = describe("buffer", buffer.label());
-    BufferUsage needed = entry->type == BindingType::Uniform ? BufferUsage::Uniform : BufferUsage::Storage;
+    const bool texel = isTexel(entry->type);
+    BufferUsage needed = entry->type == BindingType::Uniform              ? BufferUsage::Uniform
+                         : entry->type == BindingType::TexelBuffer        ? BufferUsage::Texel
+                         : entry->type == BindingType::StorageTexelBuffer ? BufferUsage::StorageTexel
+                                                                          : BufferUsage::Storage;
     if (!has(buffer.usage(), needed))
       fail(std::string(toString(entry->type)) + " binding needs a buffer with usage " + toString(needed) + ", but " +
            bufferName + " has " + toString(buffer.usage()));
-    std::uint32_t alignment = entry->type == BindingType::Uniform ? limits.minUniformBufferOffsetAlignment
-                                                                  : limits.minStorageBufferOffsetAlignment;
+    std::uint32_t alignment = texel                                 ? limits.minTexelBufferOffsetAlignment
+                              : entry->type == BindingType::Uniform ? limits.minUniformBufferOffsetAlignment
+                                                                    : limits.minStorageBufferOffsetAlignment;
     if (e.offset % alignment != 0)
       fail("offset " + std::to_string(e.offset) + " is not a multiple of " + std::to_string(alignment));
     if (e.offset >= buffer.size()) fail("offset " + std::to_string(e.offset) + " is past the end of " + bufferName);
@@ -265,16 +331,27 @@ BindGroup Device::createBindGroup(const BindGroupDescriptor& descriptor) {
     if (size < entry->minBindingSize)
       fail(bufferName + " is too small for the binding: " + std::to_string(size) + " bytes bound, at least " +
            std::to_string(entry->minBindingSize) + " needed");
-    std::uint64_t maxRange =
-        entry->type == BindingType::Uniform ? limits.maxUniformBufferBindingSize : limits.maxStorageBufferBindingSize;
-    if (size > maxRange)
-      fail(std::to_string(size) + " bytes of " + bufferName + " exceed the device's max" +
-           (entry->type == BindingType::Uniform ? "Uniform" : "Storage") + "BufferBindingSize " +
-           std::to_string(maxRange) + "; bind a smaller range or split the buffer");
-    if (entry->type != BindingType::Uniform && size % 4 != 0) fail("a storage binding's size must be a multiple of 4");
+    if (texel) {
+      if (size % spirv::kTexelBytes != 0)
+        fail("a texel binding's size must be a multiple of " + std::to_string(spirv::kTexelBytes) + " (one texel)");
+      if (size / spirv::kTexelBytes > limits.maxTexelBufferElements)
+        fail(std::to_string(size / spirv::kTexelBytes) + " texels of " + bufferName +
+             " exceed the device's maxTexelBufferElements " + std::to_string(limits.maxTexelBufferElements) +
+             "; bind a smaller range or split the buffer");
+    } else {
+      std::uint64_t maxRange =
+          entry->type == BindingType::Uniform ? limits.maxUniformBufferBindingSize : limits.maxStorageBufferBindingSize;
+      if (size > maxRange)
+        fail(std::to_string(size) + " bytes of " + bufferName + " exceed the device's max" +
+             (entry->type == BindingType::Uniform ? "Uniform" : "Storage") + "BufferBindingSize " +
+             std::to_string(maxRange) + "; bind a smaller range or split the buffer");
+      if (entry->type != BindingType::Uniform && size % 4 != 0)
+        fail("a storage binding's size must be a multiple of 4");
+    }
     layoutEntries.push_back(entry);
     infos.push_back({buffer.state()->buffer, e.offset, size});
-    state->buffers.push_back({e.binding, buffer.state(), size, entry->type == BindingType::Storage});
+    const bool written = entry->type == BindingType::Storage || entry->type == BindingType::StorageTexelBuffer;
+    state->buffers.push_back({e.binding, buffer.state(), size, written});
   }
   for (const auto& entry : layout.entries) {
     if (std::find(layoutEntries.begin(), layoutEntries.end(), &entry) == layoutEntries.end())
@@ -282,11 +359,20 @@ BindGroup Device::createBindGroup(const BindGroupDescriptor& descriptor) {
                   describe("bind group layout", layout.label) + " has no buffer");
   }
 
-  std::uint32_t counts[2] = {0, 0};  // uniform, storage
-  for (const auto* entry : layoutEntries) counts[entry->type == BindingType::Uniform ? 0 : 1]++;
+  for (std::size_t i = 0; i < infos.size(); ++i) {
+    if (!isTexel(layoutEntries[i]->type)) continue;
+    VkBufferViewCreateInfo view{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+    view.buffer = infos[i].buffer;
+    view.format = vulkanFormat(layoutEntries[i]->texelFormat);
+    view.offset = infos[i].offset;
+    view.range = infos[i].range;
+    check(vkCreateBufferView(state_->device, &view, nullptr, &state->buffers[i].view), "vkCreateBufferView");
+  }
+
+  std::map<VkDescriptorType, std::uint32_t> counts;
+  for (const auto* entry : layoutEntries) counts[descriptorType(entry->type)]++;
   std::vector<VkDescriptorPoolSize> sizes;
-  if (counts[0]) sizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, counts[0]});
-  if (counts[1]) sizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, counts[1]});
+  for (auto [type, count] : counts) sizes.push_back({type, count});
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 1;
   poolInfo.poolSizeCount = std::uint32_t(sizes.size());
@@ -304,7 +390,10 @@ BindGroup Device::createBindGroup(const BindGroupDescriptor& descriptor) {
     w.dstBinding = layoutEntries[i]->binding;
     w.descriptorCount = 1;
     w.descriptorType = descriptorType(layoutEntries[i]->type);
-    w.pBufferInfo = &infos[i];
+    if (isTexel(layoutEntries[i]->type))
+      w.pTexelBufferView = &state->buffers[i].view;
+    else
+      w.pBufferInfo = &infos[i];
     writes.push_back(w);
   }
   vkUpdateDescriptorSets(state_->device, std::uint32_t(writes.size()), writes.data(), 0, nullptr);
@@ -386,6 +475,10 @@ ComputePipeline Device::createComputePipeline(const ComputePipelineDescriptor& d
   check(vkCreateComputePipelines(state_->device, VK_NULL_HANDLE, 1, &info, nullptr, &state->pipeline),
         "vkCreateComputePipelines");
   return ComputePipeline(std::move(state));
+}
+
+const std::vector<BindGroupLayoutEntry>& BindGroupLayout::entries() const {
+  return detail::require(*this, "bind group layout").entries;
 }
 
 BindGroupLayout ComputePipeline::getBindGroupLayout(std::uint32_t index) const {

@@ -20,6 +20,9 @@ enum Op : std::uint32_t {
   OpTypeFloat = 22,
   OpTypeVector = 23,
   OpTypeMatrix = 24,
+  OpTypeImage = 25,
+  OpTypeSampler = 26,
+  OpTypeSampledImage = 27,
   OpTypeArray = 28,
   OpTypeRuntimeArray = 29,
   OpTypeStruct = 30,
@@ -56,6 +59,10 @@ constexpr std::uint32_t kStorageClassUniformConstant = 0;
 constexpr std::uint32_t kStorageClassUniform = 2;
 constexpr std::uint32_t kStorageClassPushConstant = 9;
 constexpr std::uint32_t kStorageClassStorageBuffer = 12;
+constexpr std::uint32_t kDimBuffer = 5;
+constexpr std::uint32_t kImageFormatRgba32f = 1;
+constexpr std::uint32_t kImageFormatRgba32i = 21;
+constexpr std::uint32_t kImageFormatRgba32ui = 30;
 
 std::string literalString(std::span<const std::uint32_t> words) {
   std::string s;
@@ -141,11 +148,15 @@ class Module {
   static std::size_t typeOperandWords(std::uint32_t op) {
     switch (op) {
       case OpTypeBool:
+      case OpTypeSampler:
       case OpTypeStruct:  // member types follow, any number
         return 1;
       case OpTypeFloat:         // width
       case OpTypeRuntimeArray:  // element type
+      case OpTypeSampledImage:  // image type
         return 2;
+      case OpTypeImage:  // sampled type, dim, depth, arrayed, multisampled, sampled, format
+        return 8;
       default:  // int: width, signedness; vector, matrix: component type, count;
                 // array: element type, length; pointer: storage class, type
         return 3;
@@ -210,6 +221,9 @@ class Module {
       case OpTypeMatrix:
       case OpTypeArray:
       case OpTypePointer:
+      case OpTypeImage:
+      case OpTypeSampler:
+      case OpTypeSampledImage:
         need(typeOperandWords(op));
         types_[w[0]] = Type{op, {w.begin() + 1, w.end()}};
         break;
@@ -370,37 +384,71 @@ class Module {
     return true;
   }
 
+  // A texel buffer is an image of Dim Buffer, sampled (Sampled 1, possibly
+  // wrapped in a sampled image type) or storage (Sampled 2), whose four
+  // 32-bit components are the texel format.
+  void reflectTexelBuffer(std::uint32_t typeId, const std::string& binding, bool nonWritable, Binding& b) const {
+    auto find = [&](std::uint32_t id) {
+      auto it = types_.find(id);
+      return it == types_.end() ? nullptr : &it->second;
+    };
+    const Type* image = find(typeId);
+    if (image && image->op == OpTypeSampledImage) image = find(image->operands[0]);
+    if (!image || image->op != OpTypeImage || image->operands[1] != kDimBuffer ||
+        (image->operands[5] != 1 && image->operands[5] != 2))
+      fail(binding +
+           " is an image, a sampler or an array of them: facet::gpu supports only uniform, storage and texel "
+           "buffers, one per binding");
+    const bool storage = image->operands[5] == 2;
+    const Type& component = type(image->operands[0], "image component type");
+    const bool isFloat = component.op == OpTypeFloat;
+    if ((!isFloat && component.op != OpTypeInt) || component.operands[0] != 32)
+      fail(binding + " does not have 32-bit components: facet::gpu supports only 4 x 32-bit texel formats");
+    const bool isSigned = !isFloat && component.operands[1] == 1;
+    const std::uint32_t format = isFloat ? kImageFormatRgba32f : isSigned ? kImageFormatRgba32i : kImageFormatRgba32ui;
+    if (storage && image->operands[6] != format)
+      fail(binding + " has image format " + std::to_string(image->operands[6]) +
+           ": facet::gpu supports only 4 x 32-bit texel formats (rgba32f, rgba32ui, rgba32i, as the component type)");
+    b.type = storage ? BindingType::StorageTexelBuffer : BindingType::TexelBuffer;
+    b.texelFormat = isFloat ? TexelFormat::Rgba32Float : isSigned ? TexelFormat::Rgba32Sint : TexelFormat::Rgba32Uint;
+    b.written = storage && !nonWritable;
+    b.minSize = kTexelBytes;
+  }
+
   void reflectVariable(std::uint32_t id, const Type& var, Reflection& r) const {
     std::uint32_t storageClass = var.operands[1];
     if (storageClass == kStorageClassPushConstant) r.usesPushConstants = true;
     auto deco = decorations_.find(id);
     if (deco == decorations_.end() || !deco->second.has(BindingDecoration)) return;
+    if (storageClass != kStorageClassUniformConstant && storageClass != kStorageClassUniform &&
+        storageClass != kStorageClassStorageBuffer)
+      return;
     auto name = names_.find(id);
-    const std::string binding =
-        "binding (group " + std::to_string(deco->second.has(DescriptorSet) ? deco->second.literal(DescriptorSet) : 0) +
-        ", binding " + std::to_string(deco->second.literal(BindingDecoration)) +
-        (name != names_.end() && !name->second.empty() ? ", '" + name->second + "'" : "") + ")";
-    if (storageClass == kStorageClassUniformConstant)
-      fail(binding + " is an image, sampler or texel buffer: facet::gpu supports only uniform and storage buffers");
-    if (storageClass != kStorageClassUniform && storageClass != kStorageClassStorageBuffer) return;
+    Binding b;
+    b.set = deco->second.has(DescriptorSet) ? deco->second.literal(DescriptorSet) : 0;
+    b.binding = deco->second.literal(BindingDecoration);
+    b.name = name != names_.end() ? name->second : "";
+    const std::string binding = "binding (group " + std::to_string(b.set) + ", binding " + std::to_string(b.binding) +
+                                (b.name.empty() ? "" : ", '" + b.name + "'") + ")";
     const Type& pointer = type(var.operands[0], "variable type");
     if (pointer.op != OpTypePointer) fail(binding + " does not have a pointer type");
     std::uint32_t blockType = pointer.operands[1];
+    if (storageClass == kStorageClassUniformConstant) {
+      reflectTexelBuffer(blockType, binding, deco->second.has(NonWritable), b);
+      r.bindings.push_back(b);
+      return;
+    }
     const Type& block = type(blockType, "block type");
     if (block.op == OpTypeArray || block.op == OpTypeRuntimeArray)
       fail(binding + " is an array of blocks: facet::gpu supports one buffer per binding; give each its own binding");
     if (block.op != OpTypeStruct) fail(binding + " is not a block (struct) type");
     bool bufferBlock = decorations_.count(blockType) && decorations_.at(blockType).has(BufferBlock);
-    Binding b;
-    b.set = deco->second.has(DescriptorSet) ? deco->second.literal(DescriptorSet) : 0;
-    b.binding = deco->second.literal(BindingDecoration);
     bool storage = storageClass == kStorageClassStorageBuffer || bufferBlock;
     bool readOnly = deco->second.has(NonWritable) || allMembersNonWritable(blockType);
     b.type = !storage ? BindingType::Uniform : readOnly ? BindingType::ReadOnlyStorage : BindingType::Storage;
+    b.written = b.type == BindingType::Storage;
     b.minSize = sizeOf(blockType);
-    b.name = name != names_.end() && !name->second.empty() ? name->second
-             : names_.count(blockType)                     ? names_.at(blockType)
-                                                           : "";
+    if (b.name.empty() && names_.count(blockType)) b.name = names_.at(blockType);
     r.bindings.push_back(b);
   }
 

@@ -13,11 +13,16 @@
 
 namespace facet::gpu::spirv {
 
+// Every TexelFormat is four 32-bit components.
+constexpr std::uint64_t kTexelBytes = 16;
+
 struct Binding {
   std::uint32_t set = 0;
   std::uint32_t binding = 0;
   BindingType type = BindingType::Storage;
-  std::uint64_t minSize = 0;  // fixed part of the block plus one runtime-array element
+  std::uint64_t minSize = 0;  // fixed part of the block plus one runtime-array element, or one texel
+  TexelFormat texelFormat = TexelFormat::Rgba32Float;  // texel bindings only
+  bool written = false;  // storage, or storage texel not declared NonWritable: the shader may write it
   std::string name;
 };
 

@@ -126,8 +126,9 @@ struct PipelineLayoutState {
 struct BoundBuffer {
   std::uint32_t binding = 0;
   std::shared_ptr<BufferState> buffer;
-  std::uint64_t size = 0;  // the bound range
-  bool written = false;    // bound for writing (storage, not read-only)
+  std::uint64_t size = 0;              // the bound range
+  bool written = false;                // the layout lets the shader write it (storage, storage texel)
+  VkBufferView view = VK_NULL_HANDLE;  // texel bindings: owned by the bind group
 };
 
 struct BindGroupState {

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "engine/camera.hpp"
+#include "engine/gpu_backend/gpu_scene.h"
 #include "engine/gpu_backend/prefilter_gpu.h"
 #include "engine/gpu_backend/raycast_layout.hpp"
 #include "engine/ibl/environment_lighting.h"
@@ -22,16 +23,28 @@ namespace layout = gpu_layout;
 
 constexpr std::uint32_t kWorkgroupSize = 64;
 constexpr std::uint32_t kMaxWorkgroupsPerDimension = 65535;
-constexpr int kBvhStackDepth = 32;  // BVH_STACK in compute/raycast/trace.glsl: depth + 1 entries
 // A root is accepted up to `tolerance` off the ray, so its t may be off by
 // tolerance / sin(angle): shadow rays start well clear of that.
 constexpr double kShadowOffsetInTolerances = 32;
 // Bands of pixels keep each ray buffer within this (lavapipe binds at most 128 MiB).
 constexpr std::uint64_t kMaxRayBufferBytes = std::uint64_t(64) << 20;
 
-enum Stage { kDice, kRaygen, kIntersect, kSurface, kShadow, kGather, kResolve, kStageCount };
-const char* const kStageNames[kStageCount] = {"dice",        "raygen", "intersect", "surface",
-                                              "shadow rays", "gather", "resolve"};
+enum Stage {
+  kDiceGrid,
+  kDiceCells,
+  kQuadtrees,
+  kRaygen,
+  kIntersect,
+  kSurface,
+  kShadowDispatch,
+  kShadow,
+  kGather,
+  kResolve,
+  kStageCount
+};
+const char* const kStageNames[kStageCount] = {"dice grid",   "dice cells", "quadtrees",   "raygen",
+                                              "intersect",   "surface",    "compact",     "shadow rays",
+                                              "gather",      "resolve"};
 
 // A 2D grid of 64-wide workgroups covering `invocations` (kernels index with
 // invocation_index()).
@@ -41,64 +54,21 @@ std::pair<std::uint32_t, std::uint32_t> workgroups(std::uint64_t invocations) {
   return {std::uint32_t(x), std::uint32_t((groups + x - 1) / x)};
 }
 
+// Vulkan has no empty buffers, and a binding holds at least one element (one
+// texel): an unused array gets that much.
+std::uint64_t bufferBytes(std::uint64_t bytes) { return std::max<std::uint64_t>(16, bytes); }
+
 template <class T>
 gpu::Buffer upload(gpu::Device& device, const char* label, const std::vector<T>& data, BufferUsage usage) {
-  // Vulkan has no empty buffers, and a binding holds at least one element:
-  // an unused array gets one element's worth.
-  const std::uint64_t bytes = std::max<std::uint64_t>({16, sizeof(T), data.size() * sizeof(T)});
-  gpu::Buffer buffer = device.createBuffer({label, bytes, usage | BufferUsage::CopyDst});
+  gpu::Buffer buffer =
+      device.createBuffer({label, bufferBytes(std::max(sizeof(T), data.size() * sizeof(T))), usage | BufferUsage::CopyDst});
   if (!data.empty()) device.queue().writeBuffer(buffer, 0, data.data(), data.size() * sizeof(T));
   return buffer;
 }
 
 gpu::Buffer storage(gpu::Device& device, const char* label, std::uint64_t bytes,
                     BufferUsage extra = BufferUsage::None) {
-  return device.createBuffer({label, std::max<std::uint64_t>(16, bytes), BufferUsage::Storage | extra});
-}
-
-// The scene arrays the kernels read, every object's concatenated.
-struct SceneArrays {
-  std::vector<layout::PatchBvhNode> nodes;
-  std::vector<layout::PatchRecord> patches;
-  std::vector<layout::PatchPoint> points;
-  std::vector<layout::ObjectRange> objects;
-  std::uint64_t gridVertices = 0, edgeMidpoints = 0, rows = 0;
-};
-
-SceneArrays sceneArrays(const scene::Scene& scene, const scene::SceneGeometry& geometry) {
-  SceneArrays arrays;
-  std::uint32_t patchIds = 0, faceIds = 0;
-  for (std::size_t i = 0; i < geometry.objects.size(); ++i) {
-    const scene::ObjectGeometry& object = geometry.objects[i];
-    const scene::PatchBvh& bvh = object.bvh;
-    if (bvh.statistics().maxDepth >= kBvhStackDepth)
-      throw gpu::Error("object '" + scene.objects[i].name + "': BVH depth " +
-                       std::to_string(bvh.statistics().maxDepth) + " exceeds the GPU traversal stack of " +
-                       std::to_string(kBvhStackDepth));
-    const std::uint32_t rate = std::uint32_t(std::max(1, object.refinement.tessellationRate));
-    const std::uint64_t patchCount = bvh.gpuPatches().size();
-    layout::ObjectRange range{};
-    range.firstNode = std::uint32_t(arrays.nodes.size());
-    range.firstPatch = std::uint32_t(arrays.patches.size());
-    range.firstPoint = std::uint32_t(arrays.points.size());
-    range.patchIdOffset = patchIds;
-    range.faceIdOffset = faceIds;
-    range.material = std::uint32_t(scene.objects[i].material);
-    range.rate = rate;
-    range.firstGridVertex = std::uint32_t(arrays.gridVertices);
-    range.firstEdgeMidpoint = std::uint32_t(arrays.edgeMidpoints);
-    range.firstRow = std::uint32_t(arrays.rows);
-    arrays.objects.push_back(range);
-    arrays.nodes.insert(arrays.nodes.end(), bvh.gpuNodes().begin(), bvh.gpuNodes().end());
-    arrays.patches.insert(arrays.patches.end(), bvh.gpuPatches().begin(), bvh.gpuPatches().end());
-    arrays.points.insert(arrays.points.end(), bvh.gpuPoints().begin(), bvh.gpuPoints().end());
-    arrays.gridVertices += patchCount * (rate + 1) * (rate + 1);
-    arrays.edgeMidpoints += patchCount * 4 * rate;
-    arrays.rows += patchCount * rate;
-    patchIds += std::uint32_t(object.surface.patchCount());
-    faceIds += std::uint32_t(scene.objects[i].cage.faceCount());
-  }
-  return arrays;
+  return device.createBuffer({label, bufferBytes(bytes), BufferUsage::Storage | extra});
 }
 
 std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
@@ -170,7 +140,7 @@ std::uint32_t environmentSlots(const scene::Scene& scene) {
   return e.method == scene::IblMethod::Sampled && e.occlusion ? 2 * std::uint32_t(e.samples) : 1;
 }
 
-std::vector<layout::LightRecord> lightRecords(const scene::Scene& scene) {
+std::vector<layout::LightRecord> lightRecords(const scene::Scene& scene, const glm::dvec3& origin) {
   std::vector<layout::LightRecord> records;
   for (const scene::Light& light : scene.lights) {
     layout::LightRecord r{};
@@ -178,7 +148,8 @@ std::vector<layout::LightRecord> lightRecords(const scene::Scene& scene) {
              : light.type == scene::LightType::Point     ? layout::FACET_LIGHT_POINT
                                                          : layout::FACET_LIGHT_SPOT;
     r.colorR = float(light.color.r), r.colorG = float(light.color.g), r.colorB = float(light.color.b);
-    r.positionX = float(light.position.x), r.positionY = float(light.position.y), r.positionZ = float(light.position.z);
+    const glm::vec3 position(light.position - origin);
+    r.positionX = position.x, r.positionY = position.y, r.positionZ = position.z;
     r.directionX = float(light.direction.x), r.directionY = float(light.direction.y),
     r.directionZ = float(light.direction.z);
     r.cosOuter = float(std::cos(glm::radians(light.outerConeDegrees)));
@@ -200,10 +171,114 @@ double sharedModel(const scene::Scene& scene, int materials::Material::*model) {
   return shared;
 }
 
-layout::FrameParams frameParams(const scene::Scene& scene, const scene::SceneGeometry& geometry, int strata) {
+// The scene's buffers for the GPU, rebased on the eye (gpu_scene.h).
+struct SceneBuffers {
+  gpu::Buffer nodes, patches, headers, points, objects, gridVertices, edgeMidpoints, cellBounds;
+  gpu::Buffer materials, lights, environmentTexels, environmentTables, environmentLevels, environmentAliases;
+  std::uint64_t bytes = 0;
+};
+
+SceneBuffers uploadScene(gpu::Device& d, const GpuScene& packed, const scene::Scene& scene,
+                         const ibl::EnvironmentLighting* lighting, const EnvironmentData& environment,
+                         const glm::dvec3& origin) {
+  const std::uint64_t maxTexels = d.limits().maxTexelBufferElements;
+  for (const auto& [name, texels] : {std::pair{"BVH nodes", packed.nodeCount * layout::FACET_BVH4_TEXELS},
+                                     std::pair{"grid vertices", packed.gridVertices},
+                                     std::pair{"cell bounds", packed.cellBounds}})
+    if (texels > maxTexels)
+      throw gpu::Error(std::string("the micro-grid's ") + name + " need " + std::to_string(texels) + " texels; " +
+                       d.adapterInfo().name + " addresses at most " + std::to_string(maxTexels) +
+                       " in one texel buffer: lower the dicing rate (--tess-level)");
+  const std::vector<float> noTexels;
+  const std::vector<float>& texels = lighting ? scene.environment->map->rgb : noTexels;
+  for (const auto& [name, bytes] : {std::pair{"the environment map's texels", texels.size() * sizeof(float)},
+                                    std::pair{"the environment's tables", environment.tables.size() * sizeof(float)}})
+    if (bytes > d.limits().maxStorageBufferBindingSize)
+      throw gpu::Error(name + std::string(" need ") + std::to_string(bytes >> 20) + " MiB in one binding; " +
+                       d.adapterInfo().name + " binds at most " +
+                       std::to_string(d.limits().maxStorageBufferBindingSize >> 20) +
+                       " MiB: use a smaller map (4096 x 2048 fits lavapipe)");
+  const BufferUsage in = BufferUsage::Storage, texel = BufferUsage::Texel;
+  // Written by the dicing kernels, read by the tracing ones.
+  const BufferUsage diced = BufferUsage::Texel | BufferUsage::StorageTexel;
+  SceneBuffers b;
+  b.nodes = d.createBuffer({"BVH nodes", bufferBytes(packed.nodeCount * layout::FACET_BVH4_TEXELS * sizeof(Texel)),
+                            diced | BufferUsage::CopyDst});
+  if (!packed.topNodes.empty())
+    d.queue().writeBuffer(b.nodes, 0, packed.topNodes.data(), packed.topNodes.size() * sizeof(Texel));
+  b.patches = upload(d, "patch records", packed.patches, in);
+  b.headers = upload(d, "patch headers", packed.headers, texel);
+  b.points = upload(d, "patch points", packed.points, texel);
+  b.objects = upload(d, "object ranges", packed.objects, in);
+  b.gridVertices = d.createBuffer({"grid vertices", bufferBytes(packed.gridVertices * 16), diced});
+  b.edgeMidpoints = d.createBuffer({"edge midpoints", bufferBytes(packed.edgeMidpoints * 16), diced});
+  b.cellBounds = d.createBuffer({"cell bounds", bufferBytes(packed.cellBounds * 16), diced});
+  b.materials = upload(d, "materials", materialRecords(scene, lighting), in);
+  b.lights = upload(d, "lights", lightRecords(scene, origin), in);
+  b.environmentTexels = upload(d, "environment texels", texels, in);
+  b.environmentTables = upload(d, "environment tables", environment.tables, in);
+  b.environmentLevels = upload(d, "environment levels", environment.levels, in);
+  b.environmentAliases = upload(d, "environment aliases", environment.alias, in);
+  for (const gpu::Buffer* buffer : {&b.nodes, &b.patches, &b.headers, &b.points, &b.objects, &b.gridVertices,
+                                    &b.edgeMidpoints, &b.cellBounds})
+    b.bytes += buffer->size();
+  return b;
+}
+
+// What one band of pixels needs, reused band after band.
+struct BandBuffers {
+  gpu::Buffer frame, rays, hits, shadowRays, contributions, aovs, rayRadiance, beauty, counters;
+  gpu::Buffer aovsHost, beautyHost, countersHost;
+  std::uint64_t bytes = 0;
+};
+
+BandBuffers allocateBands(gpu::Device& d, std::uint64_t bandPixels, std::uint64_t bandRays, std::uint32_t slots) {
+  BandBuffers b;
+  b.frame = d.createBuffer({"frame", sizeof(layout::FrameParams), BufferUsage::Uniform | BufferUsage::CopyDst});
+  b.rays = storage(d, "camera rays", bandRays * sizeof(layout::RayRecord));
+  b.hits = storage(d, "camera hits", bandRays * sizeof(layout::HitRecord));
+  b.shadowRays = storage(d, "shadow rays", bandRays * slots * sizeof(layout::ShadowRayRecord));
+  b.contributions = storage(d, "light contributions", bandRays * slots * 16);
+  b.aovs = storage(d, "AOVs", bandPixels * sizeof(layout::PixelAovs), BufferUsage::CopySrc);
+  b.rayRadiance = storage(d, "camera ray radiance", bandRays * 16);
+  b.beauty = storage(d, "beauty", bandPixels * 16, BufferUsage::CopySrc);
+  b.counters = storage(d, "counters", sizeof(layout::RenderCounters),
+                       BufferUsage::Indirect | BufferUsage::CopyDst | BufferUsage::CopySrc);
+  b.aovsHost = d.createBuffer({"AOVs readback", b.aovs.size(), BufferUsage::MapRead | BufferUsage::CopyDst});
+  b.beautyHost = d.createBuffer({"beauty readback", b.beauty.size(), BufferUsage::MapRead | BufferUsage::CopyDst});
+  b.countersHost =
+      d.createBuffer({"counter readback", b.counters.size(), BufferUsage::MapRead | BufferUsage::CopyDst});
+  for (const gpu::Buffer* buffer : {&b.rays, &b.hits, &b.shadowRays, &b.contributions, &b.aovs, &b.rayRadiance,
+                                    &b.beauty})
+    b.bytes += buffer->size();
+  return b;
+}
+
+// Every buffer by its binding number: a number names one buffer in every
+// kernel (compute/raycast/scene_bindings.glsl, trace_bindings.glsl and the
+// kernels' own), so each kernel's bind group follows from its layout.
+std::map<std::uint32_t, const gpu::Buffer*> bindingTable(const SceneBuffers& s, const BandBuffers& b) {
+  return {{0, &b.frame},          {1, &s.nodes},          {2, &s.patches},          {3, &s.points},
+          {4, &s.objects},        {5, &s.gridVertices},   {6, &s.edgeMidpoints},    {7, &s.headers},
+          {8, &b.rays},           {9, &b.hits},           {10, &b.counters},        {11, &s.materials},
+          {12, &s.lights},        {13, &b.aovs},          {14, &b.shadowRays},      {15, &b.contributions},      {16, &s.cellBounds},
+          {18, &b.beauty},        {19, &s.environmentTexels}, {20, &s.environmentLevels},
+          {21, &s.environmentAliases}, {22, &b.rayRadiance}, {23, &s.environmentTables}};
+}
+
+gpu::BindGroup bindGroup(gpu::Device& d, const gpu::ComputePipeline& pipeline, const std::string& label,
+                         const std::map<std::uint32_t, const gpu::Buffer*>& table) {
+  gpu::BindGroupLayout groupLayout = pipeline.getBindGroupLayout(0);
+  std::vector<gpu::BindGroupEntry> entries;
+  for (const gpu::BindGroupLayoutEntry& entry : groupLayout.entries()) entries.push_back({entry.binding, table.at(entry.binding)});
+  return d.createBindGroup({label, &groupLayout, std::move(entries)});
+}
+
+layout::FrameParams frameParams(const scene::Scene& scene, const scene::SceneGeometry& geometry, int strata,
+                                const GpuScene& packed) {
   const camera::CameraFrame camera = camera::cameraFrame(scene.camera, scene.render.width, scene.render.height);
   layout::FrameParams f{};
-  f.eyeX = float(camera.eye.x), f.eyeY = float(camera.eye.y), f.eyeZ = float(camera.eye.z);
+  // Rays start at the eye, the origin of the GPU's coordinates.
   f.forwardX = float(camera.forward.x), f.forwardY = float(camera.forward.y), f.forwardZ = float(camera.forward.z);
   f.rightX = float(camera.right.x), f.rightY = float(camera.right.y), f.rightZ = float(camera.right.z);
   f.upX = float(camera.up.x), f.upY = float(camera.up.y), f.upZ = float(camera.up.z);
@@ -214,13 +289,11 @@ layout::FrameParams frameParams(const scene::Scene& scene, const scene::SceneGeo
   f.strata = std::uint32_t(strata);
   f.raysPerPixel = strata == 1 ? 1u : std::uint32_t(strata * strata + 1);
   f.objectCount = std::uint32_t(scene.objects.size());
-  const double diagonal = geometry.bounds.diagonal();
-  double largestCoordinate = 0;
-  for (int axis = 0; axis < 3; ++axis)
-    largestCoordinate = std::max({largestCoordinate, std::abs(geometry.bounds.lo[axis]),
-                                  std::abs(geometry.bounds.hi[axis]), std::abs(scene.camera.eye[axis])});
-  const double tolerance =
-      std::max(scene.render.exactTolerance.value_or(1e-9) * diagonal, std::ldexp(largestCoordinate, -20));
+  f.cellBlockCount = std::uint32_t(packed.blocks);
+  f.gridVertexCount = std::uint32_t(packed.gridVertices);
+  f.edgeMidpointCount = std::uint32_t(packed.edgeMidpoints);
+  f.patchCount = std::uint32_t(packed.patches.size());
+  const double diagonal = geometry.bounds.diagonal(), tolerance = rootTolerance(scene, geometry);
   f.tolerance = float(tolerance);
   f.minimumPiece = float(std::max(4 * tolerance, 1e-6 * diagonal));
   f.shadowOffset = float(std::max(1e-6 * diagonal, kShadowOffsetInTolerances * tolerance));
@@ -229,11 +302,28 @@ layout::FrameParams frameParams(const scene::Scene& scene, const scene::SceneGeo
 
 }  // namespace
 
+double rootTolerance(const scene::Scene& scene, const scene::SceneGeometry& geometry) {
+  double largestCoordinate = 0;
+  for (int axis = 0; axis < 3; ++axis)
+    largestCoordinate =
+        std::max({largestCoordinate, std::abs(geometry.bounds.lo[axis] - scene.camera.eye[axis]),
+                  std::abs(geometry.bounds.hi[axis] - scene.camera.eye[axis])});
+  return std::max(scene.render.exactTolerance.value_or(1e-9) * geometry.bounds.diagonal(),
+                  std::ldexp(largestCoordinate, -20));
+}
+
 GpuRenderer::GpuRenderer(gpu::Device& device) : device_(device) {
   const std::pair<const char*, std::span<const std::uint32_t>> kernels[] = {
-      {"dice", raycast::spirv::dice},           {"raygen", raycast::spirv::raygen},
-      {"intersect", raycast::spirv::intersect}, {"surface", raycast::spirv::surface},
-      {"gather", raycast::spirv::gather},       {"resolve", raycast::spirv::resolve}};
+      {"dice_grid", raycast::spirv::dice_grid},
+      {"dice_cells", raycast::spirv::dice_cells},
+      {"build_quadtrees", raycast::spirv::build_quadtrees},
+      {"raygen", raycast::spirv::raygen},
+      {"intersect", raycast::spirv::intersect},
+      {"surface", raycast::spirv::surface},
+      {"shadow_dispatch", raycast::spirv::shadow_dispatch},
+      {"shadow", raycast::spirv::shadow},
+      {"gather", raycast::spirv::gather},
+      {"resolve", raycast::spirv::resolve}};
   for (const auto& [name, code] : kernels) modules_.emplace(name, device_.createShaderModule({name, code}));
 }
 
@@ -253,10 +343,15 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   const bool tessellated = scene.render.method == scene::IntersectionMethod::Tessellated;
   const double method = tessellated ? 1 : 0;
   const std::uint32_t lightCount = std::uint32_t(scene.lights.size());
+  const glm::dvec3 origin = scene.camera.eye;
   gpu::Device& d = device_;
-
   GpuRenderResult result;
-  const auto environmentStart = std::chrono::steady_clock::now();
+  auto wallClock = [](std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  };
+
+  // Stage: the environment's tables or prefiltered maps (wall clock).
+  auto start = std::chrono::steady_clock::now();
   std::optional<ibl::EnvironmentLighting> lighting;
   if (scene.environment)
     lighting =
@@ -266,74 +361,27 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
           return ibl::cachedPrefilter(map, models, settings, "gpu " + d.adapterInfo().name,
                                       [&] { return prefilterOnGpu(d, map, models, settings); });
         });
+  if (lighting) result.stageMilliseconds.emplace_back("environment", wallClock(start));
 
-  const SceneArrays arrays = sceneArrays(scene, geometry);
-  layout::FrameParams frame = frameParams(scene, geometry, strata);
+  // Stage: the BVH's top levels and the patches, packed and uploaded (wall clock).
+  start = std::chrono::steady_clock::now();
+  const GpuScene packed = packScene(scene, geometry, origin, rootTolerance(scene, geometry), tessellated);
+  layout::FrameParams frame = frameParams(scene, geometry, strata, packed);
   frame.slotsPerRay = lightCount + environmentSlots(scene);
   const EnvironmentData environment = lighting ? environmentData(*lighting, frame) : EnvironmentData{};
-  if (lighting)
-    result.stageMilliseconds.emplace_back(
-        "environment",
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - environmentStart).count());
+  const SceneBuffers sceneBuffers =
+      uploadScene(d, packed, scene, lighting ? &*lighting : nullptr, environment, origin);
+  result.stageMilliseconds.emplace_back("top levels", wallClock(start));
+
   const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
   const std::uint64_t bandPixels = std::min<std::uint64_t>(
-      pixels, std::max<std::uint64_t>(1, kMaxRayBufferBytes / (sizeof(layout::RayRecord) * frame.raysPerPixel *
-                                                               std::max(1u, frame.slotsPerRay))));
-  const std::uint64_t bandRays = bandPixels * frame.raysPerPixel;
+      pixels, std::max<std::uint64_t>(1, kMaxRayBufferBytes / (sizeof(layout::ShadowRayRecord) *
+                                                               frame.raysPerPixel * std::max(1u, frame.slotsPerRay))));
+  BandBuffers band = allocateBands(d, bandPixels, bandPixels * frame.raysPerPixel, frame.slotsPerRay);
+  const auto table = bindingTable(sceneBuffers, band);
+  result.cells = packed.cells;
+  result.gpuBytes = sceneBuffers.bytes + band.bytes;
 
-  const BufferUsage in = BufferUsage::Storage;
-  gpu::Buffer nodes = upload(d, "BVH nodes", arrays.nodes, in);
-  gpu::Buffer patches = upload(d, "patch records", arrays.patches, in);
-  gpu::Buffer points = upload(d, "patch points", arrays.points, in);
-  gpu::Buffer objects = upload(d, "object ranges", arrays.objects, in);
-  gpu::Buffer materialBuffer = upload(d, "materials", materialRecords(scene, lighting ? &*lighting : nullptr), in);
-  const std::vector<float> noTexels;
-  const std::vector<float>& texels = lighting ? scene.environment->map->rgb : noTexels;
-  for (const auto& [name, bytes] : {std::pair{"the environment map's texels", texels.size() * sizeof(float)},
-                                    std::pair{"the environment's tables", environment.tables.size() * sizeof(float)}})
-    if (bytes > d.limits().maxStorageBufferBindingSize)
-      throw gpu::Error(name + std::string(" need ") + std::to_string(bytes >> 20) + " MiB in one binding; " +
-                       d.adapterInfo().name + " binds at most " +
-                       std::to_string(d.limits().maxStorageBufferBindingSize >> 20) +
-                       " MiB: use a smaller map (4096 x 2048 fits lavapipe)");
-  gpu::Buffer texelBuffer = upload(d, "environment texels", texels, in);
-  gpu::Buffer tableBuffer = upload(d, "environment tables", environment.tables, in);
-  gpu::Buffer levelBuffer = upload(d, "environment levels", environment.levels, in);
-  gpu::Buffer aliasBuffer = upload(d, "environment aliases", environment.alias, in);
-  gpu::Buffer lightBuffer = upload(d, "lights", lightRecords(scene), in);
-  const std::uint64_t tessellationScale = tessellated ? 1 : 0;
-  gpu::Buffer gridVertices = storage(d, "grid vertices", tessellationScale * arrays.gridVertices * 12);
-  gpu::Buffer edgeMidpoints = storage(d, "edge midpoints", tessellationScale * arrays.edgeMidpoints * 12);
-  gpu::Buffer rowBounds = storage(d, "row bounds", tessellationScale * arrays.rows * 24);
-  gpu::Buffer frameBuffer = d.createBuffer({"frame", sizeof(frame), BufferUsage::Uniform | BufferUsage::CopyDst});
-  gpu::Buffer primaryCount = d.createBuffer({"camera ray batch", 16, BufferUsage::Uniform | BufferUsage::CopyDst});
-  gpu::Buffer shadowCount = d.createBuffer({"shadow ray batch", 16, BufferUsage::Uniform | BufferUsage::CopyDst});
-  gpu::Buffer rays = storage(d, "camera rays", bandRays * sizeof(layout::RayRecord));
-  gpu::Buffer hits = storage(d, "camera hits", bandRays * sizeof(layout::HitRecord));
-  gpu::Buffer shadowRays = storage(d, "shadow rays", bandRays * frame.slotsPerRay * sizeof(layout::RayRecord));
-  gpu::Buffer shadowHits = storage(d, "shadow hits", bandRays * frame.slotsPerRay * sizeof(layout::HitRecord));
-  gpu::Buffer contributions = storage(d, "light contributions", bandRays * frame.slotsPerRay * 16);
-  gpu::Buffer aovs = storage(d, "AOVs", bandPixels * sizeof(layout::PixelAovs), BufferUsage::CopySrc);
-  gpu::Buffer rayRadiance = storage(d, "camera ray radiance", bandRays * 16);
-  gpu::Buffer beauty = storage(d, "beauty", bandPixels * 16, BufferUsage::CopySrc);
-  gpu::Buffer counters = storage(d, "shadow ray counter", 16, BufferUsage::CopyDst | BufferUsage::CopySrc);
-  gpu::Buffer aovsHost = d.createBuffer({"AOVs readback", aovs.size(), BufferUsage::MapRead | BufferUsage::CopyDst});
-  gpu::Buffer beautyHost =
-      d.createBuffer({"beauty readback", beauty.size(), BufferUsage::MapRead | BufferUsage::CopyDst});
-  gpu::Buffer countersHost = d.createBuffer({"counter readback", 16, BufferUsage::MapRead | BufferUsage::CopyDst});
-  gpu::QuerySet timestamps = d.createQuerySet({"stage timestamps", 2 * kStageCount});
-
-  auto bindGroup = [&](gpu::ComputePipeline& p, const char* label, std::vector<gpu::BindGroupEntry> entries) {
-    gpu::BindGroupLayout groupLayout = p.getBindGroupLayout(0);
-    return d.createBindGroup({label, &groupLayout, std::move(entries)});
-  };
-  // Bindings 0-4 (scene_bindings.glsl) followed by a kernel's own.
-  auto withScene = [&](std::initializer_list<gpu::BindGroupEntry> own) {
-    std::vector<gpu::BindGroupEntry> entries{
-        {0, &frameBuffer}, {1, &nodes}, {2, &patches}, {3, &points}, {4, &objects}};
-    entries.insert(entries.end(), own);
-    return entries;
-  };
   const std::vector<gpu::ConstantEntry> methodConstant{{"METHOD", method}};
   const double environmentMethod = !scene.environment                                       ? 0
                                    : scene.environment->method == scene::IblMethod::Sampled ? 1
@@ -348,114 +396,112 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
                            {"D_MODEL", sharedModel(scene, &materials::Material::distribution)},
                            {"G_MODEL", sharedModel(scene, &materials::Material::geometry)},
                            {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)}});
+  gpu::ComputePipeline& shadowDispatch = pipeline("shadow_dispatch", {});
+  gpu::ComputePipeline& shadow = pipeline("shadow", methodConstant);
   gpu::ComputePipeline& gather = pipeline("gather", {});
   gpu::ComputePipeline& resolve = pipeline("resolve", {});
-  gpu::BindGroup raygenGroup = bindGroup(raygen, "raygen", {{0, &frameBuffer}, {8, &rays}});
-  auto intersectGroup = [&](const char* label, gpu::Buffer& rayBuffer, gpu::Buffer& hitBuffer, gpu::Buffer& count) {
-    return bindGroup(intersect, label,
-                     withScene({{5, &gridVertices},
-                                {6, &edgeMidpoints},
-                                {7, &rowBounds},
-                                {8, &rayBuffer},
-                                {9, &hitBuffer},
-                                {10, &count}}));
-  };
-  gpu::BindGroup primaryGroup = intersectGroup("intersect camera rays", rays, hits, primaryCount);
-  gpu::BindGroup shadowGroup = intersectGroup("intersect shadow rays", shadowRays, shadowHits, shadowCount);
-  gpu::BindGroup surfaceGroup = bindGroup(surface, "surface",
-                                          withScene({{8, &rays},
-                                                     {9, &hits},
-                                                     {11, &materialBuffer},
-                                                     {12, &lightBuffer},
-                                                     {13, &aovs},
-                                                     {14, &shadowRays},
-                                                     {15, &contributions},
-                                                     {16, &counters},
-                                                     {19, &texelBuffer},
-                                                     {20, &levelBuffer},
-                                                     {21, &aliasBuffer},
-                                                     {23, &tableBuffer}}));
-  gpu::BindGroup gatherGroup = bindGroup(
-      gather, "gather", {{0, &frameBuffer}, {9, &hits}, {15, &contributions}, {17, &shadowHits}, {22, &rayRadiance}});
-  gpu::BindGroup resolveGroup = bindGroup(resolve, "resolve", {{0, &frameBuffer}, {18, &beauty}, {22, &rayRadiance}});
 
-  result.image = Image(width, height);
+  gpu::QuerySet timestamps = d.createQuerySet({"stage timestamps", 2 * kStageCount});
   double stageNs[kStageCount] = {};
-  auto pass = [&](gpu::CommandEncoder& encoder, Stage stage, gpu::ComputePipeline& p, const gpu::BindGroup& group,
-                  std::uint64_t invocations) {
+  bool ran[kStageCount] = {};
+  auto beginPass = [&](gpu::CommandEncoder& encoder, Stage stage, gpu::ComputePipeline& p,
+                       const gpu::BindGroup& group) {
+    ran[stage] = true;
     gpu::ComputePassEncoder computePass =
         encoder.beginComputePass({kStageNames[stage], {&timestamps, 2u * stage, 2u * stage + 1}});
     computePass.setPipeline(p);
     computePass.setBindGroup(0, group);
-    const auto [x, y] = workgroups(invocations);
-    computePass.dispatchWorkgroups(x, y);
+    return computePass;
   };
-  auto addStageTimes = [&](std::initializer_list<Stage> stages) {
-    for (Stage s : stages) {
-      const std::vector<double> ns = timestamps.readTimestampsNs(2u * s, 2);
+  auto pass = [&](gpu::CommandEncoder& encoder, Stage stage, gpu::ComputePipeline& p, const gpu::BindGroup& group,
+                  std::uint64_t invocations) {
+    const auto [x, y] = workgroups(invocations);
+    beginPass(encoder, stage, p, group).dispatchWorkgroups(x, y);
+  };
+  auto addStageTimes = [&](Stage first, Stage last) {
+    for (int s = first; s <= last; ++s) {
+      if (!ran[s]) continue;
+      const std::vector<double> ns = timestamps.readTimestampsNs(2u * std::uint32_t(s), 2);
       stageNs[s] += ns[1] - ns[0];
     }
   };
 
-  d.queue().writeBuffer(frameBuffer, 0, &frame, sizeof(frame));
-  if (tessellated) {
-    gpu::ComputePipeline& dice = pipeline("dice", {});
-    gpu::BindGroup diceGroup =
-        bindGroup(dice, "dice", withScene({{5, &gridVertices}, {6, &edgeMidpoints}, {7, &rowBounds}}));
+  // Stage: dicing, the micro-grid and every patch's quadtree.
+  d.queue().writeBuffer(band.frame, 0, &frame, sizeof(frame));
+  {
     gpu::CommandEncoder encoder = d.createCommandEncoder({"dice"});
-    pass(encoder, kDice, dice, diceGroup, arrays.patches.size());
+    if (tessellated) {
+      gpu::ComputePipeline& diceGrid = pipeline("dice_grid", {});
+      pass(encoder, kDiceGrid, diceGrid, bindGroup(d, diceGrid, "dice grid", table),
+           packed.gridVertices + packed.edgeMidpoints);
+    }
+    gpu::ComputePipeline& diceCells = pipeline("dice_cells", methodConstant);
+    pass(encoder, kDiceCells, diceCells, bindGroup(d, diceCells, "dice cells", table), packed.blocks);
+    gpu::ComputePipeline& quadtrees = pipeline("build_quadtrees", {});
+    pass(encoder, kQuadtrees, quadtrees, bindGroup(d, quadtrees, "build quadtrees", table), packed.patches.size());
     d.queue().submit(encoder.finish());
     d.queue().waitIdle();
-    addStageTimes({kDice});
+    addStageTimes(kDiceGrid, kQuadtrees);
   }
 
+  // Stages per band: trace and shade, then read back.
+  const gpu::BindGroup raygenGroup = bindGroup(d, raygen, "raygen", table);
+  const gpu::BindGroup intersectGroup = bindGroup(d, intersect, "intersect", table);
+  const gpu::BindGroup surfaceGroup = bindGroup(d, surface, "surface", table);
+  const gpu::BindGroup shadowDispatchGroup = bindGroup(d, shadowDispatch, "shadow dispatch", table);
+  const gpu::BindGroup shadowGroup = bindGroup(d, shadow, "shadow", table);
+  const gpu::BindGroup gatherGroup = bindGroup(d, gather, "gather", table);
+  const gpu::BindGroup resolveGroup = bindGroup(d, resolve, "resolve", table);
+  result.image = Image(width, height);
   for (std::uint64_t first = 0; first < pixels; first += bandPixels) {
     const std::uint64_t count = std::min(bandPixels, pixels - first);
+    const std::uint64_t rays = count * frame.raysPerPixel;
     frame.firstPixel = std::uint32_t(first);
     frame.pixelCount = std::uint32_t(count);
-    // {ray count, any hit}: shadow rays only need to know whether something is in the way.
-    const std::uint32_t primary[4] = {std::uint32_t(count * frame.raysPerPixel), 0, 0, 0};
-    const std::uint32_t shadow[4] = {primary[0] * frame.slotsPerRay, 1, 0, 0};
-    d.queue().writeBuffer(frameBuffer, 0, &frame, sizeof(frame));
-    d.queue().writeBuffer(primaryCount, 0, primary, sizeof(primary));
-    d.queue().writeBuffer(shadowCount, 0, shadow, sizeof(shadow));
+    d.queue().writeBuffer(band.frame, 0, &frame, sizeof(frame));
 
     gpu::CommandEncoder encoder = d.createCommandEncoder({"render band"});
-    encoder.clearBuffer(counters);
-    pass(encoder, kRaygen, raygen, raygenGroup, primary[0]);
-    pass(encoder, kIntersect, intersect, primaryGroup, primary[0]);
-    pass(encoder, kSurface, surface, surfaceGroup, primary[0]);
-    pass(encoder, kShadow, intersect, shadowGroup, shadow[0]);
-    pass(encoder, kGather, gather, gatherGroup, primary[0]);
+    encoder.clearBuffer(band.counters);
+    pass(encoder, kRaygen, raygen, raygenGroup, rays);
+    pass(encoder, kIntersect, intersect, intersectGroup, rays);
+    pass(encoder, kSurface, surface, surfaceGroup, rays);
+    beginPass(encoder, kShadowDispatch, shadowDispatch, shadowDispatchGroup).dispatchWorkgroups(1);
+    beginPass(encoder, kShadow, shadow, shadowGroup)
+        .dispatchWorkgroupsIndirect(band.counters, offsetof(layout::RenderCounters, dispatchX));
+    pass(encoder, kGather, gather, gatherGroup, rays);
     pass(encoder, kResolve, resolve, resolveGroup, count);
-    encoder.copyBufferToBuffer(aovs, 0, aovsHost, 0, count * sizeof(layout::PixelAovs));
-    encoder.copyBufferToBuffer(beauty, 0, beautyHost, 0, count * 16);
-    encoder.copyBufferToBuffer(counters, 0, countersHost, 0, 16);
+    encoder.copyBufferToBuffer(band.aovs, 0, band.aovsHost, 0, count * sizeof(layout::PixelAovs));
+    encoder.copyBufferToBuffer(band.beauty, 0, band.beautyHost, 0, count * 16);
+    encoder.copyBufferToBuffer(band.counters, 0, band.countersHost, 0, band.counters.size());
     d.queue().submit(encoder.finish());
     d.queue().waitIdle();
-    addStageTimes({kRaygen, kIntersect, kSurface, kShadow, kGather, kResolve});
+    addStageTimes(kRaygen, kResolve);
 
-    const auto pixelAovs = aovsHost.mapped<layout::PixelAovs>();
-    const auto pixelBeauty = beautyHost.mapped<glm::vec4>();
+    const auto pixelAovs = band.aovsHost.mapped<layout::PixelAovs>();
+    const auto pixelBeauty = band.beautyHost.mapped<glm::vec4>();
     Image& image = result.image;
     for (std::uint64_t i = 0; i < count; ++i) {
       const layout::PixelAovs& a = pixelAovs[i];
       const std::size_t p = std::size_t(first + i);
       image.beauty[p] = pixelBeauty[i];
       image.depth[p] = a.depth;
-      image.position[p] = {a.positionX, a.positionY, a.positionZ};
+      image.position[p] = a.patchId == layout::FACET_NO_HIT
+                              ? glm::vec3(0.0f)
+                              : glm::vec3(origin + glm::dvec3(a.positionX, a.positionY, a.positionZ));
       image.geometricNormal[p] = {a.geometricX, a.geometricY, a.geometricZ};
       image.shadingNormal[p] = {a.shadingX, a.shadingY, a.shadingZ};
       image.patchId[p] = a.patchId;
       image.faceId[p] = a.faceId;
       image.uv[p] = {a.u, a.v};
     }
-    result.primaryRays += primary[0];
-    result.shadowRays += countersHost.mapped<std::uint32_t>()[0];
+    const layout::RenderCounters counters = band.countersHost.mapped<layout::RenderCounters>()[0];
+    result.primaryRays += rays;
+    result.shadowRays += counters.shadowRays;
+    result.newtonFallbacks += counters.newtonFallbacks;
     if (progress) progress(double(first + count) / double(pixels));
   }
-  for (int s = tessellated ? kDice : kRaygen; s < kStageCount; ++s)
-    result.stageMilliseconds.emplace_back(kStageNames[s], stageNs[s] * 1e-6);
+  for (int s = 0; s < kStageCount; ++s)
+    if (ran[s]) result.stageMilliseconds.emplace_back(kStageNames[s], stageNs[s] * 1e-6);
   return result;
 }
 

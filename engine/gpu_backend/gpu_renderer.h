@@ -2,27 +2,34 @@
 // compute/raycast/ on a gpu::Device, into the same Image as the CPU
 // reference and under the same conventions (docs/rendering.md).
 //
-// Stages, one compute pass each (GPU timestamps per stage), after the
-// environment's preparation (wall clock: sampling tables, or the prefiltered
-// maps from compute kernels or the disk cache):
-//   dice       tessellated method only: k x k limit points per patch, the
-//              midpoints of split transition edges, row boxes
-//   raygen     camera rays (the centre ray, plus spp stratified ones if > 1)
-//   intersect  closest hit per camera ray through the patch BVHs
-//   surface    hit point, limit normal, AOVs, per-light unshadowed radiance
-//              and the shadow rays, the environment's share (its shadow
-//              rays for the sampled method with occlusion); misses only
-//              look up the environment
-//   shadow     the intersect kernel again, on the shadow rays
-//   gather     per camera ray, the contributions whose shadow rays got through
-//   resolve    beauty and coverage per pixel
-// Large images are rendered in bands of pixels so that no buffer exceeds
+// Stages (GPU timestamps per compute pass; wall clock for the host's):
+//   environment  sampling tables, or the prefiltered maps from compute
+//                kernels or the disk cache
+//   top levels   the scene packed for the GPU (gpu_scene.h): each object's
+//                patch BVH collapsed to 4 wide, patches, all rebased on the eye
+//   dice grid    tessellated method only: the micro-grid's limit points
+//   dice cells   every cell's box, the last level of each patch's quadtree
+//   quadtrees    the quadtrees' upper levels
+// then per band of pixels:
+//   raygen       camera rays (the centre ray, plus spp stratified ones if > 1)
+//   intersect    closest hit per camera ray: trace() of compute/raycast/trace.glsl
+//   surface      hit point, limit normal, AOVs, per light slot its unshadowed
+//                radiance and, where it needs one, a shadow ray appended to
+//                one compacted list; the environment's share; misses only
+//                look up the environment
+//   compact      the shadow pass's workgroup grid from the list's length
+//   shadow rays  any hit along each listed ray (indirect dispatch) clears its slot
+//   gather       per camera ray, the sum of its slots
+//   resolve      beauty and coverage per pixel
+// Large images are rendered in bands of pixels so that no ray buffer exceeds
 // 64 MiB (lavapipe binds at most 128 MiB).
 //
-// Precision: the kernels compute in float from the double-precision scene.
-// The exact method accepts a root within `tolerance` of the ray:
-// max(1e-9 x diagonal, 2^-20 x the largest coordinate of the scene and the
-// eye) — 8 float ulps, where the CPU's 1e-9 x diagonal is below float's
+// Precision: the kernels compute in float, in coordinates relative to the
+// eye (rebased in double on the host), so the error follows the scene's
+// size as seen from the camera, not its distance from the world origin. The
+// exact method accepts a root within rootTolerance() of the ray:
+// max(1e-9 x diagonal, 2^-20 x the largest coordinate relative to the eye)
+// — 8 float ulps, where the CPU's 1e-9 x diagonal is below float's
 // resolution — and does not split pieces below max(4 x tolerance, 1e-6 x
 // diagonal). Shadow rays leave the surface by max(1e-6 x diagonal (the CPU's
 // offset), 32 x tolerance), with the same t_min: a float root's t is only
@@ -31,8 +38,9 @@
 //
 // Specialization constants keep each pipeline to what the scene uses: the
 // method, the number of lights, the IBL method and its occlusion, and each
-// BRDF model (D, G, F) when all materials share it. Pipelines are created once per variant and kept, so a
-// renderer that draws many scenes JITs each variant once.
+// BRDF model (D, G, F) when all materials share it. Pipelines are created
+// once per variant and kept, so a renderer that draws many scenes JITs each
+// variant once.
 #pragma once
 
 #include <cstdint>
@@ -54,7 +62,13 @@ struct GpuRenderResult {
   std::vector<std::pair<std::string, double>> stageMilliseconds;  // GPU time per stage
   std::uint64_t primaryRays = 0;
   std::uint64_t shadowRays = 0;
+  std::uint64_t cells = 0;            // of the micro-grid
+  std::uint64_t newtonFallbacks = 0;  // exact cells whose domain was subdivided
+  std::uint64_t gpuBytes = 0;         // scene arrays and one band's ray buffers
 };
+
+// The exact method's root tolerance on the GPU (see above).
+double rootTolerance(const scene::Scene& scene, const scene::SceneGeometry& geometry);
 
 class GpuRenderer {
  public:

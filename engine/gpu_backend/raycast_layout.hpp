@@ -1,5 +1,6 @@
-// The C++ view of compute/shared/raycast_layout.h (see scenes/gpu_layout.h
-// for why including it inside a namespace is safe).
+// The C++ view of the GPU ray caster's shared headers: they are written in
+// the common subset of GLSL and C++, need only GLSL's `uint` spelled out, and
+// include nothing themselves, so including them inside a namespace is safe.
 #pragma once
 
 #include <cstddef>
@@ -7,15 +8,23 @@
 
 namespace facet::gpu_layout {
 using uint = std::uint32_t;
+#include "compute/shared/patch_records.h"
 #include "compute/shared/raycast_layout.h"
+#include "compute/shared/wide_bvh.h"
 }  // namespace facet::gpu_layout
 
 // The layout GLSL sees: 4-byte members, no padding.
-static_assert(sizeof(facet::gpu_layout::ObjectRange) == 40);
+static_assert(sizeof(facet::gpu_layout::PatchRecord) == 48);
+static_assert(offsetof(facet::gpu_layout::PatchRecord, faceU0) == 16);
+static_assert(offsetof(facet::gpu_layout::PatchRecord, transitionMask) == 44);
+static_assert(sizeof(facet::gpu_layout::ObjectRange) == 56);
 static_assert(sizeof(facet::gpu_layout::RayRecord) == 32);
+static_assert(sizeof(facet::gpu_layout::ShadowRayRecord) == 36);
+static_assert(sizeof(facet::gpu_layout::RenderCounters) == 20);
+static_assert(offsetof(facet::gpu_layout::RenderCounters, dispatchX) == 8);
 static_assert(sizeof(facet::gpu_layout::HitRecord) == 32);
 static_assert(sizeof(facet::gpu_layout::LightRecord) == 48);
 static_assert(sizeof(facet::gpu_layout::MaterialRecord) == 68);
-static_assert(sizeof(facet::gpu_layout::FrameParams) == 152);
+static_assert(sizeof(facet::gpu_layout::FrameParams) == 168);
 static_assert(sizeof(facet::gpu_layout::PixelAovs) == 56);
 static_assert(sizeof(facet::gpu_layout::EnvironmentLevel) == 12);

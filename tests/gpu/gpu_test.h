@@ -6,11 +6,23 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "engine/gpu/gpu.h"
 
 namespace facet::gpu::testing {
+
+// The message of the Error that `f` raises.
+template <class F>
+std::string errorOf(F&& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
 
 class GpuTest : public ::testing::Test {
  protected:

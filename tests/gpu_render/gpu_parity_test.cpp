@@ -103,8 +103,8 @@ TEST_F(GpuRendererTest, ReportsGpuTimePerStage) {
     names.push_back(name);
     EXPECT_GT(milliseconds, 0.0) << name;
   }
-  EXPECT_EQ(names,
-            (std::vector<std::string>{"dice", "raygen", "intersect", "surface", "shadow rays", "gather", "resolve"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"top levels", "dice grid", "dice cells", "quadtrees", "raygen",
+                                             "intersect", "surface", "compact", "shadow rays", "gather", "resolve"}));
 }
 
 }  // namespace

@@ -1,0 +1,117 @@
+// The last level of every patch's quadtree, one invocation per node of
+// 2 x 2 cells: each cell's box and reference (compute/shared/wide_bvh.h).
+// Exact method: the hull of the control points restricted to the cell,
+// grown by the root tolerance, whether the cell is flat, and the cell's
+// bounds for its finish (box and slab, compute/shared/wide_bvh.h).
+// Tessellated: the box of the cell's micro-triangles' corners.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+
+#include "compute/raycast/scene_bindings.glsl"
+#include "compute/raycast/ray.glsl"
+#include "compute/shared/wide_bvh.h"
+#include "compute/raycast/dicing.glsl"
+#include "compute/raycast/patch_eval.glsl"
+#include "compute/raycast/patch_hull.glsl"
+#include "compute/raycast/micro_grid.glsl"
+
+layout(constant_id = 0) const int METHOD = 0;
+
+layout(set = 0, binding = 1, rgba32ui) uniform writeonly uimageBuffer bvhNodesOut;
+layout(set = 0, binding = 5) uniform samplerBuffer gridVertices;
+layout(set = 0, binding = 6) uniform samplerBuffer edgeMidpoints;
+layout(set = 0, binding = 16, rgba32f) uniform writeonly imageBuffer cellBoundsOut;
+
+vec3 grid_point(int index) { return texelFetch(gridVertices, index).xyz; }
+
+Box tessellated_cell_box(ObjectRange range, uint localPatch, uint i, uint j, uint transitionMask) {
+  Box box;
+  box.lo = grid_point(int(grid_vertex_index(range, localPatch, i, j)));
+  box.hi = box.lo;
+  for (uint corner = 1u; corner < 4u; ++corner) {
+    vec3 p = grid_point(int(grid_vertex_index(range, localPatch, i + (corner & 1u), j + (corner >> 1u))));
+    box.lo = min(box.lo, p);
+    box.hi = max(box.hi, p);
+  }
+  uint splitEdges = split_cell_edges(i, j, range.rate, transitionMask);
+  uint segment[4] = uint[4](i, j, i, j);
+  for (uint edge = 0u; edge < 4u; ++edge) {
+    if (((splitEdges >> edge) & 1u) == 0u) continue;
+    vec3 p = texelFetch(edgeMidpoints, int(edge_midpoint_index(range, localPatch, edge, segment[edge]))).xyz;
+    box.lo = min(box.lo, p);
+    box.hi = max(box.hi, p);
+  }
+  return box;
+}
+
+// The slab dMin <= n.p <= dMax around the plane of the hull's corners
+// holding every control box (a box's extent along n is |n|.halfExtent).
+vec2 hull_slab(Hull hull, vec3 n) {
+  vec2 slab = vec2(INFINITE_DISTANCE, -INFINITE_DISTANCE);
+  for (int i = 0; i < 4; ++i) {
+    vec4 centre = 0.5 * (n.x * (hull.lo.x[i] + hull.hi.x[i]) + n.y * (hull.lo.y[i] + hull.hi.y[i]) +
+                         n.z * (hull.lo.z[i] + hull.hi.z[i]));
+    vec4 spread = 0.5 * (abs(n.x) * (hull.hi.x[i] - hull.lo.x[i]) + abs(n.y) * (hull.hi.y[i] - hull.lo.y[i]) +
+                         abs(n.z) * (hull.hi.z[i] - hull.lo.z[i]));
+    vec4 low = centre - spread, high = centre + spread;
+    slab = vec2(min(slab.x, min(min(low.x, low.y), min(low.z, low.w))),
+                max(slab.y, max(max(high.x, high.y), max(high.z, high.w))));
+  }
+  return slab;
+}
+
+vec3 hull_corner(Hull hull, int i, int j) {
+  return 0.5 * vec3(hull.lo.x[i][j] + hull.hi.x[i][j], hull.lo.y[i][j] + hull.hi.y[i][j],
+                    hull.lo.z[i][j] + hull.hi.z[i][j]);
+}
+
+void main() {
+  uint index = invocation_index();
+  if (index >= frame.cellBlockCount) return;
+  ObjectRange range = objects[object_of(index, RANGE_BLOCKS)];
+  uint k = range.rate, level = range.quadtreeLevels - 1u, blocksPerSide = 1u << level;
+  uint local = index - range.firstBlock, localPatch = local / (blocksPerSide * blocksPerSide);
+  uint bx = local % blocksPerSide, by = (local / blocksPerSide) % blocksPerSide;
+  uvec4 header = texelFetch(patchHeaders, int(range.firstPatch + localPatch));
+  ControlPoints c;
+  if (METHOD == 0) c = load_control_points(header[FACET_HEADER_FIRST_POINT], header[FACET_HEADER_KIND]);
+  vec4 lo[3] = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0)), hi[3] = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0));
+  uvec4 references = uvec4(FACET_BVH4_EMPTY);
+  for (uint slot = 0u; slot < 4u; ++slot) {
+    uint i = 2u * bx + (slot & 1u), j = 2u * by + (slot >> 1u);
+    if (i >= k || j >= k) continue;
+    Box box;
+    uint flags = FACET_BVH4_CELL;
+    if (METHOD == 0) {
+      float size = 1.0 / float(k);
+      Hull hull = restrict_patch(c, float(i) * size, float(i + 1u) * size, float(j) * size, float(j + 1u) * size);
+      box = hull_box(hull);
+      if (hull_is_flat(hull, box)) flags |= FACET_BVH4_FLAT;
+      box.lo -= frame.tolerance;
+      box.hi += frame.tolerance;
+      // n = 0 where the corners give no plane: the finish then tests the box only.
+      vec3 n = cross(hull_corner(hull, 3, 3) - hull_corner(hull, 0, 0), hull_corner(hull, 0, 3) - hull_corner(hull, 3, 0));
+      float length_n = length(n);
+      n = length_n > 0.0 ? n / length_n : vec3(0.0);
+      // Twice the tolerance: a root's own, and the rounding of the dot products.
+      vec2 slab = hull_slab(hull, n) + vec2(-2.0, 2.0) * frame.tolerance;
+      int texel = int((range.firstCell + (localPatch * k + j) * k + i) * FACET_CELL_TEXELS);
+      imageStore(cellBoundsOut, texel, vec4(box.lo, slab.x));
+      imageStore(cellBoundsOut, texel + 1, vec4(box.hi, slab.y));
+      imageStore(cellBoundsOut, texel + 2, vec4(n, 0.0));
+    } else {
+      box = tessellated_cell_box(range, localPatch, i, j, header[FACET_HEADER_TRANSITION_MASK]);
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+      lo[axis][slot] = box.lo[axis];
+      hi[axis][slot] = box.hi[axis];
+    }
+    references[slot] = flags | ((localPatch * k + j) * k + i);
+  }
+  int base = int(quadtree_node(range, localPatch, level, bx, by) * FACET_BVH4_TEXELS);
+  for (int axis = 0; axis < 3; ++axis) {
+    imageStore(bvhNodesOut, base + 2 * axis, floatBitsToUint(lo[axis]));
+    imageStore(bvhNodesOut, base + 2 * axis + 1, floatBitsToUint(hi[axis]));
+  }
+  imageStore(bvhNodesOut, base + int(FACET_BVH4_REFERENCES), references);
+}

@@ -1,0 +1,22 @@
+// The compacted shadow rays (counters.shadowRays of them, dispatched
+// indirectly): any hit before the light blocks it, and the light's
+// contribution in the ray's slot is cleared.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+
+#include "compute/raycast/scene_bindings.glsl"
+#include "compute/raycast/trace_bindings.glsl"
+
+layout(constant_id = 0) const int METHOD = 0;
+
+layout(set = 0, binding = 14, std430) readonly buffer ShadowRays { ShadowRayRecord shadowRays[]; };
+layout(set = 0, binding = 15, std430) buffer Contributions { vec4 contributions[]; };
+
+#include "compute/raycast/trace.glsl"
+
+void main() {
+  uint index = invocation_index();
+  if (index >= counters.shadowRays) return;
+  ShadowRayRecord record = shadowRays[index];
+  if (trace(to_ray(record.ray), true).patchIndex != FACET_NO_HIT) contributions[record.slot] = vec4(0.0);
+}

@@ -1,0 +1,43 @@
+// The limit patches as the GPU reads them. C++ includes this file through
+// engine/gpu_backend/raycast_layout.hpp; the rules of raycast_layout.h apply.
+#ifndef FACET_SHARED_PATCH_RECORDS_H
+#define FACET_SHARED_PATCH_RECORDS_H
+
+// Kinds of patch: both are stored as 16 bicubic Bézier points; a Gregory
+// patch adds 4 alternate interior points blended rationally (formulas in
+// scenes/bezier_patch.h).
+const uint FACET_PATCH_BEZIER = 0u;
+const uint FACET_PATCH_GREGORY = 1u;
+const uint FACET_PATCH_POINTS_BEZIER = 16u;
+const uint FACET_PATCH_POINTS_GREGORY = 20u;
+
+// One limit-surface patch, 48 bytes, in the order of its object's patch
+// BVH leaves. Patch-local (s, t) in [0,1]^2 is face parameter
+// (u, v) = (faceU0 + s * faceSize, faceV0 + t * faceSize) on ptex face
+// `ptexFace`; hits report face, (u, v) and `sourcePatch`.
+// Its points are texels firstPoint ... firstPoint + pointCount - 1 of the
+// patch point texel buffer: 16 Bézier points row-major (index 4*j + i, i
+// along s), then for Gregory patches the alternates of slots 5, 6, 10, 9.
+struct PatchRecord {
+  uint kind;        // FACET_PATCH_BEZIER or FACET_PATCH_GREGORY
+  uint firstPoint;  // absolute texel index
+  uint ptexFace;
+  uint coarseFace;  // the cage face the ptex face belongs to
+  float faceU0;
+  float faceV0;
+  float faceSize;       // a power of two: exact in float
+  uint sourcePatch;     // OpenSubdiv patch index: the patch id in hits and AOVs
+  uint boundaryMask;    // OpenSubdiv edge bits (1 v=0, 2 u=1, 4 v=1, 8 u=0), already folded into the points
+  uint depth;           // refinement level of the patch
+  uint pointCount;      // FACET_PATCH_POINTS_BEZIER or FACET_PATCH_POINTS_GREGORY
+  uint transitionMask;  // same edge bits: the neighbour across is one level
+                        // deeper, so crack-free dicing splits that edge twice as finely
+};
+
+// What the ray caster needs of a patch, one uvec4 texel of the patch header
+// texel buffer (the rest of PatchRecord is read once per pixel, when shading).
+const uint FACET_HEADER_FIRST_POINT = 0u;
+const uint FACET_HEADER_KIND = 1u;
+const uint FACET_HEADER_TRANSITION_MASK = 2u;
+
+#endif

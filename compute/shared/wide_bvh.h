@@ -1,0 +1,41 @@
+// The 4-wide BVH the ray caster traverses, shared by C++ and GLSL (the rules
+// of raycast_layout.h). One node is FACET_BVH4_TEXELS uvec4 texels of a
+// texel buffer: texels 0-5 hold lo.x, hi.x, lo.y, hi.y, lo.z, hi.z of its
+// four children (float bits, one child per component), texel 6 their
+// references. Structure of arrays, so one slab test covers four boxes.
+//
+// Per object, the top levels come from the CPU (the patch BVH, collapsed to
+// four wide); each patch's child is the root of its quadtree over a k x k
+// micro-grid of cells, which the dicing kernels build on the GPU. Every box
+// encloses what lies below it: the exact limit surface (from the hull of the
+// restricted control points, grown by the root tolerance) or the
+// micro-triangles.
+#ifndef FACET_SHARED_WIDE_BVH_H
+#define FACET_SHARED_WIDE_BVH_H
+
+const uint FACET_BVH4_TEXELS = 7u;
+const uint FACET_BVH4_REFERENCES = 6u;  // the texel of child references
+
+// A child reference is a node index, or a cell of the object's micro-grid:
+// FACET_BVH4_CELL | flags | (patch * k + j) * k + i, patch counted within
+// the object. FACET_BVH4_FLAT marks a cell whose hull lies within
+// EXACT_FLATNESS of its extent from the bilinear patch through its corners,
+// so that a ray crosses its surface at most once away from grazing angles.
+const uint FACET_BVH4_EMPTY = 0xFFFFFFFFu;
+const uint FACET_BVH4_CELL = 0x80000000u;
+const uint FACET_BVH4_FLAT = 0x40000000u;
+const uint FACET_BVH4_CELL_INDEX = 0x3FFFFFFFu;
+
+// The exact method's bounds of one cell, FACET_CELL_TEXELS vec4 texels of
+// the cell bounds texel buffer: (lo, dMin), (hi, dMax), (n, 0). The limit
+// surface over the cell lies in the box [lo, hi] and in the slab
+// dMin <= n.p <= dMax around the plane of its corners, both from the hull of
+// its restricted control points and grown by the root tolerance: a ray that
+// crosses a tilted cell's box beside the cell misses the slab.
+const uint FACET_CELL_TEXELS = 3u;
+
+// Longest path of references from an object's root to a cell: the private
+// traversal stack holds at most 3 per level below the root.
+const uint FACET_BVH4_MAX_DEPTH = 16u;
+
+#endif

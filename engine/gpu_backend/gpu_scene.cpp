@@ -1,0 +1,224 @@
+#include "engine/gpu_backend/gpu_scene.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <string>
+
+#include "engine/gpu/gpu.h"
+
+namespace facet::gpu_backend {
+namespace {
+
+namespace layout = gpu_layout;
+
+// Float bounds that still contain the double ones.
+float roundDown(double value) {
+  const float f = float(value);
+  return double(f) > value ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+float roundUp(double value) {
+  const float f = float(value);
+  return double(f) < value ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
+std::uint32_t bits(float value) { return std::bit_cast<std::uint32_t>(value); }
+
+double surfaceArea(const scene::Aabb& box) {
+  const glm::dvec3 e = box.hi - box.lo;
+  return 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
+}
+
+// A wide node's child while it is being chosen: a node of the binary patch
+// BVH, or one patch (its slot in leaf order).
+struct Candidate {
+  bool isPatch = false;
+  int index = 0;
+  scene::Aabb bounds;
+};
+
+// Collapses one object's binary patch BVH into 4-wide nodes: each node takes
+// the binary subtree's largest boxes as children until it has four (the
+// usual collapse, as in Embree's BVH4 builders). Patch children refer to
+// quadtree roots, relative to the object's first quadtree node until
+// packScene() knows where the quadtrees start.
+class Collapse {
+ public:
+  Collapse(const scene::PatchBvh& bvh, const std::vector<scene::Aabb>& patchBounds, const glm::dvec3& origin,
+           double margin, std::uint32_t quadtreeNodes, std::vector<Texel>& texels)
+      : bvh_(bvh), patchBounds_(patchBounds), origin_(origin), margin_(margin), quadtreeNodes_(quadtreeNodes),
+        texels_(texels) {}
+
+  // Returns the root's node index.
+  std::uint32_t run() {
+    if (bvh_.nodes().empty()) return emit({});
+    return emit(expand({false, 0, bvh_.nodes()[0].bounds}), 1);
+  }
+
+  int depth() const { return depth_; }
+  // (texel, component) of every reference to a quadtree root.
+  const std::vector<std::pair<std::size_t, std::size_t>>& patchSlots() const { return patchSlots_; }
+
+ private:
+  std::vector<Candidate> expand(const Candidate& c) const {
+    const scene::PatchBvh::Node& node = bvh_.nodes()[std::size_t(c.index)];
+    std::vector<Candidate> children;
+    if (node.leaf()) {
+      for (int slot = node.next; slot < node.next + node.patchCount; ++slot)
+        children.push_back({true, slot, patchBounds_[std::size_t(slot)]});
+    } else {
+      const int first = c.index + 1, second = node.next;
+      children.push_back({false, first, bvh_.nodes()[std::size_t(first)].bounds});
+      children.push_back({false, second, bvh_.nodes()[std::size_t(second)].bounds});
+    }
+    return children;
+  }
+
+  std::uint32_t emit(std::vector<Candidate> children, int depth = 1) {
+    depth_ = std::max(depth_, depth);
+    while (children.size() < 4) {
+      int widest = -1;
+      for (std::size_t i = 0; i < children.size(); ++i) {
+        if (children[i].isPatch) continue;
+        const scene::PatchBvh::Node& node = bvh_.nodes()[std::size_t(children[i].index)];
+        const std::size_t grows = node.leaf() ? std::size_t(node.patchCount) : 2;
+        if (children.size() - 1 + grows > 4) continue;
+        if (widest < 0 || surfaceArea(children[i].bounds) > surfaceArea(children[std::size_t(widest)].bounds))
+          widest = int(i);
+      }
+      if (widest < 0) break;
+      std::vector<Candidate> grown = expand(children[std::size_t(widest)]);
+      children.erase(children.begin() + widest);
+      children.insert(children.end(), grown.begin(), grown.end());
+    }
+    const std::uint32_t index = std::uint32_t(texels_.size() / layout::FACET_BVH4_TEXELS);
+    texels_.resize(texels_.size() + layout::FACET_BVH4_TEXELS, Texel{0, 0, 0, 0});
+    Texel references{layout::FACET_BVH4_EMPTY, layout::FACET_BVH4_EMPTY, layout::FACET_BVH4_EMPTY,
+                     layout::FACET_BVH4_EMPTY};
+    for (std::size_t slot = 0; slot < children.size(); ++slot) {
+      const Candidate& c = children[slot];
+      const std::uint32_t reference =
+          c.isPatch ? std::uint32_t(c.index) * quadtreeNodes_ : emit(expand(c), depth + 1);
+      const std::size_t base = std::size_t(index) * layout::FACET_BVH4_TEXELS;
+      for (int axis = 0; axis < 3; ++axis) {
+        texels_[base + 2 * std::size_t(axis)][slot] = bits(roundDown(c.bounds.lo[axis] - origin_[axis] - margin_));
+        texels_[base + 2 * std::size_t(axis) + 1][slot] = bits(roundUp(c.bounds.hi[axis] - origin_[axis] + margin_));
+      }
+      references[slot] = reference;
+      if (c.isPatch) patchSlots_.push_back({base + layout::FACET_BVH4_REFERENCES, slot});
+    }
+    texels_[std::size_t(index) * layout::FACET_BVH4_TEXELS + layout::FACET_BVH4_REFERENCES] = references;
+    return index;
+  }
+
+  const scene::PatchBvh& bvh_;
+  const std::vector<scene::Aabb>& patchBounds_;
+  glm::dvec3 origin_;
+  double margin_;
+  std::uint32_t quadtreeNodes_;
+  std::vector<Texel>& texels_;
+  int depth_ = 0;
+  std::vector<std::pair<std::size_t, std::size_t>> patchSlots_;
+};
+
+// Levels of a quadtree over k x k cells whose last level holds 2 x 2.
+std::uint32_t quadtreeLevels(std::uint32_t rate) {
+  std::uint32_t levels = 1;
+  while ((1u << levels) < rate) ++levels;
+  return levels;
+}
+
+}  // namespace
+
+GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geometry, const glm::dvec3& origin,
+                   double margin, bool tessellated) {
+  GpuScene packed;
+  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> patchSlots;
+  std::uint32_t patchIds = 0, faceIds = 0;
+  std::uint64_t quadtreeNodes = 0;
+  for (std::size_t i = 0; i < geometry.objects.size(); ++i) {
+    const scene::ObjectGeometry& object = geometry.objects[i];
+    const scene::SubdivisionSurface& surface = object.surface;
+    const scene::PatchBvh& bvh = object.bvh;
+    const std::uint32_t rate = std::uint32_t(std::max(1, object.refinement.tessellationRate));
+    const std::uint32_t levels = quadtreeLevels(rate);
+    const std::uint32_t nodesPerPatch = ((1u << (2 * levels)) - 1) / 3;
+    const std::uint64_t patchCount = bvh.leafPatches().size();
+
+    std::vector<scene::Aabb> patchBounds;
+    for (int source : bvh.leafPatches()) patchBounds.push_back(scene::patchBounds(surface.bezierPatch(source)));
+    Collapse collapse(bvh, patchBounds, origin, margin, nodesPerPatch, packed.topNodes);
+    layout::ObjectRange range{};
+    range.rootNode = collapse.run();
+    if (std::uint32_t(collapse.depth()) + levels > layout::FACET_BVH4_MAX_DEPTH)
+      throw gpu::Error("object '" + scene.objects[i].name + "': a BVH of depth " + std::to_string(collapse.depth()) +
+                       " over quadtrees of depth " + std::to_string(levels) + " exceeds the GPU traversal's " +
+                       std::to_string(layout::FACET_BVH4_MAX_DEPTH) + " levels");
+    patchSlots.push_back(collapse.patchSlots());
+
+    range.firstPatch = std::uint32_t(packed.patches.size());
+    range.patchCount = std::uint32_t(patchCount);
+    range.patchIdOffset = patchIds;
+    range.faceIdOffset = faceIds;
+    range.material = std::uint32_t(scene.objects[i].material);
+    range.rate = rate;
+    range.quadtreeLevels = levels;
+    range.firstQuadtreeNode = std::uint32_t(quadtreeNodes);  // relative to the quadtrees until all are placed
+    range.quadtreeNodes = nodesPerPatch;
+    range.firstBlock = std::uint32_t(packed.blocks);
+    range.firstCell = std::uint32_t(packed.cells);
+    range.firstGridVertex = std::uint32_t(packed.gridVertices);
+    range.firstEdgeMidpoint = std::uint32_t(packed.edgeMidpoints);
+    packed.objects.push_back(range);
+
+    for (int source : bvh.leafPatches()) {
+      const scene::PatchInfo& info = surface.patch(source);
+      const scene::BezierPatch& bezier = surface.bezierPatch(source);
+      layout::PatchRecord record{};
+      record.kind = bezier.gregory ? layout::FACET_PATCH_GREGORY : layout::FACET_PATCH_BEZIER;
+      record.firstPoint = std::uint32_t(packed.points.size());
+      record.ptexFace = std::uint32_t(info.ptexFace);
+      record.coarseFace = std::uint32_t(info.coarseFace);
+      record.faceU0 = float(info.domain.u0);
+      record.faceV0 = float(info.domain.v0);
+      record.faceSize = float(info.domain.size);
+      record.sourcePatch = std::uint32_t(source);
+      record.boundaryMask = info.boundaryMask;
+      record.depth = std::uint32_t(info.depth);
+      record.pointCount = bezier.gregory ? layout::FACET_PATCH_POINTS_GREGORY : layout::FACET_PATCH_POINTS_BEZIER;
+      record.transitionMask = info.transitionMask;
+      auto add = [&](const glm::dvec3& p) { packed.points.push_back(glm::vec4(glm::vec3(p - origin), 0.0f)); };
+      for (const glm::dvec3& p : bezier.points) add(p);
+      if (bezier.gregory)
+        for (const glm::dvec3& p : bezier.alternates) add(p);
+      packed.headers.push_back({record.firstPoint, record.kind, record.transitionMask, 0});
+      packed.patches.push_back(record);
+    }
+    const std::uint64_t blocksPerSide = std::uint64_t(1) << (levels - 1);
+    packed.blocks += patchCount * blocksPerSide * blocksPerSide;
+    packed.cells += patchCount * rate * rate;
+    if (!tessellated) packed.cellBounds += patchCount * rate * rate * layout::FACET_CELL_TEXELS;
+    if (tessellated) {
+      packed.gridVertices += patchCount * (rate + 1) * (rate + 1);
+      packed.edgeMidpoints += patchCount * 4 * rate;
+    }
+    quadtreeNodes += patchCount * nodesPerPatch;
+    patchIds += std::uint32_t(surface.patchCount());
+    faceIds += std::uint32_t(scene.objects[i].cage.faceCount());
+  }
+  const std::uint64_t topNodes = packed.topNodes.size() / layout::FACET_BVH4_TEXELS;
+  packed.nodeCount = topNodes + quadtreeNodes;
+  if (packed.nodeCount * layout::FACET_BVH4_TEXELS > std::uint64_t(layout::FACET_BVH4_CELL_INDEX))
+    throw gpu::Error("the scene's micro-grid needs " + std::to_string(packed.nodeCount) +
+                     " BVH nodes, more than the GPU ray caster addresses; lower the dicing rate (--tess-level)");
+  for (std::size_t i = 0; i < packed.objects.size(); ++i) {
+    layout::ObjectRange& range = packed.objects[i];
+    range.firstQuadtreeNode += std::uint32_t(topNodes);
+    for (const auto& [texel, component] : patchSlots[i]) packed.topNodes[texel][component] += range.firstQuadtreeNode;
+  }
+  return packed;
+}
+
+}  // namespace facet::gpu_backend

@@ -1,0 +1,44 @@
+// A scene's geometry packed for the GPU ray caster: the top levels of each
+// object's 4-wide BVH (its patch BVH collapsed), patch records, headers and
+// control points, and where each object's micro-grid and quadtrees go
+// (compute/shared/wide_bvh.h, raycast_layout.h).
+//
+// Everything is rebased on `origin` (the eye) in double before it is
+// rounded to float, so the kernels' error scales with the scene's size seen
+// from the camera, not with its distance from the world origin.
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "engine/gpu_backend/raycast_layout.hpp"
+#include "scenes/scene.h"
+#include "scenes/scene_geometry.h"
+
+namespace facet::gpu_backend {
+
+using Texel = std::array<std::uint32_t, 4>;
+
+struct GpuScene {
+  std::vector<Texel> topNodes;  // nodes 0 .. topNodes.size() / FACET_BVH4_TEXELS - 1 of the node buffer
+  std::uint64_t nodeCount = 0;  // top levels and every quadtree
+  std::vector<gpu_layout::PatchRecord> patches;
+  std::vector<Texel> headers;
+  std::vector<glm::vec4> points;
+  std::vector<gpu_layout::ObjectRange> objects;
+  std::uint64_t blocks = 0;         // 2 x 2 cell blocks, one dicing invocation each
+  std::uint64_t gridVertices = 0;   // tessellated only
+  std::uint64_t edgeMidpoints = 0;  // tessellated only
+  std::uint64_t cells = 0;
+  std::uint64_t cellBounds = 0;  // exact only: texels
+};
+
+// `margin` grows every top-level box (the exact method's root tolerance).
+GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geometry, const glm::dvec3& origin,
+                   double margin, bool tessellated);
+
+}  // namespace facet::gpu_backend

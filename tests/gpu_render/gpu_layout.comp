@@ -1,0 +1,28 @@
+#version 450
+// Compiles the GPU ray caster's shared headers as GLSL, in the buffer
+// layouts the kernels use, so a C++-only construct in them breaks the build.
+#extension GL_GOOGLE_include_directive : require
+#include "compute/shared/patch_records.h"
+#include "compute/shared/raycast_layout.h"
+#include "compute/shared/wide_bvh.h"
+
+layout(local_size_x = 1) in;
+layout(std430, binding = 0) readonly buffer Patches { PatchRecord patches[]; };
+layout(std430, binding = 1) readonly buffer Objects { ObjectRange objects[]; };
+layout(std430, binding = 2) readonly buffer ShadowRays { ShadowRayRecord shadowRays[]; };
+layout(std430, binding = 3) buffer Counters { RenderCounters counters; };
+layout(std430, binding = 4) readonly buffer Hits { HitRecord hits[]; };
+layout(std140, binding = 5) uniform FrameBlock { FrameParams frame; };
+
+// The members the test checks are read, so glslang keeps (and lays out) them.
+void main() {
+  PatchRecord p = patches[0];
+  ObjectRange o = objects[0];
+  ShadowRayRecord r = shadowRays[0];
+  counters.newtonFallbacks = p.kind + p.firstPoint + uint(p.faceU0) + p.sourcePatch + p.transitionMask + o.rootNode +
+                             o.rate + o.firstQuadtreeNode + o.firstEdgeMidpoint + uint(r.ray.tMax) + r.slot +
+                             hits[0].patchIndex + frame.patchCount + uint(frame.tolerance) + frame.dfgSize +
+                             FACET_BVH4_TEXELS;
+  counters.dispatchX = 0u;
+  counters.dispatchZ = 0u;
+}
