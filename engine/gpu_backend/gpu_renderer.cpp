@@ -26,8 +26,10 @@ constexpr std::uint32_t kMaxWorkgroupsPerDimension = 65535;
 // A root is accepted up to `tolerance` off the ray, so its t may be off by
 // tolerance / sin(angle): shadow rays start well clear of that.
 constexpr double kShadowOffsetInTolerances = 32;
-// Bands of pixels keep each ray buffer within this (lavapipe binds at most 128 MiB).
-constexpr std::uint64_t kMaxRayBufferBytes = std::uint64_t(64) << 20;
+// Bands of pixels keep one band's buffers within this, so a frame's GPU
+// arrays stay near it whatever its size (and each binding far below
+// lavapipe's 128 MiB).
+constexpr std::uint64_t kBandBytes = std::uint64_t(48) << 20;
 
 enum Stage {
   kDiceGrid,
@@ -374,9 +376,10 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   result.stageMilliseconds.emplace_back("top levels", wallClock(start));
 
   const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
-  const std::uint64_t bandPixels = std::min<std::uint64_t>(
-      pixels, std::max<std::uint64_t>(1, kMaxRayBufferBytes / (sizeof(layout::ShadowRayRecord) *
-                                                               frame.raysPerPixel * std::max(1u, frame.slotsPerRay))));
+  const std::uint64_t slotBytes = sizeof(layout::ShadowRayRecord) + 16;
+  const std::uint64_t rayBytes = sizeof(layout::RayRecord) + sizeof(layout::HitRecord) + 16 + frame.slotsPerRay * slotBytes;
+  const std::uint64_t pixelBytes = frame.raysPerPixel * rayBytes + sizeof(layout::PixelAovs) + 16;
+  const std::uint64_t bandPixels = std::min<std::uint64_t>(pixels, std::max<std::uint64_t>(1, kBandBytes / pixelBytes));
   BandBuffers band = allocateBands(d, bandPixels, bandPixels * frame.raysPerPixel, frame.slotsPerRay);
   const auto table = bindingTable(sceneBuffers, band);
   result.cells = packed.cells;

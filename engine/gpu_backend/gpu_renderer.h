@@ -21,8 +21,8 @@
 //   shadow rays  any hit along each listed ray (indirect dispatch) clears its slot
 //   gather       per camera ray, the sum of its slots
 //   resolve      beauty and coverage per pixel
-// Large images are rendered in bands of pixels so that no ray buffer exceeds
-// 64 MiB (lavapipe binds at most 128 MiB).
+// Large images are rendered in bands of pixels so that one band's buffers
+// stay within 48 MiB (lavapipe binds at most 128 MiB).
 //
 // Precision: the kernels compute in float, in coordinates relative to the
 // eye (rebased in double on the host), so the error follows the scene's

@@ -3,7 +3,10 @@
 // tolerances of engine/parity.h.
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <ostream>
 #include <string>
@@ -88,6 +91,53 @@ INSTANTIATE_TEST_SUITE_P(Supersampled, GpuParity,
                                            ParityCase{std::filesystem::path(FACET_CAGE_DIR) / "creased_box.obj",
                                                       scene::IntersectionMethod::Tessellated, 4}),
                          caseName);
+
+// Precise anywhere: the GPU works relative to the eye, so a scene far from
+// the world origin holds the same tolerances as one at it, as far as the
+// CPU reference (double) holds.
+struct FarCase {
+  std::string cage;
+  scene::IntersectionMethod method;
+  double distance;
+};
+
+void PrintTo(const FarCase& c, std::ostream* out) {
+  *out << c.cage << (c.method == scene::IntersectionMethod::Exact ? " exact" : " tessellated") << " at "
+       << c.distance;
+}
+
+class FarFromTheOrigin : public gpu::testing::GpuTest, public ::testing::WithParamInterface<FarCase> {};
+
+TEST_P(FarFromTheOrigin, MatchesTheCpuReferenceWithinTolerance) {
+  scene::Scene scene = scene::loadScene(std::filesystem::path(FACET_CAGE_DIR) / (GetParam().cage + ".obj"));
+  scene.render.width = 64;
+  scene.render.height = 48;
+  scene.render.method = GetParam().method;
+  const glm::dvec3 offset = GetParam().distance * glm::normalize(glm::dvec3(1.0, -0.5, 0.75));
+  for (scene::Object& object : scene.objects)
+    for (glm::dvec3& p : object.cage.positions) p += offset;
+  for (scene::Light& light : scene.lights) light.position += offset;
+  scene.camera.eye += offset;
+  scene.camera.target += offset;
+  const scene::SceneGeometry geometry = scene::buildGeometry(scene);
+  const Image reference = cpu::renderReference(scene, geometry);
+  gpu_backend::GpuRenderer renderer(device_);
+  const ParityReport parity = compareImages(reference, renderer.render(scene, geometry).image);
+  EXPECT_TRUE(parity.pass) << describe(parity);
+  EXPECT_GT(parity.covered, 50u);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Translated, FarFromTheOrigin,
+    ::testing::Values(FarCase{"suzanne", scene::IntersectionMethod::Exact, 1e3},
+                      FarCase{"suzanne", scene::IntersectionMethod::Exact, 1e6},
+                      FarCase{"suzanne", scene::IntersectionMethod::Tessellated, 1e6},
+                      FarCase{"creased_box", scene::IntersectionMethod::Exact, 1e6},
+                      FarCase{"creased_box", scene::IntersectionMethod::Tessellated, 1e6}),
+    [](const ::testing::TestParamInfo<FarCase>& info) {
+      return info.param.cage + (info.param.method == scene::IntersectionMethod::Exact ? "_exact_" : "_tess_") +
+             std::to_string(int(std::round(std::log10(info.param.distance))));
+    });
 
 class GpuRendererTest : public gpu::testing::GpuTest {};
 
