@@ -1,8 +1,8 @@
 // The last level of every patch's quadtree, one invocation per node of
 // 2 x 2 cells: each cell's box and reference (compute/shared/wide_bvh.h).
-// Exact method: the hull of the control points restricted to the cell,
-// grown by the root tolerance, whether the cell is flat, and the cell's
-// bounds for its finish (box and slab, compute/shared/wide_bvh.h).
+// Exact method: the box of the hull of the control points restricted to the
+// cell, grown by the root tolerance, and the cell's oriented bounds for its
+// finish (compute/shared/wide_bvh.h).
 // Tessellated: the box of the cell's micro-triangles' corners.
 #version 460
 #extension GL_GOOGLE_include_directive : require
@@ -44,25 +44,14 @@ Box tessellated_cell_box(ObjectRange range, uint localPatch, uint i, uint j, uin
   return box;
 }
 
-// The slab dMin <= n.p <= dMax around the plane of the hull's corners
-// holding every control box (a box's extent along n is |n|.halfExtent).
-vec2 hull_slab(Hull hull, vec3 n) {
-  vec2 slab = vec2(INFINITE_DISTANCE, -INFINITE_DISTANCE);
-  for (int i = 0; i < 4; ++i) {
-    vec4 centre = 0.5 * (n.x * (hull.lo.x[i] + hull.hi.x[i]) + n.y * (hull.lo.y[i] + hull.hi.y[i]) +
-                         n.z * (hull.lo.z[i] + hull.hi.z[i]));
-    vec4 spread = 0.5 * (abs(n.x) * (hull.hi.x[i] - hull.lo.x[i]) + abs(n.y) * (hull.hi.y[i] - hull.lo.y[i]) +
-                         abs(n.z) * (hull.hi.z[i] - hull.lo.z[i]));
-    vec4 low = centre - spread, high = centre + spread;
-    slab = vec2(min(slab.x, min(min(low.x, low.y), min(low.z, low.w))),
-                max(slab.y, max(max(high.x, high.y), max(high.z, high.w))));
-  }
-  return slab;
-}
-
-vec3 hull_corner(Hull hull, int i, int j) {
-  return 0.5 * vec3(hull.lo.x[i][j] + hull.hi.x[i][j], hull.lo.y[i][j] + hull.hi.y[i][j],
-                    hull.lo.z[i][j] + hull.hi.z[i][j]);
+// The exact finish's bounds of a cell (compute/shared/wide_bvh.h), grown by
+// twice the root tolerance: a root's own, and the rounding of the projections.
+void store_cell_bounds(int texel, Hull hull) {
+  OrientedBounds b = oriented_bounds(hull, 2.0 * frame.tolerance);
+  imageStore(cellBoundsOut, texel, vec4(b.n, b.nRange.x));
+  imageStore(cellBoundsOut, texel + 1, vec4(b.u, b.nRange.y));
+  imageStore(cellBoundsOut, texel + 2, vec4(b.uRange, b.vRange));
+  imageStore(cellBoundsOut, texel + 3, vec4(b.steepness, 0.0, 0.0, 0.0));
 }
 
 void main() {
@@ -81,24 +70,14 @@ void main() {
     uint i = 2u * bx + (slot & 1u), j = 2u * by + (slot >> 1u);
     if (i >= k || j >= k) continue;
     Box box;
-    uint flags = FACET_BVH4_CELL;
+
     if (METHOD == 0) {
       float size = 1.0 / float(k);
       Hull hull = restrict_patch(c, float(i) * size, float(i + 1u) * size, float(j) * size, float(j + 1u) * size);
       box = hull_box(hull);
-      if (hull_is_flat(hull, box)) flags |= FACET_BVH4_FLAT;
       box.lo -= frame.tolerance;
       box.hi += frame.tolerance;
-      // n = 0 where the corners give no plane: the finish then tests the box only.
-      vec3 n = cross(hull_corner(hull, 3, 3) - hull_corner(hull, 0, 0), hull_corner(hull, 0, 3) - hull_corner(hull, 3, 0));
-      float length_n = length(n);
-      n = length_n > 0.0 ? n / length_n : vec3(0.0);
-      // Twice the tolerance: a root's own, and the rounding of the dot products.
-      vec2 slab = hull_slab(hull, n) + vec2(-2.0, 2.0) * frame.tolerance;
-      int texel = int((range.firstCell + (localPatch * k + j) * k + i) * FACET_CELL_TEXELS);
-      imageStore(cellBoundsOut, texel, vec4(box.lo, slab.x));
-      imageStore(cellBoundsOut, texel + 1, vec4(box.hi, slab.y));
-      imageStore(cellBoundsOut, texel + 2, vec4(n, 0.0));
+      store_cell_bounds(int((range.firstCell + (localPatch * k + j) * k + i) * FACET_CELL_TEXELS), hull);
     } else {
       box = tessellated_cell_box(range, localPatch, i, j, header[FACET_HEADER_TRANSITION_MASK]);
     }
@@ -106,7 +85,7 @@ void main() {
       lo[axis][slot] = box.lo[axis];
       hi[axis][slot] = box.hi[axis];
     }
-    references[slot] = flags | ((localPatch * k + j) * k + i);
+    references[slot] = FACET_BVH4_CELL | ((localPatch * k + j) * k + i);
   }
   int base = int(quadtree_node(range, localPatch, level, bx, by) * FACET_BVH4_TEXELS);
   for (int axis = 0; axis < 3; ++axis) {

@@ -1,8 +1,8 @@
 // Conservative bounds of a patch over a piece [s0, s1] x [t0, t1] of its
-// domain, from its control points restricted to the piece (blossoming), and
-// how far the piece is from flat. Used by the dicing kernels for the cells'
-// boxes and by the exact finish when it subdivides a cell. Needs
-// patch_eval.glsl.
+// domain, from its control points restricted to the piece (blossoming): a
+// box, and bounds oriented by the piece's plane. Used by the dicing kernels
+// for the cells' bounds and by the exact finish when it subdivides a cell.
+// Needs ray.glsl and patch_eval.glsl.
 #ifndef FACET_RAYCAST_PATCH_HULL_GLSL
 #define FACET_RAYCAST_PATCH_HULL_GLSL
 
@@ -78,27 +78,6 @@ float max_entry(mat4 m) {
   return max(max(v.x, v.y), max(v.z, v.w));
 }
 
-// Largest distance of a control box from the bilinear patch through the
-// four corner points (scenes/bezier_patch.h's flatnessError).
-float flatness_error(Hull hull) {
-  mat4 mx = 0.5 * (hull.lo.x + hull.hi.x), my = 0.5 * (hull.lo.y + hull.hi.y), mz = 0.5 * (hull.lo.z + hull.hi.z);
-  mat4 ex = hull.hi.x - hull.lo.x, ey = hull.hi.y - hull.lo.y, ez = hull.hi.z - hull.lo.z;
-  vec3 c00 = vec3(mx[0][0], my[0][0], mz[0][0]), c30 = vec3(mx[3][0], my[3][0], mz[3][0]);
-  vec3 c03 = vec3(mx[0][3], my[0][3], mz[0][3]), c33 = vec3(mx[3][3], my[3][3], mz[3][3]);
-  const vec4 rows = vec4(0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0);
-  vec4 error = vec4(0.0);
-  for (int i = 0; i < 4; ++i) {
-    float s = float(i) / 3.0;
-    vec3 bottom = mix(c00, c30, s), top = mix(c03, c33, s);
-    vec4 dx = mx[i] - mix(vec4(bottom.x), vec4(top.x), rows);
-    vec4 dy = my[i] - mix(vec4(bottom.y), vec4(top.y), rows);
-    vec4 dz = mz[i] - mix(vec4(bottom.z), vec4(top.z), rows);
-    vec4 spread = 0.5 * sqrt(ex[i] * ex[i] + ey[i] * ey[i] + ez[i] * ez[i]);
-    error = max(error, sqrt(dx * dx + dy * dy + dz * dz) + spread);
-  }
-  return max(max(error.x, error.y), max(error.z, error.w));
-}
-
 struct Box {
   vec3 lo;
   vec3 hi;
@@ -109,11 +88,80 @@ Box hull_box(Hull hull) {
              vec3(max_entry(hull.hi.x), max_entry(hull.hi.y), max_entry(hull.hi.z)));
 }
 
-// A piece within EXACT_FLATNESS of its extent from the bilinear patch
-// through its corners: a ray crosses it at most once away from grazing
-// angles, so one Newton run decides it.
-const float EXACT_FLATNESS = 1e-3;
+vec3 hull_corner(Hull hull, int i, int j) {
+  return 0.5 * vec3(hull.lo.x[i][j] + hull.hi.x[i][j], hull.lo.y[i][j] + hull.hi.y[i][j],
+                    hull.lo.z[i][j] + hull.hi.z[i][j]);
+}
 
-bool hull_is_flat(Hull hull, Box box) { return flatness_error(hull) <= EXACT_FLATNESS * length(box.hi - box.lo); }
+// The range of a.p over the hull's control boxes (a box's extent along a
+// is |a|.halfExtent).
+vec2 hull_range(Hull hull, vec3 a) {
+  vec2 range = vec2(INFINITE_DISTANCE, -INFINITE_DISTANCE);
+  for (int i = 0; i < 4; ++i) {
+    vec4 centre = 0.5 * (a.x * (hull.lo.x[i] + hull.hi.x[i]) + a.y * (hull.lo.y[i] + hull.hi.y[i]) +
+                         a.z * (hull.lo.z[i] + hull.hi.z[i]));
+    vec4 spread = 0.5 * (abs(a.x) * (hull.hi.x[i] - hull.lo.x[i]) + abs(a.y) * (hull.hi.y[i] - hull.lo.y[i]) +
+                         abs(a.z) * (hull.hi.z[i] - hull.lo.z[i]));
+    vec4 low = centre - spread, high = centre + spread;
+    range = vec2(min(range.x, min(min(low.x, low.y), min(low.z, low.w))),
+                 max(range.y, max(max(high.x, high.y), max(high.z, high.w))));
+  }
+  return range;
+}
+
+// A piece's bounds in the frame of the plane of its corners: n its normal,
+// u along s, v = n x u (the axes where the corners span no plane), with the
+// ranges of the hull along each, grown by `growth`. `steepness` bounds the
+// slope of the surface over the piece to that plane: by Markov's inequality
+// a cubic's derivative on an interval is at most 9 x its range over the
+// interval, so the height rises at most 9 x its range across the narrower
+// side. A ray steeper than that crosses the piece's surface at most once.
+struct OrientedBounds {
+  vec3 n;
+  vec3 u;
+  vec2 nRange;
+  vec2 uRange;
+  vec2 vRange;
+  float steepness;
+};
+
+const float CUBIC_MARKOV = 9.0;
+
+OrientedBounds oriented_bounds(Hull hull, float growth) {
+  vec3 c00 = hull_corner(hull, 0, 0), c30 = hull_corner(hull, 3, 0);
+  vec3 c03 = hull_corner(hull, 0, 3), c33 = hull_corner(hull, 3, 3);
+  vec3 n = cross(c33 - c00, c03 - c30), u = (c30 - c00) + (c33 - c03);
+  u -= dot(u, n) / max(dot(n, n), 1e-30) * n;
+  bool planar = length(n) > 0.0 && length(u) > 0.0;
+  OrientedBounds b;
+  b.n = planar ? normalize(n) : vec3(0.0, 0.0, 1.0);
+  b.u = planar ? normalize(u) : vec3(1.0, 0.0, 0.0);
+  b.nRange = hull_range(hull, b.n);
+  b.uRange = hull_range(hull, b.u);
+  b.vRange = hull_range(hull, cross(b.n, b.u));
+  float width = min(b.uRange.y - b.uRange.x, b.vRange.y - b.vRange.x);
+  b.steepness = planar && width > 0.0 ? CUBIC_MARKOV * (b.nRange.y - b.nRange.x) / width : INFINITE_DISTANCE;
+  vec2 grow = vec2(-growth, growth);
+  b.nRange += grow;
+  b.uRange += grow;
+  b.vRange += grow;
+  return b;
+}
+
+float extent(OrientedBounds b) {
+  return length(vec3(b.uRange.y - b.uRange.x, b.vRange.y - b.vRange.x, b.nRange.y - b.nRange.x));
+}
+
+// Whether the ray meets the bounds within [tMin, tMax]; `steep`, whether
+// its slope to their plane exceeds their steepness.
+bool ray_meets_bounds(Ray ray, OrientedBounds b, float tMax, out bool steep) {
+  vec3 v = cross(b.n, b.u);
+  Ray local = Ray(vec3(dot(b.u, ray.origin), dot(v, ray.origin), dot(b.n, ray.origin)),
+                  vec3(dot(b.u, ray.direction), dot(v, ray.direction), dot(b.n, ray.direction)), ray.tMin, ray.tMax);
+  vec2 interval = box_interval(local, safe_inverse(local.direction), vec3(b.uRange.x, b.vRange.x, b.nRange.x),
+                               vec3(b.uRange.y, b.vRange.y, b.nRange.y), tMax);
+  steep = abs(local.direction.z) > b.steepness * length(local.direction.xy);
+  return interval.x <= interval.y;
+}
 
 #endif

@@ -3,7 +3,8 @@
 // micro-grid, or with anyHit the first hit found. METHOD (a specialization
 // constant of the including kernel: 0 exact, 1 tessellated) picks what
 // happens at a cell. The including kernel declares the bindings of
-// trace_bindings.glsl.
+// trace_bindings.glsl and defines defer_cell(object, cell), where the exact
+// method sends the cells Newton leaves undecided (finish_exact.glsl).
 #ifndef FACET_RAYCAST_TRACE_GLSL
 #define FACET_RAYCAST_TRACE_GLSL
 
@@ -22,7 +23,7 @@ void finish_cell(Ray ray, ObjectRange range, uint object, uint reference, inout 
   uint cell = reference & FACET_BVH4_CELL_INDEX, k = range.rate;
   uint localPatch = cell / (k * k), i = cell % k, j = (cell / k) % k;
   if (METHOD == METHOD_EXACT)
-    finish_exact(ray, range, object, localPatch, i, j, (reference & FACET_BVH4_FLAT) != 0u, best);
+    finish_exact(ray, range, object, localPatch, i, j, best);
   else
     finish_tessellated(ray, range, object, localPatch, i, j, best);
 }

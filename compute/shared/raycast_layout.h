@@ -45,13 +45,35 @@ struct ShadowRayRecord {
   uint slot;
 };
 
-// Counted by the kernels, read back per band.
+// Counted by the kernels, read back per band. Each list's length comes with
+// the workgroup grid of the pass that works it off (indirect dispatch).
 struct RenderCounters {
-  uint shadowRays;       // appended by the surface kernel: the shadow pass's ray count
-  uint newtonFallbacks;  // exact cells where Newton failed and the cell's domain was subdivided
-  uint dispatchX;        // the shadow pass's indirect dispatch, from shadowRays
-  uint dispatchY;
-  uint dispatchZ;
+  uint shadowRays;  // appended by the surface kernel
+  uint shadowX;
+  uint shadowY;
+  uint shadowZ;
+  uint cameraFallbacks;  // exact cells of camera rays left to subdivision
+  uint cameraFallbackX;
+  uint cameraFallbackY;
+  uint cameraFallbackZ;
+  uint shadowFallbacks;  // the same for shadow rays
+  uint shadowFallbackX;
+  uint shadowFallbackY;
+  uint shadowFallbackZ;
+};
+
+// An exact cell that Newton did not settle, deferred to the fallback pass
+// (compute/raycast/fallback.comp): the ray (camera or shadow ray index), the
+// cell reference, its object, and for camera rays the closest root found
+// in it.
+struct FallbackRecord {
+  uint ray;
+  uint cell;
+  uint object;
+  float t;
+  uint patchIndex;
+  float s;
+  float tParam;
 };
 
 // The closest hit; patchIndex == FACET_NO_HIT on a miss. (s, t) is patch-local.
@@ -142,6 +164,7 @@ struct FrameParams {
   float minimumPiece;  // exact method: pieces are not split below this size
   float shadowOffset;  // 1e-6 x the scene diagonal (docs/rendering.md)
   uint slotsPerRay;    // shadow-ray slots per camera ray: one per light, then the environment's
+  uint fallbackCapacity;  // records in each fallback list
   // The environment (compute/raycast/environment.glsl); offsets count floats
   // in the environment tables buffer (the map's texels have their own).
   float environmentIntensity;

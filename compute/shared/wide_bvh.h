@@ -17,22 +17,20 @@ const uint FACET_BVH4_TEXELS = 7u;
 const uint FACET_BVH4_REFERENCES = 6u;  // the texel of child references
 
 // A child reference is a node index, or a cell of the object's micro-grid:
-// FACET_BVH4_CELL | flags | (patch * k + j) * k + i, patch counted within
-// the object. FACET_BVH4_FLAT marks a cell whose hull lies within
-// EXACT_FLATNESS of its extent from the bilinear patch through its corners,
-// so that a ray crosses its surface at most once away from grazing angles.
+// FACET_BVH4_CELL | (patch * k + j) * k + i, patch counted within the object.
 const uint FACET_BVH4_EMPTY = 0xFFFFFFFFu;
 const uint FACET_BVH4_CELL = 0x80000000u;
-const uint FACET_BVH4_FLAT = 0x40000000u;
-const uint FACET_BVH4_CELL_INDEX = 0x3FFFFFFFu;
+const uint FACET_BVH4_CELL_INDEX = 0x7FFFFFFFu;
 
 // The exact method's bounds of one cell, FACET_CELL_TEXELS vec4 texels of
-// the cell bounds texel buffer: (lo, dMin), (hi, dMax), (n, 0). The limit
-// surface over the cell lies in the box [lo, hi] and in the slab
-// dMin <= n.p <= dMax around the plane of its corners, both from the hull of
-// its restricted control points and grown by the root tolerance: a ray that
-// crosses a tilted cell's box beside the cell misses the slab.
-const uint FACET_CELL_TEXELS = 3u;
+// the cell bounds texel buffer: (n, nMin), (u, nMax), (uMin, uMax, vMin,
+// vMax), (steepness, 0, 0, 0). The limit surface over the cell lies in the
+// box oriented by the plane of its corners: n its normal, u along the cell's
+// s direction, v = n x u, with the ranges of the hull of its restricted
+// control points, grown by the root tolerance. A ray whose slope to that
+// plane exceeds `steepness` (a bound on the surface's own slope over the
+// cell) crosses the cell's surface at most once.
+const uint FACET_CELL_TEXELS = 4u;
 
 // Longest path of references from an object's root to a cell: the private
 // traversal stack holds at most 3 per level below the root.

@@ -31,22 +31,29 @@ constexpr double kShadowOffsetInTolerances = 32;
 // lavapipe's 128 MiB).
 constexpr std::uint64_t kBandBytes = std::uint64_t(48) << 20;
 
+// Compute passes in the order they run, each with its own timestamps;
+// passes of one name are reported as one stage.
 enum Stage {
   kDiceGrid,
   kDiceCells,
   kQuadtrees,
   kRaygen,
   kIntersect,
+  kCompactCameraFallbacks,
+  kCameraFallbacks,
+  kResolveCameraFallbacks,
   kSurface,
-  kShadowDispatch,
+  kCompactShadowRays,
   kShadow,
+  kCompactShadowFallbacks,
+  kShadowFallbacks,
   kGather,
   kResolve,
   kStageCount
 };
-const char* const kStageNames[kStageCount] = {"dice grid",   "dice cells", "quadtrees",   "raygen",
-                                              "intersect",   "surface",    "compact",     "shadow rays",
-                                              "gather",      "resolve"};
+const char* const kStageNames[kStageCount] = {
+    "dice grid", "dice cells", "quadtrees",   "raygen",    "intersect", "compact", "fallbacks", "fallbacks",
+    "surface",   "compact",    "shadow rays", "compact",   "fallbacks", "gather",  "resolve"};
 
 // A 2D grid of 64-wide workgroups covering `invocations` (kernels index with
 // invocation_index()).
@@ -230,12 +237,17 @@ SceneBuffers uploadScene(gpu::Device& d, const GpuScene& packed, const scene::Sc
 // What one band of pixels needs, reused band after band.
 struct BandBuffers {
   gpu::Buffer frame, rays, hits, shadowRays, contributions, aovs, rayRadiance, beauty, counters;
+  gpu::Buffer cameraFallbacks, shadowFallbacks;  // exact method: FallbackRecords, fallbackCapacity each
   gpu::Buffer aovsHost, beautyHost, countersHost;
   std::uint64_t bytes = 0;
 };
 
-BandBuffers allocateBands(gpu::Device& d, std::uint64_t bandPixels, std::uint64_t bandRays, std::uint32_t slots) {
+BandBuffers allocateBands(gpu::Device& d, std::uint64_t bandPixels, std::uint64_t bandRays, std::uint32_t slots,
+                          std::uint32_t fallbackCapacity) {
   BandBuffers b;
+  const std::uint64_t fallbackBytes = std::max(1u, fallbackCapacity) * sizeof(layout::FallbackRecord);
+  b.cameraFallbacks = storage(d, "camera ray fallbacks", fallbackBytes);
+  b.shadowFallbacks = storage(d, "shadow ray fallbacks", fallbackBytes);
   b.frame = d.createBuffer({"frame", sizeof(layout::FrameParams), BufferUsage::Uniform | BufferUsage::CopyDst});
   b.rays = storage(d, "camera rays", bandRays * sizeof(layout::RayRecord));
   b.hits = storage(d, "camera hits", bandRays * sizeof(layout::HitRecord));
@@ -251,7 +263,7 @@ BandBuffers allocateBands(gpu::Device& d, std::uint64_t bandPixels, std::uint64_
   b.countersHost =
       d.createBuffer({"counter readback", b.counters.size(), BufferUsage::MapRead | BufferUsage::CopyDst});
   for (const gpu::Buffer* buffer : {&b.rays, &b.hits, &b.shadowRays, &b.contributions, &b.aovs, &b.rayRadiance,
-                                    &b.beauty})
+                                    &b.beauty, &b.cameraFallbacks, &b.shadowFallbacks})
     b.bytes += buffer->size();
   return b;
 }
@@ -265,7 +277,8 @@ std::map<std::uint32_t, const gpu::Buffer*> bindingTable(const SceneBuffers& s, 
           {8, &b.rays},           {9, &b.hits},           {10, &b.counters},        {11, &s.materials},
           {12, &s.lights},        {13, &b.aovs},          {14, &b.shadowRays},      {15, &b.contributions},      {16, &s.cellBounds},
           {18, &b.beauty},        {19, &s.environmentTexels}, {20, &s.environmentLevels},
-          {21, &s.environmentAliases}, {22, &b.rayRadiance}, {23, &s.environmentTables}};
+          {21, &s.environmentAliases}, {22, &b.rayRadiance}, {23, &s.environmentTables},
+          {24, &b.cameraFallbacks}, {25, &b.shadowFallbacks}};
 }
 
 gpu::BindGroup bindGroup(gpu::Device& d, const gpu::ComputePipeline& pipeline, const std::string& label,
@@ -322,7 +335,9 @@ GpuRenderer::GpuRenderer(gpu::Device& device) : device_(device) {
       {"raygen", raycast::spirv::raygen},
       {"intersect", raycast::spirv::intersect},
       {"surface", raycast::spirv::surface},
-      {"shadow_dispatch", raycast::spirv::shadow_dispatch},
+      {"dispatch_args", raycast::spirv::dispatch_args},
+      {"fallback", raycast::spirv::fallback},
+      {"fallback_resolve", raycast::spirv::fallback_resolve},
       {"shadow", raycast::spirv::shadow},
       {"gather", raycast::spirv::gather},
       {"resolve", raycast::spirv::resolve}};
@@ -380,8 +395,12 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   const std::uint64_t rayBytes = sizeof(layout::RayRecord) + sizeof(layout::HitRecord) + 16 + frame.slotsPerRay * slotBytes;
   const std::uint64_t pixelBytes = frame.raysPerPixel * rayBytes + sizeof(layout::PixelAovs) + 16;
   const std::uint64_t bandPixels = std::min<std::uint64_t>(pixels, std::max<std::uint64_t>(1, kBandBytes / pixelBytes));
-  BandBuffers band = allocateBands(d, bandPixels, bandPixels * frame.raysPerPixel, frame.slotsPerRay);
-  const auto table = bindingTable(sceneBuffers, band);
+  // Fallbacks are rare (cells Newton leaves undecided); a band whose lists
+  // overflow is rendered again with room for all.
+  frame.fallbackCapacity = tessellated ? 0 : std::uint32_t(bandPixels * frame.raysPerPixel / 16 + 1024);
+  BandBuffers band =
+      allocateBands(d, bandPixels, bandPixels * frame.raysPerPixel, frame.slotsPerRay, frame.fallbackCapacity);
+  auto table = bindingTable(sceneBuffers, band);
   result.cells = packed.cells;
   result.gpuBytes = sceneBuffers.bytes + band.bytes;
 
@@ -399,7 +418,7 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
                            {"D_MODEL", sharedModel(scene, &materials::Material::distribution)},
                            {"G_MODEL", sharedModel(scene, &materials::Material::geometry)},
                            {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)}});
-  gpu::ComputePipeline& shadowDispatch = pipeline("shadow_dispatch", {});
+  gpu::ComputePipeline& dispatchArgs = pipeline("dispatch_args", {});
   gpu::ComputePipeline& shadow = pipeline("shadow", methodConstant);
   gpu::ComputePipeline& gather = pipeline("gather", {});
   gpu::ComputePipeline& resolve = pipeline("resolve", {});
@@ -448,15 +467,38 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   }
 
   // Stages per band: trace and shade, then read back.
-  const gpu::BindGroup raygenGroup = bindGroup(d, raygen, "raygen", table);
-  const gpu::BindGroup intersectGroup = bindGroup(d, intersect, "intersect", table);
-  const gpu::BindGroup surfaceGroup = bindGroup(d, surface, "surface", table);
-  const gpu::BindGroup shadowDispatchGroup = bindGroup(d, shadowDispatch, "shadow dispatch", table);
-  const gpu::BindGroup shadowGroup = bindGroup(d, shadow, "shadow", table);
-  const gpu::BindGroup gatherGroup = bindGroup(d, gather, "gather", table);
-  const gpu::BindGroup resolveGroup = bindGroup(d, resolve, "resolve", table);
+  struct BandGroups {
+    gpu::BindGroup raygen, intersect, surface, dispatchArgs, shadow, gather, resolve;
+    gpu::BindGroup cameraFallbacks, resolveCameraFallbacks, shadowFallbacks;
+  };
+  auto bandGroups = [&] {
+    BandGroups g{bindGroup(d, raygen, "raygen", table),
+                 bindGroup(d, intersect, "intersect", table),
+                 bindGroup(d, surface, "surface", table),
+                 bindGroup(d, dispatchArgs, "dispatch args", table),
+                 bindGroup(d, shadow, "shadow", table),
+                 bindGroup(d, gather, "gather", table),
+                 bindGroup(d, resolve, "resolve", table),
+                 {},
+                 {},
+                 {}};
+    if (!tessellated) {
+      g.cameraFallbacks = bindGroup(d, pipeline("fallback", {{"SHADOW", 0}}), "camera ray fallbacks", table);
+      g.resolveCameraFallbacks = bindGroup(d, pipeline("fallback_resolve", {}), "resolve fallbacks", table);
+      g.shadowFallbacks = bindGroup(d, pipeline("fallback", {{"SHADOW", 1}}), "shadow ray fallbacks", table);
+    }
+    return g;
+  };
+  BandGroups groups = bandGroups();
+  auto indirect = [&](gpu::CommandEncoder& encoder, Stage stage, gpu::ComputePipeline& p, const gpu::BindGroup& group,
+                      std::size_t argumentsOffset) {
+    beginPass(encoder, stage, p, group).dispatchWorkgroupsIndirect(band.counters, argumentsOffset);
+  };
+  auto compact = [&](gpu::CommandEncoder& encoder, Stage stage) {
+    beginPass(encoder, stage, dispatchArgs, groups.dispatchArgs).dispatchWorkgroups(1);
+  };
   result.image = Image(width, height);
-  for (std::uint64_t first = 0; first < pixels; first += bandPixels) {
+  for (std::uint64_t first = 0; first < pixels;) {
     const std::uint64_t count = std::min(bandPixels, pixels - first);
     const std::uint64_t rays = count * frame.raysPerPixel;
     frame.firstPixel = std::uint32_t(first);
@@ -465,14 +507,25 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
 
     gpu::CommandEncoder encoder = d.createCommandEncoder({"render band"});
     encoder.clearBuffer(band.counters);
-    pass(encoder, kRaygen, raygen, raygenGroup, rays);
-    pass(encoder, kIntersect, intersect, intersectGroup, rays);
-    pass(encoder, kSurface, surface, surfaceGroup, rays);
-    beginPass(encoder, kShadowDispatch, shadowDispatch, shadowDispatchGroup).dispatchWorkgroups(1);
-    beginPass(encoder, kShadow, shadow, shadowGroup)
-        .dispatchWorkgroupsIndirect(band.counters, offsetof(layout::RenderCounters, dispatchX));
-    pass(encoder, kGather, gather, gatherGroup, rays);
-    pass(encoder, kResolve, resolve, resolveGroup, count);
+    pass(encoder, kRaygen, raygen, groups.raygen, rays);
+    pass(encoder, kIntersect, intersect, groups.intersect, rays);
+    if (!tessellated) {
+      compact(encoder, kCompactCameraFallbacks);
+      indirect(encoder, kCameraFallbacks, pipeline("fallback", {{"SHADOW", 0}}), groups.cameraFallbacks,
+               offsetof(layout::RenderCounters, cameraFallbackX));
+      indirect(encoder, kResolveCameraFallbacks, pipeline("fallback_resolve", {}), groups.resolveCameraFallbacks,
+               offsetof(layout::RenderCounters, cameraFallbackX));
+    }
+    pass(encoder, kSurface, surface, groups.surface, rays);
+    compact(encoder, kCompactShadowRays);
+    indirect(encoder, kShadow, shadow, groups.shadow, offsetof(layout::RenderCounters, shadowX));
+    if (!tessellated) {
+      compact(encoder, kCompactShadowFallbacks);
+      indirect(encoder, kShadowFallbacks, pipeline("fallback", {{"SHADOW", 1}}), groups.shadowFallbacks,
+               offsetof(layout::RenderCounters, shadowFallbackX));
+    }
+    pass(encoder, kGather, gather, groups.gather, rays);
+    pass(encoder, kResolve, resolve, groups.resolve, count);
     encoder.copyBufferToBuffer(band.aovs, 0, band.aovsHost, 0, count * sizeof(layout::PixelAovs));
     encoder.copyBufferToBuffer(band.beauty, 0, band.beautyHost, 0, count * 16);
     encoder.copyBufferToBuffer(band.counters, 0, band.countersHost, 0, band.counters.size());
@@ -480,6 +533,16 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
     d.queue().waitIdle();
     addStageTimes(kRaygen, kResolve);
 
+    const layout::RenderCounters counters = band.countersHost.mapped<layout::RenderCounters>()[0];
+    const std::uint32_t needed = std::max(counters.cameraFallbacks, counters.shadowFallbacks);
+    if (needed > frame.fallbackCapacity) {
+      frame.fallbackCapacity = needed;
+      band = allocateBands(d, bandPixels, bandPixels * frame.raysPerPixel, frame.slotsPerRay, needed);
+      table = bindingTable(sceneBuffers, band);
+      groups = bandGroups();
+      result.gpuBytes = sceneBuffers.bytes + band.bytes;
+      continue;
+    }
     const auto pixelAovs = band.aovsHost.mapped<layout::PixelAovs>();
     const auto pixelBeauty = band.beautyHost.mapped<glm::vec4>();
     Image& image = result.image;
@@ -497,14 +560,21 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
       image.faceId[p] = a.faceId;
       image.uv[p] = {a.u, a.v};
     }
-    const layout::RenderCounters counters = band.countersHost.mapped<layout::RenderCounters>()[0];
     result.primaryRays += rays;
     result.shadowRays += counters.shadowRays;
-    result.newtonFallbacks += counters.newtonFallbacks;
-    if (progress) progress(double(first + count) / double(pixels));
+    result.newtonFallbacks += counters.cameraFallbacks + counters.shadowFallbacks;
+    first += count;
+    if (progress) progress(double(first) / double(pixels));
   }
-  for (int s = 0; s < kStageCount; ++s)
-    if (ran[s]) result.stageMilliseconds.emplace_back(kStageNames[s], stageNs[s] * 1e-6);
+  for (int s = 0; s < kStageCount; ++s) {
+    if (!ran[s]) continue;
+    auto same = std::find_if(result.stageMilliseconds.begin(), result.stageMilliseconds.end(),
+                             [&](const auto& stage) { return stage.first == kStageNames[s]; });
+    if (same == result.stageMilliseconds.end())
+      result.stageMilliseconds.emplace_back(kStageNames[s], stageNs[s] * 1e-6);
+    else
+      same->second += stageNs[s] * 1e-6;
+  }
   return result;
 }
 

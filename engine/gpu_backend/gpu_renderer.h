@@ -13,12 +13,14 @@
 // then per band of pixels:
 //   raygen       camera rays (the centre ray, plus spp stratified ones if > 1)
 //   intersect    closest hit per camera ray: trace() of compute/raycast/trace.glsl
+//   compact      a list's length becomes its pass's indirect dispatch
+//   fallbacks    exact method: the cells Newton left undecided, subdivided
 //   surface      hit point, limit normal, AOVs, per light slot its unshadowed
 //                radiance and, where it needs one, a shadow ray appended to
 //                one compacted list; the environment's share; misses only
 //                look up the environment
-//   compact      the shadow pass's workgroup grid from the list's length
-//   shadow rays  any hit along each listed ray (indirect dispatch) clears its slot
+//   shadow rays  any hit along each listed ray (indirect dispatch) clears its
+//                slot; then the exact method's fallbacks for shadow rays
 //   gather       per camera ray, the sum of its slots
 //   resolve      beauty and coverage per pixel
 // Large images are rendered in bands of pixels so that one band's buffers

@@ -13,16 +13,20 @@ layout(std430, binding = 2) readonly buffer ShadowRays { ShadowRayRecord shadowR
 layout(std430, binding = 3) buffer Counters { RenderCounters counters; };
 layout(std430, binding = 4) readonly buffer Hits { HitRecord hits[]; };
 layout(std140, binding = 5) uniform FrameBlock { FrameParams frame; };
+layout(std430, binding = 6) readonly buffer Fallbacks { FallbackRecord fallbacks[]; };
 
 // The members the test checks are read, so glslang keeps (and lays out) them.
 void main() {
   PatchRecord p = patches[0];
   ObjectRange o = objects[0];
   ShadowRayRecord r = shadowRays[0];
-  counters.newtonFallbacks = p.kind + p.firstPoint + uint(p.faceU0) + p.sourcePatch + p.transitionMask + o.rootNode +
+  FallbackRecord f = fallbacks[0];
+  counters.cameraFallbacks = f.ray + f.cell + uint(f.t) + f.patchIndex + uint(f.tParam) + frame.fallbackCapacity +
+                             p.kind + p.firstPoint + uint(p.faceU0) + p.sourcePatch + p.transitionMask + o.rootNode +
                              o.rate + o.firstQuadtreeNode + o.firstEdgeMidpoint + uint(r.ray.tMax) + r.slot +
                              hits[0].patchIndex + frame.patchCount + uint(frame.tolerance) + frame.dfgSize +
                              FACET_BVH4_TEXELS;
-  counters.dispatchX = 0u;
-  counters.dispatchZ = 0u;
+  counters.shadowX = 0u;
+  counters.cameraFallbackX = 0u;
+  counters.shadowFallbackZ = 0u;
 }

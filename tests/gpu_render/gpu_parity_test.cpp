@@ -155,6 +155,12 @@ TEST_F(GpuRendererTest, ReportsGpuTimePerStage) {
   }
   EXPECT_EQ(names, (std::vector<std::string>{"top levels", "dice grid", "dice cells", "quadtrees", "raygen",
                                              "intersect", "surface", "compact", "shadow rays", "gather", "resolve"}));
+  scene.render.method = scene::IntersectionMethod::Exact;
+  names.clear();
+  for (const auto& [name, milliseconds] : renderer.render(scene, scene::buildGeometry(scene)).stageMilliseconds)
+    names.push_back(name);
+  EXPECT_EQ(names, (std::vector<std::string>{"top levels", "dice cells", "quadtrees", "raygen", "intersect",
+                                             "compact", "fallbacks", "surface", "shadow rays", "gather", "resolve"}));
 }
 
 }  // namespace

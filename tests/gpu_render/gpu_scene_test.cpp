@@ -194,6 +194,7 @@ TEST(GpuLayout, GlslLayoutOfTheSharedHeadersIsTheCppLayout) {
   EXPECT_EQ(layout.stride("ObjectRange"), sizeof(ObjectRange));
   EXPECT_EQ(layout.stride("ShadowRayRecord"), sizeof(ShadowRayRecord));
   EXPECT_EQ(layout.stride("HitRecord"), sizeof(HitRecord));
+  EXPECT_EQ(layout.stride("FallbackRecord"), sizeof(FallbackRecord));
 #define FACET_EXPECT_MEMBER(type, member) \
   EXPECT_EQ(layout.offset(#type, #member), offsetof(type, member)) << #type "." #member
   FACET_EXPECT_MEMBER(PatchRecord, kind);
@@ -206,9 +207,13 @@ TEST(GpuLayout, GlslLayoutOfTheSharedHeadersIsTheCppLayout) {
   FACET_EXPECT_MEMBER(ObjectRange, firstQuadtreeNode);
   FACET_EXPECT_MEMBER(ObjectRange, firstEdgeMidpoint);
   FACET_EXPECT_MEMBER(ShadowRayRecord, slot);
-  FACET_EXPECT_MEMBER(RenderCounters, newtonFallbacks);
-  FACET_EXPECT_MEMBER(RenderCounters, dispatchX);
-  FACET_EXPECT_MEMBER(RenderCounters, dispatchZ);
+  FACET_EXPECT_MEMBER(RenderCounters, shadowX);
+  FACET_EXPECT_MEMBER(RenderCounters, cameraFallbacks);
+  FACET_EXPECT_MEMBER(RenderCounters, cameraFallbackX);
+  FACET_EXPECT_MEMBER(RenderCounters, shadowFallbackZ);
+  FACET_EXPECT_MEMBER(FallbackRecord, cell);
+  FACET_EXPECT_MEMBER(FallbackRecord, tParam);
+  FACET_EXPECT_MEMBER(FrameParams, fallbackCapacity);
   FACET_EXPECT_MEMBER(FrameParams, patchCount);
   FACET_EXPECT_MEMBER(FrameParams, tolerance);
   FACET_EXPECT_MEMBER(FrameParams, dfgSize);

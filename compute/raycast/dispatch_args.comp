@@ -1,0 +1,35 @@
+// One invocation: the workgroup grids of the passes that work off the
+// kernels' lists (compute/shared/raycast_layout.h's RenderCounters), from
+// their lengths so far, as invocation_index() expects them: at most 65535
+// along x. Run after each pass that appends.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+
+#include "compute/shared/raycast_layout.h"
+
+layout(local_size_x = 1) in;
+
+layout(set = 0, binding = 0, std140) uniform FrameBlock { FrameParams frame; };
+layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters; };
+
+uvec3 grid(uint invocations) {
+  uint groups = (invocations + 63u) / 64u, x = min(groups, 65535u);
+  return uvec3(x, x == 0u ? 0u : (groups + x - 1u) / x, 1u);
+}
+
+void main() {
+  uvec3 shadow = grid(counters.shadowRays);
+  // A list that overflowed is worked off as far as it holds; the host sees
+  // the count and renders the band again with room for all.
+  uvec3 camera = grid(min(counters.cameraFallbacks, frame.fallbackCapacity));
+  uvec3 shadowFallback = grid(min(counters.shadowFallbacks, frame.fallbackCapacity));
+  counters.shadowX = shadow.x;
+  counters.shadowY = shadow.y;
+  counters.shadowZ = shadow.z;
+  counters.cameraFallbackX = camera.x;
+  counters.cameraFallbackY = camera.y;
+  counters.cameraFallbackZ = camera.z;
+  counters.shadowFallbackX = shadowFallback.x;
+  counters.shadowFallbackY = shadowFallback.y;
+  counters.shadowFallbackZ = shadowFallback.z;
+}

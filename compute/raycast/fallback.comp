@@ -1,0 +1,66 @@
+// The exact cells that Newton left undecided (finish_exact.glsl), one
+// invocation each, subdivided (subdivide_cell.glsl). Camera rays
+// (SHADOW = 0): a root nearer than the ray's hit so far lowers the hit's t
+// (atomically: a ray may have several such cells) and is kept in the record
+// for fallback_resolve.comp. Shadow rays (SHADOW = 1): any root blocks the
+// light, clearing the ray's slot.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+
+#include "compute/raycast/scene_bindings.glsl"
+#include "compute/shared/wide_bvh.h"
+
+layout(constant_id = 0) const int SHADOW = 0;
+
+layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters; };
+layout(set = 0, binding = 8, std430) readonly buffer Rays { RayRecord rays[]; };
+// The camera hits as words: a HitRecord's t first, its float bits ordered as
+// the floats (t >= 0), so atomicMin keeps the nearest.
+layout(set = 0, binding = 9, std430) buffer HitWords { uint hitWords[]; };
+layout(set = 0, binding = 14, std430) readonly buffer ShadowRays { ShadowRayRecord shadowRays[]; };
+layout(set = 0, binding = 15, std430) buffer Contributions { vec4 contributions[]; };
+layout(set = 0, binding = 24, std430) buffer CameraFallbacks { FallbackRecord cameraFallbacks[]; };
+layout(set = 0, binding = 25, std430) readonly buffer ShadowFallbacks { FallbackRecord shadowFallbacks[]; };
+
+#include "compute/raycast/ray.glsl"
+#include "compute/raycast/patch_eval.glsl"
+#include "compute/raycast/patch_hull.glsl"
+#include "compute/raycast/exact_newton.glsl"
+#include "compute/raycast/subdivide_cell.glsl"
+
+const uint HIT_WORDS = 8u;  // sizeof(HitRecord) / 4
+
+void main() {
+  uint index = invocation_index();
+  uint count = min(SHADOW == 1 ? counters.shadowFallbacks : counters.cameraFallbacks, frame.fallbackCapacity);
+  if (index >= count) return;
+  FallbackRecord record;
+  Ray ray;
+  if (SHADOW == 1) {
+    record = shadowFallbacks[index];
+    ray = to_ray(shadowRays[record.ray].ray);
+  } else {
+    record = cameraFallbacks[index];
+    ray = to_ray(rays[record.ray]);
+    ray.tMax = uintBitsToFloat(hitWords[HIT_WORDS * record.ray]);
+  }
+  ObjectRange range = objects[record.object];
+  uint k = range.rate, localPatch = record.cell / (k * k), i = record.cell % k, j = (record.cell / k) % k;
+  uint patchIndex = range.firstPatch + localPatch;
+  uvec4 header = texelFetch(patchHeaders, int(patchIndex));
+  float size = 1.0 / float(k);
+  Hit best = no_hit(ray.tMax);
+  subdivide_cell(load_control_points(header[FACET_HEADER_FIRST_POINT], header[FACET_HEADER_KIND]), ray, patchIndex,
+                 record.object, vec4(float(i) * size, float(i + 1u) * size, float(j) * size, float(j + 1u) * size),
+                 best);
+  if (best.patchIndex == FACET_NO_HIT) return;
+  if (SHADOW == 1) {
+    contributions[shadowRays[record.ray].slot] = vec4(0.0);
+    return;
+  }
+  cameraFallbacks[index].t = best.t;
+  cameraFallbacks[index].patchIndex = best.patchIndex;
+  cameraFallbacks[index].s = best.st.x;
+  cameraFallbacks[index].tParam = best.st.y;
+  atomicMin(hitWords[HIT_WORDS * record.ray], floatBitsToUint(best.t));
+}
