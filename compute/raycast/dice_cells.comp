@@ -24,20 +24,22 @@ layout(set = 0, binding = 16, rgba32f) uniform writeonly imageBuffer cellBoundsO
 
 vec3 grid_point(int index) { return texelFetch(gridVertices, index).xyz; }
 
-Box tessellated_cell_box(ObjectRange range, uint localPatch, uint i, uint j, uint transitionMask) {
+Box tessellated_cell_box(Cell cell) {
   Box box;
-  box.lo = grid_point(int(grid_vertex_index(range, localPatch, i, j)));
+  box.lo = grid_point(int(grid_vertex_index(cell.firstGridVertex, cell.rate, cell.i, cell.j)));
   box.hi = box.lo;
   for (uint corner = 1u; corner < 4u; ++corner) {
-    vec3 p = grid_point(int(grid_vertex_index(range, localPatch, i + (corner & 1u), j + (corner >> 1u))));
+    vec3 p = grid_point(
+        int(grid_vertex_index(cell.firstGridVertex, cell.rate, cell.i + (corner & 1u), cell.j + (corner >> 1u))));
     box.lo = min(box.lo, p);
     box.hi = max(box.hi, p);
   }
-  uint splitEdges = split_cell_edges(i, j, range.rate, transitionMask);
-  uint segment[4] = uint[4](i, j, i, j);
+  uint splitEdges = split_cell_edges(cell.i, cell.j, cell.rate, cell.transitionMask);
+  uint segment[4] = uint[4](cell.i, cell.j, cell.i, cell.j);
   for (uint edge = 0u; edge < 4u; ++edge) {
     if (((splitEdges >> edge) & 1u) == 0u) continue;
-    vec3 p = texelFetch(edgeMidpoints, int(edge_midpoint_index(range, localPatch, edge, segment[edge]))).xyz;
+    vec3 p =
+        texelFetch(edgeMidpoints, int(edge_midpoint_index(cell.firstEdgeMidpoint, cell.rate, edge, segment[edge]))).xyz;
     box.lo = min(box.lo, p);
     box.hi = max(box.hi, p);
   }
@@ -61,36 +63,40 @@ void main() {
   uint k = range.rate, level = range.quadtreeLevels - 1u, blocksPerSide = 1u << level;
   uint local = index - range.firstBlock, localPatch = local / (blocksPerSide * blocksPerSide);
   uint bx = local % blocksPerSide, by = (local / blocksPerSide) % blocksPerSide;
-  uvec4 header = texelFetch(patchHeaders, int(range.firstPatch + localPatch));
+  uint patchIndex = range.firstPatch + localPatch;
+  Cell first = patch_cell(patchIndex, 0u, 0u);
   ControlPoints c;
-  if (METHOD == 0) c = load_control_points(header[FACET_HEADER_FIRST_POINT], header[FACET_HEADER_KIND]);
+  if (METHOD == 0) c = load_control_points(first.firstPoint, first.kind);
   vec4 lo[3] = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0)), hi[3] = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0));
   uvec4 references = uvec4(FACET_BVH4_EMPTY);
+  uint node = quadtree_node(range, localPatch, level, bx, by);
   for (uint slot = 0u; slot < 4u; ++slot) {
-    uint i = 2u * bx + (slot & 1u), j = 2u * by + (slot >> 1u);
-    if (i >= k || j >= k) continue;
+    Cell cell = first;
+    cell.i = 2u * bx + (slot & 1u);
+    cell.j = 2u * by + (slot >> 1u);
+    if (cell.i >= k || cell.j >= k) continue;
     Box box;
-
     if (METHOD == 0) {
-      float size = 1.0 / float(k);
-      Hull hull = restrict_patch(c, float(i) * size, float(i + 1u) * size, float(j) * size, float(j + 1u) * size);
+      vec4 domain = cell_domain(cell);
+      Hull hull = restrict_patch(c, domain.x, domain.y, domain.z, domain.w);
       box = hull_box(hull);
       box.lo -= frame.tolerance;
       box.hi += frame.tolerance;
-      store_cell_bounds(int((range.firstCell + (localPatch * k + j) * k + i) * FACET_CELL_TEXELS), hull);
+      store_cell_bounds(int((cell.firstCell + cell.j * k + cell.i) * FACET_CELL_TEXELS), hull);
     } else {
-      box = tessellated_cell_box(range, localPatch, i, j, header[FACET_HEADER_TRANSITION_MASK]);
+      box = tessellated_cell_box(cell);
     }
     for (int axis = 0; axis < 3; ++axis) {
       lo[axis][slot] = box.lo[axis];
       hi[axis][slot] = box.hi[axis];
     }
-    references[slot] = FACET_BVH4_CELL | ((localPatch * k + j) * k + i);
+    references[slot] = FACET_BVH4_CELL | (node * 4u + slot);
   }
-  int base = int(quadtree_node(range, localPatch, level, bx, by) * FACET_BVH4_TEXELS);
+  int base = int(node * FACET_BVH4_TEXELS);
   for (int axis = 0; axis < 3; ++axis) {
     imageStore(bvhNodesOut, base + 2 * axis, floatBitsToUint(lo[axis]));
     imageStore(bvhNodesOut, base + 2 * axis + 1, floatBitsToUint(hi[axis]));
   }
   imageStore(bvhNodesOut, base + int(FACET_BVH4_REFERENCES), references);
+  imageStore(bvhNodesOut, base + int(FACET_BVH4_INFO), uvec4(patchIndex, bx, by, 0u));
 }

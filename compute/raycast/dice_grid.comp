@@ -11,10 +11,8 @@
 layout(set = 0, binding = 5, rgba32f) uniform writeonly imageBuffer gridVerticesOut;
 layout(set = 0, binding = 6, rgba32f) uniform writeonly imageBuffer edgeMidpointsOut;
 
-vec3 limit_point(ObjectRange range, uint localPatch, vec2 st) {
-  uvec4 header = texelFetch(patchHeaders, int(range.firstPatch + localPatch));
-  return evaluate_patch(load_control_points(header[FACET_HEADER_FIRST_POINT], header[FACET_HEADER_KIND]), st.x, st.y)
-      .position;
+vec3 limit_point(Cell owner, vec2 st) {
+  return evaluate_patch(load_control_points(owner.firstPoint, owner.kind), st.x, st.y).position;
 }
 
 void main() {
@@ -23,7 +21,7 @@ void main() {
     ObjectRange range = objects[object_of(index, RANGE_GRID_VERTICES)];
     uint side = range.rate + 1u, local = index - range.firstGridVertex;
     uint localPatch = local / (side * side), i = local % side, j = (local / side) % side;
-    vec3 p = limit_point(range, localPatch, vec2(i, j) / float(range.rate));
+    vec3 p = limit_point(patch_cell(range.firstPatch + localPatch, 0u, 0u), vec2(i, j) / float(range.rate));
     imageStore(gridVerticesOut, int(index), vec4(p, 0.0));
     return;
   }
@@ -32,8 +30,8 @@ void main() {
   ObjectRange range = objects[object_of(index, RANGE_EDGE_MIDPOINTS)];
   uint k = range.rate, local = index - range.firstEdgeMidpoint;
   uint localPatch = local / (4u * k), edge = (local / k) % 4u, i = local % k;
-  uint transitionMask = texelFetch(patchHeaders, int(range.firstPatch + localPatch))[FACET_HEADER_TRANSITION_MASK];
-  if (((transitionMask >> edge) & 1u) == 0u) return;
-  vec3 p = limit_point(range, localPatch, edge_midpoint_step(edge, i, k) / float(k));
+  Cell owner = patch_cell(range.firstPatch + localPatch, 0u, 0u);
+  if (((owner.transitionMask >> edge) & 1u) == 0u) return;
+  vec3 p = limit_point(owner, edge_midpoint_step(edge, i, k) / float(k));
   imageStore(edgeMidpointsOut, int(index), vec4(p, 0.0));
 }

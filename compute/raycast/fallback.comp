@@ -8,11 +8,10 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "compute/raycast/scene_bindings.glsl"
-#include "compute/shared/wide_bvh.h"
+#include "compute/raycast/trace_bindings.glsl"
 
 layout(constant_id = 0) const int SHADOW = 0;
 
-layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters; };
 layout(set = 0, binding = 8, std430) readonly buffer Rays { RayRecord rays[]; };
 // The camera hits as words: a HitRecord's t first, its float bits ordered as
 // the floats (t >= 0), so atomicMin keeps the nearest.
@@ -27,6 +26,8 @@ layout(set = 0, binding = 25, std430) readonly buffer ShadowFallbacks { Fallback
 #include "compute/raycast/patch_hull.glsl"
 #include "compute/raycast/exact_newton.glsl"
 #include "compute/raycast/subdivide_cell.glsl"
+#include "compute/raycast/micro_grid.glsl"
+#include "compute/raycast/cell_reference.glsl"
 
 const uint HIT_WORDS = 8u;  // sizeof(HitRecord) / 4
 
@@ -44,20 +45,16 @@ void main() {
     ray = to_ray(rays[record.ray]);
     ray.tMax = uintBitsToFloat(hitWords[HIT_WORDS * record.ray]);
   }
-  ObjectRange range = objects[record.object];
-  uint k = range.rate, localPatch = record.cell / (k * k), i = record.cell % k, j = (record.cell / k) % k;
-  uint patchIndex = range.firstPatch + localPatch;
-  uvec4 header = texelFetch(patchHeaders, int(patchIndex));
-  float size = 1.0 / float(k);
+  Cell cell = cell_of(record.cell);
   Hit best = no_hit(ray.tMax);
-  subdivide_cell(load_control_points(header[FACET_HEADER_FIRST_POINT], header[FACET_HEADER_KIND]), ray, patchIndex,
-                 record.object, vec4(float(i) * size, float(i + 1u) * size, float(j) * size, float(j + 1u) * size),
+  subdivide_cell(load_control_points(cell.firstPoint, cell.kind), ray, cell.patchIndex, cell.object, cell_domain(cell),
                  best);
   if (best.patchIndex == FACET_NO_HIT) return;
   if (SHADOW == 1) {
     contributions[shadowRays[record.ray].slot] = vec4(0.0);
     return;
   }
+  cameraFallbacks[index].object = best.object;
   cameraFallbacks[index].t = best.t;
   cameraFallbacks[index].patchIndex = best.patchIndex;
   cameraFallbacks[index].s = best.st.x;

@@ -15,9 +15,9 @@ layout(set = 0, binding = 24, std430) writeonly buffer CameraFallbacks { Fallbac
 
 uint rayIndex;
 
-void defer_cell(uint object, uint cell) {
+void defer_cell(uint reference) {
   uint at = atomicAdd(counters.cameraFallbacks, 1u);
-  if (at < frame.fallbackCapacity) cameraFallbacks[at] = FallbackRecord(rayIndex, cell, object, 0.0, FACET_NO_HIT, 0.0, 0.0);
+  if (at < frame.fallbackCapacity) cameraFallbacks[at] = FallbackRecord(rayIndex, reference, 0u, 0.0, FACET_NO_HIT, 0.0, 0.0);
 }
 
 #include "compute/raycast/trace.glsl"

@@ -6,13 +6,41 @@
 #ifndef FACET_RAYCAST_MICRO_GRID_GLSL
 #define FACET_RAYCAST_MICRO_GRID_GLSL
 
-uint grid_vertex_index(ObjectRange range, uint localPatch, uint i, uint j) {
-  uint side = range.rate + 1u;
-  return range.firstGridVertex + (localPatch * side + j) * side + i;
+// A cell of a patch's micro-grid, with what the finishes need of its patch
+// (compute/shared/patch_records.h). The including kernel declares
+// patchHeaders.
+struct Cell {
+  uint patchIndex;
+  uint object;
+  uint i;
+  uint j;
+  uint rate;
+  uint firstPoint;
+  uint kind;
+  uint transitionMask;
+  uint firstCell;
+  uint firstGridVertex;
+  uint firstEdgeMidpoint;
+};
+
+Cell patch_cell(uint patchIndex, uint i, uint j) {
+  uvec4 a = texelFetch(patchHeaders, int(patchIndex * FACET_HEADER_TEXELS));
+  uvec4 b = texelFetch(patchHeaders, int(patchIndex * FACET_HEADER_TEXELS + 1u));
+  return Cell(patchIndex, b[FACET_HEADER_OBJECT], i, j, a[FACET_HEADER_RATE], a[FACET_HEADER_FIRST_POINT],
+              a[FACET_HEADER_KIND], a[FACET_HEADER_TRANSITION_MASK], b[FACET_HEADER_FIRST_CELL],
+              b[FACET_HEADER_FIRST_GRID_VERTEX], b[FACET_HEADER_FIRST_EDGE_MIDPOINT]);
 }
 
-uint edge_midpoint_index(ObjectRange range, uint localPatch, uint edge, uint i) {
-  return range.firstEdgeMidpoint + (localPatch * 4u + edge) * range.rate + i;
+// The cell's domain [s0, s1] x [t0, t1] as (s0, s1, t0, t1).
+vec4 cell_domain(Cell cell) {
+  float size = 1.0 / float(cell.rate);
+  return vec4(float(cell.i) * size, float(cell.i + 1u) * size, float(cell.j) * size, float(cell.j + 1u) * size);
+}
+
+uint grid_vertex_index(uint firstGridVertex, uint rate, uint i, uint j) { return firstGridVertex + j * (rate + 1u) + i; }
+
+uint edge_midpoint_index(uint firstEdgeMidpoint, uint rate, uint edge, uint i) {
+  return firstEdgeMidpoint + edge * rate + i;
 }
 
 // The grid step (in units of 1/k) of midpoint i of `edge`.

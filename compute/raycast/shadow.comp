@@ -16,9 +16,9 @@ layout(set = 0, binding = 25, std430) writeonly buffer ShadowFallbacks { Fallbac
 
 uint rayIndex;
 
-void defer_cell(uint object, uint cell) {
+void defer_cell(uint reference) {
   uint at = atomicAdd(counters.shadowFallbacks, 1u);
-  if (at < frame.fallbackCapacity) shadowFallbacks[at] = FallbackRecord(rayIndex, cell, object, 0.0, FACET_NO_HIT, 0.0, 0.0);
+  if (at < frame.fallbackCapacity) shadowFallbacks[at] = FallbackRecord(rayIndex, reference, 0u, 0.0, FACET_NO_HIT, 0.0, 0.0);
 }
 
 #include "compute/raycast/trace.glsl"

@@ -1,6 +1,6 @@
 // The one intersection interface of the GPU ray caster: trace(ray, anyHit)
-// returns the closest hit through every object's 4-wide BVH over its
-// micro-grid, or with anyHit the first hit found. METHOD (a specialization
+// returns the closest hit through the scene's 4-wide BVH over the objects'
+// micro-grids, or with anyHit the first hit found. METHOD (a specialization
 // constant of the including kernel: 0 exact, 1 tessellated) picks what
 // happens at a cell. The including kernel declares the bindings of
 // trace_bindings.glsl and defines defer_cell(object, cell), where the exact
@@ -12,6 +12,7 @@
 #include "compute/raycast/patch_eval.glsl"
 #include "compute/raycast/patch_hull.glsl"
 #include "compute/raycast/micro_grid.glsl"
+#include "compute/raycast/cell_reference.glsl"
 #include "compute/raycast/triangle.glsl"
 #include "compute/raycast/finish_exact.glsl"
 #include "compute/raycast/finish_tessellated.glsl"
@@ -19,23 +20,19 @@
 const int METHOD_EXACT = 0;
 const int METHOD_TESSELLATED = 1;
 
-void finish_cell(Ray ray, ObjectRange range, uint object, uint reference, inout Hit best) {
-  uint cell = reference & FACET_BVH4_CELL_INDEX, k = range.rate;
-  uint localPatch = cell / (k * k), i = cell % k, j = (cell / k) % k;
+void finish_cell(Ray ray, uint reference, inout Hit best) {
+  Cell cell = cell_of(reference);
   if (METHOD == METHOD_EXACT)
-    finish_exact(ray, range, object, localPatch, i, j, best);
+    finish_exact(ray, cell, reference, best);
   else
-    finish_tessellated(ray, range, object, localPatch, i, j, best);
+    finish_tessellated(ray, cell, best);
 }
 
 #include "compute/raycast/wide_bvh_traversal.glsl"
 
 Hit trace(Ray ray, bool anyHit) {
   Hit best = no_hit(ray.tMax);
-  for (uint object = 0u; object < frame.objectCount; ++object) {
-    traverse_object(ray, object, anyHit, best);
-    if (anyHit && best.patchIndex != FACET_NO_HIT) break;
-  }
+  traverse(ray, anyHit, best);
   return best;
 }
 

@@ -1,9 +1,9 @@
-// Depth-first traversal of an object's 4-wide BVH (compute/shared/wide_bvh.h)
+// Depth-first traversal of the scene's 4-wide BVH (compute/shared/wide_bvh.h)
 // read through the texel buffer `bvhNodes`: nearest child first, the others
 // on a private stack with their entry distance, so that entries beyond the
 // closest hit are dropped when popped. Reaching a cell calls
-// finish_cell(ray, range, object, reference, best), which the including
-// file defines. Needs ray.glsl.
+// finish_cell(ray, reference, best), which the including file defines.
+// Needs ray.glsl.
 #ifndef FACET_RAYCAST_WIDE_BVH_TRAVERSAL_GLSL
 #define FACET_RAYCAST_WIDE_BVH_TRAVERSAL_GLSL
 
@@ -26,16 +26,15 @@ vec4 child_entries(uint node, vec3 origin, vec3 inverseDirection, float tMin, fl
   return mix(vec4(INFINITE_DISTANCE), enter, hit);
 }
 
-void traverse_object(Ray ray, uint object, bool anyHit, inout Hit best) {
-  ObjectRange range = objects[object];
+void traverse(Ray ray, bool anyHit, inout Hit best) {
   vec3 inverseDirection = safe_inverse(ray.direction);
   uint stackReference[TRAVERSAL_STACK];
   float stackEntry[TRAVERSAL_STACK];
   int top = 0;
-  uint reference = range.rootNode;
+  uint reference = frame.rootNode;
   while (true) {
     if ((reference & FACET_BVH4_CELL) != 0u) {
-      finish_cell(ray, range, object, reference, best);
+      finish_cell(ray, reference, best);
       if (anyHit && best.patchIndex != FACET_NO_HIT) return;
     } else {
       uvec4 children;

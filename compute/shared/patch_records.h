@@ -34,10 +34,18 @@ struct PatchRecord {
                         // deeper, so crack-free dicing splits that edge twice as finely
 };
 
-// What the ray caster needs of a patch, one uvec4 texel of the patch header
-// texel buffer (the rest of PatchRecord is read once per pixel, when shading).
+// What the ray caster needs of a patch, FACET_HEADER_TEXELS uvec4 texels of
+// the patch header texel buffer (the rest of PatchRecord is read once per
+// pixel, when shading). Texel 0: its points and dicing; texel 1: where its
+// cells, grid vertices and edge midpoints start, and its object.
+const uint FACET_HEADER_TEXELS = 2u;
 const uint FACET_HEADER_FIRST_POINT = 0u;
 const uint FACET_HEADER_KIND = 1u;
 const uint FACET_HEADER_TRANSITION_MASK = 2u;
+const uint FACET_HEADER_RATE = 3u;  // k: cells per side
+const uint FACET_HEADER_FIRST_CELL = 0u;
+const uint FACET_HEADER_FIRST_GRID_VERTEX = 1u;
+const uint FACET_HEADER_FIRST_EDGE_MIDPOINT = 2u;
+const uint FACET_HEADER_OBJECT = 3u;
 
 #endif

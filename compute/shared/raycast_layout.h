@@ -11,7 +11,6 @@
 // over a side^2 grid, side = 2^quadtreeLevels >= k, whose last level holds
 // 2 x 2 cells a node.
 struct ObjectRange {
-  uint rootNode;
   uint firstPatch;  // PatchRecord and patch header index
   uint patchCount;
   uint patchIdOffset;  // patch and cage-face ids count on across objects
@@ -63,12 +62,11 @@ struct RenderCounters {
 };
 
 // An exact cell that Newton did not settle, deferred to the fallback pass
-// (compute/raycast/fallback.comp): the ray (camera or shadow ray index), the
-// cell reference, its object, and for camera rays the closest root found
-// in it.
+// (compute/raycast/fallback.comp): the ray (camera or shadow ray index) and
+// the cell; for camera rays the fallback adds the closest root it found.
 struct FallbackRecord {
   uint ray;
-  uint cell;
+  uint cell;  // its reference (compute/shared/wide_bvh.h)
   uint object;
   float t;
   uint patchIndex;
@@ -156,6 +154,7 @@ struct FrameParams {
   uint strata;        // samples per pixel = strata^2
   uint raysPerPixel;  // 1 when strata == 1, else the centre ray plus strata^2
   uint objectCount;
+  uint rootNode;            // of the scene's BVH
   uint cellBlockCount;      // dicing: 2 x 2 blocks of cells in all
   uint gridVertexCount;     // tessellated dicing: grid vertices, then edge midpoints
   uint edgeMidpointCount;

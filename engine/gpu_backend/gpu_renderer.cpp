@@ -304,6 +304,7 @@ layout::FrameParams frameParams(const scene::Scene& scene, const scene::SceneGeo
   f.strata = std::uint32_t(strata);
   f.raysPerPixel = strata == 1 ? 1u : std::uint32_t(strata * strata + 1);
   f.objectCount = std::uint32_t(scene.objects.size());
+  f.rootNode = packed.rootNode;
   f.cellBlockCount = std::uint32_t(packed.blocks);
   f.gridVertexCount = std::uint32_t(packed.gridVertices);
   f.edgeMidpointCount = std::uint32_t(packed.edgeMidpoints);

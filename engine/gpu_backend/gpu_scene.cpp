@@ -26,6 +26,27 @@ float roundUp(double value) {
 
 std::uint32_t bits(float value) { return std::bit_cast<std::uint32_t>(value); }
 
+// Appends an empty node (every slot EMPTY) and returns its index.
+std::uint32_t appendNode(std::vector<Texel>& texels) {
+  const std::uint32_t index = std::uint32_t(texels.size() / layout::FACET_BVH4_TEXELS);
+  texels.resize(texels.size() + layout::FACET_BVH4_TEXELS, Texel{0, 0, 0, 0});
+  texels[std::size_t(index) * layout::FACET_BVH4_TEXELS + layout::FACET_BVH4_REFERENCES] =
+      Texel{layout::FACET_BVH4_EMPTY, layout::FACET_BVH4_EMPTY, layout::FACET_BVH4_EMPTY, layout::FACET_BVH4_EMPTY};
+  return index;
+}
+
+// Child `slot` of `node`: its box, rebased on `origin`, grown by `margin` and
+// rounded outwards, and its reference.
+void writeChild(std::vector<Texel>& texels, std::uint32_t node, std::size_t slot, const scene::Aabb& bounds,
+                std::uint32_t reference, const glm::dvec3& origin, double margin) {
+  const std::size_t base = std::size_t(node) * layout::FACET_BVH4_TEXELS;
+  for (int axis = 0; axis < 3; ++axis) {
+    texels[base + 2 * std::size_t(axis)][slot] = bits(roundDown(bounds.lo[axis] - origin[axis] - margin));
+    texels[base + 2 * std::size_t(axis) + 1][slot] = bits(roundUp(bounds.hi[axis] - origin[axis] + margin));
+  }
+  texels[base + layout::FACET_BVH4_REFERENCES][slot] = reference;
+}
+
 double surfaceArea(const scene::Aabb& box) {
   const glm::dvec3 e = box.hi - box.lo;
   return 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
@@ -93,23 +114,14 @@ class Collapse {
       children.erase(children.begin() + widest);
       children.insert(children.end(), grown.begin(), grown.end());
     }
-    const std::uint32_t index = std::uint32_t(texels_.size() / layout::FACET_BVH4_TEXELS);
-    texels_.resize(texels_.size() + layout::FACET_BVH4_TEXELS, Texel{0, 0, 0, 0});
-    Texel references{layout::FACET_BVH4_EMPTY, layout::FACET_BVH4_EMPTY, layout::FACET_BVH4_EMPTY,
-                     layout::FACET_BVH4_EMPTY};
+    const std::uint32_t index = appendNode(texels_);
     for (std::size_t slot = 0; slot < children.size(); ++slot) {
       const Candidate& c = children[slot];
       const std::uint32_t reference =
           c.isPatch ? std::uint32_t(c.index) * quadtreeNodes_ : emit(expand(c), depth + 1);
-      const std::size_t base = std::size_t(index) * layout::FACET_BVH4_TEXELS;
-      for (int axis = 0; axis < 3; ++axis) {
-        texels_[base + 2 * std::size_t(axis)][slot] = bits(roundDown(c.bounds.lo[axis] - origin_[axis] - margin_));
-        texels_[base + 2 * std::size_t(axis) + 1][slot] = bits(roundUp(c.bounds.hi[axis] - origin_[axis] + margin_));
-      }
-      references[slot] = reference;
-      if (c.isPatch) patchSlots_.push_back({base + layout::FACET_BVH4_REFERENCES, slot});
+      writeChild(texels_, index, slot, c.bounds, reference, origin_, margin_);
+      if (c.isPatch) patchSlots_.push_back({std::size_t(index) * layout::FACET_BVH4_TEXELS + layout::FACET_BVH4_REFERENCES, slot});
     }
-    texels_[std::size_t(index) * layout::FACET_BVH4_TEXELS + layout::FACET_BVH4_REFERENCES] = references;
     return index;
   }
 
@@ -122,6 +134,42 @@ class Collapse {
   int depth_ = 0;
   std::vector<std::pair<std::size_t, std::size_t>> patchSlots_;
 };
+
+struct ObjectRoot {
+  std::uint32_t node;
+  scene::Aabb bounds;
+};
+
+// Nodes over the objects' roots, four wide: the longest axis of their
+// centres split into four runs, recursively (scenes hold a handful of
+// objects, so nothing finer pays). Returns the root and the levels added.
+std::uint32_t emitSceneNodes(std::vector<ObjectRoot> roots, std::vector<Texel>& texels, const glm::dvec3& origin,
+                             double margin, int& depth) {
+  scene::Aabb centres;
+  for (const ObjectRoot& r : roots) centres.extend(r.bounds.centre());
+  const glm::dvec3 extent = centres.hi - centres.lo;
+  const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+  std::sort(roots.begin(), roots.end(),
+            [axis](const ObjectRoot& a, const ObjectRoot& b) { return a.bounds.centre()[axis] < b.bounds.centre()[axis]; });
+  const std::uint32_t node = appendNode(texels);
+  int deepest = 0;
+  for (std::size_t slot = 0, begin = 0; slot < 4 && begin < roots.size(); ++slot) {
+    const std::size_t end = begin + (roots.size() - begin + (3 - slot)) / (4 - slot);
+    std::vector<ObjectRoot> run(roots.begin() + std::ptrdiff_t(begin), roots.begin() + std::ptrdiff_t(end));
+    ObjectRoot child = run.front();
+    if (run.size() > 1) {
+      int below = 0;
+      child.bounds = scene::Aabb();
+      for (const ObjectRoot& r : run) child.bounds.extend(r.bounds);
+      child.node = emitSceneNodes(std::move(run), texels, origin, margin, below);
+      deepest = std::max(deepest, below);
+    }
+    writeChild(texels, node, slot, child.bounds, child.node, origin, margin);
+    begin = end;
+  }
+  depth = deepest + 1;
+  return node;
+}
 
 // Levels of a quadtree over k x k cells whose last level holds 2 x 2.
 std::uint32_t quadtreeLevels(std::uint32_t rate) {
@@ -136,6 +184,8 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
                    double margin, bool tessellated) {
   GpuScene packed;
   std::vector<std::vector<std::pair<std::size_t, std::size_t>>> patchSlots;
+  std::vector<ObjectRoot> roots;
+  int objectDepth = 0;
   std::uint32_t patchIds = 0, faceIds = 0;
   std::uint64_t quadtreeNodes = 0;
   for (std::size_t i = 0; i < geometry.objects.size(); ++i) {
@@ -151,11 +201,8 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
     for (int source : bvh.leafPatches()) patchBounds.push_back(scene::patchBounds(surface.bezierPatch(source)));
     Collapse collapse(bvh, patchBounds, origin, margin, nodesPerPatch, packed.topNodes);
     layout::ObjectRange range{};
-    range.rootNode = collapse.run();
-    if (std::uint32_t(collapse.depth()) + levels > layout::FACET_BVH4_MAX_DEPTH)
-      throw gpu::Error("object '" + scene.objects[i].name + "': a BVH of depth " + std::to_string(collapse.depth()) +
-                       " over quadtrees of depth " + std::to_string(levels) + " exceeds the GPU traversal's " +
-                       std::to_string(layout::FACET_BVH4_MAX_DEPTH) + " levels");
+    roots.push_back({collapse.run(), bvh.nodes().empty() ? scene::Aabb() : bvh.nodes()[0].bounds});
+    objectDepth = std::max(objectDepth, collapse.depth() + int(levels));
     patchSlots.push_back(collapse.patchSlots());
 
     range.firstPatch = std::uint32_t(packed.patches.size());
@@ -173,7 +220,8 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
     range.firstEdgeMidpoint = std::uint32_t(packed.edgeMidpoints);
     packed.objects.push_back(range);
 
-    for (int source : bvh.leafPatches()) {
+    for (std::size_t slot = 0; slot < bvh.leafPatches().size(); ++slot) {
+      const int source = bvh.leafPatches()[slot];
       const scene::PatchInfo& info = surface.patch(source);
       const scene::BezierPatch& bezier = surface.bezierPatch(source);
       layout::PatchRecord record{};
@@ -193,7 +241,11 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
       for (const glm::dvec3& p : bezier.points) add(p);
       if (bezier.gregory)
         for (const glm::dvec3& p : bezier.alternates) add(p);
-      packed.headers.push_back({record.firstPoint, record.kind, record.transitionMask, 0});
+      const std::uint64_t local = slot;
+      packed.headers.push_back({record.firstPoint, record.kind, record.transitionMask, rate});
+      packed.headers.push_back({std::uint32_t(packed.cells + local * rate * rate),
+                                std::uint32_t(packed.gridVertices + local * (rate + 1) * (rate + 1)),
+                                std::uint32_t(packed.edgeMidpoints + local * 4 * rate), std::uint32_t(i)});
       packed.patches.push_back(record);
     }
     const std::uint64_t blocksPerSide = std::uint64_t(1) << (levels - 1);
@@ -208,9 +260,15 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
     patchIds += std::uint32_t(surface.patchCount());
     faceIds += std::uint32_t(scene.objects[i].cage.faceCount());
   }
+  int sceneDepth = 0;
+  packed.rootNode = roots.size() == 1 ? roots[0].node
+                                      : emitSceneNodes(roots, packed.topNodes, origin, margin, sceneDepth);
+  if (std::uint32_t(sceneDepth + objectDepth) > layout::FACET_BVH4_MAX_DEPTH)
+    throw gpu::Error("the scene's BVH is " + std::to_string(sceneDepth + objectDepth) +
+                     " levels deep, more than the GPU traversal's " + std::to_string(layout::FACET_BVH4_MAX_DEPTH));
   const std::uint64_t topNodes = packed.topNodes.size() / layout::FACET_BVH4_TEXELS;
   packed.nodeCount = topNodes + quadtreeNodes;
-  if (packed.nodeCount * layout::FACET_BVH4_TEXELS > std::uint64_t(layout::FACET_BVH4_CELL_INDEX))
+  if (packed.nodeCount * 4 >= std::uint64_t(layout::FACET_BVH4_CELL))
     throw gpu::Error("the scene's micro-grid needs " + std::to_string(packed.nodeCount) +
                      " BVH nodes, more than the GPU ray caster addresses; lower the dicing rate (--tess-level)");
   for (std::size_t i = 0; i < packed.objects.size(); ++i) {

@@ -25,9 +25,10 @@ using Texel = std::array<std::uint32_t, 4>;
 
 struct GpuScene {
   std::vector<Texel> topNodes;  // nodes 0 .. topNodes.size() / FACET_BVH4_TEXELS - 1 of the node buffer
+  std::uint32_t rootNode = 0;
   std::uint64_t nodeCount = 0;  // top levels and every quadtree
   std::vector<gpu_layout::PatchRecord> patches;
-  std::vector<Texel> headers;
+  std::vector<Texel> headers;  // FACET_HEADER_TEXELS per patch
   std::vector<glm::vec4> points;
   std::vector<gpu_layout::ObjectRange> objects;
   std::uint64_t blocks = 0;         // 2 x 2 cell blocks, one dicing invocation each

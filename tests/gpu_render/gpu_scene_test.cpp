@@ -55,7 +55,7 @@ TEST_P(PackedCage, TopLevelsReachEveryPatchOnceThroughEnclosingBoxes) {
     std::uint32_t node;
     int depth;
   };
-  std::vector<Visit> stack{{range.rootNode, 1}};
+  std::vector<Visit> stack{{packed.rootNode, 1}};
   int deepest = 0;
   while (!stack.empty()) {
     const Visit visit = stack.back();
@@ -102,11 +102,21 @@ TEST_P(PackedCage, RebasedPointsEvaluateToTheLimitSurfaceFarFromTheOrigin) {
   std::mt19937 random(13);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   double worst = 0.0;
+  ASSERT_EQ(packed.headers.size(), layout::FACET_HEADER_TEXELS * packed.patches.size());
+  const layout::ObjectRange& range = packed.objects[0];
   for (std::size_t slot = 0; slot < packed.patches.size(); ++slot) {
     const layout::PatchRecord& record = packed.patches[slot];
-    EXPECT_EQ(packed.headers[slot][layout::FACET_HEADER_FIRST_POINT], record.firstPoint);
-    EXPECT_EQ(packed.headers[slot][layout::FACET_HEADER_KIND], record.kind);
-    EXPECT_EQ(packed.headers[slot][layout::FACET_HEADER_TRANSITION_MASK], record.transitionMask);
+    const Texel& first = packed.headers[layout::FACET_HEADER_TEXELS * slot];
+    const Texel& second = packed.headers[layout::FACET_HEADER_TEXELS * slot + 1];
+    EXPECT_EQ(first[layout::FACET_HEADER_FIRST_POINT], record.firstPoint);
+    EXPECT_EQ(first[layout::FACET_HEADER_KIND], record.kind);
+    EXPECT_EQ(first[layout::FACET_HEADER_TRANSITION_MASK], record.transitionMask);
+    EXPECT_EQ(first[layout::FACET_HEADER_RATE], range.rate);
+    EXPECT_EQ(second[layout::FACET_HEADER_FIRST_CELL], range.firstCell + slot * range.rate * range.rate);
+    EXPECT_EQ(second[layout::FACET_HEADER_FIRST_GRID_VERTEX],
+              range.firstGridVertex + slot * (range.rate + 1) * (range.rate + 1));
+    EXPECT_EQ(second[layout::FACET_HEADER_FIRST_EDGE_MIDPOINT], range.firstEdgeMidpoint + slot * 4 * range.rate);
+    EXPECT_EQ(second[layout::FACET_HEADER_OBJECT], 0u);
     scene::BezierPatch fromGpu;
     fromGpu.gregory = record.kind == layout::FACET_PATCH_GREGORY;
     auto read = [&](std::uint32_t index) { return glm::dvec3(glm::vec3(packed.points[index])); };
@@ -125,6 +135,37 @@ TEST_P(PackedCage, RebasedPointsEvaluateToTheLimitSurfaceFarFromTheOrigin) {
   const double sceneSize = glm::length(surface.bounds().hi - surface.bounds().lo) +
                            glm::length(surface.bounds().centre() - origin);
   EXPECT_LE(worst, 1e-6 * sceneSize) << GetParam();
+}
+
+// Over several objects the scene's own nodes lead to every object's patches,
+// each once, through boxes that hold the object.
+TEST(PackedScene, OneRootReachesEveryPatchOfEveryObjectOnce) {
+  const scene::Scene scene = scene::loadScene(std::filesystem::path(FACET_EXAMPLES_DIR) / "preview.json");
+  ASSERT_GT(scene.objects.size(), 4u);
+  const scene::SceneGeometry geometry = scene::buildGeometry(scene);
+  const GpuScene packed = packScene(scene, geometry, scene.camera.eye, 0.0, false);
+  const std::size_t topNodes = packed.topNodes.size() / layout::FACET_BVH4_TEXELS;
+  std::map<std::uint32_t, int> reached;  // quadtree root -> times
+  std::vector<std::uint32_t> stack{packed.rootNode};
+  while (!stack.empty()) {
+    const std::uint32_t node = stack.back();
+    stack.pop_back();
+    ASSERT_LT(node, topNodes);
+    for (int slot = 0; slot < 4; ++slot) {
+      const layout::uint reference =
+          packed.topNodes[node * layout::FACET_BVH4_TEXELS + layout::FACET_BVH4_REFERENCES][std::size_t(slot)];
+      if (reference == layout::FACET_BVH4_EMPTY) continue;
+      if (reference >= topNodes)
+        ++reached[reference];
+      else
+        stack.push_back(reference);
+    }
+  }
+  std::size_t patches = 0;
+  for (const layout::ObjectRange& range : packed.objects)
+    for (std::uint32_t p = 0; p < range.patchCount; ++p, ++patches)
+      EXPECT_EQ(reached[range.firstQuadtreeNode + p * range.quadtreeNodes], 1) << "object patch " << p;
+  EXPECT_EQ(reached.size(), patches);
 }
 
 INSTANTIATE_TEST_SUITE_P(TortureCages, PackedCage,
@@ -202,7 +243,8 @@ TEST(GpuLayout, GlslLayoutOfTheSharedHeadersIsTheCppLayout) {
   FACET_EXPECT_MEMBER(PatchRecord, faceU0);
   FACET_EXPECT_MEMBER(PatchRecord, sourcePatch);
   FACET_EXPECT_MEMBER(PatchRecord, transitionMask);
-  FACET_EXPECT_MEMBER(ObjectRange, rootNode);
+  FACET_EXPECT_MEMBER(ObjectRange, firstPatch);
+  FACET_EXPECT_MEMBER(FrameParams, rootNode);
   FACET_EXPECT_MEMBER(ObjectRange, rate);
   FACET_EXPECT_MEMBER(ObjectRange, firstQuadtreeNode);
   FACET_EXPECT_MEMBER(ObjectRange, firstEdgeMidpoint);
