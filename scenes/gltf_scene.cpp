@@ -1,7 +1,10 @@
 // glTF 2.0 scenes through tinygltf. Mapping (documented in docs/scene-format.md):
-//   meshes      each triangle/quad primitive becomes a Catmull-Clark cage;
-//               vertices at the same position are welded, because glTF splits
-//               them at UV and normal seams and a cage must be connected
+//   meshes      the triangles, strips and fans of a mesh instance become one
+//               cage, rendered as authored (Subdivision::None) unless asked
+//               otherwise; vertices at exactly the same position are welded,
+//               which leaves the polygons as they are and connects them, as a
+//               Catmull-Clark cage must be: glTF splits vertices at UV and
+//               normal seams
 //   materials   metallic-roughness factors: c_diff = base·(1 − metallic),
 //               c_spec = mix(0.04, base, metallic), α = roughness²; textures
 //               are not sampled
@@ -14,6 +17,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -26,7 +30,10 @@
 namespace facet::scene {
 namespace {
 
+// glTF's primitive modes (points and lines below these have no surface).
 constexpr int kTriangles = 4;
+constexpr int kTriangleStrip = 5;
+constexpr int kTriangleFan = 6;
 
 class GltfReader {
  public:
@@ -158,6 +165,34 @@ Light toLight(const tinygltf::Light& gltf, const glm::dmat4& world, const GltfRe
   return light;
 }
 
+// Which vertices of a primitive's list make its triangle `t`, in the glTF 2.0
+// specification's order (3.7.2.1): a strip swaps the last two of every other
+// triangle so that all keep one winding, a fan turns about the first vertex.
+std::array<std::size_t, 3> triangleCorners(int mode, std::size_t t) {
+  switch (mode) {
+    case kTriangleStrip:
+      return {t, t + 1 + t % 2, t + 2 - t % 2};
+    case kTriangleFan:
+      return {t + 1, t + 2, 0};
+    default:
+      return {3 * t, 3 * t + 1, 3 * t + 2};
+  }
+}
+
+std::size_t triangleCount(int mode, std::size_t vertices, const GltfReader& reader, const std::string& where) {
+  if (mode == kTriangles) {
+    if (vertices % 3 != 0) reader.fail(where, "triangle index count is not a multiple of 3");
+    return vertices / 3;
+  }
+  if (mode != kTriangleStrip && mode != kTriangleFan)
+    reader.fail(where, "mode " + std::to_string(mode) +
+                           " has no surface (expected TRIANGLES 4, TRIANGLE_STRIP 5 or TRIANGLE_FAN 6)");
+  if (vertices < 3)
+    reader.fail(where, std::string(mode == kTriangleStrip ? "a triangle strip" : "a triangle fan") +
+                           " needs at least 3 vertices, has " + std::to_string(vertices));
+  return vertices - 2;
+}
+
 // Adds the primitives of one mesh instance as one welded cage.
 ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const GltfReader& reader,
                    const std::string& where) {
@@ -167,7 +202,6 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
   for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
     const tinygltf::Primitive& primitive = mesh.primitives[p];
     const std::string at = where + ".primitives[" + std::to_string(p) + "]";
-    if (primitive.mode != kTriangles && primitive.mode != -1) reader.fail(at, "only triangle primitives can be cages");
     auto position = primitive.attributes.find("POSITION");
     if (position == primitive.attributes.end()) reader.fail(at, "has no POSITION attribute");
     const std::vector<double> xyz = reader.read(position->second, at + ".POSITION", 3);
@@ -186,16 +220,18 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
     } else {
       for (std::size_t v = 0; v < remap.size(); ++v) indices.push_back(double(v));
     }
-    if (indices.size() % 3 != 0) reader.fail(at, "triangle index count is not a multiple of 3");
-    for (std::size_t t = 0; t < indices.size(); t += 3) {
+    const std::size_t triangles = triangleCount(primitive.mode, indices.size(), reader, at);
+    for (std::size_t t = 0; t < triangles; ++t) {
       int corners[3];
+      const std::array<std::size_t, 3> slots = triangleCorners(primitive.mode, t);
       for (int c = 0; c < 3; ++c) {
-        const double index = indices[t + std::size_t(c)];
+        const double index = indices[slots[std::size_t(c)]];
         if (index < 0 || index >= double(remap.size()))
           reader.fail(at, "index " + std::to_string(std::size_t(index)) + " is out of range");
         corners[c] = remap[std::size_t(index)];
       }
-      // Triangles collapsed by welding carry no area: they would only confuse the refiner.
+      // A triangle with two corners at one position (strips join through
+      // such triangles) has no area and would only add spurious topology.
       if (corners[0] == corners[1] || corners[1] == corners[2] || corners[0] == corners[2]) continue;
       cage.faceVertexCounts.push_back(3);
       cage.faceVertexIndices.insert(cage.faceVertexIndices.end(), corners, corners + 3);
@@ -254,6 +290,7 @@ Scene loadGltfScene(const std::filesystem::path& path) {
       Object object;
       object.name = mesh.name.empty() ? where : mesh.name;
       object.cage = toCage(mesh, world, reader, "meshes[" + std::to_string(node.mesh) + "]");
+      object.subdivision = Subdivision::None;
       const int material = mesh.primitives.empty() ? -1 : mesh.primitives.front().material;
       object.material = material >= 0 && material < defaultMaterialIndex ? material : defaultMaterialIndex;
       scene.objects.push_back(std::move(object));

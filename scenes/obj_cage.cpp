@@ -143,7 +143,6 @@ class ObjReader {
     int corners = static_cast<int>(tokens.size()) - 1;
     if (corners < 3)
       fail("degenerate face", "a face needs at least 3 vertices, this one has " + std::to_string(corners));
-    std::set<int> seen;
     for (int c = 0; c < corners; ++c) {
       std::string_view corner = tokens[c + 1];
       std::string_view parts[3];
@@ -162,8 +161,6 @@ class ObjReader {
                        "texture coordinate");
       if (partCount > 2 && !parts[2].empty())
         requireInRange(resolveIndex(parts[2], normalCount_, "normal"), normalCount_, "normal");
-      if (!seen.insert(vertex).second)
-        fail("degenerate face", "vertex " + std::to_string(vertex + 1) + " appears twice in one face");
       cage_.faceVertexIndices.push_back(vertex);
     }
     cage_.faceVertexCounts.push_back(corners);

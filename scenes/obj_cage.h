@@ -16,8 +16,9 @@
 //   s, g, o, usemtl, mtllib, l, p   accepted and ignored; '#' starts a comment
 //
 // Anything else — a malformed line, an index out of range, a non-finite
-// coordinate, a face OpenSubdiv cannot subdivide (fewer than 3 vertices, or a
-// vertex used twice) — throws InputError naming file, line and rule.
+// coordinate, a face of fewer than 3 vertices — throws InputError naming
+// file, line and rule. What OpenSubdiv subdivides is accepted: non-manifold
+// edges and vertices, a vertex repeated within a face, vertices no face uses.
 
 #include "scenes/control_cage.h"
 

@@ -95,8 +95,12 @@ struct Environment {
 
 struct Object {
   std::string name;
-  ControlCage cage;                   // world space
-  int material = 0;                   // index into Scene::materials
+  ControlCage cage;  // world space
+  int material = 0;  // index into Scene::materials
+  // OBJ cages are subdivided, glTF meshes are rendered as authored, unless
+  // the scene or the command line says otherwise.
+  Subdivision subdivision = Subdivision::CatmullClark;
+  // Catmull-Clark only.
   std::optional<int> isolationLevel;  // overrides the choice from pixelTolerance
   EndCapBasis endCaps = EndCapBasis::Gregory;
 };

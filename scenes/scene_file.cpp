@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "scenes/input_error.h"
 #include "scenes/obj_cage.h"
@@ -34,6 +35,19 @@ Scene sceneFromCage(ControlCage cage) {
   scene.camera = frameBounds(cageBounds(scene));
   scene.lights.push_back(defaultKeyLight(scene.camera));
   return scene;
+}
+
+std::optional<Subdivision> subdivisionNamed(std::string_view name) {
+  if (name == "catmull-clark") return Subdivision::CatmullClark;
+  if (name == "none") return Subdivision::None;
+  return std::nullopt;
+}
+
+void overrideSubdivision(Scene& scene, const std::string& name, const std::string& option) {
+  const std::optional<Subdivision> subdivision = subdivisionNamed(name);
+  if (!subdivision)
+    throw std::invalid_argument(option + " '" + name + "': expected one of: " + std::string(kSubdivisionNames));
+  for (Object& object : scene.objects) object.subdivision = *subdivision;
 }
 
 materials::Material defaultMaterial() {

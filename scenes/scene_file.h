@@ -1,8 +1,8 @@
 // Scene files in, validated plain data out.
 //
 //   .json         facet's scene format (docs/scene-format.md)
-//   .obj          a bare OpenSubdiv-style control cage
-//   .gltf / .glb  glTF 2.0: meshes as Catmull-Clark cages, metallic-roughness
+//   .obj          a bare OpenSubdiv-style control cage, subdivided
+//   .gltf / .glb  glTF 2.0: meshes rendered as authored, metallic-roughness
 //                 materials, cameras and KHR_lights_punctual lights
 //
 // A scene without a camera is framed from the default direction, one without
@@ -11,6 +11,9 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
 
 #include "scenes/scene.h"
 
@@ -21,6 +24,16 @@ Scene loadScene(const std::filesystem::path& path);
 Scene loadJsonScene(const std::filesystem::path& path);
 Scene loadGltfScene(const std::filesystem::path& path);
 Scene sceneFromCage(ControlCage cage);
+
+// Subdivision as scene files and the command line spell it, nothing for any
+// other name; kSubdivisionNames lists the spellings for error messages.
+std::optional<Subdivision> subdivisionNamed(std::string_view name);
+inline constexpr const char* kSubdivisionNames = "catmull-clark, none";
+
+// Every object of `scene` takes the subdivision `name` spells, whatever its
+// file chose. Any other name throws std::invalid_argument
+// "<option> '<name>': expected one of: catmull-clark, none".
+void overrideSubdivision(Scene& scene, const std::string& name, const std::string& option);
 
 // The material of objects that name none: grey plastic (diffuse 0.5,
 // F(0) = 0.04 Schlick, GGX alpha 0.25, height-correlated Smith).

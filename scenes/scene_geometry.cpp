@@ -25,6 +25,39 @@ double meanEdgeLength(const ControlCage& cage) {
   return edges ? total / double(edges) : 0.0;
 }
 
+// |n . (P00 - P10 + P11 - P01)| of the bilinear patch through four points in
+// order around it, n its unit normal at the centre (that of its diagonals).
+double outOfPlaneTwist(const glm::dvec3& p00, const glm::dvec3& p10, const glm::dvec3& p11, const glm::dvec3& p01) {
+  const glm::dvec3 twist = p00 - p10 + p11 - p01;
+  const glm::dvec3 normal = glm::cross(p11 - p00, p01 - p10);
+  const double length = glm::length(normal);
+  return length > 0 ? std::abs(glm::dot(twist, normal)) / length : glm::length(twist);
+}
+
+// Over the bilinear patches Subdivision::None makes: a quad is one, any other
+// face one per corner, through the corner, its edge midpoints and the centroid.
+double largestTwist(const ControlCage& cage) {
+  double largest = 0;
+  std::size_t first = 0;
+  for (int count : cage.faceVertexCounts) {
+    auto corner = [&](int i) -> const glm::dvec3& {
+      return cage.positions[std::size_t(cage.faceVertexIndices[first + std::size_t((i + count) % count)])];
+    };
+    if (count == 4) {
+      largest = std::max(largest, outOfPlaneTwist(corner(0), corner(1), corner(2), corner(3)));
+    } else {
+      glm::dvec3 centroid(0.0);
+      for (int i = 0; i < count; ++i) centroid += corner(i);
+      centroid /= double(count);
+      for (int i = 0; i < count; ++i)
+        largest = std::max(largest, outOfPlaneTwist(corner(i), 0.5 * (corner(i) + corner(i + 1)), centroid,
+                                                    0.5 * (corner(i - 1) + corner(i))));
+    }
+    first += std::size_t(count);
+  }
+  return largest;
+}
+
 double distanceToBox(const glm::dvec3& p, const Aabb& box) {
   const glm::dvec3 outside = glm::max(glm::max(box.lo - p, p - box.hi), glm::dvec3(0.0));
   return glm::length(outside);
@@ -42,6 +75,13 @@ RefinementChoice chooseRefinement(const Object& object, const Camera& camera, co
       settings.height / (2.0 * std::tan(0.5 * camera.verticalFovDegrees * std::numbers::pi / 180.0) * distance);
   RefinementChoice choice;
   choice.edgePixels = meanEdgeLength(object.cage) * pixelsPerUnit;
+  if (object.subdivision == Subdivision::None) {
+    choice.twistPixels = largestTwist(object.cage) * pixelsPerUnit;
+    choice.isolationLevel = 0;
+    choice.tessellationRate = settings.tessellationRate.value_or(
+        std::clamp(int(std::ceil(std::sqrt(choice.twistPixels / (4.0 * settings.pixelTolerance)))), 1, 64));
+    return choice;
+  }
   const double ratio = std::max(choice.edgePixels / settings.pixelTolerance, 1.0);
   choice.isolationLevel = object.isolationLevel.value_or(std::clamp(int(std::ceil(0.5 * std::log2(ratio))), 1, 8));
   choice.tessellationRate =
@@ -68,6 +108,7 @@ SceneGeometry buildGeometry(const Scene& scene) {
     RefinementSettings settings;
     settings.isolationLevel = choice.isolationLevel;
     settings.endCaps = object.endCaps;
+    settings.subdivision = object.subdivision;
     SubdivisionSurface surface = SubdivisionSurface::create(object.cage, settings);
     PatchBvh bvh = PatchBvh::build(surface);
     geometry.bounds.extend(surface.bounds());
@@ -80,9 +121,13 @@ std::string describe(const Scene& scene, const SceneGeometry& geometry) {
   std::ostringstream out;
   for (std::size_t i = 0; i < geometry.objects.size(); ++i) {
     const ObjectGeometry& o = geometry.objects[i];
-    out << scene.objects[i].name << ": edge " << std::lround(o.refinement.edgePixels) << " px, isolation "
-        << o.surface.statistics().isolationLevel << ", dicing " << o.refinement.tessellationRate << "; "
-        << describe(o.surface.statistics()) << "; " << describe(o.bvh.statistics()) << "\n";
+    out << scene.objects[i].name << ": edge " << std::lround(o.refinement.edgePixels) << " px, ";
+    if (scene.objects[i].subdivision == Subdivision::None)
+      out << "twist " << std::lround(o.refinement.twistPixels) << " px";
+    else
+      out << "isolation " << o.surface.statistics().isolationLevel;
+    out << ", dicing " << o.refinement.tessellationRate << "; " << describe(o.surface.statistics()) << "; "
+        << describe(o.bvh.statistics()) << "\n";
   }
   out << "total: " << geometry.patchCount() << " patches, " << (geometry.bytes() + 1023) / 1024 << " KiB";
   return out.str();

@@ -10,6 +10,16 @@
 //   dicing rate  a k x k grid on a patch of curvature radius ~ its size s
 //                deviates by ~ s / (8 k^2), so
 //                k = ceil(sqrt(edgePixels / (8 pixelTolerance))), in [1, 64]
+// Polygons as authored (Subdivision::None) need no isolation, and their
+// bilinear patches curve only as far as they twist out of their plane:
+//   twistPixels  the largest |n . (P00 - P10 + P11 - P01)| of the object's
+//                bilinear patches (n the unit normal at a patch's centre,
+//                that of its diagonals), projected like edgePixels; 0 for
+//                triangles and planar quads
+//   dicing rate  two triangles per grid cell deviate from the patch by about
+//                twist / (4 k^2), so
+//                k = ceil(sqrt(twistPixels / (4 pixelTolerance))), in [1, 64]:
+//                1 for a flat mesh, which two triangles per patch reproduce
 // A scene's per-object `isolation` and render `tess_level` override these.
 #pragma once
 
@@ -24,7 +34,8 @@ namespace facet::scene {
 
 struct RefinementChoice {
   double edgePixels = 0;
-  int isolationLevel = 1;
+  double twistPixels = 0;  // Subdivision::None only
+  int isolationLevel = 1;  // 0 under Subdivision::None
   int tessellationRate = 1;
 };
 

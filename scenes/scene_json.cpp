@@ -201,9 +201,9 @@ glm::dmat4 readTransform(const Field& f) {
   return matrix;
 }
 
-// Catmull-Clark is affine invariant: transforming the cage transforms the
-// limit surface exactly. A mirroring transform would turn faces inside out,
-// so their winding is reversed to keep normals pointing outwards.
+// Both subdivision schemes are affine invariant: transforming the cage
+// transforms the surface exactly. A mirroring transform would turn faces
+// inside out, so their winding is reversed to keep normals pointing outwards.
 void transformCage(ControlCage& cage, const glm::dmat4& matrix) {
   for (glm::dvec3& p : cage.positions) p = glm::dvec3(matrix * glm::dvec4(p, 1.0));
   if (glm::determinant(glm::dmat3(matrix)) >= 0) return;
@@ -213,6 +213,24 @@ void transformCage(ControlCage& cage, const glm::dmat4& matrix) {
                  cage.faceVertexIndices.begin() + std::ptrdiff_t(first + std::size_t(count)));
     first += std::size_t(count);
   }
+}
+
+// A scheme by name, or an object of Catmull-Clark's settings.
+void readSubdivision(const Field& f, Object& object) {
+  if (f.value().is_string()) {
+    const std::string name = f.string();
+    const std::optional<Subdivision> subdivision = subdivisionNamed(name);
+    if (!subdivision) f.fail("unknown value '" + name + "' (expected one of: " + kSubdivisionNames + ")");
+    object.subdivision = *subdivision;
+    return;
+  }
+  if (!f.value().is_object())
+    f.fail(std::string("expected one of: ") + kSubdivisionNames + ", or an object of Catmull-Clark settings");
+  f.object({"isolation", "end_caps"});
+  if (f.has("isolation")) object.isolationLevel = f["isolation"].integer(1, 10);
+  if (f.has("end_caps"))
+    object.endCaps =
+        f["end_caps"].choice<EndCapBasis>({{"gregory", EndCapBasis::Gregory}, {"bspline", EndCapBasis::BSpline}});
 }
 
 void readRender(const Field& f, RenderSettings& r) {
@@ -320,14 +338,7 @@ Scene loadJsonScene(const std::filesystem::path& path) {
       scene.materials.push_back(readMaterial(o["material"], source));
     }
 
-    if (o.has("subdivision")) {
-      const Field s = o["subdivision"];
-      s.object({"isolation", "end_caps"});
-      if (s.has("isolation")) object.isolationLevel = s["isolation"].integer(1, 10);
-      if (s.has("end_caps"))
-        object.endCaps =
-            s["end_caps"].choice<EndCapBasis>({{"gregory", EndCapBasis::Gregory}, {"bspline", EndCapBasis::BSpline}});
-    }
+    if (o.has("subdivision")) readSubdivision(o["subdivision"], object);
     scene.objects.push_back(std::move(object));
   }
 

@@ -87,13 +87,10 @@ void validateCage(const ControlCage& cage) {
     if (count < 3) fail("degenerate face", "face " + std::to_string(face) + " has fewer than 3 vertices");
     if (offset + count > cage.faceVertexIndices.size())
       fail("index out of range", "face vertex counts exceed the index list");
-    std::set<int> seen;
     for (int c = 0; c < count; ++c) {
       const int vertex = cage.faceVertexIndices[offset + c];
       if (vertex < 0 || vertex >= cage.vertexCount())
         fail("index out of range", "face " + std::to_string(face) + " uses vertex " + std::to_string(vertex));
-      if (!seen.insert(vertex).second)
-        fail("degenerate face", "face " + std::to_string(face) + " uses vertex " + std::to_string(vertex) + " twice");
       edges.insert(std::minmax(vertex, cage.faceVertexIndices[offset + (c + 1) % count]));
     }
     offset += count;
@@ -108,7 +105,7 @@ void validateCage(const ControlCage& cage) {
     if (hole < 0 || hole >= cage.faceCount()) fail("index out of range", "hole face " + std::to_string(hole));
 }
 
-std::unique_ptr<Far::TopologyRefiner> createRefiner(const ControlCage& cage) {
+std::unique_ptr<Far::TopologyRefiner> createRefiner(const ControlCage& cage, Subdivision subdivision) {
   validateCage(cage);
   std::vector<Far::Index> creasePairs;
   std::vector<float> creaseWeights;
@@ -140,8 +137,9 @@ std::unique_ptr<Far::TopologyRefiner> createRefiner(const ControlCage& cage) {
 
   OsdMessageCapture capture;
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  std::unique_ptr<Far::TopologyRefiner> refiner(
-      Factory::Create(descriptor, Factory::Options(Sdc::SCHEME_CATMARK, sdcOptions(cage.options))));
+  std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(
+      descriptor, Factory::Options(subdivision == Subdivision::None ? Sdc::SCHEME_BILINEAR : Sdc::SCHEME_CATMARK,
+                                   sdcOptions(cage.options))));
   if (!refiner)
     throw InputError(cage.source, 0, "topology rejected by OpenSubdiv",
                      osdLastError.empty() ? "no reason given" : osdLastError);
@@ -189,6 +187,18 @@ BezierPatch bezierFromBSpline(const std::array<glm::dvec3, 16>& cvs, unsigned bo
   return patch;
 }
 
+// The bilinear patch through OpenSubdiv's four QUADS points (counter-clockwise
+// from (0, 0)) as the bicubic Bézier patch it equals: P_ij = bilinear(i/3, j/3).
+BezierPatch bezierFromBilinear(const std::array<glm::dvec3, 4>& corners) {
+  BezierPatch patch;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i)
+      patch.points[4 * j + i] = (double((3 - i) * (3 - j)) * corners[0] + double(i * (3 - j)) * corners[1] +
+                                 double(i * j) * corners[2] + double((3 - i) * j) * corners[3]) /
+                                9.0;
+  return patch;
+}
+
 // OpenSubdiv's Gregory basis numbers its 20 points per corner (P, E+, E-,
 // F+, F-); this is where each lands in the Bézier grid.
 BezierPatch bezierFromGregory(const std::array<glm::dvec3, 20>& cvs) {
@@ -229,10 +239,13 @@ SubdivisionSurface::~SubdivisionSurface() = default;
 
 SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const RefinementSettings& settings) {
   auto impl = std::make_unique<Impl>();
-  const std::unique_ptr<Far::TopologyRefiner> refinerOwner = createRefiner(cage);
+  const bool bilinear = settings.subdivision == Subdivision::None;
+  const std::unique_ptr<Far::TopologyRefiner> refinerOwner = createRefiner(cage, settings.subdivision);
   Far::TopologyRefiner& refiner = *refinerOwner;
 
-  const int level = isolationLevelFor(cage, settings);
+  // A bilinear quad is a patch as it stands; one level splits every other
+  // face into quads.
+  const int level = bilinear ? 1 : isolationLevelFor(cage, settings);
   Far::PatchTableFactory::Options options(level);
   options.SetEndCapType(settings.endCaps == EndCapBasis::Gregory
                             ? Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS
@@ -277,6 +290,7 @@ SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const Ref
   int patchIndex = 0;
   for (int array = 0; array < table.GetNumPatchArrays(); ++array) {
     const Far::PatchDescriptor descriptor = table.GetPatchArrayDescriptor(array);
+    const bool quads = descriptor.GetType() == Far::PatchDescriptor::QUADS;
     const bool gregory = descriptor.GetType() == Far::PatchDescriptor::GREGORY_BASIS;
     const int cvCount = descriptor.GetNumControlVertices();
     for (int j = 0; j < table.GetNumPatches(array); ++j, ++patchIndex) {
@@ -301,7 +315,12 @@ SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const Ref
       impl->patches.push_back(info);
 
       BezierPatch bezier;
-      if (gregory) {
+      if (quads) {
+        std::array<glm::dvec3, 4> points;
+        for (int k = 0; k < 4; ++k) points[k] = impl->points[cvs[k]].p;
+        bezier = bezierFromBilinear(points);
+        ++stats.regularPatches;
+      } else if (gregory) {
         std::array<glm::dvec3, 20> points;
         for (int k = 0; k < 20; ++k) points[k] = impl->points[cvs[k]].p;
         bezier = bezierFromGregory(points);
@@ -323,7 +342,8 @@ SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const Ref
     }
   }
 
-  stats.isolationLevel = level;
+  stats.subdivision = settings.subdivision;
+  stats.isolationLevel = bilinear ? 0 : level;
   stats.cageFaces = cage.faceCount();
   stats.ptexFaces = ptex.GetNumFaces();
   stats.refinedVertices = refinedCount;
@@ -392,10 +412,14 @@ std::optional<LimitPoint> SubdivisionSurface::evaluateFace(int ptexFace, double 
 
 std::string describe(const SurfaceStatistics& stats) {
   std::ostringstream out;
-  out << stats.cageFaces << " cage faces (" << stats.ptexFaces << " ptex), isolation level " << stats.isolationLevel
-      << ": " << stats.regularPatches + stats.endCapPatches << " patches (" << stats.regularPatches << " regular, "
-      << stats.endCapPatches << " end caps), " << stats.refinedVertices << " refined + " << stats.localPoints
-      << " local points, " << (stats.openSubdivBytes + 512) / 1024 << " KiB in OpenSubdiv tables";
+  out << stats.cageFaces << " cage faces (" << stats.ptexFaces << " ptex), ";
+  if (stats.subdivision == Subdivision::None)
+    out << "as authored: " << stats.regularPatches << " bilinear patches, ";
+  else
+    out << "isolation level " << stats.isolationLevel << ": " << stats.regularPatches + stats.endCapPatches
+        << " patches (" << stats.regularPatches << " regular, " << stats.endCapPatches << " end caps), ";
+  out << stats.refinedVertices << " refined + " << stats.localPoints << " local points, "
+      << (stats.openSubdivBytes + 512) / 1024 << " KiB in OpenSubdiv tables";
   return out.str();
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// A control cage refined by OpenSubdiv Far into limit-surface patches.
+// A control cage refined by OpenSubdiv Far into patches, under one of two
+// schemes (Subdivision).
 //
 // Catmull-Clark, feature-adaptive: extraordinary vertices and semi-sharp
 // features are isolated to `isolationLevel`, the regular parts become bicubic
@@ -13,6 +14,15 @@
 //   BSpline  16-point B-spline approximations: cheaper (all patches are
 //            polynomial) but only G0-accurate at the extraordinary vertex;
 //            offered for speed-against-accuracy charts.
+//
+// None, the polygons as authored: OpenSubdiv's bilinear scheme. A quad is one
+// bilinear patch through its four corners; any other face is refined once
+// into one bilinear quad per corner, through the corner, its two edge
+// midpoints and the face centroid (the ptex faces of Catmull-Clark's split),
+// so a triangle is exactly the flat triangle. Creases, corners and boundary
+// options do not apply; holes do. Each bilinear patch is degree-elevated to
+// the bicubic Bézier patch it equals, so the rest of the pipeline sees the
+// same form as for Catmull-Clark.
 //
 // Points are computed in double precision (refined vertices through
 // PrimvarRefinerReal<double>, end-cap points through the double stencil
@@ -30,7 +40,7 @@
 // Evaluation takes face (u, v) and returns derivatives with respect to it.
 // (OpenSubdiv 3.5 scales its derivatives on the quads of a non-quad face
 // by 2^depth although they span 2^-(depth-1) of their ptex face, i.e. twice
-// ours; evaluatePatch() rescales them.)
+// ours, under both schemes; evaluatePatch() rescales them.)
 
 #include "scenes/bezier_patch.h"
 #include "scenes/control_cage.h"
@@ -45,9 +55,15 @@ namespace facet::scene {
 
 enum class EndCapBasis { Gregory, BSpline };
 
+// How a cage becomes a surface: Catmull-Clark's limit surface, or none, the
+// polygons as authored.
+enum class Subdivision { CatmullClark, None };
+
 struct RefinementSettings {
+  // Catmull-Clark only.
   int isolationLevel = 3;  // 1..10; raised to cover every semi-sharp crease (see create())
   EndCapBasis endCaps = EndCapBasis::Gregory;
+  Subdivision subdivision = Subdivision::CatmullClark;
 };
 
 struct LimitPoint {
@@ -67,16 +83,17 @@ struct PatchInfo {
   int coarseFace = 0;  // the cage face the ptex face came from
   PatchDomain domain;
   int depth = 0;                // refinement level the patch was built at
-  unsigned boundaryMask = 0;    // OpenSubdiv edge bits: 1 v=0, 2 u=1, 4 v=1, 8 u=0
+  unsigned boundaryMask = 0;    // OpenSubdiv edge bits: 1 v=0, 2 u=1, 4 v=1, 8 u=0; 0 when bilinear
   unsigned transitionMask = 0;  // same bits: the neighbour across is one level deeper
   bool gregory = false;
 };
 
 struct SurfaceStatistics {
-  int isolationLevel = 0;
+  Subdivision subdivision = Subdivision::CatmullClark;
+  int isolationLevel = 0;  // 0 under Subdivision::None
   int cageFaces = 0;
   int ptexFaces = 0;
-  int regularPatches = 0;
+  int regularPatches = 0;  // the bilinear ones under Subdivision::None
   int endCapPatches = 0;
   int refinedVertices = 0;          // all levels
   int localPoints = 0;              // end-cap points
@@ -87,10 +104,15 @@ std::string describe(const SurfaceStatistics& stats);
 
 class SubdivisionSurface {
  public:
-  // Throws InputError when OpenSubdiv rejects the topology. The isolation
-  // level used is max(settings.isolationLevel, ceil(sharpest semi-sharp
-  // crease or corner)), capped at 10, so semi-sharp features decay
-  // completely before patches are built (they are then exact, not end caps).
+  // Throws InputError when the cage breaks a rule OpenSubdiv relies on
+  // without checking (an index out of range, a face of fewer than 3
+  // vertices, a non-finite position) or when OpenSubdiv rejects the
+  // topology; non-manifold edges and vertices, a vertex repeated within a
+  // face and vertices no face uses are accepted, as OpenSubdiv accepts them.
+  // Catmull-Clark's isolation level is max(settings.isolationLevel,
+  // ceil(sharpest semi-sharp crease or corner)), capped at 10, so semi-sharp
+  // features decay completely before patches are built (they are then exact,
+  // not end caps).
   static SubdivisionSurface create(const ControlCage& cage, const RefinementSettings& settings = {});
 
   SubdivisionSurface(SubdivisionSurface&&) noexcept;

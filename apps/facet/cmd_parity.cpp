@@ -19,6 +19,7 @@ struct ParityOptions {
   std::string scene;
   std::string size;
   std::string method;
+  std::string subdivision;
   std::string heatmap;
   std::string adapter;
   bool json = false;
@@ -62,6 +63,7 @@ void runParity(const ParityOptions& o) {
   scene::Scene scene = scene::loadScene(o.scene);
   if (!o.size.empty()) applyImageSize(o.size, scene);
   if (!o.method.empty()) applyMethod(o.method, scene);
+  if (!o.subdivision.empty()) scene::overrideSubdivision(scene, o.subdivision, "--subdivision");
   const RenderReport cpu = render(scene, Backend::Cpu);
   const RenderReport gpu = render(scene, Backend::Gpu, {}, o.adapter);
   const ParityReport report = compareImages(cpu.image, gpu.image);
@@ -87,6 +89,9 @@ void addParityCommand(CLI::App& app) {
   c->add_option("--size", o->size, "Image size WIDTHxHEIGHT");
   c->add_option("--method", o->method, "Ray casting: exact limit surface, or tessellated")
       ->check(CLI::IsMember({"exact", "tess"}));
+  c->add_option(
+      "--subdivision", o->subdivision,
+      "Subdivision of every object, whatever the file chose: catmull-clark, or none (the polygons as authored)");
   c->add_option("--heatmap", o->heatmap, "Write the per-pixel error (in units of tolerance) as a PNG");
   c->add_option("--adapter", o->adapter, "GPU adapter: a substring of its name");
   c->add_flag("--json", o->json, "Machine-readable report");

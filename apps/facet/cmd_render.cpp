@@ -27,6 +27,7 @@ struct RenderOptions {
   std::string method;
   std::optional<int> tessLevel;
   std::optional<int> spp;
+  std::string subdivision;
   std::string backend = "gpu";
   std::string adapter;
   float exposure = 0;
@@ -95,6 +96,7 @@ void applyOverrides(const RenderOptions& o, scene::Scene& scene) {
   if (glm::length(view) == 0) throw std::invalid_argument("--eye and --target must differ");
   if (glm::length(glm::cross(view, scene.camera.up)) <= 1e-12 * glm::length(view) * glm::length(scene.camera.up))
     throw std::invalid_argument("--up must not be zero or parallel to the view direction");
+  if (!o.subdivision.empty()) scene::overrideSubdivision(scene, o.subdivision, "--subdivision");
   if (!o.method.empty()) applyMethod(o.method, scene);
   if (o.tessLevel) scene.render.tessellationRate = *o.tessLevel;
   if (o.spp) {
@@ -171,6 +173,10 @@ void addRenderCommand(CLI::App& app) {
   triple("--target", o->target, "Point the camera looks at x,y,z");
   triple("--up", o->up, "Camera up vector x,y,z");
   c->add_option("--fov", o->fov, "Vertical field of view in degrees")->check(CLI::Range(1e-3, 179.0));
+  c->add_option(
+      "--subdivision", o->subdivision,
+      "Subdivision of every object, whatever the file chose: catmull-clark, or none (the polygons as authored); "
+      "by default OBJ cages are subdivided and glTF meshes are not");
   c->add_option("--method", o->method, "Ray casting: exact limit surface, or tessellated")
       ->check(CLI::IsMember({"exact", "tess"}));
   c->add_option("--tess-level", o->tessLevel, "Dicing rate k (k x k per patch) for --method tess")

@@ -180,16 +180,18 @@ double sharedModel(const scene::Scene& scene, int materials::Material::*model) {
   return shared;
 }
 
-// The scene's buffers for the GPU, rebased on the eye (gpu_scene.h).
-struct SceneBuffers {
+// The scene's buffers for the GPU, rebased on the eye (gpu_scene.h): the
+// geometry, kept while it does not change, and what shades it.
+struct GeometryBuffers {
   gpu::Buffer nodes, patches, headers, points, objects, gridVertices, edgeMidpoints, cellBounds;
-  gpu::Buffer materials, lights, environmentTexels, environmentTables, environmentLevels, environmentAliases;
   std::uint64_t bytes = 0;
 };
 
-SceneBuffers uploadScene(gpu::Device& d, const GpuScene& packed, const scene::Scene& scene,
-                         const ibl::EnvironmentLighting* lighting, const EnvironmentData& environment,
-                         const glm::dvec3& origin) {
+struct ShadingBuffers {
+  gpu::Buffer materials, lights, environmentTexels, environmentTables, environmentLevels, environmentAliases;
+};
+
+GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed) {
   const std::uint64_t maxTexels = d.limits().maxTexelBufferElements;
   for (const auto& [name, texels] : {std::pair{"BVH nodes", packed.nodeCount * layout::FACET_BVH4_TEXELS},
                                      std::pair{"grid vertices", packed.gridVertices},
@@ -198,19 +200,10 @@ SceneBuffers uploadScene(gpu::Device& d, const GpuScene& packed, const scene::Sc
       throw gpu::Error(std::string("the micro-grid's ") + name + " need " + std::to_string(texels) + " texels; " +
                        d.adapterInfo().name + " addresses at most " + std::to_string(maxTexels) +
                        " in one texel buffer: lower the dicing rate (--tess-level)");
-  const std::vector<float> noTexels;
-  const std::vector<float>& texels = lighting ? scene.environment->map->rgb : noTexels;
-  for (const auto& [name, bytes] : {std::pair{"the environment map's texels", texels.size() * sizeof(float)},
-                                    std::pair{"the environment's tables", environment.tables.size() * sizeof(float)}})
-    if (bytes > d.limits().maxStorageBufferBindingSize)
-      throw gpu::Error(name + std::string(" need ") + std::to_string(bytes >> 20) + " MiB in one binding; " +
-                       d.adapterInfo().name + " binds at most " +
-                       std::to_string(d.limits().maxStorageBufferBindingSize >> 20) +
-                       " MiB: use a smaller map (4096 x 2048 fits lavapipe)");
   const BufferUsage in = BufferUsage::Storage, texel = BufferUsage::Texel;
   // Written by the dicing kernels, read by the tracing ones.
   const BufferUsage diced = BufferUsage::Texel | BufferUsage::StorageTexel;
-  SceneBuffers b;
+  GeometryBuffers b;
   b.nodes = d.createBuffer({"BVH nodes", bufferBytes(packed.nodeCount * layout::FACET_BVH4_TEXELS * sizeof(Texel)),
                             diced | BufferUsage::CopyDst});
   if (!packed.topNodes.empty())
@@ -222,16 +215,52 @@ SceneBuffers uploadScene(gpu::Device& d, const GpuScene& packed, const scene::Sc
   b.gridVertices = d.createBuffer({"grid vertices", bufferBytes(packed.gridVertices * 16), diced});
   b.edgeMidpoints = d.createBuffer({"edge midpoints", bufferBytes(packed.edgeMidpoints * 16), diced});
   b.cellBounds = d.createBuffer({"cell bounds", bufferBytes(packed.cellBounds * 16), diced});
+  for (const gpu::Buffer* buffer : {&b.nodes, &b.patches, &b.headers, &b.points, &b.objects, &b.gridVertices,
+                                    &b.edgeMidpoints, &b.cellBounds})
+    b.bytes += buffer->size();
+  return b;
+}
+
+ShadingBuffers uploadShading(gpu::Device& d, const scene::Scene& scene, const ibl::EnvironmentLighting* lighting,
+                             const EnvironmentData& environment, const glm::dvec3& origin) {
+  const std::vector<float> noTexels;
+  const std::vector<float>& texels = lighting ? scene.environment->map->rgb : noTexels;
+  for (const auto& [name, bytes] : {std::pair{"the environment map's texels", texels.size() * sizeof(float)},
+                                    std::pair{"the environment's tables", environment.tables.size() * sizeof(float)}})
+    if (bytes > d.limits().maxStorageBufferBindingSize)
+      throw gpu::Error(name + std::string(" need ") + std::to_string(bytes >> 20) + " MiB in one binding; " +
+                       d.adapterInfo().name + " binds at most " +
+                       std::to_string(d.limits().maxStorageBufferBindingSize >> 20) +
+                       " MiB: use a smaller map (4096 x 2048 fits lavapipe)");
+  const BufferUsage in = BufferUsage::Storage;
+  ShadingBuffers b;
   b.materials = upload(d, "materials", materialRecords(scene, lighting), in);
   b.lights = upload(d, "lights", lightRecords(scene, origin), in);
   b.environmentTexels = upload(d, "environment texels", texels, in);
   b.environmentTables = upload(d, "environment tables", environment.tables, in);
   b.environmentLevels = upload(d, "environment levels", environment.levels, in);
   b.environmentAliases = upload(d, "environment aliases", environment.alias, in);
-  for (const gpu::Buffer* buffer : {&b.nodes, &b.patches, &b.headers, &b.points, &b.objects, &b.gridVertices,
-                                    &b.edgeMidpoints, &b.cellBounds})
-    b.bytes += buffer->size();
   return b;
+}
+
+// FNV-1a over the packed arrays: the diced geometry is reused while the
+// packed scene (rebased, with its rates), the method and the tolerance are
+// the same.
+std::uint64_t geometryKey(const GpuScene& packed, bool tessellated, float tolerance) {
+  std::uint64_t hash = 0xcbf29ce484222325ull;
+  auto add = [&hash](const void* data, std::size_t bytes) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) hash = (hash ^ p[i]) * 0x100000001b3ull;
+  };
+  auto addVector = [&add](const auto& v) { add(v.data(), v.size() * sizeof(v[0])); };
+  addVector(packed.topNodes);
+  addVector(packed.patches);
+  addVector(packed.headers);
+  addVector(packed.points);
+  addVector(packed.objects);
+  add(&tessellated, sizeof tessellated);
+  add(&tolerance, sizeof tolerance);
+  return hash;
 }
 
 // What one band of pixels needs, reused band after band.
@@ -271,14 +300,21 @@ BandBuffers allocateBands(gpu::Device& d, std::uint64_t bandPixels, std::uint64_
 // Every buffer by its binding number: a number names one buffer in every
 // kernel (compute/raycast/scene_bindings.glsl, trace_bindings.glsl and the
 // kernels' own), so each kernel's bind group follows from its layout.
-std::map<std::uint32_t, const gpu::Buffer*> bindingTable(const SceneBuffers& s, const BandBuffers& b) {
-  return {{0, &b.frame},          {1, &s.nodes},          {2, &s.patches},          {3, &s.points},
-          {4, &s.objects},        {5, &s.gridVertices},   {6, &s.edgeMidpoints},    {7, &s.headers},
-          {8, &b.rays},           {9, &b.hits},           {10, &b.counters},        {11, &s.materials},
-          {12, &s.lights},        {13, &b.aovs},          {14, &b.shadowRays},      {15, &b.contributions},      {16, &s.cellBounds},
-          {18, &b.beauty},        {19, &s.environmentTexels}, {20, &s.environmentLevels},
-          {21, &s.environmentAliases}, {22, &b.rayRadiance}, {23, &s.environmentTables},
-          {24, &b.cameraFallbacks}, {25, &b.shadowFallbacks}};
+std::map<std::uint32_t, const gpu::Buffer*> bindingTable(const GeometryBuffers& g, const ShadingBuffers& s,
+                                                         const BandBuffers& b) {
+  return {{0, &b.frame},           {1, &g.nodes},
+          {2, &g.patches},         {3, &g.points},
+          {4, &g.objects},         {5, &g.gridVertices},
+          {6, &g.edgeMidpoints},   {7, &g.headers},
+          {8, &b.rays},            {9, &b.hits},
+          {10, &b.counters},       {11, &s.materials},
+          {12, &s.lights},         {13, &b.aovs},
+          {14, &b.shadowRays},     {15, &b.contributions},
+          {16, &g.cellBounds},     {18, &b.beauty},
+          {19, &s.environmentTexels}, {20, &s.environmentLevels},
+          {21, &s.environmentAliases}, {22, &b.rayRadiance},
+          {23, &s.environmentTables}, {24, &b.cameraFallbacks},
+          {25, &b.shadowFallbacks}};
 }
 
 gpu::BindGroup bindGroup(gpu::Device& d, const gpu::ComputePipeline& pipeline, const std::string& label,
@@ -317,6 +353,11 @@ layout::FrameParams frameParams(const scene::Scene& scene, const scene::SceneGeo
 }
 
 }  // namespace
+
+struct GpuRenderer::DicedGeometry {
+  std::uint64_t key = 0;
+  GeometryBuffers buffers;
+};
 
 double rootTolerance(const scene::Scene& scene, const scene::SceneGeometry& geometry) {
   double largestCoordinate = 0;
@@ -387,8 +428,11 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   layout::FrameParams frame = frameParams(scene, geometry, strata, packed);
   frame.slotsPerRay = lightCount + environmentSlots(scene);
   const EnvironmentData environment = lighting ? environmentData(*lighting, frame) : EnvironmentData{};
-  const SceneBuffers sceneBuffers =
-      uploadScene(d, packed, scene, lighting ? &*lighting : nullptr, environment, origin);
+  const std::uint64_t key = geometryKey(packed, tessellated, frame.tolerance);
+  const bool reused = diced_ && diced_->key == key;
+  if (!reused) diced_ = std::make_shared<DicedGeometry>(DicedGeometry{key, uploadGeometry(d, packed)});
+  const GeometryBuffers& geometryBuffers = diced_->buffers;
+  const ShadingBuffers shadingBuffers = uploadShading(d, scene, lighting ? &*lighting : nullptr, environment, origin);
   result.stageMilliseconds.emplace_back("top levels", wallClock(start));
 
   const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
@@ -401,9 +445,9 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   frame.fallbackCapacity = tessellated ? 0 : std::uint32_t(bandPixels * frame.raysPerPixel / 16 + 1024);
   BandBuffers band =
       allocateBands(d, bandPixels, bandPixels * frame.raysPerPixel, frame.slotsPerRay, frame.fallbackCapacity);
-  auto table = bindingTable(sceneBuffers, band);
+  auto table = bindingTable(geometryBuffers, shadingBuffers, band);
   result.cells = packed.cells;
-  result.gpuBytes = sceneBuffers.bytes + band.bytes;
+  result.gpuBytes = geometryBuffers.bytes + band.bytes;
 
   const std::vector<gpu::ConstantEntry> methodConstant{{"METHOD", method}};
   const double environmentMethod = !scene.environment                                       ? 0
@@ -449,9 +493,10 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
     }
   };
 
-  // Stage: dicing, the micro-grid and every patch's quadtree.
+  // Stage: dicing, the micro-grid and every patch's quadtree, unless the
+  // last render diced the same geometry.
   d.queue().writeBuffer(band.frame, 0, &frame, sizeof(frame));
-  {
+  if (!reused) {
     gpu::CommandEncoder encoder = d.createCommandEncoder({"dice"});
     if (tessellated) {
       gpu::ComputePipeline& diceGrid = pipeline("dice_grid", {});
@@ -539,9 +584,9 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
     if (needed > frame.fallbackCapacity) {
       frame.fallbackCapacity = needed;
       band = allocateBands(d, bandPixels, bandPixels * frame.raysPerPixel, frame.slotsPerRay, needed);
-      table = bindingTable(sceneBuffers, band);
+      table = bindingTable(geometryBuffers, shadingBuffers, band);
       groups = bandGroups();
-      result.gpuBytes = sceneBuffers.bytes + band.bytes;
+      result.gpuBytes = geometryBuffers.bytes + band.bytes;
       continue;
     }
     const auto pixelAovs = band.aovsHost.mapped<layout::PixelAovs>();

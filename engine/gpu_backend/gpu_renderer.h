@@ -38,6 +38,10 @@
 // known to about tolerance / sin(angle), so the CPU's offset alone lets a
 // shadow ray find the surface it leaves.
 //
+// The diced geometry (BVH, micro-grid, cell bounds) is kept and reused by
+// the next render while its packed scene, method and tolerance hash the same
+// (a new eye rebases it, so it is diced again).
+//
 // Specialization constants keep each pipeline to what the scene uses: the
 // method, the number of lights, the IBL method and its occlusion, and each
 // BRDF model (D, G, F) when all materials share it. Pipelines are created
@@ -48,6 +52,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -81,6 +86,11 @@ class GpuRenderer {
 
  private:
   gpu::ComputePipeline& pipeline(const char* kernel, const std::vector<gpu::ConstantEntry>& constants);
+
+  // The last render's diced geometry, reused while the scene's geometry,
+  // rates, eye, method and tolerance are the same.
+  struct DicedGeometry;
+  std::shared_ptr<DicedGeometry> diced_;
 
   gpu::Device& device_;
   std::map<std::string, gpu::ShaderModule> modules_;

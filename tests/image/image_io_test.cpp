@@ -7,6 +7,7 @@
 #include <random>
 
 #include "engine/image/image_io.h"
+#include "tests/support/temp_dir.h"
 
 #define STB_IMAGE_IMPLEMENTATION
 #include <stb_image.h>
@@ -16,15 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class ImageIo : public ::testing::Test {
+class ImageIo : public facet::testing::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("facet_image_io_" + std::to_string(std::random_device{}()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   std::vector<fs::path> files() const { return {fs::directory_iterator(dir_), fs::directory_iterator()}; }
-  fs::path dir_;
 };
 
 Image randomImage(int w, int h) {

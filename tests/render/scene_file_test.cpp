@@ -91,6 +91,42 @@ TEST_F(SceneFiles, ErrorsNameTheFileTheFieldAndTheRule) {
               AllOf(HasSubstr("objects[0].material.alpha"), HasSubstr("[0, 1]")));
 }
 
+TEST_F(SceneFiles, ObjectsChooseTheirSubdivision) {
+  Scene scene = loadScene(write("schemes.json", R"({"objects": [
+      {"mesh": "ball.obj"},
+      {"mesh": "ball.obj", "subdivision": "none"},
+      {"mesh": "ball.obj", "subdivision": "catmull-clark"},
+      {"mesh": "ball.obj", "subdivision": {"isolation": 4, "end_caps": "bspline"}}]})"));
+  ASSERT_EQ(scene.objects.size(), 4u);
+  EXPECT_EQ(scene.objects[0].subdivision, Subdivision::CatmullClark);
+  EXPECT_EQ(scene.objects[1].subdivision, Subdivision::None);
+  EXPECT_EQ(scene.objects[2].subdivision, Subdivision::CatmullClark);
+  EXPECT_EQ(scene.objects[3].subdivision, Subdivision::CatmullClark);
+  EXPECT_EQ(scene.objects[3].isolationLevel, 4);
+  EXPECT_EQ(scene.objects[3].endCaps, EndCapBasis::BSpline);
+
+  Scene overridden = scene;
+  overrideSubdivision(overridden, "none", "--subdivision");
+  for (const Object& object : overridden.objects) EXPECT_EQ(object.subdivision, Subdivision::None);
+  try {
+    overrideSubdivision(overridden, "loop", "--subdivision");
+    ADD_FAILURE() << "accepted 'loop'";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "--subdivision 'loop': expected one of: catmull-clark, none");
+  }
+
+  EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj", "subdivision": "loop"}]})"),
+              AllOf(HasSubstr("scene.json"), HasSubstr("objects[0].subdivision"), HasSubstr("unknown value 'loop'"),
+                    HasSubstr("catmull-clark, none")));
+  EXPECT_THAT(
+      errorOf(R"({"objects": [{"mesh": "ball.obj", "subdivision": 2}]})"),
+      AllOf(HasSubstr("objects[0].subdivision"), HasSubstr("expected one of: catmull-clark, none, or an object")));
+  EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj", "subdivision": {"scheme": "none"}}]})"),
+              AllOf(HasSubstr("objects[0].subdivision.scheme"), HasSubstr("unknown field")));
+  EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj", "subdivision": {"isolation": 11}}]})"),
+              AllOf(HasSubstr("objects[0].subdivision.isolation"), HasSubstr("[1, 10]")));
+}
+
 TEST_F(SceneFiles, NonFiniteNumbersAreRejected) {
   // JSON has no NaN or Inf; a number beyond double's range is the way to write one.
   EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj", "transform": {"translate": [1e999, 0, 0]}}]})"),
@@ -129,6 +165,7 @@ TEST_F(SceneFiles, UnknownExtensionsAreRejected) {
 TEST_F(SceneFiles, GltfMeshesAreWeldedCagesWithTheirMaterialsCamerasAndLights) {
   Scene scene = loadScene(kExamples / "gold_cube.gltf");
   ASSERT_EQ(scene.objects.size(), 1u);
+  EXPECT_EQ(scene.objects[0].subdivision, Subdivision::None);
   const ControlCage& cage = scene.objects[0].cage;
   EXPECT_EQ(cage.vertexCount(), 8);  // 24 glTF vertices split at the cube's edges
   EXPECT_EQ(cage.faceCount(), 12);
@@ -147,6 +184,7 @@ TEST_F(SceneFiles, GltfMeshesAreWeldedCagesWithTheirMaterialsCamerasAndLights) {
 TEST_F(SceneFiles, ABareCageIsFramedAndLit) {
   Scene scene = loadScene(dir_ / "ball.obj");
   ASSERT_EQ(scene.objects.size(), 1u);
+  EXPECT_EQ(scene.objects[0].subdivision, Subdivision::CatmullClark);
   ASSERT_EQ(scene.lights.size(), 1u);
   // Every control point lies inside the view frustum.
   const glm::dvec3 forward = glm::normalize(scene.camera.target - scene.camera.eye);

@@ -140,11 +140,21 @@ TEST(ObjCageErrors, IndicesOutOfRange) {
   expectError(kQuad + "f 1 2 3 4\nt crease 2/1/0 0 2 1.0\n", 6, "crease on a non-edge");
 }
 
-TEST(ObjCageErrors, FacesOpenSubdivCannotSubdivide) {
+TEST(ObjCageErrors, FacesOfFewerThanThreeVertices) {
   expectError(kQuad + "f 1 2\n", 5, "degenerate face");
-  expectError(kQuad + "f 1 2 2 3\n", 5, "degenerate face");
-  expectError(kQuad + "f 1 2 3 1\n", 5, "degenerate face");
-  expectError(kQuad + "f 1 2 3 -4\n", 5, "degenerate face");
+  expectError(kQuad + "f 1 2 3 4\nf 4\n", 6, "degenerate face");
+}
+
+// OpenSubdiv subdivides these, so the reader passes them on as written.
+TEST(ObjCage, AcceptsWhatOpenSubdivAccepts) {
+  const ControlCage repeated = parseObjCage(kQuad + "f 1 2 2 3\nf 1 2 3 -4\n", "repeated");
+  EXPECT_EQ(repeated.faceVertexIndices, (std::vector<int>{0, 1, 1, 2, 0, 1, 2, 0}));
+  const ControlCage book = parseObjCage(kQuad + "v 0 0 1\nv 0 1 1\nf 1 2 3 4\nf 1 4 6 5\nf 1 5 6 4\n", "book");
+  EXPECT_EQ(book.faceCount(), 3);  // edge 1-4 has three faces
+  const ControlCage bare = parseObjCage(kQuad + "v 5 5 5\nf 1 2 3 4\n", "bare");
+  EXPECT_EQ(bare.vertexCount(), 5);
+  for (const char* name : {"nonmanifold_edge", "repeated_vertex", "bare_vertex"})
+    EXPECT_GT(loadObjCage(std::string(FACET_TEST_DATA_DIR) + "/" + name + ".obj").faceCount(), 0) << name;
 }
 
 }  // namespace

@@ -223,7 +223,7 @@ TEST(SubdivisionSurface, RejectsBadCagesFromAnySource) {
   cage.faceVertexIndices = {0, 1, 2, 7};
   expectRule(cage, "index out of range");
   cage = good;
-  cage.faceVertexIndices = {0, 1, 1, 3};
+  cage.faceVertexCounts = {2, 2};
   expectRule(cage, "degenerate face");
   cage = good;
   cage.positions[2].y = std::nan("");
@@ -238,6 +238,25 @@ TEST(SubdivisionSurface, RejectsBadCagesFromAnySource) {
   cage.faceVertexCounts.clear();
   cage.faceVertexIndices.clear();
   expectRule(cage, "empty cage");
+}
+
+// Non-manifold edges, vertices repeated within a face and vertices no face
+// uses: OpenSubdiv refines them under either scheme, and so do we.
+TEST(SubdivisionSurface, BuildsWhatOpenSubdivAccepts) {
+  for (const char* name : {"nonmanifold_edge", "repeated_vertex", "bare_vertex"}) {
+    const ControlCage cage = loadObjCage(std::string(FACET_TEST_DATA_DIR) + "/" + name + ".obj");
+    for (Subdivision subdivision : {Subdivision::CatmullClark, Subdivision::None}) {
+      const SubdivisionSurface surface = SubdivisionSurface::create(cage, {3, EndCapBasis::Gregory, subdivision});
+      EXPECT_GT(surface.patchCount(), 0) << name;
+      for (int p = 0; p < surface.patchCount(); ++p) {
+        const PatchDomain& domain = surface.patch(p).domain;
+        const LimitPoint centre =
+            surface.evaluatePatch(p, domain.u0 + 0.5 * domain.size, domain.v0 + 0.5 * domain.size);
+        const glm::dvec3 bezier = evaluateBezierPatch(surface.bezierPatch(p), 0.5, 0.5).position;
+        EXPECT_LT(glm::length(centre.position - bezier), 1e-12 * surface.bounds().diagonal()) << name << " " << p;
+      }
+    }
+  }
 }
 
 }  // namespace
