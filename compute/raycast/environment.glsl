@@ -7,13 +7,15 @@
 #ifndef FACET_RAYCAST_ENVIRONMENT_GLSL
 #define FACET_RAYCAST_ENVIRONMENT_GLSL
 
-// The map's texels (level 0) and everything derived from it live in
-// separate bindings: a 4096 x 2048 map alone is 96 MiB of the 128 MiB that
-// lavapipe binds.
-layout(set = 0, binding = 19, std430) readonly buffer EnvironmentTexels { float texels[]; };
-layout(set = 0, binding = 20, std430) readonly buffer EnvironmentLevels { EnvironmentLevel levels[]; };
-layout(set = 0, binding = 21, std430) readonly buffer EnvironmentAliases { uint aliases[]; };
-layout(set = 0, binding = 23, std430) readonly buffer EnvironmentTables { float tables[]; };
+// Read as texel buffers (the fast path on lavapipe, and not bound by the
+// storage binding limit): the map's texels (level 0), per map texel the
+// sampled method's alias-table entry (keep probability and texel density as
+// float bits, the other texel), per prefiltered level where it starts and
+// its size, and the prefiltered data (levels, SH, DFG) one vec4 per entry.
+layout(set = 0, binding = 19) uniform samplerBuffer environmentTexels;
+layout(set = 0, binding = 20) uniform usamplerBuffer environmentLevels;
+layout(set = 0, binding = 21) uniform usamplerBuffer environmentSampling;
+layout(set = 0, binding = 23) uniform samplerBuffer environmentTables;
 
 vec3 to_map(vec3 world) {
   return environment_to_map(world, frame.environmentCosRotation, frame.environmentSinRotation);
@@ -24,22 +26,22 @@ vec3 from_map(vec3 map_direction) {
 }
 
 // Texel (x, y) of prefiltered level `level`; level 0 is the map itself.
-vec3 level_texel(int level, int x, int y) {
-  if (level == 0) {
-    uint i = 3u * (uint(y) * frame.environmentWidth + uint(x));
-    return vec3(texels[i], texels[i + 1u], texels[i + 2u]);
-  }
-  EnvironmentLevel l = levels[level];
-  uint i = l.offset + 3u * (uint(y) * l.width + uint(x));
-  return vec3(tables[i], tables[i + 1u], tables[i + 2u]);
+// (first texel, width, height) of level `level`.
+uvec3 level_extent(int level) {
+  return level == 0 ? uvec3(0u, frame.environmentWidth, frame.environmentHeight)
+                    : texelFetch(environmentLevels, level).xyz;
+}
+
+vec3 level_texel(int level, uvec3 extent, int x, int y) {
+  int i = int(extent.x + uint(y) * extent.y + uint(x));
+  return level == 0 ? texelFetch(environmentTexels, i).rgb : texelFetch(environmentTables, i).rgb;
 }
 
 vec3 level_bilinear(int level, vec2 uv) {
-  int width = level == 0 ? int(frame.environmentWidth) : int(levels[level].width);
-  int height = level == 0 ? int(frame.environmentHeight) : int(levels[level].height);
-  BilinearTaps b = environment_bilinear(uv, width, height);
-  vec3 top = level_texel(level, b.x0, b.y0) * (1.0 - b.fx) + level_texel(level, b.x1, b.y0) * b.fx;
-  vec3 bottom = level_texel(level, b.x0, b.y1) * (1.0 - b.fx) + level_texel(level, b.x1, b.y1) * b.fx;
+  uvec3 extent = level_extent(level);
+  BilinearTaps b = environment_bilinear(uv, int(extent.y), int(extent.z));
+  vec3 top = level_texel(level, extent, b.x0, b.y0) * (1.0 - b.fx) + level_texel(level, extent, b.x1, b.y0) * b.fx;
+  vec3 bottom = level_texel(level, extent, b.x0, b.y1) * (1.0 - b.fx) + level_texel(level, extent, b.x1, b.y1) * b.fx;
   return top * (1.0 - b.fy) + bottom * b.fy;
 }
 
@@ -48,7 +50,9 @@ vec3 environment_radiance(vec3 world) {
   return frame.environmentIntensity * level_bilinear(0, environment_uv(to_map(world)));
 }
 
-float texel_pdf(int x, int y) { return tables[frame.texelPdfOffset + uint(y) * frame.environmentWidth + uint(x)]; }
+float texel_pdf(int x, int y) {
+  return uintBitsToFloat(texelFetch(environmentSampling, int(uint(y) * frame.environmentWidth + uint(x))).y);
+}
 
 // A direction (map frame) drawn by luminance from the alias table
 // (engine/ibl/environment_distribution.h); returns its density in .w.
@@ -56,7 +60,8 @@ vec4 sample_environment(uint texel_bits, vec3 u) {
   uint width = frame.environmentWidth;
   uint texel, low;
   umulExtended(texel_bits, width * frame.environmentHeight, texel, low);
-  if (u.x >= tables[frame.keepOffset + texel]) texel = aliases[texel];
+  uvec4 entry = texelFetch(environmentSampling, int(texel));
+  if (u.x >= uintBitsToFloat(entry.x)) texel = entry.z;
   int x = int(texel % width), y = int(texel / width);
   int height = int(frame.environmentHeight);
   float cos_top = environment_row_cos(y, height), cos_bottom = environment_row_cos(y + 1, height);
@@ -84,8 +89,7 @@ vec3 prefiltered_radiance(vec3 map_direction, float alpha) {
 
 vec2 dfg_entry(uint table, int i, int j) {
   uint size = frame.dfgSize;
-  uint k = frame.dfgOffset + 2u * (table * size * size + uint(j) * size + uint(i));
-  return vec2(tables[k], tables[k + 1u]);
+  return texelFetch(environmentTables, int(frame.dfgOffset + table * size * size + uint(j) * size + uint(i))).xy;
 }
 
 vec2 dfg_lookup(uint table, float nv, float alpha) {
@@ -100,10 +104,8 @@ vec2 dfg_lookup(uint table, float nv, float alpha) {
 
 vec3 irradiance_over_pi(vec3 map_normal) {
   vec3 sum = vec3(0.0);
-  for (int i = 0; i < 9; ++i) {
-    uint k = frame.shOffset + 3u * uint(i);
-    sum += vec3(tables[k], tables[k + 1u], tables[k + 2u]) * (sh_cosine_band(i) * sh_basis(i, map_normal));
-  }
+  for (int i = 0; i < 9; ++i)
+    sum += texelFetch(environmentTables, int(frame.shOffset) + i).rgb * (sh_cosine_band(i) * sh_basis(i, map_normal));
   return max(sum, vec3(0.0));
 }
 

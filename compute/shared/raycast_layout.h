@@ -164,8 +164,8 @@ struct FrameParams {
   float shadowOffset;  // 1e-6 x the scene diagonal (docs/rendering.md)
   uint slotsPerRay;    // shadow-ray slots per camera ray: one per light, then the environment's
   uint fallbackCapacity;  // records in each fallback list
-  // The environment (compute/raycast/environment.glsl); offsets count floats
-  // in the environment tables buffer (the map's texels have their own).
+  // The environment (compute/raycast/environment.glsl); offsets count
+  // texels of the environment tables (the map's texels have their own).
   float environmentIntensity;
   float environmentCosRotation;
   float environmentSinRotation;
@@ -173,20 +173,10 @@ struct FrameParams {
   uint environmentSeed;
   uint environmentWidth;
   uint environmentHeight;
-  uint keepOffset;      // sampled: the alias table's keep probabilities, width x height floats
-  uint texelPdfOffset;  // sampled: width x height floats
-  uint levelCount;      // prefiltered: radiance levels (EnvironmentLevel records)
-  uint shOffset;        // prefiltered: 9 x RGB SH coefficients
-  uint dfgOffset;       // prefiltered: the DFG tables, each dfgSize^2 (scale, bias) pairs
+  uint levelCount;  // prefiltered: radiance levels, (first texel, width, height, 0) each
+  uint shOffset;    // prefiltered: 9 RGB SH coefficients
+  uint dfgOffset;   // prefiltered: the DFG tables, each dfgSize^2 (scale, bias) texels
   uint dfgSize;
-};
-
-// One prefiltered radiance level in the environment tables buffer (level 0,
-// the map itself, is read from the texels buffer).
-struct EnvironmentLevel {
-  uint offset;
-  uint width;
-  uint height;
 };
 
 // The AOVs of one pixel (beauty is written separately, as a vec4).

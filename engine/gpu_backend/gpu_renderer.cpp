@@ -3,6 +3,7 @@
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <optional>
@@ -97,18 +98,20 @@ std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
 // with its offsets and sizes set in `frame`: the map's texels, and in one
 // float array what is derived from it.
 struct EnvironmentData {
-  std::vector<float> tables;
-  std::vector<std::uint32_t> alias;  // sampled: the alias table's other texel
-  std::vector<layout::EnvironmentLevel> levels;
+  std::vector<glm::vec4> texels;     // the map, RGB
+  std::vector<Texel> sampling;       // sampled: per map texel (keep bits, density bits, alias, 0)
+  std::vector<Texel> levels;         // prefiltered: (first texel, width, height, 0) per level
+  std::vector<glm::vec4> tables;     // prefiltered: levels 1..n RGB, 9 SH RGB, DFG (scale, bias)
 };
 
 EnvironmentData environmentData(const ibl::EnvironmentLighting& lighting, layout::FrameParams& frame) {
   const scene::Environment& environment = *lighting.environment;
   const scene::EnvironmentMap& map = *environment.map;
   EnvironmentData data;
-  std::vector<float>& t = data.tables;
-  auto offset = [&] { return std::uint32_t(t.size()); };
-  auto append = [&](const auto& values) { t.insert(t.end(), values.begin(), values.end()); };
+  auto appendRgb = [](std::vector<glm::vec4>& to, const std::vector<float>& rgb) {
+    for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) to.emplace_back(rgb[i], rgb[i + 1], rgb[i + 2], 0.0f);
+  };
+  appendRgb(data.texels, map.rgb);
   frame.environmentIntensity = float(environment.intensity);
   frame.environmentCosRotation = float(lighting.cosRotation);
   frame.environmentSinRotation = float(lighting.sinRotation);
@@ -118,26 +121,28 @@ EnvironmentData environmentData(const ibl::EnvironmentLighting& lighting, layout
   frame.environmentHeight = std::uint32_t(map.height);
   if (environment.method == scene::IblMethod::Sampled) {
     const ibl::EnvironmentDistribution& d = lighting.distribution;
-    frame.keepOffset = offset();
-    append(d.keep);
-    frame.texelPdfOffset = offset();
-    append(d.texelPdf);
-    data.alias = d.alias;
+    for (std::size_t i = 0; i < d.keep.size(); ++i)
+      data.sampling.push_back({std::bit_cast<std::uint32_t>(float(d.keep[i])),
+                               std::bit_cast<std::uint32_t>(float(d.texelPdf[i])), d.alias[i], 0});
     return data;
   }
+  std::vector<glm::vec4>& t = data.tables;
+  auto offset = [&] { return std::uint32_t(t.size()); };
   const ibl::PrefilteredEnvironment& p = lighting.prefiltered;
-  data.levels.push_back({0, std::uint32_t(map.width), std::uint32_t(map.height)});  // read from the texels
+  data.levels.push_back({0, std::uint32_t(map.width), std::uint32_t(map.height), 0});  // read from the texels
   for (std::size_t i = 1; i < p.levels.size(); ++i) {
     const ibl::RadianceLevel& level = p.levels[i];
-    data.levels.push_back({offset(), std::uint32_t(level.width), std::uint32_t(level.height)});
-    append(level.rgb);
+    data.levels.push_back({offset(), std::uint32_t(level.width), std::uint32_t(level.height), 0});
+    appendRgb(t, level.rgb);
   }
   frame.levelCount = std::uint32_t(p.levels.size());
   frame.shOffset = offset();
-  for (const glm::dvec3& c : p.irradianceSh) t.insert(t.end(), {float(c.r), float(c.g), float(c.b)});
+  for (const glm::dvec3& c : p.irradianceSh) t.emplace_back(float(c.r), float(c.g), float(c.b), 0.0f);
   frame.dfgOffset = offset();
   frame.dfgSize = p.dfg.empty() ? 0 : std::uint32_t(p.dfg.front().size);
-  for (const ibl::DfgTable& table : p.dfg) append(table.scaleBias);
+  for (const ibl::DfgTable& table : p.dfg)
+    for (std::size_t i = 0; i + 1 < table.scaleBias.size(); i += 2)
+      t.emplace_back(table.scaleBias[i], table.scaleBias[i + 1], 0.0f, 0.0f);
   return data;
 }
 
@@ -188,7 +193,7 @@ struct GeometryBuffers {
 };
 
 struct ShadingBuffers {
-  gpu::Buffer materials, lights, environmentTexels, environmentTables, environmentLevels, environmentAliases;
+  gpu::Buffer materials, lights, environmentTexels, environmentTables, environmentLevels, environmentSampling;
 };
 
 GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed) {
@@ -223,23 +228,21 @@ GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed) {
 
 ShadingBuffers uploadShading(gpu::Device& d, const scene::Scene& scene, const ibl::EnvironmentLighting* lighting,
                              const EnvironmentData& environment, const glm::dvec3& origin) {
-  const std::vector<float> noTexels;
-  const std::vector<float>& texels = lighting ? scene.environment->map->rgb : noTexels;
-  for (const auto& [name, bytes] : {std::pair{"the environment map's texels", texels.size() * sizeof(float)},
-                                    std::pair{"the environment's tables", environment.tables.size() * sizeof(float)}})
-    if (bytes > d.limits().maxStorageBufferBindingSize)
-      throw gpu::Error(name + std::string(" need ") + std::to_string(bytes >> 20) + " MiB in one binding; " +
-                       d.adapterInfo().name + " binds at most " +
-                       std::to_string(d.limits().maxStorageBufferBindingSize >> 20) +
-                       " MiB: use a smaller map (4096 x 2048 fits lavapipe)");
-  const BufferUsage in = BufferUsage::Storage;
+  const std::uint64_t maxTexels = d.limits().maxTexelBufferElements;
+  for (const auto& [name, texels] : {std::pair{"the environment map", environment.texels.size()},
+                                     std::pair{"the environment's tables", environment.tables.size()}})
+    if (texels > maxTexels)
+      throw gpu::Error(name + std::string(" needs ") + std::to_string(texels) + " texels in one texel buffer; " +
+                       d.adapterInfo().name + " addresses at most " + std::to_string(maxTexels) +
+                       ": use a smaller map");
+  const BufferUsage in = BufferUsage::Storage, texel = BufferUsage::Texel;
   ShadingBuffers b;
   b.materials = upload(d, "materials", materialRecords(scene, lighting), in);
   b.lights = upload(d, "lights", lightRecords(scene, origin), in);
-  b.environmentTexels = upload(d, "environment texels", texels, in);
-  b.environmentTables = upload(d, "environment tables", environment.tables, in);
-  b.environmentLevels = upload(d, "environment levels", environment.levels, in);
-  b.environmentAliases = upload(d, "environment aliases", environment.alias, in);
+  b.environmentTexels = upload(d, "environment texels", environment.texels, texel);
+  b.environmentTables = upload(d, "environment tables", environment.tables, texel);
+  b.environmentLevels = upload(d, "environment levels", environment.levels, texel);
+  b.environmentSampling = upload(d, "environment sampling", environment.sampling, texel);
   return b;
 }
 
@@ -312,7 +315,7 @@ std::map<std::uint32_t, const gpu::Buffer*> bindingTable(const GeometryBuffers& 
           {14, &b.shadowRays},     {15, &b.contributions},
           {16, &g.cellBounds},     {18, &b.beauty},
           {19, &s.environmentTexels}, {20, &s.environmentLevels},
-          {21, &s.environmentAliases}, {22, &b.rayRadiance},
+          {21, &s.environmentSampling}, {22, &b.rayRadiance},
           {23, &s.environmentTables}, {24, &b.cameraFallbacks},
           {25, &b.shadowFallbacks}};
 }

@@ -28,6 +28,5 @@ static_assert(sizeof(facet::gpu_layout::FallbackRecord) == 28);
 static_assert(sizeof(facet::gpu_layout::HitRecord) == 32);
 static_assert(sizeof(facet::gpu_layout::LightRecord) == 48);
 static_assert(sizeof(facet::gpu_layout::MaterialRecord) == 68);
-static_assert(sizeof(facet::gpu_layout::FrameParams) == 176);
+static_assert(sizeof(facet::gpu_layout::FrameParams) == 168);
 static_assert(sizeof(facet::gpu_layout::PixelAovs) == 56);
-static_assert(sizeof(facet::gpu_layout::EnvironmentLevel) == 12);
