@@ -209,7 +209,7 @@ Row runFacet(const NamedCage& cage, const Scene& scene, facet::Backend backend, 
   row.primaryRays = report.primaryRays;
   row.shadowRays = report.shadowRays;
   row.traceMs = 0;
-  double primary = 0;  // GPU: camera rays generated and intersected (Embree's loop does both too)
+  double primary = 0;  // GPU: camera rays generated and intersected, fallbacks included (Embree's loop does both too)
   for (const auto& stage : report.stages) {
     row.stages += stage.name + "=" + fmt(stage.milliseconds, "%.2f") + ";";
     if (stage.name == "refine + BVH") {
@@ -217,8 +217,9 @@ Row runFacet(const NamedCage& cage, const Scene& scene, facet::Backend backend, 
       continue;
     }
     row.traceMs += stage.milliseconds;
-    if (stage.name == "raygen" || stage.name == "intersect") primary += stage.milliseconds;
-    if (stage.name == "shadow rays") row.shadowMs = stage.milliseconds;
+    if (stage.name == "intersect" || stage.name == "fallbacks") primary += stage.milliseconds;
+    if (stage.name == "shadow rays" || stage.name == "shadow fallbacks")
+      row.shadowMs = (std::isnan(row.shadowMs) ? 0 : row.shadowMs) + stage.milliseconds;
   }
   if (primary > 0) row.primaryMs = primary;
   if (depthOut) *depthOut = report.image.depth;

@@ -12,7 +12,6 @@
 
 layout(constant_id = 0) const int SHADOW = 0;
 
-layout(set = 0, binding = 8, std430) readonly buffer Rays { RayRecord rays[]; };
 // The camera hits as words: a HitRecord's t first, its float bits ordered as
 // the floats (t >= 0), so atomicMin keeps the nearest.
 layout(set = 0, binding = 9, std430) buffer HitWords { uint hitWords[]; };
@@ -28,6 +27,7 @@ layout(set = 0, binding = 25, std430) readonly buffer ShadowFallbacks { Fallback
 #include "compute/raycast/subdivide_cell.glsl"
 #include "compute/raycast/micro_grid.glsl"
 #include "compute/raycast/cell_reference.glsl"
+#include "compute/raycast/camera_rays.glsl"
 
 const uint HIT_WORDS = 8u;  // sizeof(HitRecord) / 4
 
@@ -42,7 +42,7 @@ void main() {
     ray = to_ray(shadowRays[record.ray].ray);
   } else {
     record = cameraFallbacks[index];
-    ray = to_ray(rays[record.ray]);
+    ray = camera_ray(record.ray);
     ray.tMax = uintBitsToFloat(hitWords[HIT_WORDS * record.ray]);
   }
   Cell cell = cell_of(record.cell);

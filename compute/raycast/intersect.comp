@@ -9,7 +9,6 @@
 
 layout(constant_id = 0) const int METHOD = 0;
 
-layout(set = 0, binding = 8, std430) readonly buffer Rays { RayRecord rays[]; };
 layout(set = 0, binding = 9, std430) writeonly buffer Hits { HitRecord hits[]; };
 layout(set = 0, binding = 24, std430) writeonly buffer CameraFallbacks { FallbackRecord cameraFallbacks[]; };
 
@@ -21,12 +20,13 @@ void defer_cell(uint reference) {
 }
 
 #include "compute/raycast/trace.glsl"
+#include "compute/raycast/camera_rays.glsl"
 
 void main() {
   uint index = invocation_index();
   if (index >= frame.pixelCount * frame.raysPerPixel) return;
   rayIndex = index;
-  Hit hit = trace(to_ray(rays[index]), false);
+  Hit hit = trace(camera_ray(index), false);
   hits[index] = HitRecord(hit.t, hit.patchIndex, hit.object, hit.st.x, hit.st.y, hit.geometricNormal.x,
                           hit.geometricNormal.y, hit.geometricNormal.z);
 }

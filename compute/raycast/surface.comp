@@ -31,7 +31,6 @@ layout(constant_id = 4) const int F_MODEL = -1;
 layout(constant_id = 5) const int ENVIRONMENT = 0;
 layout(constant_id = 6) const int OCCLUSION = 1;
 
-layout(set = 0, binding = 8, std430) readonly buffer Rays { RayRecord rays[]; };
 layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
 layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord materials[]; };
 layout(set = 0, binding = 12, std430) readonly buffer Lights { LightRecord lights[]; };
@@ -43,6 +42,8 @@ layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters;
 #include "compute/raycast/patch_eval.glsl"
 #include "compute/raycast/limit_normal.glsl"
 #include "compute/raycast/environment.glsl"
+#include "compute/raycast/ray.glsl"
+#include "compute/raycast/camera_rays.glsl"
 
 float infinity() { return uintBitsToFloat(0x7f800000u); }
 
@@ -141,8 +142,8 @@ void main() {
   uint pixel = index / frame.raysPerPixel;
   HitRecord hit = hits[index];
   uint firstSlot = index * frame.slotsPerRay;
-  RayRecord ray = rays[index];
-  vec3 direction = vec3(ray.directionX, ray.directionY, ray.directionZ);
+  Ray ray = camera_ray(index);
+  vec3 direction = ray.direction;
 
   if (hit.patchIndex == FACET_NO_HIT) {
     if (centre) aovs[pixel] = PixelAovs(infinity(), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, FACET_NO_HIT,
@@ -152,7 +153,7 @@ void main() {
     return;
   }
 
-  vec3 origin = vec3(ray.originX, ray.originY, ray.originZ);
+  vec3 origin = ray.origin;
   ObjectRange range = objects[hit.object];
   PatchRecord record = patches[hit.patchIndex];
   ControlPoints c = load_control_points(record.firstPoint, record.kind);

@@ -26,6 +26,16 @@ vec4 child_entries(uint node, vec3 origin, vec3 inverseDirection, float tMin, fl
   return mix(vec4(INFINITE_DISTANCE), enter, hit);
 }
 
+void order_children(inout vec4 entry, inout uvec4 children, int a, int b) {
+  bool swap = entry[b] < entry[a];
+  float e = entry[a];
+  uint c = children[a];
+  entry[a] = swap ? entry[b] : e;
+  entry[b] = swap ? e : entry[b];
+  children[a] = swap ? children[b] : c;
+  children[b] = swap ? c : children[b];
+}
+
 void traverse(Ray ray, bool anyHit, inout Hit best) {
   vec3 inverseDirection = safe_inverse(ray.direction);
   uint stackReference[TRAVERSAL_STACK];
@@ -39,26 +49,23 @@ void traverse(Ray ray, bool anyHit, inout Hit best) {
     } else {
       uvec4 children;
       vec4 entry = child_entries(reference, ray.origin, inverseDirection, ray.tMin, best.t, children);
-      float nearest = INFINITE_DISTANCE;
-      uint next = FACET_BVH4_EMPTY;
-      for (int c = 0; c < 4; ++c) {
-        if (entry[c] == INFINITE_DISTANCE) continue;
-        bool nearer = entry[c] < nearest;
-        if (nearer && next == FACET_BVH4_EMPTY) {
-          nearest = entry[c];
-          next = children[c];
-          continue;
-        }
-        stackReference[top] = nearer ? next : children[c];
-        stackEntry[top] = nearer ? nearest : entry[c];
-        ++top;
-        if (nearer) {
-          nearest = entry[c];
-          next = children[c];
-        }
+      // Nearest first: a sorting network orders the four (closest hit
+      // only; any hit takes them as they come), the far ones are stacked.
+      if (!anyHit) {
+        order_children(entry, children, 0, 1);
+        order_children(entry, children, 2, 3);
+        order_children(entry, children, 0, 2);
+        order_children(entry, children, 1, 3);
+        order_children(entry, children, 1, 2);
       }
-      if (next != FACET_BVH4_EMPTY) {
-        reference = next;
+      for (int c = 3; c > 0; --c) {
+        if (entry[c] == INFINITE_DISTANCE) continue;
+        stackReference[top] = children[c];
+        stackEntry[top] = entry[c];
+        ++top;
+      }
+      if (entry[0] != INFINITE_DISTANCE) {
+        reference = children[0];
         continue;
       }
     }

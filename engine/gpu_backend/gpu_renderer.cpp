@@ -38,7 +38,7 @@ enum Stage {
   kDiceGrid,
   kDiceCells,
   kQuadtrees,
-  kRaygen,
+  kRefit,
   kIntersect,
   kCompactCameraFallbacks,
   kCameraFallbacks,
@@ -53,8 +53,8 @@ enum Stage {
   kStageCount
 };
 const char* const kStageNames[kStageCount] = {
-    "dice grid", "dice cells", "quadtrees",   "raygen",    "intersect", "compact", "fallbacks", "fallbacks",
-    "surface",   "compact",    "shadow rays", "compact",   "fallbacks", "gather",  "resolve"};
+    "dice grid", "dice cells", "quadtrees", "refit", "intersect", "compact", "fallbacks", "fallbacks", "surface",
+    "compact",   "shadow rays", "compact",  "shadow fallbacks", "gather",  "resolve"};
 
 // A 2D grid of 64-wide workgroups covering `invocations` (kernels index with
 // invocation_index()).
@@ -188,7 +188,7 @@ double sharedModel(const scene::Scene& scene, int materials::Material::*model) {
 // The scene's buffers for the GPU, rebased on the eye (gpu_scene.h): the
 // geometry, kept while it does not change, and what shades it.
 struct GeometryBuffers {
-  gpu::Buffer nodes, patches, headers, points, objects, gridVertices, edgeMidpoints, cellBounds;
+  gpu::Buffer nodes, patches, headers, points, objects, gridVertices, edgeMidpoints, cellBounds, refitOrder;
   std::uint64_t bytes = 0;
 };
 
@@ -220,6 +220,7 @@ GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed) {
   b.gridVertices = d.createBuffer({"grid vertices", bufferBytes(packed.gridVertices * 16), diced});
   b.edgeMidpoints = d.createBuffer({"edge midpoints", bufferBytes(packed.edgeMidpoints * 16), diced});
   b.cellBounds = d.createBuffer({"cell bounds", bufferBytes(packed.cellBounds * 16), diced});
+  b.refitOrder = upload(d, "refit order", packed.refitOrder, in);
   for (const gpu::Buffer* buffer : {&b.nodes, &b.patches, &b.headers, &b.points, &b.objects, &b.gridVertices,
                                     &b.edgeMidpoints, &b.cellBounds})
     b.bytes += buffer->size();
@@ -268,7 +269,7 @@ std::uint64_t geometryKey(const GpuScene& packed, bool tessellated, float tolera
 
 // What one band of pixels needs, reused band after band.
 struct BandBuffers {
-  gpu::Buffer frame, rays, hits, shadowRays, contributions, aovs, rayRadiance, beauty, counters;
+  gpu::Buffer frame, hits, shadowRays, contributions, aovs, rayRadiance, beauty, counters;
   gpu::Buffer cameraFallbacks, shadowFallbacks;  // exact method: FallbackRecords, fallbackCapacity each
   gpu::Buffer aovsHost, beautyHost, countersHost;
   std::uint64_t bytes = 0;
@@ -281,7 +282,6 @@ BandBuffers allocateBands(gpu::Device& d, std::uint64_t bandPixels, std::uint64_
   b.cameraFallbacks = storage(d, "camera ray fallbacks", fallbackBytes);
   b.shadowFallbacks = storage(d, "shadow ray fallbacks", fallbackBytes);
   b.frame = d.createBuffer({"frame", sizeof(layout::FrameParams), BufferUsage::Uniform | BufferUsage::CopyDst});
-  b.rays = storage(d, "camera rays", bandRays * sizeof(layout::RayRecord));
   b.hits = storage(d, "camera hits", bandRays * sizeof(layout::HitRecord));
   b.shadowRays = storage(d, "shadow rays", bandRays * slots * sizeof(layout::ShadowRayRecord));
   b.contributions = storage(d, "light contributions", bandRays * slots * 16);
@@ -294,7 +294,7 @@ BandBuffers allocateBands(gpu::Device& d, std::uint64_t bandPixels, std::uint64_
   b.beautyHost = d.createBuffer({"beauty readback", b.beauty.size(), BufferUsage::MapRead | BufferUsage::CopyDst});
   b.countersHost =
       d.createBuffer({"counter readback", b.counters.size(), BufferUsage::MapRead | BufferUsage::CopyDst});
-  for (const gpu::Buffer* buffer : {&b.rays, &b.hits, &b.shadowRays, &b.contributions, &b.aovs, &b.rayRadiance,
+  for (const gpu::Buffer* buffer : {&b.hits, &b.shadowRays, &b.contributions, &b.aovs, &b.rayRadiance,
                                     &b.beauty, &b.cameraFallbacks, &b.shadowFallbacks})
     b.bytes += buffer->size();
   return b;
@@ -309,7 +309,7 @@ std::map<std::uint32_t, const gpu::Buffer*> bindingTable(const GeometryBuffers& 
           {2, &g.patches},         {3, &g.points},
           {4, &g.objects},         {5, &g.gridVertices},
           {6, &g.edgeMidpoints},   {7, &g.headers},
-          {8, &b.rays},            {9, &b.hits},
+          {9, &b.hits},
           {10, &b.counters},       {11, &s.materials},
           {12, &s.lights},         {13, &b.aovs},
           {14, &b.shadowRays},     {15, &b.contributions},
@@ -317,7 +317,7 @@ std::map<std::uint32_t, const gpu::Buffer*> bindingTable(const GeometryBuffers& 
           {19, &s.environmentTexels}, {20, &s.environmentLevels},
           {21, &s.environmentSampling}, {22, &b.rayRadiance},
           {23, &s.environmentTables}, {24, &b.cameraFallbacks},
-          {25, &b.shadowFallbacks}};
+          {25, &b.shadowFallbacks}, {26, &g.refitOrder}};
 }
 
 gpu::BindGroup bindGroup(gpu::Device& d, const gpu::ComputePipeline& pipeline, const std::string& label,
@@ -377,7 +377,7 @@ GpuRenderer::GpuRenderer(gpu::Device& device) : device_(device) {
       {"dice_grid", raycast::spirv::dice_grid},
       {"dice_cells", raycast::spirv::dice_cells},
       {"build_quadtrees", raycast::spirv::build_quadtrees},
-      {"raygen", raycast::spirv::raygen},
+      {"refit_top_levels", raycast::spirv::refit_top_levels},
       {"intersect", raycast::spirv::intersect},
       {"surface", raycast::spirv::surface},
       {"dispatch_args", raycast::spirv::dispatch_args},
@@ -440,7 +440,7 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
 
   const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
   const std::uint64_t slotBytes = sizeof(layout::ShadowRayRecord) + 16;
-  const std::uint64_t rayBytes = sizeof(layout::RayRecord) + sizeof(layout::HitRecord) + 16 + frame.slotsPerRay * slotBytes;
+  const std::uint64_t rayBytes = sizeof(layout::HitRecord) + 16 + frame.slotsPerRay * slotBytes;
   const std::uint64_t pixelBytes = frame.raysPerPixel * rayBytes + sizeof(layout::PixelAovs) + 16;
   const std::uint64_t bandPixels = std::min<std::uint64_t>(pixels, std::max<std::uint64_t>(1, kBandBytes / pixelBytes));
   // Fallbacks are rare (cells Newton leaves undecided); a band whose lists
@@ -456,7 +456,6 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   const double environmentMethod = !scene.environment                                       ? 0
                                    : scene.environment->method == scene::IblMethod::Sampled ? 1
                                                                                             : 2;
-  gpu::ComputePipeline& raygen = pipeline("raygen", {});
   gpu::ComputePipeline& intersect = pipeline("intersect", methodConstant);
   gpu::ComputePipeline& surface =
       pipeline("surface", {{"METHOD", method},
@@ -510,19 +509,20 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
     pass(encoder, kDiceCells, diceCells, bindGroup(d, diceCells, "dice cells", table), packed.blocks);
     gpu::ComputePipeline& quadtrees = pipeline("build_quadtrees", {});
     pass(encoder, kQuadtrees, quadtrees, bindGroup(d, quadtrees, "build quadtrees", table), packed.patches.size());
+    gpu::ComputePipeline& refit = pipeline("refit_top_levels", {});
+    beginPass(encoder, kRefit, refit, bindGroup(d, refit, "refit top levels", table)).dispatchWorkgroups(1);
     d.queue().submit(encoder.finish());
     d.queue().waitIdle();
-    addStageTimes(kDiceGrid, kQuadtrees);
+    addStageTimes(kDiceGrid, kRefit);
   }
 
   // Stages per band: trace and shade, then read back.
   struct BandGroups {
-    gpu::BindGroup raygen, intersect, surface, dispatchArgs, shadow, gather, resolve;
+    gpu::BindGroup intersect, surface, dispatchArgs, shadow, gather, resolve;
     gpu::BindGroup cameraFallbacks, resolveCameraFallbacks, shadowFallbacks;
   };
   auto bandGroups = [&] {
-    BandGroups g{bindGroup(d, raygen, "raygen", table),
-                 bindGroup(d, intersect, "intersect", table),
+    BandGroups g{bindGroup(d, intersect, "intersect", table),
                  bindGroup(d, surface, "surface", table),
                  bindGroup(d, dispatchArgs, "dispatch args", table),
                  bindGroup(d, shadow, "shadow", table),
@@ -556,7 +556,6 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
 
     gpu::CommandEncoder encoder = d.createCommandEncoder({"render band"});
     encoder.clearBuffer(band.counters);
-    pass(encoder, kRaygen, raygen, groups.raygen, rays);
     pass(encoder, kIntersect, intersect, groups.intersect, rays);
     if (!tessellated) {
       compact(encoder, kCompactCameraFallbacks);
@@ -580,7 +579,7 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
     encoder.copyBufferToBuffer(band.counters, 0, band.countersHost, 0, band.counters.size());
     d.queue().submit(encoder.finish());
     d.queue().waitIdle();
-    addStageTimes(kRaygen, kResolve);
+    addStageTimes(kIntersect, kResolve);
 
     const layout::RenderCounters counters = band.countersHost.mapped<layout::RenderCounters>()[0];
     const std::uint32_t needed = std::max(counters.cameraFallbacks, counters.shadowFallbacks);

@@ -10,17 +10,19 @@
 //   dice grid    tessellated method only: the micro-grid's limit points
 //   dice cells   every cell's box, the last level of each patch's quadtree
 //   quadtrees    the quadtrees' upper levels
+//   refit        the top levels' boxes shrunk to the diced cells
 // then per band of pixels:
-//   raygen       camera rays (the centre ray, plus spp stratified ones if > 1)
-//   intersect    closest hit per camera ray: trace() of compute/raycast/trace.glsl
+//   intersect    closest hit per camera ray (computed in the kernel, as
+//                compute/raycast/camera_rays.glsl does wherever it is needed):
+//                trace() of compute/raycast/trace.glsl
 //   compact      a list's length becomes its pass's indirect dispatch
 //   fallbacks    exact method: the cells Newton left undecided, subdivided
 //   surface      hit point, limit normal, AOVs, per light slot its unshadowed
 //                radiance and, where it needs one, a shadow ray appended to
 //                one compacted list; the environment's share; misses only
 //                look up the environment
-//   shadow rays  any hit along each listed ray (indirect dispatch) clears its
-//                slot; then the exact method's fallbacks for shadow rays
+//   shadow rays  any hit along each listed ray (indirect dispatch) clears its slot
+//   shadow fallbacks  exact method: the same for the shadow rays' cells
 //   gather       per camera ray, the sum of its slots
 //   resolve      beauty and coverage per pixel
 // Large images are rendered in bands of pixels so that one band's buffers

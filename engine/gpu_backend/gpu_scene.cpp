@@ -276,6 +276,20 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
     range.firstQuadtreeNode += std::uint32_t(topNodes);
     for (const auto& [texel, component] : patchSlots[i]) packed.topNodes[texel][component] += range.firstQuadtreeNode;
   }
+  // Post-order from the root: a node's top-level children come first.
+  std::vector<std::pair<std::uint32_t, bool>> stack{{packed.rootNode, false}};
+  while (!stack.empty()) {
+    const auto [node, childrenDone] = stack.back();
+    stack.pop_back();
+    if (childrenDone) {
+      packed.refitOrder.push_back(node);
+      continue;
+    }
+    stack.push_back({node, true});
+    for (std::uint32_t reference :
+         packed.topNodes[std::size_t(node) * layout::FACET_BVH4_TEXELS + layout::FACET_BVH4_REFERENCES])
+      if (reference < topNodes) stack.push_back({reference, false});
+  }
   return packed;
 }
 

@@ -26,6 +26,9 @@ using Texel = std::array<std::uint32_t, 4>;
 struct GpuScene {
   std::vector<Texel> topNodes;  // nodes 0 .. topNodes.size() / FACET_BVH4_TEXELS - 1 of the node buffer
   std::uint32_t rootNode = 0;
+  // The top nodes, children before parents: the order in which their boxes
+  // are refitted to the diced cells (compute/raycast/refit_top_levels.comp).
+  std::vector<std::uint32_t> refitOrder;
   std::uint64_t nodeCount = 0;  // top levels and every quadtree
   std::vector<gpu_layout::PatchRecord> patches;
   std::vector<Texel> headers;  // FACET_HEADER_TEXELS per patch
