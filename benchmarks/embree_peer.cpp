@@ -32,6 +32,103 @@ float embreeSharpness(float sharpness) {
   return sharpness >= 10.0f ? std::numeric_limits<float>::infinity() : sharpness;
 }
 
+// What the casting loops share: the scene, the camera's rays and the depth image.
+struct ImageCast {
+  RTCScene scene;
+  camera::CameraFrame frame;
+  int width;
+  int height;
+  float* depth;
+
+  // The unit ray direction through pixel (x, y)'s centre, in Embree's float.
+  glm::vec3 direction(int x, int y) const {
+    return glm::vec3(camera::camera_ray_direction(frame, x + 0.5, y + 0.5, double(width), double(height)));
+  }
+  float* pixel(int x, int y) const { return depth + std::size_t(y) * std::size_t(width) + std::size_t(x); }
+};
+
+// Rows [row0, row1), one rtcIntersect1 per pixel.
+void castPixelRows(const ImageCast& c, RTCIntersectContext& context, int row0, int row1) {
+  for (int y = row0; y < row1; ++y)
+    for (int x = 0; x < c.width; ++x) {
+      const glm::vec3 d = c.direction(x, y);
+      RTCRayHit rh{};
+      rh.ray.org_x = float(c.frame.eye.x);
+      rh.ray.org_y = float(c.frame.eye.y);
+      rh.ray.org_z = float(c.frame.eye.z);
+      rh.ray.dir_x = d.x;
+      rh.ray.dir_y = d.y;
+      rh.ray.dir_z = d.z;
+      rh.ray.tfar = std::numeric_limits<float>::infinity();
+      rh.ray.mask = 0xFFFFFFFFu;
+      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+      rtcIntersect1(c.scene, &context, &rh);
+      if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) *c.pixel(x, y) = rh.ray.tfar;
+    }
+}
+
+// Rows [row0, row1) (row0 even), one rtcIntersect8 per 4×2 pixel tile; the
+// lanes past the image's right edge or row1 are masked off.
+constexpr int kTileWidth = 4;
+constexpr int kTileHeight = 2;
+static_assert(kTileWidth * kTileHeight == 8, "one RTCRayHit8 per tile");
+
+void castTileRows(const ImageCast& c, RTCIntersectContext& context, int row0, int row1) {
+  for (int y0 = row0; y0 < row1; y0 += kTileHeight)
+    for (int x0 = 0; x0 < c.width; x0 += kTileWidth) {
+      alignas(32) int valid[8];
+      alignas(32) RTCRayHit8 rh{};
+      for (int lane = 0; lane < 8; ++lane) {
+        const int x = x0 + lane % kTileWidth, y = y0 + lane / kTileWidth;
+        valid[lane] = x < c.width && y < row1 ? -1 : 0;
+        rh.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+        rh.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+        if (!valid[lane]) continue;
+        const glm::vec3 d = c.direction(x, y);
+        rh.ray.org_x[lane] = float(c.frame.eye.x);
+        rh.ray.org_y[lane] = float(c.frame.eye.y);
+        rh.ray.org_z[lane] = float(c.frame.eye.z);
+        rh.ray.dir_x[lane] = d.x;
+        rh.ray.dir_y[lane] = d.y;
+        rh.ray.dir_z[lane] = d.z;
+        rh.ray.tfar[lane] = std::numeric_limits<float>::infinity();
+        rh.ray.mask[lane] = 0xFFFFFFFFu;
+      }
+      rtcIntersect8(valid, c.scene, &context, &rh);
+      for (int lane = 0; lane < 8; ++lane)
+        if (valid[lane] && rh.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID)
+          *c.pixel(x0 + lane % kTileWidth, y0 + lane / kTileWidth) = rh.ray.tfar[lane];
+    }
+}
+
+// Fills `depth` (+inf on a miss) by `castRows` on `threads` threads and
+// returns the time in ms. Rows are handed out in blocks (whole tiles high) so
+// that every thread stays busy whatever part of the image the surface covers.
+template <typename CastRows>
+double castInRowBlocks(RTCScene scene, int threads, const scene::Camera& camera, int width, int height,
+                       std::vector<float>& depth, CastRows castRows) {
+  depth.assign(std::size_t(width) * std::size_t(height), std::numeric_limits<float>::infinity());
+  const ImageCast image{scene, camera::cameraFrame(camera, width, height), width, height, depth.data()};
+  std::atomic<int> nextRow{0};
+  constexpr int kRowsPerBlock = 8;
+  static_assert(kRowsPerBlock % kTileHeight == 0, "blocks of whole tiles");
+  auto work = [&] {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    for (;;) {
+      const int row0 = nextRow.fetch_add(kRowsPerBlock);
+      if (row0 >= height) break;
+      castRows(image, context, row0, std::min(height, row0 + kRowsPerBlock));
+    }
+  };
+  const double start = nowMs();
+  std::vector<std::thread> workers;
+  for (int t = 0; t < threads; ++t) workers.emplace_back(work);
+  for (std::thread& t : workers) t.join();
+  return nowMs() - start;
+}
+
 }  // namespace
 
 struct EmbreeSubdivision::Handles {
@@ -118,43 +215,12 @@ double EmbreeSubdivision::setTessellationRate(int rate) {
 
 double EmbreeSubdivision::castPrimary(const scene::Camera& camera, int width, int height,
                                       std::vector<float>& depth) const {
-  depth.assign(std::size_t(width) * std::size_t(height), std::numeric_limits<float>::infinity());
-  const camera::CameraFrame frame = camera::cameraFrame(camera, width, height);
-  RTCScene scene = handles_->scene;
-  // Rows are handed out in blocks so that both threads stay busy whatever
-  // part of the image the surface covers.
-  std::atomic<int> nextRow{0};
-  constexpr int kRowsPerBlock = 8;
-  auto work = [&] {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    for (;;) {
-      const int row0 = nextRow.fetch_add(kRowsPerBlock);
-      if (row0 >= height) break;
-      for (int y = row0; y < std::min(height, row0 + kRowsPerBlock); ++y)
-        for (int x = 0; x < width; ++x) {
-          const glm::dvec3 d = camera::camera_ray_direction(frame, x + 0.5, y + 0.5, double(width), double(height));
-          RTCRayHit rh{};
-          rh.ray.org_x = float(camera.eye.x);
-          rh.ray.org_y = float(camera.eye.y);
-          rh.ray.org_z = float(camera.eye.z);
-          rh.ray.dir_x = float(d.x);
-          rh.ray.dir_y = float(d.y);
-          rh.ray.dir_z = float(d.z);
-          rh.ray.tfar = std::numeric_limits<float>::infinity();
-          rh.ray.mask = 0xFFFFFFFFu;
-          rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-          rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-          rtcIntersect1(scene, &context, &rh);
-          if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) depth[std::size_t(y) * std::size_t(width) + x] = rh.ray.tfar;
-        }
-    }
-  };
-  const double start = nowMs();
-  std::vector<std::thread> workers;
-  for (int t = 0; t < threads_; ++t) workers.emplace_back(work);
-  for (std::thread& t : workers) t.join();
-  return nowMs() - start;
+  return castInRowBlocks(handles_->scene, threads_, camera, width, height, depth, castPixelRows);
+}
+
+double EmbreeSubdivision::castPrimary8(const scene::Camera& camera, int width, int height,
+                                       std::vector<float>& depth) const {
+  return castInRowBlocks(handles_->scene, threads_, camera, width, height, depth, castTileRows);
 }
 
 }  // namespace facet::peers

@@ -157,7 +157,7 @@ struct Row {
   std::string cage;
   int patches = 0;  // facet: limit patches after isolation; Embree: cage faces
   int size = 0;
-  std::string engine;                                          // facet-gpu, facet-cpu, embree
+  std::string engine;                                          // facet-gpu, facet-cpu, embree, embree8
   std::string method;                                          // exact, tess k=.., rate=..
   double refineMs = std::numeric_limits<double>::quiet_NaN();  // refine + BVH, or Embree commit
   double primaryMs = std::numeric_limits<double>::quiet_NaN();
@@ -188,6 +188,14 @@ std::string csvField(double v) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.6g", v);
   return buffer;
+}
+
+// Embree's rows: "embree" casts one rtcIntersect1 per pixel, "embree8" one
+// rtcIntersect8 per 4×2 pixel tile (the same rays).
+const std::string kEmbreeEngines[] = {"embree", "embree8"};
+
+bool isEmbree(const Row& r) {
+  return std::find(std::begin(kEmbreeEngines), std::end(kEmbreeEngines), r.engine) != std::end(kEmbreeEngines);
 }
 
 // ---------------------------------------------------------------- facet
@@ -228,22 +236,24 @@ Row runFacet(const NamedCage& cage, const Scene& scene, facet::Backend backend, 
 
 // ---------------------------------------------------------------- matching
 
-// Among `candidates`, the Embree row whose mean depth error is the largest not
+// Among `engine`'s rows, the one whose mean depth error is the largest not
 // above `target` (the fastest rate that is at least as accurate).
-const Row* matchEmbree(const std::vector<Row>& rows, const std::string& cage, int size, double target) {
+const Row* matchEmbree(const std::vector<Row>& rows, const std::string& engine, const std::string& cage, int size,
+                       double target) {
   const Row* best = nullptr;
   for (const Row& r : rows) {
-    if (r.engine != "embree" || r.cage != cage || r.size != size) continue;
+    if (r.engine != engine || r.cage != cage || r.size != size) continue;
     if (!(r.error.meanRelative <= target)) continue;
     if (!best || r.error.meanRelative > best->error.meanRelative) best = &r;
   }
   return best;
 }
 
-const Row* mostAccurateEmbree(const std::vector<Row>& rows, const std::string& cage, int size) {
+const Row* mostAccurateEmbree(const std::vector<Row>& rows, const std::string& engine, const std::string& cage,
+                              int size) {
   const Row* best = nullptr;
   for (const Row& r : rows)
-    if (r.engine == "embree" && r.cage == cage && r.size == size && std::isfinite(r.error.meanRelative) &&
+    if (r.engine == engine && r.cage == cage && r.size == size && std::isfinite(r.error.meanRelative) &&
         (!best || r.error.meanRelative < best->error.meanRelative))
       best = &r;
   return best;
@@ -255,6 +265,7 @@ struct Match {
   std::string facetMethod;
   double facetMrays = 0;
   double facetError = 0;
+  std::string embreeEngine;
   const Row* embree = nullptr;  // null: no rate reached the error
   const Row* closest = nullptr;
 };
@@ -304,6 +315,8 @@ int main(int argc, char** argv) {
     std::vector<Row> rows;
     std::vector<std::string> skipped;
     std::vector<Match> matches;
+    std::vector<std::string> checks;  // --quick: embree8's depth against embree's
+    bool checksPassed = true;
 
     // Warm-up: compile every GPU pipeline once outside the timed renders.
     {
@@ -355,25 +368,45 @@ int main(int argc, char** argv) {
         rows.push_back(gpuTess);
 
 #if FACET_HAVE_EMBREE
-        for (std::size_t r = 0; r < rates.size(); ++r) {
-          commitMs[r] = embree.setTessellationRate(rates[r]);
+        // Median of 3 casts by `cast` into `out`, as a row of `engine`.
+        using Cast = double (facet::peers::EmbreeSubdivision::*)(const facet::scene::Camera&, int, int,
+                                                                 std::vector<float>&) const;
+        auto embreeRow = [&](const std::string& engine, Cast cast, double commit, int rate, std::vector<float>& out) {
           std::vector<double> times;
-          for (int rep = 0; rep < 3; ++rep) times.push_back(embree.castPrimary(scene.camera, size, size, depth));
+          for (int rep = 0; rep < 3; ++rep) times.push_back((embree.*cast)(scene.camera, size, size, out));
           std::sort(times.begin(), times.end());
           Row row;
           row.cage = cage.name;
           row.patches = cage.cage.faceCount();
           row.size = size;
-          row.engine = "embree";
-          row.method = "rate=" + std::to_string(rates[r]);
-          row.refineMs = commitMs[r];
+          row.engine = engine;
+          row.method = "rate=" + std::to_string(rate);
+          row.refineMs = commit;
           row.primaryMs = times[1];
           row.traceMs = times[1];
           row.primaryRays = std::uint64_t(size) * std::uint64_t(size);
-          row.error = depthError(depth, referenceDepth);
-          row.stages = "commit=" + fmt(commitMs[r], "%.2f") + ";intersect(median of 3)=" + fmt(times[1], "%.2f") + ";";
+          row.error = depthError(out, referenceDepth);
+          row.stages = "commit=" + fmt(commit, "%.2f") + ";intersect(median of 3)=" + fmt(times[1], "%.2f") + ";";
           row.note = embree.notes();
-          rows.push_back(row);
+          return row;
+        };
+        std::vector<float> depth8;
+        for (std::size_t r = 0; r < rates.size(); ++r) {
+          commitMs[r] = embree.setTessellationRate(rates[r]);
+          rows.push_back(
+              embreeRow(kEmbreeEngines[0], &facet::peers::EmbreeSubdivision::castPrimary, commitMs[r], rates[r], depth));
+          rows.push_back(embreeRow(kEmbreeEngines[1], &facet::peers::EmbreeSubdivision::castPrimary8, commitMs[r],
+                                   rates[r], depth8));
+          if (quick) {
+            // rtcIntersect8 must see what rtcIntersect1 sees: same coverage, depth to float rounding.
+            const DepthError e = depthError(depth8, depth);
+            const bool ok = e.coverageMismatch == 0 && !(e.maxRelative >= 1e-5);
+            checksPassed = checksPassed && ok;
+            checks.push_back("embree8 vs embree depth on " + cage.name + " " + std::to_string(size) + "² rate=" +
+                             std::to_string(rates[r]) + ": max rel. diff " + fmtSci(e.maxRelative) + " over " +
+                             std::to_string(e.bothCovered) + " pixels, coverage mismatch " +
+                             std::to_string(e.coverageMismatch) + (ok ? ": ok" : ": FAILED (limit 1e-5, 0)"));
+          }
         }
 #endif
       }
@@ -383,17 +416,20 @@ int main(int argc, char** argv) {
     // Matches are taken once every row is in (rows holds them by address).
     for (const Row& facetRow : rows) {
       if (facetRow.engine != "facet-gpu") continue;
-      Match m;
-      m.cage = facetRow.cage;
-      m.size = facetRow.size;
-      m.facetMethod = facetRow.method;
-      m.facetMrays = facetRow.primaryMrays();
-      m.facetError = facetRow.error.meanRelative;
-      if (std::isfinite(m.facetError)) {
-        m.embree = matchEmbree(rows, m.cage, m.size, m.facetError);
-        m.closest = mostAccurateEmbree(rows, m.cage, m.size);
+      for (const std::string& engine : kEmbreeEngines) {
+        Match m;
+        m.cage = facetRow.cage;
+        m.size = facetRow.size;
+        m.facetMethod = facetRow.method;
+        m.facetMrays = facetRow.primaryMrays();
+        m.facetError = facetRow.error.meanRelative;
+        m.embreeEngine = engine;
+        if (std::isfinite(m.facetError)) {
+          m.embree = matchEmbree(rows, engine, m.cage, m.size, m.facetError);
+          m.closest = mostAccurateEmbree(rows, engine, m.cage, m.size);
+        }
+        matches.push_back(m);
       }
-      matches.push_back(m);
     }
 
     // ------------------------------------------------------------ table
@@ -408,40 +444,42 @@ int main(int argc, char** argv) {
                   r.patches, r.size, r.engine.c_str(), r.method.c_str(), fmt(r.refineMs).c_str(),
                   fmt(r.primaryMs).c_str(), fmt(r.shadowMs).c_str(), fmt(r.traceMs).c_str(),
                   fmt(r.primaryMrays(), "%.2f").c_str(), fmt(r.shadowMrays(), "%.2f").c_str(),
-                  r.engine == "embree" ? "—" : fmt(r.allMrays(), "%.2f").c_str(), fmtSci(r.error.maxRelative).c_str(),
+                  isEmbree(r) ? "—" : fmt(r.allMrays(), "%.2f").c_str(), fmtSci(r.error.maxRelative).c_str(),
                   fmtSci(r.error.meanRelative).c_str());
     }
 #if FACET_HAVE_EMBREE
     std::printf(
         "\nEmbree at equal depth error: the fastest tessellation rate whose mean relative depth error is not\n"
-        "above facet GPU's (primary rays only, rtcIntersect1 on %d threads):\n\n",
+        "above facet GPU's (primary rays only on %d threads; embree: rtcIntersect1 per pixel, embree8:\n"
+        "rtcIntersect8 per 4×2 pixel tile):\n\n",
         kThreads);
     std::printf(
-        "| cage | size | facet GPU method | facet mean err | facet primary Mrays/s | Embree rate | Embree mean "
-        "err | Embree Mrays/s | facet / Embree |\n");
-    std::printf("| --- | ---: | --- | ---: | ---: | --- | ---: | ---: | ---: |\n");
+        "| cage | size | facet GPU method | facet mean err | facet primary Mrays/s | Embree engine | Embree rate | "
+        "Embree mean err | Embree Mrays/s | facet / Embree |\n");
+    std::printf("| --- | ---: | --- | ---: | ---: | --- | --- | ---: | ---: | ---: |\n");
     for (const Match& m : matches) {
       if (m.embree) {
-        std::printf("| %s | %d² | %s | %s | %s | %s | %s | %s | **%s×** |\n", m.cage.c_str(), m.size,
+        std::printf("| %s | %d² | %s | %s | %s | %s | %s | %s | %s | **%s×** |\n", m.cage.c_str(), m.size,
                     m.facetMethod.c_str(), fmtSci(m.facetError).c_str(), fmt(m.facetMrays, "%.2f").c_str(),
-                    m.embree->method.c_str(), fmtSci(m.embree->error.meanRelative).c_str(),
+                    m.embreeEngine.c_str(), m.embree->method.c_str(), fmtSci(m.embree->error.meanRelative).c_str(),
                     fmt(m.embree->primaryMrays(), "%.2f").c_str(),
                     fmt(m.facetMrays / m.embree->primaryMrays(), "%.3f").c_str());
       } else if (m.closest) {
-        std::printf("| %s | %d² | %s | %s | %s | none reaches it; finest: %s | %s | %s | ≤ %s× (vs finest) |\n",
+        std::printf("| %s | %d² | %s | %s | %s | %s | none reaches it; finest: %s | %s | %s | ≤ %s× (vs finest) |\n",
                     m.cage.c_str(), m.size, m.facetMethod.c_str(), fmtSci(m.facetError).c_str(),
-                    fmt(m.facetMrays, "%.2f").c_str(), m.closest->method.c_str(),
+                    fmt(m.facetMrays, "%.2f").c_str(), m.embreeEngine.c_str(), m.closest->method.c_str(),
                     fmtSci(m.closest->error.meanRelative).c_str(), fmt(m.closest->primaryMrays(), "%.2f").c_str(),
                     fmt(m.facetMrays / m.closest->primaryMrays(), "%.3f").c_str());
       } else {
-        std::printf("| %s | %d² | %s | — | %s | no reference depth | — | — | — |\n", m.cage.c_str(), m.size,
-                    m.facetMethod.c_str(), fmt(m.facetMrays, "%.2f").c_str());
+        std::printf("| %s | %d² | %s | — | %s | %s | no reference depth | — | — | — |\n", m.cage.c_str(), m.size,
+                    m.facetMethod.c_str(), fmt(m.facetMrays, "%.2f").c_str(), m.embreeEngine.c_str());
       }
     }
 #else
     std::printf("\nEmbree 3 was not found at build time: no peer comparison.\n");
 #endif
     for (const std::string& s : skipped) std::printf("\nnote: %s", s.c_str());
+    for (const std::string& c : checks) std::printf("\ncheck: %s", c.c_str());
     std::printf("\n\ntotal run time %.1f s\n", runSeconds);
 
     // ------------------------------------------------------------ CSV
@@ -456,13 +494,17 @@ int main(int argc, char** argv) {
               << csvField(r.refineMs) << ',' << csvField(r.primaryMs) << ',' << csvField(r.shadowMs) << ','
               << csvField(r.traceMs) << ',' << r.primaryRays << ',' << r.shadowRays << ',' << csvField(r.primaryMrays())
               << ',' << csvField(r.shadowMrays()) << ','
-              << (r.engine == "embree" ? std::string() : csvField(r.allMrays())) << ',' << csvField(r.error.maxRelative)
+              << (isEmbree(r) ? std::string() : csvField(r.allMrays())) << ',' << csvField(r.error.maxRelative)
               << ',' << csvField(r.error.meanRelative) << ',' << r.error.bothCovered << ',' << r.error.coverageMismatch
               << ",\"" << r.stages << "\",\"" << r.note << "\"\n";
         }
         if (!out) throw std::runtime_error("cannot write " + temporary.string());
       });
       std::printf("wrote %s\n", csvPath.c_str());
+    }
+    if (!checksPassed) {
+      std::fprintf(stderr, "raycast_bench: rtcIntersect8's depth image differs from rtcIntersect1's (see check:)\n");
+      return 1;
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "raycast_bench: %s\n", e.what());

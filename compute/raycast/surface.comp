@@ -10,7 +10,7 @@
 // list (counters.shadowRays), so the shadow pass costs nothing for slots,
 // samples or pixels that need no ray.
 //
-// Specialization: METHOD (0 exact, 1 tessellated), LIGHT_COUNT, ENVIRONMENT
+// Specialization: LIGHT_COUNT, ENVIRONMENT
 // (0 none, 1 sampled, 2 prefiltered), OCCLUSION (sampled: 1 traces the
 // environment's shadow rays), and the BRDF models D_MODEL, G_MODEL,
 // F_MODEL, each -1 when the scene's materials use several (the model is then
@@ -23,7 +23,6 @@
 #include "compute/shared/environment.h"
 #include "compute/shared/random.h"
 
-layout(constant_id = 0) const int METHOD = 0;
 layout(constant_id = 1) const int LIGHT_COUNT = 1;
 layout(constant_id = 2) const int D_MODEL = -1;
 layout(constant_id = 3) const int G_MODEL = -1;
@@ -158,10 +157,12 @@ void main() {
   PatchRecord record = patches[hit.patchIndex];
   ControlPoints c = load_control_points(record.firstPoint, record.kind);
   vec3 n = limit_normal(c, hit.s, hit.tParam);
-  // The exact method's hit point is the limit point; the tessellated one's
-  // lies on the micro-triangle.
-  vec3 position = METHOD == 0 ? evaluate_patch(c, hit.s, hit.tParam).position : origin + hit.t * direction;
-  vec3 ng = METHOD == 0 ? n : vec3(hit.geometricX, hit.geometricY, hit.geometricZ);
+  // A hit on a micro-triangle (the tessellated finish reports its normal)
+  // lies on it; an exact hit is the limit point.
+  vec3 triangleNormal = vec3(hit.geometricX, hit.geometricY, hit.geometricZ);
+  bool onMicroTriangle = triangleNormal != vec3(0.0);
+  vec3 position = onMicroTriangle ? origin + hit.t * direction : evaluate_patch(c, hit.s, hit.tParam).position;
+  vec3 ng = onMicroTriangle ? triangleNormal : n;
   // Two-sided: both normals face the eye.
   if (dot(ng, direction) > 0.0) {
     n = -n;

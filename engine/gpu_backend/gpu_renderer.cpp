@@ -458,8 +458,7 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
                                                                                             : 2;
   gpu::ComputePipeline& intersect = pipeline("intersect", methodConstant);
   gpu::ComputePipeline& surface =
-      pipeline("surface", {{"METHOD", method},
-                           {"LIGHT_COUNT", double(lightCount)},
+      pipeline("surface", {{"LIGHT_COUNT", double(lightCount)},
                            {"ENVIRONMENT", environmentMethod},
                            {"OCCLUSION", scene.environment && scene.environment->occlusion ? 1.0 : 0.0},
                            {"D_MODEL", sharedModel(scene, &materials::Material::distribution)},

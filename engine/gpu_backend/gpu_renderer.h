@@ -45,10 +45,10 @@
 // (a new eye rebases it, so it is diced again).
 //
 // Specialization constants keep each pipeline to what the scene uses: the
-// method, the number of lights, the IBL method and its occlusion, and each
-// BRDF model (D, G, F) when all materials share it. Pipelines are created
-// once per variant and kept, so a renderer that draws many scenes JITs each
-// variant once.
+// method (tracing kernels only), the number of lights, the IBL method and
+// its occlusion, and each BRDF model (D, G, F) when all materials share it.
+// Pipelines are created once per variant and kept, so a renderer that draws
+// many scenes JITs each variant once.
 #pragma once
 
 #include <cstdint>
