@@ -303,8 +303,9 @@ BandBuffers allocateBands(gpu::Device& d, std::uint64_t bandPixels, std::uint64_
 // Every buffer by its binding number: a number names one buffer in every
 // kernel (compute/raycast/scene_bindings.glsl, trace_bindings.glsl and the
 // kernels' own), so each kernel's bind group follows from its layout.
-std::map<std::uint32_t, const gpu::Buffer*> bindingTable(const GeometryBuffers& g, const ShadingBuffers& s,
-                                                         const BandBuffers& b) {
+using BindingTable = std::map<std::uint32_t, const gpu::Buffer*>;
+
+BindingTable bindingTable(const GeometryBuffers& g, const ShadingBuffers& s, const BandBuffers& b) {
   return {{0, &b.frame},           {1, &g.nodes},
           {2, &g.patches},         {3, &g.points},
           {4, &g.objects},         {5, &g.gridVertices},
@@ -321,7 +322,7 @@ std::map<std::uint32_t, const gpu::Buffer*> bindingTable(const GeometryBuffers& 
 }
 
 gpu::BindGroup bindGroup(gpu::Device& d, const gpu::ComputePipeline& pipeline, const std::string& label,
-                         const std::map<std::uint32_t, const gpu::Buffer*>& table) {
+                         const BindingTable& table) {
   gpu::BindGroupLayout groupLayout = pipeline.getBindGroupLayout(0);
   std::vector<gpu::BindGroupEntry> entries;
   for (const gpu::BindGroupLayoutEntry& entry : groupLayout.entries()) entries.push_back({entry.binding, table.at(entry.binding)});
@@ -355,6 +356,75 @@ layout::FrameParams frameParams(const scene::Scene& scene, const scene::SceneGeo
   return f;
 }
 
+// GPU timestamps per compute pass; passes of one name are reported as one
+// stage, in the order they first ran.
+class StageClock {
+ public:
+  explicit StageClock(gpu::Device& device) : timestamps_(device.createQuerySet({"stage timestamps", 2 * kStageCount})) {}
+
+  gpu::ComputePassEncoder begin(gpu::CommandEncoder& encoder, Stage stage, const gpu::ComputePipeline& pipeline,
+                                const gpu::BindGroup& group) {
+    ran_[stage] = true;
+    gpu::ComputePassEncoder pass =
+        encoder.beginComputePass({kStageNames[stage], {&timestamps_, 2u * stage, 2u * stage + 1}});
+    pass.setPipeline(pipeline);
+    pass.setBindGroup(0, group);
+    return pass;
+  }
+
+  void dispatch(gpu::CommandEncoder& encoder, Stage stage, const gpu::ComputePipeline& pipeline,
+                const gpu::BindGroup& group, std::uint64_t invocations) {
+    const auto [x, y] = workgroups(invocations);
+    begin(encoder, stage, pipeline, group).dispatchWorkgroups(x, y);
+  }
+
+  // After the queue is idle: adds the passes of stages first ... last.
+  void read(Stage first, Stage last) {
+    for (int s = first; s <= last; ++s) {
+      if (!ran_[s]) continue;
+      const std::vector<double> ns = timestamps_.readTimestampsNs(2u * std::uint32_t(s), 2);
+      nanoseconds_[s] += ns[1] - ns[0];
+    }
+  }
+
+  void report(std::vector<std::pair<std::string, double>>& stages) const {
+    for (int s = 0; s < kStageCount; ++s) {
+      if (!ran_[s]) continue;
+      auto same = std::find_if(stages.begin(), stages.end(), [&](const auto& st) { return st.first == kStageNames[s]; });
+      if (same == stages.end())
+        stages.emplace_back(kStageNames[s], nanoseconds_[s] * 1e-6);
+      else
+        same->second += nanoseconds_[s] * 1e-6;
+    }
+  }
+
+ private:
+  gpu::QuerySet timestamps_;
+  double nanoseconds_[kStageCount] = {};
+  bool ran_[kStageCount] = {};
+};
+
+// A band's pixels read back into the image; positions return to world space
+// in double.
+void readBand(BandBuffers& band, std::uint64_t first, std::uint64_t count, const glm::dvec3& origin, Image& image) {
+  const auto pixelAovs = band.aovsHost.mapped<layout::PixelAovs>();
+  const auto pixelBeauty = band.beautyHost.mapped<glm::vec4>();
+  for (std::uint64_t i = 0; i < count; ++i) {
+    const layout::PixelAovs& a = pixelAovs[i];
+    const std::size_t p = std::size_t(first + i);
+    image.beauty[p] = pixelBeauty[i];
+    image.depth[p] = a.depth;
+    image.position[p] = a.patchId == layout::FACET_NO_HIT
+                            ? glm::vec3(0.0f)
+                            : glm::vec3(origin + glm::dvec3(a.positionX, a.positionY, a.positionZ));
+    image.geometricNormal[p] = {a.geometricX, a.geometricY, a.geometricZ};
+    image.shadingNormal[p] = {a.shadingX, a.shadingY, a.shadingZ};
+    image.patchId[p] = a.patchId;
+    image.faceId[p] = a.faceId;
+    image.uv[p] = {a.u, a.v};
+  }
+}
+
 }  // namespace
 
 struct GpuRenderer::DicedGeometry {
@@ -372,7 +442,7 @@ double rootTolerance(const scene::Scene& scene, const scene::SceneGeometry& geom
                   std::ldexp(largestCoordinate, -20));
 }
 
-GpuRenderer::GpuRenderer(gpu::Device& device) : device_(device) {
+PipelineCache::PipelineCache(gpu::Device& device) : device_(device) {
   const std::pair<const char*, std::span<const std::uint32_t>> kernels[] = {
       {"dice_grid", raycast::spirv::dice_grid},
       {"dice_cells", raycast::spirv::dice_cells},
@@ -389,7 +459,7 @@ GpuRenderer::GpuRenderer(gpu::Device& device) : device_(device) {
   for (const auto& [name, code] : kernels) modules_.emplace(name, device_.createShaderModule({name, code}));
 }
 
-gpu::ComputePipeline& GpuRenderer::pipeline(const char* kernel, const std::vector<gpu::ConstantEntry>& constants) {
+gpu::ComputePipeline& PipelineCache::get(const char* kernel, const std::vector<gpu::ConstantEntry>& constants) {
   std::string key = kernel;
   for (const gpu::ConstantEntry& c : constants) key += " " + c.key + "=" + std::to_string(c.value);
   auto found = pipelines_.find(key);
@@ -398,13 +468,118 @@ gpu::ComputePipeline& GpuRenderer::pipeline(const char* kernel, const std::vecto
       .first->second;
 }
 
+GpuRenderer::GpuRenderer(gpu::Device& device) : device_(device), pipelines_(device) {}
+
+namespace {
+
+ibl::EnvironmentLighting prepareEnvironment(gpu::Device& d, const scene::Scene& scene) {
+  return ibl::prepareEnvironmentLighting(scene, [&](const scene::EnvironmentMap& map, const ibl::ModelPairs& models) {
+    const ibl::PrefilterSettings settings;
+    // Keyed by the device too: its limits decide how large a map it prefilters whole.
+    return ibl::cachedPrefilter(map, models, settings, "gpu " + d.adapterInfo().name,
+                                [&] { return prefilterOnGpu(d, map, models, settings); });
+  });
+}
+
+// The pipelines of one render, by the scene's specialization constants.
+struct Kernels {
+  gpu::ComputePipeline *intersect, *surface, *dispatchArgs, *shadow, *gather, *resolve;
+  gpu::ComputePipeline *cameraFallbacks = nullptr, *resolveCameraFallbacks = nullptr, *shadowFallbacks = nullptr;
+};
+
+Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, bool tessellated) {
+  const std::vector<gpu::ConstantEntry> method{{"METHOD", tessellated ? 1.0 : 0.0}};
+  const double environmentMethod = !scene.environment                                       ? 0
+                                   : scene.environment->method == scene::IblMethod::Sampled ? 1
+                                                                                            : 2;
+  Kernels k{&pipelines.get("intersect", method),
+            &pipelines.get("surface", {{"LIGHT_COUNT", double(scene.lights.size())},
+                                  {"ENVIRONMENT", environmentMethod},
+                                  {"OCCLUSION", scene.environment && scene.environment->occlusion ? 1.0 : 0.0},
+                                  {"D_MODEL", sharedModel(scene, &materials::Material::distribution)},
+                                  {"G_MODEL", sharedModel(scene, &materials::Material::geometry)},
+                                  {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)}}),
+            &pipelines.get("dispatch_args", {}),
+            &pipelines.get("shadow", method),
+            &pipelines.get("gather", {}),
+            &pipelines.get("resolve", {})};
+  if (!tessellated) {
+    k.cameraFallbacks = &pipelines.get("fallback", {{"SHADOW", 0}});
+    k.resolveCameraFallbacks = &pipelines.get("fallback_resolve", {});
+    k.shadowFallbacks = &pipelines.get("fallback", {{"SHADOW", 1}});
+  }
+  return k;
+}
+
+// Stage: dicing, the micro-grid and every patch's quadtree, then the top
+// levels refitted to them.
+void dice(gpu::Device& d, PipelineCache& pipelines, const GpuScene& packed, bool tessellated,
+          const BindingTable& table, StageClock& clock) {
+  gpu::CommandEncoder encoder = d.createCommandEncoder({"dice"});
+  if (tessellated) {
+    gpu::ComputePipeline& diceGrid = pipelines.get("dice_grid", {});
+    clock.dispatch(encoder, kDiceGrid, diceGrid, bindGroup(d, diceGrid, "dice grid", table),
+                   packed.gridVertices + packed.edgeMidpoints);
+  }
+  gpu::ComputePipeline& diceCells = pipelines.get("dice_cells", {{"METHOD", tessellated ? 1.0 : 0.0}});
+  clock.dispatch(encoder, kDiceCells, diceCells, bindGroup(d, diceCells, "dice cells", table), packed.blocks);
+  gpu::ComputePipeline& quadtrees = pipelines.get("build_quadtrees", {});
+  clock.dispatch(encoder, kQuadtrees, quadtrees, bindGroup(d, quadtrees, "build quadtrees", table),
+                 packed.patches.size());
+  gpu::ComputePipeline& refit = pipelines.get("refit_top_levels", {});
+  clock.begin(encoder, kRefit, refit, bindGroup(d, refit, "refit top levels", table)).dispatchWorkgroups(1);
+  d.queue().submit(encoder.finish());
+  d.queue().waitIdle();
+  clock.read(kDiceGrid, kRefit);
+}
+
+// Stages per band: trace and shade, one command buffer, each list worked
+// off by an indirect dispatch sized from its length.
+void traceBand(gpu::Device& d, const Kernels& k, const BindingTable& table, BandBuffers& band, std::uint64_t rays,
+               std::uint64_t pixels, StageClock& clock) {
+  auto group = [&](const gpu::ComputePipeline* p, const char* label) { return bindGroup(d, *p, label, table); };
+  auto indirect = [&](Stage stage, const gpu::ComputePipeline* p, const gpu::BindGroup& g, std::size_t arguments,
+                      gpu::CommandEncoder& encoder) {
+    clock.begin(encoder, stage, *p, g).dispatchWorkgroupsIndirect(band.counters, arguments);
+  };
+  const gpu::BindGroup dispatchArgs = group(k.dispatchArgs, "dispatch args");
+  auto compact = [&](Stage stage, gpu::CommandEncoder& encoder) {
+    clock.begin(encoder, stage, *k.dispatchArgs, dispatchArgs).dispatchWorkgroups(1);
+  };
+  gpu::CommandEncoder encoder = d.createCommandEncoder({"render band"});
+  encoder.clearBuffer(band.counters);
+  clock.dispatch(encoder, kIntersect, *k.intersect, group(k.intersect, "intersect"), rays);
+  if (k.cameraFallbacks) {
+    compact(kCompactCameraFallbacks, encoder);
+    indirect(kCameraFallbacks, k.cameraFallbacks, group(k.cameraFallbacks, "camera ray fallbacks"),
+             offsetof(layout::RenderCounters, cameraFallbackX), encoder);
+    indirect(kResolveCameraFallbacks, k.resolveCameraFallbacks, group(k.resolveCameraFallbacks, "resolve fallbacks"),
+             offsetof(layout::RenderCounters, cameraFallbackX), encoder);
+  }
+  clock.dispatch(encoder, kSurface, *k.surface, group(k.surface, "surface"), rays);
+  compact(kCompactShadowRays, encoder);
+  indirect(kShadow, k.shadow, group(k.shadow, "shadow"), offsetof(layout::RenderCounters, shadowX), encoder);
+  if (k.shadowFallbacks) {
+    compact(kCompactShadowFallbacks, encoder);
+    indirect(kShadowFallbacks, k.shadowFallbacks, group(k.shadowFallbacks, "shadow ray fallbacks"),
+             offsetof(layout::RenderCounters, shadowFallbackX), encoder);
+  }
+  clock.dispatch(encoder, kGather, *k.gather, group(k.gather, "gather"), rays);
+  clock.dispatch(encoder, kResolve, *k.resolve, group(k.resolve, "resolve"), pixels);
+  encoder.copyBufferToBuffer(band.aovs, 0, band.aovsHost, 0, pixels * sizeof(layout::PixelAovs));
+  encoder.copyBufferToBuffer(band.beauty, 0, band.beautyHost, 0, pixels * 16);
+  encoder.copyBufferToBuffer(band.counters, 0, band.countersHost, 0, band.counters.size());
+  d.queue().submit(encoder.finish());
+  d.queue().waitIdle();
+  clock.read(kIntersect, kResolve);
+}
+
+}  // namespace
+
 GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::SceneGeometry& geometry,
                                     const std::function<void(double)>& progress) {
-  const int width = scene.render.width, height = scene.render.height;
   const int strata = int(std::lround(std::sqrt(scene.render.samplesPerPixel)));
   const bool tessellated = scene.render.method == scene::IntersectionMethod::Tessellated;
-  const double method = tessellated ? 1 : 0;
-  const std::uint32_t lightCount = std::uint32_t(scene.lights.size());
   const glm::dvec3 origin = scene.camera.eye;
   gpu::Device& d = device_;
   GpuRenderResult result;
@@ -415,21 +590,17 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   // Stage: the environment's tables or prefiltered maps (wall clock).
   auto start = std::chrono::steady_clock::now();
   std::optional<ibl::EnvironmentLighting> lighting;
-  if (scene.environment)
-    lighting =
-        ibl::prepareEnvironmentLighting(scene, [&](const scene::EnvironmentMap& map, const ibl::ModelPairs& models) {
-          const ibl::PrefilterSettings settings;
-          // Keyed by the device too: its limits decide how large a map it prefilters whole.
-          return ibl::cachedPrefilter(map, models, settings, "gpu " + d.adapterInfo().name,
-                                      [&] { return prefilterOnGpu(d, map, models, settings); });
-        });
-  if (lighting) result.stageMilliseconds.emplace_back("environment", wallClock(start));
+  if (scene.environment) {
+    lighting = prepareEnvironment(d, scene);
+    result.stageMilliseconds.emplace_back("environment", wallClock(start));
+  }
 
-  // Stage: the BVH's top levels and the patches, packed and uploaded (wall clock).
+  // Stage: the BVH's top levels and the patches, packed and uploaded unless
+  // the last render diced the same geometry (wall clock).
   start = std::chrono::steady_clock::now();
   const GpuScene packed = packScene(scene, geometry, origin, rootTolerance(scene, geometry), tessellated);
   layout::FrameParams frame = frameParams(scene, geometry, strata, packed);
-  frame.slotsPerRay = lightCount + environmentSlots(scene);
+  frame.slotsPerRay = std::uint32_t(scene.lights.size()) + environmentSlots(scene);
   const EnvironmentData environment = lighting ? environmentData(*lighting, frame) : EnvironmentData{};
   const std::uint64_t key = geometryKey(packed, tessellated, frame.tolerance);
   const bool reused = diced_ && diced_->key == key;
@@ -438,7 +609,7 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   const ShadingBuffers shadingBuffers = uploadShading(d, scene, lighting ? &*lighting : nullptr, environment, origin);
   result.stageMilliseconds.emplace_back("top levels", wallClock(start));
 
-  const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
+  const std::uint64_t pixels = std::uint64_t(scene.render.width) * std::uint64_t(scene.render.height);
   const std::uint64_t slotBytes = sizeof(layout::ShadowRayRecord) + 16;
   const std::uint64_t rayBytes = sizeof(layout::HitRecord) + 16 + frame.slotsPerRay * slotBytes;
   const std::uint64_t pixelBytes = frame.raysPerPixel * rayBytes + sizeof(layout::PixelAovs) + 16;
@@ -448,180 +619,38 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   frame.fallbackCapacity = tessellated ? 0 : std::uint32_t(bandPixels * frame.raysPerPixel / 16 + 1024);
   BandBuffers band =
       allocateBands(d, bandPixels, bandPixels * frame.raysPerPixel, frame.slotsPerRay, frame.fallbackCapacity);
-  auto table = bindingTable(geometryBuffers, shadingBuffers, band);
+  BindingTable table = bindingTable(geometryBuffers, shadingBuffers, band);
   result.cells = packed.cells;
-  result.gpuBytes = geometryBuffers.bytes + band.bytes;
 
-  const std::vector<gpu::ConstantEntry> methodConstant{{"METHOD", method}};
-  const double environmentMethod = !scene.environment                                       ? 0
-                                   : scene.environment->method == scene::IblMethod::Sampled ? 1
-                                                                                            : 2;
-  gpu::ComputePipeline& intersect = pipeline("intersect", methodConstant);
-  gpu::ComputePipeline& surface =
-      pipeline("surface", {{"LIGHT_COUNT", double(lightCount)},
-                           {"ENVIRONMENT", environmentMethod},
-                           {"OCCLUSION", scene.environment && scene.environment->occlusion ? 1.0 : 0.0},
-                           {"D_MODEL", sharedModel(scene, &materials::Material::distribution)},
-                           {"G_MODEL", sharedModel(scene, &materials::Material::geometry)},
-                           {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)}});
-  gpu::ComputePipeline& dispatchArgs = pipeline("dispatch_args", {});
-  gpu::ComputePipeline& shadow = pipeline("shadow", methodConstant);
-  gpu::ComputePipeline& gather = pipeline("gather", {});
-  gpu::ComputePipeline& resolve = pipeline("resolve", {});
-
-  gpu::QuerySet timestamps = d.createQuerySet({"stage timestamps", 2 * kStageCount});
-  double stageNs[kStageCount] = {};
-  bool ran[kStageCount] = {};
-  auto beginPass = [&](gpu::CommandEncoder& encoder, Stage stage, gpu::ComputePipeline& p,
-                       const gpu::BindGroup& group) {
-    ran[stage] = true;
-    gpu::ComputePassEncoder computePass =
-        encoder.beginComputePass({kStageNames[stage], {&timestamps, 2u * stage, 2u * stage + 1}});
-    computePass.setPipeline(p);
-    computePass.setBindGroup(0, group);
-    return computePass;
-  };
-  auto pass = [&](gpu::CommandEncoder& encoder, Stage stage, gpu::ComputePipeline& p, const gpu::BindGroup& group,
-                  std::uint64_t invocations) {
-    const auto [x, y] = workgroups(invocations);
-    beginPass(encoder, stage, p, group).dispatchWorkgroups(x, y);
-  };
-  auto addStageTimes = [&](Stage first, Stage last) {
-    for (int s = first; s <= last; ++s) {
-      if (!ran[s]) continue;
-      const std::vector<double> ns = timestamps.readTimestampsNs(2u * std::uint32_t(s), 2);
-      stageNs[s] += ns[1] - ns[0];
-    }
-  };
-
-  // Stage: dicing, the micro-grid and every patch's quadtree, unless the
-  // last render diced the same geometry.
+  StageClock clock(d);
   d.queue().writeBuffer(band.frame, 0, &frame, sizeof(frame));
-  if (!reused) {
-    gpu::CommandEncoder encoder = d.createCommandEncoder({"dice"});
-    if (tessellated) {
-      gpu::ComputePipeline& diceGrid = pipeline("dice_grid", {});
-      pass(encoder, kDiceGrid, diceGrid, bindGroup(d, diceGrid, "dice grid", table),
-           packed.gridVertices + packed.edgeMidpoints);
-    }
-    gpu::ComputePipeline& diceCells = pipeline("dice_cells", methodConstant);
-    pass(encoder, kDiceCells, diceCells, bindGroup(d, diceCells, "dice cells", table), packed.blocks);
-    gpu::ComputePipeline& quadtrees = pipeline("build_quadtrees", {});
-    pass(encoder, kQuadtrees, quadtrees, bindGroup(d, quadtrees, "build quadtrees", table), packed.patches.size());
-    gpu::ComputePipeline& refit = pipeline("refit_top_levels", {});
-    beginPass(encoder, kRefit, refit, bindGroup(d, refit, "refit top levels", table)).dispatchWorkgroups(1);
-    d.queue().submit(encoder.finish());
-    d.queue().waitIdle();
-    addStageTimes(kDiceGrid, kRefit);
-  }
+  if (!reused) dice(d, pipelines_, packed, tessellated, table, clock);
 
-  // Stages per band: trace and shade, then read back.
-  struct BandGroups {
-    gpu::BindGroup intersect, surface, dispatchArgs, shadow, gather, resolve;
-    gpu::BindGroup cameraFallbacks, resolveCameraFallbacks, shadowFallbacks;
-  };
-  auto bandGroups = [&] {
-    BandGroups g{bindGroup(d, intersect, "intersect", table),
-                 bindGroup(d, surface, "surface", table),
-                 bindGroup(d, dispatchArgs, "dispatch args", table),
-                 bindGroup(d, shadow, "shadow", table),
-                 bindGroup(d, gather, "gather", table),
-                 bindGroup(d, resolve, "resolve", table),
-                 {},
-                 {},
-                 {}};
-    if (!tessellated) {
-      g.cameraFallbacks = bindGroup(d, pipeline("fallback", {{"SHADOW", 0}}), "camera ray fallbacks", table);
-      g.resolveCameraFallbacks = bindGroup(d, pipeline("fallback_resolve", {}), "resolve fallbacks", table);
-      g.shadowFallbacks = bindGroup(d, pipeline("fallback", {{"SHADOW", 1}}), "shadow ray fallbacks", table);
-    }
-    return g;
-  };
-  BandGroups groups = bandGroups();
-  auto indirect = [&](gpu::CommandEncoder& encoder, Stage stage, gpu::ComputePipeline& p, const gpu::BindGroup& group,
-                      std::size_t argumentsOffset) {
-    beginPass(encoder, stage, p, group).dispatchWorkgroupsIndirect(band.counters, argumentsOffset);
-  };
-  auto compact = [&](gpu::CommandEncoder& encoder, Stage stage) {
-    beginPass(encoder, stage, dispatchArgs, groups.dispatchArgs).dispatchWorkgroups(1);
-  };
-  result.image = Image(width, height);
+  const Kernels k = kernels(pipelines_, scene, tessellated);
+  result.image = Image(scene.render.width, scene.render.height);
   for (std::uint64_t first = 0; first < pixels;) {
     const std::uint64_t count = std::min(bandPixels, pixels - first);
-    const std::uint64_t rays = count * frame.raysPerPixel;
     frame.firstPixel = std::uint32_t(first);
     frame.pixelCount = std::uint32_t(count);
     d.queue().writeBuffer(band.frame, 0, &frame, sizeof(frame));
-
-    gpu::CommandEncoder encoder = d.createCommandEncoder({"render band"});
-    encoder.clearBuffer(band.counters);
-    pass(encoder, kIntersect, intersect, groups.intersect, rays);
-    if (!tessellated) {
-      compact(encoder, kCompactCameraFallbacks);
-      indirect(encoder, kCameraFallbacks, pipeline("fallback", {{"SHADOW", 0}}), groups.cameraFallbacks,
-               offsetof(layout::RenderCounters, cameraFallbackX));
-      indirect(encoder, kResolveCameraFallbacks, pipeline("fallback_resolve", {}), groups.resolveCameraFallbacks,
-               offsetof(layout::RenderCounters, cameraFallbackX));
-    }
-    pass(encoder, kSurface, surface, groups.surface, rays);
-    compact(encoder, kCompactShadowRays);
-    indirect(encoder, kShadow, shadow, groups.shadow, offsetof(layout::RenderCounters, shadowX));
-    if (!tessellated) {
-      compact(encoder, kCompactShadowFallbacks);
-      indirect(encoder, kShadowFallbacks, pipeline("fallback", {{"SHADOW", 1}}), groups.shadowFallbacks,
-               offsetof(layout::RenderCounters, shadowFallbackX));
-    }
-    pass(encoder, kGather, gather, groups.gather, rays);
-    pass(encoder, kResolve, resolve, groups.resolve, count);
-    encoder.copyBufferToBuffer(band.aovs, 0, band.aovsHost, 0, count * sizeof(layout::PixelAovs));
-    encoder.copyBufferToBuffer(band.beauty, 0, band.beautyHost, 0, count * 16);
-    encoder.copyBufferToBuffer(band.counters, 0, band.countersHost, 0, band.counters.size());
-    d.queue().submit(encoder.finish());
-    d.queue().waitIdle();
-    addStageTimes(kIntersect, kResolve);
-
+    traceBand(d, k, table, band, count * frame.raysPerPixel, count, clock);
     const layout::RenderCounters counters = band.countersHost.mapped<layout::RenderCounters>()[0];
     const std::uint32_t needed = std::max(counters.cameraFallbacks, counters.shadowFallbacks);
     if (needed > frame.fallbackCapacity) {
       frame.fallbackCapacity = needed;
       band = allocateBands(d, bandPixels, bandPixels * frame.raysPerPixel, frame.slotsPerRay, needed);
       table = bindingTable(geometryBuffers, shadingBuffers, band);
-      groups = bandGroups();
-      result.gpuBytes = geometryBuffers.bytes + band.bytes;
       continue;
     }
-    const auto pixelAovs = band.aovsHost.mapped<layout::PixelAovs>();
-    const auto pixelBeauty = band.beautyHost.mapped<glm::vec4>();
-    Image& image = result.image;
-    for (std::uint64_t i = 0; i < count; ++i) {
-      const layout::PixelAovs& a = pixelAovs[i];
-      const std::size_t p = std::size_t(first + i);
-      image.beauty[p] = pixelBeauty[i];
-      image.depth[p] = a.depth;
-      image.position[p] = a.patchId == layout::FACET_NO_HIT
-                              ? glm::vec3(0.0f)
-                              : glm::vec3(origin + glm::dvec3(a.positionX, a.positionY, a.positionZ));
-      image.geometricNormal[p] = {a.geometricX, a.geometricY, a.geometricZ};
-      image.shadingNormal[p] = {a.shadingX, a.shadingY, a.shadingZ};
-      image.patchId[p] = a.patchId;
-      image.faceId[p] = a.faceId;
-      image.uv[p] = {a.u, a.v};
-    }
-    result.primaryRays += rays;
+    readBand(band, first, count, origin, result.image);
+    result.primaryRays += count * frame.raysPerPixel;
     result.shadowRays += counters.shadowRays;
     result.newtonFallbacks += counters.cameraFallbacks + counters.shadowFallbacks;
     first += count;
     if (progress) progress(double(first) / double(pixels));
   }
-  for (int s = 0; s < kStageCount; ++s) {
-    if (!ran[s]) continue;
-    auto same = std::find_if(result.stageMilliseconds.begin(), result.stageMilliseconds.end(),
-                             [&](const auto& stage) { return stage.first == kStageNames[s]; });
-    if (same == result.stageMilliseconds.end())
-      result.stageMilliseconds.emplace_back(kStageNames[s], stageNs[s] * 1e-6);
-    else
-      same->second += stageNs[s] * 1e-6;
-  }
+  result.gpuBytes = geometryBuffers.bytes + band.bytes;
+  clock.report(result.stageMilliseconds);
   return result;
 }
 

@@ -79,6 +79,19 @@ struct GpuRenderResult {
 // The exact method's root tolerance on the GPU (see above).
 double rootTolerance(const scene::Scene& scene, const scene::SceneGeometry& geometry);
 
+// The ray caster's kernels, and a pipeline per variant of specialization
+// constants, created at first use and kept.
+class PipelineCache {
+ public:
+  explicit PipelineCache(gpu::Device& device);
+  gpu::ComputePipeline& get(const char* kernel, const std::vector<gpu::ConstantEntry>& constants);
+
+ private:
+  gpu::Device& device_;
+  std::map<std::string, gpu::ShaderModule> modules_;
+  std::map<std::string, gpu::ComputePipeline> pipelines_;
+};
+
 class GpuRenderer {
  public:
   explicit GpuRenderer(gpu::Device& device);
@@ -87,16 +100,13 @@ class GpuRenderer {
                          const std::function<void(double)>& progress = {});
 
  private:
-  gpu::ComputePipeline& pipeline(const char* kernel, const std::vector<gpu::ConstantEntry>& constants);
-
   // The last render's diced geometry, reused while the scene's geometry,
   // rates, eye, method and tolerance are the same.
   struct DicedGeometry;
   std::shared_ptr<DicedGeometry> diced_;
 
   gpu::Device& device_;
-  std::map<std::string, gpu::ShaderModule> modules_;
-  std::map<std::string, gpu::ComputePipeline> pipelines_;
+  PipelineCache pipelines_;
 };
 
 }  // namespace facet::gpu_backend
