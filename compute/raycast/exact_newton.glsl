@@ -14,7 +14,8 @@ const int NEWTON_FAILED = 0;
 const int NEWTON_ROOT_INSIDE = 1;   // the root lies in the piece
 const int NEWTON_ROOT_OUTSIDE = 2;  // elsewhere on the patch
 
-// Newton on (s, t, rayT) from the piece centre, the CPU's safeguards: a
+// Newton on (s, t, rayT) from `start` (fractions of the piece, where the ray
+// crosses the piece's plane), the CPU's safeguards: a
 // singular system or NEWTON_STEPS steps end the run. From the centre of a
 // flat piece a root converges in a handful of steps, so fewer than the
 // CPU's 40 suffice. (s, t) may leave the patch by NEWTON_OVERSHOOT, where
@@ -25,9 +26,9 @@ const int NEWTON_ROOT_OUTSIDE = 2;  // elsewhere on the patch
 const int NEWTON_STEPS = 10;
 const float NEWTON_OVERSHOOT = 0.5;
 
-int newton(ControlPoints c, Ray ray, uint patchIndex, uint object, vec4 piece, inout Hit best) {
+int newton(ControlPoints c, Ray ray, uint patchIndex, uint object, vec4 piece, vec2 start, inout Hit best) {
   float dd = dot(ray.direction, ray.direction);
-  float s = 0.5 * (piece.x + piece.y), t = 0.5 * (piece.z + piece.w);
+  float s = mix(piece.x, piece.y, start.x), t = mix(piece.z, piece.w, start.y);
   PatchSample point = evaluate_patch(c, s, t);
   float rayT = dot(point.position - ray.origin, ray.direction) / dd;
   // Past the tolerance, one more step: convergence is quadratic, so it lands

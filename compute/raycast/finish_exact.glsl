@@ -1,9 +1,9 @@
 // The exact finish: the ray against the limit surface over one cell.
 // Newton runs only where the ray passes through the cell's oriented bounds
 // (compute/shared/wide_bvh.h), which exclude it from most cells whose box it
-// merely crosses. Started from the cell's centre, it finds a root: a true
-// intersection wherever on the patch it lies. A root inside the cell
-// settles the cell; one beyond it settles the cell too when the ray is
+// merely crosses. Started where the ray crosses the cell's plane, it finds
+// a root: a true intersection wherever on the patch it lies. A root inside
+// the cell settles the cell; one beyond it settles the cell too when the ray is
 // steeper to the cell's plane than the surface can be, so that it crosses
 // the surface there at most once. Any other cell (Newton failed, or a
 // grazing ray left it) goes to defer_cell(reference), which the including
@@ -26,9 +26,11 @@ OrientedBounds cell_bounds(uint cell) {
 
 void finish_exact(Ray ray, Cell cell, uint reference, inout Hit best) {
   bool steep;
-  if (!ray_meets_bounds(ray, cell_bounds(cell.firstCell + cell.j * cell.rate + cell.i), best.t, steep)) return;
+  vec2 across;
+  if (!ray_meets_bounds(ray, cell_bounds(cell.firstCell + cell.j * cell.rate + cell.i), best.t, steep, across)) return;
   ControlPoints c = load_control_points(cell.firstPoint, cell.kind);
-  if (!settled(newton(c, ray, cell.patchIndex, cell.object, cell_domain(cell), best), steep)) defer_cell(reference);
+  if (!settled(newton(c, ray, cell.patchIndex, cell.object, cell_domain(cell), across, best), steep))
+    defer_cell(reference);
 }
 
 #endif

@@ -153,14 +153,20 @@ float extent(OrientedBounds b) {
 }
 
 // Whether the ray meets the bounds within [tMin, tMax]; `steep`, whether
-// its slope to their plane exceeds their steepness.
-bool ray_meets_bounds(Ray ray, OrientedBounds b, float tMax, out bool steep) {
+// its slope to their plane exceeds their steepness; `across`, where it
+// crosses the plane halfway through the bounds, as fractions of their u and
+// v ranges (a start for Newton: u runs along s, v along t).
+bool ray_meets_bounds(Ray ray, OrientedBounds b, float tMax, out bool steep, out vec2 across) {
   vec3 v = cross(b.n, b.u);
   Ray local = Ray(vec3(dot(b.u, ray.origin), dot(v, ray.origin), dot(b.n, ray.origin)),
                   vec3(dot(b.u, ray.direction), dot(v, ray.direction), dot(b.n, ray.direction)), ray.tMin, ray.tMax);
   vec2 interval = box_interval(local, safe_inverse(local.direction), vec3(b.uRange.x, b.vRange.x, b.nRange.x),
                                vec3(b.uRange.y, b.vRange.y, b.nRange.y), tMax);
   steep = abs(local.direction.z) > b.steepness * length(local.direction.xy);
+  float t = (0.5 * (b.nRange.x + b.nRange.y) - local.origin.z) / local.direction.z;
+  vec2 p = local.origin.xy + t * local.direction.xy;
+  across = clamp((p - vec2(b.uRange.x, b.vRange.x)) / vec2(b.uRange.y - b.uRange.x, b.vRange.y - b.vRange.x), 0.0, 1.0);
+  if (!(abs(local.direction.z) > 0.0)) across = vec2(0.5);
   return interval.x <= interval.y;
 }
 
