@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/translate_scene.h"
 #include "engine/cpu/reference_renderer.h"
 #include "engine/gpu_backend/gpu_renderer.h"
 #include "engine/parity.h"
@@ -114,11 +115,7 @@ TEST_P(FarFromTheOrigin, MatchesTheCpuReferenceWithinTolerance) {
   scene.render.height = 48;
   scene.render.method = GetParam().method;
   const glm::dvec3 offset = GetParam().distance * glm::normalize(glm::dvec3(1.0, -0.5, 0.75));
-  for (scene::Object& object : scene.objects)
-    for (glm::dvec3& p : object.cage.positions) p += offset;
-  for (scene::Light& light : scene.lights) light.position += offset;
-  scene.camera.eye += offset;
-  scene.camera.target += offset;
+  facet::testing::translateScene(scene, offset);
   const scene::SceneGeometry geometry = scene::buildGeometry(scene);
   const Image reference = cpu::renderReference(scene, geometry);
   gpu_backend::GpuRenderer renderer(device_);

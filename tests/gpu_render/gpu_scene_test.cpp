@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/translate_scene.h"
 #include "engine/gpu_backend/gpu_scene.h"
 #include "scenes/scene_file.h"
 #include "tests_gpu_render_spirv/spirv.h"
@@ -26,10 +27,7 @@ namespace layout = gpu_layout;
 
 scene::Scene cageScene(const std::string& name, const glm::dvec3& offset = glm::dvec3(0.0)) {
   scene::Scene scene = scene::loadScene(std::filesystem::path(FACET_CAGE_DIR) / (name + ".obj"));
-  for (scene::Object& object : scene.objects)
-    for (glm::dvec3& p : object.cage.positions) p += offset;
-  scene.camera.eye += offset;
-  scene.camera.target += offset;
+  facet::testing::translateScene(scene, offset);
   return scene;
 }
 
