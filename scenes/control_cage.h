@@ -38,6 +38,9 @@ struct ControlCage {
   std::vector<glm::dvec3> positions;
   std::vector<int> faceVertexCounts;
   std::vector<int> faceVertexIndices;  // concatenated, counter-clockwise seen from outside
+  // Optional, one per faceVertexIndices entry: the authored shading normals
+  // of a mesh rendered as authored (ignored when it is subdivided).
+  std::vector<glm::dvec3> faceVertexNormals;
   std::vector<CreaseEdge> creases;
   std::vector<CornerVertex> corners;
   std::vector<int> holes;  // face indices

@@ -14,9 +14,11 @@
 #include <tiny_gltf.h>
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -193,12 +195,18 @@ std::size_t triangleCount(int mode, std::size_t vertices, const GltfReader& read
   return vertices - 2;
 }
 
-// Adds the primitives of one mesh instance as one welded cage.
+// Adds the primitives of one mesh instance as one welded cage, with its
+// NORMALs per face corner when every primitive has them (shading normals of
+// the mesh as authored).
 ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const GltfReader& reader,
                    const std::string& where) {
   ControlCage cage;
   cage.source = where;
   std::map<std::tuple<double, double, double>, int> welded;
+  const bool normals = std::all_of(mesh.primitives.begin(), mesh.primitives.end(), [](const tinygltf::Primitive& p) {
+    return p.attributes.count("NORMAL") != 0;
+  });
+  const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(world)));
   for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
     const tinygltf::Primitive& primitive = mesh.primitives[p];
     const std::string at = where + ".primitives[" + std::to_string(p) + "]";
@@ -214,6 +222,18 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
       if (inserted) cage.positions.push_back(p3);
       remap[v] = it->second;
     }
+    std::vector<glm::dvec3> vertexNormals;
+    if (normals) {
+      const std::vector<double> n = reader.read(primitive.attributes.at("NORMAL"), at + ".NORMAL", 3);
+      if (n.size() != xyz.size()) reader.fail(at, "NORMAL and POSITION have different counts");
+      for (std::size_t v = 0; v < n.size() / 3; ++v) {
+        const glm::dvec3 transformed = normalMatrix * glm::dvec3(n[3 * v], n[3 * v + 1], n[3 * v + 2]);
+        const double length = glm::length(transformed);
+        if (!(length > 0.0) || !std::isfinite(length))
+          reader.fail(at, "NORMAL " + std::to_string(v) + " is zero or not finite");
+        vertexNormals.push_back(transformed / length);
+      }
+    }
     std::vector<double> indices;
     if (primitive.indices >= 0) {
       indices = reader.read(primitive.indices, at + ".indices", 1);
@@ -223,24 +243,30 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
     const std::size_t triangles = triangleCount(primitive.mode, indices.size(), reader, at);
     for (std::size_t t = 0; t < triangles; ++t) {
       int corners[3];
+      std::size_t vertices[3];
       const std::array<std::size_t, 3> slots = triangleCorners(primitive.mode, t);
       for (int c = 0; c < 3; ++c) {
         const double index = indices[slots[std::size_t(c)]];
         if (index < 0 || index >= double(remap.size()))
           reader.fail(at, "index " + std::to_string(std::size_t(index)) + " is out of range");
-        corners[c] = remap[std::size_t(index)];
+        vertices[c] = std::size_t(index);
+        corners[c] = remap[vertices[c]];
       }
       // A triangle with two corners at one position (strips join through
       // such triangles) has no area and would only add spurious topology.
       if (corners[0] == corners[1] || corners[1] == corners[2] || corners[0] == corners[2]) continue;
       cage.faceVertexCounts.push_back(3);
       cage.faceVertexIndices.insert(cage.faceVertexIndices.end(), corners, corners + 3);
+      if (normals)
+        for (std::size_t vertex : vertices) cage.faceVertexNormals.push_back(vertexNormals[vertex]);
     }
   }
   if (cage.faceCount() == 0) reader.fail(where, "has no faces");
   if (glm::determinant(glm::dmat3(world)) < 0) {
-    for (std::size_t f = 0; f < cage.faceVertexIndices.size(); f += 3)
+    for (std::size_t f = 0; f < cage.faceVertexIndices.size(); f += 3) {
       std::swap(cage.faceVertexIndices[f + 1], cage.faceVertexIndices[f + 2]);
+      if (normals) std::swap(cage.faceVertexNormals[f + 1], cage.faceVertexNormals[f + 2]);
+    }
   }
   return cage;
 }

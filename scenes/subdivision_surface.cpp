@@ -2,6 +2,8 @@
 
 #include "scenes/input_error.h"
 
+#include <glm/geometric.hpp>
+
 #include <opensubdiv/far/error.h>
 #include <opensubdiv/far/patchMap.h>
 #include <opensubdiv/far/patchTable.h>
@@ -221,6 +223,42 @@ BezierPatch bezierFromGregory(const std::array<glm::dvec3, 20>& cvs) {
 
 // Everything evaluation needs; the refiner is dropped once the patch table
 // and the points exist.
+// The authored normals at a bilinear patch's corners. On a quad face they are
+// its vertices' own; a face split once has patches through a vertex, two edge
+// midpoints and the centroid, whose normals are the normalized sums of the
+// normals there, as the split interpolates positions. Which a corner is
+// follows from its position (the refined points are exact averages).
+namespace {
+
+std::array<glm::dvec3, 4> cornerNormals(const ControlCage& cage, int face, int first,
+                                        const std::array<glm::dvec3, 4>& corners) {
+  const int count = cage.faceVertexCounts[std::size_t(face)];
+  auto position = [&](int k) { return cage.positions[std::size_t(cage.faceVertexIndices[std::size_t(first + k)])]; };
+  auto normal = [&](int k) { return cage.faceVertexNormals[std::size_t(first + k)]; };
+  // Candidates: each corner, each edge midpoint, the centroid.
+  std::vector<std::pair<glm::dvec3, glm::dvec3>> candidates;
+  glm::dvec3 centroid(0.0), centroidNormal(0.0);
+  for (int k = 0; k < count; ++k) {
+    const int next = (k + 1) % count;
+    candidates.push_back({position(k), normal(k)});
+    candidates.push_back({0.5 * (position(k) + position(next)), normal(k) + normal(next)});
+    centroid += position(k) / double(count);
+    centroidNormal += normal(k);
+  }
+  candidates.push_back({centroid, centroidNormal});
+  std::array<glm::dvec3, 4> normals;
+  for (int c = 0; c < 4; ++c) {
+    const auto nearest = std::min_element(candidates.begin(), candidates.end(), [&](const auto& a, const auto& b) {
+      return glm::distance(a.first, corners[std::size_t(c)]) < glm::distance(b.first, corners[std::size_t(c)]);
+    });
+    const double length = glm::length(nearest->second);
+    normals[std::size_t(c)] = length > 0.0 ? nearest->second / length : glm::dvec3(0.0);
+  }
+  return normals;
+}
+
+}  // namespace
+
 struct SubdivisionSurface::Impl {
   std::unique_ptr<Far::PatchTable> patchTable;
   std::unique_ptr<Far::PatchMap> patchMap;
@@ -228,6 +266,7 @@ struct SubdivisionSurface::Impl {
   std::vector<Far::PatchTable::PatchHandle> handles;
   std::vector<PatchInfo> patches;
   std::vector<BezierPatch> bezierPatches;
+  std::vector<std::array<glm::dvec3, 4>> authoredNormals;  // per patch, or empty
   Aabb bounds;
   SurfaceStatistics statistics;
 };
@@ -287,6 +326,14 @@ SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const Ref
   }
 
   SurfaceStatistics& stats = impl->statistics;
+  const bool withNormals = bilinear && !cage.faceVertexNormals.empty();
+  if (withNormals && cage.faceVertexNormals.size() != cage.faceVertexIndices.size())
+    throw InputError(cage.source, 0, "authored normals",
+                     std::to_string(cage.faceVertexNormals.size()) + " normals for " +
+                         std::to_string(cage.faceVertexIndices.size()) + " face corners");
+  std::vector<int> faceStarts;
+  for (int face = 0, first = 0; face < cage.faceCount(); first += cage.faceVertexCounts[std::size_t(face++)])
+    faceStarts.push_back(first);
   int patchIndex = 0;
   for (int array = 0; array < table.GetNumPatchArrays(); ++array) {
     const Far::PatchDescriptor descriptor = table.GetPatchArrayDescriptor(array);
@@ -319,6 +366,9 @@ SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const Ref
         std::array<glm::dvec3, 4> points;
         for (int k = 0; k < 4; ++k) points[k] = impl->points[cvs[k]].p;
         bezier = bezierFromBilinear(points);
+        if (withNormals)
+          impl->authoredNormals.push_back(
+              cornerNormals(cage, info.coarseFace, faceStarts[std::size_t(info.coarseFace)], points));
         ++stats.regularPatches;
       } else if (gregory) {
         std::array<glm::dvec3, 20> points;
@@ -363,6 +413,9 @@ SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const Ref
 int SubdivisionSurface::patchCount() const { return static_cast<int>(impl_->patches.size()); }
 const PatchInfo& SubdivisionSurface::patch(int index) const { return impl_->patches.at(index); }
 const BezierPatch& SubdivisionSurface::bezierPatch(int index) const { return impl_->bezierPatches.at(index); }
+const std::array<glm::dvec3, 4>* SubdivisionSurface::authoredNormals(int index) const {
+  return impl_->authoredNormals.empty() ? nullptr : &impl_->authoredNormals.at(std::size_t(index));
+}
 const Aabb& SubdivisionSurface::bounds() const { return impl_->bounds; }
 const SurfaceStatistics& SubdivisionSurface::statistics() const { return impl_->statistics; }
 

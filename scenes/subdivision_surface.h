@@ -45,6 +45,7 @@
 #include "scenes/bezier_patch.h"
 #include "scenes/control_cage.h"
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -122,6 +123,10 @@ class SubdivisionSurface {
   int patchCount() const;
   const PatchInfo& patch(int index) const;
   const BezierPatch& bezierPatch(int index) const;
+  // A mesh as authored with normals: the shading normals at the patch's four
+  // corners (counter-clockwise from (0, 0), as its points), which shading
+  // interpolates bilinearly; nullptr otherwise.
+  const std::array<glm::dvec3, 4>* authoredNormals(int index) const;
 
   // The limit surface on patch `index` at face parameters (u, v).
   LimitPoint evaluatePatch(int index, double u, double v) const;

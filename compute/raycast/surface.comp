@@ -36,6 +36,7 @@ layout(set = 0, binding = 12, std430) readonly buffer Lights { LightRecord light
 layout(set = 0, binding = 13, std430) writeonly buffer Aovs { PixelAovs aovs[]; };
 layout(set = 0, binding = 14, std430) writeonly buffer ShadowRays { ShadowRayRecord shadowRays[]; };
 layout(set = 0, binding = 15, std430) writeonly buffer Contributions { vec4 contributions[]; };
+layout(set = 0, binding = 27) uniform samplerBuffer authoredNormals;
 layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters; };
 
 #include "compute/raycast/patch_eval.glsl"
@@ -43,6 +44,19 @@ layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters;
 #include "compute/raycast/environment.glsl"
 #include "compute/raycast/ray.glsl"
 #include "compute/raycast/camera_rays.glsl"
+#include "compute/shared/authored_normal.h"
+
+// The shading normal: a mesh's authored normals interpolated where it has
+// them (turned to the side of the surface's normal `limit`), else `limit`
+// (engine/cpu/limit_normal.h).
+vec3 shading_normal(PatchRecord record, float s, float t, vec3 limit) {
+  if (record.firstNormal == FACET_NO_NORMALS) return limit;
+  int i = int(record.firstNormal);
+  vec3 n = authored_normal(texelFetch(authoredNormals, i).xyz, texelFetch(authoredNormals, i + 1).xyz,
+                           texelFetch(authoredNormals, i + 2).xyz, texelFetch(authoredNormals, i + 3).xyz, s, t);
+  if (n == vec3(0.0)) return limit;
+  return dot(n, limit) < 0.0 ? -n : n;
+}
 
 float infinity() { return uintBitsToFloat(0x7f800000u); }
 
@@ -156,13 +170,14 @@ void main() {
   ObjectRange range = objects[hit.object];
   PatchRecord record = patches[hit.patchIndex];
   ControlPoints c = load_control_points(record.firstPoint, record.kind);
-  vec3 n = limit_normal(c, hit.s, hit.tParam);
+  vec3 limit = limit_normal(c, hit.s, hit.tParam);
+  vec3 n = shading_normal(record, hit.s, hit.tParam, limit);
   // A hit on a micro-triangle (the tessellated finish reports its normal)
   // lies on it; an exact hit is the limit point.
   vec3 triangleNormal = vec3(hit.geometricX, hit.geometricY, hit.geometricZ);
   bool onMicroTriangle = triangleNormal != vec3(0.0);
   vec3 position = onMicroTriangle ? origin + hit.t * direction : evaluate_patch(c, hit.s, hit.tParam).position;
-  vec3 ng = onMicroTriangle ? triangleNormal : n;
+  vec3 ng = onMicroTriangle ? triangleNormal : limit;
   // Two-sided: both normals face the eye.
   if (dot(ng, direction) > 0.0) {
     n = -n;

@@ -11,7 +11,7 @@ const uint FACET_PATCH_GREGORY = 1u;
 const uint FACET_PATCH_POINTS_BEZIER = 16u;
 const uint FACET_PATCH_POINTS_GREGORY = 20u;
 
-// One limit-surface patch, 48 bytes, in the order of its object's patch
+// One limit-surface patch, 52 bytes, in the order of its object's patch
 // BVH leaves. Patch-local (s, t) in [0,1]^2 is face parameter
 // (u, v) = (faceU0 + s * faceSize, faceV0 + t * faceSize) on ptex face
 // `ptexFace`; hits report face, (u, v) and `sourcePatch`.
@@ -32,7 +32,10 @@ struct PatchRecord {
   uint pointCount;      // FACET_PATCH_POINTS_BEZIER or FACET_PATCH_POINTS_GREGORY
   uint transitionMask;  // same edge bits: the neighbour across is one level
                         // deeper, so crack-free dicing splits that edge twice as finely
+  uint firstNormal;     // a mesh as authored with normals: 4 texels of authored normals, else FACET_NO_NORMALS
 };
+
+const uint FACET_NO_NORMALS = 0xFFFFFFFFu;
 
 // What the ray caster needs of a patch, FACET_HEADER_TEXELS uvec4 texels of
 // the patch header texel buffer (the rest of PatchRecord is read once per

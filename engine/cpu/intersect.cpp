@@ -182,8 +182,8 @@ class ExactPatchIntersector {
     hit.coarseFace = info.coarseFace;
     hit.u = faceU(s);
     hit.v = faceV(t);
-    hit.shadingNormal = limitNormal(surface_, index, hit.u, hit.v);
-    hit.geometricNormal = hit.shadingNormal;
+    hit.geometricNormal = limitNormal(surface_, index, hit.u, hit.v);
+    hit.shadingNormal = shadingNormal(surface_, index, hit.u, hit.v, hit.geometricNormal);
     best = hit;
     return inside;
   }
@@ -366,7 +366,7 @@ std::optional<SurfaceHit> intersectTessellated(const SubdivisionSurface& surface
           hit.coarseFace = info.coarseFace;
           hit.u = info.domain.u0 + info.domain.size * step.x / k;
           hit.v = info.domain.v0 + info.domain.size * step.y / k;
-          hit.shadingNormal = limitNormal(surface, patch, hit.u, hit.v);
+          hit.shadingNormal = shadingNormal(surface, patch, hit.u, hit.v, limitNormal(surface, patch, hit.u, hit.v));
           best = hit;
         }
       }

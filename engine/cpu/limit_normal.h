@@ -14,6 +14,12 @@ namespace facet::cpu {
 // Unit normal at face parameters (u, v) of `patch`.
 glm::dvec3 limitNormal(const scene::SubdivisionSurface& surface, int patch, double u, double v);
 
+// The shading normal at (u, v): where a mesh as authored carries normals,
+// theirs interpolated (compute/shared/authored_normal.h), turned to the side
+// of the surface's own normal `limit`; else `limit`.
+glm::dvec3 shadingNormal(const scene::SubdivisionSurface& surface, int patch, double u, double v,
+                         const glm::dvec3& limit);
+
 // The cross product is trusted when |du x dv| exceeds this fraction of
 // |du| |dv| (the sine of the angle between them) and neither derivative is
 // zero.

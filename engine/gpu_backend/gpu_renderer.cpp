@@ -188,7 +188,7 @@ double sharedModel(const scene::Scene& scene, int materials::Material::*model) {
 // The scene's buffers for the GPU, rebased on the eye (gpu_scene.h): the
 // geometry, kept while it does not change, and what shades it.
 struct GeometryBuffers {
-  gpu::Buffer nodes, patches, headers, points, objects, gridVertices, edgeMidpoints, cellBounds, refitOrder;
+  gpu::Buffer nodes, patches, headers, points, normals, objects, gridVertices, edgeMidpoints, cellBounds, refitOrder;
   std::uint64_t bytes = 0;
 };
 
@@ -216,12 +216,13 @@ GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed) {
   b.patches = upload(d, "patch records", packed.patches, in);
   b.headers = upload(d, "patch headers", packed.headers, texel);
   b.points = upload(d, "patch points", packed.points, texel);
+  b.normals = upload(d, "authored normals", packed.normals, texel);
   b.objects = upload(d, "object ranges", packed.objects, in);
   b.gridVertices = d.createBuffer({"grid vertices", bufferBytes(packed.gridVertices * 16), diced});
   b.edgeMidpoints = d.createBuffer({"edge midpoints", bufferBytes(packed.edgeMidpoints * 16), diced});
   b.cellBounds = d.createBuffer({"cell bounds", bufferBytes(packed.cellBounds * 16), diced});
   b.refitOrder = upload(d, "refit order", packed.refitOrder, in);
-  for (const gpu::Buffer* buffer : {&b.nodes, &b.patches, &b.headers, &b.points, &b.objects, &b.gridVertices,
+  for (const gpu::Buffer* buffer : {&b.nodes, &b.patches, &b.headers, &b.points, &b.normals, &b.objects, &b.gridVertices,
                                     &b.edgeMidpoints, &b.cellBounds})
     b.bytes += buffer->size();
   return b;
@@ -318,7 +319,8 @@ BindingTable bindingTable(const GeometryBuffers& g, const ShadingBuffers& s, con
           {19, &s.environmentTexels}, {20, &s.environmentLevels},
           {21, &s.environmentSampling}, {22, &b.rayRadiance},
           {23, &s.environmentTables}, {24, &b.cameraFallbacks},
-          {25, &b.shadowFallbacks}, {26, &g.refitOrder}};
+          {25, &b.shadowFallbacks}, {26, &g.refitOrder},
+          {27, &g.normals}};
 }
 
 gpu::BindGroup bindGroup(gpu::Device& d, const gpu::ComputePipeline& pipeline, const std::string& label,

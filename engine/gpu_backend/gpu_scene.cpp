@@ -237,6 +237,11 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
       record.depth = std::uint32_t(info.depth);
       record.pointCount = bezier.gregory ? layout::FACET_PATCH_POINTS_GREGORY : layout::FACET_PATCH_POINTS_BEZIER;
       record.transitionMask = info.transitionMask;
+      record.firstNormal = layout::FACET_NO_NORMALS;
+      if (const std::array<glm::dvec3, 4>* normals = surface.authoredNormals(source)) {
+        record.firstNormal = std::uint32_t(packed.normals.size());
+        for (const glm::dvec3& n : *normals) packed.normals.push_back(glm::vec4(glm::vec3(n), 0.0f));
+      }
       auto add = [&](const glm::dvec3& p) { packed.points.push_back(glm::vec4(glm::vec3(p - origin), 0.0f)); };
       for (const glm::dvec3& p : bezier.points) add(p);
       if (bezier.gregory)

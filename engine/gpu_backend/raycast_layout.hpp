@@ -14,7 +14,7 @@ using uint = std::uint32_t;
 }  // namespace facet::gpu_layout
 
 // The layout GLSL sees: 4-byte members, no padding.
-static_assert(sizeof(facet::gpu_layout::PatchRecord) == 48);
+static_assert(sizeof(facet::gpu_layout::PatchRecord) == 52);
 static_assert(offsetof(facet::gpu_layout::PatchRecord, faceU0) == 16);
 static_assert(offsetof(facet::gpu_layout::PatchRecord, transitionMask) == 44);
 static_assert(sizeof(facet::gpu_layout::ObjectRange) == 52);

@@ -45,7 +45,8 @@ std::string caseName(const ::testing::TestParamInfo<ParityCase>& info) {
 
 std::vector<ParityCase> everyScene() {
   std::vector<std::filesystem::path> files = {std::filesystem::path(FACET_EXAMPLES_DIR) / "preview.json",
-                                              std::filesystem::path(FACET_EXAMPLES_DIR) / "gold_cube.gltf"};
+                                              std::filesystem::path(FACET_EXAMPLES_DIR) / "gold_cube.gltf",
+                                              std::filesystem::path(FACET_TEST_DATA_DIR) / "smooth_gem.gltf"};
   std::vector<std::filesystem::path> cages;
   for (const auto& entry : std::filesystem::directory_iterator(FACET_CAGE_DIR))
     if (entry.path().extension() == ".obj") cages.push_back(entry.path());

@@ -241,6 +241,7 @@ TEST(GpuLayout, GlslLayoutOfTheSharedHeadersIsTheCppLayout) {
   FACET_EXPECT_MEMBER(PatchRecord, faceU0);
   FACET_EXPECT_MEMBER(PatchRecord, sourcePatch);
   FACET_EXPECT_MEMBER(PatchRecord, transitionMask);
+  FACET_EXPECT_MEMBER(PatchRecord, firstNormal);
   FACET_EXPECT_MEMBER(ObjectRange, firstPatch);
   FACET_EXPECT_MEMBER(FrameParams, rootNode);
   FACET_EXPECT_MEMBER(ObjectRange, rate);

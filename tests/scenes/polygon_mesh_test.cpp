@@ -1,5 +1,6 @@
 // Subdivision::None: the polygons as authored, held to the bilinear surface
 // written out here from the cage alone.
+#include "scenes/input_error.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_geometry.h"
 #include "scenes/subdivision_surface.h"
@@ -229,6 +230,50 @@ TEST(Polygons, ATriangleMeshHasItsFaceNormals) {
       EXPECT_LT(glm::length(glm::normalize(glm::cross(point.du, point.dv)) - faceNormal), 1e-12) << "patch " << p;
     }
   }
+}
+
+// A triangle's split quads carry its corners' normals, the normalized sums
+// of two at the edge midpoints and of all three at the centroid, in the
+// order of their points (counter-clockwise from (0, 0)).
+TEST(Polygons, AuthoredNormalsFollowTheSplitOfTheFace) {
+  const glm::dvec3 a(0, 0, 0), b(2, 0, 0), c(0, 2, 0);
+  ControlCage cage = singleFace({a, b, c});
+  const std::array<glm::dvec3, 3> normals = {glm::normalize(glm::dvec3(-0.3, -0.2, 1)),
+                                             glm::normalize(glm::dvec3(0.4, -0.1, 1)),
+                                             glm::normalize(glm::dvec3(0, 0.5, 1))};
+  cage.faceVertexNormals = {normals.begin(), normals.end()};
+  const SubdivisionSurface surface = SubdivisionSurface::create(cage, kAsAuthored);
+  const glm::dvec3 centroid = glm::normalize(normals[0] + normals[1] + normals[2]);
+  for (int p = 0; p < surface.patchCount(); ++p) {
+    const std::array<glm::dvec3, 4>* corners = surface.authoredNormals(p);
+    ASSERT_NE(corners, nullptr);
+    const std::size_t k = std::size_t(p);
+    EXPECT_LT(glm::length((*corners)[0] - normals[k]), 1e-12) << "patch " << p;
+    EXPECT_LT(glm::length((*corners)[2] - centroid), 1e-12) << "patch " << p;
+    // Its other two corners lie on the edges through its vertex.
+    const glm::dvec3 next = glm::normalize(normals[k] + normals[(k + 1) % 3]);
+    const glm::dvec3 previous = glm::normalize(normals[k] + normals[(k + 2) % 3]);
+    const bool either = (glm::length((*corners)[1] - next) < 1e-12 && glm::length((*corners)[3] - previous) < 1e-12) ||
+                        (glm::length((*corners)[1] - previous) < 1e-12 && glm::length((*corners)[3] - next) < 1e-12);
+    EXPECT_TRUE(either) << "patch " << p;
+  }
+  // Subdivided, the authored normals do not apply.
+  EXPECT_EQ(SubdivisionSurface::create(cage).authoredNormals(0), nullptr);
+  // One normal per face corner, or an error naming the rule.
+  cage.faceVertexNormals.pop_back();
+  EXPECT_THROW(SubdivisionSurface::create(cage, kAsAuthored), InputError);
+}
+
+TEST(Polygons, AGltfMeshKeepsItsNormalsPerFaceCorner) {
+  const Scene scene = loadScene(std::string(FACET_TEST_DATA_DIR) + "/smooth_gem.gltf");
+  ASSERT_EQ(scene.objects.size(), 1u);
+  const ControlCage& cage = scene.objects[0].cage;
+  ASSERT_EQ(cage.faceVertexNormals.size(), cage.faceVertexIndices.size());
+  // The file's normals are its unit-sphere positions.
+  for (std::size_t i = 0; i < cage.faceVertexIndices.size(); ++i)
+    EXPECT_LT(glm::length(cage.faceVertexNormals[i] -
+                          glm::normalize(cage.positions[std::size_t(cage.faceVertexIndices[i])])),
+              1e-6);
 }
 
 }  // namespace
