@@ -21,8 +21,6 @@
 
 namespace facet::gpu_backend {
 
-using Texel = std::array<std::uint32_t, 4>;
-
 struct GpuScene {
   std::vector<Texel> topNodes;  // nodes 0 .. topNodes.size() / FACET_BVH4_TEXELS - 1 of the node buffer
   std::uint32_t rootNode = 0;

@@ -3,8 +3,14 @@
 // include nothing themselves, so including them inside a namespace is safe.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
+
+namespace facet::gpu_backend {
+// One RGBA32UI texel of a texel buffer.
+using Texel = std::array<std::uint32_t, 4>;
+}  // namespace facet::gpu_backend
 
 namespace facet::gpu_layout {
 using uint = std::uint32_t;

@@ -1,0 +1,94 @@
+#include "engine/gpu_backend/shading_records.h"
+
+#include <glm/trigonometric.hpp>
+
+#include <bit>
+#include <cmath>
+
+#include "materials/material.hpp"
+
+namespace facet::gpu_backend {
+
+namespace layout = gpu_layout;
+
+std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
+                                                    const ibl::EnvironmentLighting* environment) {
+  std::vector<layout::MaterialRecord> records;
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    const materials::f32::BrdfParams p = materials::toParams32(scene.materials[i]);
+    const bool prefiltered = environment && !environment->dfgTable.empty();
+    records.push_back({p.d_model, p.g_model, p.f_model, p.alpha, p.f0.x, p.f0.y, p.f0.z, p.eta.x, p.eta.y, p.eta.z,
+                       p.k.x, p.k.y, p.k.z, p.diffuse.x, p.diffuse.y, p.diffuse.z,
+                       prefiltered ? std::uint32_t(environment->dfgTable[i]) : 0u});
+  }
+  return records;
+}
+
+EnvironmentData environmentData(const ibl::EnvironmentLighting& lighting, layout::FrameParams& frame) {
+  const scene::Environment& environment = *lighting.environment;
+  const scene::EnvironmentMap& map = *environment.map;
+  EnvironmentData data;
+  auto appendRgb = [](std::vector<glm::vec4>& to, const std::vector<float>& rgb) {
+    for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) to.emplace_back(rgb[i], rgb[i + 1], rgb[i + 2], 0.0f);
+  };
+  appendRgb(data.texels, map.rgb);
+  frame.environmentIntensity = float(environment.intensity);
+  frame.environmentCosRotation = float(lighting.cosRotation);
+  frame.environmentSinRotation = float(lighting.sinRotation);
+  frame.environmentSamples = std::uint32_t(environment.samples);
+  frame.environmentSeed = environment.seed;
+  frame.environmentWidth = std::uint32_t(map.width);
+  frame.environmentHeight = std::uint32_t(map.height);
+  if (environment.method == scene::IblMethod::Sampled) {
+    const ibl::EnvironmentDistribution& d = lighting.distribution;
+    for (std::size_t i = 0; i < d.keep.size(); ++i)
+      data.sampling.push_back({std::bit_cast<std::uint32_t>(float(d.keep[i])),
+                               std::bit_cast<std::uint32_t>(float(d.texelPdf[i])), d.alias[i], 0});
+    return data;
+  }
+  std::vector<glm::vec4>& t = data.tables;
+  auto offset = [&] { return std::uint32_t(t.size()); };
+  const ibl::PrefilteredEnvironment& p = lighting.prefiltered;
+  data.levels.push_back({0, std::uint32_t(map.width), std::uint32_t(map.height), 0});  // read from the texels
+  for (std::size_t i = 1; i < p.levels.size(); ++i) {
+    const ibl::RadianceLevel& level = p.levels[i];
+    data.levels.push_back({offset(), std::uint32_t(level.width), std::uint32_t(level.height), 0});
+    appendRgb(t, level.rgb);
+  }
+  frame.levelCount = std::uint32_t(p.levels.size());
+  frame.shOffset = offset();
+  for (const glm::dvec3& c : p.irradianceSh) t.emplace_back(float(c.r), float(c.g), float(c.b), 0.0f);
+  frame.dfgOffset = offset();
+  frame.dfgSize = p.dfg.empty() ? 0 : std::uint32_t(p.dfg.front().size);
+  for (const ibl::DfgTable& table : p.dfg)
+    for (std::size_t i = 0; i + 1 < table.scaleBias.size(); i += 2)
+      t.emplace_back(table.scaleBias[i], table.scaleBias[i + 1], 0.0f, 0.0f);
+  return data;
+}
+
+std::uint32_t environmentSlots(const scene::Scene& scene) {
+  if (!scene.environment) return 0;
+  const scene::Environment& e = *scene.environment;
+  return e.method == scene::IblMethod::Sampled && e.occlusion ? 2 * std::uint32_t(e.samples) : 1;
+}
+
+std::vector<layout::LightRecord> lightRecords(const scene::Scene& scene, const glm::dvec3& origin) {
+  std::vector<layout::LightRecord> records;
+  for (const scene::Light& light : scene.lights) {
+    layout::LightRecord r{};
+    r.type = light.type == scene::LightType::Directional ? layout::FACET_LIGHT_DIRECTIONAL
+             : light.type == scene::LightType::Point     ? layout::FACET_LIGHT_POINT
+                                                         : layout::FACET_LIGHT_SPOT;
+    r.colorR = float(light.color.r), r.colorG = float(light.color.g), r.colorB = float(light.color.b);
+    const glm::vec3 position(light.position - origin);
+    r.positionX = position.x, r.positionY = position.y, r.positionZ = position.z;
+    r.directionX = float(light.direction.x), r.directionY = float(light.direction.y),
+    r.directionZ = float(light.direction.z);
+    r.cosOuter = float(std::cos(glm::radians(light.outerConeDegrees)));
+    r.cosInner = float(std::cos(glm::radians(light.innerConeDegrees)));
+    records.push_back(r);
+  }
+  return records;
+}
+
+}  // namespace facet::gpu_backend

@@ -1,0 +1,38 @@
+// What the surface kernel reads of a scene besides its geometry, packed as
+// compute/shared/raycast_layout.h lays it out: materials, lights (rebased on
+// the eye) and the environment's tables (compute/raycast/environment.glsl).
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <cstdint>
+#include <vector>
+
+#include "engine/gpu_backend/raycast_layout.hpp"
+#include "engine/ibl/environment_lighting.h"
+#include "scenes/scene.h"
+
+namespace facet::gpu_backend {
+
+std::vector<gpu_layout::MaterialRecord> materialRecords(const scene::Scene& scene,
+                                                        const ibl::EnvironmentLighting* environment);
+
+std::vector<gpu_layout::LightRecord> lightRecords(const scene::Scene& scene, const glm::dvec3& origin);
+
+// Everything the environment's lookups read, with its offsets and sizes set
+// in `frame`.
+struct EnvironmentData {
+  std::vector<glm::vec4> texels;  // the map, RGB
+  std::vector<Texel> sampling;    // sampled: per map texel (keep bits, density bits, alias, 0)
+  std::vector<Texel> levels;      // prefiltered: (first texel, width, height, 0) per level
+  std::vector<glm::vec4> tables;  // prefiltered: levels 1..n RGB, 9 SH RGB, DFG (scale, bias)
+};
+
+EnvironmentData environmentData(const ibl::EnvironmentLighting& lighting, gpu_layout::FrameParams& frame);
+
+// Slots per camera ray after the lights': none without an environment; one
+// for what it adds without shadow rays; two per pair when they are traced.
+std::uint32_t environmentSlots(const scene::Scene& scene);
+
+}  // namespace facet::gpu_backend
