@@ -26,11 +26,22 @@ OrientedBounds cell_bounds(uint cell) {
 
 void finish_exact(Ray ray, Cell cell, uint reference, inout Hit best) {
   bool steep;
-  vec2 across;
-  if (!ray_meets_bounds(ray, cell_bounds(cell.firstCell + cell.j * cell.rate + cell.i), best.t, steep, across)) return;
+  vec2 across, entry;
+  if (!ray_meets_bounds(ray, cell_bounds(cell.firstCell + cell.j * cell.rate + cell.i), best.t, steep, across, entry))
+    return;
   ControlPoints c = load_control_points(cell.firstPoint, cell.kind);
-  if (!settled(newton(c, ray, cell.patchIndex, cell.object, cell_domain(cell), across, best), steep))
-    defer_cell(reference);
+  vec4 domain = cell_domain(cell);
+  // A grazing ray may cross a curved cell twice and Newton find the farther
+  // crossing: a second run, from where the ray enters the cell's bounds,
+  // looks for a nearer one, which replaces the hit. One call site in a loop:
+  // on lavapipe a second inlined Newton slows the whole traversal.
+  int result = NEWTON_FAILED;
+  for (int run = 0; run < 2; ++run) {
+    int found = newton(c, ray, cell.patchIndex, cell.object, domain, run == 0 ? across : entry, best);
+    if (run == 0) result = found;
+    if (steep || result != NEWTON_ROOT_INSIDE) break;
+  }
+  if (!settled(result, steep)) defer_cell(reference);
 }
 
 #endif

@@ -154,19 +154,21 @@ float extent(OrientedBounds b) {
 
 // Whether the ray meets the bounds within [tMin, tMax]; `steep`, whether
 // its slope to their plane exceeds their steepness; `across`, where it
-// crosses the plane halfway through the bounds, as fractions of their u and
-// v ranges (a start for Newton: u runs along s, v along t).
-bool ray_meets_bounds(Ray ray, OrientedBounds b, float tMax, out bool steep, out vec2 across) {
+// crosses the plane halfway through the bounds, and `entry`, where it enters
+// them, as fractions of their u and v ranges (starts for Newton: u runs
+// along s, v along t).
+bool ray_meets_bounds(Ray ray, OrientedBounds b, float tMax, out bool steep, out vec2 across, out vec2 entry) {
   vec3 v = cross(b.n, b.u);
   Ray local = Ray(vec3(dot(b.u, ray.origin), dot(v, ray.origin), dot(b.n, ray.origin)),
                   vec3(dot(b.u, ray.direction), dot(v, ray.direction), dot(b.n, ray.direction)), ray.tMin, ray.tMax);
   vec2 interval = box_interval(local, safe_inverse(local.direction), vec3(b.uRange.x, b.vRange.x, b.nRange.x),
                                vec3(b.uRange.y, b.vRange.y, b.nRange.y), tMax);
   steep = abs(local.direction.z) > b.steepness * length(local.direction.xy);
+  vec2 lo = vec2(b.uRange.x, b.vRange.x), size = vec2(b.uRange.y - b.uRange.x, b.vRange.y - b.vRange.x);
   float t = (0.5 * (b.nRange.x + b.nRange.y) - local.origin.z) / local.direction.z;
-  vec2 p = local.origin.xy + t * local.direction.xy;
-  across = clamp((p - vec2(b.uRange.x, b.vRange.x)) / vec2(b.uRange.y - b.uRange.x, b.vRange.y - b.vRange.x), 0.0, 1.0);
+  across = clamp((local.origin.xy + t * local.direction.xy - lo) / size, 0.0, 1.0);
   if (!(abs(local.direction.z) > 0.0)) across = vec2(0.5);
+  entry = clamp((local.origin.xy + interval.x * local.direction.xy - lo) / size, 0.0, 1.0);
   return interval.x <= interval.y;
 }
 

@@ -23,8 +23,8 @@ void subdivide_cell(ControlPoints c, Ray ray, uint patchIndex, uint object, vec4
     OrientedBounds bounds =
         oriented_bounds(restrict_patch(c, domain.x, domain.y, domain.z, domain.w), 2.0 * frame.tolerance);
     bool steep, split = false;
-    vec2 across;
-    if (ray_meets_bounds(ray, bounds, best.t, steep, across)) {
+    vec2 across, entry;
+    if (ray_meets_bounds(ray, bounds, best.t, steep, across, entry)) {
       bool splittable = depth < SUBDIVISION_MAX_DEPTH && extent(bounds) > frame.minimumPiece;
       split = splittable && !(steep && settled(newton(c, ray, patchIndex, object, domain, across, best), steep));
       if (!splittable) newton(c, ray, patchIndex, object, domain, across, best);
