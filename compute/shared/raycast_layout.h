@@ -1,7 +1,12 @@
-// The GPU ray caster's buffers as both languages see them (the rules of
-// compute/shared/patch_bvh.h: 32-bit scalar members only, so std430 and C++
-// agree without padding). C++ includes it through
-// engine/gpu_backend/raycast_layout.hpp.
+// The GPU ray caster's buffers as both languages see them. The shared
+// headers of compute/shared/ are valid GLSL and valid C++:
+//   - members are 32-bit scalars (float, uint, int) or structs of them, no
+//     vectors and no arrays, so std430, std140 and C++ agree without padding;
+//   - constants are `const uint` at file scope;
+//   - no #include, no C++-only syntax.
+// C++ includes them through engine/gpu_backend/raycast_layout.hpp, which
+// static_asserts the sizes; tests/gpu_render/gpu_scene_test.cpp checks the
+// offsets glslang chose.
 #ifndef FACET_SHARED_RAYCAST_LAYOUT_H
 #define FACET_SHARED_RAYCAST_LAYOUT_H
 
