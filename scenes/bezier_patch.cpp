@@ -19,6 +19,12 @@ void Aabb::extend(const Aabb& other) {
 
 double Aabb::diagonal() const { return empty() ? 0.0 : glm::length(hi - lo); }
 
+double Aabb::surfaceArea() const {
+  if (empty()) return 0.0;
+  const glm::dvec3 e = hi - lo;
+  return 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
+}
+
 namespace {
 
 // Row-major slot of each Gregory interior point, in the order of `alternates`.

@@ -32,6 +32,7 @@ struct Aabb {
   void extend(const Aabb& other);
   glm::dvec3 centre() const { return 0.5 * (lo + hi); }
   double diagonal() const;
+  double surfaceArea() const;  // 0 when empty
   bool empty() const { return lo.x > hi.x; }
 };
 

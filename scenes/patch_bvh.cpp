@@ -13,12 +13,6 @@ namespace {
 
 constexpr int kBins = 16;
 
-double surfaceArea(const Aabb& box) {
-  if (box.empty()) return 0.0;
-  glm::dvec3 e = box.hi - box.lo;
-  return 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
-}
-
 struct BuildItem {
   Aabb bounds;
   glm::dvec3 centroid;
@@ -86,7 +80,7 @@ class Builder {
       for (int b = kBins - 1; b > 0; --b) {
         accumulated.extend(binBounds[b]);
         accumulatedCount += binCounts[b];
-        rightArea[b] = surfaceArea(accumulated);
+        rightArea[b] = accumulated.surfaceArea();
         rightCount[b] = accumulatedCount;
       }
       accumulated = Aabb();
@@ -95,7 +89,7 @@ class Builder {
         accumulated.extend(binBounds[b - 1]);
         accumulatedCount += binCounts[b - 1];
         if (accumulatedCount == 0 || rightCount[b] == 0) continue;
-        double cost = surfaceArea(accumulated) * accumulatedCount + rightArea[b] * rightCount[b];
+        double cost = accumulated.surfaceArea() * accumulatedCount + rightArea[b] * rightCount[b];
         if (cost < bestCost) {
           bestCost = cost;
           bestAxis = axis;

@@ -34,6 +34,7 @@
 #include "ceiling_kernels/spirv.h"
 #include "engine/camera.hpp"
 #include "engine/gpu/gpu.h"
+#include "engine/gpu_backend/raycast_layout.hpp"
 #include "scenes/scene_file.h"
 #include "scenes/scene_geometry.h"
 
@@ -45,7 +46,11 @@ using glm::vec3;
 
 constexpr int kSize = 512;
 constexpr int kCheckStride = 97;
-constexpr std::uint32_t kLeaf = 0x80000000u, kEmpty = 0xffffffffu;
+// facet's node layout (compute/shared/wide_bvh.h), which the kernels test
+// with facet's own node code; leaves reference triangle ranges instead of cells.
+namespace gpu_layout = facet::gpu_layout;
+constexpr std::size_t kNodeTexels = gpu_layout::FACET_BVH4_TEXELS;
+constexpr std::uint32_t kLeaf = 0x80000000u, kEmpty = gpu_layout::FACET_BVH4_EMPTY;
 constexpr int kMaxLeaf = 4, kBins = 16, kStack = 64;  // kStack: ceiling.glsl's STACK
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
@@ -169,11 +174,11 @@ struct BinaryBuilder {
 };
 
 struct Bvh4 {
-  std::vector<std::array<std::uint32_t, 4>> nodeTexels;  // 7 per node
+  std::vector<std::array<std::uint32_t, 4>> nodeTexels;  // kNodeTexels per node
   std::vector<glm::vec4> triTexels;                      // 3 per triangle, in leaf order
   std::vector<Triangle> tris;                            // the same, for the CPU check
   int depth = 0;
-  std::size_t nodeCount() const { return nodeTexels.size() / 7; }
+  std::size_t nodeCount() const { return nodeTexels.size() / kNodeTexels; }
 };
 
 // The binary tree collapsed to 4-wide: a node adopts its children, then
@@ -202,17 +207,17 @@ struct Collapser {
       children.push_back(n.right);
     }
     const std::size_t index = out.nodeCount();
-    out.nodeTexels.resize(out.nodeTexels.size() + 7, {0, 0, 0, 0});
+    out.nodeTexels.resize(out.nodeTexels.size() + kNodeTexels, {0, 0, 0, 0});
     std::array<std::uint32_t, 4> refs{kEmpty, kEmpty, kEmpty, kEmpty};
     for (std::size_t c = 0; c < children.size(); ++c) {
       const Box& box = binary.nodes[children[c]].box;
       for (int axis = 0; axis < 3; ++axis) {
-        out.nodeTexels[index * 7 + 2 * axis][c] = std::bit_cast<std::uint32_t>(box.lo[axis]);
-        out.nodeTexels[index * 7 + 2 * axis + 1][c] = std::bit_cast<std::uint32_t>(box.hi[axis]);
+        out.nodeTexels[index * kNodeTexels + 2 * axis][c] = std::bit_cast<std::uint32_t>(box.lo[axis]);
+        out.nodeTexels[index * kNodeTexels + 2 * axis + 1][c] = std::bit_cast<std::uint32_t>(box.hi[axis]);
       }
       refs[c] = reference(children[c], depth + 1);
     }
-    out.nodeTexels[index * 7 + 6] = refs;
+    out.nodeTexels[index * kNodeTexels + gpu_layout::FACET_BVH4_REFERENCES] = refs;
     return std::uint32_t(index);
   }
 };

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <string>
 
@@ -45,11 +44,6 @@ void writeChild(std::vector<Texel>& texels, std::uint32_t node, std::size_t slot
     texels[base + 2 * std::size_t(axis) + 1][slot] = bits(roundUp(bounds.hi[axis] - origin[axis] + margin));
   }
   texels[base + layout::FACET_BVH4_REFERENCES][slot] = reference;
-}
-
-double surfaceArea(const scene::Aabb& box) {
-  const glm::dvec3 e = box.hi - box.lo;
-  return 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
 }
 
 // A wide node's child while it is being chosen: a node of the binary patch
@@ -106,7 +100,7 @@ class Collapse {
         const scene::PatchBvh::Node& node = bvh_.nodes()[std::size_t(children[i].index)];
         const std::size_t grows = node.leaf() ? std::size_t(node.patchCount) : 2;
         if (children.size() - 1 + grows > 4) continue;
-        if (widest < 0 || surfaceArea(children[i].bounds) > surfaceArea(children[std::size_t(widest)].bounds))
+        if (widest < 0 || children[i].bounds.surfaceArea() > children[std::size_t(widest)].bounds.surfaceArea())
           widest = int(i);
       }
       if (widest < 0) break;
