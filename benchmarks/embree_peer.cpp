@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "engine/camera.hpp"
+#include "engine/camera/camera.h"
 
 namespace facet::peers {
 

@@ -1,4 +1,4 @@
-#include "materials/albedo.hpp"
+#include "materials/albedo.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "materials/material.hpp"
+#include "materials/material.h"
 
 #include <nlohmann/json.hpp>
 
@@ -7,8 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "materials/models.hpp"
-#include "materials/presets.hpp"
+#include "materials/models.h"
+#include "materials/presets.h"
 
 namespace facet::materials {
 

@@ -1,4 +1,4 @@
-#include "materials/models.hpp"
+#include "materials/models.h"
 
 #include <stdexcept>
 

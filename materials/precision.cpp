@@ -1,4 +1,4 @@
-#include "materials/precision.hpp"
+#include "materials/precision.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
@@ -9,8 +9,8 @@
 #include <sstream>
 #include <numbers>
 
-#include "materials/models.hpp"
-#include "materials/shading.hpp"
+#include "materials/models.h"
+#include "materials/shading.h"
 
 namespace facet::materials {
 

@@ -1,4 +1,4 @@
-#include "materials/presets.hpp"
+#include "materials/presets.h"
 
 #include <cmath>
 

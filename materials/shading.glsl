@@ -1,4 +1,4 @@
-// GLSL side of the shared shading source (C++ side: materials/shading.hpp).
+// GLSL side of the shared shading source (C++ side: materials/shading.h).
 // A compute shader uses it with
 //   #extension GL_GOOGLE_include_directive : require
 //   #include "materials/shading.glsl"

@@ -15,7 +15,7 @@
 #include "scenes/control_cage.h"
 #include "scenes/environment_map.h"
 #include "scenes/subdivision_surface.h"
-#include "materials/material.hpp"
+#include "materials/material.h"
 
 namespace facet::scene {
 

@@ -8,7 +8,7 @@
 
 #include "commands.h"
 #include "material_options.h"
-#include "materials/albedo.hpp"
+#include "materials/albedo.h"
 
 namespace facet::cli {
 namespace {

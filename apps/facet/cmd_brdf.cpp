@@ -10,7 +10,7 @@
 
 #include "commands.h"
 #include "material_options.h"
-#include "materials/models.hpp"
+#include "materials/models.h"
 
 namespace facet::cli {
 namespace {

@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "commands.h"
-#include "materials/precision.hpp"
+#include "materials/precision.h"
 
 namespace facet::cli {
 

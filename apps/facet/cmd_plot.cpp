@@ -13,8 +13,8 @@
 #include "commands.h"
 #include "gnuplot.h"
 #include "material_options.h"
-#include "materials/albedo.hpp"
-#include "materials/models.hpp"
+#include "materials/albedo.h"
+#include "materials/models.h"
 
 namespace facet::cli {
 namespace {

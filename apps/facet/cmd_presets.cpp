@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "commands.h"
-#include "materials/presets.hpp"
+#include "materials/presets.h"
 
 namespace facet::cli {
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "materials/models.hpp"
+#include "materials/models.h"
 
 namespace facet::cli {
 

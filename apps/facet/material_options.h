@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "materials/material.hpp"
+#include "materials/material.h"
 
 namespace facet::cli {
 

@@ -32,9 +32,9 @@
 #include <vector>
 
 #include "ceiling_kernels/spirv.h"
-#include "engine/camera.hpp"
+#include "engine/camera/camera.h"
 #include "engine/gpu/gpu.h"
-#include "engine/gpu_backend/raycast_layout.hpp"
+#include "engine/gpu_backend/raycast_layout.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_geometry.h"
 

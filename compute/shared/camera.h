@@ -2,7 +2,7 @@
 // convention for both backends. Pixel (i, j) is sampled at (i + sx, j + sy)
 // with (sx, sy) = (0.5, 0.5) at its centre; row 0 is the top of the image.
 // Written in the common subset of both languages (scalar type `real`, typed
-// literals, no references); C++ instantiates it in engine/camera.hpp.
+// literals, no references); C++ instantiates it in engine/camera/camera.h.
 
 // The camera as both sides see it: an orthonormal frame and the image plane
 // at distance 1 along `forward`, scaled by tan(fov / 2).

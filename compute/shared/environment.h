@@ -1,7 +1,7 @@
 // Shared GLSL / C++ source (the rules of materials/shading/common.h: scalar
 // type `real`, typed literals, no references): the environment's geometry
 // and the pieces of image-based lighting both backends compute the same way.
-// C++ instantiates it in engine/ibl/environment_math.hpp; kernels include it
+// C++ instantiates it in engine/ibl/environment_math.h; kernels include it
 // after materials/shading.glsl. No include guard (C++ includes it once per
 // real type).
 //

@@ -1,5 +1,5 @@
 // The limit patches as the GPU reads them. C++ includes this file through
-// engine/gpu_backend/raycast_layout.hpp; the rules of raycast_layout.h apply.
+// engine/gpu_backend/raycast_layout.h; the rules of raycast_layout.h apply.
 #ifndef FACET_SHARED_PATCH_RECORDS_H
 #define FACET_SHARED_PATCH_RECORDS_H
 

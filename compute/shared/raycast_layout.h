@@ -4,8 +4,8 @@
 //     vectors and no arrays, so std430, std140 and C++ agree without padding;
 //   - constants are `const uint` at file scope;
 //   - no #include, no C++-only syntax.
-// C++ includes them through engine/gpu_backend/raycast_layout.hpp, which
-// static_asserts the sizes; tests/gpu_render/gpu_scene_test.cpp checks the
+// C++ includes them through engine/gpu_backend/raycast_layout.h, which
+// static_asserts the sizes; tests/engine/gpu_backend/gpu_scene_test.cpp checks the
 // offsets glslang chose.
 #ifndef FACET_SHARED_RAYCAST_LAYOUT_H
 #define FACET_SHARED_RAYCAST_LAYOUT_H

@@ -10,12 +10,12 @@
 #include <optional>
 #include <thread>
 
-#include "engine/camera.hpp"
+#include "engine/camera/camera.h"
 #include "engine/cpu/intersect.h"
 #include "engine/ibl/environment_lighting.h"
 #include "engine/ibl/environment_lookup.h"
-#include "engine/ibl/environment_math.hpp"
-#include "materials/material.hpp"
+#include "engine/ibl/environment_math.h"
+#include "materials/material.h"
 
 namespace facet::cpu {
 namespace {

@@ -5,14 +5,14 @@
 #include <cmath>
 #include <optional>
 
-#include "engine/camera.hpp"
+#include "engine/camera/camera.h"
 #include "engine/gpu_backend/gpu_scene.h"
 #include "engine/gpu_backend/prefilter_gpu.h"
-#include "engine/gpu_backend/raycast_layout.hpp"
+#include "engine/gpu_backend/raycast_layout.h"
 #include "engine/gpu_backend/shading_records.h"
 #include "engine/ibl/environment_lighting.h"
 #include "facet_raycast_kernels/spirv.h"
-#include "materials/material.hpp"
+#include "materials/material.h"
 
 namespace facet::gpu_backend {
 namespace {

@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "engine/gpu_backend/raycast_layout.hpp"
+#include "engine/gpu_backend/raycast_layout.h"
 #include "scenes/scene.h"
 #include "scenes/scene_geometry.h"
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/ibl/environment_math.hpp"
+#include "engine/ibl/environment_math.h"
 #include "engine/ibl/prefilter_steps.h"
 #include "facet_ibl_kernels/spirv.h"
 

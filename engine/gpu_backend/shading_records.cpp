@@ -5,7 +5,7 @@
 #include <bit>
 #include <cmath>
 
-#include "materials/material.hpp"
+#include "materials/material.h"
 
 namespace facet::gpu_backend {
 

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "engine/gpu_backend/raycast_layout.hpp"
+#include "engine/gpu_backend/raycast_layout.h"
 #include "engine/ibl/environment_lighting.h"
 #include "scenes/scene.h"
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "engine/ibl/environment_math.hpp"
+#include "engine/ibl/environment_math.h"
 
 namespace facet::ibl {
 namespace {

@@ -9,7 +9,7 @@
 
 #include <cstddef>
 
-#include "engine/ibl/environment_math.hpp"
+#include "engine/ibl/environment_math.h"
 
 namespace facet::ibl {
 

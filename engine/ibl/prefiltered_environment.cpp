@@ -10,7 +10,7 @@
 #include <thread>
 
 #include "engine/ibl/environment_lookup.h"
-#include "engine/ibl/environment_math.hpp"
+#include "engine/ibl/environment_math.h"
 #include "engine/ibl/prefilter_steps.h"
 
 namespace facet::ibl {

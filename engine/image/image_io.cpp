@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "materials/presets.hpp"
+#include "materials/presets.h"
 
 namespace facet {
 namespace {

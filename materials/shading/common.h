@@ -1,6 +1,6 @@
 // Shared GLSL / C++ source: constants and the numerical policy of the shading
 // model. Written in the common subset of both languages (see
-// materials/shading.hpp and materials/shading.glsl): scalar type `real`,
+// materials/shading.h and materials/shading.glsl): scalar type `real`,
 // typed literals so the float instantiation really computes in float, no
 // references, no constructors of structs. No include guard on purpose: C++
 // includes this file once per real type, each time in its own namespace.

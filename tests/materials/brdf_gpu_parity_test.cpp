@@ -7,9 +7,9 @@
 #include <random>
 
 #include "facet_materials_spirv/spirv.h"
-#include "materials/models.hpp"
-#include "materials/shading.hpp"
-#include "tests/gpu/gpu_test.h"
+#include "materials/models.h"
+#include "materials/shading.h"
+#include "tests/support/gpu_device.h"
 
 namespace facet::materials {
 namespace {

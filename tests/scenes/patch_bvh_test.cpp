@@ -1,6 +1,6 @@
 #include "scenes/patch_bvh.h"
 #include "scenes/subdivision_surface.h"
-#include "test_cages.h"
+#include "tests/support/cages.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

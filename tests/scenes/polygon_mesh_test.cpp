@@ -4,7 +4,7 @@
 #include "scenes/scene_file.h"
 #include "scenes/scene_geometry.h"
 #include "scenes/subdivision_surface.h"
-#include "test_cages.h"
+#include "tests/support/cages.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

@@ -1,0 +1,40 @@
+// C++ side of compute/shared/environment.h and compute/shared/random.h,
+// instantiated next to the shading models they build on:
+// facet::materials::f64 (the CPU reference) and facet::materials::f32 (what
+// the GPU computes, for tests).
+#pragma once
+
+#include <glm/common.hpp>
+
+#include <cmath>
+#include <cstdint>
+
+#include "materials/shading.h"
+
+#define FACET_FN inline
+
+// What the shared source needs beyond materials/shading.h's built-ins:
+// GLSL's 32-bit uint, two-argument atan and floor.
+#define FACET_ENVIRONMENT_GLSL_BUILTINS                         \
+  using uint = std::uint32_t;                                   \
+  inline real atan(real y, real x) { return std::atan2(y, x); } \
+  using glm::floor;
+
+namespace facet::materials {
+
+namespace f64 {
+FACET_ENVIRONMENT_GLSL_BUILTINS
+#include "compute/shared/environment.h"
+#include "compute/shared/random.h"
+}  // namespace f64
+
+namespace f32 {
+FACET_ENVIRONMENT_GLSL_BUILTINS
+#include "compute/shared/environment.h"
+#include "compute/shared/random.h"
+}  // namespace f32
+
+}  // namespace facet::materials
+
+#undef FACET_ENVIRONMENT_GLSL_BUILTINS
+#undef FACET_FN

@@ -1,0 +1,63 @@
+// A material: the choice of D, G and F plus their parameters, assembled from
+// a preset, command-line flags or a JSON file, validated once.
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <nlohmann/json_fwd.hpp>
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "materials/shading.h"
+
+namespace facet::materials {
+
+struct Material {
+  std::string name;
+  int distribution = f64::D_GGX;
+  int geometry = f64::G_SMITH_GGX_CORRELATED;
+  int fresnel = f64::F_SCHLICK;
+  double alpha = 0.25;  // microfacet alpha = perceptual roughness^2
+  glm::dvec3 f0{0.04};  // used by Schlick
+  glm::dvec3 eta{1.5};  // index of refraction (dielectric) or its real part (conductor)
+  glm::dvec3 k{0.0};    // extinction coefficient (conductor)
+  glm::dvec3 diffuse{0.0};
+};
+
+f64::BrdfParams toParams64(const Material& material);
+f32::BrdfParams toParams32(const Material& material);
+
+// What a user wrote, before validation. Field names are the JSON keys; the
+// command line uses the same names as flags.
+struct MaterialSpec {
+  std::string name;
+  std::optional<std::string> preset;
+  std::optional<std::string> distribution;
+  std::optional<std::string> geometry;
+  std::optional<std::string> fresnel;
+  std::optional<double> alpha;
+  std::optional<double> roughness;
+  std::optional<glm::dvec3> f0;
+  std::optional<glm::dvec3> ior;
+  std::optional<glm::dvec3> eta;
+  std::optional<glm::dvec3> k;
+  std::optional<glm::dvec3> diffuse;
+};
+
+// Validates and resolves a spec. Throws std::invalid_argument whose message
+// starts with describeField(<field>) and states the rule that was broken.
+// Defaults: ggx, smith-ggx-correlated, schlick (none when no F parameter and
+// no preset is given), diffuse 0.
+Material buildMaterial(const MaterialSpec& spec,
+                       const std::function<std::string(std::string_view field)>& describeField);
+
+// JSON material format, documented in docs/shading.md. Errors name the file
+// (source) and the field.
+MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view source);
+Material loadMaterial(const std::filesystem::path& path);
+nlohmann::json toJson(const Material& material);
+
+}  // namespace facet::materials

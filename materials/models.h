@@ -1,0 +1,55 @@
+// Names of the interchangeable parts of the BRDF, as used on the command line
+// and in material files, mapped to the ids of the shared shading source.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "materials/shading.h"
+
+namespace facet::materials {
+
+struct ModelName {
+  int id;
+  std::string_view name;
+  std::string_view description;
+};
+
+inline constexpr ModelName kDistributions[] = {
+    {f64::D_GGX, "ggx", "GGX / Trowbridge-Reitz"},
+    {f64::D_BECKMANN, "beckmann", "Beckmann"},
+    {f64::D_BLINN_PHONG, "blinn-phong", "normalized Blinn-Phong, exponent 2/alpha^2 - 2"},
+};
+
+inline constexpr ModelName kGeometryTerms[] = {
+    {f64::G_IMPLICIT, "implicit", "G = (n.l)(n.v)"},
+    {f64::G_COOK_TORRANCE, "cook-torrance", "Cook-Torrance V-cavity"},
+    {f64::G_KELEMEN, "kelemen", "Kelemen & Szirmay-Kalos, (n.l)(n.v)/(v.h)^2"},
+    {f64::G_SMITH_GGX, "smith-ggx", "Smith separable, GGX microsurface"},
+    {f64::G_SMITH_GGX_CORRELATED, "smith-ggx-correlated", "Smith height-correlated, GGX"},
+    {f64::G_SMITH_BECKMANN, "smith-beckmann", "Smith separable, Beckmann microsurface"},
+    {f64::G_SMITH_BECKMANN_CORRELATED, "smith-beckmann-correlated", "Smith height-correlated, Beckmann"},
+};
+
+inline constexpr ModelName kFresnelTerms[] = {
+    {f64::F_NONE, "none", "F = 1"},
+    {f64::F_SCHLICK, "schlick", "Schlick from F(0) = c_spec (RGB)"},
+    {f64::F_DIELECTRIC, "dielectric", "exact, real index of refraction"},
+    {f64::F_CONDUCTOR, "conductor", "exact, complex index eta + i k per RGB channel"},
+};
+
+inline constexpr ModelName kSamplingTechniques[] = {
+    {f64::SAMPLE_COSINE, "cosine", "cosine-weighted hemisphere"},
+    {f64::SAMPLE_D, "d", "half vector proportional to D(m)(n.m)"},
+    {f64::SAMPLE_GGX_VISIBLE, "ggx-visible", "GGX distribution of visible normals"},
+};
+
+// The id of `name` in `table`; throws std::invalid_argument naming `what`
+// and listing the valid names.
+int parseModel(std::span<const ModelName> table, std::string_view what, std::string_view name);
+std::string_view modelName(std::span<const ModelName> table, int id);
+// "a, b, c" for error messages and help texts.
+std::string modelList(std::span<const ModelName> table);
+
+}  // namespace facet::materials

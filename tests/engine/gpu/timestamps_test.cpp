@@ -1,0 +1,69 @@
+#include <chrono>
+#include <cmath>
+
+#include "facet_kernels/spirv.h"
+#include "tests/support/gpu_device.h"
+
+namespace facet::gpu::testing {
+namespace {
+
+class Timestamps : public GpuTest {
+ protected:
+  // GPU time of a busy-loop dispatch, and the host's wall time around it: the
+  // fastest of three runs, since another process can only ever add time.
+  std::pair<double, double> timeBusyLoop(int iterations) {
+    auto shader = module("fma_chain", spirv::fma_chain);
+    auto pipeline =
+        device_.createComputePipeline({"busy", nullptr, &shader, "main", {{"kIterations", double(iterations)}}});
+    auto layout = pipeline.getBindGroupLayout(0);
+    Buffer values = upload(std::vector<float>(4 * 4096, 0.5f));
+    auto group = device_.createBindGroup({"busy", &layout, {{0, &values}}});
+    auto queries = device_.createQuerySet({"busy", 2});
+    auto run = [&](const QuerySet* timed) {
+      auto encoder = device_.createCommandEncoder();
+      {
+        auto pass = encoder.beginComputePass({"busy", {timed, 0, 1}});
+        pass.setPipeline(pipeline);
+        pass.setBindGroup(0, group);
+        pass.dispatchWorkgroups(4096 / 64);
+      }
+      device_.queue().submit(encoder.finish());
+      device_.queue().waitIdle();
+    };
+    run(nullptr);  // lavapipe compiles the shader at its first dispatch
+    std::pair<double, double> fastest{INFINITY, INFINITY};
+    for (int repeat = 0; repeat < 3; ++repeat) {
+      auto start = std::chrono::steady_clock::now();
+      run(&queries);
+      double hostNs = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
+      auto ns = queries.readTimestampsNs(0, 2);
+      if (ns[1] - ns[0] < fastest.first) fastest = {ns[1] - ns[0], hostNs};
+    }
+    return fastest;
+  }
+};
+
+TEST_F(Timestamps, PassDurationsArePositiveAndPlausible) {
+  ASSERT_GT(device_.limits().timestampPeriodNs, 0.0) << "this adapter's queue cannot write timestamps";
+  auto [shortGpu, shortHost] = timeBusyLoop(256);  // ~0.7 ms of arithmetic on lavapipe, 2 cores
+  auto [longGpu, longHost] = timeBusyLoop(4096);
+  EXPECT_GT(shortGpu, 0.0);
+  // The device cannot take longer than the host waited for it.
+  EXPECT_LE(shortGpu, shortHost);
+  EXPECT_LE(longGpu, longHost);
+  // 16x the loop iterations: clearly longer, whatever else the machine does.
+  EXPECT_GT(longGpu, 2.0 * shortGpu) << "short " << shortGpu << " ns, long " << longGpu << " ns";
+}
+
+TEST_F(Timestamps, ReadingUnwrittenQueriesIsAnError) {
+  auto queries = device_.createQuerySet({"unused", 2});
+  try {
+    queries.readTimestampsNs(0, 2);
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("never written"));
+  }
+}
+
+}  // namespace
+}  // namespace facet::gpu::testing

@@ -1,0 +1,166 @@
+// The GPU backend held to the CPU reference on small images: every example
+// scene and every torture cage, both intersection methods, within the
+// tolerances of engine/parity.h.
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "tests/support/translate_scene.h"
+#include "engine/cpu/reference_renderer.h"
+#include "engine/gpu_backend/gpu_renderer.h"
+#include "engine/parity.h"
+#include "tests/support/gpu_device.h"
+#include "scenes/scene_file.h"
+#include "scenes/scene_geometry.h"
+
+namespace facet {
+namespace {
+
+struct ParityCase {
+  std::filesystem::path file;
+  scene::IntersectionMethod method;
+  int samplesPerPixel = 1;
+};
+
+void PrintTo(const ParityCase& c, std::ostream* out) {
+  *out << c.file.filename().string() << (c.method == scene::IntersectionMethod::Exact ? " exact" : " tessellated")
+       << ", " << c.samplesPerPixel << " spp";
+}
+
+std::string caseName(const ::testing::TestParamInfo<ParityCase>& info) {
+  std::string name = info.param.file.stem().string() + "_" +
+                     (info.param.method == scene::IntersectionMethod::Exact ? "exact" : "tess") + "_spp" +
+                     std::to_string(info.param.samplesPerPixel);
+  std::replace_if(
+      name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+  return name;
+}
+
+std::vector<ParityCase> everyScene() {
+  std::vector<std::filesystem::path> files = {std::filesystem::path(FACET_EXAMPLES_DIR) / "preview.json",
+                                              std::filesystem::path(FACET_EXAMPLES_DIR) / "gold_cube.gltf",
+                                              std::filesystem::path(FACET_TEST_DATA_DIR) / "smooth_gem.gltf"};
+  std::vector<std::filesystem::path> cages;
+  for (const auto& entry : std::filesystem::directory_iterator(FACET_CAGE_DIR))
+    if (entry.path().extension() == ".obj") cages.push_back(entry.path());
+  std::sort(cages.begin(), cages.end());
+  files.insert(files.end(), cages.begin(), cages.end());
+  std::vector<ParityCase> cases;
+  for (const auto& file : files)
+    for (auto method : {scene::IntersectionMethod::Exact, scene::IntersectionMethod::Tessellated})
+      cases.push_back({file, method});
+  return cases;
+}
+
+class GpuParity : public gpu::testing::GpuTest, public ::testing::WithParamInterface<ParityCase> {};
+
+TEST_P(GpuParity, MatchesTheCpuReferenceWithinTolerance) {
+  scene::Scene scene = scene::loadScene(GetParam().file);
+  scene.render.width = 64;
+  scene.render.height = 48;
+  scene.render.method = GetParam().method;
+  scene.render.samplesPerPixel = GetParam().samplesPerPixel;
+  const scene::SceneGeometry geometry = scene::buildGeometry(scene);
+  cpu::ReferenceStatistics cpuRays;
+  const Image reference = cpu::renderReference(scene, geometry, &cpuRays);
+
+  gpu_backend::GpuRenderer renderer(device_);
+  const gpu_backend::GpuRenderResult gpu = renderer.render(scene, geometry);
+  const ParityReport parity = compareImages(reference, gpu.image);
+
+  EXPECT_TRUE(parity.pass) << describe(parity);
+  // A blank frame would compare equal: each scene must show something.
+  EXPECT_GT(parity.covered, 50u);
+  EXPECT_EQ(gpu.primaryRays, cpuRays.primaryRays);
+  // Lights skipped below the horizon may differ where n.l rounds across 0.
+  EXPECT_NEAR(double(gpu.shadowRays), double(cpuRays.shadowRays), 1e-3 * double(cpuRays.shadowRays) + 2);
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryScene, GpuParity, ::testing::ValuesIn(everyScene()), caseName);
+
+// Stratified samples: fractional coverage at silhouettes, and the centre ray
+// traced on its own for the AOVs.
+INSTANTIATE_TEST_SUITE_P(Supersampled, GpuParity,
+                         ::testing::Values(ParityCase{std::filesystem::path(FACET_CAGE_DIR) / "creased_box.obj",
+                                                      scene::IntersectionMethod::Exact, 4},
+                                           ParityCase{std::filesystem::path(FACET_CAGE_DIR) / "creased_box.obj",
+                                                      scene::IntersectionMethod::Tessellated, 4}),
+                         caseName);
+
+// Precise anywhere: the GPU works relative to the eye, so a scene far from
+// the world origin holds the same tolerances as one at it, as far as the
+// CPU reference (double) holds.
+struct FarCase {
+  std::string cage;
+  scene::IntersectionMethod method;
+  double distance;
+};
+
+void PrintTo(const FarCase& c, std::ostream* out) {
+  *out << c.cage << (c.method == scene::IntersectionMethod::Exact ? " exact" : " tessellated") << " at "
+       << c.distance;
+}
+
+class FarFromTheOrigin : public gpu::testing::GpuTest, public ::testing::WithParamInterface<FarCase> {};
+
+TEST_P(FarFromTheOrigin, MatchesTheCpuReferenceWithinTolerance) {
+  scene::Scene scene = scene::loadScene(std::filesystem::path(FACET_CAGE_DIR) / (GetParam().cage + ".obj"));
+  scene.render.width = 64;
+  scene.render.height = 48;
+  scene.render.method = GetParam().method;
+  const glm::dvec3 offset = GetParam().distance * glm::normalize(glm::dvec3(1.0, -0.5, 0.75));
+  facet::testing::translateScene(scene, offset);
+  const scene::SceneGeometry geometry = scene::buildGeometry(scene);
+  const Image reference = cpu::renderReference(scene, geometry);
+  gpu_backend::GpuRenderer renderer(device_);
+  const ParityReport parity = compareImages(reference, renderer.render(scene, geometry).image);
+  EXPECT_TRUE(parity.pass) << describe(parity);
+  EXPECT_GT(parity.covered, 50u);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Translated, FarFromTheOrigin,
+    ::testing::Values(FarCase{"suzanne", scene::IntersectionMethod::Exact, 1e3},
+                      FarCase{"suzanne", scene::IntersectionMethod::Exact, 1e6},
+                      FarCase{"suzanne", scene::IntersectionMethod::Tessellated, 1e6},
+                      FarCase{"creased_box", scene::IntersectionMethod::Exact, 1e6},
+                      FarCase{"creased_box", scene::IntersectionMethod::Tessellated, 1e6}),
+    [](const ::testing::TestParamInfo<FarCase>& info) {
+      return info.param.cage + (info.param.method == scene::IntersectionMethod::Exact ? "_exact_" : "_tess_") +
+             std::to_string(int(std::round(std::log10(info.param.distance))));
+    });
+
+class GpuRendererTest : public gpu::testing::GpuTest {};
+
+TEST_F(GpuRendererTest, ReportsGpuTimePerStage) {
+  scene::Scene scene = scene::loadScene(std::filesystem::path(FACET_CAGE_DIR) / "cube.obj");
+  scene.render.width = 16;
+  scene.render.height = 12;
+  scene.render.method = scene::IntersectionMethod::Tessellated;
+  gpu_backend::GpuRenderer renderer(device_);
+  const gpu_backend::GpuRenderResult result = renderer.render(scene, scene::buildGeometry(scene));
+  std::vector<std::string> names;
+  for (const auto& [name, milliseconds] : result.stageMilliseconds) {
+    names.push_back(name);
+    EXPECT_GT(milliseconds, 0.0) << name;
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"top levels", "dice grid", "dice cells", "quadtrees", "refit",
+                                             "intersect", "surface", "compact", "shadow rays", "gather", "resolve"}));
+  scene.render.method = scene::IntersectionMethod::Exact;
+  names.clear();
+  for (const auto& [name, milliseconds] : renderer.render(scene, scene::buildGeometry(scene)).stageMilliseconds)
+    names.push_back(name);
+  EXPECT_EQ(names, (std::vector<std::string>{"top levels", "dice cells", "quadtrees", "refit", "intersect",
+                                             "compact", "fallbacks", "surface", "shadow rays", "shadow fallbacks",
+                                             "gather", "resolve"}));
+}
+
+}  // namespace
+}  // namespace facet

@@ -1,0 +1,265 @@
+// The scene as the GPU ray caster receives it (engine/gpu_backend/gpu_scene.h):
+// the collapsed 4-wide top levels, the rebased patches, and the shared
+// headers' layout as glslang lays them out.
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <random>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "tests/support/translate_scene.h"
+#include "engine/gpu_backend/gpu_scene.h"
+#include "scenes/scene_file.h"
+#include "facet_gpu_backend_test_spirv/spirv.h"
+
+namespace facet::gpu_backend {
+namespace {
+
+namespace layout = gpu_layout;
+
+scene::Scene cageScene(const std::string& name, const glm::dvec3& offset = glm::dvec3(0.0)) {
+  scene::Scene scene = scene::loadScene(std::filesystem::path(FACET_CAGE_DIR) / (name + ".obj"));
+  facet::testing::translateScene(scene, offset);
+  return scene;
+}
+
+float boxValue(const GpuScene& packed, std::size_t node, int texel, int slot) {
+  return std::bit_cast<float>(packed.topNodes[node * layout::FACET_BVH4_TEXELS + std::size_t(texel)][std::size_t(slot)]);
+}
+
+class PackedCage : public ::testing::TestWithParam<std::string> {};
+
+// Every patch is reached exactly once from the root, through boxes that
+// contain its control hull, within the traversal's depth.
+TEST_P(PackedCage, TopLevelsReachEveryPatchOnceThroughEnclosingBoxes) {
+  const scene::Scene scene = cageScene(GetParam());
+  const scene::SceneGeometry geometry = scene::buildGeometry(scene);
+  const glm::dvec3 origin = scene.camera.eye;
+  const GpuScene packed = packScene(scene, geometry, origin, 0.0, false);
+  ASSERT_EQ(packed.objects.size(), 1u);
+  const layout::ObjectRange& range = packed.objects[0];
+  const scene::PatchBvh& bvh = geometry.objects[0].bvh;
+  const std::size_t topNodes = packed.topNodes.size() / layout::FACET_BVH4_TEXELS;
+  std::vector<int> reached(bvh.leafPatches().size(), 0);
+  struct Visit {
+    std::uint32_t node;
+    int depth;
+  };
+  std::vector<Visit> stack{{packed.rootNode, 1}};
+  int deepest = 0;
+  while (!stack.empty()) {
+    const Visit visit = stack.back();
+    stack.pop_back();
+    ASSERT_LT(visit.node, topNodes);
+    deepest = std::max(deepest, visit.depth);
+    const layout::uint* references =
+        packed.topNodes[visit.node * layout::FACET_BVH4_TEXELS + layout::FACET_BVH4_REFERENCES].data();
+    for (int slot = 0; slot < 4; ++slot) {
+      const layout::uint reference = references[slot];
+      if (reference == layout::FACET_BVH4_EMPTY) continue;
+      if (reference >= range.firstQuadtreeNode) {
+        const std::uint32_t offset = reference - range.firstQuadtreeNode;
+        ASSERT_EQ(offset % range.quadtreeNodes, 0u);
+        const std::size_t patch = offset / range.quadtreeNodes;
+        ASSERT_LT(patch, reached.size());
+        ++reached[patch];
+        const scene::Aabb hull = scene::patchBounds(geometry.objects[0].surface.bezierPatch(bvh.leafPatches()[patch]));
+        for (int axis = 0; axis < 3; ++axis) {
+          EXPECT_LE(double(boxValue(packed, visit.node, 2 * axis, slot)), hull.lo[axis] - origin[axis]);
+          EXPECT_GE(double(boxValue(packed, visit.node, 2 * axis + 1, slot)), hull.hi[axis] - origin[axis]);
+        }
+      } else {
+        stack.push_back({reference, visit.depth + 1});
+      }
+    }
+  }
+  for (int count : reached) EXPECT_EQ(count, 1);
+  EXPECT_LE(std::uint32_t(deepest) + range.quadtreeLevels, layout::FACET_BVH4_MAX_DEPTH);
+  // Four wide: about a third of the binary tree's depth... at most its depth.
+  EXPECT_LE(deepest, bvh.statistics().maxDepth + 1);
+}
+
+// The float points, relative to the eye, still describe OpenSubdiv's surface
+// to float precision of the scene's size, however far it is from the origin.
+TEST_P(PackedCage, RebasedPointsEvaluateToTheLimitSurfaceFarFromTheOrigin) {
+  const scene::Scene scene = cageScene(GetParam(), glm::dvec3(1e6, -2e6, 3e6));
+  const scene::SceneGeometry geometry = scene::buildGeometry(scene);
+  const scene::SubdivisionSurface& surface = geometry.objects[0].surface;
+  const glm::dvec3 origin = scene.camera.eye;
+  const GpuScene packed = packScene(scene, geometry, origin, 0.0, true);
+  ASSERT_EQ(packed.patches.size(), std::size_t(surface.patchCount()));
+  EXPECT_EQ(packed.gridVertices, packed.patches.size() * std::size_t((packed.objects[0].rate + 1) * (packed.objects[0].rate + 1)));
+  std::mt19937 random(13);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double worst = 0.0;
+  ASSERT_EQ(packed.headers.size(), layout::FACET_HEADER_TEXELS * packed.patches.size());
+  const layout::ObjectRange& range = packed.objects[0];
+  for (std::size_t slot = 0; slot < packed.patches.size(); ++slot) {
+    const layout::PatchRecord& record = packed.patches[slot];
+    const Texel& first = packed.headers[layout::FACET_HEADER_TEXELS * slot];
+    const Texel& second = packed.headers[layout::FACET_HEADER_TEXELS * slot + 1];
+    EXPECT_EQ(first[layout::FACET_HEADER_FIRST_POINT], record.firstPoint);
+    EXPECT_EQ(first[layout::FACET_HEADER_KIND], record.kind);
+    EXPECT_EQ(first[layout::FACET_HEADER_TRANSITION_MASK], record.transitionMask);
+    EXPECT_EQ(first[layout::FACET_HEADER_RATE], range.rate);
+    EXPECT_EQ(second[layout::FACET_HEADER_FIRST_CELL], range.firstCell + slot * range.rate * range.rate);
+    EXPECT_EQ(second[layout::FACET_HEADER_FIRST_GRID_VERTEX],
+              range.firstGridVertex + slot * (range.rate + 1) * (range.rate + 1));
+    EXPECT_EQ(second[layout::FACET_HEADER_FIRST_EDGE_MIDPOINT], range.firstEdgeMidpoint + slot * 4 * range.rate);
+    EXPECT_EQ(second[layout::FACET_HEADER_OBJECT], 0u);
+    scene::BezierPatch fromGpu;
+    fromGpu.gregory = record.kind == layout::FACET_PATCH_GREGORY;
+    auto read = [&](std::uint32_t index) { return glm::dvec3(glm::vec3(packed.points[index])); };
+    for (std::uint32_t k = 0; k < 16; ++k) fromGpu.points[k] = read(record.firstPoint + k);
+    if (fromGpu.gregory)
+      for (std::uint32_t k = 0; k < 4; ++k) fromGpu.alternates[k] = read(record.firstPoint + 16 + k);
+    for (int sample = 0; sample < 4; ++sample) {
+      const double s = unit(random), t = unit(random);
+      const glm::dvec3 osd = surface
+                                 .evaluatePatch(int(record.sourcePatch), record.faceU0 + s * record.faceSize,
+                                                record.faceV0 + t * record.faceSize)
+                                 .position;
+      worst = std::max(worst, glm::length(scene::evaluateBezierPatch(fromGpu, s, t).position + origin - osd));
+    }
+  }
+  const double sceneSize = glm::length(surface.bounds().hi - surface.bounds().lo) +
+                           glm::length(surface.bounds().centre() - origin);
+  EXPECT_LE(worst, 1e-6 * sceneSize) << GetParam();
+}
+
+// Over several objects the scene's own nodes lead to every object's patches,
+// each once, through boxes that hold the object.
+TEST(PackedScene, OneRootReachesEveryPatchOfEveryObjectOnce) {
+  const scene::Scene scene = scene::loadScene(std::filesystem::path(FACET_EXAMPLES_DIR) / "preview.json");
+  ASSERT_GT(scene.objects.size(), 4u);
+  const scene::SceneGeometry geometry = scene::buildGeometry(scene);
+  const GpuScene packed = packScene(scene, geometry, scene.camera.eye, 0.0, false);
+  const std::size_t topNodes = packed.topNodes.size() / layout::FACET_BVH4_TEXELS;
+  std::map<std::uint32_t, int> reached;  // quadtree root -> times
+  std::vector<std::uint32_t> stack{packed.rootNode};
+  while (!stack.empty()) {
+    const std::uint32_t node = stack.back();
+    stack.pop_back();
+    ASSERT_LT(node, topNodes);
+    for (int slot = 0; slot < 4; ++slot) {
+      const layout::uint reference =
+          packed.topNodes[node * layout::FACET_BVH4_TEXELS + layout::FACET_BVH4_REFERENCES][std::size_t(slot)];
+      if (reference == layout::FACET_BVH4_EMPTY) continue;
+      if (reference >= topNodes)
+        ++reached[reference];
+      else
+        stack.push_back(reference);
+    }
+  }
+  std::size_t patches = 0;
+  for (const layout::ObjectRange& range : packed.objects)
+    for (std::uint32_t p = 0; p < range.patchCount; ++p, ++patches)
+      EXPECT_EQ(reached[range.firstQuadtreeNode + p * range.quadtreeNodes], 1) << "object patch " << p;
+  EXPECT_EQ(reached.size(), patches);
+}
+
+INSTANTIATE_TEST_SUITE_P(TortureCages, PackedCage,
+                         ::testing::Values("cube", "valence_3_to_10", "pole24", "boundary_hole", "creased_box",
+                                           "ngon_prism", "thin_slab", "nearly_flat", "suzanne"));
+
+// The shared headers compiled as GLSL at build time (gpu_layout.comp):
+// the member offsets and array strides glslang chose for the std430 buffers
+// are the C++ ones.
+class SpirvLayout {
+ public:
+  explicit SpirvLayout(std::span<const std::uint32_t> words) {
+    for (size_t at = 5; at < words.size();) {
+      const std::uint32_t count = words[at] >> 16, opcode = words[at] & 0xffffu;
+      const std::span<const std::uint32_t> operands = words.subspan(at + 1, count - 1);
+      constexpr std::uint32_t kOpName = 5, kOpMemberName = 6, kOpTypeRuntimeArray = 29, kOpDecorate = 71,
+                              kOpMemberDecorate = 72, kArrayStride = 6, kOffset = 35;
+      if (opcode == kOpName) names_[operands[0]] = text(operands.subspan(1));
+      if (opcode == kOpMemberName) memberNames_[{operands[0], operands[1]}] = text(operands.subspan(2));
+      if (opcode == kOpTypeRuntimeArray) elementOf_[operands[0]] = operands[1];
+      if (opcode == kOpDecorate && operands[1] == kArrayStride) strides_[operands[0]] = operands[2];
+      if (opcode == kOpMemberDecorate && operands[2] == kOffset) offsets_[{operands[0], operands[1]}] = operands[3];
+      at += count;
+    }
+  }
+
+  // Offset of `member` in the buffer-block struct called `type`.
+  std::optional<std::uint32_t> offset(const std::string& type, const std::string& member) const {
+    for (const auto& [key, name] : memberNames_)
+      if (name == member && nameOf(key.first) == type && offsets_.count(key)) return offsets_.at(key);
+    return std::nullopt;
+  }
+
+  // Stride of the runtime array whose elements are `type`.
+  std::optional<std::uint32_t> stride(const std::string& type) const {
+    for (const auto& [array, element] : elementOf_)
+      if (nameOf(element) == type && strides_.count(array)) return strides_.at(array);
+    return std::nullopt;
+  }
+
+ private:
+  static std::string text(std::span<const std::uint32_t> words) {
+    std::string result;
+    for (std::uint32_t word : words)
+      for (int byte = 0; byte < 4; ++byte) {
+        const char c = static_cast<char>((word >> (8 * byte)) & 0xffu);
+        if (c == '\0') return result;
+        result.push_back(c);
+      }
+    return result;
+  }
+  std::string nameOf(std::uint32_t id) const { return names_.count(id) ? names_.at(id) : std::string(); }
+
+  std::map<std::uint32_t, std::string> names_;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::string> memberNames_;
+  std::map<std::uint32_t, std::uint32_t> elementOf_, strides_;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> offsets_;
+};
+
+TEST(GpuLayout, GlslLayoutOfTheSharedHeadersIsTheCppLayout) {
+  using namespace gpu_layout;
+  ASSERT_GT(facet::test_spirv::gpu_layout.size(), 5u);
+  ASSERT_EQ(facet::test_spirv::gpu_layout[0], 0x07230203u);  // SPIR-V magic
+  const SpirvLayout layout(facet::test_spirv::gpu_layout);
+
+  EXPECT_EQ(layout.stride("PatchRecord"), sizeof(PatchRecord));
+  EXPECT_EQ(layout.stride("ObjectRange"), sizeof(ObjectRange));
+  EXPECT_EQ(layout.stride("ShadowRayRecord"), sizeof(ShadowRayRecord));
+  EXPECT_EQ(layout.stride("HitRecord"), sizeof(HitRecord));
+  EXPECT_EQ(layout.stride("FallbackRecord"), sizeof(FallbackRecord));
+#define FACET_EXPECT_MEMBER(type, member) \
+  EXPECT_EQ(layout.offset(#type, #member), offsetof(type, member)) << #type "." #member
+  FACET_EXPECT_MEMBER(PatchRecord, kind);
+  FACET_EXPECT_MEMBER(PatchRecord, firstPoint);
+  FACET_EXPECT_MEMBER(PatchRecord, faceU0);
+  FACET_EXPECT_MEMBER(PatchRecord, sourcePatch);
+  FACET_EXPECT_MEMBER(PatchRecord, transitionMask);
+  FACET_EXPECT_MEMBER(PatchRecord, firstNormal);
+  FACET_EXPECT_MEMBER(ObjectRange, firstPatch);
+  FACET_EXPECT_MEMBER(FrameParams, rootNode);
+  FACET_EXPECT_MEMBER(ObjectRange, rate);
+  FACET_EXPECT_MEMBER(ObjectRange, firstQuadtreeNode);
+  FACET_EXPECT_MEMBER(ObjectRange, firstEdgeMidpoint);
+  FACET_EXPECT_MEMBER(ShadowRayRecord, slot);
+  FACET_EXPECT_MEMBER(RenderCounters, shadowX);
+  FACET_EXPECT_MEMBER(RenderCounters, cameraFallbacks);
+  FACET_EXPECT_MEMBER(RenderCounters, cameraFallbackX);
+  FACET_EXPECT_MEMBER(RenderCounters, shadowFallbackZ);
+  FACET_EXPECT_MEMBER(FallbackRecord, cell);
+  FACET_EXPECT_MEMBER(FallbackRecord, tParam);
+  FACET_EXPECT_MEMBER(FrameParams, fallbackCapacity);
+  FACET_EXPECT_MEMBER(FrameParams, patchCount);
+  FACET_EXPECT_MEMBER(FrameParams, tolerance);
+  FACET_EXPECT_MEMBER(FrameParams, dfgSize);
+#undef FACET_EXPECT_MEMBER
+}
+
+}  // namespace
+}  // namespace facet::gpu_backend

@@ -1,0 +1,121 @@
+// Image-based lighting on the GPU held to the CPU reference: both methods,
+// the sampled one with and without shadow rays, drawing the same random
+// numbers (compute/shared/random.h). Tolerances in docs/rendering.md.
+#include <gtest/gtest.h>
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "engine/cpu/reference_renderer.h"
+#include "engine/gpu_backend/gpu_renderer.h"
+#include "engine/parity.h"
+#include "scenes/scene_file.h"
+#include "scenes/scene_geometry.h"
+#include "tests/support/gpu_device.h"
+
+namespace facet {
+namespace {
+
+using scene::IblMethod;
+
+struct IblCase {
+  const char* name;
+  IblMethod method;
+  bool occlusion;
+  int samples;
+};
+
+void PrintTo(const IblCase& c, std::ostream* out) { *out << c.name; }
+
+// The default preview, lit by the courtyard alone, small.
+scene::Scene previewUnderCourtyard(const IblCase& c) {
+  scene::Scene s = scene::loadScene(std::filesystem::path(FACET_EXAMPLES_DIR) / "preview.json");
+  s.lights.clear();
+  s.render.width = 64;
+  s.render.height = 32;
+  s.render.method = scene::IntersectionMethod::Tessellated;
+  s.environment.emplace();
+  s.environment->map = std::make_shared<const scene::EnvironmentMap>(
+      scene::loadEnvironmentMap(std::filesystem::path(FACET_ENVIRONMENTS_DIR) / "courtyard_256x128.hdr"));
+  s.environment->rotationDegrees = 40;
+  s.environment->method = c.method;
+  s.environment->occlusion = c.occlusion;
+  s.environment->samples = c.samples;
+  return s;
+}
+
+// Per pixel, background included, max_c |gpu - cpu| / max(max_c cpu, 1e-3 x
+// the brightest), sorted.
+std::vector<double> relativeErrors(const Image& reference, const Image& candidate) {
+  float brightest = 0;
+  for (const glm::vec4& b : reference.beauty) brightest = std::max({brightest, b.r, b.g, b.b});
+  std::vector<double> errors;
+  for (std::size_t i = 0; i < reference.beauty.size(); ++i) {
+    const glm::vec3 a(reference.beauty[i]), b(candidate.beauty[i]);
+    const glm::vec3 d = glm::abs(a - b);
+    const double scale = std::max({a.r, a.g, a.b, 1e-3f * brightest});
+    errors.push_back(std::max({d.r, d.g, d.b}) / scale);
+  }
+  std::sort(errors.begin(), errors.end());
+  return errors;
+}
+
+class IblParity : public gpu::testing::GpuTest, public ::testing::WithParamInterface<IblCase> {};
+
+TEST_P(IblParity, MatchesTheCpuReference) {
+  const scene::Scene s = previewUnderCourtyard(GetParam());
+  const scene::SceneGeometry geometry = scene::buildGeometry(s);
+  cpu::ReferenceStatistics cpuRays;
+  const Image reference = cpu::renderReference(s, geometry, &cpuRays);
+  gpu_backend::GpuRenderer renderer(device_);
+  const gpu_backend::GpuRenderResult gpu = renderer.render(s, geometry);
+
+  const std::vector<double> errors = relativeErrors(reference, gpu.image);
+  const double median = errors[errors.size() / 2], p99 = errors[errors.size() * 99 / 100], worst = errors.back();
+  std::printf("%s: relative error median %.2e, 99th percentile %.2e, max %.2e; shadow rays cpu %llu gpu %llu\n",
+              GetParam().name, median, p99, worst, (unsigned long long)cpuRays.shadowRays,
+              (unsigned long long)gpu.shadowRays);
+  EXPECT_LT(median, 1e-4);
+  EXPECT_LT(p99, 2e-3);
+  EXPECT_LT(worst, 2e-2);
+  EXPECT_EQ(compareImages(reference, gpu.image).coverageMismatchesInterior, 0u);
+  EXPECT_NEAR(double(gpu.shadowRays), double(cpuRays.shadowRays), 1e-2 * double(cpuRays.shadowRays) + 2);
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, IblParity,
+                         ::testing::Values(IblCase{"prefiltered", IblMethod::Prefiltered, false, 1},
+                                           IblCase{"sampled_unoccluded", IblMethod::Sampled, false, 8},
+                                           IblCase{"sampled_occluded", IblMethod::Sampled, true, 4}),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+// Under a white environment a white Lambert surface returns 1 with the split
+// sum: the GPU's SH projection is exact too.
+class IblFurnaceOnGpu : public gpu::testing::GpuTest {};
+
+TEST_F(IblFurnaceOnGpu, PrefilteredWhiteLambertReturnsOne) {
+  scene::Scene s = scene::loadScene(std::filesystem::path(FACET_CAGE_DIR) / "cube.obj");
+  s.lights.clear();
+  s.materials[0].fresnel = materials::f64::F_DIELECTRIC;  // index 1: no specular lobe at all
+  s.materials[0].eta = glm::dvec3(1.0);
+  s.materials[0].diffuse = glm::dvec3(1.0);
+  s.render.width = s.render.height = 24;
+  s.render.method = scene::IntersectionMethod::Tessellated;
+  s.environment.emplace();
+  s.environment->map = std::make_shared<const scene::EnvironmentMap>(scene::constantEnvironment(glm::dvec3(1.0)));
+  gpu_backend::GpuRenderer renderer(device_);
+  const Image image = renderer.render(s, scene::buildGeometry(s)).image;
+  int covered = 0;
+  for (const glm::vec4& b : image.beauty) {
+    covered += b.a == 1.0f;
+    for (int c = 0; c < 3; ++c) ASSERT_NEAR(b[c], 1.0f, 1e-5f);
+  }
+  EXPECT_GT(covered, 50);
+}
+
+}  // namespace
+}  // namespace facet

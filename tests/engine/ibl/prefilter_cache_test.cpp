@@ -1,0 +1,139 @@
+// cachedPrefilter: a hit skips the build and returns what was stored; a
+// damaged file, other settings or an unwritable directory only cost a build.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+
+#include "engine/ibl/prefiltered_environment.h"
+#include "tests/support/environment_maps.h"
+
+namespace facet::ibl {
+namespace {
+
+namespace fs = std::filesystem;
+
+class PrefilterCache : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    directory_ = fs::temp_directory_path() / ("facet-prefilter-cache-" + std::to_string(std::random_device{}()));
+    fs::create_directories(directory_);
+    setenv("FACET_CACHE_DIR", directory_.c_str(), 1);
+    map_ = testing::mapOf(32, 16, testing::skyWithSun);
+    settings_.firstLevelWidth = 16;
+    settings_.samples = 16;
+    settings_.dfgSize = 8;
+    settings_.dfgSamples = 16;
+  }
+  void TearDown() override {
+    unsetenv("FACET_CACHE_DIR");
+    fs::remove_all(directory_);
+  }
+
+  PrefilteredEnvironment cached(const PrefilterSettings& settings) {
+    return cachedPrefilter(map_, models_, settings, "cpu", [&] {
+      ++builds_;
+      return prefilterOnCpu(map_, models_, settings);
+    });
+  }
+
+  std::vector<fs::path> files() const {
+    std::vector<fs::path> found;
+    for (const auto& entry : fs::directory_iterator(directory_)) found.push_back(entry.path());
+    return found;
+  }
+
+  static void expectSame(const PrefilteredEnvironment& a, const PrefilteredEnvironment& b) {
+    ASSERT_EQ(a.levels.size(), b.levels.size());
+    for (std::size_t i = 0; i < a.levels.size(); ++i) {
+      EXPECT_EQ(a.levels[i].width, b.levels[i].width);
+      EXPECT_EQ(a.levels[i].height, b.levels[i].height);
+      EXPECT_EQ(a.levels[i].alpha, b.levels[i].alpha);
+      EXPECT_EQ(a.levels[i].rgb, b.levels[i].rgb);
+    }
+    EXPECT_EQ(a.irradianceSh, b.irradianceSh);
+    ASSERT_EQ(a.dfg.size(), b.dfg.size());
+    for (std::size_t i = 0; i < a.dfg.size(); ++i) {
+      EXPECT_EQ(a.dfg[i].distribution, b.dfg[i].distribution);
+      EXPECT_EQ(a.dfg[i].geometry, b.dfg[i].geometry);
+      EXPECT_EQ(a.dfg[i].scaleBias, b.dfg[i].scaleBias);
+    }
+  }
+
+  fs::path directory_;
+  scene::EnvironmentMap map_;
+  PrefilterSettings settings_;
+  ModelPairs models_{{0, 4}, {1, 6}};
+  int builds_ = 0;
+};
+
+TEST_F(PrefilterCache, SecondCallReadsTheFile) {
+  const PrefilteredEnvironment first = cached(settings_);
+  EXPECT_EQ(builds_, 1);
+  ASSERT_EQ(files().size(), 1u);
+  const PrefilteredEnvironment second = cached(settings_);
+  EXPECT_EQ(builds_, 1);
+  expectSame(first, second);
+}
+
+TEST_F(PrefilterCache, DamagedFileIsRebuilt) {
+  const PrefilteredEnvironment reference = cached(settings_);
+  const fs::path file = files().at(0);
+  const auto size = fs::file_size(file);
+
+  fs::resize_file(file, size / 2);
+  expectSame(cached(settings_), reference);
+  EXPECT_EQ(builds_, 2);
+  EXPECT_EQ(fs::file_size(file), size);
+
+  {
+    std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(0);
+    f.put('X');
+  }
+  expectSame(cached(settings_), reference);
+  EXPECT_EQ(builds_, 3);
+
+  std::ofstream(file, std::ios::app) << "trailing";
+  expectSame(cached(settings_), reference);
+  EXPECT_EQ(builds_, 4);
+  expectSame(cached(settings_), reference);
+  EXPECT_EQ(builds_, 4);
+}
+
+TEST_F(PrefilterCache, OtherSettingsModelsOrMapUseAnotherFile) {
+  cached(settings_);
+  PrefilterSettings other = settings_;
+  other.samples = 32;
+  cached(other);
+  EXPECT_EQ(files().size(), 2u);
+  models_.pop_back();
+  cached(settings_);
+  EXPECT_EQ(files().size(), 3u);
+  map_.rgb[0] += 1;
+  cached(settings_);
+  EXPECT_EQ(files().size(), 4u);
+  EXPECT_EQ(builds_, 4);
+  cachedPrefilter(map_, models_, settings_, "gpu", [&] {
+    ++builds_;
+    return prefilterOnCpu(map_, models_, settings_);
+  });
+  EXPECT_EQ(files().size(), 5u);
+  EXPECT_EQ(builds_, 5);
+}
+
+TEST_F(PrefilterCache, UnwritableDirectoryOnlyCostsTheBuild) {
+  const fs::path blocker = directory_ / "not-a-directory";
+  std::ofstream(blocker) << "a file where the cache directory should be";
+  setenv("FACET_CACHE_DIR", (blocker / "cache").c_str(), 1);
+  const PrefilteredEnvironment first = cached(settings_);
+  const PrefilteredEnvironment second = cached(settings_);
+  EXPECT_EQ(builds_, 2);
+  expectSame(first, second);
+}
+
+}  // namespace
+}  // namespace facet::ibl
