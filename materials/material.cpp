@@ -9,6 +9,7 @@
 
 #include "materials/models.h"
 #include "materials/presets.h"
+#include "materials/strict_json.h"
 
 namespace facet::materials {
 
@@ -177,15 +178,7 @@ MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view s
 
   static const char* const kKeys[] = {"name",      "preset", "distribution", "geometry", "fresnel", "alpha",
                                       "roughness", "f0",     "ior",          "eta",      "k",       "diffuse"};
-  for (const auto& item : json.items()) {
-    bool known = false;
-    for (const char* key : kKeys) known = known || item.key() == key;
-    if (!known) {
-      std::string keys;
-      for (const char* key : kKeys) keys += (keys.empty() ? "" : ", ") + std::string(key);
-      fail(item.key(), "unknown field (expected one of: " + keys + ")");
-    }
-  }
+  if (const std::optional<std::string> key = findUnknownKey(json, kKeys)) fail(*key, unknownFieldRule(kKeys));
 
   MaterialSpec spec;
   spec.name = text("name").value_or("");

@@ -1,16 +1,5 @@
-// glTF 2.0 scenes through tinygltf. Mapping (documented in docs/scene-format.md):
-//   meshes      the triangles, strips and fans of a mesh instance become one
-//               cage, rendered as authored (Subdivision::None) unless asked
-//               otherwise; vertices at exactly the same position are welded,
-//               which leaves the polygons as they are and connects them, as a
-//               Catmull-Clark cage must be: glTF splits vertices at UV and
-//               normal seams
-//   materials   metallic-roughness factors: c_diff = base·(1 − metallic),
-//               c_spec = mix(0.04, base, metallic), α = roughness²; textures
-//               are not sampled
-//   cameras     the first perspective camera in the node hierarchy
-//   lights      KHR_lights_punctual; c_light = color · intensity / π, so that
-//               π f c_light (n·l) equals glTF's f · intensity · (n·l)
+// glTF 2.0 scenes through tinygltf; the mapping to facet's scene is
+// docs/scene-format.md, "glTF 2.0".
 #include <tiny_gltf.h>
 
 #include <glm/geometric.hpp>

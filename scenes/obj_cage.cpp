@@ -27,8 +27,6 @@ std::vector<std::string_view> splitWhitespace(std::string_view line) {
   return tokens;
 }
 
-// Parses the whole token or nothing; from_chars rejects a leading '+', OBJ
-// writers sometimes emit one.
 // Built by appending: GCC 12 warns (-Wrestrict, a false positive) on
 // "'" + std::string(...).
 std::string inQuotes(std::string_view text) {
@@ -38,6 +36,8 @@ std::string inQuotes(std::string_view text) {
   return result;
 }
 
+// Parses the whole token or nothing; from_chars rejects a leading '+', OBJ
+// writers sometimes emit one.
 template <typename T>
 bool parseNumber(std::string_view token, T& value) {
   if (!token.empty() && token.front() == '+') token.remove_prefix(1);
@@ -223,6 +223,17 @@ class ObjReader {
     return sharpness;
   }
 
+  // The option a tag's one string names, of the two it may name.
+  template <typename Option>
+  Option namedOption(const Tag& tag, std::pair<std::string_view, Option> first,
+                     std::pair<std::string_view, Option> second) const {
+    requireArguments(tag, 0, 0, 1);
+    for (const auto& [name, option] : {first, second})
+      if (tag.strings[0] == name) return option;
+    fail("unknown option", tag.name + " " + inQuotes(tag.strings[0]) + " is not " + inQuotes(first.first) + " or " +
+                               inQuotes(second.first));
+  }
+
   void readTag(const std::vector<std::string_view>& tokens) {
     Tag tag = parseTag(tokens);
     SubdivisionOptions& options = cage_.options;
@@ -261,21 +272,11 @@ class ObjReader {
         fail("unknown option", "facevaryinginterpolateboundary " + std::to_string(tag.ints[0]) + " is not in 0..5");
       options.faceVarying = static_cast<FaceVaryingInterpolation>(tag.ints[0]);
     } else if (tag.name == "creasemethod") {
-      requireArguments(tag, 0, 0, 1);
-      if (tag.strings[0] == "normal")
-        options.creasing = CreasingMethod::Uniform;
-      else if (tag.strings[0] == "chaikin")
-        options.creasing = CreasingMethod::Chaikin;
-      else
-        fail("unknown option", "creasemethod '" + tag.strings[0] + "' is not 'normal' or 'chaikin'");
+      options.creasing =
+          namedOption<CreasingMethod>(tag, {"normal", CreasingMethod::Uniform}, {"chaikin", CreasingMethod::Chaikin});
     } else if (tag.name == "smoothtriangles") {
-      requireArguments(tag, 0, 0, 1);
-      if (tag.strings[0] == "catmark")
-        options.triangles = TriangleSubdivision::Catmark;
-      else if (tag.strings[0] == "smooth")
-        options.triangles = TriangleSubdivision::Smooth;
-      else
-        fail("unknown option", "smoothtriangles '" + tag.strings[0] + "' is not 'catmark' or 'smooth'");
+      options.triangles = namedOption<TriangleSubdivision>(tag, {"catmark", TriangleSubdivision::Catmark},
+                                                           {"smooth", TriangleSubdivision::Smooth});
     } else {
       fail("unknown tag", inQuotes(tag.name) + " is not a tag OpenSubdiv 3 applies to Catmull-Clark cages");
     }

@@ -9,6 +9,7 @@
 #include <memory>
 #include <set>
 
+#include "materials/strict_json.h"
 #include "scenes/environment_map.h"
 #include "scenes/input_error.h"
 #include "scenes/obj_cage.h"
@@ -34,18 +35,12 @@ class Field {
   Field operator[](const char* key) const { return {value_.at(key), child(key), source_}; }
   Field operator[](std::size_t i) const { return {value_.at(i), path_ + "[" + std::to_string(i) + "]", source_}; }
 
-  // Only `keys` may appear: a misspelt key is an error, not silently ignored.
+  // Only `keys` may appear (materials/strict_json.h).
   const Field& object(std::initializer_list<const char*> keys) const {
     if (!value_.is_object()) fail("expected an object");
-    for (const auto& item : value_.items()) {
-      bool known = false;
-      for (const char* key : keys) known = known || item.key() == key;
-      if (!known) {
-        std::string list;
-        for (const char* key : keys) list += (list.empty() ? "" : ", ") + std::string(key);
-        Field{item.value(), child(item.key()), source_}.fail("unknown field (expected one of: " + list + ")");
-      }
-    }
+    const std::span<const char* const> known(keys.begin(), keys.size());
+    if (const std::optional<std::string> key = materials::findUnknownKey(value_, known))
+      (*this)[key->c_str()].fail(materials::unknownFieldRule(known));
     return *this;
   }
 

@@ -219,17 +219,11 @@ BezierPatch bezierFromGregory(const std::array<glm::dvec3, 20>& cvs) {
   return patch;
 }
 
-}  // namespace
-
-// Everything evaluation needs; the refiner is dropped once the patch table
-// and the points exist.
 // The authored normals at a bilinear patch's corners. On a quad face they are
 // its vertices' own; a face split once has patches through a vertex, two edge
 // midpoints and the centroid, whose normals are the normalized sums of the
 // normals there, as the split interpolates positions. Which a corner is
 // follows from its position (the refined points are exact averages).
-namespace {
-
 std::array<glm::dvec3, 4> cornerNormals(const ControlCage& cage, int face, int first,
                                         const std::array<glm::dvec3, 4>& corners) {
   const int count = cage.faceVertexCounts[std::size_t(face)];
@@ -259,6 +253,8 @@ std::array<glm::dvec3, 4> cornerNormals(const ControlCage& cage, int face, int f
 
 }  // namespace
 
+// Everything evaluation needs; the refiner is dropped once the patch table
+// and the points exist.
 struct SubdivisionSurface::Impl {
   std::unique_ptr<Far::PatchTable> patchTable;
   std::unique_ptr<Far::PatchMap> patchMap;
@@ -434,8 +430,8 @@ LimitPoint SubdivisionSurface::evaluatePatch(int index, double u, double v) cons
   const PatchInfo& info = impl_->patches[index];
   // OpenSubdiv scales derivatives by 2^depth, also on the sub-faces of
   // non-quad faces, which start at depth 1 and so span 2^-(depth-1) of
-  // their ptex face: there its derivatives are twice ours (measured,
-  // held by the finite-difference test). Rescale to ptex face parameters.
+  // their ptex face: there its derivatives are twice ours (the
+  // finite-difference test holds this). Rescale to ptex face parameters.
   const double derivativeScale = 1.0 / (info.domain.size * static_cast<double>(1 << info.depth));
   result.du *= derivativeScale;
   result.dv *= derivativeScale;

@@ -15,14 +15,10 @@
 //            polynomial) but only G0-accurate at the extraordinary vertex;
 //            offered for speed-against-accuracy charts.
 //
-// None, the polygons as authored: OpenSubdiv's bilinear scheme. A quad is one
-// bilinear patch through its four corners; any other face is refined once
-// into one bilinear quad per corner, through the corner, its two edge
-// midpoints and the face centroid (the ptex faces of Catmull-Clark's split),
-// so a triangle is exactly the flat triangle. Creases, corners and boundary
-// options do not apply; holes do. Each bilinear patch is degree-elevated to
-// the bicubic Bézier patch it equals, so the rest of the pipeline sees the
-// same form as for Catmull-Clark.
+// None, the polygons as authored: OpenSubdiv's bilinear scheme, one bilinear
+// patch per quad or per corner of any other face (docs/scene-format.md,
+// "Subdivision"). Each is degree-elevated to the bicubic Bézier patch it
+// equals, so the rest of the pipeline sees the same form as for Catmull-Clark.
 //
 // Points are computed in double precision (refined vertices through
 // PrimvarRefinerReal<double>, end-cap points through the double stencil
@@ -30,17 +26,16 @@
 // One exception, for derivatives of Gregory patches only: OpenSubdiv (unless
 // built with OPENSUBDIV_GREGORY_EVAL_TRUE_DERIVATIVES, which Debian's is not)
 // differentiates the Bézier patch with its rational interior frozen at
-// (u, v), which tilts the normal by up to 5e-4 rad on our cages. We return
-// the true derivatives of the same patch (its position is still
-// OpenSubdiv's; the tests hold the two forms equal to 1e-12).
+// (u, v), which tilts the normal. We return the true derivatives of the same
+// patch (its position is still OpenSubdiv's; the tests hold the two forms
+// equal to 1e-12).
 //
 // Parameters: every patch belongs to a ptex face (a quad of the cage, or one
 // of the n quads a non-quad face is split into) and covers the square
 // domain().u0 + [0, size] x domain().v0 + [0, size] of that face's (u, v).
-// Evaluation takes face (u, v) and returns derivatives with respect to it.
-// (OpenSubdiv 3.5 scales its derivatives on the quads of a non-quad face
-// by 2^depth although they span 2^-(depth-1) of their ptex face, i.e. twice
-// ours, under both schemes; evaluatePatch() rescales them.)
+// Evaluation takes face (u, v) and returns derivatives with respect to it,
+// also on the quads of a non-quad face, where OpenSubdiv's are twice that
+// (evaluatePatch() rescales them).
 
 #include "scenes/bezier_patch.h"
 #include "scenes/control_cage.h"

@@ -111,8 +111,8 @@ TEST(Albedo, WhiteFurnaceNeverGainsEnergy) {
 }
 
 TEST(Albedo, BeckmannSmithOnOtherSurfacesGainsEnergy) {
-  // The documented exception, held to its measured size so that the table
-  // in docs/shading.md stays true: each pairing reaches E > 1.3.
+  // The documented exception, held to the size the table in docs/shading.md
+  // gives it, so that the table stays true: each pairing reaches E > 1.3.
   for (int d : {f64::D_GGX, f64::D_BLINN_PHONG})
     for (int g : {f64::G_SMITH_BECKMANN, f64::G_SMITH_BECKMANN_CORRELATED}) {
       Furnace furnace = whiteFurnace(d, g);

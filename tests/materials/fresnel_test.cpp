@@ -70,9 +70,9 @@ TEST(Fresnel, SchlickMatchesItsClosedForm) {
 TEST(Fresnel, SchlickApproximatesExactDielectric) {
   // Schlick with F0 = ((eta-1)/(eta+1))^2 is exact at normal incidence and
   // at grazing; in between it errs most around 60 degrees (too low) and
-  // 80-85 degrees (too high). Bounds: the measured worst |Schlick - exact|
-  // over eta in {1.33, 1.5, 2.42}, rounded up (table in docs/shading.md):
-  // 0.002 up to 30 degrees, 0.02 up to 60, 0.08 beyond.
+  // 80-85 degrees (too high). Bounds: the worst |Schlick - exact| over eta
+  // in {1.33, 1.5, 2.42} in the table of docs/shading.md, rounded up: 0.002
+  // up to 30 degrees, 0.02 up to 60, 0.08 beyond.
   double worst = 0;
   for (double eta : {1.33, 1.5, 2.42}) {
     double f0 = std::pow((eta - 1) / (eta + 1), 2);

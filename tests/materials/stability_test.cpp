@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "materials/material.h"
 #include "materials/models.h"
 #include "materials/precision.h"
 #include "materials/shading.h"
@@ -22,7 +23,7 @@ TEST(Stability, SweepIsFiniteAndFloatIsAccurateWhereWellConditioned) {
   // Under the horizon both precisions give exactly 0.
   for (const auto& row : report.by_alpha_and_cos) EXPECT_EQ(row.front().max_relative_error, 0.0);
   // alpha >= 0.01 and min(n.l, n.v) >= 0.01: float within 1e-4 relative for
-  // every part (measured worst: see docs/shading.md; the bound leaves
+  // every part (docs/shading.md, section 8, has the table; the bound leaves
   // headroom for libm differences in exp and pow).
   for (const PrecisionReport::Part& part : report.by_part)
     EXPECT_LT(part.benign.max_relative_error, 1e-4) << part.kind << " " << part.name << ": " << part.benign.worst_case;
@@ -39,12 +40,13 @@ TEST(Stability, SamplersAreFiniteAtTheEdgesOfTheUnitSquare) {
         for (float theta : kThetaV)
           for (float u1 : kEdges)
             for (float u2 : kEdges) {
-              f32::BrdfParams p32;
-              p32.d_model = d.id;
-              p32.g_model = f64::G_SMITH_GGX;
-              p32.f_model = f64::F_NONE;
-              p32.alpha = alpha;
-              p32.f0 = p32.eta = p32.k = p32.diffuse = glm::vec3(0);
+              Material material;
+              material.distribution = d.id;
+              material.geometry = f64::G_SMITH_GGX;
+              material.fresnel = f64::F_NONE;
+              material.alpha = alpha;
+              material.f0 = material.eta = material.k = material.diffuse = glm::dvec3(0);
+              const f32::BrdfParams p32 = toParams32(material);
               glm::vec3 n(0, 0, 1), v(std::sin(theta), 0, std::cos(theta));
               glm::vec3 l = f32::sample_direction(technique, p32, n, v, {u1, u2});
               float pdf = f32::direction_pdf(technique, p32, n, l, v);
@@ -52,12 +54,7 @@ TEST(Stability, SamplersAreFiniteAtTheEdgesOfTheUnitSquare) {
                   << "technique " << technique << " d=" << d.name << " alpha=" << alpha << " theta_v=" << theta
                   << " u=" << u1 << "," << u2;
 
-              f64::BrdfParams p64;
-              p64.d_model = d.id;
-              p64.g_model = f64::G_SMITH_GGX;
-              p64.f_model = f64::F_NONE;
-              p64.alpha = alpha;
-              p64.f0 = p64.eta = p64.k = p64.diffuse = glm::dvec3(0);
+              const f64::BrdfParams p64 = toParams64(material);
               glm::dvec3 l64 =
                   f64::sample_direction(technique, p64, glm::dvec3(n), glm::dvec3(v), {double(u1), double(u2)});
               double pdf64 = f64::direction_pdf(technique, p64, glm::dvec3(n), l64, glm::dvec3(v));

@@ -18,6 +18,7 @@
 
 #include "scenes/environment_map.h"
 #include "scenes/input_error.h"
+#include "tests/support/temp_dir.h"
 
 namespace facet::scene {
 namespace {
@@ -30,14 +31,8 @@ const fs::path kEnvironments = FACET_ENVIRONMENTS_DIR;
 
 float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
-class EnvironmentMaps : public ::testing::Test {
+class EnvironmentMaps : public facet::testing::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::path(::testing::TempDir()) / ("facet_environment_" + std::to_string(std::random_device{}()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   // A FLOAT scanline EXR of the given channels (each width x height values),
   // its data window starting at `origin`.
   fs::path writeExr(const std::string& name, int width, int height,
@@ -91,8 +86,6 @@ class EnvironmentMaps : public ::testing::Test {
     }
     return "(no error)";
   }
-
-  fs::path dir_;
 };
 
 // Radiance over several orders of magnitude, as real maps have.

@@ -5,10 +5,10 @@
 
 #include <fstream>
 #include <numbers>
-#include <random>
 
 #include "scenes/input_error.h"
 #include "scenes/scene_file.h"
+#include "tests/support/temp_dir.h"
 
 namespace facet::scene {
 namespace {
@@ -19,14 +19,12 @@ using ::testing::HasSubstr;
 
 const fs::path kExamples = FACET_EXAMPLES_DIR;
 
-class SceneFiles : public ::testing::Test {
+class SceneFiles : public facet::testing::TempDirTest {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("facet_scene_" + std::to_string(std::random_device{}()));
-    fs::create_directories(dir_);
+    TempDirTest::SetUp();
     fs::copy_file(kExamples / "superball.obj", dir_ / "ball.obj");
   }
-  void TearDown() override { fs::remove_all(dir_); }
 
   fs::path write(const std::string& name, const std::string& text) {
     std::ofstream(dir_ / name) << text;
@@ -40,7 +38,6 @@ class SceneFiles : public ::testing::Test {
     }
     return "(no error)";
   }
-  fs::path dir_;
 };
 
 TEST_F(SceneFiles, ThePreviewSceneHasEveryPreset) {
