@@ -69,14 +69,9 @@ struct RenderSettings {
   std::optional<double> exactTolerance;
 };
 
-// How an environment lights the surface (docs/rendering.md, "Image-based
-// lighting"):
-//   Sampled      a Monte Carlo estimate of the reflectance equation: per
-//                camera sample, `samples` pairs of one environment
-//                (luminance) sample and one BRDF sample, combined by
-//                multiple importance sampling; shadow rays when `occlusion`;
-//   Prefiltered  the split sum: GGX-prefiltered radiance by roughness x a
-//                DFG table, plus spherical-harmonic irradiance; no occlusion.
+// How an environment lights the surface: Sampled, a Monte Carlo estimate by
+// multiple importance sampling, shadowed when `occlusion`; Prefiltered, the
+// split sum (Karis 2013), unshadowed (docs/rendering.md, "Image-based lighting").
 enum class IblMethod { Sampled, Prefiltered };
 
 // Radiance arriving from world direction w is intensity x map(R^-1 w), R a
