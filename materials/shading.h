@@ -1,6 +1,7 @@
 // C++ side of the shared shading source. The headers in materials/shading/
-// are written in the common subset of GLSL and C++; this file gives them
-// GLM types and GLSL's built-ins and instantiates them twice:
+// and the punctual lights of compute/shared/lights.h are written in the
+// common subset of GLSL and C++; this file gives them GLM types and GLSL's
+// built-ins and instantiates them twice:
 //   facet::materials::f64  double, the CPU reference
 //   facet::materials::f32  float, what the GPU computes (for tests and the
 //                          float-vs-double table)
@@ -9,6 +10,8 @@
 
 #include <glm/geometric.hpp>
 #include <glm/glm.hpp>
+
+#include <limits>
 
 #define FACET_FN inline
 
@@ -42,6 +45,8 @@ FACET_MATERIALS_GLSL_BUILTINS
 #include "materials/shading/fresnel.h"
 #include "materials/shading/brdf.h"
 #include "materials/shading/sampling.h"
+const real INFINITE_DISTANCE = std::numeric_limits<real>::infinity();
+#include "compute/shared/lights.h"
 }  // namespace f64
 
 namespace f32 {
@@ -54,6 +59,8 @@ FACET_MATERIALS_GLSL_BUILTINS
 #include "materials/shading/fresnel.h"
 #include "materials/shading/brdf.h"
 #include "materials/shading/sampling.h"
+const real INFINITE_DISTANCE = std::numeric_limits<real>::infinity();
+#include "compute/shared/lights.h"
 }  // namespace f32
 
 }  // namespace facet::materials

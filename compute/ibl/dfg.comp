@@ -5,9 +5,12 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "materials/shading.glsl"
-#include "compute/shared/environment.h"
+#include "compute/shared/config.h"
+#include "compute/shared/lobe_sampling.h"
+#include "compute/shared/low_discrepancy.h"
+#include "compute/shared/dfg.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = FACET_IBL_TILE_SIZE, local_size_y = FACET_IBL_TILE_SIZE) in;
 
 layout(constant_id = 0) const int D_MODEL = 0;
 layout(constant_id = 1) const int G_MODEL = 4;

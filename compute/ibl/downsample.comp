@@ -6,9 +6,12 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "materials/shading.glsl"
-#include "compute/shared/environment.h"
+#include "compute/shared/config.h"
+#include "compute/shared/environment_mapping.h"
+#include "compute/shared/low_discrepancy.h"
+#include "compute/shared/prefilter.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = FACET_IBL_TILE_SIZE, local_size_y = FACET_IBL_TILE_SIZE) in;
 
 layout(set = 0, binding = 0, std140) uniform Params {
   uint finerOffset;  // in floats

@@ -6,9 +6,10 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "materials/shading.glsl"
-#include "compute/shared/environment.h"
+#include "compute/shared/config.h"
+#include "compute/shared/spherical_harmonics.h"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = FACET_WORKGROUP_SIZE) in;
 
 layout(set = 0, binding = 0, std140) uniform Params {
   int width;

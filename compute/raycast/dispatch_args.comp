@@ -1,10 +1,11 @@
 // One invocation: the workgroup grids of the passes that work off the
 // kernels' lists (compute/shared/raycast_layout.h's RenderCounters), from
-// their lengths so far, as invocation_index() expects them: at most 65535
-// along x. Run after each pass that appends.
+// their lengths so far, as invocation_index() (workgroup.glsl) expects them.
+// Run after each pass that appends.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#include "compute/shared/config.h"
 #include "compute/shared/raycast_layout.h"
 
 layout(local_size_x = 1) in;
@@ -13,7 +14,8 @@ layout(set = 0, binding = 0, std140) uniform FrameBlock { FrameParams frame; };
 layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters; };
 
 uvec3 grid(uint invocations) {
-  uint groups = (invocations + 63u) / 64u, x = min(groups, 65535u);
+  uint size = uint(FACET_WORKGROUP_SIZE);
+  uint groups = (invocations + size - 1u) / size, x = min(groups, uint(FACET_MAX_WORKGROUPS_PER_DIMENSION));
   return uvec3(x, x == 0u ? 0u : (groups + x - 1u) / x, 1u);
 }
 

@@ -3,19 +3,10 @@
 // the split sum, laid out by FrameParams' offsets
 // (engine/gpu_backend/gpu_renderer.cpp). The same steps as the CPU
 // reference (engine/cpu/reference_renderer.cpp, engine/ibl/), in float.
-// Needs materials/shading.glsl, compute/shared/environment.h and `frame`.
+// Needs materials/shading.glsl, compute/shared/environment_mapping.h,
+// split_sum.h, dfg.h, spherical_harmonics.h and `frame`.
 #ifndef FACET_RAYCAST_ENVIRONMENT_GLSL
 #define FACET_RAYCAST_ENVIRONMENT_GLSL
-
-// Read as texel buffers (the fast path on lavapipe, and not bound by the
-// storage binding limit): the map's texels (level 0), per map texel the
-// sampled method's alias-table entry (keep probability and texel density as
-// float bits, the other texel), per prefiltered level where it starts and
-// its size, and the prefiltered data (levels, SH, DFG) one vec4 per entry.
-layout(set = 0, binding = 19) uniform samplerBuffer environmentTexels;
-layout(set = 0, binding = 20) uniform usamplerBuffer environmentLevels;
-layout(set = 0, binding = 21) uniform usamplerBuffer environmentSampling;
-layout(set = 0, binding = 23) uniform samplerBuffer environmentTables;
 
 vec3 to_map(vec3 world) {
   return environment_to_map(world, frame.environmentCosRotation, frame.environmentSinRotation);
@@ -25,8 +16,20 @@ vec3 from_map(vec3 map_direction) {
   return environment_from_map(map_direction, frame.environmentCosRotation, frame.environmentSinRotation);
 }
 
-// Texel (x, y) of prefiltered level `level`; level 0 is the map itself.
-// (first texel, width, height) of level `level`.
+// Read as texel buffers: the fast path on lavapipe, and not bound by the
+// storage binding limit.
+// The map's texels (level 0).
+layout(set = 0, binding = 19) uniform samplerBuffer environmentTexels;
+// Per prefiltered level, where it starts and its size.
+layout(set = 0, binding = 20) uniform usamplerBuffer environmentLevels;
+// Per map texel, the sampled method's alias-table entry: keep probability
+// and texel density as float bits, the other texel.
+layout(set = 0, binding = 21) uniform usamplerBuffer environmentSampling;
+// The prefiltered data (levels, SH, DFG), one vec4 per entry.
+layout(set = 0, binding = 23) uniform samplerBuffer environmentTables;
+
+// (first texel, width, height) of prefiltered level `level`; level 0 is the
+// map itself.
 uvec3 level_extent(int level) {
   return level == 0 ? uvec3(0u, frame.environmentWidth, frame.environmentHeight)
                     : texelFetch(environmentLevels, level).xyz;

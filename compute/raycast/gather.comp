@@ -7,8 +7,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "compute/shared/raycast_layout.h"
-
-layout(local_size_x = 64) in;
+#include "compute/raycast/workgroup.glsl"
 
 layout(set = 0, binding = 0, std140) uniform FrameBlock { FrameParams frame; };
 layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
@@ -16,7 +15,7 @@ layout(set = 0, binding = 15, std430) readonly buffer Contributions { vec4 contr
 layout(set = 0, binding = 22, std430) writeonly buffer RayRadiance { vec4 rayRadiance[]; };
 
 void main() {
-  uint ray = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 64u;
+  uint ray = invocation_index();
   if (ray >= frame.pixelCount * frame.raysPerPixel) return;
   vec3 radiance = vec3(0.0);
   for (uint slot = ray * frame.slotsPerRay; slot < (ray + 1u) * frame.slotsPerRay; ++slot)

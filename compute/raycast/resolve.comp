@@ -1,22 +1,24 @@
-// The beauty of each pixel: the mean of its shaded samples' radiance (the
-// gather pass's), and in alpha the fraction of them that hit.
+// The beauty of each pixel from its shaded samples' radiance (the gather
+// pass's), as compute/shared/sample_plan.h resolves it.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
 #include "compute/shared/raycast_layout.h"
+#include "compute/raycast/workgroup.glsl"
 
-layout(local_size_x = 64) in;
+#define real float
+#define FACET_FN
+#include "compute/shared/sample_plan.h"
 
 layout(set = 0, binding = 0, std140) uniform FrameBlock { FrameParams frame; };
 layout(set = 0, binding = 18, std430) writeonly buffer Beauty { vec4 beauty[]; };
 layout(set = 0, binding = 22, std430) readonly buffer RayRadiance { vec4 rayRadiance[]; };
 
 void main() {
-  uint pixel = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 64u;
+  uint pixel = invocation_index();
   if (pixel >= frame.pixelCount) return;
-  uint first = frame.raysPerPixel == 1u ? 0u : 1u;
   vec4 sum = vec4(0.0);
-  for (uint sample_index = first; sample_index < frame.raysPerPixel; ++sample_index)
+  for (uint sample_index = first_shaded_sample(frame.strata); sample_index < frame.raysPerPixel; ++sample_index)
     sum += rayRadiance[pixel * frame.raysPerPixel + sample_index];
-  beauty[pixel] = sum / float(frame.strata * frame.strata);
+  beauty[pixel] = sum / float(shaded_sample_count(frame.strata));
 }

@@ -19,9 +19,18 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "compute/raycast/scene_bindings.glsl"
+#include "compute/raycast/ray.glsl"
 #include "materials/shading.glsl"
-#include "compute/shared/environment.h"
+#include "compute/shared/environment_mapping.h"
+#include "compute/shared/mis.h"
+#include "compute/shared/lobe_sampling.h"
+#include "compute/shared/split_sum.h"
+#include "compute/shared/low_discrepancy.h"
+#include "compute/shared/dfg.h"
+#include "compute/shared/spherical_harmonics.h"
 #include "compute/shared/random.h"
+#include "compute/shared/lights.h"
+#include "compute/shared/sampled_environment.h"
 
 layout(constant_id = 1) const int LIGHT_COUNT = 1;
 layout(constant_id = 2) const int D_MODEL = -1;
@@ -42,7 +51,6 @@ layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters;
 #include "compute/raycast/patch_eval.glsl"
 #include "compute/raycast/limit_normal.glsl"
 #include "compute/raycast/environment.glsl"
-#include "compute/raycast/ray.glsl"
 #include "compute/raycast/camera_rays.glsl"
 #include "compute/shared/authored_normal.h"
 
@@ -57,8 +65,6 @@ vec3 shading_normal(PatchRecord record, float s, float t, vec3 limit) {
   if (n == vec3(0.0)) return limit;
   return dot(n, limit) < 0.0 ? -n : n;
 }
-
-float infinity() { return uintBitsToFloat(0x7f800000u); }
 
 BrdfParams brdf_params(uint index) {
   MaterialRecord m = materials[index];
@@ -77,28 +83,28 @@ BrdfParams brdf_params(uint index) {
 // A slot whose radiance arrives without a test.
 void write_unshadowed(uint slot, vec3 radiance) { contributions[slot] = vec4(radiance, 0.0); }
 
-// A slot whose radiance arrives unless something lies in [tMin, tMax)
-// along the shadow ray; the shadow pass clears it then.
-void write_shadowed(uint slot, vec3 radiance, vec3 origin, vec3 direction, float tMax) {
+// A slot whose radiance arrives from `direction` unless something lies
+// along the shadow ray from `position` up to tMax; the shadow pass clears it
+// then.
+void write_shadowed(uint slot, vec3 radiance, vec3 position, vec3 ng, vec3 direction, float tMax) {
   contributions[slot] = vec4(radiance, 0.0);
+  vec3 origin = shadow_ray_origin(position, ng, frame.shadowOffset);
   shadowRays[atomicAdd(counters.shadowRays, 1u)] = ShadowRayRecord(
       RayRecord(origin.x, origin.y, origin.z, frame.shadowOffset, direction.x, direction.y, direction.z, tMax), slot);
 }
 
-// Sampled method, one sample l of either technique (density `pdf`, the other
-// technique's `other_pdf`): its MIS-weighted share, and with OCCLUSION its
-// shadow ray for `slot`.
-void environment_sample(uint slot, BrdfParams params, vec3 position, vec3 n, vec3 ng, vec3 v, vec3 l, float pdf,
-                        float other_pdf, inout vec3 unshadowed) {
-  float nl = dot(n, l);
-  bool lit = pdf > 0.0 && nl > 0.0 && dot(ng, l) > 0.0;
-  vec3 radiance = lit ? brdf_evaluate(params, n, l, v) * environment_radiance(l) * nl *
-                            (power_heuristic(pdf, other_pdf) / pdf) / float(frame.environmentSamples)
-                      : vec3(0.0);
+// Sampled method, one sample of either technique: its share, and with
+// OCCLUSION its shadow ray for `slot`.
+void environment_sample(uint slot, BrdfParams params, vec3 position, vec3 n, vec3 ng, vec3 v, MisSample s,
+                        inout vec3 unshadowed) {
+  bool arrives = mis_sample_arrives(s, n, ng);
+  vec3 radiance = arrives ? mis_sample_share(params, n, v, s, environment_radiance(s.direction),
+                                             frame.environmentSamples)
+                          : vec3(0.0);
   if (OCCLUSION == 0)
     unshadowed += radiance;
-  else if (lit)
-    write_shadowed(slot, radiance, position + frame.shadowOffset * ng, l, infinity());
+  else if (arrives)
+    write_shadowed(slot, radiance, position, ng, s.direction, INFINITE_DISTANCE);
   else
     write_unshadowed(slot, vec3(0.0));
 }
@@ -121,29 +127,27 @@ void shade_environment(uint first, uint pixel, uint sample_index, uint material,
   }
   vec3 unshadowed = vec3(0.0);
   for (uint k = 0u; k < frame.environmentSamples; ++k) {
-    uint d = ibl_dimension(frame.environmentSeed, k, 0u);
-    vec4 e = sample_environment(sample_bits(pixel, sample_index, d),
-                                vec3(sample_uniform(pixel, sample_index, d + 1u),
-                                     sample_uniform(pixel, sample_index, d + 2u),
-                                     sample_uniform(pixel, sample_index, d + 3u)));
-    vec3 le = from_map(e.xyz);
-    environment_sample(first + 2u * k, params, position, n, ng, v, le, e.w,
-                                 brdf_lobes_pdf(params, n, le, v), unshadowed);
-    vec3 ub = vec3(sample_uniform(pixel, sample_index, d + 4u), sample_uniform(pixel, sample_index, d + 5u),
-                   sample_uniform(pixel, sample_index, d + 6u));
-    vec3 lb = sample_brdf_lobes(params, n, v, ub);
-    environment_sample(first + 2u * k + 1u, params, position, n, ng, v, lb,
-                                 brdf_lobes_pdf(params, n, lb, v), environment_pdf(to_map(lb)), unshadowed);
+    EnvironmentPair pair = environment_pair(params, n, v, pixel, sample_index, frame.environmentSeed, k);
+    vec4 e = sample_environment(pair.texel_bits, pair.environment_u);
+    environment_sample(first + 2u * k, params, position, n, ng, v,
+                       environment_technique_sample(params, n, v, from_map(e.xyz), e.w), unshadowed);
+    vec3 lb = pair.brdf_direction;
+    environment_sample(first + 2u * k + 1u, params, position, n, ng, v,
+                       brdf_technique_sample(params, n, v, lb, environment_pdf(to_map(lb))), unshadowed);
   }
   if (OCCLUSION == 0) write_unshadowed(first, unshadowed);
 }
 
-// glTF's spot profile: a squared linear ramp in cos(theta) between the cones.
-float spot_falloff(LightRecord light, vec3 fromLight) {
-  float t = (dot(fromLight, vec3(light.directionX, light.directionY, light.directionZ)) - light.cosOuter) /
-            max(light.cosInner - light.cosOuter, 1e-4);
-  float ramp = clamp(t, 0.0, 1.0);
-  return ramp * ramp;
+PunctualLight punctual_light(LightRecord record) {
+  PunctualLight light;
+  light.directional = record.type == FACET_LIGHT_DIRECTIONAL;
+  light.spot = record.type == FACET_LIGHT_SPOT;
+  light.position = vec3(record.positionX, record.positionY, record.positionZ);
+  light.direction = vec3(record.directionX, record.directionY, record.directionZ);
+  light.color = vec3(record.colorR, record.colorG, record.colorB);
+  light.cos_inner = record.cosInner;
+  light.cos_outer = record.cosOuter;
+  return light;
 }
 
 void main() {
@@ -151,7 +155,7 @@ void main() {
   if (index >= frame.pixelCount * frame.raysPerPixel) return;
   uint sample_index = index % frame.raysPerPixel;
   bool centre = sample_index == 0u;
-  bool shaded = frame.raysPerPixel == 1u || sample_index > 0u;
+  bool shaded = is_shaded_sample(sample_index, frame.strata);
   uint pixel = index / frame.raysPerPixel;
   HitRecord hit = hits[index];
   uint firstSlot = index * frame.slotsPerRay;
@@ -159,7 +163,7 @@ void main() {
   vec3 direction = ray.direction;
 
   if (hit.patchIndex == FACET_NO_HIT) {
-    if (centre) aovs[pixel] = PixelAovs(infinity(), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, FACET_NO_HIT,
+    if (centre) aovs[pixel] = PixelAovs(INFINITE_DISTANCE, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, FACET_NO_HIT,
                                         FACET_NO_HIT, 0.0, 0.0);
     for (uint slot = 0u; slot < frame.slotsPerRay; ++slot) write_unshadowed(firstSlot + slot, vec3(0.0));
     if (ENVIRONMENT != 0 && shaded) write_unshadowed(firstSlot + uint(LIGHT_COUNT), environment_radiance(direction));
@@ -191,24 +195,10 @@ void main() {
   BrdfParams params = brdf_params(range.material);
   vec3 v = -direction;
   for (int l = 0; l < LIGHT_COUNT; ++l) {
-    LightRecord light = lights[l];
-    vec3 cLight = vec3(light.colorR, light.colorG, light.colorB);
-    vec3 toLight;
-    float distance = infinity();
-    if (light.type == FACET_LIGHT_DIRECTIONAL) {
-      toLight = -vec3(light.directionX, light.directionY, light.directionZ);
-    } else {
-      vec3 offset = vec3(light.positionX, light.positionY, light.positionZ) - position;
-      distance = length(offset);
-      toLight = offset / distance;
-      cLight /= distance * distance;
-      if (light.type == FACET_LIGHT_SPOT) cLight *= spot_falloff(light, -toLight);
-    }
-    float nl = dot(n, toLight);
-    bool lit = shaded && nl > 0.0 && dot(ng, toLight) > 0.0 && cLight != vec3(0.0);
-    if (lit)
-      write_shadowed(firstSlot + l, PI * brdf_evaluate(params, n, toLight, v) * cLight * nl,
-                     position + frame.shadowOffset * ng, toLight, distance);
+    LightIncidence incidence = light_incidence(punctual_light(lights[l]), position);
+    if (shaded && light_arrives(incidence, n, ng))
+      write_shadowed(firstSlot + l, punctual_radiance(params, n, incidence.direction, v, incidence.color), position,
+                     ng, incidence.direction, incidence.distance);
     else
       write_unshadowed(firstSlot + l, vec3(0.0));
   }

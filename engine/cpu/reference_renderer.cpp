@@ -6,11 +6,11 @@
 #include <chrono>
 #include <cmath>
 #include <mutex>
-#include <numbers>
 #include <optional>
 #include <thread>
 
 #include "engine/camera/camera.h"
+#include "engine/camera/sample_plan.h"
 #include "engine/cpu/intersect.h"
 #include "engine/ibl/environment_lighting.h"
 #include "engine/ibl/environment_lookup.h"
@@ -31,13 +31,10 @@ class ReferenceScene {
  public:
   ReferenceScene(const scene::Scene& scene, const scene::SceneGeometry& geometry,
                  const ibl::EnvironmentLighting* environment)
-      : scene_(scene), geometry_(geometry), environment_(environment), epsilon_(1e-6 * geometry.bounds.diagonal()) {
-    // A coarser root tolerance moves hits off the surface by as much: shadow
-    // rays leave by 32 tolerances then, as on the GPU (gpu_renderer.h).
-    if (scene.render.exactTolerance) {
+      : scene_(scene), geometry_(geometry), environment_(environment) {
+    if (scene.render.exactTolerance)
       exactSettings_.tolerance = *scene.render.exactTolerance * geometry.bounds.diagonal();
-      epsilon_ = std::max(epsilon_, 32 * exactSettings_.tolerance);
-    }
+    shadowOffset_ = m::shadow_ray_offset(geometry.bounds.diagonal(), exactSettings_.tolerance);
     int patches = 0, faces = 0;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
       patchOffset_.push_back(patches);
@@ -83,22 +80,10 @@ class ReferenceScene {
                       : prefilteredEnvironment(params, material, n, v);
     }
     for (const scene::Light& light : scene_.lights) {
-      glm::dvec3 l;
-      glm::dvec3 cLight = light.color;
-      double distance = INFINITY;
-      if (light.type == scene::LightType::Directional) {
-        l = -light.direction;
-      } else {
-        const glm::dvec3 toLight = light.position - hit.surface.position;
-        distance = glm::length(toLight);
-        l = toLight / distance;
-        cLight /= distance * distance;
-        if (light.type == scene::LightType::Spot) cLight *= spotFalloff(light, -l);
-      }
-      const double nl = glm::dot(n, l);
-      if (nl <= 0 || glm::dot(ng, l) <= 0 || cLight == glm::dvec3(0.0)) continue;
-      if (occluded(hit.surface.position, ng, l, distance, shadowRays)) continue;
-      radiance += std::numbers::pi * materials::f64::brdf_evaluate(params, n, l, v) * cLight * nl;
+      const m::LightIncidence incidence = m::light_incidence(punctualLight(light), hit.surface.position);
+      if (!m::light_arrives(incidence, n, ng)) continue;
+      if (occluded(hit.surface.position, ng, incidence.direction, incidence.distance, shadowRays)) continue;
+      radiance += m::punctual_radiance(params, n, incidence.direction, v, incidence.color);
     }
     return radiance;
   }
@@ -124,11 +109,28 @@ class ReferenceScene {
   bool occluded(const glm::dvec3& position, const glm::dvec3& ng, const glm::dvec3& l, double distance,
                 std::uint64_t& shadowRays) const {
     ++shadowRays;
-    return intersect(Ray{position + epsilon_ * ng, l, epsilon_, distance}, true).has_value();
+    return intersect(Ray{m::shadow_ray_origin(position, ng, shadowOffset_), l, shadowOffset_, distance}, true)
+        .has_value();
+  }
+
+  static m::PunctualLight punctualLight(const scene::Light& light) {
+    m::PunctualLight p;
+    p.directional = light.type == scene::LightType::Directional;
+    p.spot = light.type == scene::LightType::Spot;
+    p.position = light.position;
+    p.direction = light.direction;
+    p.color = light.color;
+    p.cos_inner = std::cos(glm::radians(light.innerConeDegrees));
+    p.cos_outer = std::cos(glm::radians(light.outerConeDegrees));
+    return p;
   }
 
   glm::dvec3 toMap(const glm::dvec3& world) const {
     return m::environment_to_map(world, environment_->cosRotation, environment_->sinRotation);
+  }
+
+  glm::dvec3 fromMap(const glm::dvec3& map) const {
+    return m::environment_from_map(map, environment_->cosRotation, environment_->sinRotation);
   }
 
   glm::dvec3 environmentRadiance(const glm::dvec3& world) const {
@@ -137,33 +139,28 @@ class ReferenceScene {
            ibl::bilinearLookup(map.rgb.data(), map.width, map.height, m::environment_uv(toMap(world)));
   }
 
-  // The sampled method (docs/rendering.md): per pair, one environment and
-  // one BRDF sample, each weighted by the power heuristic against the other
-  // technique's density.
+  // The sampled method (compute/shared/sampled_environment.h), with the
+  // environment's distribution in vectors.
   glm::dvec3 sampledEnvironment(const m::BrdfParams& params, const glm::dvec3& position, const glm::dvec3& n,
                                 const glm::dvec3& ng, const glm::dvec3& v, std::uint32_t pixel, std::uint32_t sample,
                                 std::uint64_t& shadowRays) const {
     const scene::Environment& environment = *environment_->environment;
     const ibl::EnvironmentDistribution& distribution = environment_->distribution;
-    auto contribution = [&](const glm::dvec3& l, double pdf, double otherPdf) {
-      const double nl = glm::dot(n, l);
-      if (pdf <= 0 || nl <= 0 || glm::dot(ng, l) <= 0) return glm::dvec3(0.0);
-      if (environment.occlusion && occluded(position, ng, l, INFINITY, shadowRays)) return glm::dvec3(0.0);
-      return m::brdf_evaluate(params, n, l, v) * environmentRadiance(l) * nl *
-             (m::power_heuristic(pdf, otherPdf) / pdf);
+    const auto pairs = std::uint32_t(environment.samples);
+    auto share = [&](const m::MisSample& s) {
+      if (!m::mis_sample_arrives(s, n, ng)) return glm::dvec3(0.0);
+      if (environment.occlusion && occluded(position, ng, s.direction, INFINITY, shadowRays)) return glm::dvec3(0.0);
+      return m::mis_sample_share(params, n, v, s, environmentRadiance(s.direction), pairs);
     };
     glm::dvec3 sum(0.0);
-    for (int k = 0; k < environment.samples; ++k) {
-      const std::uint32_t d = m::ibl_dimension(environment.seed, std::uint32_t(k), 0);
-      auto u = [&](std::uint32_t dimension) { return m::sample_uniform(pixel, sample, d + dimension); };
-      const ibl::EnvironmentSample e =
-          ibl::sampleEnvironment(distribution, m::sample_bits(pixel, sample, d), glm::dvec3(u(1), u(2), u(3)));
-      const glm::dvec3 le = m::environment_from_map(e.direction, environment_->cosRotation, environment_->sinRotation);
-      sum += contribution(le, e.pdf, m::brdf_lobes_pdf(params, n, le, v));
-      const glm::dvec3 lb = m::sample_brdf_lobes(params, n, v, glm::dvec3(u(4), u(5), u(6)));
-      sum += contribution(lb, m::brdf_lobes_pdf(params, n, lb, v), ibl::environmentPdf(distribution, toMap(lb)));
+    for (std::uint32_t k = 0; k < pairs; ++k) {
+      const m::EnvironmentPair pair = m::environment_pair(params, n, v, pixel, sample, environment.seed, k);
+      const ibl::EnvironmentSample e = ibl::sampleEnvironment(distribution, pair.texel_bits, pair.environment_u);
+      sum += share(m::environment_technique_sample(params, n, v, fromMap(e.direction), e.pdf));
+      sum += share(m::brdf_technique_sample(params, n, v, pair.brdf_direction,
+                                            ibl::environmentPdf(distribution, toMap(pair.brdf_direction))));
     }
-    return sum / double(environment.samples);
+    return sum;
   }
 
   glm::dvec3 prefilteredEnvironment(const m::BrdfParams& params, int material, const glm::dvec3& n,
@@ -179,19 +176,10 @@ class ReferenceScene {
                         ibl::irradianceOverPi(prefiltered, toMap(n)));
   }
 
-  // glTF's spot profile: a squared linear ramp in cos θ between the cones.
-  static double spotFalloff(const scene::Light& light, const glm::dvec3& fromLight) {
-    const double cosOuter = std::cos(glm::radians(light.outerConeDegrees));
-    const double cosInner = std::cos(glm::radians(light.innerConeDegrees));
-    const double t = (glm::dot(fromLight, light.direction) - cosOuter) / std::max(cosInner - cosOuter, 1e-4);
-    const double ramp = std::clamp(t, 0.0, 1.0);
-    return ramp * ramp;
-  }
-
   const scene::Scene& scene_;
   const scene::SceneGeometry& geometry_;
   const ibl::EnvironmentLighting* environment_;
-  double epsilon_;
+  double shadowOffset_;
   ExactSettings exactSettings_;
   std::vector<int> patchOffset_, faceOffset_;
   std::vector<TessellatedSurface> tessellations_;
@@ -217,7 +205,8 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - environmentStart).count();
   const ReferenceScene reference(scene, geometry, environment ? &*environment : nullptr);
   const camera::CameraFrame frame = camera::cameraFrame(scene.camera, width, height);
-  const int strata = int(std::lround(std::sqrt(scene.render.samplesPerPixel)));
+  const std::uint32_t strata = camera::sample_strata(std::uint32_t(scene.render.samplesPerPixel));
+  const std::uint32_t raysPerPixel = camera::rays_per_pixel(strata);
 
   std::atomic<int> nextRow{0}, finishedRows{0};
   std::atomic<std::uint64_t> primaryRays{0}, shadowRays{0};
@@ -228,33 +217,23 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
       for (int x = 0; x < width; ++x) {
         const std::size_t pixel = image.index(x, y);
         const auto pixelId = std::uint32_t(pixel);
-        // The ray through the pixel centre gives the AOVs, and the beauty when strata == 1.
-        const glm::dvec3 centre = camera::camera_ray_direction(frame, x + 0.5, y + 0.5, width, height);
-        ++primary;
-        const auto centreHit = reference.intersect(Ray{frame.eye, centre}, false);
-        if (centreHit) reference.writeAovs(image, pixel, *centreHit, centre);
         glm::dvec3 radiance(0.0);
         double coverage = 0;
-        if (strata == 1) {
-          radiance = centreHit ? reference.shade(*centreHit, centre, pixelId, 0, shadow) : reference.background(centre);
-          coverage = centreHit ? 1 : 0;
-        }
-        for (int sy = 0; strata > 1 && sy < strata; ++sy) {
-          for (int sx = 0; sx < strata; ++sx) {
-            const double px = x + (sx + 0.5) / strata, py = y + (sy + 0.5) / strata;
-            const glm::dvec3 direction = camera::camera_ray_direction(frame, px, py, width, height);
-            ++primary;
-            const auto hit = reference.intersect(Ray{frame.eye, direction}, false);
-            if (!hit) {
-              radiance += reference.background(direction);
-              continue;
-            }
-            coverage += 1;
-            // Sample 0 is the centre ray's; the strata count on from 1.
-            radiance += reference.shade(*hit, direction, pixelId, std::uint32_t(sy * strata + sx + 1), shadow);
+        for (std::uint32_t sample = 0; sample < raysPerPixel; ++sample) {
+          const glm::dvec2 offset = camera::sample_offset(sample, strata);
+          const glm::dvec3 direction = camera::camera_ray_direction(frame, x + offset.x, y + offset.y, width, height);
+          ++primary;
+          const auto hit = reference.intersect(Ray{frame.eye, direction}, false);
+          if (sample == 0 && hit) reference.writeAovs(image, pixel, *hit, direction);
+          if (!camera::is_shaded_sample(sample, strata)) continue;
+          if (!hit) {
+            radiance += reference.background(direction);
+            continue;
           }
+          coverage += 1;
+          radiance += reference.shade(*hit, direction, pixelId, sample, shadow);
         }
-        const double samples = double(strata * strata);
+        const double samples = double(camera::shaded_sample_count(strata));
         image.beauty[pixel] = glm::vec4(glm::vec3(radiance / samples), float(coverage / samples));
       }
       const int done = ++finishedRows;

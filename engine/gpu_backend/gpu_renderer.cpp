@@ -5,7 +5,9 @@
 #include <cmath>
 #include <optional>
 
+#include "compute/shared/config.h"
 #include "engine/camera/camera.h"
+#include "engine/camera/sample_plan.h"
 #include "engine/gpu_backend/gpu_scene.h"
 #include "engine/gpu_backend/prefilter_gpu.h"
 #include "engine/gpu_backend/raycast_layout.h"
@@ -13,6 +15,7 @@
 #include "engine/ibl/environment_lighting.h"
 #include "facet_raycast_kernels/spirv.h"
 #include "materials/material.h"
+#include "materials/shading.h"
 
 namespace facet::gpu_backend {
 namespace {
@@ -20,11 +23,6 @@ namespace {
 using gpu::BufferUsage;
 namespace layout = gpu_layout;
 
-constexpr std::uint32_t kWorkgroupSize = 64;
-constexpr std::uint32_t kMaxWorkgroupsPerDimension = 65535;
-// A root is accepted up to `tolerance` off the ray, so its t may be off by
-// tolerance / sin(angle): shadow rays start well clear of that.
-constexpr double kShadowOffsetInTolerances = 32;
 // Bands of pixels keep one band's buffers within this, so a frame's GPU
 // arrays stay near it whatever its size (and each binding far below
 // lavapipe's 128 MiB).
@@ -54,11 +52,12 @@ const char* const kStageNames[kStageCount] = {
     "dice grid", "dice cells", "quadtrees", "refit", "intersect", "compact", "fallbacks", "fallbacks", "surface",
     "compact",   "shadow rays", "compact",  "shadow fallbacks", "gather",  "resolve"};
 
-// A 2D grid of 64-wide workgroups covering `invocations` (kernels index with
-// invocation_index()).
+// A 2D grid of workgroups covering `invocations` (kernels index with
+// invocation_index(), compute/raycast/workgroup.glsl).
 std::pair<std::uint32_t, std::uint32_t> workgroups(std::uint64_t invocations) {
-  const std::uint64_t groups = std::max<std::uint64_t>(1, (invocations + kWorkgroupSize - 1) / kWorkgroupSize);
-  const std::uint64_t x = std::min<std::uint64_t>(groups, kMaxWorkgroupsPerDimension);
+  const std::uint64_t groups =
+      std::max<std::uint64_t>(1, (invocations + FACET_WORKGROUP_SIZE - 1) / FACET_WORKGROUP_SIZE);
+  const std::uint64_t x = std::min<std::uint64_t>(groups, FACET_MAX_WORKGROUPS_PER_DIMENSION);
   return {std::uint32_t(x), std::uint32_t((groups + x - 1) / x)};
 }
 
@@ -237,8 +236,8 @@ gpu::BindGroup bindGroup(gpu::Device& d, const gpu::ComputePipeline& pipeline, c
   return d.createBindGroup({label, &groupLayout, std::move(entries)});
 }
 
-layout::FrameParams frameParams(const scene::Scene& scene, const scene::SceneGeometry& geometry, int strata,
-                                const GpuScene& packed) {
+layout::FrameParams frameParams(const scene::Scene& scene, const scene::SceneGeometry& geometry,
+                                std::uint32_t strata, const GpuScene& packed) {
   const camera::CameraFrame camera = camera::cameraFrame(scene.camera, scene.render.width, scene.render.height);
   layout::FrameParams f{};
   // Rays start at the eye, the origin of the GPU's coordinates.
@@ -249,8 +248,8 @@ layout::FrameParams frameParams(const scene::Scene& scene, const scene::SceneGeo
   f.aspect = float(camera.aspect);
   f.width = float(scene.render.width);
   f.height = float(scene.render.height);
-  f.strata = std::uint32_t(strata);
-  f.raysPerPixel = strata == 1 ? 1u : std::uint32_t(strata * strata + 1);
+  f.strata = strata;
+  f.raysPerPixel = camera::rays_per_pixel(strata);
   f.objectCount = std::uint32_t(scene.objects.size());
   f.rootNode = packed.rootNode;
   f.cellBlockCount = std::uint32_t(packed.blocks);
@@ -260,7 +259,7 @@ layout::FrameParams frameParams(const scene::Scene& scene, const scene::SceneGeo
   const double diagonal = geometry.bounds.diagonal(), tolerance = rootTolerance(scene, geometry);
   f.tolerance = float(tolerance);
   f.minimumPiece = float(std::max(4 * tolerance, 1e-6 * diagonal));
-  f.shadowOffset = float(std::max(1e-6 * diagonal, kShadowOffsetInTolerances * tolerance));
+  f.shadowOffset = float(materials::f64::shadow_ray_offset(diagonal, tolerance));
   return f;
 }
 
@@ -486,7 +485,7 @@ void traceBand(gpu::Device& d, const Kernels& k, const BindingTable& table, Band
 
 GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::SceneGeometry& geometry,
                                     const std::function<void(double)>& progress) {
-  const int strata = int(std::lround(std::sqrt(scene.render.samplesPerPixel)));
+  const std::uint32_t strata = camera::sample_strata(std::uint32_t(scene.render.samplesPerPixel));
   const bool tessellated = scene.render.method == scene::IntersectionMethod::Tessellated;
   const glm::dvec3 origin = scene.camera.eye;
   gpu::Device& d = device_;

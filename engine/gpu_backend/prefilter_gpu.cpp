@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "compute/shared/config.h"
 #include "engine/ibl/environment_math.h"
 #include "engine/ibl/prefilter_steps.h"
 #include "facet_ibl_kernels/spirv.h"
@@ -170,7 +171,8 @@ facet::ibl::PrefilteredEnvironment prefilterOnGpu(gpu::Device& device, const sce
     const facet::ibl::LevelSize size = chainSizes[l];
     uniforms.push_back(job.uniform("downsample params",
                                    DownsampleParams{chainOffsets[l - 1], chainOffsets[l], size.width, size.height}));
-    job.dispatch(downsample, {{0, &uniforms.back()}, {1, &chain}}, groupsFor(size.width, 8), groupsFor(size.height, 8));
+    job.dispatch(downsample, {{0, &uniforms.back()}, {1, &chain}}, groupsFor(size.width, FACET_IBL_TILE_SIZE),
+                 groupsFor(size.height, FACET_IBL_TILE_SIZE));
   }
 
   facet::ibl::PrefilteredEnvironment env;
@@ -189,15 +191,15 @@ facet::ibl::PrefilteredEnvironment prefilterOnGpu(gpu::Device& device, const sce
     uniforms.push_back(job.uniform("prefilter params", PrefilterParams{level.width, level.height, float(level.alpha),
                                                                        settings.samples, source.width, source.height,
                                                                        std::int32_t(chainSizes.size()), levelOffset}));
-    job.dispatch(prefilter, {{0, &uniforms.back()}, {1, &chain}, {2, &levels}}, groupsFor(level.width, 8),
-                 groupsFor(level.height, 8));
+    job.dispatch(prefilter, {{0, &uniforms.back()}, {1, &chain}, {2, &levels}},
+                 groupsFor(level.width, FACET_IBL_TILE_SIZE), groupsFor(level.height, FACET_IBL_TILE_SIZE));
     levelOffset += 3 * std::uint32_t(level.width * level.height);
   }
 
   gpu::Buffer rowSums = job.storage("SH row sums", 5 * 16 * std::uint64_t(source.height));
   uniforms.push_back(job.uniform("SH params", ShProjectParams{source.width, source.height}));
   job.dispatch(job.pipeline("sh_project", spirv::sh_project), {{0, &uniforms.back()}, {1, &chain}, {2, &rowSums}},
-               groupsFor(source.height, 64));
+               groupsFor(source.height, FACET_WORKGROUP_SIZE));
 
   std::vector<gpu::Buffer> tables;
   uniforms.push_back(job.uniform("DFG params", DfgParams{settings.dfgSize, settings.dfgSamples}));
@@ -206,7 +208,8 @@ facet::ibl::PrefilteredEnvironment prefilterOnGpu(gpu::Device& device, const sce
     const std::string label = "dfg D=" + std::to_string(distribution) + " G=" + std::to_string(geometry);
     job.dispatch(
         job.pipeline(label.c_str(), spirv::dfg, {{"D_MODEL", double(distribution)}, {"G_MODEL", double(geometry)}}),
-        {{0, &uniforms.back()}, {1, &tables.back()}}, groupsFor(settings.dfgSize, 8), groupsFor(settings.dfgSize, 8));
+        {{0, &uniforms.back()}, {1, &tables.back()}}, groupsFor(settings.dfgSize, FACET_IBL_TILE_SIZE),
+        groupsFor(settings.dfgSize, FACET_IBL_TILE_SIZE));
   }
 
   std::vector<const gpu::Buffer*> results{&levels, &rowSums};

@@ -1,20 +1,12 @@
 // Luminance importance sampling of an environment map, for the sampled
-// method. A texel is drawn with probability proportional to the largest
-// luminance of its 3 x 3 neighbourhood (what a bilinear lookup inside it
-// can reach) times its solid angle, then u and cos(theta) uniformly inside
-// it, so the density per unit solid angle is constant over each texel:
+// method (docs/rendering.md, "Sampled"): a texel with probability
+// proportional to the largest luminance of its 3 x 3 neighbourhood times its
+// solid angle, then uniformly inside it, so that
 //   pdf(w) = P(texel) / solid angle(texel).
-// A black map falls back to weights by solid angle alone (uniform over the
-// sphere), so the pdf stays a density wherever it is asked.
-//
-// Texels are drawn from an alias table (Walker 1977, Vose 1991): one
-// uniform picks a texel, a second keeps it or takes its alias. That is O(1)
-// and loop-free, which matters on lavapipe: it stops a shader invocation's
-// loops after 65535 iterations in all, and a binary search per sample would
-// reach that at a few thousand samples per pixel.
-//
-// Built in double; the GPU receives the same tables, probabilities rounded
-// to float.
+// A black map falls back to weights by solid angle alone. Texels come from
+// an alias table (Walker 1977, Vose 1991): O(1) and loop-free, as lavapipe's
+// limit on an invocation's loop iterations asks. Built in double; the GPU
+// receives the same tables, probabilities rounded to float.
 #pragma once
 
 #include <glm/vec3.hpp>

@@ -1,6 +1,6 @@
 // Texel reads and bilinear lookups in equirectangular RGB arrays (float maps
 // and levels, double mip chains), in double: the CPU side of what the kernels
-// do with environment_bilinear (compute/shared/environment.h).
+// do with environment_bilinear (compute/shared/environment_mapping.h).
 #pragma once
 
 #include <glm/common.hpp>

@@ -1,7 +1,8 @@
-// C++ side of compute/shared/environment.h and compute/shared/random.h,
-// instantiated next to the shading models they build on:
-// facet::materials::f64 (the CPU reference) and facet::materials::f32 (what
-// the GPU computes, for tests).
+// C++ side of the image-based-lighting headers of compute/shared/ and of
+// compute/shared/random.h, instantiated next to the shading models they build
+// on: facet::materials::f64 (the CPU reference) and facet::materials::f32
+// (what the GPU computes, for tests). Kernels include the same headers, in
+// this order, after materials/shading.glsl.
 #pragma once
 
 #include <glm/common.hpp>
@@ -24,14 +25,30 @@ namespace facet::materials {
 
 namespace f64 {
 FACET_ENVIRONMENT_GLSL_BUILTINS
-#include "compute/shared/environment.h"
+#include "compute/shared/environment_mapping.h"
+#include "compute/shared/mis.h"
+#include "compute/shared/lobe_sampling.h"
+#include "compute/shared/split_sum.h"
+#include "compute/shared/low_discrepancy.h"
+#include "compute/shared/dfg.h"
+#include "compute/shared/spherical_harmonics.h"
+#include "compute/shared/prefilter.h"
 #include "compute/shared/random.h"
+#include "compute/shared/sampled_environment.h"
 }  // namespace f64
 
 namespace f32 {
 FACET_ENVIRONMENT_GLSL_BUILTINS
-#include "compute/shared/environment.h"
+#include "compute/shared/environment_mapping.h"
+#include "compute/shared/mis.h"
+#include "compute/shared/lobe_sampling.h"
+#include "compute/shared/split_sum.h"
+#include "compute/shared/low_discrepancy.h"
+#include "compute/shared/dfg.h"
+#include "compute/shared/spherical_harmonics.h"
+#include "compute/shared/prefilter.h"
 #include "compute/shared/random.h"
+#include "compute/shared/sampled_environment.h"
 }  // namespace f32
 
 }  // namespace facet::materials

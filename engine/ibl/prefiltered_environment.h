@@ -41,7 +41,7 @@ struct RadianceLevel {
 
 // For one (D, G) pair: entry (i, j) at n.v = (i + 1) / size and
 // sqrt(alpha) = j / (size - 1) (dfg_grid_nv, dfg_grid_alpha in
-// compute/shared/environment.h) holds (scale, bias), so that for Schlick's
+// compute/shared/dfg.h) holds (scale, bias), so that for Schlick's
 // F the directional albedo of the specular lobe is F(0) scale + bias.
 struct DfgTable {
   int distribution = 0;

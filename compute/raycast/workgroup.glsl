@@ -1,0 +1,16 @@
+// The grid of the kernels that run one invocation per item: workgroups
+// FACET_WORKGROUP_SIZE wide, spilling into y past
+// FACET_MAX_WORKGROUPS_PER_DIMENSION (the host's workgroups() in
+// engine/gpu_backend/gpu_renderer.cpp, dispatch_args.comp's grid()).
+#ifndef FACET_RAYCAST_WORKGROUP_GLSL
+#define FACET_RAYCAST_WORKGROUP_GLSL
+
+#include "compute/shared/config.h"
+
+layout(local_size_x = FACET_WORKGROUP_SIZE) in;
+
+uint invocation_index() {
+  return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * uint(FACET_WORKGROUP_SIZE);
+}
+
+#endif

@@ -1,0 +1,36 @@
+// Shared GLSL / C++ source (rules of materials/shading/common.h; no include
+// guard): one BRDF sample across a material's two lobes, and its density
+// (docs/rendering.md, "Sampled"). Needs materials/shading/*.h.
+
+FACET_FN real luminance(vec3 c) { return real(0.2126) * c.x + real(0.7152) * c.y + real(0.0722) * c.z; }
+
+// Probability of choosing the specular lobe: its share of the lobes' albedo
+// at normal incidence, kept within [0.1, 0.9] when both are present so that
+// neither lobe is starved.
+FACET_FN real specular_lobe_probability(BrdfParams p) {
+  real specular = luminance(fresnel_F(p, real(1)));
+  real diffuse = luminance(p.diffuse);
+  if (diffuse <= real(0)) return real(1);
+  if (specular <= real(0)) return real(0);
+  return clamp(specular / (specular + diffuse), real(0.1), real(0.9));
+}
+
+// The microfacet technique a material samples its specular lobe with: GGX's
+// visible normals where D is GGX, else D-proportional normals.
+FACET_FN int specular_technique(BrdfParams p) { return p.d_model == D_GGX ? SAMPLE_GGX_VISIBLE : SAMPLE_D; }
+
+// u.x picks the lobe, u.yz the direction within it.
+FACET_FN vec3 sample_brdf_lobes(BrdfParams p, vec3 n, vec3 v, vec3 u) {
+  real p_spec = specular_lobe_probability(p);
+  vec2 uv = vec2(u.y, u.z);
+  return u.x < p_spec ? sample_direction(specular_technique(p), p, n, v, uv)
+                      : sample_direction(SAMPLE_COSINE, p, n, v, uv);
+}
+
+FACET_FN real brdf_lobes_pdf(BrdfParams p, vec3 n, vec3 l, vec3 v) {
+  real p_spec = specular_lobe_probability(p);
+  real pdf = real(0);
+  if (p_spec > real(0)) pdf += p_spec * direction_pdf(specular_technique(p), p, n, l, v);
+  if (p_spec < real(1)) pdf += (real(1) - p_spec) * direction_pdf(SAMPLE_COSINE, p, n, l, v);
+  return pdf;
+}

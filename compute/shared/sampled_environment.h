@@ -1,0 +1,78 @@
+// Shared GLSL / C++ source (rules of materials/shading/common.h; `uint` is
+// 32 bits on both sides; no include guard): the sampled method's estimator
+// (docs/rendering.md, "Sampled"). Per camera sample, N pairs of one
+// environment sample and one BRDF sample, each weighted by the power
+// heuristic against the other technique's density. Drawing from the
+// environment's distribution, and its density, are each backend's own (an
+// alias table in texel buffers, or in vectors); the rest is here. Needs
+// materials/shading/*.h, random.h, mis.h, lobe_sampling.h and lights.h.
+
+// Pair k of seed s draws dimensions IBL_DIMENSIONS (s IBL_MAX_SAMPLES + k) +
+// 0 ... 6: 4 for the environment sample (texel as 32 bits, alias, position
+// in the texel), 3 for the BRDF sample (lobe, direction). Another seed draws
+// numbers independent of seed 0's, so that a reference does not share the
+// numbers of the estimate it judges.
+const uint IBL_DIMENSIONS = 7u;
+const uint IBL_MAX_SAMPLES = 16384u;
+
+FACET_FN uint ibl_dimension(uint seed, uint pair, uint d) {
+  return IBL_DIMENSIONS * (seed * IBL_MAX_SAMPLES + pair) + d;
+}
+
+// Pair `pair`'s random numbers for the environment sample, which the backend
+// draws from them, and its BRDF sample.
+struct EnvironmentPair {
+  uint texel_bits;
+  vec3 environment_u;
+  vec3 brdf_direction;
+};
+
+FACET_FN EnvironmentPair environment_pair(BrdfParams p, vec3 n, vec3 v, uint pixel, uint sample_index, uint seed,
+                                          uint pair) {
+  uint d = ibl_dimension(seed, pair, 0u);
+  EnvironmentPair e;
+  e.texel_bits = sample_bits(pixel, sample_index, d);
+  e.environment_u = vec3(sample_uniform(pixel, sample_index, d + 1u), sample_uniform(pixel, sample_index, d + 2u),
+                         sample_uniform(pixel, sample_index, d + 3u));
+  vec3 u = vec3(sample_uniform(pixel, sample_index, d + 4u), sample_uniform(pixel, sample_index, d + 5u),
+                sample_uniform(pixel, sample_index, d + 6u));
+  e.brdf_direction = sample_brdf_lobes(p, n, v, u);
+  return e;
+}
+
+// One sample of either technique: its direction, its density and the other
+// technique's density there.
+struct MisSample {
+  vec3 direction;
+  real pdf;
+  real other_pdf;
+};
+
+FACET_FN MisSample environment_technique_sample(BrdfParams p, vec3 n, vec3 v, vec3 l, real environment_pdf) {
+  MisSample s;
+  s.direction = l;
+  s.pdf = environment_pdf;
+  s.other_pdf = brdf_lobes_pdf(p, n, l, v);
+  return s;
+}
+
+FACET_FN MisSample brdf_technique_sample(BrdfParams p, vec3 n, vec3 v, vec3 l, real environment_pdf) {
+  MisSample s;
+  s.direction = l;
+  s.pdf = brdf_lobes_pdf(p, n, l, v);
+  s.other_pdf = environment_pdf;
+  return s;
+}
+
+// Whether the sample can carry light (before its shadow ray, if any).
+FACET_FN bool mis_sample_arrives(MisSample s, vec3 n, vec3 ng) {
+  return s.pdf > real(0) && above_surface(n, ng, s.direction);
+}
+
+// Its share of the estimate, unshadowed, for radiance `radiance` arriving
+// from its direction: f L (n.l) w_MIS / pdf, over the `pairs` pairs.
+FACET_FN vec3 mis_sample_share(BrdfParams p, vec3 n, vec3 v, MisSample s, vec3 radiance, uint pairs) {
+  vec3 l = s.direction;
+  return brdf_evaluate(p, n, l, v) * radiance * dot(n, l) * (power_heuristic(s.pdf, s.other_pdf) / s.pdf) /
+         real(pairs);
+}
