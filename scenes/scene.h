@@ -83,7 +83,7 @@ struct Environment {
   IblMethod method = IblMethod::Prefiltered;
   int samples = 16;  // sampled: pairs per camera sample
   bool occlusion = true;
-  // Sampled: which random numbers (compute/shared/environment.h); renders
+  // Sampled: which random numbers (compute/shared/sampled_environment.h); renders
   // with different seeds are statistically independent.
   std::uint32_t seed = 0;
 };
