@@ -73,7 +73,7 @@ std::string tableCell(const Cell& c) {
 // the plot, not the canvas, and does not widen a margin for long tick or
 // colour-box labels, so the margins are set here from the labels' lengths.
 struct HeatMapLayout {
-  static constexpr double kCharWidth = 8;  // of the 12-point terminal font, rounded up
+  static constexpr double kCharWidth = 9;  // of the 12-point terminal font, rounded up
   static constexpr double kLineHeight = 18;
   static constexpr double kColumnWidth = 78, kRowHeight = 34;
   double width = 0, height = 0;  // whole pixels
@@ -91,7 +91,7 @@ struct HeatMapLayout {
     plotWidth =
         std::max(kColumnWidth * double(columnLabels.size()), longest(columnLabels) * double(columnLabels.size()));
     // Colour box, a gap, its labels and a margin.
-    const double right = 2 * kCharWidth + 16 + kCharWidth + longest(scaleLabels) + 2 * kCharWidth;
+    const double right = 2 * kCharWidth + 16 + 2 * kCharWidth + longest(scaleLabels) + 2 * kCharWidth;
     width = std::ceil(std::max({left + plotWidth + right, longest(titleLines) + 4 * kCharWidth,
                                 left + std::max(plotWidth, longest({xLabel})) + 2 * kCharWidth}));
     left += (width - left - plotWidth - right) / 2;
