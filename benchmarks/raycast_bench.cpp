@@ -1,4 +1,4 @@
-// Issue 5's ray-casting benchmark (not a test): facet's GPU path (lavapipe)
+// The ray-casting benchmark (not a test): facet's GPU path (lavapipe)
 // and double-precision CPU reference, exact and tessellated methods, on cages
 // from 6 to ~100k patches at 512² and 1024², against Embree 3's subdivision
 // geometry (when found at build time) at equal depth error.
@@ -6,9 +6,9 @@
 //   raycast_bench [--quick] [--csv out.csv] [--adapter NAME]
 //
 // Every scene is a bare cage framed by sceneFromCage (default camera, default
-// key light, default refinement choice). Depth errors are relative,
-// |d - d_ref| / d_ref, over the pixels both images cover, against facet's CPU
-// exact depth image. Results and method: BENCHMARKS.md.
+// key light, default refinement choice). Depth errors are those of
+// analysis/image_compare.h, against facet's CPU exact depth image. Results
+// and method: BENCHMARKS.md.
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/image_compare.h"
 #include "engine/image/image_io.h"
 #include "engine/renderer.h"
 #include "scenes/obj_cage.h"
@@ -38,13 +39,15 @@
 #include "scenes/scene_geometry.h"
 
 #if FACET_HAVE_EMBREE
-#include "benchmarks/embree_peer.h"
+#include "analysis/peers/embree_peer.h"
 #endif
 
 namespace {
 
 using facet::Image;
 using facet::RenderReport;
+using facet::analysis::compareDepth;
+using facet::analysis::DepthError;
 using facet::scene::ControlCage;
 using facet::scene::IntersectionMethod;
 using facet::scene::Scene;
@@ -121,35 +124,6 @@ struct NamedCage {
   std::string name;
   ControlCage cage;
 };
-
-// ---------------------------------------------------------------- depth error
-
-struct DepthError {
-  double maxRelative = std::numeric_limits<double>::quiet_NaN();
-  double meanRelative = std::numeric_limits<double>::quiet_NaN();
-  std::size_t bothCovered = 0;
-  std::size_t coverageMismatch = 0;  // covered in one image only
-};
-
-DepthError depthError(const std::vector<float>& depth, const std::vector<float>& reference) {
-  DepthError e;
-  if (reference.empty() || depth.size() != reference.size()) return e;
-  double sum = 0, worst = 0;
-  for (std::size_t i = 0; i < depth.size(); ++i) {
-    const bool a = std::isfinite(depth[i]), b = std::isfinite(reference[i]);
-    if (a != b) ++e.coverageMismatch;
-    if (!a || !b) continue;
-    const double relative = std::abs(double(depth[i]) - double(reference[i])) / double(reference[i]);
-    sum += relative;
-    worst = std::max(worst, relative);
-    ++e.bothCovered;
-  }
-  if (e.bothCovered > 0) {
-    e.maxRelative = worst;
-    e.meanRelative = sum / double(e.bothCovered);
-  }
-  return e;
-}
 
 // ---------------------------------------------------------------- results
 
@@ -307,8 +281,7 @@ int main(int argc, char** argv) {
         quick ? std::vector<int>{1, 4, 16} : std::vector<int>{1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024};
     [[maybe_unused]] constexpr double kEmbreeGridBudget = 40e6;
     // The CPU exact method is the slow oracle; it would be skipped where it
-    // dominates the run (said in the output). Measured: ~1.5 s per 512² and
-    // ~6 s per 1024² frame from 9k to 130k patches, so no cage here needs it.
+    // dominates the run (said in the output); no cage here is that large.
     auto skipCpuExact = [&](const NamedCage& c, int size) { return size >= 1024 && c.cage.faceCount() > 1000000; };
 
     const double runStart = nowMs();
@@ -351,20 +324,20 @@ int main(int argc, char** argv) {
                             "² (too slow for the time budget); no depth errors there");
         } else {
           Row row = runFacet(cage, scene, facet::Backend::Cpu, adapter, &referenceDepth);
-          row.error = depthError(referenceDepth, referenceDepth);
+          row.error = compareDepth(referenceDepth, referenceDepth);
           rows.push_back(row);
         }
         std::vector<float> depth;
         Row gpuExact = runFacet(cage, scene, facet::Backend::Gpu, adapter, &depth);
-        gpuExact.error = depthError(depth, referenceDepth);
+        gpuExact.error = compareDepth(depth, referenceDepth);
         rows.push_back(gpuExact);
 
         scene.render.method = IntersectionMethod::Tessellated;
         Row cpuTess = runFacet(cage, scene, facet::Backend::Cpu, adapter, &depth);
-        cpuTess.error = depthError(depth, referenceDepth);
+        cpuTess.error = compareDepth(depth, referenceDepth);
         rows.push_back(cpuTess);
         Row gpuTess = runFacet(cage, scene, facet::Backend::Gpu, adapter, &depth);
-        gpuTess.error = depthError(depth, referenceDepth);
+        gpuTess.error = compareDepth(depth, referenceDepth);
         rows.push_back(gpuTess);
 
 #if FACET_HAVE_EMBREE
@@ -385,7 +358,7 @@ int main(int argc, char** argv) {
           row.primaryMs = times[1];
           row.traceMs = times[1];
           row.primaryRays = std::uint64_t(size) * std::uint64_t(size);
-          row.error = depthError(out, referenceDepth);
+          row.error = compareDepth(out, referenceDepth);
           row.stages = "commit=" + fmt(commit, "%.2f") + ";intersect(median of 3)=" + fmt(times[1], "%.2f") + ";";
           row.note = embree.notes();
           return row;
@@ -393,18 +366,18 @@ int main(int argc, char** argv) {
         std::vector<float> depth8;
         for (std::size_t r = 0; r < rates.size(); ++r) {
           commitMs[r] = embree.setTessellationRate(rates[r]);
-          rows.push_back(
-              embreeRow(kEmbreeEngines[0], &facet::peers::EmbreeSubdivision::castPrimary, commitMs[r], rates[r], depth));
+          rows.push_back(embreeRow(kEmbreeEngines[0], &facet::peers::EmbreeSubdivision::castPrimary, commitMs[r],
+                                   rates[r], depth));
           rows.push_back(embreeRow(kEmbreeEngines[1], &facet::peers::EmbreeSubdivision::castPrimary8, commitMs[r],
                                    rates[r], depth8));
           if (quick) {
             // rtcIntersect8 must see what rtcIntersect1 sees: same coverage, depth to float rounding.
-            const DepthError e = depthError(depth8, depth);
+            const DepthError e = compareDepth(depth8, depth);
             const bool ok = e.coverageMismatch == 0 && !(e.maxRelative >= 1e-5);
             checksPassed = checksPassed && ok;
-            checks.push_back("embree8 vs embree depth on " + cage.name + " " + std::to_string(size) + "² rate=" +
-                             std::to_string(rates[r]) + ": max rel. diff " + fmtSci(e.maxRelative) + " over " +
-                             std::to_string(e.bothCovered) + " pixels, coverage mismatch " +
+            checks.push_back("embree8 vs embree depth on " + cage.name + " " + std::to_string(size) +
+                             "² rate=" + std::to_string(rates[r]) + ": max rel. diff " + fmtSci(e.maxRelative) +
+                             " over " + std::to_string(e.bothCovered) + " pixels, coverage mismatch " +
                              std::to_string(e.coverageMismatch) + (ok ? ": ok" : ": FAILED (limit 1e-5, 0)"));
           }
         }
@@ -493,10 +466,10 @@ int main(int argc, char** argv) {
           out << '"' << r.cage << "\"," << r.patches << ',' << r.size << ',' << r.engine << ",\"" << r.method << "\","
               << csvField(r.refineMs) << ',' << csvField(r.primaryMs) << ',' << csvField(r.shadowMs) << ','
               << csvField(r.traceMs) << ',' << r.primaryRays << ',' << r.shadowRays << ',' << csvField(r.primaryMrays())
-              << ',' << csvField(r.shadowMrays()) << ','
-              << (isEmbree(r) ? std::string() : csvField(r.allMrays())) << ',' << csvField(r.error.maxRelative)
-              << ',' << csvField(r.error.meanRelative) << ',' << r.error.bothCovered << ',' << r.error.coverageMismatch
-              << ",\"" << r.stages << "\",\"" << r.note << "\"\n";
+              << ',' << csvField(r.shadowMrays()) << ',' << (isEmbree(r) ? std::string() : csvField(r.allMrays()))
+              << ',' << csvField(r.error.maxRelative) << ',' << csvField(r.error.meanRelative) << ','
+              << r.error.bothCovered << ',' << r.error.coverageMismatch << ",\"" << r.stages << "\",\"" << r.note
+              << "\"\n";
         }
         if (!out) throw std::runtime_error("cannot write " + temporary.string());
       });

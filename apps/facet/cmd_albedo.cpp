@@ -54,9 +54,8 @@ void runAlbedo(const AlbedoOptions& o) {
 
 void addAlbedoCommand(CLI::App& app) {
   auto options = std::make_shared<AlbedoOptions>();
-  auto* command =
-      app.add_subcommand("albedo", "Directional albedo E(mu) = integral of f(l, v)(n.l) dl, F = 1 unless given");
-  addMaterialOptions(*command, options->material);
+  auto* command = addMaterialCommand(
+      app, "albedo", "Directional albedo E(mu) = integral of f(l, v)(n.l) dl, F = 1 unless given", options->material);
   command->add_option("--mu", options->mu, "cos theta_v in [0, 1]")->required();
   command->add_option("--nodes", options->nodes, "quadrature nodes per dimension (default 256)");
   command->add_flag("--json", options->json, "machine-readable output");

@@ -72,8 +72,8 @@ void runBrdf(const BrdfOptions& o) {
 void addBrdfCommand(CLI::App& app) {
   auto options = std::make_shared<BrdfOptions>();
   auto* command =
-      app.add_subcommand("brdf", "Evaluate f(l, v) = F G D / (4 (n.l)(n.v)) + c_diff/pi with its factors and pdfs");
-  addMaterialOptions(*command, options->material);
+      addMaterialCommand(app, "brdf", "Evaluate f(l, v) = F G D / (4 (n.l)(n.v)) + c_diff/pi with its factors and pdfs",
+                         options->material);
   command->add_option("--theta-l", options->theta_l, "angle of l from n, degrees (default 45)");
   command->add_option("--theta-v", options->theta_v, "angle of v from n, degrees (default 45)");
   command->add_option("--phi", options->phi, "azimuth of v relative to l, degrees (default 180: mirror plane)");

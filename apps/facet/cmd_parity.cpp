@@ -1,5 +1,5 @@
 // facet parity: render a scene on both backends and compare them AOV by AOV
-// (engine/parity.h); exits with 1 above tolerance.
+// (analysis/parity.h); exits with 1 above tolerance.
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -7,13 +7,17 @@
 #include <memory>
 #include <stdexcept>
 
+#include "analysis/parity.h"
 #include "commands.h"
-#include "engine/parity.h"
 #include "engine/renderer.h"
+#include "scene_options.h"
 #include "scenes/scene_file.h"
 
 namespace facet::cli {
 namespace {
+
+using analysis::AovParity;
+using analysis::ParityReport;
 
 struct ParityOptions {
   std::string scene;
@@ -66,15 +70,15 @@ void runParity(const ParityOptions& o) {
   if (!o.subdivision.empty()) scene::overrideSubdivision(scene, o.subdivision, "--subdivision");
   const RenderReport cpu = render(scene, Backend::Cpu);
   const RenderReport gpu = render(scene, Backend::Gpu, {}, o.adapter);
-  const ParityReport report = compareImages(cpu.image, gpu.image);
-  if (!o.heatmap.empty()) writeHeatmap(o.heatmap, report);
+  const ParityReport report = analysis::compareImages(cpu.image, gpu.image);
+  if (!o.heatmap.empty()) analysis::writeHeatmap(o.heatmap, report);
   if (o.json) {
     std::printf("%s\n", toJson(report, cpu, gpu).dump(2).c_str());
   } else {
     std::printf("%s: %s intersection; CPU: %s; GPU: %s\n", o.scene.c_str(),
                 scene.render.method == scene::IntersectionMethod::Exact ? "exact" : "tessellated", cpu.device.c_str(),
                 gpu.device.c_str());
-    std::printf("%s", describe(report).c_str());
+    std::printf("%s", analysis::describe(report).c_str());
     if (!o.heatmap.empty()) std::printf("wrote %s\n", o.heatmap.c_str());
   }
   if (!report.pass) throw std::runtime_error("parity: " + o.scene + " is out of tolerance");

@@ -48,6 +48,8 @@ double parseNumber(const std::string& flag, const std::string& text) {
   return value;
 }
 
+namespace {
+
 void addMaterialOptions(CLI::App& command, MaterialOptions& o) {
   using materials::modelList;
   command.add_option("--d", o.d, "normal distribution: " + modelList(materials::kDistributions) + " (default ggx)");
@@ -65,6 +67,15 @@ void addMaterialOptions(CLI::App& command, MaterialOptions& o) {
   command.add_option("--diffuse", o.diffuse, "Lambert c_diff: x or r,g,b (default 0)");
   command.add_option("--preset", o.preset, "F(0) from a preset (see `facet presets`)");
   command.add_option("--material", o.material_file, "JSON material file instead of the flags above");
+}
+
+}  // namespace
+
+CLI::App* addMaterialCommand(CLI::App& parent, const std::string& name, const std::string& description,
+                             MaterialOptions& options) {
+  CLI::App* command = parent.add_subcommand(name, description);
+  addMaterialOptions(*command, options);
+  return command;
 }
 
 materials::Material resolveMaterial(const MaterialOptions& o) {

@@ -17,7 +17,9 @@ struct MaterialOptions {
   std::optional<std::string> material_file;
 };
 
-void addMaterialOptions(CLI::App& command, MaterialOptions& options);
+// A sub-command of `parent` that takes the material flags into `options`.
+CLI::App* addMaterialCommand(CLI::App& parent, const std::string& name, const std::string& description,
+                             MaterialOptions& options);
 
 // Validated material; throws std::invalid_argument naming the flag (or the
 // file and field) and the rule.

@@ -1,6 +1,6 @@
 // The GPU backend held to the CPU reference on small images: every example
 // scene and every torture cage, both intersection methods, within the
-// tolerances of engine/parity.h.
+// tolerances of analysis/parity.h.
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -15,13 +15,17 @@
 #include "tests/support/translate_scene.h"
 #include "engine/cpu/reference_renderer.h"
 #include "engine/gpu_backend/gpu_renderer.h"
-#include "engine/parity.h"
+#include "analysis/parity.h"
 #include "tests/support/gpu_device.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_geometry.h"
 
 namespace facet {
 namespace {
+
+using analysis::compareImages;
+using analysis::describe;
+using analysis::ParityReport;
 
 struct ParityCase {
   std::filesystem::path file;

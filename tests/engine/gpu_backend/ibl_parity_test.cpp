@@ -13,13 +13,15 @@
 
 #include "engine/cpu/reference_renderer.h"
 #include "engine/gpu_backend/gpu_renderer.h"
-#include "engine/parity.h"
+#include "analysis/parity.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_geometry.h"
 #include "tests/support/gpu_device.h"
 
 namespace facet {
 namespace {
+
+using analysis::compareImages;
 
 using scene::IblMethod;
 

@@ -2,9 +2,9 @@
 // the failures are counted.
 #include <gtest/gtest.h>
 
-#include "engine/parity.h"
+#include "analysis/parity.h"
 
-namespace facet {
+namespace facet::analysis {
 namespace {
 
 // A 20x20 image whose centre 10x10 square is covered by a lit surface.
@@ -94,4 +94,4 @@ TEST(Parity, CoverageDifferingOnOneSilhouettePixelPasses) {
 TEST(Parity, DifferentSizesAreAnError) { EXPECT_THROW(compareImages(Image(2, 2), Image(3, 2)), std::invalid_argument); }
 
 }  // namespace
-}  // namespace facet
+}  // namespace facet::analysis

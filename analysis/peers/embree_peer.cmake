@@ -1,7 +1,6 @@
-# The Embree 3 peer (benchmarks/embree_peer.h), shared by raycast_bench and
-# `facet bench`. Included from apps/ and benchmarks/ because the benchmarks
-# folder may be switched off; without Embree (Debian libembree-dev) there is
-# no facet_embree_peer target and both leave the peer out.
+# The Embree 3 peer (analysis/peers/embree_peer.h), shared by `facet bench`
+# and raycast_bench. Without Embree (Debian libembree-dev) there is no
+# facet_embree_peer target and both leave the peer out.
 include_guard(GLOBAL)
 find_package(embree 3 QUIET)
 if(embree_FOUND)

@@ -1,4 +1,4 @@
-#include "stability_map.h"
+#include "analysis/bench/stability_map.h"
 
 #include <glm/geometric.hpp>
 
@@ -9,9 +9,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "../gnuplot.h"
+#include "analysis/gnuplot.h"
 
-namespace facet::cli::bench::stability {
+namespace facet::analysis::bench::stability {
 namespace {
 
 std::string shortNumber(double value) {
@@ -69,6 +69,43 @@ std::string tableCell(const Cell& c) {
   return text;
 }
 
+// The canvas, in pixels, laid out from its text: gnuplot centres a title on
+// the plot, not the canvas, and does not widen a margin for long tick or
+// colour-box labels, so the margins are set here from the labels' lengths.
+struct HeatMapLayout {
+  static constexpr double kCharWidth = 9;  // of the 12-point terminal font, rounded up
+  static constexpr double kLineHeight = 18;
+  static constexpr double kColumnWidth = 78, kRowHeight = 34;
+  double width = 0, height = 0;  // whole pixels
+  double left = 0, plotWidth = 0, top = 0, plotHeight = 0;
+
+  HeatMapLayout(const std::vector<std::string>& titleLines, const std::vector<std::string>& rowLabels,
+                const std::vector<std::string>& columnLabels, const std::string& xLabel,
+                const std::vector<std::string>& scaleLabels) {
+    auto longest = [](const std::vector<std::string>& texts) {
+      std::size_t n = 0;
+      for (const std::string& t : texts) n = std::max(n, t.size());
+      return double(n) * kCharWidth;
+    };
+    left = longest(rowLabels) + 2 * kCharWidth;
+    plotWidth =
+        std::max(kColumnWidth * double(columnLabels.size()), longest(columnLabels) * double(columnLabels.size()));
+    // Colour box, a gap, its labels and a margin.
+    const double right = 2 * kCharWidth + 16 + 2 * kCharWidth + longest(scaleLabels) + 2 * kCharWidth;
+    width = std::ceil(std::max({left + plotWidth + right, longest(titleLines) + 4 * kCharWidth,
+                                left + std::max(plotWidth, longest({xLabel})) + 2 * kCharWidth}));
+    left += (width - left - plotWidth - right) / 2;
+    top = (double(titleLines.size()) + 1) * kLineHeight;
+    plotHeight = kRowHeight * double(rowLabels.size());
+    const double bottom = 4 * kLineHeight;  // tick labels and the axis label
+    height = std::ceil(top + plotHeight + bottom);
+  }
+
+  // gnuplot's screen coordinates: 0 to 1 from the bottom left.
+  double screenX(double pixels) const { return pixels / width; }
+  double screenY(double pixels) const { return 1 - pixels / height; }
+};
+
 void writeHeatMap(const std::filesystem::path& directory, const Sweep& sweep) {
   std::ostringstream data, script;
   // Log colour scale from 1e-4 (and 0) to 1; the cell's text keeps the
@@ -84,9 +121,21 @@ void writeHeatMap(const std::filesystem::path& directory, const Sweep& sweep) {
       }
       data << c << " " << r << " " << std::log10(std::max(share, 1e-4)) << " \"" << label << "\"\n";
     }
-  script << "set output OUTPUT\nset termoption noenhanced\n"
-         << "set title \"" << sweep.title
-         << ": share of failing pixels\\nN non-finite, H holes, X extra, M Newton misses, T over tolerance\"\n"
+  const std::vector<std::string> title{sweep.title + ": share of failing pixels",
+                                       "N non-finite, H holes, X extra, M Newton misses, T over tolerance"};
+  const HeatMapLayout layout(title, sweep.rows, sweep.valueLabels, sweep.condition,
+                             {"<=0.01%", "0.1%", "1%", "10%", "100%"});
+  const double right = layout.left + layout.plotWidth, bottom = layout.top + layout.plotHeight;
+  script << "set output OUTPUT\nset termoption noenhanced\n";
+  for (std::size_t line = 0; line < title.size(); ++line)
+    script << "set label " << line + 1 << " \"" << title[line] << "\" at screen 0.5, screen "
+           << layout.screenY(HeatMapLayout::kLineHeight * double(line + 1)) << " center\n";
+  script << "set lmargin at screen " << layout.screenX(layout.left) << "\nset rmargin at screen "
+         << layout.screenX(right) << "\nset tmargin at screen " << layout.screenY(layout.top)
+         << "\nset bmargin at screen " << layout.screenY(bottom) << "\n"
+         << "set colorbox user origin screen " << layout.screenX(right + 2 * HeatMapLayout::kCharWidth) << ", screen "
+         << layout.screenY(bottom) << " size screen " << 16 / layout.width << ", screen "
+         << layout.plotHeight / layout.height << "\n"
          << "set xrange [-0.5:" << sweep.values.size() - 0.5 << "]\nset yrange [" << sweep.rows.size() - 0.5
          << ":-0.5]\nset cbrange [-4:0]\n"
          << "set cbtics ('<=0.01%%' -4, '0.1%%' -3, '1%%' -2, '10%%' -1, '100%%' 0)\n"
@@ -100,7 +149,7 @@ void writeHeatMap(const std::filesystem::path& directory, const Sweep& sweep) {
   script << ")\nplot DATA using 1:2:3 with image notitle, DATA using 1:2:($3 < -1 ? stringcolumn(4) : '') with labels "
             "font ',9' notitle, DATA using 1:2:($3 >= -1 ? stringcolumn(4) : '') with labels font ',9' tc rgb 'white' "
             "notitle\n";
-  const int width = 260 + 78 * int(sweep.values.size()), height = 150 + 34 * int(sweep.rows.size());
+  const int width = int(layout.width), height = int(layout.height);
   runGnuplot(script.str(), data.str(), directory / (sweep.name + ".svg"), width, height);
   runGnuplot(script.str(), data.str(), directory / (sweep.name + ".png"), width, height);
 }
@@ -159,11 +208,7 @@ std::string reading(const Sweep& sweep) {
 Cell measure(const Image& candidate, const Image& reference, const Image* coverage, const Tolerance& tolerance) {
   Cell cell;
   cell.error = compareToReference(candidate, reference);
-  float brightest = 0;
-  for (std::size_t i = 0; i < reference.pixelCount(); ++i)
-    if (reference.beauty[i].a > 0)
-      brightest = std::max({brightest, reference.beauty[i].r, reference.beauty[i].g, reference.beauty[i].b});
-  const double beautyFloor = 1e-4 * brightest;
+  const double floor = beautyFloor(reference);
   std::size_t failing = 0, misses = 0, coveredHere = 0;
   double beautySum = 0;
   for (int y = 0; y < reference.height; ++y)
@@ -183,21 +228,15 @@ Cell measure(const Image& candidate, const Image& reference, const Image* covera
       }
       const bool newtonMiss = coverage && !here && neighbourhoodIs(*coverage, x, y, true);
       if (newtonMiss) ++misses;
-      bool fails = newtonMiss || (there && !here && neighbourhoodIs(reference, x, y, true)) ||
-                   (here && !there && neighbourhoodIs(reference, x, y, false));
-      // As in `facet parity`: silhouette pixels (a 3 x 3 neighbourhood mixing
-      // covered and missed on either image) are judged by coverage alone.
-      const bool interior = neighbourhoodIs(candidate, x, y, true) && neighbourhoodIs(reference, x, y, true);
-      if (interior) {
-        const double depth = std::abs(double(candidate.depth[i]) - reference.depth[i]) / reference.depth[i];
+      bool fails = newtonMiss || hole(candidate, reference, x, y) || extra(candidate, reference, x, y);
+      // As in `facet parity`: silhouette pixels are judged by coverage alone.
+      if (interior(candidate, reference, x, y)) {
+        const double depth = depthRelativeError(candidate.depth[i], reference.depth[i]);
         const double angle = normalAngle(candidate.shadingNormal[i], reference.shadingNormal[i]);
-        const glm::vec4& r = reference.beauty[i];
-        const double scale = std::max({double(r.r), double(r.g), double(r.b), beautyFloor});
-        double beauty = 0;
-        for (int c = 0; c < 3; ++c) beauty = std::max(beauty, std::abs(double(candidate.beauty[i][c]) - r[c]));
+        const double beauty = beautyRelativeError(candidate.beauty[i], reference.beauty[i], floor);
         // Written as !(within) so that a NaN error fails.
         const bool over = !(depth <= tolerance.depthRelative) || !(angle <= tolerance.normalRadians) ||
-                          (scale > 0 && !(beauty / scale <= tolerance.beautyRelative));
+                          !(beauty <= tolerance.beautyRelative);
         if (over) ++cell.overTolerance;
         fails = fails || over;
       }
@@ -277,4 +316,4 @@ void writeStabilityCsv(const std::filesystem::path& path, const std::vector<Swee
   writeCsv(path, header, rows);
 }
 
-}  // namespace facet::cli::bench::stability
+}  // namespace facet::analysis::bench::stability

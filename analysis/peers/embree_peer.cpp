@@ -1,4 +1,4 @@
-#include "benchmarks/embree_peer.h"
+#include "analysis/peers/embree_peer.h"
 
 #include <embree3/rtcore.h>
 #include <glm/vec3.hpp>

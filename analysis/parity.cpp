@@ -1,4 +1,4 @@
-#include "engine/parity.h"
+#include "analysis/parity.h"
 
 #include <glm/geometric.hpp>
 
@@ -7,29 +7,11 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "analysis/image_compare.h"
 #include "engine/image/image_io.h"
 
-namespace facet {
+namespace facet::analysis {
 namespace {
-
-bool covered(const Image& image, std::size_t pixel) { return image.patchId[pixel] != Image::kNoId; }
-
-double angleBetween(const glm::vec3& a, const glm::vec3& b) {
-  const glm::dvec3 da(a), db(b);
-  return std::atan2(glm::length(glm::cross(da, db)), glm::dot(da, db));
-}
-
-// Coverage differs somewhere in the 3x3 neighbourhood of (x, y) on `image`.
-bool silhouette(const Image& image, int x, int y) {
-  const bool centre = covered(image, image.index(x, y));
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) {
-      const int nx = x + dx, ny = y + dy;
-      if (nx < 0 || ny < 0 || nx >= image.width || ny >= image.height) continue;
-      if (covered(image, image.index(nx, ny)) != centre) return true;
-    }
-  return false;
-}
 
 struct Accumulator {
   AovParity aov;
@@ -70,9 +52,7 @@ ParityReport compareImages(const Image& reference, const Image& candidate, const
   report.pixels = reference.pixelCount();
   report.heat.assign(report.pixels, 0.0f);
 
-  float brightest = 0;
-  for (const glm::vec4& b : reference.beauty) brightest = std::max({brightest, b.r, b.g, b.b});
-  const double beautyFloor = std::max(1e-4 * brightest, 1e-30);
+  const double floor = beautyFloor(reference);
 
   Accumulator depth{{"depth", "|dz| / z", 0, 0, 0, 0, tolerances.depthRelative}};
   Accumulator normal{{"shading normal", "angle (rad)", 0, 0, 0, 0, tolerances.normalRadians}};
@@ -87,37 +67,36 @@ ParityReport compareImages(const Image& reference, const Image& candidate, const
   for (int y = 0; y < report.height; ++y) {
     for (int x = 0; x < report.width; ++x) {
       const std::size_t p = reference.index(x, y);
-      const bool onSilhouette = silhouette(reference, x, y) || silhouette(candidate, x, y);
-      if (onSilhouette) ++report.silhouettePixels;
+      const bool onEitherSilhouette = onSilhouette(reference, x, y) || onSilhouette(candidate, x, y);
+      if (onEitherSilhouette) ++report.silhouettePixels;
       const bool a = covered(reference, p), b = covered(candidate, p);
       if (a != b) {
         ++report.coverageMismatches;
-        if (!onSilhouette) ++report.coverageMismatchesInterior;
+        if (!onEitherSilhouette) ++report.coverageMismatchesInterior;
         report.heat[p] = -1.0f;
         continue;
       }
       if (!a) continue;
       ++report.covered;
-      const double z = reference.depth[p], dz = std::abs(double(candidate.depth[p]) - z);
-      depth.add(dz, dz / std::abs(z), onSilhouette, report.heat, p);
-      const double angle = angleBetween(reference.shadingNormal[p], candidate.shadingNormal[p]);
-      normal.add(angle, angle, onSilhouette, report.heat, p);
-      const glm::dvec4 rb(reference.beauty[p]), cb(candidate.beauty[p]);
-      const double db = std::max({std::abs(cb.r - rb.r), std::abs(cb.g - rb.g), std::abs(cb.b - rb.b)});
-      const double scale = std::max({std::abs(rb.r), std::abs(rb.g), std::abs(rb.b), beautyFloor});
-      beauty.add(db, db / scale, onSilhouette, report.heat, p);
-      alpha.add(std::abs(cb.a - rb.a), std::abs(cb.a - rb.a), onSilhouette, report.heat, p);
+      const double dz = std::abs(double(candidate.depth[p]) - double(reference.depth[p]));
+      depth.add(dz, depthRelativeError(candidate.depth[p], reference.depth[p]), onEitherSilhouette, report.heat, p);
+      const double angle = normalAngle(reference.shadingNormal[p], candidate.shadingNormal[p]);
+      normal.add(angle, angle, onEitherSilhouette, report.heat, p);
+      const glm::vec4 &rb = reference.beauty[p], &cb = candidate.beauty[p];
+      beauty.add(beautyDifference(cb, rb), beautyRelativeError(cb, rb, floor), onEitherSilhouette, report.heat, p);
+      const double da = std::abs(double(cb.a) - double(rb.a));
+      alpha.add(da, da, onEitherSilhouette, report.heat, p);
       const glm::dvec3 rp(reference.position[p]), cp(candidate.position[p]);
       const double dp = glm::length(cp - rp);
-      position.add(dp, dp / std::max(glm::length(rp), 1e-30), onSilhouette, report.heat, p);
-      const double geometricAngle = angleBetween(reference.geometricNormal[p], candidate.geometricNormal[p]);
-      geometric.add(geometricAngle, geometricAngle, onSilhouette, report.heat, p);
+      position.add(dp, dp / std::max(glm::length(rp), 1e-30), onEitherSilhouette, report.heat, p);
+      const double geometricAngle = normalAngle(reference.geometricNormal[p], candidate.geometricNormal[p]);
+      geometric.add(geometricAngle, geometricAngle, onEitherSilhouette, report.heat, p);
       const double duv = glm::length(glm::dvec2(candidate.uv[p]) - glm::dvec2(reference.uv[p]));
-      uv.add(duv, duv, onSilhouette, report.heat, p);
+      uv.add(duv, duv, onEitherSilhouette, report.heat, p);
       const double patchDiffers = reference.patchId[p] != candidate.patchId[p] ? 1.0 : 0.0;
-      patchId.add(patchDiffers, patchDiffers, onSilhouette, report.heat, p);
+      patchId.add(patchDiffers, patchDiffers, onEitherSilhouette, report.heat, p);
       const double faceDiffers = reference.faceId[p] != candidate.faceId[p] ? 1.0 : 0.0;
-      faceId.add(faceDiffers, faceDiffers, onSilhouette, report.heat, p);
+      faceId.add(faceDiffers, faceDiffers, onEitherSilhouette, report.heat, p);
     }
   }
 
@@ -177,4 +156,4 @@ std::string describe(const ParityReport& report) {
   return out;
 }
 
-}  // namespace facet
+}  // namespace facet::analysis

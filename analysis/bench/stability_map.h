@@ -9,17 +9,15 @@
 #include <string>
 #include <vector>
 
-#include "bench.h"
+#include "analysis/bench/bench.h"
 
-namespace facet::cli::bench::stability {
+namespace facet::analysis::bench::stability {
 
 // Per-pixel limits beyond which a covered pixel counts as "over tolerance".
 struct Tolerance {
   double depthRelative = 1e-4;
   double normalRadians = 1e-3;
-  // |candidate - reference| / max(the reference pixel's brightest channel,
-  // 1e-4 x the reference image's brightest covered channel), per channel.
-  double beautyRelative = 1e-2;
+  double beautyRelative = 1e-2;  // beautyRelativeError (analysis/image_compare.h)
 };
 
 // One method at one condition value.
@@ -69,4 +67,4 @@ void writeSweep(const std::filesystem::path& directory, const Sweep& sweep, Repo
 // Every sweep's cells, one row each.
 void writeStabilityCsv(const std::filesystem::path& path, const std::vector<Sweep>& sweeps);
 
-}  // namespace facet::cli::bench::stability
+}  // namespace facet::analysis::bench::stability

@@ -1,10 +1,10 @@
-// gnuplot, run as a separate process, draws every plot of the facet command.
+// gnuplot, run as a separate process, draws every chart of the analyses.
 #pragma once
 
 #include <filesystem>
 #include <string>
 
-namespace facet::cli {
+namespace facet::analysis {
 
 // Runs gnuplot on `script`, which reads `data` through the placeholder DATA
 // and writes the placeholder OUTPUT; the terminal (SVG or PNG, `width` x
@@ -13,4 +13,4 @@ namespace facet::cli {
 void runGnuplot(std::string script, const std::string& data, const std::filesystem::path& out, int width = 800,
                 int height = 640);
 
-}  // namespace facet::cli
+}  // namespace facet::analysis

@@ -1,17 +1,6 @@
 // GPU-CPU parity: an image compared with the CPU reference's, AOV by AOV,
-// under the tolerances of issue 5 (docs/rendering.md):
-//   coverage      identical except on silhouette pixels, and those
-//                 mismatches at most 0.1% of the pixels;
-//   depth         relative error <= 1e-4 on every interior pixel;
-//   shading normal  angle <= 1e-3 rad on every interior pixel;
-//   beauty        relative error <= 1e-3 on >= 99.9% of covered pixels.
-// The 0.1% allowances are rounded up to whole pixels (one pixel on images
-// under 1000 pixels).
-// A silhouette pixel is one whose 3x3 neighbourhood has both covered and
-// uncovered pixels on either image; interior pixels are covered on both and
-// not silhouette. Relative beauty error is max_c |a_c - b_c| / max(max_c
-// |ref_c|, 1e-4 x the reference's brightest channel), so black pixels compare
-// absolutely at a level far below 8-bit output.
+// under the tolerances of docs/rendering.md ("Parity"). Covered, silhouette
+// and interior pixels and each error are those of analysis/image_compare.h.
 #pragma once
 
 #include <cstddef>
@@ -21,7 +10,7 @@
 
 #include "engine/image/image.h"
 
-namespace facet {
+namespace facet::analysis {
 
 struct ParityTolerances {
   double coverageShare = 1e-3;
@@ -71,4 +60,4 @@ void writeHeatmap(const std::filesystem::path& path, const ParityReport& report)
 // A table for people, one AOV a line.
 std::string describe(const ParityReport& report);
 
-}  // namespace facet
+}  // namespace facet::analysis

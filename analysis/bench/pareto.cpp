@@ -1,7 +1,7 @@
 // facet bench, section "pareto": per scene, every method and knob against a
 // converged reference, time against error on a log-log chart with the
 // non-dominated points joined, Embree 3's tessellation rates beside facet's
-// methods on the torture cages (issue 7, deliverables 1 and 4).
+// methods on the torture cages.
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -14,16 +14,17 @@
 #include <string>
 #include <vector>
 
-#include "bench.h"
+#include "analysis/bench/bench.h"
+#include "analysis/gnuplot.h"
+#include "analysis/pareto.h"
 #include "engine/image/image_io.h"
-#include "apps/facet/gnuplot.h"
 #include "scenes/scene_file.h"
 
 #if FACET_HAVE_EMBREE
-#include "benchmarks/embree_peer.h"
+#include "analysis/peers/embree_peer.h"
 #endif
 
-namespace facet::cli::bench {
+namespace facet::analysis::bench {
 namespace {
 
 namespace fs = std::filesystem;
@@ -64,8 +65,8 @@ struct Scenario {
   int referenceSamples = 0;  // sampled IBL pairs of the reference; 0: the scene's own environment method
 };
 
-// Chosen so the default run stays within its 4-minute share of `facet
-// bench` on 2 lavapipe cores (measured: see the report's run time).
+// Chosen so the default run stays within its share of `facet bench`'s time
+// on 2 lavapipe cores.
 struct Sizes {
   int previewWidth, previewHeight;
   int cageSize;
@@ -235,9 +236,10 @@ EmbreeRun measureEmbree(const Scenario& s, const Sizes& sizes, const Image& refe
     Image candidate(width, height);
     for (std::size_t i = 0; i < depth.size(); ++i) {
       candidate.shadingNormal[i] = reference.shadingNormal[i];
-      if (!std::isfinite(depth[i])) continue;
+      if (!covered(depth[i])) continue;
       candidate.depth[i] = depth[i];
       candidate.beauty[i].a = 1;
+      candidate.patchId[i] = 0;  // a hit: Embree names no facet patch
     }
     Point p{"embree", {"tessellated", "rate", double(rate)}, 0, compareToReference(candidate, reference), {}};
     p.milliseconds =
@@ -248,22 +250,11 @@ EmbreeRun measureEmbree(const Scenario& s, const Sizes& sizes, const Image& refe
 }
 #endif
 
-// The non-dominated points, fastest first: none is both faster and at least
-// as accurate.
 std::vector<const Point*> paretoFrontier(const std::vector<Point>& points, ErrorAxis axis) {
-  std::vector<const Point*> sorted;
-  for (const Point& p : points) sorted.push_back(&p);
-  std::sort(sorted.begin(), sorted.end(), [&](const Point* a, const Point* b) {
-    if (a->milliseconds != b->milliseconds) return a->milliseconds < b->milliseconds;
-    return chartedError(a->error, axis) < chartedError(b->error, axis);
-  });
+  std::vector<Cost> costs;
+  for (const Point& p : points) costs.push_back({p.milliseconds, chartedError(p.error, axis)});
   std::vector<const Point*> frontier;
-  double best = std::numeric_limits<double>::infinity();
-  for (const Point* p : sorted)
-    if (chartedError(p->error, axis) < best) {
-      best = chartedError(p->error, axis);
-      frontier.push_back(p);
-    }
+  for (std::size_t i : paretoFront(costs)) frontier.push_back(&points[i]);
   return frontier;
 }
 
@@ -511,4 +502,4 @@ void runPareto(const BenchOptions& options, Report& report) {
   }
 }
 
-}  // namespace facet::cli::bench
+}  // namespace facet::analysis::bench

@@ -1,6 +1,6 @@
 // facet bench, section "scaling": time against resolution, patch count,
 // light count and IBL samples on both backends, each series fitted with
-// t = a x^b on log-log axes (issue 7, deliverable 3).
+// t = a x^b on log-log axes.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,11 +12,12 @@
 #include <string>
 #include <vector>
 
-#include "bench.h"
-#include "apps/facet/gnuplot.h"
+#include "analysis/bench/bench.h"
+#include "analysis/gnuplot.h"
+#include "analysis/power_law.h"
 #include "scenes/scene_file.h"
 
-namespace facet::cli::bench {
+namespace facet::analysis::bench {
 namespace {
 
 namespace fs = std::filesystem;
@@ -42,18 +43,10 @@ struct SweepSpec {
   std::vector<SeriesSpec> series;
 };
 
-struct Fit {
-  double exponent = 0;
-  double coefficient = 0;        // a in t = a x^b
-  double standardError = 0;      // of b; 0 with fewer than 3 points
-  double xFirst = 0, xLast = 0;  // the fitted range
-  std::size_t points = 0;
-};
-
 struct Series {
   std::string backend, method, variant;
   std::vector<double> x, milliseconds;
-  Fit fit;
+  PowerLawFit fit;
 
   std::string label() const { return backend + " " + method + (variant.empty() ? "" : ", " + variant); }
 };
@@ -65,36 +58,8 @@ std::string methodName(scene::IntersectionMethod method) {
 // The fixed cost (dispatches, BVH root work, per-image setup) dominates the
 // small end of every sweep and would flatten the slope; the asymptotic
 // exponent is fitted on the upper half of the points only.
-Fit fitPowerLaw(const std::vector<double>& x, const std::vector<double>& t) {
-  const std::size_t first = x.size() > 2 ? x.size() / 2 : 0;
-  Fit fit;
-  fit.points = x.size() - first;
-  fit.xFirst = x[first];
-  fit.xLast = x.back();
-  double mx = 0, my = 0;
-  for (std::size_t i = first; i < x.size(); ++i) {
-    mx += std::log(x[i]);
-    my += std::log(t[i]);
-  }
-  const double n = double(fit.points);
-  mx /= n;
-  my /= n;
-  double sxx = 0, sxy = 0;
-  for (std::size_t i = first; i < x.size(); ++i) {
-    sxx += (std::log(x[i]) - mx) * (std::log(x[i]) - mx);
-    sxy += (std::log(x[i]) - mx) * (std::log(t[i]) - my);
-  }
-  fit.exponent = sxx > 0 ? sxy / sxx : 0;
-  fit.coefficient = std::exp(my - fit.exponent * mx);
-  if (fit.points >= 3 && sxx > 0) {
-    double residuals = 0;
-    for (std::size_t i = first; i < x.size(); ++i) {
-      const double r = std::log(t[i]) - (my + fit.exponent * (std::log(x[i]) - mx));
-      residuals += r * r;
-    }
-    fit.standardError = std::sqrt(residuals / (n - 2) / sxx);
-  }
-  return fit;
+PowerLawFit fitUpperHalf(const std::vector<double>& x, const std::vector<double>& t) {
+  return fitPowerLaw(x, t, x.size() > 2 ? x.size() / 2 : 0);
 }
 
 std::string fixed2(double value) {
@@ -103,7 +68,7 @@ std::string fixed2(double value) {
   return text;
 }
 
-std::string exponentText(const Fit& fit) {
+std::string exponentText(const PowerLawFit& fit) {
   return fixed2(fit.exponent) + (fit.points >= 3 ? " ± " + fixed2(fit.standardError) : "");
 }
 
@@ -134,7 +99,7 @@ std::vector<Series> runSweep(const SweepSpec& sweep, const BenchOptions& options
       std::printf("scaling %-11s %-28s x=%-8g %10.2f ms\n", sweep.name.c_str(), series.label().c_str(), x, ms);
       std::fflush(stdout);
     }
-    series.fit = fitPowerLaw(series.x, series.milliseconds);
+    series.fit = fitUpperHalf(series.x, series.milliseconds);
     result.push_back(std::move(series));
   }
   return result;
@@ -226,11 +191,20 @@ std::vector<SweepSpec> defineSweeps(const BenchOptions& options) {
                                         {Backend::Cpu, scene::IntersectionMethod::Tessellated}};
   std::vector<SweepSpec> sweeps;
 
-  SweepSpec resolution;
-  resolution.name = "scaling_resolution";
-  resolution.title = "Time against resolution (square images)";
-  resolution.xLabel = "pixels";
-  resolution.base = pinned(preview, 3, 4);
+  auto sweepOf = [](std::string name, std::string title, std::string xLabel, scene::Scene base) {
+    SweepSpec sweep;
+    sweep.name = std::move(name);
+    sweep.title = std::move(title);
+    sweep.xLabel = std::move(xLabel);
+    sweep.base = std::move(base);
+    return sweep;
+  };
+  auto sizeOf = [](const scene::Scene& scene) {
+    return std::to_string(scene.render.width) + "x" + std::to_string(scene.render.height);
+  };
+
+  SweepSpec resolution =
+      sweepOf("scaling_resolution", "Time against resolution (square images)", "pixels", pinned(preview, 3, 4));
   resolution.fixed = "preview scene, isolation 3, tessellated k = 4, its light and prefiltered environment";
   resolution.steps = quick ? std::vector<int>{16, 32} : std::vector<int>{32, 64, 128, 256, 512};
   resolution.xOf = [](int side) { return double(side) * side; };
@@ -239,20 +213,17 @@ std::vector<SweepSpec> defineSweeps(const BenchOptions& options) {
     scene.render.height = side;
   };
   resolution.series = allFour;
-  // The exact method costs 5-15x the tessellated one per ray; past 128² it
-  // alone would take the section's whole time budget.
+  // The exact method costs several times the tessellated one per ray; past
+  // 128² it alone would take the section's whole time budget.
   for (SeriesSpec& spec : resolution.series)
     if (spec.method == scene::IntersectionMethod::Exact && !quick) spec.steps = {32, 48, 64, 96, 128};
   sweeps.push_back(resolution);
 
-  SweepSpec patches;
-  patches.name = "scaling_patches";
-  patches.title = "Time against patch count (suzanne, isolation levels)";
-  patches.xLabel = "patches";
-  patches.base = sized(scene::loadScene(options.root / "scenes/cages/suzanne.obj"), quick ? 32 : 96, quick ? 32 : 96);
+  SweepSpec patches =
+      sweepOf("scaling_patches", "Time against patch count (suzanne, isolation levels)", "patches",
+              sized(scene::loadScene(options.root / "scenes/cages/suzanne.obj"), quick ? 32 : 96, quick ? 32 : 96));
   patches.base.render.tessellationRate = 2;
-  patches.fixed = "suzanne, " + std::to_string(patches.base.render.width) + "x" +
-                  std::to_string(patches.base.render.height) + ", tessellated k = 2, one directional light";
+  patches.fixed = "suzanne, " + sizeOf(patches.base) + ", tessellated k = 2, one directional light";
   patches.steps = quick ? std::vector<int>{1, 2} : std::vector<int>{1, 2, 3, 4};
   patches.apply = [](scene::Scene& scene, int level) {
     for (scene::Object& object : scene.objects) object.isolationLevel = level;
@@ -261,14 +232,10 @@ std::vector<SweepSpec> defineSweeps(const BenchOptions& options) {
   patches.series = allFour;
   sweeps.push_back(patches);
 
-  SweepSpec lights;
-  lights.name = "scaling_lights";
-  lights.title = "Time against light count (point lights)";
-  lights.xLabel = "point lights";
-  lights.base = sized(pinned(preview, 3, 4), quick ? 32 : 64, quick ? 16 : 32);
+  SweepSpec lights = sweepOf("scaling_lights", "Time against light count (point lights)", "point lights",
+                             sized(pinned(preview, 3, 4), quick ? 32 : 64, quick ? 16 : 32));
   lights.base.environment.reset();
-  lights.fixed = "preview scene, " + std::to_string(lights.base.render.width) + "x" +
-                 std::to_string(lights.base.render.height) + ", isolation 3, k = 4, no environment";
+  lights.fixed = "preview scene, " + sizeOf(lights.base) + ", isolation 3, k = 4, no environment";
   lights.steps = quick ? std::vector<int>{1, 2} : std::vector<int>{1, 2, 4, 8, 16, 32};
   lights.apply = [](scene::Scene& scene, int count) {
     scene.lights.clear();
@@ -277,15 +244,11 @@ std::vector<SweepSpec> defineSweeps(const BenchOptions& options) {
   lights.series = allFour;
   sweeps.push_back(lights);
 
-  SweepSpec ibl;
-  ibl.name = "scaling_ibl";
-  ibl.title = "Time against IBL samples (sampled, pairs per camera sample)";
-  ibl.xLabel = "IBL sample pairs N";
-  ibl.base = sized(pinned(preview, 3, 4), quick ? 32 : 48, quick ? 16 : 24);
+  SweepSpec ibl = sweepOf("scaling_ibl", "Time against IBL samples (sampled, pairs per camera sample)",
+                          "IBL sample pairs N", sized(pinned(preview, 3, 4), quick ? 32 : 48, quick ? 16 : 24));
   ibl.base.lights.clear();
   ibl.base.environment->method = scene::IblMethod::Sampled;
-  ibl.fixed = "preview scene, " + std::to_string(ibl.base.render.width) + "x" + std::to_string(ibl.base.render.height) +
-              ", tessellated k = 4, no punctual lights";
+  ibl.fixed = "preview scene, " + sizeOf(ibl.base) + ", tessellated k = 4, no punctual lights";
   ibl.steps = quick ? std::vector<int>{1, 4} : std::vector<int>{1, 4, 16, 64, 256};
   ibl.apply = [](scene::Scene& scene, int samples) { scene.environment->samples = samples; };
   // The exact method only changes the visibility rays' cost, which the
@@ -335,4 +298,4 @@ void runScaling(const BenchOptions& options, Report& report) {
   report.paragraph(describe(sweeps, results));
 }
 
-}  // namespace facet::cli::bench
+}  // namespace facet::analysis::bench

@@ -1,4 +1,4 @@
-#include "gnuplot.h"
+#include "analysis/gnuplot.h"
 
 #include <spawn.h>
 #include <sys/wait.h>
@@ -12,7 +12,7 @@
 
 extern char** environ;
 
-namespace facet::cli {
+namespace facet::analysis {
 
 namespace fs = std::filesystem;
 
@@ -55,4 +55,4 @@ void runGnuplot(std::string script, const std::string& data, const fs::path& out
   fs::rename(partial, out);
 }
 
-}  // namespace facet::cli
+}  // namespace facet::analysis

@@ -1,0 +1,45 @@
+// Command-line flags that change a scene as loaded (render, parity,
+// ibl-chart): image size, camera, intersection method, sampling and the
+// environment.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scenes/scene.h"
+
+namespace facet::cli {
+
+struct SceneOverrides {
+  std::string size;
+  std::vector<double> eye, target, up;
+  std::optional<double> fov;
+  std::string method;
+  std::optional<int> tessLevel;
+  std::optional<int> spp;
+  std::string subdivision;
+  std::string environment;
+  std::optional<double> environmentIntensity;
+  std::optional<double> environmentRotation;
+  std::string ibl;
+  std::optional<int> iblSamples;
+  std::string occlusion;
+};
+
+void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides);
+
+// Command-line settings win over the scene file's; throws
+// std::invalid_argument naming the flag.
+void applySceneOverrides(const SceneOverrides& overrides, scene::Scene& scene);
+
+// --size WIDTHxHEIGHT and --method exact|tess alone.
+void applyImageSize(const std::string& size, scene::Scene& scene);
+void applyMethod(const std::string& method, scene::Scene& scene);
+
+// One line for people: the map, its size and the lighting method.
+std::string describeEnvironment(const scene::Environment& environment);
+
+}  // namespace facet::cli
