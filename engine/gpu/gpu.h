@@ -380,14 +380,14 @@ enum class Validation {
   Required,     // Error when the layer is not installed
 };
 
+// What the caller chose; facet::gpu reads no environment variable of its own.
 struct InstanceDescriptor {
-  // Off by default; the environment variable FACET_VALIDATION=1 asks for IfInstalled.
   Validation validation = Validation::Off;
 };
 
 struct AdapterOptions {
-  // Case-insensitive substring of the adapter name. Empty: FACET_ADAPTER from
-  // the environment, else the first hardware GPU, else the first CPU device.
+  // Case-insensitive substring of the adapter name. Empty: the first hardware
+  // GPU, else the first CPU device.
   std::string name;
 };
 

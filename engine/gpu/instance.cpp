@@ -76,12 +76,8 @@ bool validationLayerInstalled() {
                      [](const VkLayerProperties& l) { return std::strcmp(l.layerName, kValidationLayer) == 0; });
 }
 
-Validation validationFromEnvironment(Validation requested) {
-  const char* env = std::getenv("FACET_VALIDATION");
-  if (requested == Validation::Off && env && std::strcmp(env, "0") != 0 && *env) return Validation::IfInstalled;
-  return requested;
-}
-
+// The loader's own variables are named because they, not facet, can hide a
+// driver that is installed.
 std::string noDriverMessage(const std::string& what) {
   std::string message = "no Vulkan driver found (" + what +
                         "). Install Mesa's software driver with `apt-get install mesa-vulkan-drivers` "
@@ -206,9 +202,8 @@ const char* toString(AdapterType type) {
 Instance Instance::create(const InstanceDescriptor& descriptor) {
   using namespace detail;
   auto state = std::make_shared<InstanceState>();
-  Validation validation = validationFromEnvironment(descriptor.validation);
-  bool withValidation = validation != Validation::Off && validationLayerInstalled();
-  if (validation == Validation::Required && !withValidation)
+  bool withValidation = descriptor.validation != Validation::Off && validationLayerInstalled();
+  if (descriptor.validation == Validation::Required && !withValidation)
     throw Error(std::string("Vulkan validation was required but the layer ") + kValidationLayer +
                 " is not installed (apt-get install vulkan-validationlayers)");
 
@@ -265,10 +260,7 @@ std::vector<AdapterInfo> Instance::enumerateAdapters() const { return detail::re
 
 Adapter Instance::requestAdapter(const AdapterOptions& options) const {
   detail::require(*this, "instance");
-  std::string wanted = options.name;
-  if (wanted.empty()) {
-    if (const char* env = std::getenv("FACET_ADAPTER")) wanted = env;
-  }
+  const std::string& wanted = options.name;
   const auto& infos = state_->infos;
   if (!wanted.empty()) {
     for (std::size_t i = 0; i < infos.size(); ++i) {
@@ -277,7 +269,7 @@ Adapter Instance::requestAdapter(const AdapterOptions& options) const {
     }
     std::string names;
     for (const auto& info : infos) names += "\n  " + info.name + " (" + toString(info.type) + ")";
-    throw Error("no adapter name contains '" + wanted + "' (from --adapter or FACET_ADAPTER); available:" + names);
+    throw Error("no adapter name contains '" + wanted + "'; available:" + names);
   }
   std::size_t best = 0;
   for (std::size_t i = 1; i < infos.size(); ++i)
