@@ -67,6 +67,7 @@ class Handle {
 
 // ---------------------------------------------------------------- adapters
 
+// In the order requestAdapter prefers them.
 enum class AdapterType { DiscreteGpu, IntegratedGpu, VirtualGpu, Cpu, Other };
 const char* toString(AdapterType type);
 

@@ -89,19 +89,19 @@ std::string noDriverMessage(const std::string& what) {
   return message;
 }
 
+constexpr EnumRow<AdapterType, VkPhysicalDeviceType> kAdapterTypes[] = {
+    {AdapterType::DiscreteGpu, VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU, "discrete GPU"},
+    {AdapterType::IntegratedGpu, VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU, "integrated GPU"},
+    {AdapterType::VirtualGpu, VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU, "virtual GPU"},
+    {AdapterType::Cpu, VK_PHYSICAL_DEVICE_TYPE_CPU, "CPU"},
+    {AdapterType::Other, VK_PHYSICAL_DEVICE_TYPE_OTHER, "other"},
+};
+static_assert(indexedByKey(kAdapterTypes));
+
 AdapterType adapterType(VkPhysicalDeviceType type) {
-  switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
-      return AdapterType::DiscreteGpu;
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
-      return AdapterType::IntegratedGpu;
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
-      return AdapterType::VirtualGpu;
-    case VK_PHYSICAL_DEVICE_TYPE_CPU:
-      return AdapterType::Cpu;
-    default:
-      return AdapterType::Other;
-  }
+  for (const auto& row : kAdapterTypes)
+    if (row.vulkan == type) return row.key;
+  return AdapterType::Other;
 }
 
 std::uint32_t computeQueueFamily(VkPhysicalDevice device, std::uint32_t* timestampBits = nullptr) {
@@ -166,38 +166,10 @@ std::string lowercase(std::string s) {
   return s;
 }
 
-int preference(AdapterType type) {
-  switch (type) {
-    case AdapterType::DiscreteGpu:
-      return 0;
-    case AdapterType::IntegratedGpu:
-      return 1;
-    case AdapterType::VirtualGpu:
-      return 2;
-    case AdapterType::Cpu:
-      return 3;
-    default:
-      return 4;
-  }
-}
-
 }  // namespace
 }  // namespace detail
 
-const char* toString(AdapterType type) {
-  switch (type) {
-    case AdapterType::DiscreteGpu:
-      return "discrete GPU";
-    case AdapterType::IntegratedGpu:
-      return "integrated GPU";
-    case AdapterType::VirtualGpu:
-      return "virtual GPU";
-    case AdapterType::Cpu:
-      return "CPU";
-    default:
-      return "other";
-  }
-}
+const char* toString(AdapterType type) { return detail::kAdapterTypes[std::size_t(type)].name; }
 
 Instance Instance::create(const InstanceDescriptor& descriptor) {
   using namespace detail;
@@ -273,7 +245,7 @@ Adapter Instance::requestAdapter(const AdapterOptions& options) const {
   }
   std::size_t best = 0;
   for (std::size_t i = 1; i < infos.size(); ++i)
-    if (detail::preference(infos[i].type) < detail::preference(infos[best].type)) best = i;
+    if (infos[i].type < infos[best].type) best = i;  // declared in order of preference
   return Adapter(state_, best);
 }
 

@@ -70,13 +70,9 @@ TEST_P(BrdfGpuParity, GlslFloatMatchesCppDouble) {
   gpu::Buffer uniforms =
       device_.createBuffer({"parameters", sizeof(Parameters), BufferUsage::Uniform | BufferUsage::CopyDst});
   device_.queue().writeBuffer(uniforms, 0, &parameters, sizeof(Parameters));
-  auto shader = module("brdf_eval", spirv::brdf_eval);
-  auto pipeline = device_.createComputePipeline(
-      {"brdf",
-       nullptr,
-       &shader,
-       "main",
-       {{"D_MODEL", double(variant.d)}, {"G_MODEL", double(variant.g)}, {"F_MODEL", double(variant.f)}}});
+  auto pipeline =
+      derivedPipeline("brdf", spirv::brdf_eval,
+                      {{"D_MODEL", double(variant.d)}, {"G_MODEL", double(variant.g)}, {"F_MODEL", double(variant.f)}});
   auto layout = pipeline.getBindGroupLayout(0);
   auto group = device_.createBindGroup({"brdf", &layout, {{0, &caseBuffer}, {1, &results}, {2, &uniforms}}});
   dispatchOnce(pipeline, group, count / 64);
