@@ -41,7 +41,8 @@ GpuContext& gpuContext(const std::string& adapter) {
   if (!context) {
     context = std::make_unique<GpuContext>();
     context->instance = gpu::Instance::create(gpuInstanceFromEnvironment());
-    context->device = context->instance.requestAdapter(gpuAdapterFromEnvironment(adapter)).requestDevice({"facet render"});
+    context->device =
+        context->instance.requestAdapter(gpuAdapterFromEnvironment(adapter)).requestDevice({"facet render"});
     context->renderer = std::make_unique<gpu_backend::GpuRenderer>(context->device);
   }
   return *context;

@@ -163,8 +163,8 @@ class ShaderModule : public Handle<detail::ShaderModuleState> {
 // uimageBuffer` with imageLoad/imageStore (StorageTexelBuffer). Where a driver
 // turns an SSBO load at a computed index into a loop over lanes (lavapipe), a
 // texel fetch is one load; and a texel binding is bounded by
-// maxTexelBufferElements, not maxStorageBufferBindingSize (2 GiB against
-// 128 MiB on lavapipe). The bind group makes the buffer view.
+// maxTexelBufferElements, not maxStorageBufferBindingSize (far larger on
+// lavapipe). The bind group makes the buffer view.
 enum class BindingType { Uniform, Storage, ReadOnlyStorage, TexelBuffer, StorageTexelBuffer };
 const char* toString(BindingType type);
 
