@@ -1,6 +1,8 @@
 #include "engine/renderer.h"
 
 #include <chrono>
+#include <cstdlib>
+#include <cstring>
 #include <map>
 #include <memory>
 #include <thread>
@@ -38,14 +40,27 @@ GpuContext& gpuContext(const std::string& adapter) {
   std::unique_ptr<GpuContext>& context = contexts[adapter];
   if (!context) {
     context = std::make_unique<GpuContext>();
-    context->instance = gpu::Instance::create();
-    context->device = context->instance.requestAdapter({adapter}).requestDevice({"facet render"});
+    context->instance = gpu::Instance::create(gpuInstanceFromEnvironment());
+    context->device =
+        context->instance.requestAdapter(gpuAdapterFromEnvironment(adapter)).requestDevice({"facet render"});
     context->renderer = std::make_unique<gpu_backend::GpuRenderer>(context->device);
   }
   return *context;
 }
 
 }  // namespace
+
+gpu::InstanceDescriptor gpuInstanceFromEnvironment() {
+  const char* validation = std::getenv("FACET_VALIDATION");
+  const bool wanted = validation && *validation && std::strcmp(validation, "0") != 0;
+  return {wanted ? gpu::Validation::IfInstalled : gpu::Validation::Off};
+}
+
+gpu::AdapterOptions gpuAdapterFromEnvironment(const std::string& adapter) {
+  if (!adapter.empty()) return {adapter};
+  const char* named = std::getenv("FACET_ADAPTER");
+  return {named ? named : ""};
+}
 
 const char* toString(Backend backend) {
   switch (backend) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/gpu/gpu.h"
 #include "engine/image/image.h"
 #include "scenes/scene.h"
 
@@ -35,9 +36,16 @@ struct RenderReport {
   double totalMilliseconds() const;
 };
 
-// The GPU backend runs on the adapter whose name contains `adapter` (empty:
-// FACET_ADAPTER or the default); its device and pipelines are kept for the
-// process, so each kernel variant is compiled once.
+// The GPU choices a user makes through the environment, read here for every
+// front-end (facet::gpu takes them as arguments):
+//   FACET_VALIDATION=1  the Khronos validation layer, when installed
+//   FACET_ADAPTER=NAME  the adapter, when `adapter` (--adapter) is empty
+gpu::InstanceDescriptor gpuInstanceFromEnvironment();
+gpu::AdapterOptions gpuAdapterFromEnvironment(const std::string& adapter);
+
+// The GPU backend runs on the adapter gpuAdapterFromEnvironment(adapter)
+// names; its device and pipelines are kept for the process, so each kernel
+// variant is compiled once.
 RenderReport render(const scene::Scene& scene, Backend backend, const std::function<void(double)>& progress = {},
                     const std::string& adapter = {});
 

@@ -22,10 +22,6 @@ std::span<const Preset> presets();
 // nullptr when there is no preset of that name.
 const Preset* findPreset(std::string_view name);
 
-// The sRGB transfer function (IEC 61966-2-1), linear -> encoded.
-double linearToSrgb(double linear);
-glm::dvec3 linearToSrgb(glm::dvec3 linear);
-
 // Relative index of refraction of the dielectric whose normal-incidence
 // reflectance is f0: the inverse of f0 = ((eta - 1) / (eta + 1))^2, eta > 1.
 double iorFromF0(double f0);

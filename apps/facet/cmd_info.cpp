@@ -6,6 +6,7 @@
 
 #include "commands.h"
 #include "engine/gpu/gpu.h"
+#include "engine/renderer.h"
 #include "engine/smoke.h"
 
 namespace facet::cli {
@@ -29,11 +30,11 @@ void printLimits(const gpu::Limits& l) {
 }
 
 void runInfo(const InfoOptions& options) {
-  auto instance = gpu::Instance::create();
+  auto instance = gpu::Instance::create(gpuInstanceFromEnvironment());
   std::printf("adapters:\n");
   for (const auto& info : instance.enumerateAdapters())
     std::printf("  %s (%s, %s)\n", info.name.c_str(), gpu::toString(info.type), info.driver.c_str());
-  auto adapter = instance.requestAdapter({options.adapter});
+  auto adapter = instance.requestAdapter(gpuAdapterFromEnvironment(options.adapter));
   const auto& info = adapter.info();
   std::printf("using: %s\n  driver %s %s, Vulkan %s, %s\n", info.name.c_str(), info.driver.c_str(),
               info.driverInfo.c_str(), info.apiVersion.c_str(), gpu::toString(info.type));

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "engine/image/color.h"
 #include "materials/presets.h"
 
 namespace facet::cli {
@@ -23,7 +24,7 @@ void addPresetsCommand(CLI::App& app) {
                               {"metal", p.metal},
                               {"f0_linear", rgb(p.f0_linear)},
                               {"f0_srgb_printed", rgb(p.f0_srgb)},
-                              {"f0_srgb", rgb(materials::linearToSrgb(p.f0_linear))}};
+                              {"f0_srgb", rgb(linearToSrgb(p.f0_linear))}};
       if (!p.metal) entry["ior"] = materials::iorFromF0(p.f0_linear.x);
       list.push_back(entry);
     }
@@ -34,7 +35,7 @@ void addPresetsCommand(CLI::App& app) {
     std::printf("%-18s %-22s %-6s %-16s %-16s %-16s %s\n", "name", "label", "kind", "F0 linear", "F0 sRGB printed",
                 "F0 sRGB (ours)", "ior");
     for (const materials::Preset& p : materials::presets()) {
-      glm::dvec3 srgb = materials::linearToSrgb(p.f0_linear);
+      glm::dvec3 srgb = linearToSrgb(p.f0_linear);
       std::printf("%-18s %-22s %-6s %.2f,%.2f,%.2f   %.2f,%.2f,%.2f   %.3f,%.3f,%.3f", p.name.data(), p.label.data(),
                   p.metal ? "metal" : "insul", p.f0_linear.x, p.f0_linear.y, p.f0_linear.z, p.f0_srgb.x, p.f0_srgb.y,
                   p.f0_srgb.z, srgb.x, srgb.y, srgb.z);

@@ -67,6 +67,7 @@ class Handle {
 
 // ---------------------------------------------------------------- adapters
 
+// In the order requestAdapter prefers them.
 enum class AdapterType { DiscreteGpu, IntegratedGpu, VirtualGpu, Cpu, Other };
 const char* toString(AdapterType type);
 
@@ -162,8 +163,8 @@ class ShaderModule : public Handle<detail::ShaderModuleState> {
 // uimageBuffer` with imageLoad/imageStore (StorageTexelBuffer). Where a driver
 // turns an SSBO load at a computed index into a loop over lanes (lavapipe), a
 // texel fetch is one load; and a texel binding is bounded by
-// maxTexelBufferElements, not maxStorageBufferBindingSize (2 GiB against
-// 128 MiB on lavapipe). The bind group makes the buffer view.
+// maxTexelBufferElements, not maxStorageBufferBindingSize (far larger on
+// lavapipe). The bind group makes the buffer view.
 enum class BindingType { Uniform, Storage, ReadOnlyStorage, TexelBuffer, StorageTexelBuffer };
 const char* toString(BindingType type);
 
@@ -380,14 +381,14 @@ enum class Validation {
   Required,     // Error when the layer is not installed
 };
 
+// What the caller chose; facet::gpu reads no environment variable of its own.
 struct InstanceDescriptor {
-  // Off by default; the environment variable FACET_VALIDATION=1 asks for IfInstalled.
   Validation validation = Validation::Off;
 };
 
 struct AdapterOptions {
-  // Case-insensitive substring of the adapter name. Empty: FACET_ADAPTER from
-  // the environment, else the first hardware GPU, else the first CPU device.
+  // Case-insensitive substring of the adapter name. Empty: the first hardware
+  // GPU, else the first CPU device.
   std::string name;
 };
 

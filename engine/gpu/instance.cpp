@@ -76,12 +76,8 @@ bool validationLayerInstalled() {
                      [](const VkLayerProperties& l) { return std::strcmp(l.layerName, kValidationLayer) == 0; });
 }
 
-Validation validationFromEnvironment(Validation requested) {
-  const char* env = std::getenv("FACET_VALIDATION");
-  if (requested == Validation::Off && env && std::strcmp(env, "0") != 0 && *env) return Validation::IfInstalled;
-  return requested;
-}
-
+// The loader's own variables are named because they, not facet, can hide a
+// driver that is installed.
 std::string noDriverMessage(const std::string& what) {
   std::string message = "no Vulkan driver found (" + what +
                         "). Install Mesa's software driver with `apt-get install mesa-vulkan-drivers` "
@@ -93,19 +89,19 @@ std::string noDriverMessage(const std::string& what) {
   return message;
 }
 
+constexpr EnumRow<AdapterType, VkPhysicalDeviceType> kAdapterTypes[] = {
+    {AdapterType::DiscreteGpu, VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU, "discrete GPU"},
+    {AdapterType::IntegratedGpu, VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU, "integrated GPU"},
+    {AdapterType::VirtualGpu, VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU, "virtual GPU"},
+    {AdapterType::Cpu, VK_PHYSICAL_DEVICE_TYPE_CPU, "CPU"},
+    {AdapterType::Other, VK_PHYSICAL_DEVICE_TYPE_OTHER, "other"},
+};
+static_assert(indexedByKey(kAdapterTypes));
+
 AdapterType adapterType(VkPhysicalDeviceType type) {
-  switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
-      return AdapterType::DiscreteGpu;
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
-      return AdapterType::IntegratedGpu;
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
-      return AdapterType::VirtualGpu;
-    case VK_PHYSICAL_DEVICE_TYPE_CPU:
-      return AdapterType::Cpu;
-    default:
-      return AdapterType::Other;
-  }
+  for (const auto& row : kAdapterTypes)
+    if (row.vulkan == type) return row.key;
+  return AdapterType::Other;
 }
 
 std::uint32_t computeQueueFamily(VkPhysicalDevice device, std::uint32_t* timestampBits = nullptr) {
@@ -170,45 +166,16 @@ std::string lowercase(std::string s) {
   return s;
 }
 
-int preference(AdapterType type) {
-  switch (type) {
-    case AdapterType::DiscreteGpu:
-      return 0;
-    case AdapterType::IntegratedGpu:
-      return 1;
-    case AdapterType::VirtualGpu:
-      return 2;
-    case AdapterType::Cpu:
-      return 3;
-    default:
-      return 4;
-  }
-}
-
 }  // namespace
 }  // namespace detail
 
-const char* toString(AdapterType type) {
-  switch (type) {
-    case AdapterType::DiscreteGpu:
-      return "discrete GPU";
-    case AdapterType::IntegratedGpu:
-      return "integrated GPU";
-    case AdapterType::VirtualGpu:
-      return "virtual GPU";
-    case AdapterType::Cpu:
-      return "CPU";
-    default:
-      return "other";
-  }
-}
+const char* toString(AdapterType type) { return detail::kAdapterTypes[std::size_t(type)].name; }
 
 Instance Instance::create(const InstanceDescriptor& descriptor) {
   using namespace detail;
   auto state = std::make_shared<InstanceState>();
-  Validation validation = validationFromEnvironment(descriptor.validation);
-  bool withValidation = validation != Validation::Off && validationLayerInstalled();
-  if (validation == Validation::Required && !withValidation)
+  bool withValidation = descriptor.validation != Validation::Off && validationLayerInstalled();
+  if (descriptor.validation == Validation::Required && !withValidation)
     throw Error(std::string("Vulkan validation was required but the layer ") + kValidationLayer +
                 " is not installed (apt-get install vulkan-validationlayers)");
 
@@ -265,10 +232,7 @@ std::vector<AdapterInfo> Instance::enumerateAdapters() const { return detail::re
 
 Adapter Instance::requestAdapter(const AdapterOptions& options) const {
   detail::require(*this, "instance");
-  std::string wanted = options.name;
-  if (wanted.empty()) {
-    if (const char* env = std::getenv("FACET_ADAPTER")) wanted = env;
-  }
+  const std::string& wanted = options.name;
   const auto& infos = state_->infos;
   if (!wanted.empty()) {
     for (std::size_t i = 0; i < infos.size(); ++i) {
@@ -277,11 +241,11 @@ Adapter Instance::requestAdapter(const AdapterOptions& options) const {
     }
     std::string names;
     for (const auto& info : infos) names += "\n  " + info.name + " (" + toString(info.type) + ")";
-    throw Error("no adapter name contains '" + wanted + "' (from --adapter or FACET_ADAPTER); available:" + names);
+    throw Error("no adapter name contains '" + wanted + "'; available:" + names);
   }
   std::size_t best = 0;
   for (std::size_t i = 1; i < infos.size(); ++i)
-    if (detail::preference(infos[i].type) < detail::preference(infos[best].type)) best = i;
+    if (infos[i].type < infos[best].type) best = i;  // declared in order of preference
   return Adapter(state_, best);
 }
 

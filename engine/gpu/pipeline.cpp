@@ -49,29 +49,24 @@ bool BindGroupLayoutState::matches(const BindGroupLayoutState& other) const {
 
 namespace {
 
-VkDescriptorType descriptorType(BindingType type) {
-  switch (type) {
-    case BindingType::Uniform:
-      return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    case BindingType::TexelBuffer:
-      return VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
-    case BindingType::StorageTexelBuffer:
-      return VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
-    default:
-      return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  }
-}
+constexpr EnumRow<BindingType, VkDescriptorType> kBindingTypes[] = {
+    {BindingType::Uniform, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, "uniform"},
+    {BindingType::Storage, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, "storage"},
+    {BindingType::ReadOnlyStorage, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, "read-only storage"},
+    {BindingType::TexelBuffer, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, "texel buffer"},
+    {BindingType::StorageTexelBuffer, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, "storage texel buffer"},
+};
+static_assert(indexedByKey(kBindingTypes));
 
-VkFormat vulkanFormat(TexelFormat format) {
-  switch (format) {
-    case TexelFormat::Rgba32Uint:
-      return VK_FORMAT_R32G32B32A32_UINT;
-    case TexelFormat::Rgba32Sint:
-      return VK_FORMAT_R32G32B32A32_SINT;
-    default:
-      return VK_FORMAT_R32G32B32A32_SFLOAT;
-  }
-}
+constexpr EnumRow<TexelFormat, VkFormat> kTexelFormats[] = {
+    {TexelFormat::Rgba32Float, VK_FORMAT_R32G32B32A32_SFLOAT, "rgba32float"},
+    {TexelFormat::Rgba32Uint, VK_FORMAT_R32G32B32A32_UINT, "rgba32uint"},
+    {TexelFormat::Rgba32Sint, VK_FORMAT_R32G32B32A32_SINT, "rgba32sint"},
+};
+static_assert(indexedByKey(kTexelFormats));
+
+VkDescriptorType descriptorType(BindingType type) { return kBindingTypes[std::size_t(type)].vulkan; }
+VkFormat vulkanFormat(TexelFormat format) { return kTexelFormats[std::size_t(format)].vulkan; }
 
 // Vulkan requires these formats for texel buffers, but a driver that lacks
 // one would otherwise fail only inside vkCreateBufferView.
@@ -226,33 +221,8 @@ double checkedConstant(const std::string& pipelineLabel, const spirv::SpecConsta
 }  // namespace
 }  // namespace detail
 
-const char* toString(BindingType type) {
-  switch (type) {
-    case BindingType::Uniform:
-      return "uniform";
-    case BindingType::Storage:
-      return "storage";
-    case BindingType::ReadOnlyStorage:
-      return "read-only storage";
-    case BindingType::TexelBuffer:
-      return "texel buffer";
-    case BindingType::StorageTexelBuffer:
-      return "storage texel buffer";
-  }
-  return "?";
-}
-
-const char* toString(TexelFormat format) {
-  switch (format) {
-    case TexelFormat::Rgba32Float:
-      return "rgba32float";
-    case TexelFormat::Rgba32Uint:
-      return "rgba32uint";
-    case TexelFormat::Rgba32Sint:
-      return "rgba32sint";
-  }
-  return "?";
-}
+const char* toString(BindingType type) { return detail::kBindingTypes[std::size_t(type)].name; }
+const char* toString(TexelFormat format) { return detail::kTexelFormats[std::size_t(format)].name; }
 
 ShaderModule Device::createShaderModule(const ShaderModuleDescriptor& descriptor) {
   detail::require(*this, "device");

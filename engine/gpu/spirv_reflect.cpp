@@ -50,19 +50,18 @@ enum Decoration : std::uint32_t {
   DescriptorSet = 34,
   Offset = 35,
 };
+enum ExecutionModel : std::uint32_t { ExecutionModelGLCompute = 5 };
+enum ExecutionMode : std::uint32_t { ExecutionModeLocalSize = 17, ExecutionModeLocalSizeId = 38 };
+enum BuiltInVariable : std::uint32_t { BuiltInWorkgroupSize = 25 };
+enum StorageClass : std::uint32_t {
+  StorageClassUniformConstant = 0,
+  StorageClassUniform = 2,
+  StorageClassPushConstant = 9,
+  StorageClassStorageBuffer = 12,
+};
+enum Dim : std::uint32_t { DimBuffer = 5 };
+enum ImageFormat : std::uint32_t { ImageFormatRgba32f = 1, ImageFormatRgba32i = 21, ImageFormatRgba32ui = 30 };
 constexpr std::uint32_t kMagic = 0x07230203;
-constexpr std::uint32_t kExecutionModelGLCompute = 5;
-constexpr std::uint32_t kExecutionModeLocalSize = 17;
-constexpr std::uint32_t kExecutionModeLocalSizeId = 38;
-constexpr std::uint32_t kBuiltInWorkgroupSize = 25;
-constexpr std::uint32_t kStorageClassUniformConstant = 0;
-constexpr std::uint32_t kStorageClassUniform = 2;
-constexpr std::uint32_t kStorageClassPushConstant = 9;
-constexpr std::uint32_t kStorageClassStorageBuffer = 12;
-constexpr std::uint32_t kDimBuffer = 5;
-constexpr std::uint32_t kImageFormatRgba32f = 1;
-constexpr std::uint32_t kImageFormatRgba32i = 21;
-constexpr std::uint32_t kImageFormatRgba32ui = 30;
 
 std::string literalString(std::span<const std::uint32_t> words) {
   std::string s;
@@ -193,11 +192,11 @@ class Module {
         break;
       case OpEntryPoint:
         need(3);
-        if (w[0] == kExecutionModelGLCompute) entryPoints_.push_back(literalString(w.subspan(2)));
+        if (w[0] == ExecutionModelGLCompute) entryPoints_.push_back(literalString(w.subspan(2)));
         break;
       case OpExecutionMode:
         need(2);
-        if (w[1] == kExecutionModeLocalSize) {
+        if (w[1] == ExecutionModeLocalSize) {
           need(5);
           workgroupSize_ = {w[2], w[3], w[4]};
         }
@@ -206,7 +205,7 @@ class Module {
         need(2);
         // LocalSizeId in a Vulkan 1.2 module needs the maintenance4 feature,
         // which facet::gpu does not enable: Vulkan would reject the pipeline.
-        if (w[1] == kExecutionModeLocalSizeId)
+        if (w[1] == ExecutionModeLocalSizeId)
           fail(
               "uses the LocalSizeId execution mode, which needs Vulkan's maintenance4 (not enabled); compile for "
               "Vulkan 1.2 (glslangValidator --target-env vulkan1.2) so local_size_x_id becomes a WorkgroupSize "
@@ -229,15 +228,12 @@ class Module {
         break;
       case OpConstant:
       case OpSpecConstant:
-        need(3);  // result type, result id, value
-        constants_[w[1]] = Type{op, {w.begin() + 2, w.end()}};
-        constantTypes_[w[1]] = w[0];
-        break;
       case OpConstantComposite:
       case OpSpecConstantTrue:
       case OpSpecConstantFalse:
       case OpSpecConstantComposite:
-        need(2);  // result type, result id, constituents
+        // Result type, result id, then a scalar's value (required) or a composite's constituents.
+        need(op == OpConstant || op == OpSpecConstant ? 3 : 2);
         constants_[w[1]] = Type{op, {w.begin() + 2, w.end()}};
         constantTypes_[w[1]] = w[0];
         break;
@@ -248,7 +244,7 @@ class Module {
       case OpDecorate:
         need(takesLiteral(w.size() >= 2 ? w[1] : 0) ? 3 : 2);
         decorations_[w[0]].byKind[w[1]] = {w.begin() + 2, w.end()};
-        if (w[1] == BuiltIn && w.size() >= 3 && w[2] == kBuiltInWorkgroupSize) builtinWorkgroupSize_ = w[0];
+        if (w[1] == BuiltIn && w.size() >= 3 && w[2] == BuiltInWorkgroupSize) builtinWorkgroupSize_ = w[0];
         break;
       case OpMemberDecorate:
         need(takesLiteral(w.size() >= 3 ? w[2] : 0) ? 4 : 3);
@@ -394,7 +390,7 @@ class Module {
     };
     const Type* image = find(typeId);
     if (image && image->op == OpTypeSampledImage) image = find(image->operands[0]);
-    if (!image || image->op != OpTypeImage || image->operands[1] != kDimBuffer ||
+    if (!image || image->op != OpTypeImage || image->operands[1] != DimBuffer ||
         (image->operands[5] != 1 && image->operands[5] != 2))
       fail(binding +
            " is an image, a sampler or an array of them: facet::gpu supports only uniform, storage and texel "
@@ -405,7 +401,7 @@ class Module {
     if ((!isFloat && component.op != OpTypeInt) || component.operands[0] != 32)
       fail(binding + " does not have 32-bit components: facet::gpu supports only 4 x 32-bit texel formats");
     const bool isSigned = !isFloat && component.operands[1] == 1;
-    const std::uint32_t format = isFloat ? kImageFormatRgba32f : isSigned ? kImageFormatRgba32i : kImageFormatRgba32ui;
+    const std::uint32_t format = isFloat ? ImageFormatRgba32f : isSigned ? ImageFormatRgba32i : ImageFormatRgba32ui;
     if (storage && image->operands[6] != format)
       fail(binding + " has image format " + std::to_string(image->operands[6]) +
            ": facet::gpu supports only 4 x 32-bit texel formats (rgba32f, rgba32ui, rgba32i, as the component type)");
@@ -417,11 +413,11 @@ class Module {
 
   void reflectVariable(std::uint32_t id, const Type& var, Reflection& r) const {
     std::uint32_t storageClass = var.operands[1];
-    if (storageClass == kStorageClassPushConstant) r.usesPushConstants = true;
+    if (storageClass == StorageClassPushConstant) r.usesPushConstants = true;
     auto deco = decorations_.find(id);
     if (deco == decorations_.end() || !deco->second.has(BindingDecoration)) return;
-    if (storageClass != kStorageClassUniformConstant && storageClass != kStorageClassUniform &&
-        storageClass != kStorageClassStorageBuffer)
+    if (storageClass != StorageClassUniformConstant && storageClass != StorageClassUniform &&
+        storageClass != StorageClassStorageBuffer)
       return;
     auto name = names_.find(id);
     Binding b;
@@ -433,7 +429,7 @@ class Module {
     const Type& pointer = type(var.operands[0], "variable type");
     if (pointer.op != OpTypePointer) fail(binding + " does not have a pointer type");
     std::uint32_t blockType = pointer.operands[1];
-    if (storageClass == kStorageClassUniformConstant) {
+    if (storageClass == StorageClassUniformConstant) {
       reflectTexelBuffer(blockType, binding, deco->second.has(NonWritable), b);
       r.bindings.push_back(b);
       return;
@@ -443,7 +439,7 @@ class Module {
       fail(binding + " is an array of blocks: facet::gpu supports one buffer per binding; give each its own binding");
     if (block.op != OpTypeStruct) fail(binding + " is not a block (struct) type");
     bool bufferBlock = decorations_.count(blockType) && decorations_.at(blockType).has(BufferBlock);
-    bool storage = storageClass == kStorageClassStorageBuffer || bufferBlock;
+    bool storage = storageClass == StorageClassStorageBuffer || bufferBlock;
     bool readOnly = deco->second.has(NonWritable) || allMembersNonWritable(blockType);
     b.type = !storage ? BindingType::Uniform : readOnly ? BindingType::ReadOnlyStorage : BindingType::Storage;
     b.written = b.type == BindingType::Storage;

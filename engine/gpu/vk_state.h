@@ -24,6 +24,23 @@ auto& require(const HandleType& handle, const std::string& what) {
   return *handle.state();
 }
 
+// A facet::gpu enumerator with its Vulkan value and its name. A table of these
+// holds one row per enumerator in declaration order, so that row i is
+// enumerator i (indexedByKey).
+template <class Key, class Vulkan>
+struct EnumRow {
+  Key key;
+  Vulkan vulkan;
+  const char* name;
+};
+
+template <class Row, std::size_t N>
+constexpr bool indexedByKey(const Row (&table)[N]) {
+  for (std::size_t i = 0; i < N; ++i)
+    if (std::size_t(table[i].key) != i) return false;
+  return true;
+}
+
 // Throws Error("<what>: <VkResult name>") when a Vulkan call fails.
 void check(VkResult result, const char* what);
 const char* resultName(VkResult result);

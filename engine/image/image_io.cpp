@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "materials/presets.h"
+#include "engine/image/color.h"
 
 namespace facet {
 namespace {
@@ -115,8 +115,7 @@ void writePng(const std::filesystem::path& path, const Image& image, float expos
   for (std::size_t i = 0; i < image.pixelCount(); ++i) {
     const glm::vec4& p = image.beauty[i];
     for (int c = 0; c < 3; ++c) {
-      double encoded = materials::linearToSrgb(std::clamp(double(p[c] * scale), 0.0, 1.0));
-      pixels[4 * i + c] = std::uint8_t(std::lround(encoded * 255.0));
+      pixels[4 * i + c] = std::uint8_t(std::lround(previewToneCurve(p[c], scale) * 255.0));
     }
     pixels[4 * i + 3] = std::uint8_t(std::lround(std::clamp(p.a, 0.0f, 1.0f) * 255.0f));
   }

@@ -25,7 +25,7 @@ void writeAtomically(const std::filesystem::path& path, const std::function<void
 void writeExr(const std::filesystem::path& path, const Image& image);
 Image readExr(const std::filesystem::path& path);
 
-// 8-bit sRGB preview of the beauty: linear × 2^exposure, clamped, sRGB-encoded.
+// 8-bit preview of the beauty through previewToneCurve (engine/image/color.h).
 void writePng(const std::filesystem::path& path, const Image& image, float exposure = 0.0f);
 
 }  // namespace facet

@@ -79,6 +79,22 @@ class GpuTest : public ::testing::Test {
     return device_.createShaderModule({label, code});
   }
 
+  // A pipeline on the kernel's "main", with its layout derived from the shader.
+  ComputePipeline derivedPipeline(const char* label, std::span<const std::uint32_t> code,
+                                  std::vector<ConstantEntry> constants = {}) {
+    ShaderModule shader = module(label, code);
+    return device_.createComputePipeline({label, nullptr, &shader, "main", std::move(constants)});
+  }
+
+  // Expects the kernel to be refused when its module is created, with an
+  // error that names the module, the binding and the reason.
+  void expectModuleRefused(const char* label, std::span<const std::uint32_t> code, const std::string& binding,
+                           const std::string& reason) {
+    EXPECT_THAT(errorOf([&] { module(label, code); }),
+                ::testing::AllOf(::testing::HasSubstr(std::string("shader module '") + label + "'"),
+                                 ::testing::HasSubstr(binding), ::testing::HasSubstr(reason)));
+  }
+
   Instance instance_;
   Device device_;
 };

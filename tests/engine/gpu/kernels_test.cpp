@@ -32,15 +32,14 @@ TEST_F(GpuTest, NonTrivialMathMatchesTheHostElementByElement) {
 
   Buffer in = upload(inputs);
   Buffer out = poisoned(n * sizeof(float));
-  auto shader = module("well_conditioned_math", test_spirv::well_conditioned_math);
-  auto pipeline = device_.createComputePipeline({"math", nullptr, &shader});
+  auto pipeline = derivedPipeline("math", test_spirv::well_conditioned_math);
   auto layout = pipeline.getBindGroupLayout(0);
   auto group = device_.createBindGroup({"math", &layout, {{0, &in}, {1, &out}}});
   dispatchOnce(pipeline, group, std::uint32_t((n + 63) / 64));
   auto result = readBack<float>(out);
 
-  // Tolerance: 4 ULP. Every operation here is correctly rounded on lavapipe
-  // (0 ULP observed); the margin admits hardware GPUs' inversesqrt.
+  // Tolerance: 4 ULP. Every operation here is correctly rounded on lavapipe;
+  // the margin admits hardware GPUs' inversesqrt.
   std::int64_t worst = 0;
   for (std::size_t i = 0; i < n; ++i) {
     float expected = hostMath(inputs[4 * i], inputs[4 * i + 1], inputs[4 * i + 2], inputs[4 * i + 3]);
@@ -64,13 +63,9 @@ TEST_P(SpecializationConstants, ChangeTheResultAndTheWorkgroupSize) {
   const FillCase c = GetParam();
   const std::uint32_t n = 1000;
   Buffer out = poisoned(n * sizeof(float));
-  auto shader = module("specialized_fill", test_spirv::specialized_fill);
-  auto pipeline = device_.createComputePipeline(
-      {"fill",
-       nullptr,
-       &shader,
-       "main",
-       {{"kMode", double(c.mode)}, {"kScale", c.scale}, {"kNegate", double(c.negate)}, {"0", double(c.workgroup)}}});
+  auto pipeline = derivedPipeline(
+      "fill", test_spirv::specialized_fill,
+      {{"kMode", double(c.mode)}, {"kScale", c.scale}, {"kNegate", double(c.negate)}, {"0", double(c.workgroup)}});
   EXPECT_EQ(pipeline.workgroupSize()[0], c.workgroup);
   auto layout = pipeline.getBindGroupLayout(0);
   auto group = device_.createBindGroup({"fill", &layout, {{0, &out}}});
@@ -100,10 +95,8 @@ TEST_F(GpuTest, ChainedDispatchesInOneCommandBufferSeeEachOthersWrites) {
   Buffer indirect =
       device_.createBuffer({"indirect", 12, BufferUsage::Storage | BufferUsage::Indirect | BufferUsage::CopyDst});
   device_.queue().writeBuffer(indirect, 0, std::span<const std::uint32_t>(std::vector<std::uint32_t>{0, 0, 0}));
-  auto produceShader = module("chain_produce", test_spirv::chain_produce);
-  auto consumeShader = module("chain_consume", test_spirv::chain_consume);
-  auto produce = device_.createComputePipeline({"produce", nullptr, &produceShader});
-  auto consume = device_.createComputePipeline({"consume", nullptr, &consumeShader});
+  auto produce = derivedPipeline("produce", test_spirv::chain_produce);
+  auto consume = derivedPipeline("consume", test_spirv::chain_consume);
   auto produceLayout = produce.getBindGroupLayout(0);
   auto consumeLayout = consume.getBindGroupLayout(0);
   auto produceGroup = device_.createBindGroup({"produce", &produceLayout, {{0, &produced}, {1, &indirect}}});

@@ -52,8 +52,7 @@ TEST_F(Misuse, LayoutBindingLeftUnbound) {
 }
 
 TEST_F(Misuse, BuffersTooSmallForTheShadersBlocks) {
-  auto shader = module("fixed_block", test_spirv::fixed_block);
-  auto pipeline = device_.createComputePipeline({"fixed", nullptr, &shader});
+  auto pipeline = derivedPipeline("fixed", test_spirv::fixed_block);
   auto layout = pipeline.getBindGroupLayout(0);
   // std140 mat4 + vec4 = 80 bytes; std430 vec4[4] + one float = 68 bytes.
   Buffer params79 = device_.createBuffer({"params79", 79, BufferUsage::Uniform});
@@ -107,8 +106,7 @@ TEST_F(Misuse, DispatchWithoutPipelineOrBindGroup) {
 }
 
 TEST_F(Misuse, BindGroupMadeForAnotherLayout) {
-  auto shader = module("fixed_block", test_spirv::fixed_block);
-  auto other = device_.createComputePipeline({"fixed", nullptr, &shader});
+  auto other = derivedPipeline("fixed", test_spirv::fixed_block);
   auto encoder = device_.createCommandEncoder();
   auto pass = encoder.beginComputePass();
   pass.setPipeline(other);
@@ -192,8 +190,7 @@ TEST_F(Misuse, EncoderOrderRules) {
 }
 
 TEST_F(Misuse, BindGroupLeftBoundAcrossAPipelineWithAnotherLayout) {
-  auto shader = module("fixed_block", test_spirv::fixed_block);
-  auto fixed = device_.createComputePipeline({"fixed", nullptr, &shader});
+  auto fixed = derivedPipeline("fixed", test_spirv::fixed_block);
   auto encoder = device_.createCommandEncoder();
   auto pass = encoder.beginComputePass({"switch"});
   pass.setPipeline(pipeline_);
@@ -344,17 +341,13 @@ TEST_F(Misuse, EncoderUsedAfterFinish) {
 }
 
 TEST_F(Misuse, ImagesSamplersAndBufferArraysAreNotSupported) {
-  EXPECT_THAT(errorOf([&] { module("sampled_image", test_spirv::sampled_image); }),
-              AllOf(HasSubstr("shader module 'sampled_image'"), HasSubstr("binding 0, 'image'"),
-                    HasSubstr("only uniform, storage and texel buffers")));
-  EXPECT_THAT(errorOf([&] { module("buffer_array", test_spirv::buffer_array); }),
-              AllOf(HasSubstr("shader module 'buffer_array'"), HasSubstr("binding 0, 'blocks'"),
-                    HasSubstr("one buffer per binding")));
+  expectModuleRefused("sampled_image", test_spirv::sampled_image, "binding 0, 'image'",
+                      "only uniform, storage and texel buffers");
+  expectModuleRefused("buffer_array", test_spirv::buffer_array, "binding 0, 'blocks'", "one buffer per binding");
 }
 
 TEST_F(Misuse, RowMajorMatrixBlockSize) {
-  auto shader = module("row_major_block", test_spirv::row_major_block);
-  auto pipeline = device_.createComputePipeline({"row major", nullptr, &shader});
+  auto pipeline = derivedPipeline("row major", test_spirv::row_major_block);
   auto layout = pipeline.getBindGroupLayout(0);
   // row_major mat2x4 in std430: 4 rows of vec2 at an 8-byte stride.
   Buffer small = device_.createBuffer({"small", 28, BufferUsage::Storage});

@@ -43,8 +43,7 @@ TEST_F(GpuTest, TexelFetchReturnsUintBitPatternsAndFloatsExactly) {
   Buffer patternTexels = upload(patterns, BufferUsage::Texel);
   Buffer floatTexels = upload(floats, BufferUsage::Texel);
   Buffer out = poisoned(3 * n * kTexel);
-  auto shader = module("texel_read", test_spirv::texel_read);
-  auto pipeline = device_.createComputePipeline({"texel read", nullptr, &shader});
+  auto pipeline = derivedPipeline("texel read", test_spirv::texel_read);
   auto layout = pipeline.getBindGroupLayout(0);
   auto group = device_.createBindGroup(
       {"texel read", &layout, {{0, &patternTexels}, {1, &floatTexels}, {2, &floatTexels}, {3, &out}}});
@@ -64,10 +63,8 @@ TEST_F(GpuTest, StorageTexelWritesReachALaterDispatchInTheSameCommandBuffer) {
   const std::uint32_t n = 1 << 14;
   Buffer texels = poisoned(n * kTexel, BufferUsage::StorageTexel | BufferUsage::Texel);
   Buffer out = poisoned(n * kTexel);
-  auto writeShader = module("texel_write", test_spirv::texel_write);
-  auto gatherShader = module("texel_gather", test_spirv::texel_gather);
-  auto write = device_.createComputePipeline({"write", nullptr, &writeShader});
-  auto gather = device_.createComputePipeline({"gather", nullptr, &gatherShader});
+  auto write = derivedPipeline("write", test_spirv::texel_write);
+  auto gather = derivedPipeline("gather", test_spirv::texel_gather);
   auto writeLayout = write.getBindGroupLayout(0);
   auto gatherLayout = gather.getBindGroupLayout(0);
   auto writeGroup = device_.createBindGroup({"write", &writeLayout, {{0, &texels}}});
@@ -102,8 +99,7 @@ TEST_F(GpuTest, TexelBindingAtANonZeroAlignedOffset) {
   for (std::uint32_t i = 0; i < values.size(); ++i) values[i] = i * 0x9E3779B9u;
   Buffer texels = upload(values, BufferUsage::Texel);
   Buffer out = poisoned(bound * kTexel);
-  auto shader = module("texel_gather", test_spirv::texel_gather);
-  auto pipeline = device_.createComputePipeline({"gather", nullptr, &shader});
+  auto pipeline = derivedPipeline("gather", test_spirv::texel_gather);
   auto layout = pipeline.getBindGroupLayout(0);
   auto group = device_.createBindGroup({"offset", &layout, {{0, &texels, offset, bound * kTexel}, {1, &out}}});
   dispatchOnce(pipeline, group, (bound + 63) / 64);
@@ -130,8 +126,7 @@ TEST_F(GpuTest, ReadOnlyStorageTexelAndSamplerlessTextureBuffers) {
   Buffer signedTexels = upload(ints, BufferUsage::StorageTexel);
   Buffer floatTexels = upload(floats, BufferUsage::Texel);
   Buffer out = poisoned(n * kTexel);
-  auto shader = module("texel_load", test_spirv::texel_load);
-  auto pipeline = device_.createComputePipeline({"load", nullptr, &shader});
+  auto pipeline = derivedPipeline("load", test_spirv::texel_load);
   auto layout = pipeline.getBindGroupLayout(0);
   auto group = device_.createBindGroup({"load", &layout, {{0, &signedTexels}, {1, &floatTexels}, {2, &out}}});
   auto encoder = device_.createCommandEncoder();
@@ -173,8 +168,7 @@ TEST_F(GpuTest, ReflectionAndDerivedLayoutsKnowTexelTypesAndFormats) {
   }
   EXPECT_TRUE(bindingOf(read, 3).written);  // a writeonly storage buffer
 
-  auto shader = module("texel_load", test_spirv::texel_load);
-  auto pipeline = device_.createComputePipeline({"load", nullptr, &shader});
+  auto pipeline = derivedPipeline("load", test_spirv::texel_load);
   auto layout = pipeline.getBindGroupLayout(0);
   const auto& entries = layout.entries();
   ASSERT_EQ(entries.size(), 3u);
@@ -209,8 +203,7 @@ TEST_F(TexelMisuse, BufferWithoutTheTexelUsage) {
               }),
               AllOf(HasSubstr("bind group 'gather', binding 0"), HasSubstr("texel buffer binding"),
                     HasSubstr("usage Texel"), HasSubstr("buffer 'storage only' has Storage")));
-  auto writeShader = module("texel_write", test_spirv::texel_write);
-  auto write = device_.createComputePipeline({"write", nullptr, &writeShader});
+  auto write = derivedPipeline("write", test_spirv::texel_write);
   auto writeLayout = write.getBindGroupLayout(0);
   EXPECT_THAT(errorOf([&] {
                 device_.createBindGroup({"write", &writeLayout, {{0, &texels_}}});
@@ -288,12 +281,8 @@ TEST_F(TexelMisuse, BindGroupMadeForAnotherTexelFormat) {
 }
 
 TEST_F(TexelMisuse, NarrowFormatsAndArraysOfTexelBuffersAreNotSupported) {
-  EXPECT_THAT(errorOf([&] { module("texel_narrow", test_spirv::texel_narrow); }),
-              AllOf(HasSubstr("shader module 'texel_narrow'"), HasSubstr("binding 0, 'narrow'"),
-                    HasSubstr("only 4 x 32-bit texel formats")));
-  EXPECT_THAT(errorOf([&] { module("texel_buffer_array", test_spirv::texel_buffer_array); }),
-              AllOf(HasSubstr("shader module 'texel_buffer_array'"), HasSubstr("binding 0, 'tables'"),
-                    HasSubstr("one per binding")));
+  expectModuleRefused("texel_narrow", test_spirv::texel_narrow, "binding 0, 'narrow'", "only 4 x 32-bit texel formats");
+  expectModuleRefused("texel_buffer_array", test_spirv::texel_buffer_array, "binding 0, 'tables'", "one per binding");
 }
 
 TEST(TexelBufferNames, UsagesTypesAndFormats) {
