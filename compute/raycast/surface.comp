@@ -29,7 +29,7 @@
 #include "compute/shared/dfg.h"
 #include "compute/shared/spherical_harmonics.h"
 #include "compute/shared/random.h"
-#include "compute/shared/lights.h"
+#include "materials/shading/lights.h"
 #include "compute/shared/sampled_environment.h"
 
 layout(constant_id = 1) const int LIGHT_COUNT = 1;

@@ -166,7 +166,7 @@ struct FrameParams {
   uint patchCount;
   float tolerance;     // exact method: largest ray-to-surface distance of a root
   float minimumPiece;  // exact method: pieces are not split below this size
-  float shadowOffset;  // shadow_ray_offset (compute/shared/lights.h)
+  float shadowOffset;  // shadow_ray_offset (materials/shading/lights.h)
   uint slotsPerRay;    // shadow-ray slots per camera ray: one per light, then the environment's
   uint fallbackCapacity;  // records in each fallback list
   // The environment (compute/raycast/environment.glsl); offsets count

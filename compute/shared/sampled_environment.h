@@ -5,7 +5,7 @@
 // heuristic against the other technique's density. Drawing from the
 // environment's distribution, and its density, are each backend's own (an
 // alias table in texel buffers, or in vectors); the rest is here. Needs
-// materials/shading/*.h, random.h, mis.h, lobe_sampling.h and lights.h.
+// materials/shading/*.h, random.h, mis.h, lobe_sampling.h and materials/shading/lights.h.
 
 // Pair k of seed s draws dimensions IBL_DIMENSIONS (s IBL_MAX_SAMPLES + k) +
 // 0 ... 6: 4 for the environment sample (texel as 32 bits, alias, position

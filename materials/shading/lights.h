@@ -2,8 +2,8 @@
 // guard): what a punctual light delivers at a surface point and the shadow
 // ray that decides whether it arrives (docs/rendering.md, "Shading"). Each
 // backend fills PunctualLight from its own light record. Needs
-// materials/shading/*.h and INFINITE_DISTANCE, a real +infinity
-// (compute/raycast/ray.glsl; materials/shading.h in C++).
+// the other materials/shading/ headers and INFINITE_DISTANCE, a real +infinity
+// (compute/raycast/ray.glsl; materials/shading_instance.h in C++).
 
 // A punctual light: directional (along `direction`), else at `position`,
 // a spot around `direction` when `spot`, with its cones as cosines.
