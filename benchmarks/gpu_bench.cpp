@@ -7,14 +7,17 @@
 #include <vector>
 
 #include "engine/gpu/gpu.h"
+#include "engine/renderer.h"
 #include "facet_kernels/spirv.h"
 
 namespace {
 
 using namespace facet::gpu;
+using facet::gpuAdapterFromEnvironment;
+using facet::gpuInstanceFromEnvironment;
 
 Device& device() {
-  static Device d = Instance::create().requestAdapter().requestDevice({"bench"});
+  static Device d = Instance::create(gpuInstanceFromEnvironment()).requestAdapter(gpuAdapterFromEnvironment({})).requestDevice({"bench"});
   return d;
 }
 

@@ -34,6 +34,7 @@
 #include "ceiling_kernels/spirv.h"
 #include "engine/camera/camera.h"
 #include "engine/gpu/gpu.h"
+#include "engine/renderer.h"
 #include "engine/gpu_backend/raycast_layout.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_geometry.h"
@@ -41,6 +42,8 @@
 namespace {
 
 namespace gpu = facet::gpu;
+using facet::gpuAdapterFromEnvironment;
+using facet::gpuInstanceFromEnvironment;
 using glm::dvec3;
 using glm::vec3;
 
@@ -427,8 +430,8 @@ int main(int argc, char** argv) {
     }
   }
   try {
-    gpu::Instance instance = gpu::Instance::create();
-    gpu::Device device = instance.requestAdapter({adapter}).requestDevice();
+    gpu::Instance instance = gpu::Instance::create(gpuInstanceFromEnvironment());
+    gpu::Device device = instance.requestAdapter(gpuAdapterFromEnvironment(adapter)).requestDevice();
     if (device.limits().timestampPeriodNs == 0) throw std::runtime_error("the adapter cannot write timestamps");
     std::printf("ceiling: triangle BVH4 on %s, %dx%d, 1 ray per pixel\n", device.adapterInfo().name.c_str(), kSize,
                 kSize);
