@@ -6,6 +6,8 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "compute/shared/config.h"
+#define FACET_FN
+#include "compute/shared/workgroup_grid.h"
 #include "compute/shared/raycast_layout.h"
 
 layout(local_size_x = 1) in;
@@ -13,18 +15,13 @@ layout(local_size_x = 1) in;
 layout(set = 0, binding = 0, std140) uniform FrameBlock { FrameParams frame; };
 layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters; };
 
-uvec3 grid(uint invocations) {
-  uint size = uint(FACET_WORKGROUP_SIZE);
-  uint groups = (invocations + size - 1u) / size, x = min(groups, uint(FACET_MAX_WORKGROUPS_PER_DIMENSION));
-  return uvec3(x, x == 0u ? 0u : (groups + x - 1u) / x, 1u);
-}
 
 void main() {
-  uvec3 shadow = grid(counters.shadowRays);
+  uvec3 shadow = workgroup_grid(counters.shadowRays);
   // A list that overflowed is worked off as far as it holds; the host sees
   // the count and renders the band again with room for all.
-  uvec3 camera = grid(min(counters.cameraFallbacks, frame.fallbackCapacity));
-  uvec3 shadowFallback = grid(min(counters.shadowFallbacks, frame.fallbackCapacity));
+  uvec3 camera = workgroup_grid(min(counters.cameraFallbacks, frame.fallbackCapacity));
+  uvec3 shadowFallback = workgroup_grid(min(counters.shadowFallbacks, frame.fallbackCapacity));
   counters.shadowX = shadow.x;
   counters.shadowY = shadow.y;
   counters.shadowZ = shadow.z;

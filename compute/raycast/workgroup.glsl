@@ -1,7 +1,7 @@
 // The grid of the kernels that run one invocation per item: workgroups
 // FACET_WORKGROUP_SIZE wide, spilling into y past
-// FACET_MAX_WORKGROUPS_PER_DIMENSION (the host's workgroups() in
-// engine/gpu_backend/gpu_renderer.cpp, dispatch_args.comp's grid()).
+// FACET_MAX_WORKGROUPS_PER_DIMENSION (compute/shared/workgroup_grid.h
+// sizes it, on the host and in dispatch_args.comp).
 #ifndef FACET_RAYCAST_WORKGROUP_GLSL
 #define FACET_RAYCAST_WORKGROUP_GLSL
 

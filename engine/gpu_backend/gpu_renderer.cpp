@@ -1,5 +1,8 @@
 #include "engine/gpu_backend/gpu_renderer.h"
 
+#include <glm/common.hpp>
+#include <glm/vec3.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -52,13 +55,19 @@ const char* const kStageNames[kStageCount] = {
     "dice grid", "dice cells", "quadtrees", "refit", "intersect", "compact", "fallbacks", "fallbacks", "surface",
     "compact",   "shadow rays", "compact",  "shadow fallbacks", "gather",  "resolve"};
 
-// A 2D grid of workgroups covering `invocations` (kernels index with
-// invocation_index(), compute/raycast/workgroup.glsl).
+namespace grid {
+using uint = std::uint32_t;
+using glm::min;
+using glm::uvec3;
+#define FACET_FN inline
+#include "compute/shared/workgroup_grid.h"
+#undef FACET_FN
+}  // namespace grid
+
 std::pair<std::uint32_t, std::uint32_t> workgroups(std::uint64_t invocations) {
-  const std::uint64_t groups =
-      std::max<std::uint64_t>(1, (invocations + FACET_WORKGROUP_SIZE - 1) / FACET_WORKGROUP_SIZE);
-  const std::uint64_t x = std::min<std::uint64_t>(groups, FACET_MAX_WORKGROUPS_PER_DIMENSION);
-  return {std::uint32_t(x), std::uint32_t((groups + x - 1) / x)};
+  if (invocations > UINT32_MAX) throw gpu::Error("a pass of more than 2^32 invocations");
+  const glm::uvec3 grid = grid::workgroup_grid(std::uint32_t(invocations));
+  return {grid.x, grid.y};
 }
 
 // Vulkan has no empty buffers, and a binding holds at least one element (one
