@@ -51,8 +51,8 @@ void runRender(const RenderOptions& o) {
               scene.render.height, scene.render.samplesPerPixel,
               scene.render.method == scene::IntersectionMethod::Exact ? "exact" : "tessellated");
   for (const StageTime& stage : report.stages)
-    std::printf("  %-14s %10.1f ms\n", stage.name.c_str(), stage.milliseconds);
-  std::printf("  %-14s %10.1f ms (wall clock, everything)\n", "total", wallMilliseconds);
+    std::printf("  %-16s %8.1f ms\n", stage.name.c_str(), stage.milliseconds);
+  std::printf("  %-16s %8.1f ms (wall clock, everything)\n", "total", wallMilliseconds);
   // Every stage after refinement casts or shades rays.
   const double traceSeconds = (report.totalMilliseconds() - report.stages.front().milliseconds) * 1e-3;
   std::printf("rays: %llu primary, %llu shadow, %.2f Mrays/s\n", (unsigned long long)report.primaryRays,
