@@ -94,8 +94,6 @@ TEST(ExactIntersection, NoCracksInsideSilhouettes) {
 TEST(ExactIntersection, GrazingAndTangentRays) {
   for (const std::string& name : {std::string("cube"), std::string("pole24"), std::string("thin_slab")}) {
     Geometry geometry(name);
-    const double diagonal = geometry.diagonal;
-    const glm::dvec3 centre = geometry.surface.bounds().centre();
     std::mt19937 random(17);
     std::uniform_real_distribution<double> unit(0.05, 0.95);
     std::uniform_int_distribution<int> anyPatch(0, geometry.surface.patchCount() - 1);
@@ -108,22 +106,22 @@ TEST(ExactIntersection, GrazingAndTangentRays) {
       ++tested;
       const scene::LimitPoint point = geometry.surface.evaluatePatch(patch, u, v);
       glm::dvec3 normal = glm::normalize(glm::cross(point.du, point.dv));
-      if (glm::dot(normal, point.position - centre) < 0.0) normal = -normal;  // outwards
+      if (glm::dot(normal, point.position - geometry.centre) < 0.0) normal = -normal;  // outwards
       const glm::dvec3 tangent = glm::normalize(glm::cross(normal, randomDirection(random)));
       for (double offset : {1e-7, 0.0, -1e-7}) {
         Ray ray;
-        ray.origin = point.position + offset * diagonal * normal - diagonal * tangent;
+        ray.origin = point.position + offset * geometry.diagonal * normal - geometry.diagonal * tangent;
         ray.direction = tangent;
         std::optional<SurfaceHit> hit = intersectExact(geometry.surface, geometry.bvh, ray);
         if (offset < 0.0) {
           ASSERT_TRUE(hit) << name << ": a ray through an interior point missed";
-          EXPECT_LE(hit->t, diagonal * (1.0 + 1e-9)) << name;
+          EXPECT_LE(hit->t, geometry.diagonal * (1.0 + 1e-9)) << name;
         }
         if (!hit) continue;
-        EXPECT_LE(glm::length(ray.at(hit->t) - hit->position), 1e-6 * diagonal);
+        EXPECT_LE(glm::length(ray.at(hit->t) - hit->position), 1e-6 * geometry.diagonal);
         std::optional<scene::LimitPoint> osd = geometry.surface.evaluateFace(hit->ptexFace, hit->u, hit->v);
         ASSERT_TRUE(osd);
-        EXPECT_LE(glm::length(osd->position - hit->position), 1e-6 * diagonal);
+        EXPECT_LE(glm::length(osd->position - hit->position), 1e-6 * geometry.diagonal);
       }
     }
   }
@@ -134,8 +132,6 @@ TEST(ExactIntersection, GrazingAndTangentRays) {
 TEST(ExactIntersection, RaysLeavingTheSurfaceDoNotHitThemselves) {
   for (const std::string& name : {std::string("cube"), std::string("pole24"), std::string("ngon_prism")}) {
     Geometry geometry(name);
-    const double diagonal = geometry.diagonal;
-    const glm::dvec3 centre = geometry.surface.bounds().centre();
     std::mt19937 random(23);
     int leaving = 0, entering = 0;
     for (const testing::AimedRay& aimed : aimRays(geometry, 60, 5)) {
@@ -143,12 +139,12 @@ TEST(ExactIntersection, RaysLeavingTheSurfaceDoNotHitThemselves) {
       ASSERT_TRUE(first);
       // These cages wind their faces counter-clockwise from outside.
       const glm::dvec3 outwards = first->shadingNormal;
-      EXPECT_GT(glm::dot(outwards, first->position - centre), 0.0) << name;
+      EXPECT_GT(glm::dot(outwards, first->position - geometry.centre), 0.0) << name;
       for (int k = 0; k < 4; ++k) {
         Ray ray;
         ray.origin = first->position;
         ray.direction = randomDirection(random);
-        ray.tMin = 1e-6 * diagonal;
+        ray.tMin = 1e-6 * geometry.diagonal;
         const double cosine = glm::dot(ray.direction, outwards);
         if (std::abs(cosine) < 0.05) continue;
         std::optional<SurfaceHit> second = intersectExact(geometry.surface, geometry.bvh, ray);
@@ -157,7 +153,7 @@ TEST(ExactIntersection, RaysLeavingTheSurfaceDoNotHitThemselves) {
           ++leaving;
         } else {
           ASSERT_TRUE(second) << name << ": ray into a closed cage escaped";
-          EXPECT_GT(second->t, 1e-3 * diagonal) << name << ": self-hit";
+          EXPECT_GT(second->t, 1e-3 * geometry.diagonal) << name << ": self-hit";
           ++entering;
         }
       }
