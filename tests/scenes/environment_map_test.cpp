@@ -27,9 +27,9 @@ namespace fs = std::filesystem;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 
-const fs::path kEnvironments = FACET_ENVIRONMENTS_DIR;
-
 float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+const fs::path kEnvironments = FACET_ENVIRONMENTS_DIR;
 
 class EnvironmentMaps : public facet::testing::TempDirTest {
  protected:

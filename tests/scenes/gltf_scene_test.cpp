@@ -139,5 +139,17 @@ TEST_F(GltfMeshes, PrimitivesWithoutASurfaceAreErrors) {
   EXPECT_THAT([&] { loadScene(outside); }, fails(HasSubstr("index 9 is out of range")));
 }
 
+TEST(GltfNormals, AreKeptPerFaceCorner) {
+  const Scene scene = loadScene(std::string(FACET_TEST_DATA_DIR) + "/smooth_gem.gltf");
+  ASSERT_EQ(scene.objects.size(), 1u);
+  const ControlCage& cage = scene.objects[0].cage;
+  ASSERT_EQ(cage.faceVertexNormals.size(), cage.faceVertexIndices.size());
+  // The file's normals are its unit-sphere positions.
+  for (std::size_t i = 0; i < cage.faceVertexIndices.size(); ++i)
+    EXPECT_LT(glm::length(cage.faceVertexNormals[i] -
+                          glm::normalize(cage.positions[std::size_t(cage.faceVertexIndices[i])])),
+              1e-6);
+}
+
 }  // namespace
 }  // namespace facet::scene

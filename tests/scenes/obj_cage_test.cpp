@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <filesystem>
+#include <string>
 
 namespace facet::scene {
 namespace {
@@ -100,50 +102,68 @@ TEST(ObjCageErrors, MissingFile) {
   }
 }
 
-TEST(ObjCageErrors, MalformedLines) {
-  expectError(kQuad + "v 1 2\nf 1 2 3 4\n", 5, "malformed vertex");
-  expectError(kQuad + "v 1 2 3 4 5\n", 5, "malformed vertex");
-  expectError(kQuad + "v 1 two 3\n", 5, "malformed number");
-  expectError(kQuad + "f 1 2 3 4\nvt 0\n", 6, "malformed texture coordinate");
-  expectError(kQuad + "f 1 2 x 4\n", 5, "malformed integer");
-  expectError(kQuad + "f 1/1/1/1 2 3\n", 5, "malformed face");
-  expectError(kQuad + "f 1 2 3 4\nbogus 1 2\n", 6, "unknown statement");
-  expectError(kQuad + "f 1 2 3 4\nt crease 2/1 0 1 2.0\n", 6, "malformed tag");
-  expectError(kQuad + "f 1 2 3 4\nt crease 2/1/0 0 1\n", 6, "malformed tag");
-  expectError(kQuad + "f 1 2 3 4\nt crease 3/1/0 0 1 2 1.0\n", 6, "malformed tag");
-  expectError(kQuad + "f 1 2 3 4\nt crease 4/3/0 0 1 1 2 1.0 2.0 3.0\n", 6, "malformed tag");
-  expectError(kQuad + "f 1 2 3 4\nt interpolateboundary 1/0/0 7\n", 6, "unknown option");
-  expectError(kQuad + "f 1 2 3 4\nt creasemethod 0/0/1 sharp\n", 6, "unknown option");
-  expectError(kQuad + "f 1 2 3 4\nt vertexedit 1/0/0 0\n", 6, "unknown tag");
-  expectError(kQuad + "f 1 2 3 4\nt crease 2/1/0 0 1 -1.0\n", 6, "negative sharpness");
-  expectError("# nothing but a comment\nv 0 0 0\n", 2, "empty cage");
+// Each text with its one error: the line it is reported on and the rule.
+struct BadCage {
+  std::string text;
+  int line;
+  std::string rule;
+};
+
+const BadCage kBadCages[] = {
+    // Malformed lines.
+    {kQuad + "v 1 2\nf 1 2 3 4\n", 5, "malformed vertex"},
+    {kQuad + "v 1 2 3 4 5\n", 5, "malformed vertex"},
+    {kQuad + "v 1 two 3\n", 5, "malformed number"},
+    {kQuad + "f 1 2 3 4\nvt 0\n", 6, "malformed texture coordinate"},
+    {kQuad + "f 1 2 x 4\n", 5, "malformed integer"},
+    {kQuad + "f 1/1/1/1 2 3\n", 5, "malformed face"},
+    {kQuad + "f 1 2 3 4\nbogus 1 2\n", 6, "unknown statement"},
+    {kQuad + "f 1 2 3 4\nt crease 2/1 0 1 2.0\n", 6, "malformed tag"},
+    {kQuad + "f 1 2 3 4\nt crease 2/1/0 0 1\n", 6, "malformed tag"},
+    {kQuad + "f 1 2 3 4\nt crease 3/1/0 0 1 2 1.0\n", 6, "malformed tag"},
+    {kQuad + "f 1 2 3 4\nt crease 4/3/0 0 1 1 2 1.0 2.0 3.0\n", 6, "malformed tag"},
+    {kQuad + "f 1 2 3 4\nt interpolateboundary 1/0/0 7\n", 6, "unknown option"},
+    {kQuad + "f 1 2 3 4\nt creasemethod 0/0/1 sharp\n", 6, "unknown option"},
+    {kQuad + "f 1 2 3 4\nt vertexedit 1/0/0 0\n", 6, "unknown tag"},
+    {kQuad + "f 1 2 3 4\nt crease 2/1/0 0 1 -1.0\n", 6, "negative sharpness"},
+    {"# nothing but a comment\nv 0 0 0\n", 2, "empty cage"},
+    // Non-finite coordinates.
+    {kQuad + "v nan 0 0\n", 5, "non-finite value"},
+    {kQuad + "v 0 inf 0\n", 5, "non-finite value"},
+    {kQuad + "v 0 0 -inf\n", 5, "non-finite value"},
+    {kQuad + "v 0 0 1e400\n", 5, "malformed number"},  // out of double range
+    {kQuad + "f 1 2 3 4\nt crease 2/1/0 0 1 nan\n", 6, "non-finite value"},
+    // Indices out of range.
+    {kQuad + "f 1 2 3 5\n", 5, "index out of range"},
+    {kQuad + "f 1 2 3 0\n", 5, "index out of range"},
+    {kQuad + "f -5 -1 -2\n", 5, "index out of range"},
+    {kQuad + "vt 0 0\nf 1/2 2/1 3/1\n", 6, "index out of range"},
+    {kQuad + "vn 0 0 1\nf 1//1 2//2 3//1\n", 6, "index out of range"},
+    // Reported on the face's line even when found after the last line.
+    {kQuad + "f 1 2 3 4\nf 1 3 9\n# trailer\n", 6, "index out of range"},
+    {kQuad + "f 1 2 3 4\nt corner 1/1/0 4 1.0\n", 6, "index out of range"},
+    {kQuad + "f 1 2 3 4\nt hole 1/0/0 1\n", 6, "index out of range"},
+    {kQuad + "f 1 2 3 4\nt crease 2/1/0 0 2 1.0\n", 6, "crease on a non-edge"},
+    // Faces of fewer than three vertices.
+    {kQuad + "f 1 2\n", 5, "degenerate face"},
+    {kQuad + "f 1 2 3 4\nf 4\n", 6, "degenerate face"},
+};
+
+class ObjCageErrorsOnItsLine : public ::testing::TestWithParam<BadCage> {};
+
+TEST_P(ObjCageErrorsOnItsLine, NamesTheLineAndTheRule) {
+  expectError(GetParam().text, GetParam().line, GetParam().rule);
 }
 
-TEST(ObjCageErrors, NonFiniteCoordinates) {
-  expectError(kQuad + "v nan 0 0\n", 5, "non-finite value");
-  expectError(kQuad + "v 0 inf 0\n", 5, "non-finite value");
-  expectError(kQuad + "v 0 0 -inf\n", 5, "non-finite value");
-  expectError(kQuad + "v 0 0 1e400\n", 5, "malformed number");  // out of double range
-  expectError(kQuad + "f 1 2 3 4\nt crease 2/1/0 0 1 nan\n", 6, "non-finite value");
+// The rule and the case's index, as the test's name.
+std::string caseName(const ::testing::TestParamInfo<BadCage>& info) {
+  std::string name = info.param.rule + "_" + std::to_string(info.index);
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return name;
 }
 
-TEST(ObjCageErrors, IndicesOutOfRange) {
-  expectError(kQuad + "f 1 2 3 5\n", 5, "index out of range");
-  expectError(kQuad + "f 1 2 3 0\n", 5, "index out of range");
-  expectError(kQuad + "f -5 -1 -2\n", 5, "index out of range");
-  expectError(kQuad + "vt 0 0\nf 1/2 2/1 3/1\n", 6, "index out of range");
-  expectError(kQuad + "vn 0 0 1\nf 1//1 2//2 3//1\n", 6, "index out of range");
-  // Reported on the face's line even when found after the last line.
-  expectError(kQuad + "f 1 2 3 4\nf 1 3 9\n# trailer\n", 6, "index out of range");
-  expectError(kQuad + "f 1 2 3 4\nt corner 1/1/0 4 1.0\n", 6, "index out of range");
-  expectError(kQuad + "f 1 2 3 4\nt hole 1/0/0 1\n", 6, "index out of range");
-  expectError(kQuad + "f 1 2 3 4\nt crease 2/1/0 0 2 1.0\n", 6, "crease on a non-edge");
-}
-
-TEST(ObjCageErrors, FacesOfFewerThanThreeVertices) {
-  expectError(kQuad + "f 1 2\n", 5, "degenerate face");
-  expectError(kQuad + "f 1 2 3 4\nf 4\n", 6, "degenerate face");
-}
+INSTANTIATE_TEST_SUITE_P(BadCages, ObjCageErrorsOnItsLine, ::testing::ValuesIn(kBadCages), caseName);
 
 // OpenSubdiv subdivides these, so the reader passes them on as written.
 TEST(ObjCage, AcceptsWhatOpenSubdivAccepts) {

@@ -20,11 +20,13 @@ struct Geometry {
       : surface(scene::SubdivisionSurface::create(scene::loadObjCage(std::string(FACET_CAGE_DIR) + "/" + cage + ".obj"),
                                                   {isolationLevel})),
         bvh(scene::PatchBvh::build(surface)),
-        diagonal(surface.bounds().diagonal()) {}
+        diagonal(surface.bounds().diagonal()),
+        centre(surface.bounds().centre()) {}
 
   scene::SubdivisionSurface surface;
   scene::PatchBvh bvh;
   double diagonal;
+  glm::dvec3 centre;
 };
 
 // A surface point chosen by (patch, s, t) and a ray from outside the bounds
@@ -51,7 +53,7 @@ inline std::vector<AimedRay> aimRays(const Geometry& geometry, int count, unsign
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::uniform_int_distribution<int> anyPatch(0, geometry.surface.patchCount() - 1);
   std::vector<AimedRay> rays;
-  const glm::dvec3 centre = geometry.surface.bounds().centre();
+  const glm::dvec3 centre = geometry.centre;
   for (int i = 0; i < count; ++i) {
     const int patch = anyPatch(random);
     const scene::PatchDomain& domain = geometry.surface.patch(patch).domain;
@@ -89,7 +91,7 @@ template <typename Intersect>
 void expectNoCracks(const Geometry& geometry, const std::string& name, Intersect&& intersect) {
   const glm::dvec3 directions[] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {-1, 1, 1}, {1, -1, 1}, {0.3, 1, -0.7}};
   constexpr int kGrid = 32;
-  const glm::dvec3 centre = geometry.surface.bounds().centre();
+  const glm::dvec3 centre = geometry.centre;
   const double half = 0.5 * geometry.diagonal;
   int totalHits = 0;
   for (glm::dvec3 direction : directions) {

@@ -95,8 +95,32 @@ class GpuTest : public ::testing::Test {
                                  ::testing::HasSubstr(binding), ::testing::HasSubstr(reason)));
   }
 
+  // The error of binding `group` at group 0 of a pass set to `pipeline`.
+  std::string bindGroupError(const ComputePipeline& pipeline, const BindGroup& group) {
+    auto encoder = device_.createCommandEncoder();
+    auto pass = encoder.beginComputePass();
+    pass.setPipeline(pipeline);
+    return errorOf([&] { pass.setBindGroup(0, group); });
+  }
+
   Instance instance_;
   Device device_;
+};
+
+// A device and one pipeline on a kernel's "main": the module stays for tests
+// that build other pipelines from it, the group-0 layout for bind groups.
+class PipelineTest : public GpuTest {
+ protected:
+  void setUpPipeline(const char* label, const char* moduleLabel, std::span<const std::uint32_t> code,
+                     std::vector<ConstantEntry> constants = {}) {
+    shader_ = module(moduleLabel, code);
+    pipeline_ = device_.createComputePipeline({label, nullptr, &shader_, "main", std::move(constants)});
+    layout_ = pipeline_.getBindGroupLayout(0);
+  }
+
+  ShaderModule shader_;
+  ComputePipeline pipeline_;
+  BindGroupLayout layout_;
 };
 
 }  // namespace facet::gpu::testing

@@ -1,5 +1,4 @@
 #include "tests/support/cpu_intersect.h"
-#include "engine/cpu/limit_normal.h"
 
 #include <gtest/gtest.h>
 
@@ -95,8 +94,6 @@ TEST(ExactIntersection, NoCracksInsideSilhouettes) {
 TEST(ExactIntersection, GrazingAndTangentRays) {
   for (const std::string& name : {std::string("cube"), std::string("pole24"), std::string("thin_slab")}) {
     Geometry geometry(name);
-    const double diagonal = geometry.diagonal;
-    const glm::dvec3 centre = geometry.surface.bounds().centre();
     std::mt19937 random(17);
     std::uniform_real_distribution<double> unit(0.05, 0.95);
     std::uniform_int_distribution<int> anyPatch(0, geometry.surface.patchCount() - 1);
@@ -109,22 +106,22 @@ TEST(ExactIntersection, GrazingAndTangentRays) {
       ++tested;
       const scene::LimitPoint point = geometry.surface.evaluatePatch(patch, u, v);
       glm::dvec3 normal = glm::normalize(glm::cross(point.du, point.dv));
-      if (glm::dot(normal, point.position - centre) < 0.0) normal = -normal;  // outwards
+      if (glm::dot(normal, point.position - geometry.centre) < 0.0) normal = -normal;  // outwards
       const glm::dvec3 tangent = glm::normalize(glm::cross(normal, randomDirection(random)));
       for (double offset : {1e-7, 0.0, -1e-7}) {
         Ray ray;
-        ray.origin = point.position + offset * diagonal * normal - diagonal * tangent;
+        ray.origin = point.position + offset * geometry.diagonal * normal - geometry.diagonal * tangent;
         ray.direction = tangent;
         std::optional<SurfaceHit> hit = intersectExact(geometry.surface, geometry.bvh, ray);
         if (offset < 0.0) {
           ASSERT_TRUE(hit) << name << ": a ray through an interior point missed";
-          EXPECT_LE(hit->t, diagonal * (1.0 + 1e-9)) << name;
+          EXPECT_LE(hit->t, geometry.diagonal * (1.0 + 1e-9)) << name;
         }
         if (!hit) continue;
-        EXPECT_LE(glm::length(ray.at(hit->t) - hit->position), 1e-6 * diagonal);
+        EXPECT_LE(glm::length(ray.at(hit->t) - hit->position), 1e-6 * geometry.diagonal);
         std::optional<scene::LimitPoint> osd = geometry.surface.evaluateFace(hit->ptexFace, hit->u, hit->v);
         ASSERT_TRUE(osd);
-        EXPECT_LE(glm::length(osd->position - hit->position), 1e-6 * diagonal);
+        EXPECT_LE(glm::length(osd->position - hit->position), 1e-6 * geometry.diagonal);
       }
     }
   }
@@ -135,8 +132,6 @@ TEST(ExactIntersection, GrazingAndTangentRays) {
 TEST(ExactIntersection, RaysLeavingTheSurfaceDoNotHitThemselves) {
   for (const std::string& name : {std::string("cube"), std::string("pole24"), std::string("ngon_prism")}) {
     Geometry geometry(name);
-    const double diagonal = geometry.diagonal;
-    const glm::dvec3 centre = geometry.surface.bounds().centre();
     std::mt19937 random(23);
     int leaving = 0, entering = 0;
     for (const testing::AimedRay& aimed : aimRays(geometry, 60, 5)) {
@@ -144,12 +139,12 @@ TEST(ExactIntersection, RaysLeavingTheSurfaceDoNotHitThemselves) {
       ASSERT_TRUE(first);
       // These cages wind their faces counter-clockwise from outside.
       const glm::dvec3 outwards = first->shadingNormal;
-      EXPECT_GT(glm::dot(outwards, first->position - centre), 0.0) << name;
+      EXPECT_GT(glm::dot(outwards, first->position - geometry.centre), 0.0) << name;
       for (int k = 0; k < 4; ++k) {
         Ray ray;
         ray.origin = first->position;
         ray.direction = randomDirection(random);
-        ray.tMin = 1e-6 * diagonal;
+        ray.tMin = 1e-6 * geometry.diagonal;
         const double cosine = glm::dot(ray.direction, outwards);
         if (std::abs(cosine) < 0.05) continue;
         std::optional<SurfaceHit> second = intersectExact(geometry.surface, geometry.bvh, ray);
@@ -158,7 +153,7 @@ TEST(ExactIntersection, RaysLeavingTheSurfaceDoNotHitThemselves) {
           ++leaving;
         } else {
           ASSERT_TRUE(second) << name << ": ray into a closed cage escaped";
-          EXPECT_GT(second->t, 1e-3 * diagonal) << name << ": self-hit";
+          EXPECT_GT(second->t, 1e-3 * geometry.diagonal) << name << ": self-hit";
           ++entering;
         }
       }
@@ -214,37 +209,6 @@ TEST(ExactIntersection, RespectsTheRaySegment) {
   EXPECT_FALSE(intersectExact(geometry.surface, geometry.bvh, ray));
   EXPECT_FALSE(
       intersectTessellated(geometry.surface, geometry.bvh, TessellatedSurface::dice(geometry.surface, 2), ray));
-}
-
-// Patch corners where dP/du x dP/dv vanishes (OpenSubdiv #947, #1352): in
-// creased_box where an infinitely sharp crease turns a corner (dP/du and
-// dP/dv parallel), in suzanne at end-cap corners where both derivatives are
-// zero. The fallback must give a unit normal continuous with the normals
-// just inside the patch.
-TEST(LimitNormal, FallsBackWhereTheCrossProductVanishes) {
-  for (const std::string& name : {std::string("creased_box"), std::string("suzanne")}) {
-    Geometry geometry(name);
-    int degenerate = 0;
-    for (int patch = 0; patch < geometry.surface.patchCount(); ++patch) {
-      const scene::PatchDomain& domain = geometry.surface.patch(patch).domain;
-      for (int corner = 0; corner < 4; ++corner) {
-        const double s = corner & 1, t = corner >> 1;
-        const double u = domain.u0 + s * domain.size, v = domain.v0 + t * domain.size;
-        const scene::LimitPoint point = geometry.surface.evaluatePatch(patch, u, v);
-        const double scale = glm::length(point.du) * glm::length(point.dv);
-        if (scale > 0.0 && glm::length(glm::cross(point.du, point.dv)) > kDegenerateSine * scale) continue;
-        ++degenerate;
-        const glm::dvec3 normal = limitNormal(geometry.surface, patch, u, v);
-        EXPECT_NEAR(glm::length(normal), 1.0, 1e-12);
-        const double inward = 1e-4 * domain.size;
-        const glm::dvec3 inside =
-            limitNormal(geometry.surface, patch, u + (s == 0.0 ? inward : -inward), v + (t == 0.0 ? inward : -inward));
-        EXPECT_LT(angleBetween(normal, inside), 0.05) << name << " patch " << patch << " corner " << corner;
-      }
-    }
-    EXPECT_GT(degenerate, 0) << name << ": no degenerate point, the fallback went untested";
-    std::cout << name << ": " << degenerate << " patch corners with a vanishing cross product\n";
-  }
 }
 
 }  // namespace

@@ -132,7 +132,7 @@ TEST(TessellatedIntersection, AgreesWithExactOnRandomRays) {
                                   std::string("thin_slab"), std::string("nearly_flat"), std::string("suzanne")}) {
     Geometry geometry(name);
     TessellatedSurface tessellation = TessellatedSurface::dice(geometry.surface, 16);
-    const glm::dvec3 centre = geometry.surface.bounds().centre();
+    const glm::dvec3 centre = geometry.centre;
     std::mt19937 random(99);
     std::uniform_real_distribution<double> offset(-0.4, 0.4);
     int disagreements = 0, hits = 0;

@@ -170,7 +170,7 @@ INSTANTIATE_TEST_SUITE_P(TortureCages, PackedCage,
                          ::testing::Values("cube", "valence_3_to_10", "pole24", "boundary_hole", "creased_box",
                                            "ngon_prism", "thin_slab", "nearly_flat", "suzanne"));
 
-// The shared headers compiled as GLSL at build time (gpu_layout.comp):
+// The shared headers compiled as GLSL at build time (shaders/gpu_layout.comp):
 // the member offsets and array strides glslang chose for the std430 buffers
 // are the C++ ones.
 class SpirvLayout {

@@ -5,23 +5,21 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <random>
-#include <string>
 
 #include "engine/ibl/prefiltered_environment.h"
 #include "tests/support/environment_maps.h"
+#include "tests/support/temp_dir.h"
 
 namespace facet::ibl {
 namespace {
 
 namespace fs = std::filesystem;
 
-class PrefilterCache : public ::testing::Test {
+class PrefilterCache : public facet::testing::TempDirTest {
  protected:
   void SetUp() override {
-    directory_ = fs::temp_directory_path() / ("facet-prefilter-cache-" + std::to_string(std::random_device{}()));
-    fs::create_directories(directory_);
-    setenv("FACET_CACHE_DIR", directory_.c_str(), 1);
+    TempDirTest::SetUp();
+    setenv("FACET_CACHE_DIR", dir_.c_str(), 1);
     map_ = testing::mapOf(32, 16, testing::skyWithSun);
     settings_.firstLevelWidth = 16;
     settings_.samples = 16;
@@ -30,7 +28,7 @@ class PrefilterCache : public ::testing::Test {
   }
   void TearDown() override {
     unsetenv("FACET_CACHE_DIR");
-    fs::remove_all(directory_);
+    TempDirTest::TearDown();
   }
 
   PrefilteredEnvironment cached(const PrefilterSettings& settings) {
@@ -42,7 +40,7 @@ class PrefilterCache : public ::testing::Test {
 
   std::vector<fs::path> files() const {
     std::vector<fs::path> found;
-    for (const auto& entry : fs::directory_iterator(directory_)) found.push_back(entry.path());
+    for (const auto& entry : fs::directory_iterator(dir_)) found.push_back(entry.path());
     return found;
   }
 
@@ -63,7 +61,6 @@ class PrefilterCache : public ::testing::Test {
     }
   }
 
-  fs::path directory_;
   scene::EnvironmentMap map_;
   PrefilterSettings settings_;
   ModelPairs models_{{0, 4}, {1, 6}};
@@ -126,7 +123,7 @@ TEST_F(PrefilterCache, OtherSettingsModelsOrMapUseAnotherFile) {
 }
 
 TEST_F(PrefilterCache, UnwritableDirectoryOnlyCostsTheBuild) {
-  const fs::path blocker = directory_ / "not-a-directory";
+  const fs::path blocker = dir_ / "not-a-directory";
   std::ofstream(blocker) << "a file where the cache directory should be";
   setenv("FACET_CACHE_DIR", (blocker / "cache").c_str(), 1);
   const PrefilteredEnvironment first = cached(settings_);

@@ -179,19 +179,14 @@ TEST_F(GpuTest, ReflectionAndDerivedLayoutsKnowTexelTypesAndFormats) {
   EXPECT_EQ(entries[1].minBindingSize, kTexel);
 }
 
-class TexelMisuse : public GpuTest {
+class TexelMisuse : public PipelineTest {
  protected:
   void SetUp() override {
-    GpuTest::SetUp();
-    shader_ = module("texel_gather", test_spirv::texel_gather);
-    pipeline_ = device_.createComputePipeline({"gather", nullptr, &shader_});
-    layout_ = pipeline_.getBindGroupLayout(0);
+    PipelineTest::SetUp();
+    setUpPipeline("gather", "texel_gather", test_spirv::texel_gather);
     out_ = device_.createBuffer({"out", 4096, BufferUsage::Storage});
     texels_ = device_.createBuffer({"texels", 4096, BufferUsage::Texel});
   }
-  ShaderModule shader_;
-  ComputePipeline pipeline_;
-  BindGroupLayout layout_;
   Buffer out_;
   Buffer texels_;
 };
@@ -273,10 +268,7 @@ TEST_F(TexelMisuse, BindGroupMadeForAnotherTexelFormat) {
   auto floatLayout = device_.createBindGroupLayout(
       {"float texels", {{0, BindingType::TexelBuffer, 0, TexelFormat::Rgba32Float}, {1, BindingType::Storage}}});
   auto group = device_.createBindGroup({"float texels", &floatLayout, {{0, &texels_}, {1, &out_}}});
-  auto encoder = device_.createCommandEncoder();
-  auto pass = encoder.beginComputePass();
-  pass.setPipeline(pipeline_);
-  EXPECT_THAT(errorOf([&] { pass.setBindGroup(0, group); }),
+  EXPECT_THAT(bindGroupError(pipeline_, group),
               AllOf(HasSubstr("bind group 'float texels'"), HasSubstr("does not match group 0")));
 }
 

@@ -2,7 +2,6 @@
 // written out here from the cage alone.
 #include "scenes/input_error.h"
 #include "scenes/scene_file.h"
-#include "scenes/scene_geometry.h"
 #include "scenes/subdivision_surface.h"
 #include "tests/support/cages.h"
 
@@ -18,6 +17,7 @@ namespace facet::scene {
 namespace {
 
 using testing::loadTortureCage;
+using testing::singleFace;
 using testing::tortureCageNames;
 
 const RefinementSettings kAsAuthored{3, EndCapBasis::Gregory, Subdivision::None};
@@ -110,15 +110,6 @@ TEST_P(PolygonsOfEachCage, EachPtexFaceIsItsBilinearPatch) {
 
 INSTANTIATE_TEST_SUITE_P(TortureCages, PolygonsOfEachCage, ::testing::ValuesIn(tortureCageNames()));
 
-ControlCage singleFace(std::vector<glm::dvec3> positions) {
-  ControlCage cage;
-  cage.source = "single face";
-  cage.faceVertexCounts = {int(positions.size())};
-  for (int i = 0; i < int(positions.size()); ++i) cage.faceVertexIndices.push_back(i);
-  cage.positions = std::move(positions);
-  return cage;
-}
-
 TEST(Polygons, ATriangleIsExactlyTheFlatTriangle) {
   const glm::dvec3 a(0.3, -1.2, 0.7), b(2.1, 0.4, -0.5), c(-0.6, 1.7, 1.9);
   const SubdivisionSurface surface = SubdivisionSurface::create(singleFace({a, b, c}), kAsAuthored);
@@ -186,31 +177,6 @@ TEST(Polygons, AQuadBesideATriangleMarksTheSharedEdge) {
   EXPECT_LT(glm::length(surface.evaluatePatch(1, 0, 1).position - glm::dvec3(1, 0.5, 0)), 1e-12);
 }
 
-// Flat polygons are diced once; a twisted quad as finely as its twist asks.
-TEST(Polygons, DicingFollowsTheTwistOutOfPlane) {
-  Object object;
-  object.subdivision = Subdivision::None;
-  object.cage = singleFace({{0, 0, 0}, {1, 0, 0}, {1.5, 1, 0}, {0, 1, 0}});  // planar, not a parallelogram
-  Camera camera;
-  camera.eye = {0.5, 0.5, 4};
-  camera.target = {0.5, 0.5, 0};
-  RenderSettings settings;
-  settings.height = 512;
-  const RefinementChoice flat = chooseRefinement(object, camera, settings);
-  EXPECT_EQ(flat.isolationLevel, 0);
-  EXPECT_LT(flat.twistPixels, 1e-9);
-  EXPECT_EQ(flat.tessellationRate, 1);
-
-  object.cage.positions[2].z = 0.2;
-  const RefinementChoice twisted = chooseRefinement(object, camera, settings);
-  EXPECT_GT(twisted.twistPixels, 1.0);
-  EXPECT_EQ(twisted.tessellationRate, int(std::ceil(std::sqrt(twisted.twistPixels / (4 * settings.pixelTolerance)))));
-  EXPECT_GT(twisted.tessellationRate, 1);
-
-  object.subdivision = Subdivision::CatmullClark;
-  EXPECT_GE(chooseRefinement(object, camera, settings).isolationLevel, 1);
-}
-
 TEST(Polygons, ATriangleMeshHasItsFaceNormals) {
   const Scene scene = loadScene(std::string(FACET_TEST_DATA_DIR) + "/faceted_gem.gltf");
   ASSERT_EQ(scene.objects.size(), 1u);
@@ -262,18 +228,6 @@ TEST(Polygons, AuthoredNormalsFollowTheSplitOfTheFace) {
   // One normal per face corner, or an error naming the rule.
   cage.faceVertexNormals.pop_back();
   EXPECT_THROW(SubdivisionSurface::create(cage, kAsAuthored), InputError);
-}
-
-TEST(Polygons, AGltfMeshKeepsItsNormalsPerFaceCorner) {
-  const Scene scene = loadScene(std::string(FACET_TEST_DATA_DIR) + "/smooth_gem.gltf");
-  ASSERT_EQ(scene.objects.size(), 1u);
-  const ControlCage& cage = scene.objects[0].cage;
-  ASSERT_EQ(cage.faceVertexNormals.size(), cage.faceVertexIndices.size());
-  // The file's normals are its unit-sphere positions.
-  for (std::size_t i = 0; i < cage.faceVertexIndices.size(); ++i)
-    EXPECT_LT(glm::length(cage.faceVertexNormals[i] -
-                          glm::normalize(cage.positions[std::size_t(cage.faceVertexIndices[i])])),
-              1e-6);
 }
 
 }  // namespace

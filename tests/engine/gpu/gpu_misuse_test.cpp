@@ -12,19 +12,14 @@ namespace {
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 
-class Misuse : public GpuTest {
+class Misuse : public PipelineTest {
  protected:
   void SetUp() override {
-    GpuTest::SetUp();
-    shader_ = module("specialized_fill", test_spirv::specialized_fill);
-    pipeline_ = device_.createComputePipeline({"fill", nullptr, &shader_, "main", {{"0", 64}}});
-    layout_ = pipeline_.getBindGroupLayout(0);
+    PipelineTest::SetUp();
+    setUpPipeline("fill", "specialized_fill", test_spirv::specialized_fill, {{"0", 64}});
     storage_ = device_.createBuffer({"values", 4096, BufferUsage::Storage | BufferUsage::CopyDst});
     group_ = device_.createBindGroup({"fill", &layout_, {{0, &storage_}}});
   }
-  ShaderModule shader_;
-  ComputePipeline pipeline_;
-  BindGroupLayout layout_;
   Buffer storage_;
   BindGroup group_;
 };
@@ -107,10 +102,7 @@ TEST_F(Misuse, DispatchWithoutPipelineOrBindGroup) {
 
 TEST_F(Misuse, BindGroupMadeForAnotherLayout) {
   auto other = derivedPipeline("fixed", test_spirv::fixed_block);
-  auto encoder = device_.createCommandEncoder();
-  auto pass = encoder.beginComputePass();
-  pass.setPipeline(other);
-  EXPECT_THAT(errorOf([&] { pass.setBindGroup(0, group_); }),
+  EXPECT_THAT(bindGroupError(other, group_),
               AllOf(HasSubstr("bind group 'fill'"), HasSubstr("does not match group 0")));
 }
 
