@@ -11,12 +11,16 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <numbers>
+#include <string_view>
 #include <tuple>
 
 #include "scenes/input_error.h"
 #include "scenes/scene_file.h"
+#include "scenes/value_rules.h"
 
 namespace facet::scene {
 namespace {
@@ -26,6 +30,36 @@ constexpr int kTriangles = 4;
 constexpr int kTriangleStrip = 5;
 constexpr int kTriangleFan = 6;
 
+// glTF's component types that facet reads.
+constexpr int kUnsignedByte = 5121;
+constexpr int kUnsignedShort = 5123;
+constexpr int kUnsignedInt = 5125;
+constexpr int kFloat = 5126;
+
+// tinygltf's JSON parser recurses once per nested array or object, so deep
+// enough nesting overflows the stack; glTF itself nests fewer than 20 levels.
+constexpr int kMaxJsonNesting = 512;
+
+// What an accessor's elements must be, from the glTF 2.0 specification's
+// tables of mesh attributes and indices (3.7.2.1).
+struct ElementFormat {
+  std::size_t components;
+  std::array<int, 3> componentTypes;  // unused slots repeat the first
+  const char* name;
+};
+constexpr ElementFormat kFloatVec3{3, {kFloat, kFloat, kFloat}, "FLOAT VEC3"};
+constexpr ElementFormat kVertexIndex{
+    1, {kUnsignedByte, kUnsignedShort, kUnsignedInt}, "SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT"};
+
+// Whether `count` elements of `elementBytes`, `stride` apart from byte
+// `begin`, end by byte `end`, in arithmetic that cannot wrap around.
+bool elementsFit(std::size_t begin, std::size_t count, std::size_t stride, std::size_t elementBytes,
+                 std::size_t end) {
+  if (count == 0) return true;
+  if (begin > end || elementBytes > end - begin) return false;
+  return count - 1 <= (end - begin - elementBytes) / stride;
+}
+
 class GltfReader {
  public:
   GltfReader(const tinygltf::Model& model, std::string source) : model_(model), source_(std::move(source)) {}
@@ -34,34 +68,37 @@ class GltfReader {
     throw InputError(source_, 0, where, rule);
   }
 
-  // Element `i` of an accessor as doubles (components × count), range-checked.
-  std::vector<double> read(int accessorIndex, const std::string& where, std::size_t expectedComponents) const {
+  // The elements of an accessor as doubles (components × count), checked
+  // against `format` and against the bounds of its buffer.
+  std::vector<double> read(int accessorIndex, const std::string& where, const ElementFormat& format) const {
     if (accessorIndex < 0 || std::size_t(accessorIndex) >= model_.accessors.size())
       fail(where, "accessor index out of range");
     const tinygltf::Accessor& a = model_.accessors[std::size_t(accessorIndex)];
+    const std::string accessor = "accessors[" + std::to_string(accessorIndex) + "]";
     const std::size_t components = std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(a.type)));
-    if (components != expectedComponents)
-      fail(where, "expected " + std::to_string(expectedComponents) + " components per element, found " +
-                      std::to_string(components));
+    if (components != format.components || std::find(format.componentTypes.begin(), format.componentTypes.end(),
+                                                      a.componentType) == format.componentTypes.end())
+      fail(where, accessor + " must be " + format.name + ", is componentType " + std::to_string(a.componentType) +
+                      " with " + std::to_string(components) + " components");
     if (a.bufferView < 0 || std::size_t(a.bufferView) >= model_.bufferViews.size())
       fail(where, "accessor has no buffer view (sparse accessors are not supported)");
     const tinygltf::BufferView& view = model_.bufferViews[std::size_t(a.bufferView)];
     if (view.buffer < 0 || std::size_t(view.buffer) >= model_.buffers.size()) fail(where, "buffer index out of range");
     const std::vector<unsigned char>& data = model_.buffers[std::size_t(view.buffer)].data;
-    const int componentBytes = tinygltf::GetComponentSizeInBytes(std::uint32_t(a.componentType));
-    if (componentBytes <= 0) fail(where, "unknown component type " + std::to_string(a.componentType));
-    const std::size_t elementBytes = components * std::size_t(componentBytes);
+    const std::size_t componentBytes = std::size_t(tinygltf::GetComponentSizeInBytes(std::uint32_t(a.componentType)));
+    const std::size_t elementBytes = components * componentBytes;
     const std::size_t stride = view.byteStride ? view.byteStride : elementBytes;
-    const std::size_t begin = view.byteOffset + a.byteOffset;
-    if (a.count > 0 && (begin + (a.count - 1) * stride + elementBytes > view.byteOffset + view.byteLength ||
-                        view.byteOffset + view.byteLength > data.size()))
-      fail(where, "accessor reads past the end of its buffer");
+    if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset ||
+        !elementsFit(a.byteOffset, a.count, stride, elementBytes, view.byteLength))
+      fail(where, accessor + " (count " + std::to_string(a.count) + ", byteOffset " + std::to_string(a.byteOffset) +
+                      ", stride " + std::to_string(stride) + ") reads past the end of its buffer");
+    const unsigned char* begin = data.data() + view.byteOffset + a.byteOffset;
     std::vector<double> out;
     out.reserve(a.count * components);
     for (std::size_t i = 0; i < a.count; ++i) {
-      const unsigned char* element = data.data() + begin + i * stride;
+      const unsigned char* element = begin + i * stride;
       for (std::size_t c = 0; c < components; ++c)
-        out.push_back(component(element + c * std::size_t(componentBytes), a.componentType));
+        out.push_back(component(element + c * componentBytes, a.componentType));
     }
     return out;
   }
@@ -69,24 +106,14 @@ class GltfReader {
  private:
   static double component(const unsigned char* p, int type) {
     switch (type) {
-      case 5120: {
-        std::int8_t v;
-        std::memcpy(&v, p, 1);
-        return v;
-      }
-      case 5121:
+      case kUnsignedByte:
         return *p;
-      case 5122: {
-        std::int16_t v;
-        std::memcpy(&v, p, 2);
-        return v;
-      }
-      case 5123: {
+      case kUnsignedShort: {
         std::uint16_t v;
         std::memcpy(&v, p, 2);
         return v;
       }
-      case 5125: {
+      case kUnsignedInt: {
         std::uint32_t v;
         std::memcpy(&v, p, 4);
         return v;
@@ -119,12 +146,18 @@ glm::dmat4 localTransform(const tinygltf::Node& node) {
   return m;
 }
 
-materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index) {
+materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index, const GltfReader& reader) {
   const auto& pbr = gltf.pbrMetallicRoughness;
+  const std::string where = "materials[" + std::to_string(index) + "].pbrMetallicRoughness";
+  for (double c : pbr.baseColorFactor)
+    if (!(c >= 0.0 && c <= 1.0)) reader.fail(where + ".baseColorFactor", "every component must be in [0, 1], is " + formatNumber(c));
   glm::dvec3 base(1.0);
   if (pbr.baseColorFactor.size() >= 3) base = {pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]};
-  const double metallic = std::clamp(pbr.metallicFactor, 0.0, 1.0);
-  const double roughness = std::clamp(pbr.roughnessFactor, 0.0, 1.0);
+  for (auto [field, value] : {std::pair{".metallicFactor", pbr.metallicFactor},
+                              std::pair{".roughnessFactor", pbr.roughnessFactor}})
+    if (const std::optional<std::string> rule = rangeRule(value, 0.0, 1.0)) reader.fail(where + field, *rule);
+  const double metallic = pbr.metallicFactor;
+  const double roughness = pbr.roughnessFactor;
   materials::Material m = defaultMaterial();
   m.name = gltf.name.empty() ? "material " + std::to_string(index) : gltf.name;
   m.diffuse = base * (1.0 - metallic);
@@ -133,27 +166,104 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
   return m;
 }
 
-Light toLight(const tinygltf::Light& gltf, const glm::dmat4& world, const GltfReader& reader,
+// Light `index` of KHR_lights_punctual, placed by node `where`.
+Light toLight(const tinygltf::Light& gltf, int index, const glm::dmat4& world, const GltfReader& reader,
               const std::string& where) {
+  const std::string field = "extensions.KHR_lights_punctual.lights[" + std::to_string(index) + "]";
   Light light;
   glm::dvec3 color(1.0);
   if (gltf.color.size() == 3) color = {gltf.color[0], gltf.color[1], gltf.color[2]};
+  if (hasNegativeComponent(color)) reader.fail(field + ".color", kNegativeColorRule);
   if (gltf.intensity < 0) reader.fail(where, "light intensity must not be negative");
   light.color = color * gltf.intensity / std::numbers::pi;
   light.position = glm::dvec3(world[3]);
-  light.direction = glm::normalize(glm::dvec3(world * glm::dvec4(0, 0, -1, 0)));
   if (gltf.type == "directional") {
     light.type = LightType::Directional;
   } else if (gltf.type == "point") {
     light.type = LightType::Point;
   } else if (gltf.type == "spot") {
     light.type = LightType::Spot;
-    light.innerConeDegrees = glm::degrees(gltf.spot.innerConeAngle);
-    light.outerConeDegrees = glm::degrees(gltf.spot.outerConeAngle);
+    const double inner = gltf.spot.innerConeAngle;
+    const double outer = gltf.spot.outerConeAngle;
+    if (!(inner >= 0.0 && inner < outer && outer <= std::numbers::pi / 2))
+      reader.fail(field + ".spot", "must have 0 <= innerConeAngle < outerConeAngle <= pi/2, has " +
+                                       formatNumber(inner) + " and " + formatNumber(outer));
+    light.innerConeDegrees = glm::degrees(inner);
+    light.outerConeDegrees = glm::degrees(outer);
   } else {
     reader.fail(where, "unknown light type '" + gltf.type + "'");
   }
+  if (light.type != LightType::Point) {
+    const glm::dvec3 direction(world * glm::dvec4(0, 0, -1, 0));
+    const double length = glm::length(direction);
+    if (!(length > 0.0) || !std::isfinite(length))
+      reader.fail(where, "the node's matrix is singular, so light " + std::to_string(index) + " has no direction");
+    light.direction = direction / length;
+  }
   return light;
+}
+
+// The camera of `node` (a perspective one), placed by its world matrix.
+Camera toCamera(const tinygltf::Camera& gltf, int index, const glm::dmat4& world, const GltfReader& reader,
+                const std::string& where) {
+  const std::string field = "cameras[" + std::to_string(index) + "].perspective.yfov";
+  Camera camera;
+  camera.verticalFovDegrees = glm::degrees(gltf.perspective.yfov);
+  if (const std::optional<std::string> rule = rangeRule(camera.verticalFovDegrees, kMinFovDegrees, kMaxFovDegrees))
+    reader.fail(field, "in degrees, " + *rule);
+  const glm::dvec3 forward(world * glm::dvec4(0, 0, -1, 0));
+  const glm::dvec3 up(world * glm::dvec4(0, 1, 0, 0));
+  camera.eye = glm::dvec3(world[3]);
+  // The test of the command line's --eye, --target and --up, so that a camera
+  // accepted here is accepted there.
+  if (!std::isfinite(glm::length(camera.eye)) ||
+      !(glm::length(glm::cross(forward, up)) > 1e-12 * glm::length(forward) * glm::length(up)))
+    reader.fail(where, "the node's matrix is singular or not finite, so camera " + std::to_string(index) +
+                           " has no view direction and up vector");
+  camera.target = camera.eye + glm::normalize(forward);
+  camera.up = glm::normalize(up);
+  return camera;
+}
+
+// The roots of the scene to render, once the node hierarchy is checked to be
+// the forest glTF requires (2.0, 3.5.3): a node has at most one parent, and a
+// root has none and is listed once.
+std::vector<int> sceneRoots(const tinygltf::Model& model, const GltfReader& reader) {
+  const int nodes = int(model.nodes.size());
+  std::vector<int> parent(model.nodes.size(), -1);
+  for (int n = 0; n < nodes; ++n) {
+    const std::string where = "nodes[" + std::to_string(n) + "].children";
+    for (int child : model.nodes[std::size_t(n)].children) {
+      if (child < 0 || child >= nodes) reader.fail(where, "node index " + std::to_string(child) + " out of range");
+      int& childParent = parent[std::size_t(child)];
+      if (childParent >= 0)
+        reader.fail(where, "node " + std::to_string(child) + " is a child of node " + std::to_string(childParent) +
+                               " too (a node has at most one parent)");
+      childParent = n;
+    }
+  }
+  std::vector<int> roots;
+  if (model.scenes.empty()) {
+    for (int n = 0; n < nodes; ++n)
+      if (parent[std::size_t(n)] < 0) roots.push_back(n);
+    return roots;
+  }
+  if (model.defaultScene < -1 || model.defaultScene >= int(model.scenes.size()))
+    reader.fail("scene", "scene index " + std::to_string(model.defaultScene) + " out of range (the file has " +
+                             std::to_string(model.scenes.size()) + " scenes)");
+  const int sceneIndex = std::max(model.defaultScene, 0);
+  const std::string where = "scenes[" + std::to_string(sceneIndex) + "].nodes";
+  std::vector<bool> listed(model.nodes.size(), false);
+  for (int root : model.scenes[std::size_t(sceneIndex)].nodes) {
+    if (root < 0 || root >= nodes) reader.fail(where, "node index " + std::to_string(root) + " out of range");
+    if (listed[std::size_t(root)]) reader.fail(where, "node " + std::to_string(root) + " is listed twice");
+    if (parent[std::size_t(root)] >= 0)
+      reader.fail(where, "node " + std::to_string(root) + " is a root and a child of node " +
+                             std::to_string(parent[std::size_t(root)]));
+    listed[std::size_t(root)] = true;
+    roots.push_back(root);
+  }
+  return roots;
 }
 
 // Which vertices of a primitive's list make its triangle `t`, in the glTF 2.0
@@ -201,7 +311,7 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
     const std::string at = where + ".primitives[" + std::to_string(p) + "]";
     auto position = primitive.attributes.find("POSITION");
     if (position == primitive.attributes.end()) reader.fail(at, "has no POSITION attribute");
-    const std::vector<double> xyz = reader.read(position->second, at + ".POSITION", 3);
+    const std::vector<double> xyz = reader.read(position->second, at + ".POSITION", kFloatVec3);
     std::vector<int> remap(xyz.size() / 3);
     for (std::size_t v = 0; v < remap.size(); ++v) {
       const glm::dvec3 p3 = glm::dvec3(world * glm::dvec4(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2], 1.0));
@@ -213,7 +323,7 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
     }
     std::vector<glm::dvec3> vertexNormals;
     if (normals) {
-      const std::vector<double> n = reader.read(primitive.attributes.at("NORMAL"), at + ".NORMAL", 3);
+      const std::vector<double> n = reader.read(primitive.attributes.at("NORMAL"), at + ".NORMAL", kFloatVec3);
       if (n.size() != xyz.size()) reader.fail(at, "NORMAL and POSITION have different counts");
       for (std::size_t v = 0; v < n.size() / 3; ++v) {
         const glm::dvec3 transformed = normalMatrix * glm::dvec3(n[3 * v], n[3 * v + 1], n[3 * v + 2]);
@@ -225,7 +335,7 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
     }
     std::vector<double> indices;
     if (primitive.indices >= 0) {
-      indices = reader.read(primitive.indices, at + ".indices", 1);
+      indices = reader.read(primitive.indices, at + ".indices", kVertexIndex);
     } else {
       for (std::size_t v = 0; v < remap.size(); ++v) indices.push_back(double(v));
     }
@@ -236,8 +346,7 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
       const std::array<std::size_t, 3> slots = triangleCorners(primitive.mode, t);
       for (int c = 0; c < 3; ++c) {
         const double index = indices[slots[std::size_t(c)]];
-        if (index < 0 || index >= double(remap.size()))
-          reader.fail(at, "index " + std::to_string(std::size_t(index)) + " is out of range");
+        if (index >= double(remap.size())) reader.fail(at, "index " + formatNumber(index) + " is out of range");
         vertices[c] = std::size_t(index);
         corners[c] = remap[vertices[c]];
       }
@@ -260,74 +369,109 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
   return cage;
 }
 
+// The deepest nesting of arrays and objects in `json`, outside strings,
+// counted up to one past `limit`.
+int jsonNesting(std::string_view json, int limit) {
+  int depth = 0, deepest = 0;
+  bool inString = false, escaped = false;
+  for (char c : json) {
+    if (inString) {
+      if (escaped)
+        escaped = false;
+      else if (c == '\\')
+        escaped = true;
+      else if (c == '"')
+        inString = false;
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      deepest = std::max(deepest, ++depth);
+      if (deepest > limit) break;
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return deepest;
+}
+
+// The JSON chunk of a .glb file (glTF 2.0, 4.4): 12 bytes of header, then the
+// chunk's length and type. A file too short for them is left to tinygltf.
+std::string_view glbJson(std::string_view file) {
+  if (file.size() < 20) return file;
+  std::uint32_t length;
+  std::memcpy(&length, file.data() + 12, 4);
+  return file.substr(20, length);
+}
+
 }  // namespace
 
 Scene loadGltfScene(const std::filesystem::path& path) {
   const std::string source = path.string();
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(source, 0, "cannot load glTF", "cannot open the file");
+  const std::string file{std::istreambuf_iterator<char>(in), {}};
+  const bool binary = path.extension() == ".glb";
+  if (jsonNesting(binary ? glbJson(file) : file, kMaxJsonNesting) > kMaxJsonNesting)
+    throw InputError(source, 0, "JSON nesting",
+                     "arrays and objects nest deeper than " + std::to_string(kMaxJsonNesting) + " levels");
   tinygltf::Model model;
   tinygltf::TinyGLTF loader;
   std::string error, warning;
-  const bool binary = path.extension() == ".glb";
-  const bool ok = binary ? loader.LoadBinaryFromFile(&model, &error, &warning, source)
-                         : loader.LoadASCIIFromFile(&model, &error, &warning, source);
+  const std::string baseDir = path.parent_path().string();
+  const bool ok =
+      binary ? loader.LoadBinaryFromMemory(&model, &error, &warning,
+                                           reinterpret_cast<const unsigned char*>(file.data()),
+                                           unsigned(file.size()), baseDir)
+             : loader.LoadASCIIFromString(&model, &error, &warning, file.data(), unsigned(file.size()), baseDir);
   if (!ok) throw InputError(source, 0, "cannot load glTF", error.empty() ? "unknown tinygltf error" : error);
   const GltfReader reader(model, source);
 
   Scene scene;
   scene.source = path;
-  for (std::size_t i = 0; i < model.materials.size(); ++i) scene.materials.push_back(toMaterial(model.materials[i], i));
+  for (std::size_t i = 0; i < model.materials.size(); ++i)
+    scene.materials.push_back(toMaterial(model.materials[i], i, reader));
   const int defaultMaterialIndex = int(scene.materials.size());
   scene.materials.push_back(defaultMaterial());
 
   std::optional<Camera> camera;
-  std::vector<int> roots;
-  if (!model.scenes.empty()) {
-    const int sceneIndex = model.defaultScene >= 0 ? model.defaultScene : 0;
-    roots = model.scenes.at(std::size_t(sceneIndex)).nodes;
-  } else {
-    for (std::size_t i = 0; i < model.nodes.size(); ++i) roots.push_back(int(i));
-  }
   std::vector<std::pair<int, glm::dmat4>> stack;
-  for (int root : roots) stack.push_back({root, glm::dmat4(1.0)});
-  std::size_t visited = 0;
+  for (int root : sceneRoots(model, reader)) stack.push_back({root, glm::dmat4(1.0)});
   while (!stack.empty()) {
     auto [index, parent] = stack.back();
     stack.pop_back();
-    if (index < 0 || std::size_t(index) >= model.nodes.size())
-      reader.fail("nodes", "node index " + std::to_string(index) + " out of range");
-    if (++visited > 4 * model.nodes.size() + 4) reader.fail("nodes", "the node hierarchy has a cycle");
     const tinygltf::Node& node = model.nodes[std::size_t(index)];
     const std::string where = "nodes[" + std::to_string(index) + "]";
     const glm::dmat4 world = parent * localTransform(node);
     if (node.mesh >= 0) {
       if (std::size_t(node.mesh) >= model.meshes.size()) reader.fail(where, "mesh index out of range");
       const tinygltf::Mesh& mesh = model.meshes[std::size_t(node.mesh)];
+      const std::string meshWhere = "meshes[" + std::to_string(node.mesh) + "]";
+      for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+        const int material = mesh.primitives[p].material;
+        if (material < -1 || material >= defaultMaterialIndex)
+          reader.fail(meshWhere + ".primitives[" + std::to_string(p) + "].material",
+                      "material index " + std::to_string(material) + " out of range (the file has " +
+                          std::to_string(defaultMaterialIndex) + " materials)");
+      }
       Object object;
       object.name = mesh.name.empty() ? where : mesh.name;
-      object.cage = toCage(mesh, world, reader, "meshes[" + std::to_string(node.mesh) + "]");
+      object.cage = toCage(mesh, world, reader, meshWhere);
       object.subdivision = Subdivision::None;
       const int material = mesh.primitives.empty() ? -1 : mesh.primitives.front().material;
-      object.material = material >= 0 && material < defaultMaterialIndex ? material : defaultMaterialIndex;
+      object.material = material >= 0 ? material : defaultMaterialIndex;
       scene.objects.push_back(std::move(object));
     }
     if (node.camera >= 0 && !camera) {
       if (std::size_t(node.camera) >= model.cameras.size()) reader.fail(where, "camera index out of range");
       const tinygltf::Camera& c = model.cameras[std::size_t(node.camera)];
-      if (c.type == "perspective") {
-        Camera view;
-        view.eye = glm::dvec3(world[3]);
-        view.target = view.eye + glm::dvec3(world * glm::dvec4(0, 0, -1, 0));
-        view.up = glm::normalize(glm::dvec3(world * glm::dvec4(0, 1, 0, 0)));
-        view.verticalFovDegrees = glm::degrees(c.perspective.yfov);
-        camera = view;
-      }
+      if (c.type == "perspective") camera = toCamera(c, node.camera, world, reader, where);
     }
     if (auto light = node.extensions.find("KHR_lights_punctual");
         light != node.extensions.end() && light->second.Has("light")) {
       const int lightIndex = light->second.Get("light").GetNumberAsInt();
       if (lightIndex < 0 || std::size_t(lightIndex) >= model.lights.size())
         reader.fail(where, "KHR_lights_punctual light index out of range");
-      scene.lights.push_back(toLight(model.lights[std::size_t(lightIndex)], world, reader, where));
+      scene.lights.push_back(toLight(model.lights[std::size_t(lightIndex)], lightIndex, world, reader, where));
     }
     for (int child : node.children) stack.push_back({child, world});
   }

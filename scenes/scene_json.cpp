@@ -14,6 +14,7 @@
 #include "scenes/input_error.h"
 #include "scenes/obj_cage.h"
 #include "scenes/scene_file.h"
+#include "scenes/value_rules.h"
 
 namespace facet::scene {
 namespace {
@@ -48,7 +49,7 @@ class Field {
     if (!value_.is_number()) fail("expected a number");
     double x = value_.get<double>();
     if (!std::isfinite(x)) fail("must be finite");
-    if (x < lo || x > hi) fail("must be in [" + format(lo) + ", " + format(hi) + "], is " + format(x));
+    if (const std::optional<std::string> rule = rangeRule(x, lo, hi)) fail(*rule);
     return x;
   }
 
@@ -93,13 +94,6 @@ class Field {
 
  private:
   std::string child(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
-  static std::string format(double x) {
-    if (std::isinf(x)) return x < 0 ? "-inf" : "inf";
-    std::string s = std::to_string(x);
-    s.erase(s.find_last_not_of('0') + 1);
-    if (!s.empty() && s.back() == '.') s.pop_back();
-    return s;
-  }
 
   const json& value_;
   std::string path_;
@@ -112,7 +106,7 @@ Camera readCamera(const Field& f) {
   if (f.has("eye")) c.eye = f["eye"].vec3();
   if (f.has("target")) c.target = f["target"].vec3();
   if (f.has("up")) c.up = f["up"].direction();
-  if (f.has("fov")) c.verticalFovDegrees = f["fov"].number(1e-3, 179.0);
+  if (f.has("fov")) c.verticalFovDegrees = f["fov"].number(kMinFovDegrees, kMaxFovDegrees);
   if (glm::length(c.target - c.eye) < 1e-12) f.fail("eye and target must differ");
   if (glm::length(glm::cross(glm::normalize(c.target - c.eye), c.up)) < 1e-9)
     f.fail("up must not be parallel to the view direction");
@@ -128,7 +122,7 @@ Light readLight(const Field& f) {
       {{"directional", LightType::Directional}, {"point", LightType::Point}, {"spot", LightType::Spot}});
   if (f.has("color")) {
     light.color = f["color"].vec3();
-    if (light.color.r < 0 || light.color.g < 0 || light.color.b < 0) f["color"].fail("must not be negative");
+    if (hasNegativeComponent(light.color)) f["color"].fail(kNegativeColorRule);
   }
   const bool positioned = light.type != LightType::Directional;
   const bool aimed = light.type != LightType::Point;
@@ -147,7 +141,7 @@ Light readLight(const Field& f) {
     if (f.has(key) && !allowed) f[key].fail("does not apply to a " + type + " light");
   }
   if (light.type == LightType::Spot) {
-    if (f.has("outer_cone")) light.outerConeDegrees = f["outer_cone"].number(0.0, 90.0);
+    if (f.has("outer_cone")) light.outerConeDegrees = f["outer_cone"].number(0.0, kMaxSpotConeDegrees);
     if (f.has("inner_cone")) light.innerConeDegrees = f["inner_cone"].number(0.0, light.outerConeDegrees);
     if (light.innerConeDegrees > light.outerConeDegrees) f.fail("inner_cone must not exceed outer_cone");
   }
@@ -257,7 +251,7 @@ Environment readEnvironment(const Field& f, const std::filesystem::path& sceneFi
     }
   } else {
     const glm::dvec3 color = f["color"].vec3();
-    if (color.r < 0 || color.g < 0 || color.b < 0) f["color"].fail("must not be negative");
+    if (hasNegativeComponent(color)) f["color"].fail(kNegativeColorRule);
     environment.map = std::make_shared<const EnvironmentMap>(constantEnvironment(color));
   }
   if (f.has("intensity")) environment.intensity = f["intensity"].number(0.0);
