@@ -7,14 +7,18 @@
 #include <glm/geometric.hpp>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <fstream>
+#include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace facet::scene {
@@ -137,6 +141,186 @@ TEST_F(GltfMeshes, PrimitivesWithoutASurfaceAreErrors) {
   EXPECT_THAT([&] { loadScene(ragged); }, fails(HasSubstr("not a multiple of 3")));
   const fs::path outside = write("outside", kFan, {0, 1, 9}, 6);
   EXPECT_THAT([&] { loadScene(outside); }, fails(HasSubstr("index 9 is out of range")));
+}
+
+// One triangle with a material, a camera and a spot light: a valid file whose
+// fields the tests below break one at a time. Its buffer holds the triangle's
+// positions, then the bytes 255, 1, 2, 0 for an index accessor.
+nlohmann::json oneTriangle() {
+  return nlohmann::json::parse(R"({
+    "asset": {"version": "2.0"},
+    "extensionsUsed": ["KHR_lights_punctual"],
+    "extensions": {"KHR_lights_punctual": {"lights": [
+        {"type": "spot", "color": [1, 1, 1], "intensity": 1, "spot": {"innerConeAngle": 0.2, "outerConeAngle": 0.4}}]}},
+    "scene": 0,
+    "scenes": [{"nodes": [0, 1, 2]}],
+    "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0, 0, 5]}, {"extensions": {"KHR_lights_punctual": {"light": 0}}}],
+    "cameras": [{"type": "perspective", "perspective": {"yfov": 0.6, "znear": 0.1}}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+    "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5, 1], "metallicFactor": 0}}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                  {"bufferView": 1, "componentType": 5121, "count": 3, "type": "SCALAR"}],
+    "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 4}],
+    "buffers": [{"uri": "triangle.bin", "byteLength": 40}]
+  })");
+}
+
+class GltfFiles : public facet::testing::TempDirTest {
+ protected:
+  void SetUp() override {
+    TempDirTest::SetUp();
+    const std::array<float, 9> positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    const std::array<std::uint8_t, 4> indices = {255, 1, 2, 0};
+    std::ofstream bin(dir_ / "triangle.bin", std::ios::binary);
+    bin.write(reinterpret_cast<const char*>(positions.data()), sizeof(positions));
+    bin.write(reinterpret_cast<const char*>(indices.data()), sizeof(indices));
+  }
+
+  fs::path write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name, std::ios::binary) << text;
+    return dir_ / name;
+  }
+
+  // The message `document` is rejected with, or "(no error)".
+  std::string errorOf(const std::string& name, const std::string& text) {
+    try {
+      loadScene(write(name, text));
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "(no error)";
+  }
+  std::string errorOf(const nlohmann::json& document) { return errorOf("scene.gltf", document.dump()); }
+};
+
+std::string nested(int depth) { return std::string(std::size_t(depth), '[') + std::string(std::size_t(depth), ']'); }
+
+// A .glb file of one JSON chunk and no binary chunk (glTF 2.0, 4.4).
+std::string glb(std::string json) {
+  json.resize((json.size() + 3) / 4 * 4, ' ');
+  auto word = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  return "glTF" + word(2) + word(std::uint32_t(20 + json.size())) + word(std::uint32_t(json.size())) + "JSON" + json;
+}
+
+TEST_F(GltfFiles, TheTriangleLoads) {
+  const Scene scene = loadScene(write("scene.gltf", oneTriangle().dump()));
+  ASSERT_EQ(scene.objects.size(), 1u);
+  EXPECT_EQ(scene.materials[std::size_t(scene.objects[0].material)].diffuse, glm::dvec3(0.5));
+  EXPECT_NEAR(scene.camera.verticalFovDegrees, 0.6 * 180 / std::numbers::pi, 1e-9);
+  ASSERT_EQ(scene.lights.size(), 1u);
+  EXPECT_EQ(scene.lights[0].type, LightType::Spot);
+  EXPECT_EQ(scene.lights[0].direction, glm::dvec3(0, 0, -1));
+}
+
+TEST_F(GltfFiles, NestingDeeperThanTheLimitIsRejectedBeforeParsing) {
+  const std::string rule = "JSON nesting: arrays and objects nest deeper than 512 levels";
+  // tinygltf copies "extras" into its own tree by recursion.
+  const std::string deep = R"({"asset": {"version": "2.0"}, "extras": )" + nested(20000) + "}";
+  EXPECT_THAT(errorOf("deep.gltf", deep), AllOf(HasSubstr("deep.gltf"), HasSubstr(rule)));
+  EXPECT_THAT(errorOf("deep.glb", glb(deep)), AllOf(HasSubstr("deep.glb"), HasSubstr(rule)));
+  EXPECT_THAT(errorOf("deep.gltf", nested(20000)), HasSubstr(rule));
+  EXPECT_THAT(errorOf("deep.gltf", "{\"a\":" + nested(512) + "}"), HasSubstr(rule));
+  // At the limit, and with brackets inside strings, which do not nest.
+  nlohmann::json document = oneTriangle();
+  document["extras"] = nlohmann::json::parse(nested(511));
+  document["meshes"][0]["name"] = std::string(20000, '[');
+  EXPECT_EQ(errorOf(document), "(no error)");
+  EXPECT_EQ(errorOf("scene.glb", glb(document.dump())), "(no error)");
+}
+
+TEST_F(GltfFiles, LightsAreHeldToTheRulesOfJsonScenes) {
+  nlohmann::json negative = oneTriangle();
+  negative["extensions"]["KHR_lights_punctual"]["lights"][0]["color"] = {1, -0.5, 1};
+  EXPECT_THAT(errorOf(negative), HasSubstr("scene.gltf: extensions.KHR_lights_punctual.lights[0].color: must not be "
+                                           "negative"));
+  for (auto [inner, outer] : {std::pair{0.5, 0.4}, std::pair{0.4, 0.4}, std::pair{-0.1, 0.4}, std::pair{0.2, 1.6}}) {
+    nlohmann::json cones = oneTriangle();
+    cones["extensions"]["KHR_lights_punctual"]["lights"][0]["spot"] = {{"innerConeAngle", inner},
+                                                                      {"outerConeAngle", outer}};
+    EXPECT_THAT(errorOf(cones), HasSubstr("lights[0].spot: must have 0 <= innerConeAngle < outerConeAngle <= pi/2"));
+  }
+  // A singular matrix maps the light's -z to zero: it has no direction.
+  nlohmann::json flat = oneTriangle();
+  flat["nodes"][2]["scale"] = {1, 1, 0};
+  EXPECT_THAT(errorOf(flat), HasSubstr("nodes[2]: the node's matrix is singular, so light 0 has no direction"));
+}
+
+TEST_F(GltfFiles, MaterialFactorsMustLieInZeroToOne) {
+  nlohmann::json bright = oneTriangle();
+  bright["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"] = {1.2, 0.5, 0.5, 1};
+  EXPECT_THAT(errorOf(bright), HasSubstr("materials[0].pbrMetallicRoughness.baseColorFactor: every component must be "
+                                         "in [0, 1], is 1.2"));
+  nlohmann::json metal = oneTriangle();
+  metal["materials"][0]["pbrMetallicRoughness"]["metallicFactor"] = 2;
+  EXPECT_THAT(errorOf(metal), HasSubstr("pbrMetallicRoughness.metallicFactor: must be in [0, 1], is 2"));
+}
+
+TEST_F(GltfFiles, CamerasAreHeldToTheRulesOfJsonScenes) {
+  for (double yfov : {0.0, -0.5, 3.13}) {
+    nlohmann::json camera = oneTriangle();
+    camera["cameras"][0]["perspective"]["yfov"] = yfov;
+    EXPECT_THAT(errorOf(camera), HasSubstr("cameras[0].perspective.yfov: in degrees, must be in [0.001, 179], is "));
+  }
+  nlohmann::json zero = oneTriangle();
+  zero["nodes"][1]["matrix"] = std::vector<double>(16, 0.0);
+  EXPECT_THAT(errorOf(zero), AllOf(HasSubstr("nodes[1]: the node's matrix is singular or not finite, so camera 0 "
+                                             "has no view direction and up vector"),
+                                   ::testing::Not(HasSubstr("--eye"))));
+}
+
+TEST_F(GltfFiles, AccessorsOfTheWrongFormatAreRejected) {
+  nlohmann::json bytes = oneTriangle();
+  bytes["accessors"][0]["componentType"] = 5120;
+  EXPECT_THAT(errorOf(bytes), HasSubstr("meshes[0].primitives[0].POSITION: accessors[0] must be FLOAT VEC3, is "
+                                        "componentType 5120 with 3 components"));
+  // Signed indices could be negative: glTF allows only unsigned ones.
+  nlohmann::json signedIndices = oneTriangle();
+  signedIndices["meshes"][0]["primitives"][0]["indices"] = 1;
+  signedIndices["accessors"][1]["componentType"] = 5120;
+  EXPECT_THAT(errorOf(signedIndices), HasSubstr("accessors[1] must be SCALAR of UNSIGNED_BYTE"));
+  signedIndices["accessors"][1]["componentType"] = 5121;
+  EXPECT_THAT(errorOf(signedIndices), HasSubstr("meshes[0].primitives[0]: index 255 is out of range"));
+}
+
+TEST_F(GltfFiles, AnAccessorWhoseEndWrapsAroundIsRejected) {
+  // 12-byte elements: (count - 1) * 12 is 3 * 2^64, which wraps to 0.
+  nlohmann::json huge = oneTriangle();
+  huge["accessors"][0]["count"] = (std::uint64_t(1) << 62) + 1;
+  EXPECT_THAT(errorOf(huge), HasSubstr("POSITION: accessors[0] (count 4611686018427387905, byteOffset 0, stride 12) "
+                                       "reads past the end of its buffer"));
+  nlohmann::json offset = oneTriangle();
+  offset["accessors"][0]["byteOffset"] = std::numeric_limits<std::uint64_t>::max() - 3;
+  EXPECT_THAT(errorOf(offset), HasSubstr("reads past the end of its buffer"));
+}
+
+TEST_F(GltfFiles, IndicesOutOfRangeAreNamed) {
+  nlohmann::json material = oneTriangle();
+  material["meshes"][0]["primitives"][0]["material"] = 3;
+  EXPECT_THAT(errorOf(material), HasSubstr("meshes[0].primitives[0].material: material index 3 out of range (the "
+                                           "file has 1 materials)"));
+  nlohmann::json scene = oneTriangle();
+  scene["scene"] = 4;
+  EXPECT_THAT(errorOf(scene), HasSubstr("scene.gltf: scene: scene index 4 out of range (the file has 1 scenes)"));
+}
+
+TEST_F(GltfFiles, TheNodeHierarchyMustBeAForest) {
+  nlohmann::json twice = oneTriangle();
+  twice["scenes"][0]["nodes"] = {0, 1, 2, 0};
+  EXPECT_THAT(errorOf(twice), HasSubstr("scenes[0].nodes: node 0 is listed twice"));
+  nlohmann::json twoParents = oneTriangle();
+  twoParents["nodes"][1]["children"] = {2};
+  twoParents["nodes"][0]["children"] = {2};
+  twoParents["scenes"][0]["nodes"] = {0, 1};
+  EXPECT_THAT(errorOf(twoParents), HasSubstr("nodes[1].children: node 2 is a child of node 0 too"));
+  nlohmann::json cycle = oneTriangle();
+  cycle["nodes"][0]["children"] = {0};
+  EXPECT_THAT(errorOf(cycle), HasSubstr("scenes[0].nodes: node 0 is a root and a child of node 0"));
+  // Without scenes, the roots are the nodes without a parent: a child is not drawn twice.
+  nlohmann::json noScenes = oneTriangle();
+  noScenes.erase("scenes");
+  noScenes.erase("scene");
+  noScenes["nodes"][1]["children"] = {0};
+  EXPECT_EQ(loadScene(write("noscenes.gltf", noScenes.dump())).objects.size(), 1u);
 }
 
 TEST(GltfNormals, AreKeptPerFaceCorner) {
