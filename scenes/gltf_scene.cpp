@@ -203,7 +203,7 @@ Light toLight(const tinygltf::Light& gltf, int index, const glm::dmat4& world, c
   return light;
 }
 
-// The camera of `node` (a perspective one), placed by its world matrix.
+// Perspective camera `index`, placed by node `where` and its world matrix.
 Camera toCamera(const tinygltf::Camera& gltf, int index, const glm::dmat4& world, const GltfReader& reader,
                 const std::string& where) {
   const std::string field = "cameras[" + std::to_string(index) + "].perspective.yfov";
