@@ -70,7 +70,8 @@ void runParity(const ParityOptions& o) {
   if (!o.size.empty()) applyImageSize(o.size, scene);
   if (!o.method.empty()) applyMethod(o.method, scene);
   if (!o.subdivision.empty()) scene::overrideSubdivision(scene, o.subdivision, "--subdivision");
-  checkImagesFitInMemory(scene, 2, o.size.empty() ? o.scene + ": image size" : "--size");
+  // Both backends' images, and the heat map's when one is asked for.
+  checkImagesFitInMemory(scene, o.heatmap.empty() ? 2 : 3, o.size.empty() ? o.scene + ": image size" : "--size");
   const RenderReport cpu = render(scene, Backend::Cpu);
   const RenderReport gpu = render(scene, Backend::Gpu, {}, o.adapter);
   const ParityReport report = analysis::compareImages(cpu.image, gpu.image);

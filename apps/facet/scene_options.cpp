@@ -86,8 +86,8 @@ namespace {
 
 // Every plane of an Image; the GPU backend works in bands of bounded size
 // and the CPU backend writes straight into the image, so the image dominates.
-constexpr std::uint64_t kImageBytesPerPixel = sizeof(glm::vec4) + sizeof(float) + 3 * sizeof(glm::vec3) +
-                                              2 * sizeof(std::uint32_t) + sizeof(glm::vec2);
+constexpr std::uint64_t kImageBytesPerPixel =
+    sizeof(glm::vec4) + sizeof(float) + 3 * sizeof(glm::vec3) + 2 * sizeof(std::uint32_t) + sizeof(glm::vec2);
 // What the PNG preview or the parity heat map adds per pixel, and a bound on
 // the GPU backend's band buffers (kBandBytes in engine/gpu_backend/gpu_renderer.cpp).
 constexpr std::uint64_t kWorkingBytesPerPixel = 8;
@@ -139,8 +139,8 @@ void checkImagesFitInMemory(const scene::Scene& scene, int images, const std::st
   if (needed > limit.bytes)
     throw std::invalid_argument(sizeSource + " " + std::to_string(scene.render.width) + "x" +
                                 std::to_string(scene.render.height) + ": the render needs about " + gigabytes(needed) +
-                                " of memory and the limit is " + gigabytes(limit.bytes) + " (" +
-                                limit.source + "); give a smaller --size");
+                                " of memory and the limit is " + gigabytes(limit.bytes) + " (" + limit.source +
+                                "); give a smaller --size");
 }
 
 std::string describeEnvironment(const scene::Environment& e) {

@@ -55,9 +55,7 @@ std::vector<Channel> channels(Image& image) {
 }  // namespace
 
 void checkOutputPath(const std::string& flag, const std::filesystem::path& path) {
-  const auto reject = [&](const std::string& rule) {
-    throw OutputError(flag + " '" + path.string() + "': " + rule);
-  };
+  const auto reject = [&](const std::string& rule) { throw OutputError(flag + " '" + path.string() + "': " + rule); };
   if (path.empty()) reject("the output path is empty");
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) reject("is a folder; name a file in it");
@@ -82,9 +80,12 @@ void writeAllOrNothing(const std::vector<OutputFile>& files) {
   } catch (const OutputError&) {
     removeTemporaries(0);
     throw;
-  } catch (const std::exception& e) {
+  } catch (const std::runtime_error& e) {  // a writer's own failure, as OutputError
     removeTemporaries(0);
     throw OutputError(e.what());
+  } catch (...) {
+    removeTemporaries(0);
+    throw;
   }
   // rename(2) within one folder does not fail once the temporary is written
   // there, short of the folder itself changing under us.
@@ -152,7 +153,8 @@ OutputFile pngFile(const std::filesystem::path& path, const Image& image, float 
             std::vector<std::uint8_t> pixels(image.pixelCount() * 4);
             for (std::size_t i = 0; i < image.pixelCount(); ++i) {
               const glm::vec4& p = image.beauty[i];
-              for (int c = 0; c < 3; ++c) pixels[4 * i + c] = std::uint8_t(std::lround(previewToneCurve(p[c], scale) * 255.0));
+              for (int c = 0; c < 3; ++c)
+                pixels[4 * i + c] = std::uint8_t(std::lround(previewToneCurve(p[c], scale) * 255.0));
               pixels[4 * i + 3] = std::uint8_t(std::lround(std::clamp(p.a, 0.0f, 1.0f) * 255.0f));
             }
             if (!stbi_write_png(temporary.c_str(), image.width, image.height, 4, pixels.data(), image.width * 4))

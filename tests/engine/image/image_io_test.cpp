@@ -103,8 +103,9 @@ TEST_F(ImageIo, AnOutputSetIsWrittenWhole) {
 TEST_F(ImageIo, AFailedWriteInASetLeavesEveryExistingFileAsItWas) {
   std::ofstream(dir_ / "out.exr") << "old";
   Image image(4, 4);
-  EXPECT_THROW(writeAllOrNothing({exrFile(dir_ / "out.exr", image), pngFile(dir_ / "no such folder" / "out.png", image)}),
-               OutputError);
+  EXPECT_THROW(
+      writeAllOrNothing({exrFile(dir_ / "out.exr", image), pngFile(dir_ / "no such folder" / "out.png", image)}),
+      OutputError);
   const OutputFile failing{dir_ / "out.txt", [](const fs::path&) { throw std::runtime_error("disk full"); }};
   try {
     writeAllOrNothing({exrFile(dir_ / "out.exr", image), failing});
@@ -127,9 +128,9 @@ TEST_F(ImageIo, OutputPathsAreCheckedBeforeAnythingIsWritten) {
   };
   EXPECT_EQ(errorOf(""), "-o '': the output path is empty");
   EXPECT_EQ(errorOf(dir_), "-o '" + dir_.string() + "': is a folder; name a file in it");
-  EXPECT_EQ(errorOf(dir_ / "missing" / "out.exr"),
-            "-o '" + (dir_ / "missing" / "out.exr").string() + "': the folder '" + (dir_ / "missing").string() +
-                "' does not exist");
+  EXPECT_EQ(errorOf(dir_ / "missing" / "out.exr"), "-o '" + (dir_ / "missing" / "out.exr").string() +
+                                                       "': the folder '" + (dir_ / "missing").string() +
+                                                       "' does not exist");
   EXPECT_EQ(errorOf(dir_ / "out.exr"), "accepted");
   EXPECT_TRUE(files().empty());
 }
