@@ -1,15 +1,16 @@
 // facet parity: render a scene on both backends and compare them AOV by AOV
-// (analysis/parity.h); exits with 1 above tolerance.
+// (analysis/parity.h); exits with kCheckFailed above tolerance.
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <memory>
-#include <stdexcept>
 
 #include "analysis/parity.h"
 #include "commands.h"
+#include "engine/image/image_io.h"
 #include "engine/renderer.h"
+#include "exit_codes.h"
 #include "scene_options.h"
 #include "scenes/scene_file.h"
 
@@ -64,10 +65,13 @@ nlohmann::json toJson(const ParityReport& report, const RenderReport& cpu, const
 }
 
 void runParity(const ParityOptions& o) {
+  if (!o.heatmap.empty()) checkOutputPath("--heatmap", o.heatmap);
   scene::Scene scene = scene::loadScene(o.scene);
   if (!o.size.empty()) applyImageSize(o.size, scene);
   if (!o.method.empty()) applyMethod(o.method, scene);
   if (!o.subdivision.empty()) scene::overrideSubdivision(scene, o.subdivision, "--subdivision");
+  // Both backends' images, and the heat map's when one is asked for.
+  checkImagesFitInMemory(scene, o.heatmap.empty() ? 2 : 3, o.size.empty() ? o.scene + ": image size" : "--size");
   const RenderReport cpu = render(scene, Backend::Cpu);
   const RenderReport gpu = render(scene, Backend::Gpu, {}, o.adapter);
   const ParityReport report = analysis::compareImages(cpu.image, gpu.image);
@@ -81,7 +85,7 @@ void runParity(const ParityOptions& o) {
     std::printf("%s", analysis::describe(report).c_str());
     if (!o.heatmap.empty()) std::printf("wrote %s\n", o.heatmap.c_str());
   }
-  if (!report.pass) throw std::runtime_error("parity: " + o.scene + " is out of tolerance");
+  if (!report.pass) throw CheckFailed("parity: " + o.scene + " is out of tolerance");
 }
 
 }  // namespace

@@ -5,7 +5,9 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
+#include <vector>
 
 #include "commands.h"
 #include "engine/image/image_io.h"
@@ -26,9 +28,21 @@ struct RenderOptions {
   std::string adapter;
 };
 
+// Every output is checked before the render and written as a set, so a
+// failure leaves no new file and every old one as it was.
+void checkOutputs(const RenderOptions& o) {
+  checkOutputPath("-o", o.exr);
+  if (o.png.empty()) return;
+  checkOutputPath("--png", o.png);
+  if (std::filesystem::absolute(o.png).lexically_normal() == std::filesystem::absolute(o.exr).lexically_normal())
+    throw OutputError("--png '" + o.png + "': names the same file as -o");
+}
+
 void runRender(const RenderOptions& o) {
+  checkOutputs(o);
   scene::Scene scene = scene::loadScene(o.scene);
   applySceneOverrides(o.scene_overrides, scene);
+  checkImagesFitInMemory(scene, 1, o.scene_overrides.size.empty() ? o.scene + ": image size" : "--size");
   if (scene.environment && scene.environment->map->clampedTexels > 0)
     std::fprintf(stderr, "warning: %s: %zu texels were negative, NaN or Inf and are set to 0\n",
                  scene.environment->map->source.c_str(), scene.environment->map->clampedTexels);
@@ -42,8 +56,9 @@ void runRender(const RenderOptions& o) {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (interactive) std::fprintf(stderr, "\r              \r");
 
-  writeExr(o.exr, report.image);
-  if (!o.png.empty()) writePng(o.png, report.image, o.exposure);
+  std::vector<OutputFile> outputs{exrFile(o.exr, report.image)};
+  if (!o.png.empty()) outputs.push_back(pngFile(o.png, report.image, o.exposure));
+  writeAllOrNothing(outputs);
 
   std::printf("%s\n", report.geometrySummary.c_str());
   if (scene.environment) std::printf("%s\n", describeEnvironment(*scene.environment).c_str());

@@ -39,6 +39,11 @@ void applySceneOverrides(const SceneOverrides& overrides, scene::Scene& scene);
 void applyImageSize(const std::string& size, scene::Scene& scene);
 void applyMethod(const std::string& method, scene::Scene& scene);
 
+// Throws std::invalid_argument unless `images` images of the scene's size fit
+// in memory (docs/reliability.md#limits); `sizeSource` names where the size
+// came from.
+void checkImagesFitInMemory(const scene::Scene& scene, int images, const std::string& sizeSource);
+
 // One line for people: the map, its size and the lighting method.
 std::string describeEnvironment(const scene::Environment& environment);
 

@@ -6,6 +6,7 @@
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <stb_image_write.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -53,40 +54,77 @@ std::vector<Channel> channels(Image& image) {
 
 }  // namespace
 
-void writeAtomically(const std::filesystem::path& path,
-                     const std::function<void(const std::filesystem::path&)>& write) {
+void checkOutputPath(const std::string& flag, const std::filesystem::path& path) {
+  const auto reject = [&](const std::string& rule) { throw OutputError(flag + " '" + path.string() + "': " + rule); };
+  if (path.empty()) reject("the output path is empty");
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) reject("is a folder; name a file in it");
+  const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  if (!std::filesystem::is_directory(folder, error)) reject("the folder '" + folder.string() + "' does not exist");
+  if (::access(folder.c_str(), W_OK) != 0) reject("the folder '" + folder.string() + "' is not writable");
+}
+
+void writeAllOrNothing(const std::vector<OutputFile>& files) {
   std::random_device entropy;
-  std::filesystem::path temporary = path;
-  temporary += ".tmp-" + std::to_string(entropy());
-  try {
-    write(temporary);
-    std::filesystem::rename(temporary, path);
-  } catch (...) {
+  std::vector<std::filesystem::path> temporaries;
+  const auto removeTemporaries = [&](std::size_t first) {
     std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
+    for (std::size_t i = first; i < temporaries.size(); ++i) std::filesystem::remove(temporaries[i], ignored);
+  };
+  try {
+    for (const OutputFile& file : files) {
+      temporaries.push_back(file.path);
+      temporaries.back() += ".tmp-" + std::to_string(entropy());
+      file.write(temporaries.back());
+    }
+  } catch (const OutputError&) {
+    removeTemporaries(0);
     throw;
+  } catch (const std::runtime_error& e) {  // a writer's own failure, as OutputError
+    removeTemporaries(0);
+    throw OutputError(e.what());
+  } catch (...) {
+    removeTemporaries(0);
+    throw;
+  }
+  // rename(2) within one folder does not fail once the temporary is written
+  // there, short of the folder itself changing under us.
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    std::error_code error;
+    std::filesystem::rename(temporaries[i], files[i].path, error);
+    if (error) {
+      removeTemporaries(i);
+      throw OutputError(files[i].path.string() + ": cannot move the written file into place: " + error.message());
+    }
   }
 }
 
-void writeExr(const std::filesystem::path& path, const Image& image) {
-  writeAtomically(path, [&](const std::filesystem::path& temporary) {
-    Imf::Header header(image.width, image.height);
-    header.compression() = Imf::ZIP_COMPRESSION;
-    Imf::FrameBuffer frame;
-    // The slices only read through these pointers; the table is shared with readExr.
-    for (const Channel& c : channels(const_cast<Image&>(image))) {
-      header.channels().insert(c.name, Imf::Channel(c.type));
-      frame.insert(c.name, Imf::Slice(c.type, c.base, c.stride, c.stride * std::size_t(image.width)));
-    }
-    try {
-      Imf::OutputFile file(temporary.c_str(), header);
-      file.setFrameBuffer(frame);
-      file.writePixels(image.height);
-    } catch (const std::exception& e) {
-      throw std::runtime_error(path.string() + ": cannot write EXR: " + e.what());
-    }
-  });
+void writeAtomically(const std::filesystem::path& path,
+                     const std::function<void(const std::filesystem::path&)>& write) {
+  writeAllOrNothing({{path, write}});
 }
+
+OutputFile exrFile(const std::filesystem::path& path, const Image& image) {
+  return {path, [path, &image](const std::filesystem::path& temporary) {
+            Imf::Header header(image.width, image.height);
+            header.compression() = Imf::ZIP_COMPRESSION;
+            Imf::FrameBuffer frame;
+            // The slices only read through these pointers; the table is shared with readExr.
+            for (const Channel& c : channels(const_cast<Image&>(image))) {
+              header.channels().insert(c.name, Imf::Channel(c.type));
+              frame.insert(c.name, Imf::Slice(c.type, c.base, c.stride, c.stride * std::size_t(image.width)));
+            }
+            try {
+              Imf::OutputFile file(temporary.c_str(), header);
+              file.setFrameBuffer(frame);
+              file.writePixels(image.height);
+            } catch (const std::exception& e) {
+              throw OutputError(path.string() + ": cannot write EXR: " + e.what());
+            }
+          }};
+}
+
+void writeExr(const std::filesystem::path& path, const Image& image) { writeAllOrNothing({exrFile(path, image)}); }
 
 Image readExr(const std::filesystem::path& path) {
   try {
@@ -109,20 +147,23 @@ Image readExr(const std::filesystem::path& path) {
   }
 }
 
+OutputFile pngFile(const std::filesystem::path& path, const Image& image, float exposure) {
+  return {path, [path, &image, exposure](const std::filesystem::path& temporary) {
+            const float scale = std::exp2(exposure);
+            std::vector<std::uint8_t> pixels(image.pixelCount() * 4);
+            for (std::size_t i = 0; i < image.pixelCount(); ++i) {
+              const glm::vec4& p = image.beauty[i];
+              for (int c = 0; c < 3; ++c)
+                pixels[4 * i + c] = std::uint8_t(std::lround(previewToneCurve(p[c], scale) * 255.0));
+              pixels[4 * i + 3] = std::uint8_t(std::lround(std::clamp(p.a, 0.0f, 1.0f) * 255.0f));
+            }
+            if (!stbi_write_png(temporary.c_str(), image.width, image.height, 4, pixels.data(), image.width * 4))
+              throw OutputError(path.string() + ": cannot write PNG (is the folder writable?)");
+          }};
+}
+
 void writePng(const std::filesystem::path& path, const Image& image, float exposure) {
-  const float scale = std::exp2(exposure);
-  std::vector<std::uint8_t> pixels(image.pixelCount() * 4);
-  for (std::size_t i = 0; i < image.pixelCount(); ++i) {
-    const glm::vec4& p = image.beauty[i];
-    for (int c = 0; c < 3; ++c) {
-      pixels[4 * i + c] = std::uint8_t(std::lround(previewToneCurve(p[c], scale) * 255.0));
-    }
-    pixels[4 * i + 3] = std::uint8_t(std::lround(std::clamp(p.a, 0.0f, 1.0f) * 255.0f));
-  }
-  writeAtomically(path, [&](const std::filesystem::path& temporary) {
-    if (!stbi_write_png(temporary.c_str(), image.width, image.height, 4, pixels.data(), image.width * 4))
-      throw std::runtime_error(path.string() + ": cannot write PNG (is the folder writable?)");
-  });
+  writeAllOrNothing({pngFile(path, image, exposure)});
 }
 
 }  // namespace facet

@@ -1,19 +1,25 @@
 # cmake -P script: runs one facet command that must fail, and checks the
-# contract for bad input: non-zero exit, an error naming what is wrong
-# (EXPECT, a regular expression), and no output file left behind (OUTPUT).
-#   -DCOMMAND="facet;render;...;-o;out.exr" -DEXPECT=regex -DOUTPUT=path [-DENV_SETTING=NAME=value]
+# contract for bad input: the exit code (EXIT_CODE), an error naming what is
+# wrong (EXPECT, a regular expression), and no output file left behind
+# (OUTPUT). With KEEP in the environment, OUTPUT exists beforehand and must
+# be left as it was.
+#   -DCOMMAND="facet;render;...;-o;out.exr" -DEXIT_CODE=n -DEXPECT=regex -DOUTPUT=path [-DENV_SETTING=NAME=value]
 if(ENV_SETTING)
   string(REPLACE "=" ";" pair "${ENV_SETTING}")
   list(GET pair 0 name)
   list(GET pair 1 value)
   set(ENV{${name}} "${value}")
 endif()
+set(kept_text "an earlier render")
 if(OUTPUT)
   file(REMOVE "${OUTPUT}")
+  if(DEFINED ENV{KEEP})
+    file(WRITE "${OUTPUT}" "${kept_text}")
+  endif()
 endif()
 execute_process(COMMAND ${COMMAND} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(rc EQUAL 0)
-  message(FATAL_ERROR "expected a failure, the command succeeded:\n${out}${err}")
+if(NOT rc EQUAL EXIT_CODE)
+  message(FATAL_ERROR "expected exit code ${EXIT_CODE}, got ${rc}:\n${out}${err}")
 endif()
 if(NOT "${err}" MATCHES "${EXPECT}")
   message(FATAL_ERROR "the error does not match '${EXPECT}':\n${err}")
@@ -22,6 +28,13 @@ if(OUTPUT)
   get_filename_component(folder "${OUTPUT}" DIRECTORY)
   get_filename_component(name "${OUTPUT}" NAME)
   file(GLOB leftovers "${folder}/${name}*")
+  if(DEFINED ENV{KEEP})
+    file(READ "${OUTPUT}" text)
+    if(NOT text STREQUAL kept_text)
+      message(FATAL_ERROR "the existing ${OUTPUT} was replaced")
+    endif()
+    list(REMOVE_ITEM leftovers "${OUTPUT}")
+  endif()
   if(leftovers)
     message(FATAL_ERROR "output left behind: ${leftovers}")
   endif()

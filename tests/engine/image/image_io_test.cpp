@@ -1,10 +1,15 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <fstream>
-#include <vector>
+#include <iterator>
 #include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "engine/image/image_io.h"
 #include "tests/support/temp_dir.h"
@@ -81,6 +86,61 @@ TEST_F(ImageIo, FailedWritesNameTheFileAndLeaveNothing) {
   }
   EXPECT_THROW(writePng(dir_ / "no such folder" / "out.png", image), std::exception);
   EXPECT_TRUE(files().empty());
+}
+
+std::string contents(const fs::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST_F(ImageIo, AnOutputSetIsWrittenWhole) {
+  Image image = randomImage(5, 3);
+  writeAllOrNothing({exrFile(dir_ / "out.exr", image), pngFile(dir_ / "out.png", image)});
+  EXPECT_EQ(readExr(dir_ / "out.exr").beauty, image.beauty);
+  EXPECT_EQ(files().size(), 2u) << "no temporary file may remain";
+}
+
+TEST_F(ImageIo, AFailedWriteInASetLeavesEveryExistingFileAsItWas) {
+  std::ofstream(dir_ / "out.exr") << "old";
+  Image image(4, 4);
+  EXPECT_THROW(
+      writeAllOrNothing({exrFile(dir_ / "out.exr", image), pngFile(dir_ / "no such folder" / "out.png", image)}),
+      OutputError);
+  const OutputFile failing{dir_ / "out.txt", [](const fs::path&) { throw std::runtime_error("disk full"); }};
+  try {
+    writeAllOrNothing({exrFile(dir_ / "out.exr", image), failing});
+    FAIL() << "expected an error";
+  } catch (const OutputError& e) {
+    EXPECT_STREQ(e.what(), "disk full");
+  }
+  EXPECT_EQ(contents(dir_ / "out.exr"), "old");
+  EXPECT_EQ(files().size(), 1u) << "no temporary file may remain";
+}
+
+TEST_F(ImageIo, OutputPathsAreCheckedBeforeAnythingIsWritten) {
+  const auto errorOf = [](const fs::path& path) {
+    try {
+      checkOutputPath("-o", path);
+    } catch (const OutputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(errorOf(""), "-o '': the output path is empty");
+  EXPECT_EQ(errorOf(dir_), "-o '" + dir_.string() + "': is a folder; name a file in it");
+  EXPECT_EQ(errorOf(dir_ / "missing" / "out.exr"), "-o '" + (dir_ / "missing" / "out.exr").string() +
+                                                       "': the folder '" + (dir_ / "missing").string() +
+                                                       "' does not exist");
+  EXPECT_EQ(errorOf(dir_ / "out.exr"), "accepted");
+  EXPECT_TRUE(files().empty());
+}
+
+TEST_F(ImageIo, AnOutputInAReadOnlyFolderIsRejected) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root writes into read-only folders";
+  fs::create_directory(dir_ / "locked");
+  fs::permissions(dir_ / "locked", fs::perms::owner_read | fs::perms::owner_exec);
+  EXPECT_THROW(checkOutputPath("-o", dir_ / "locked" / "out.exr"), OutputError);
+  fs::permissions(dir_ / "locked", fs::perms::owner_all);
 }
 
 TEST_F(ImageIo, ReadingAFileThatIsNotExrNamesIt) {
