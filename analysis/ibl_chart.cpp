@@ -104,7 +104,7 @@ void writeChart(const fs::path& directory, const std::vector<std::string>& setup
 
 }  // namespace
 
-void writeIblChart(const IblChartSettings& settings) {
+void writeIblChart(Renderer& renderer, const IblChartSettings& settings) {
   if (settings.sampleCounts.empty() || settings.alphas.empty() || settings.environments.empty())
     throw std::invalid_argument("ibl-chart: needs sample counts, alphas and environments");
   const int referenceSamples = kIblReferenceFactor * settings.sampleCounts.back();
@@ -132,7 +132,7 @@ void writeIblChart(const IblChartSettings& settings) {
       auto renderWith = [&](scene::IblMethod method, int samples, Backend on) {
         scene.environment->method = method;
         scene.environment->samples = samples;
-        return render(scene, on, {}, settings.adapter);
+        return renderer.render(scene, on);
       };
       // Its own random numbers: sharing the estimates' would under-report their error.
       scene.environment->seed = 1;

@@ -20,13 +20,12 @@ struct IblChartSettings {
   std::vector<int> sampleCounts;                    // N of the sampled method, ascending
   int repeats = 3;                                  // timed runs per point; the median is charted
   Backend backend = Backend::Gpu;
-  std::string adapter;
 };
 
 // The reference is sampled with this many times the largest N, so that its
 // own noise is half the largest N's and the curve's tail stays meaningful.
 constexpr int kIblReferenceFactor = 4;
 
-void writeIblChart(const IblChartSettings& settings);
+void writeIblChart(Renderer& renderer, const IblChartSettings& settings);
 
 }  // namespace facet::analysis

@@ -174,9 +174,9 @@ bool isEmbree(const Row& r) {
 
 // ---------------------------------------------------------------- facet
 
-Row runFacet(const NamedCage& cage, const Scene& scene, facet::Backend backend, const std::string& adapter,
+Row runFacet(facet::Renderer& renderer, const NamedCage& cage, const Scene& scene, facet::Backend backend,
              std::vector<float>* depthOut) {
-  const RenderReport report = facet::render(scene, backend, {}, adapter);
+  const RenderReport report = renderer.render(scene, backend);
   Row row;
   row.cage = cage.name;
   row.patches = report.patches;
@@ -264,6 +264,7 @@ int main(int argc, char** argv) {
   }
   try {
     const std::filesystem::path root = FACET_SOURCE_DIR;
+    facet::Renderer renderer(adapter);
     std::vector<NamedCage> cages;
     cages.push_back({"cube", facet::scene::loadObjCage(root / "scenes/cages/cube.obj")});
     if (!quick) {
@@ -297,7 +298,7 @@ int main(int argc, char** argv) {
       warm.render.width = warm.render.height = 32;
       for (IntersectionMethod m : {IntersectionMethod::Exact, IntersectionMethod::Tessellated}) {
         warm.render.method = m;
-        (void)facet::render(warm, facet::Backend::Gpu, {}, adapter);
+        (void)renderer.render(warm, facet::Backend::Gpu);
       }
     }
 
@@ -323,20 +324,20 @@ int main(int argc, char** argv) {
           skipped.push_back("CPU exact skipped on " + cage.name + " at " + std::to_string(size) +
                             "² (too slow for the time budget); no depth errors there");
         } else {
-          Row row = runFacet(cage, scene, facet::Backend::Cpu, adapter, &referenceDepth);
+          Row row = runFacet(renderer, cage, scene, facet::Backend::Cpu, &referenceDepth);
           row.error = compareDepth(referenceDepth, referenceDepth);
           rows.push_back(row);
         }
         std::vector<float> depth;
-        Row gpuExact = runFacet(cage, scene, facet::Backend::Gpu, adapter, &depth);
+        Row gpuExact = runFacet(renderer, cage, scene, facet::Backend::Gpu, &depth);
         gpuExact.error = compareDepth(depth, referenceDepth);
         rows.push_back(gpuExact);
 
         scene.render.method = IntersectionMethod::Tessellated;
-        Row cpuTess = runFacet(cage, scene, facet::Backend::Cpu, adapter, &depth);
+        Row cpuTess = runFacet(renderer, cage, scene, facet::Backend::Cpu, &depth);
         cpuTess.error = compareDepth(depth, referenceDepth);
         rows.push_back(cpuTess);
-        Row gpuTess = runFacet(cage, scene, facet::Backend::Gpu, adapter, &depth);
+        Row gpuTess = runFacet(renderer, cage, scene, facet::Backend::Gpu, &depth);
         gpuTess.error = compareDepth(depth, referenceDepth);
         rows.push_back(gpuTess);
 
@@ -406,7 +407,7 @@ int main(int argc, char** argv) {
     }
 
     // ------------------------------------------------------------ table
-    std::printf("\nfacet raycast_bench%s: %d threads; GPU adapter via facet::render; depth errors vs facet CPU exact\n",
+    std::printf("\nfacet raycast_bench%s: %d threads; GPU adapter via facet::Renderer; depth errors vs facet CPU exact\n",
                 quick ? " --quick" : "", kThreads);
     std::printf(
         "\n| cage | patches | size | engine | method | refine+BVH / commit ms | primary ms | shadow ms | "

@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
-#include <map>
 #include <memory>
 #include <thread>
 
@@ -27,33 +26,12 @@ class Stopwatch {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
-// One device and renderer per adapter for the whole process: lavapipe
-// compiles a pipeline at its first dispatch, so keeping them pays that once.
-struct GpuContext {
-  gpu::Instance instance;
-  gpu::Device device;
-  std::unique_ptr<gpu_backend::GpuRenderer> renderer;
-};
-
-GpuContext& gpuContext(const std::string& adapter) {
-  static std::map<std::string, std::unique_ptr<GpuContext>> contexts;
-  std::unique_ptr<GpuContext>& context = contexts[adapter];
-  if (!context) {
-    context = std::make_unique<GpuContext>();
-    context->instance = gpu::Instance::create(gpuInstanceFromEnvironment());
-    context->device =
-        context->instance.requestAdapter(gpuAdapterFromEnvironment(adapter)).requestDevice({"facet render"});
-    context->renderer = std::make_unique<gpu_backend::GpuRenderer>(context->device);
-  }
-  return *context;
-}
-
 }  // namespace
 
 gpu::InstanceDescriptor gpuInstanceFromEnvironment() {
   const char* validation = std::getenv("FACET_VALIDATION");
-  const bool wanted = validation && *validation && std::strcmp(validation, "0") != 0;
-  return {wanted ? gpu::Validation::IfInstalled : gpu::Validation::Off};
+  if (!validation || !*validation || std::strcmp(validation, "0") == 0) return {gpu::Validation::Off};
+  return {std::strcmp(validation, "required") == 0 ? gpu::Validation::Required : gpu::Validation::IfInstalled};
 }
 
 gpu::AdapterOptions gpuAdapterFromEnvironment(const std::string& adapter) {
@@ -78,8 +56,35 @@ double RenderReport::totalMilliseconds() const {
   return total;
 }
 
+struct Renderer::GpuContext {
+  gpu::Instance instance;
+  gpu::Device device;
+  std::unique_ptr<gpu_backend::GpuRenderer> renderer;
+};
+
+Renderer::Renderer(std::string adapter) : adapter_(std::move(adapter)) {}
+
+Renderer::~Renderer() = default;
+
+Renderer::GpuContext& Renderer::gpuContext() {
+  if (!gpu_) {
+    auto context = std::make_unique<GpuContext>();
+    context->instance = gpu::Instance::create(gpuInstanceFromEnvironment());
+    context->device =
+        context->instance.requestAdapter(gpuAdapterFromEnvironment(adapter_)).requestDevice({"facet render"});
+    context->renderer = std::make_unique<gpu_backend::GpuRenderer>(context->device);
+    gpu_ = std::move(context);
+  }
+  return *gpu_;
+}
+
 RenderReport render(const scene::Scene& scene, Backend backend, const std::function<void(double)>& progress,
                     const std::string& adapter) {
+  return Renderer(adapter).render(scene, backend, progress);
+}
+
+RenderReport Renderer::render(const scene::Scene& scene, Backend backend,
+                              const std::function<void(double)>& progress) {
   RenderReport report;
   Stopwatch clock;
   scene::SceneGeometry geometry = scene::buildGeometry(scene);
@@ -100,7 +105,7 @@ RenderReport render(const scene::Scene& scene, Backend backend, const std::funct
       break;
     }
     case Backend::Gpu: {
-      GpuContext& context = gpuContext(adapter);
+      GpuContext& context = gpuContext();
       gpu_backend::GpuRenderResult result = context.renderer->render(scene, geometry, progress);
       report.image = std::move(result.image);
       for (const auto& [name, milliseconds] : result.stageMilliseconds) report.stages.push_back({name, milliseconds});

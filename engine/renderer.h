@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -39,13 +40,35 @@ struct RenderReport {
 // The GPU choices a user makes through the environment, read here for every
 // front-end (facet::gpu takes them as arguments):
 //   FACET_VALIDATION=1  the Khronos validation layer, when installed
+//   FACET_VALIDATION=required  the layer, or an error where it is missing
 //   FACET_ADAPTER=NAME  the adapter, when `adapter` (--adapter) is empty
 gpu::InstanceDescriptor gpuInstanceFromEnvironment();
 gpu::AdapterOptions gpuAdapterFromEnvironment(const std::string& adapter);
 
-// The GPU backend runs on the adapter gpuAdapterFromEnvironment(adapter)
-// names; its device and pipelines are kept for the process, so each kernel
-// variant is compiled once.
+// Renders scenes on either backend; the GPU one on the adapter
+// gpuAdapterFromEnvironment(adapter) names. Its GPU context (instance,
+// device, and the pipelines each kernel variant compiles once) is made at
+// the first GPU render and lives as long as the Renderer: an owner in a
+// caller's scope ends the device before the process unloads the libraries
+// Vulkan loaded, which a static owner would outlive.
+class Renderer {
+ public:
+  explicit Renderer(std::string adapter = {});
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  RenderReport render(const scene::Scene& scene, Backend backend, const std::function<void(double)>& progress = {});
+
+ private:
+  struct GpuContext;
+  GpuContext& gpuContext();
+
+  std::string adapter_;
+  std::unique_ptr<GpuContext> gpu_;
+};
+
+// One render by a Renderer of its own.
 RenderReport render(const scene::Scene& scene, Backend backend, const std::function<void(double)>& progress = {},
                     const std::string& adapter = {});
 

@@ -18,12 +18,11 @@ struct BenchOptions {
   std::filesystem::path root = ".";  // the folder holding scenes/ (the source tree)
   bool quick = false;                // the CI smoke run: tiny sizes, few points, one repetition
   int repeats = 5;                   // timed runs per point; the median is reported
-  std::string adapter;               // GPU adapter (substring of its name)
 };
 
 // The sections, in the order `facet bench` runs them.
-void runPareto(const BenchOptions& options, Report& report);
-void runStability(const BenchOptions& options, Report& report);
-void runScaling(const BenchOptions& options, Report& report);
+void runPareto(Renderer& renderer, const BenchOptions& options, Report& report);
+void runStability(Renderer& renderer, const BenchOptions& options, Report& report);
+void runScaling(Renderer& renderer, const BenchOptions& options, Report& report);
 
 }  // namespace facet::analysis::bench

@@ -190,7 +190,7 @@ std::vector<Scenario> scenarios(const BenchOptions& options, const Sizes& sizes)
 // CPU, exact at the default ε (1e-9 of each object's diagonal), same size and
 // samples per pixel; sampled IBL with many pairs where the scene's lighting is
 // the knob.
-RenderReport renderReference(const Scenario& s, const std::string& adapter) {
+RenderReport renderReference(Renderer& renderer, const Scenario& s) {
   scene::Scene reference = s.scene;
   reference.render.method = scene::IntersectionMethod::Exact;
   reference.render.exactTolerance.reset();
@@ -198,20 +198,20 @@ RenderReport renderReference(const Scenario& s, const std::string& adapter) {
     reference.environment->method = scene::IblMethod::Sampled;
     reference.environment->samples = s.referenceSamples;
   }
-  return render(reference, Backend::Cpu, {}, adapter);
+  return renderer.render(reference, Backend::Cpu);
 }
 
-Point measure(const Scenario& s, const Setting& setting, Backend backend, const Image& reference,
+Point measure(Renderer& renderer, const Scenario& s, const Setting& setting, Backend backend, const Image& reference,
               const BenchOptions& options) {
   scene::Scene scene = s.scene;
   apply(setting, scene);
   // Untimed: compiles the GPU pipeline variant and fills the environment's
   // caches; its image is the one compared.
-  RenderReport first = render(scene, backend, {}, options.adapter);
+  RenderReport first = renderer.render(scene, backend);
   Point p{backend == Backend::Gpu ? "gpu" : "cpu", setting, 0, compareToReference(first.image, reference),
           std::move(first.image)};
   p.milliseconds = medianMilliseconds(options.repeats,
-                                      [&] { return traceMilliseconds(render(scene, backend, {}, options.adapter)); });
+                                      [&] { return traceMilliseconds(renderer.render(scene, backend)); });
   return p;
 }
 
@@ -419,7 +419,7 @@ void reportScenario(const Scenario& s, const std::vector<Point>& points, const I
 
 }  // namespace
 
-void runPareto(const BenchOptions& options, Report& report) {
+void runPareto(Renderer& renderer, const BenchOptions& options, Report& report) {
   const Sizes sizes = sizesFor(options.quick);
   const std::string relative = "pareto";
   const fs::path directory = options.output / relative;
@@ -446,7 +446,7 @@ void runPareto(const BenchOptions& options, Report& report) {
   report.paragraph(intro);
 
   for (const Scenario& s : scenarios(options, sizes)) {
-    const RenderReport reference = renderReference(s, options.adapter);
+    const RenderReport reference = renderReference(renderer, s);
     std::printf("pareto %s %dx%d: reference %.0f ms\n", s.name.c_str(), s.scene.render.width, s.scene.render.height,
                 traceMilliseconds(reference));
     const double floor = gpuToleranceFloor(s.scene);
@@ -463,7 +463,7 @@ void runPareto(const BenchOptions& options, Report& report) {
           }
           floorMeasured = true;
         }
-        points.push_back(measure(s, setting, backend, reference.image, options));
+        points.push_back(measure(renderer, s, setting, backend, reference.image, options));
         const Point& p = points.back();
         std::printf("  %-4s %-22s %9.1f ms  %s %.3g\n", p.backend.c_str(), p.setting.label().c_str(), p.milliseconds,
                     axisName(s.axis).c_str(), chartedError(p.error, s.axis));

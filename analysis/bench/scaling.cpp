@@ -72,7 +72,7 @@ std::string exponentText(const PowerLawFit& fit) {
   return fixed2(fit.exponent) + (fit.points >= 3 ? " ± " + fixed2(fit.standardError) : "");
 }
 
-std::vector<Series> runSweep(const SweepSpec& sweep, const BenchOptions& options) {
+std::vector<Series> runSweep(Renderer& renderer, const SweepSpec& sweep, const BenchOptions& options) {
   std::vector<Series> result;
   for (const SeriesSpec& spec : sweep.series) {
     Series series{toString(spec.backend), methodName(spec.method), spec.variant, {}, {}, {}};
@@ -87,10 +87,10 @@ std::vector<Series> runSweep(const SweepSpec& sweep, const BenchOptions& options
       const scene::Scene scene = sceneAt(step);
       // Untimed: lavapipe JITs a pipeline on first use, and some stage
       // kernels are specialised per configuration (light count, for one).
-      if (spec.backend == Backend::Gpu) render(scene, spec.backend, {}, options.adapter);
+      if (spec.backend == Backend::Gpu) renderer.render(scene, spec.backend);
       double x = sweep.xOf(step);
       const double ms = medianMilliseconds(options.repeats, [&] {
-        const RenderReport report = render(scene, spec.backend, {}, options.adapter);
+        const RenderReport report = renderer.render(scene, spec.backend);
         if (sweep.xIsPatches) x = report.patches;
         return traceMilliseconds(report);
       });
@@ -264,14 +264,14 @@ std::vector<SweepSpec> defineSweeps(const BenchOptions& options) {
 
 }  // namespace
 
-void runScaling(const BenchOptions& options, Report& report) {
+void runScaling(Renderer& renderer, const BenchOptions& options, Report& report) {
   const fs::path directory = options.output / "scaling";
   fs::create_directories(directory);
   const std::vector<SweepSpec> sweeps = defineSweeps(options);
   std::vector<std::vector<Series>> results;
   std::vector<std::vector<std::string>> csv, table;
   for (const SweepSpec& sweep : sweeps) {
-    results.push_back(runSweep(sweep, options));
+    results.push_back(runSweep(renderer, sweep, options));
     writeChart(directory, sweep, results.back());
     for (const Series& series : results.back()) {
       for (std::size_t i = 0; i < series.x.size(); ++i)

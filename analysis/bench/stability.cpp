@@ -78,7 +78,8 @@ std::string methodsText(const Tolerances& t) {
 
 class Runner {
  public:
-  Runner(const BenchOptions& options) : options_(options), size_(options.quick ? 24 : 128) {}
+  Runner(Renderer& renderer, const BenchOptions& options)
+      : renderer_(renderer), options_(options), size_(options.quick ? 24 : 128) {}
 
   int size() const { return size_; }
   bool quick() const { return options_.quick; }
@@ -94,7 +95,7 @@ class Runner {
     scene.render.method = method.intersection;
     if (method.intersection == IntersectionMethod::Tessellated) scene.render.tessellationRate = kTessellationRate;
     const auto start = std::chrono::steady_clock::now();
-    RenderReport report = facet::render(scene, method.backend, {}, options_.adapter);
+    RenderReport report = renderer_.render(scene, method.backend);
     if (milliseconds)
       *milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     ++renders_;
@@ -126,7 +127,7 @@ class Runner {
       dense.environment.reset();
       dense.render.method = IntersectionMethod::Tessellated;
       dense.render.tessellationRate = kCoverageRate;
-      coverage = facet::render(dense, Backend::Cpu, {}, options_.adapter).image;
+      coverage = renderer_.render(dense, Backend::Cpu).image;
       ++renders_;
     }
     std::optional<Image> convergedImage;
@@ -155,6 +156,7 @@ class Runner {
   int renders() const { return renders_; }
 
  private:
+  Renderer& renderer_;
   const BenchOptions& options_;
   int size_;
   Tolerances tolerances_;
@@ -475,8 +477,8 @@ void dynamicRange(Runner& runner, std::vector<Sweep>& sweeps) {
 
 }  // namespace
 
-void runStability(const BenchOptions& options, Report& report) {
-  Runner runner(options);
+void runStability(Renderer& renderer, const BenchOptions& options, Report& report) {
+  Runner runner(renderer, options);
   std::vector<Sweep> sweeps;
   const std::vector<std::pair<const char*, std::function<void(Runner&, std::vector<Sweep>&)>>> steps{
       {"grazing", grazing}, {"roughness", roughness}, {"valence", valence},           {"crease", crease},

@@ -68,8 +68,8 @@ void runIblChart(ChartOptions o) {
   settings.environments.assign(o.environments.begin(), o.environments.end());
   settings.repeats = o.repeats;
   settings.backend = o.backend == "cpu" ? Backend::Cpu : Backend::Gpu;
-  settings.adapter = o.adapter;
-  analysis::writeIblChart(settings);
+  Renderer renderer(o.adapter);
+  analysis::writeIblChart(renderer, settings);
 }
 
 }  // namespace
