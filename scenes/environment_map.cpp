@@ -20,6 +20,7 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <sstream>
 #include <string_view>
 #include <system_error>
 
@@ -41,7 +42,7 @@ std::string sizeText(std::int64_t width, std::int64_t height) {
 void checkSize(const std::string& source, std::int64_t width, std::int64_t height) {
   if (width <= 0 || height <= 0)
     throw InputError(source, 0, "an environment map must not be empty", sizeText(width, height));
-  if (width != 2 * height)
+  if (width % 2 != 0 || width / 2 != height)  // 2 x height could overflow
     throw InputError(source, 0, "an environment map must be 2:1 (width = 2 x height)", sizeText(width, height));
   if (width > kMaxWidth)
     throw InputError(source, 0, "an environment map must be at most 16384 x 8192", sizeText(width, height));
@@ -54,6 +55,21 @@ EnvironmentMap allocate(const fs::path& file, std::int64_t width, std::int64_t h
   map.height = int(height);
   map.rgb.resize(3 * std::size_t(width) * std::size_t(height));
   return map;
+}
+
+// The GPU sums, filters and importance-samples the map in float: sums over
+// the largest map (2^27 texels) stay finite below this radiance.
+constexpr float kMaxRadiance = 1e30f;
+
+// Checked after zeroBadTexels, so only finite values remain.
+void checkRadiance(const EnvironmentMap& map) {
+  for (std::size_t i = 0; i < map.rgb.size(); ++i) {
+    if (map.rgb[i] <= kMaxRadiance) continue;
+    const std::size_t texel = i / 3, x = texel % std::size_t(map.width), y = texel / std::size_t(map.width);
+    std::ostringstream detail;
+    detail << "texel (" << x << ", " << y << ") holds " << map.rgb[i];
+    throw InputError(map.source.string(), 0, "environment radiance must be at most 1e30", detail.str());
+  }
 }
 
 // Renderers sum and importance-sample the map, where one NaN or negative
@@ -252,6 +268,7 @@ EnvironmentMap loadEnvironmentMap(const fs::path& file) {
 
   EnvironmentMap map = extension == ".exr" ? readExr(file) : readHdr(file);
   zeroBadTexels(map);
+  checkRadiance(map);
   return map;
 }
 

@@ -34,8 +34,9 @@ struct EnvironmentMap {
 };
 
 // Reads `file` by its extension (.exr, .hdr). Throws InputError naming the
-// file and the rule when it cannot be read, is not 2:1, or is larger than
-// 16384 x 8192.
+// file and the rule when it cannot be read, is not 2:1, is larger than
+// 16384 x 8192, or holds a radiance above 1e30 (after negative, NaN and Inf
+// texels are set to 0).
 EnvironmentMap loadEnvironmentMap(const std::filesystem::path& file);
 
 // A uniform environment of radiance `color` (8 x 4 equal texels, so that

@@ -7,6 +7,8 @@
 #include <numbers>
 #include <sstream>
 
+#include "scenes/input_error.h"
+
 namespace facet::scene {
 namespace {
 
@@ -58,6 +60,22 @@ double largestTwist(const ControlCage& cage) {
   return largest;
 }
 
+// Refinement and the CPU reference multiply up to three coordinate
+// differences (a twist against a cross product, BVH surface areas, Newton
+// steps); within this bound every such product stays finite in double.
+constexpr double kMaxCoordinate = 1e100;
+
+void checkExtent(const Object& object) {
+  for (std::size_t i = 0; i < object.cage.positions.size(); ++i) {
+    const glm::dvec3& p = object.cage.positions[i];
+    if (std::abs(p.x) <= kMaxCoordinate && std::abs(p.y) <= kMaxCoordinate && std::abs(p.z) <= kMaxCoordinate) continue;
+    std::ostringstream detail;
+    detail << "object '" << object.name << "': vertex " << i + 1 << " is at " << p.x << ", " << p.y << ", " << p.z
+           << " in world space";
+    throw InputError(object.cage.source, 0, "cage coordinates must lie within +-1e100", detail.str());
+  }
+}
+
 double distanceToBox(const glm::dvec3& p, const Aabb& box) {
   const glm::dvec3 outside = glm::max(glm::max(box.lo - p, p - box.hi), glm::dvec3(0.0));
   return glm::length(outside);
@@ -66,6 +84,7 @@ double distanceToBox(const glm::dvec3& p, const Aabb& box) {
 }  // namespace
 
 RefinementChoice chooseRefinement(const Object& object, const Camera& camera, const RenderSettings& settings) {
+  checkExtent(object);
   Aabb bounds;
   for (const glm::dvec3& p : object.cage.positions) bounds.extend(p);
   // An eye inside the bounds sees the object from as close as it gets; a

@@ -20,6 +20,7 @@
 
 #include "analysis/bench/bench.h"
 #include "analysis/bench/stability_map.h"
+#include "scenes/input_error.h"
 #include "scenes/obj_cage.h"
 #include "scenes/scene_file.h"
 
@@ -141,7 +142,17 @@ class Runner {
       const Timed& reference = references[method.lighting];
       const bool isReference = method.backend == Backend::Cpu && method.intersection == IntersectionMethod::Exact;
       double milliseconds = reference.milliseconds;
-      const Image image = isReference ? reference.image : render(lit(method.lighting), method, &milliseconds);
+      Image image;
+      try {
+        image = isReference ? reference.image : render(lit(method.lighting), method, &milliseconds);
+      } catch (const scene::InputError&) {  // beyond the backend's range: every pixel fails
+        Cell refused;
+        refused.row = method.label;
+        refused.column = column;
+        refused.failureShare = 1;
+        sweep.cells.push_back(refused);
+        continue;
+      }
       const Image* dense = coverage && method.intersection == IntersectionMethod::Exact ? &*coverage : nullptr;
       Cell c = stability::measure(image, reference.image, dense, tolerances_.of(method.intersection));
       c.row = method.label;

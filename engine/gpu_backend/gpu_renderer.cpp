@@ -7,6 +7,8 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
+#include <sstream>
+#include <string>
 
 #include "compute/shared/config.h"
 #include "engine/camera/camera.h"
@@ -19,6 +21,7 @@
 #include "facet_raycast_kernels/spirv.h"
 #include "materials/material.h"
 #include "materials/shading.h"
+#include "scenes/input_error.h"
 
 namespace facet::gpu_backend {
 namespace {
@@ -348,14 +351,46 @@ struct GpuRenderer::DicedGeometry {
   GeometryBuffers buffers;
 };
 
-double rootTolerance(const scene::Scene& scene, const scene::SceneGeometry& geometry) {
-  double largestCoordinate = 0;
+namespace {
+
+// The largest coordinate of the scene's geometry relative to the eye, the
+// origin of the GPU's coordinates.
+double largestEyeRelativeCoordinate(const scene::Scene& scene, const scene::SceneGeometry& geometry) {
+  double largest = 0;
   for (int axis = 0; axis < 3; ++axis)
-    largestCoordinate =
-        std::max({largestCoordinate, std::abs(geometry.bounds.lo[axis] - scene.camera.eye[axis]),
-                  std::abs(geometry.bounds.hi[axis] - scene.camera.eye[axis])});
+    largest = std::max({largest, std::abs(geometry.bounds.lo[axis] - scene.camera.eye[axis]),
+                        std::abs(geometry.bounds.hi[axis] - scene.camera.eye[axis])});
+  return largest;
+}
+
+// The kernels multiply up to four eye-relative lengths in float (a normal's
+// squared length, a cross product of derivatives); within this bound every
+// such product, and a light's squared distance, stays finite.
+constexpr double kMaxEyeRelativeCoordinate = 1e9;
+
+void checkFloatRange(const scene::Scene& scene, const scene::SceneGeometry& geometry) {
+  const auto refuse = [&](const std::string& what, double reach) {
+    std::ostringstream detail;
+    detail << what << " reaches " << reach << " from the eye; render it with the CPU reference (--backend cpu)";
+    throw scene::InputError(scene.source.string(), 0,
+                            "the GPU computes in float relative to the eye: coordinates must lie within +-1e9 of it",
+                            detail.str());
+  };
+  const double reach = largestEyeRelativeCoordinate(scene, geometry);
+  if (!(reach <= kMaxEyeRelativeCoordinate)) refuse("the geometry", reach);
+  for (const scene::Light& light : scene.lights) {
+    if (light.type == scene::LightType::Directional) continue;
+    const glm::dvec3 offset = glm::abs(light.position - scene.camera.eye);
+    const double lightReach = std::max({offset.x, offset.y, offset.z});
+    if (!(lightReach <= kMaxEyeRelativeCoordinate)) refuse("a light", lightReach);
+  }
+}
+
+}  // namespace
+
+double rootTolerance(const scene::Scene& scene, const scene::SceneGeometry& geometry) {
   return std::max(scene.render.exactTolerance.value_or(1e-9) * geometry.bounds.diagonal(),
-                  std::ldexp(largestCoordinate, -20));
+                  std::ldexp(largestEyeRelativeCoordinate(scene, geometry), -20));
 }
 
 PipelineCache::PipelineCache(gpu::Device& device) : device_(device) {
@@ -496,6 +531,7 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
                                     const std::function<void(double)>& progress) {
   const std::uint32_t strata = camera::sample_strata(std::uint32_t(scene.render.samplesPerPixel));
   const bool tessellated = scene.render.method == scene::IntersectionMethod::Tessellated;
+  checkFloatRange(scene, geometry);
   const glm::dvec3 origin = scene.camera.eye;
   gpu::Device& d = device_;
   GpuRenderResult result;

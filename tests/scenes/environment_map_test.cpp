@@ -177,6 +177,23 @@ TEST_F(EnvironmentMaps, NegativeAndNonFiniteChannelsAreZeroedAndCounted) {
   EXPECT_EQ(intact, rgb.size() - 3);
 }
 
+// Float sums over the map would overflow: such a map is refused, not zeroed.
+TEST_F(EnvironmentMaps, RadianceAbove1e30IsRefused) {
+  std::vector<float> rgb(3 * 8 * 4, 1.0f);
+  rgb[3 * 9] = 1e30f;
+  EXPECT_EQ(loadEnvironmentMap(writeRgbExr("at_the_bound.exr", 8, 4, rgb)).clampedTexels, 0u);
+  rgb[3 * 9 + 1] = 3e38f;
+  EXPECT_THAT(errorOf(writeRgbExr("near_float_max.exr", 8, 4, rgb)),
+              AllOf(HasSubstr("near_float_max.exr: environment radiance must be at most 1e30"),
+                    HasSubstr("texel (1, 1)")));
+  // RGBE's largest exponent: a mantissa of 255 times 2^119.
+  std::string pixels;
+  for (int i = 0; i < 8 * 4; ++i) pixels += i == 3 ? std::string("\xff\x80\x80\xff", 4) : std::string("\x80\x80\x80\x81", 4);
+  EXPECT_THAT(errorOf(writeBytes("exponent_255.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4 +X 8\n" + pixels)),
+              AllOf(HasSubstr("exponent_255.hdr: environment radiance must be at most 1e30"),
+                    HasSubstr("texel (3, 0)")));
+}
+
 TEST_F(EnvironmentMaps, TheDataWindowIsTheMap) {
   const int width = 8, height = 4;
   std::vector<float> r(width * height), g(width * height), b(width * height);
@@ -247,6 +264,9 @@ TEST_F(EnvironmentMaps, HeadersAreCheckedBeforeAnyPixelIsRead) {
   const std::string header = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n";
   EXPECT_THAT(errorOf(writeBytes("huge.hdr", header + "-Y 8193 +X 16386\n")),
               AllOf(HasSubstr("huge.hdr"), HasSubstr("at most 16384 x 8192")));
+  // Twice this height overflows a 64-bit integer.
+  EXPECT_THAT(errorOf(writeBytes("tall.hdr", header + "-Y 9223372036854775807 +X 2\n")),
+              AllOf(HasSubstr("tall.hdr"), HasSubstr("must be 2:1")));
   EXPECT_THAT(errorOf(writeBytes("empty.hdr", header + "-Y 0 +X 0\n")),
               AllOf(HasSubstr("empty.hdr"), HasSubstr("must not be empty")));
   EXPECT_THAT(errorOf(writeBytes("flipped.hdr", header + "+Y 4 +X 8\n")),

@@ -1,7 +1,9 @@
 // How an object's refinement is chosen for the camera that sees it.
 #include "scenes/scene_geometry.h"
+#include "scenes/input_error.h"
 #include "tests/support/cages.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -34,6 +36,26 @@ TEST(SceneGeometry, DicingFollowsTheTwistOutOfPlane) {
 
   object.subdivision = Subdivision::CatmullClark;
   EXPECT_GE(chooseRefinement(object, camera, settings).isolationLevel, 1);
+}
+
+// Beyond 1e100 the products refinement takes of coordinate differences
+// would overflow double.
+TEST(SceneGeometry, CoordinatesBeyond1e100AreRefused) {
+  Object object;
+  object.name = "far";
+  object.cage = singleFace({{0, 0, 0}, {1e308, 0, 0}, {1e308, 1e308, 0}, {0, 1e308, 1e-300}});
+  object.cage.source = "far.obj";
+  RenderSettings settings;
+  try {
+    chooseRefinement(object, Camera{}, settings);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::StartsWith("far.obj: cage coordinates must lie within +-1e100: object 'far': vertex 2 is at 1e+308"));
+  }
+  object.cage = singleFace({{0, 0, 0}, {1e100, 0, 0}, {1e100, 1e100, 0}, {0, 1e100, 1e99}});
+  const RefinementChoice choice = chooseRefinement(object, Camera{}, settings);
+  EXPECT_TRUE(std::isfinite(choice.edgePixels));
+  EXPECT_GE(choice.isolationLevel, 1);
 }
 
 }  // namespace

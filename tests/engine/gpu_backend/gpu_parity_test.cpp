@@ -18,6 +18,7 @@
 #include "analysis/parity.h"
 #include "tests/support/gpu_device.h"
 #include "scenes/scene_file.h"
+#include "scenes/input_error.h"
 #include "scenes/scene_geometry.h"
 
 namespace facet {
@@ -98,6 +99,17 @@ INSTANTIATE_TEST_SUITE_P(Supersampled, GpuParity,
                                                       scene::IntersectionMethod::Tessellated, 4}),
                          caseName);
 
+// The GPU's image of `scene` against the CPU reference's, which must show
+// something (a blank frame would compare equal).
+void expectParity(gpu::Device& device, const scene::Scene& scene) {
+  const scene::SceneGeometry geometry = scene::buildGeometry(scene);
+  const Image reference = cpu::renderReference(scene, geometry);
+  gpu_backend::GpuRenderer renderer(device);
+  const ParityReport parity = compareImages(reference, renderer.render(scene, geometry).image);
+  EXPECT_TRUE(parity.pass) << describe(parity);
+  EXPECT_GT(parity.covered, 50u);
+}
+
 // Precise anywhere: the GPU works relative to the eye, so a scene far from
 // the world origin holds the same tolerances as one at it, as far as the
 // CPU reference (double) holds.
@@ -121,12 +133,7 @@ TEST_P(FarFromTheOrigin, MatchesTheCpuReferenceWithinTolerance) {
   scene.render.method = GetParam().method;
   const glm::dvec3 offset = GetParam().distance * glm::normalize(glm::dvec3(1.0, -0.5, 0.75));
   facet::testing::translateScene(scene, offset);
-  const scene::SceneGeometry geometry = scene::buildGeometry(scene);
-  const Image reference = cpu::renderReference(scene, geometry);
-  gpu_backend::GpuRenderer renderer(device_);
-  const ParityReport parity = compareImages(reference, renderer.render(scene, geometry).image);
-  EXPECT_TRUE(parity.pass) << describe(parity);
-  EXPECT_GT(parity.covered, 50u);
+  expectParity(device_, scene);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -141,7 +148,56 @@ INSTANTIATE_TEST_SUITE_P(
              std::to_string(int(std::round(std::log10(info.param.distance))));
     });
 
+// The GPU's float coordinates relative to the eye: a scene just inside their
+// bound renders as the CPU does; one beyond it is refused, not drawn wrong.
+// The cube cage, its lights and camera scaled about the world origin.
+scene::Scene scaledCube(double scale, scene::IntersectionMethod method) {
+  scene::Scene scene = scene::loadScene(std::filesystem::path(FACET_CAGE_DIR) / "cube.obj");
+  for (scene::Object& object : scene.objects)
+    for (glm::dvec3& p : object.cage.positions) p *= scale;
+  for (scene::Light& light : scene.lights) light.position *= scale;
+  scene.camera.eye *= scale;
+  scene.camera.target *= scale;
+  scene.render.width = 64;
+  scene.render.height = 48;
+  scene.render.method = method;
+  return scene;
+}
+
+class FloatRange : public gpu::testing::GpuTest {};
+
+TEST_F(FloatRange, AtTheBoundTheGpuMatchesTheCpuReference) {
+  for (auto method : {scene::IntersectionMethod::Exact, scene::IntersectionMethod::Tessellated}) {
+    const scene::Scene scene = scaledCube(1.5e8, method);  // the far corner is 9e8 from the eye
+    expectParity(device_, scene);
+  }
+}
+
+TEST_F(FloatRange, BeyondItTheGpuRefusesTheScene) {
+  // 1.5e11: the normals overflow; 1e15: the tessellated coverage goes wrong;
+  // 1e39: past float.
+  for (double scale : {1.5e11, 1e15, 1e39}) {
+    const scene::Scene scene = scaledCube(scale, scene::IntersectionMethod::Tessellated);
+    gpu_backend::GpuRenderer renderer(device_);
+    try {
+      renderer.render(scene, scene::buildGeometry(scene));
+      ADD_FAILURE() << "rendered a cube scaled by " << scale;
+    } catch (const scene::InputError& e) {
+      EXPECT_THAT(e.what(), ::testing::HasSubstr("cube.obj: the GPU computes in float relative to the eye: "
+                                                 "coordinates must lie within +-1e9 of it"));
+    }
+  }
+}
+
 class GpuRendererTest : public gpu::testing::GpuTest {};
+
+// The largest dicing rate --tess-level takes covers what the CPU covers.
+TEST_F(GpuRendererTest, TheLargestDicingRateMatchesTheCpuReference) {
+  scene::Scene scene = scaledCube(1.0, scene::IntersectionMethod::Tessellated);
+  scene.render.tessellationRate = 256;
+  scene.objects.at(0).isolationLevel = 1;
+  expectParity(device_, scene);
+}
 
 TEST_F(GpuRendererTest, ReportsGpuTimePerStage) {
   scene::Scene scene = scene::loadScene(std::filesystem::path(FACET_CAGE_DIR) / "cube.obj");
