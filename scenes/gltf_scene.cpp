@@ -25,17 +25,6 @@
 namespace facet::scene {
 namespace {
 
-// glTF's primitive modes (points and lines below these have no surface).
-constexpr int kTriangles = 4;
-constexpr int kTriangleStrip = 5;
-constexpr int kTriangleFan = 6;
-
-// glTF's component types that facet reads.
-constexpr int kUnsignedByte = 5121;
-constexpr int kUnsignedShort = 5123;
-constexpr int kUnsignedInt = 5125;
-constexpr int kFloat = 5126;
-
 // tinygltf's JSON parser recurses once per nested array or object, so deep
 // enough nesting overflows the stack; glTF itself nests fewer than 20 levels.
 constexpr int kMaxJsonNesting = 512;
@@ -47,14 +36,16 @@ struct ElementFormat {
   std::array<int, 3> componentTypes;  // unused slots repeat the first
   const char* name;
 };
-constexpr ElementFormat kFloatVec3{3, {kFloat, kFloat, kFloat}, "FLOAT VEC3"};
-constexpr ElementFormat kVertexIndex{
-    1, {kUnsignedByte, kUnsignedShort, kUnsignedInt}, "SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT"};
+constexpr ElementFormat kFloatVec3{
+    3, {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_FLOAT}, "FLOAT VEC3"};
+constexpr ElementFormat kVertexIndex{1,
+                                     {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                                      TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
+                                     "SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT"};
 
 // Whether `count` elements of `elementBytes`, `stride` apart from byte
 // `begin`, end by byte `end`, in arithmetic that cannot wrap around.
-bool elementsFit(std::size_t begin, std::size_t count, std::size_t stride, std::size_t elementBytes,
-                 std::size_t end) {
+bool elementsFit(std::size_t begin, std::size_t count, std::size_t stride, std::size_t elementBytes, std::size_t end) {
   if (count == 0) return true;
   if (begin > end || elementBytes > end - begin) return false;
   return count - 1 <= (end - begin - elementBytes) / stride;
@@ -77,7 +68,7 @@ class GltfReader {
     const std::string accessor = "accessors[" + std::to_string(accessorIndex) + "]";
     const std::size_t components = std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(a.type)));
     if (components != format.components || std::find(format.componentTypes.begin(), format.componentTypes.end(),
-                                                      a.componentType) == format.componentTypes.end())
+                                                     a.componentType) == format.componentTypes.end())
       fail(where, accessor + " must be " + format.name + ", is componentType " + std::to_string(a.componentType) +
                       " with " + std::to_string(components) + " components");
     if (a.bufferView < 0 || std::size_t(a.bufferView) >= model_.bufferViews.size())
@@ -106,14 +97,14 @@ class GltfReader {
  private:
   static double component(const unsigned char* p, int type) {
     switch (type) {
-      case kUnsignedByte:
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
         return *p;
-      case kUnsignedShort: {
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
         std::uint16_t v;
         std::memcpy(&v, p, 2);
         return v;
       }
-      case kUnsignedInt: {
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
         std::uint32_t v;
         std::memcpy(&v, p, 4);
         return v;
@@ -150,11 +141,12 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
   const auto& pbr = gltf.pbrMetallicRoughness;
   const std::string where = "materials[" + std::to_string(index) + "].pbrMetallicRoughness";
   for (double c : pbr.baseColorFactor)
-    if (!(c >= 0.0 && c <= 1.0)) reader.fail(where + ".baseColorFactor", "every component must be in [0, 1], is " + formatNumber(c));
+    if (!(c >= 0.0 && c <= 1.0))
+      reader.fail(where + ".baseColorFactor", "every component must be in [0, 1], is " + formatNumber(c));
   glm::dvec3 base(1.0);
   if (pbr.baseColorFactor.size() >= 3) base = {pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]};
-  for (auto [field, value] : {std::pair{".metallicFactor", pbr.metallicFactor},
-                              std::pair{".roughnessFactor", pbr.roughnessFactor}})
+  for (auto [field, value] :
+       {std::pair{".metallicFactor", pbr.metallicFactor}, std::pair{".roughnessFactor", pbr.roughnessFactor}})
     if (const std::optional<std::string> rule = rangeRule(value, 0.0, 1.0)) reader.fail(where + field, *rule);
   const double metallic = pbr.metallicFactor;
   const double roughness = pbr.roughnessFactor;
@@ -271,9 +263,9 @@ std::vector<int> sceneRoots(const tinygltf::Model& model, const GltfReader& read
 // triangle so that all keep one winding, a fan turns about the first vertex.
 std::array<std::size_t, 3> triangleCorners(int mode, std::size_t t) {
   switch (mode) {
-    case kTriangleStrip:
+    case TINYGLTF_MODE_TRIANGLE_STRIP:
       return {t, t + 1 + t % 2, t + 2 - t % 2};
-    case kTriangleFan:
+    case TINYGLTF_MODE_TRIANGLE_FAN:
       return {t + 1, t + 2, 0};
     default:
       return {3 * t, 3 * t + 1, 3 * t + 2};
@@ -281,15 +273,15 @@ std::array<std::size_t, 3> triangleCorners(int mode, std::size_t t) {
 }
 
 std::size_t triangleCount(int mode, std::size_t vertices, const GltfReader& reader, const std::string& where) {
-  if (mode == kTriangles) {
+  if (mode == TINYGLTF_MODE_TRIANGLES) {
     if (vertices % 3 != 0) reader.fail(where, "triangle index count is not a multiple of 3");
     return vertices / 3;
   }
-  if (mode != kTriangleStrip && mode != kTriangleFan)
+  if (mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN)
     reader.fail(where, "mode " + std::to_string(mode) +
                            " has no surface (expected TRIANGLES 4, TRIANGLE_STRIP 5 or TRIANGLE_FAN 6)");
   if (vertices < 3)
-    reader.fail(where, std::string(mode == kTriangleStrip ? "a triangle strip" : "a triangle fan") +
+    reader.fail(where, std::string(mode == TINYGLTF_MODE_TRIANGLE_STRIP ? "a triangle strip" : "a triangle fan") +
                            " needs at least 3 vertices, has " + std::to_string(vertices));
   return vertices - 2;
 }
@@ -302,9 +294,8 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
   ControlCage cage;
   cage.source = where;
   std::map<std::tuple<double, double, double>, int> welded;
-  const bool normals = std::all_of(mesh.primitives.begin(), mesh.primitives.end(), [](const tinygltf::Primitive& p) {
-    return p.attributes.count("NORMAL") != 0;
-  });
+  const bool normals = std::all_of(mesh.primitives.begin(), mesh.primitives.end(),
+                                   [](const tinygltf::Primitive& p) { return p.attributes.count("NORMAL") != 0; });
   const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(world)));
   for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
     const tinygltf::Primitive& primitive = mesh.primitives[p];
@@ -419,10 +410,10 @@ Scene loadGltfScene(const std::filesystem::path& path) {
   std::string error, warning;
   const std::string baseDir = path.parent_path().string();
   const bool ok =
-      binary ? loader.LoadBinaryFromMemory(&model, &error, &warning,
-                                           reinterpret_cast<const unsigned char*>(file.data()),
-                                           unsigned(file.size()), baseDir)
-             : loader.LoadASCIIFromString(&model, &error, &warning, file.data(), unsigned(file.size()), baseDir);
+      binary
+          ? loader.LoadBinaryFromMemory(&model, &error, &warning, reinterpret_cast<const unsigned char*>(file.data()),
+                                        unsigned(file.size()), baseDir)
+          : loader.LoadASCIIFromString(&model, &error, &warning, file.data(), unsigned(file.size()), baseDir);
   if (!ok) throw InputError(source, 0, "cannot load glTF", error.empty() ? "unknown tinygltf error" : error);
   const GltfReader reader(model, source);
 
