@@ -57,14 +57,10 @@ EnvironmentMap allocate(const fs::path& file, std::int64_t width, std::int64_t h
   return map;
 }
 
-// The GPU sums, filters and importance-samples the map in float: sums over
-// the largest map (2^27 texels) stay finite below this radiance.
-constexpr float kMaxRadiance = 1e30f;
-
 // Checked after zeroBadTexels, so only finite values remain.
 void checkRadiance(const EnvironmentMap& map) {
   for (std::size_t i = 0; i < map.rgb.size(); ++i) {
-    if (map.rgb[i] <= kMaxRadiance) continue;
+    if (map.rgb[i] <= kMaxEnvironmentRadiance) continue;
     const std::size_t texel = i / 3, x = texel % std::size_t(map.width), y = texel / std::size_t(map.width);
     std::ostringstream detail;
     detail << "texel (" << x << ", " << y << ") holds " << map.rgb[i];
@@ -270,6 +266,12 @@ EnvironmentMap loadEnvironmentMap(const fs::path& file) {
   zeroBadTexels(map);
   checkRadiance(map);
   return map;
+}
+
+float EnvironmentMap::largestRadiance() const {
+  float largest = 0.0f;
+  for (float channel : rgb) largest = std::max(largest, channel);
+  return largest;
 }
 
 EnvironmentMap constantEnvironment(const glm::dvec3& color) {

@@ -16,6 +16,12 @@
 
 namespace facet::scene {
 
+// The GPU sums, filters and importance-samples a map in float: sums over
+// the largest map (2^27 texels) stay finite below this radiance, which a
+// loaded map's texels, and on the GPU their product with the intensity, may
+// not exceed.
+constexpr float kMaxEnvironmentRadiance = 1e30f;
+
 struct EnvironmentMap {
   std::filesystem::path source;  // empty for a constant colour
   int width = 0;
@@ -28,6 +34,8 @@ struct EnvironmentMap {
     const float* p = &rgb[3 * (std::size_t(y) * std::size_t(width) + std::size_t(x))];
     return {p[0], p[1], p[2]};
   }
+  // The largest channel of any texel.
+  float largestRadiance() const;
   // A digest of the size and every texel: keys caches of what is derived
   // from the map, whatever file it came from.
   std::uint64_t contentHash() const;

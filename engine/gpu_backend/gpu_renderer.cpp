@@ -384,6 +384,17 @@ void checkFloatRange(const scene::Scene& scene, const scene::SceneGeometry& geom
     const double lightReach = std::max({offset.x, offset.y, offset.z});
     if (!(lightReach <= kMaxEyeRelativeCoordinate)) refuse("a light", lightReach);
   }
+  if (scene.environment) {
+    const double radiance = scene.environment->intensity * double(scene.environment->map->largestRadiance());
+    if (!(radiance <= double(scene::kMaxEnvironmentRadiance))) {
+      std::ostringstream detail;
+      detail << "its largest texel times the intensity is " << radiance
+             << "; lower --env-intensity, or render it with the CPU reference (--backend cpu)";
+      throw scene::InputError(scene.source.string(), 0,
+                              "the GPU sums the environment in float: its radiance must be at most 1e30",
+                              detail.str());
+    }
+  }
 }
 
 }  // namespace

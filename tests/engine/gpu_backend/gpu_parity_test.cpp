@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "engine/gpu_backend/gpu_renderer.h"
 #include "analysis/parity.h"
 #include "tests/support/gpu_device.h"
+#include "scenes/environment_map.h"
 #include "scenes/scene_file.h"
 #include "scenes/input_error.h"
 #include "scenes/scene_geometry.h"
@@ -186,6 +188,27 @@ TEST_F(FloatRange, BeyondItTheGpuRefusesTheScene) {
       EXPECT_THAT(e.what(), ::testing::HasSubstr("cube.obj: the GPU computes in float relative to the eye: "
                                                  "coordinates must lie within +-1e9 of it"));
     }
+  }
+}
+
+// An environment whose radiance times its intensity passes 1e30 would
+// overflow the GPU's float sums: refused; below the bound it renders.
+TEST_F(FloatRange, TheGpuRefusesAnEnvironmentBeyondFloatsReach) {
+  scene::Scene scene = scaledCube(1.0, scene::IntersectionMethod::Tessellated);
+  scene.render.width = 16;
+  scene.render.height = 12;
+  scene.environment = scene::Environment{};
+  scene.environment->map = std::make_shared<const scene::EnvironmentMap>(scene::constantEnvironment(glm::dvec3(1e20)));
+  gpu_backend::GpuRenderer renderer(device_);
+  scene.environment->intensity = 1e9;
+  EXPECT_NO_THROW(renderer.render(scene, scene::buildGeometry(scene)));
+  scene.environment->intensity = 1e12;
+  try {
+    renderer.render(scene, scene::buildGeometry(scene));
+    ADD_FAILURE() << "rendered an environment of radiance 1e32";
+  } catch (const scene::InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("the GPU sums the environment in float: its radiance must be at most "
+                                               "1e30: its largest texel times the intensity is 1e+32"));
   }
 }
 
