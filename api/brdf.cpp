@@ -30,12 +30,12 @@ BrdfValue evaluate(const materials::f64::BrdfParams& params, const Vec3& l, cons
 }  // namespace
 
 std::vector<BrdfValue> evaluateBrdf(const Material& material, const std::vector<Vec3>& l, const std::vector<Vec3>& v) {
-  return detail::translateErrors([&] {
+  return api::translateErrors([&] {
     if (l.size() != v.size())
       throw scene::InputError("brdf", 0, "l, v",
                               "need as many directions each (" + std::to_string(l.size()) + " and " +
                                   std::to_string(v.size()) + ")");
-    const materials::f64::BrdfParams params = materials::toParams64(detail::toEngineMaterial(material, "material"));
+    const materials::f64::BrdfParams params = materials::toParams64(api::toEngineMaterial(material, "material"));
     std::vector<BrdfValue> values;
     values.reserve(l.size());
     for (std::size_t i = 0; i < l.size(); ++i) values.push_back(evaluate(params, l[i], v[i]));

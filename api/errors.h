@@ -6,7 +6,7 @@
 
 #include "facet/error.h"
 
-namespace facet::v0::detail {
+namespace facet::api {
 
 [[noreturn]] void rethrowAsError();
 
@@ -19,4 +19,4 @@ auto translateErrors(F&& work) {
   }
 }
 
-}  // namespace facet::v0::detail
+}  // namespace facet::api

@@ -1,16 +1,16 @@
 #include "api/material.h"
 
-namespace facet::v0::detail {
+namespace facet::api {
 namespace {
 
-std::optional<glm::dvec3> engineVector(const std::optional<Vec3>& v) {
+std::optional<glm::dvec3> engineVector(const std::optional<v0::Vec3>& v) {
   if (!v) return std::nullopt;
   return glm::dvec3(v->x, v->y, v->z);
 }
 
 }  // namespace
 
-materials::Material toEngineMaterial(const Material& material, const std::string& where) {
+materials::Material toEngineMaterial(const v0::Material& material, const std::string& where) {
   materials::MaterialSpec spec;
   spec.name = material.name;
   spec.preset = material.preset;
@@ -27,4 +27,4 @@ materials::Material toEngineMaterial(const Material& material, const std::string
   return materials::buildMaterial(spec, [&](std::string_view field) { return where + "." + std::string(field); });
 }
 
-}  // namespace facet::v0::detail
+}  // namespace facet::api

@@ -6,8 +6,8 @@
 #include "facet/scene.h"
 #include "materials/material.h"
 
-namespace facet::v0::detail {
+namespace facet::api {
 
-materials::Material toEngineMaterial(const Material& material, const std::string& where);
+materials::Material toEngineMaterial(const v0::Material& material, const std::string& where);
 
-}  // namespace facet::v0::detail
+}  // namespace facet::api

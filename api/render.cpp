@@ -77,7 +77,7 @@ Renderer::Renderer(const std::string& adapter) : state_(std::make_unique<State>(
 Renderer::~Renderer() = default;
 
 RenderResult Renderer::render(const Scene& input, const RenderSettings& settings) {
-  return detail::translateErrors([&] {
+  return api::translateErrors([&] {
     const RenderReport report = state_->engine.render(
         withSettings(input, settings), settings.backend == Backend::Cpu ? facet::Backend::Cpu : facet::Backend::Gpu);
     return RenderResult{publicImage(report.image), report.device, report.totalMilliseconds()};
@@ -85,7 +85,7 @@ RenderResult Renderer::render(const Scene& input, const RenderSettings& settings
 }
 
 ParityReport Renderer::parity(const Scene& input, const RenderSettings& settings) {
-  return detail::translateErrors([&] {
+  return api::translateErrors([&] {
     const scene::Scene s = withSettings(input, settings);
     const RenderReport cpu = state_->engine.render(s, facet::Backend::Cpu);
     const RenderReport gpu = state_->engine.render(s, facet::Backend::Gpu);

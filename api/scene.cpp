@@ -121,7 +121,7 @@ scene::Scene engineScene(const SceneDescription& d) {
   scene::Scene s;
   s.source = kSource;
   for (std::size_t i = 0; i < d.materials.size(); ++i)
-    s.materials.push_back(detail::toEngineMaterial(d.materials[i], "materials[" + std::to_string(i) + "]"));
+    s.materials.push_back(api::toEngineMaterial(d.materials[i], "materials[" + std::to_string(i) + "]"));
   if (s.materials.empty()) s.materials.push_back(scene::defaultMaterial());
   if (d.objects.empty()) fail("objects", "a scene needs at least one object");
   for (std::size_t i = 0; i < d.objects.size(); ++i) {
@@ -153,11 +153,11 @@ int Scene::height() const { return data_->scene.render.height; }
 int Scene::objectCount() const { return int(data_->scene.objects.size()); }
 
 Scene loadScene(const std::string& path) {
-  return detail::translateErrors([&] { return wrap(scene::loadScene(path)); });
+  return api::translateErrors([&] { return wrap(scene::loadScene(path)); });
 }
 
 Scene buildScene(const SceneDescription& description) {
-  return detail::translateErrors([&] { return wrap(engineScene(description)); });
+  return api::translateErrors([&] { return wrap(engineScene(description)); });
 }
 
 }  // namespace facet::v0

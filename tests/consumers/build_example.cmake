@@ -1,7 +1,8 @@
 # cmake -P script: builds the C++ example of docs/api.md (its first ```cpp
-# block) against the install in PREFIX and runs it.
+# block) against the install in PREFIX, runs it (it fails on a wrong image)
+# and checks that the library it ran is of this VERSION.
 #   -DCONSUMER=cmake|pkg-config -DPREFIX=dir -DLIBDIR=lib -DDOC=docs/api.md
-#   -DPROJECT=cmake_project -DWORK=dir -DCXX=compiler -DGENERATOR=Ninja
+#   -DPROJECT=cmake_project -DWORK=dir -DCXX=compiler -DGENERATOR=Ninja -DVERSION=x.y.z
 include(${CMAKE_CURRENT_LIST_DIR}/../support/doc_block.cmake)
 facet_doc_block(cpp ${DOC} example)
 file(REMOVE_RECURSE ${WORK})
@@ -31,3 +32,6 @@ else()
 endif()
 run(${program})
 message("${out}")
+if(NOT out MATCHES "^facet ${VERSION} on ")
+  message(FATAL_ERROR "the example ran a library that is not facet ${VERSION}")
+endif()
