@@ -13,9 +13,7 @@ set(FACET_CMAKE_INSTALL_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/facet)
 set(FACET_DATA_INSTALL_DIR ${CMAKE_INSTALL_DATADIR}/facet)
 
 install(TARGETS facet RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(TARGETS facet_library facet_version EXPORT facetTargets
-  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
-  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(TARGETS facet_library facet_version EXPORT facetTargets LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/facet ${PROJECT_BINARY_DIR}/include/facet
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT facetTargets NAMESPACE facet:: DESTINATION ${FACET_CMAKE_INSTALL_DIR})
@@ -30,6 +28,7 @@ install(FILES ${PROJECT_BINARY_DIR}/facetConfig.cmake ${PROJECT_BINARY_DIR}/face
 # facet.pc finds its prefix from its own folder, so an install moved or made
 # with `cmake --install --prefix` stays right.
 file(RELATIVE_PATH FACET_PC_TO_PREFIX /${CMAKE_INSTALL_LIBDIR}/pkgconfig /)
+string(REGEX REPLACE "/$" "" FACET_PC_TO_PREFIX ${FACET_PC_TO_PREFIX})
 configure_file(${CMAKE_CURRENT_LIST_DIR}/facet.pc.in ${PROJECT_BINARY_DIR}/facet.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/facet.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 
