@@ -23,7 +23,8 @@ glm::dvec3 unit(const Vec3& v, const char* name) {
 }
 
 BrdfValue evaluate(const materials::f64::BrdfParams& params, const Vec3& l, const Vec3& v) {
-  const materials::f64::BrdfTerms t = materials::f64::brdf_terms(params, glm::dvec3(0, 0, 1), unit(l, "l"), unit(v, "v"));
+  const materials::f64::BrdfTerms t =
+      materials::f64::brdf_terms(params, glm::dvec3(0, 0, 1), unit(l, "l"), unit(v, "v"));
   return {publicVector(t.value), publicVector(t.specular), publicVector(t.diffuse), publicVector(t.F), t.D, t.G};
 }
 
@@ -32,9 +33,9 @@ BrdfValue evaluate(const materials::f64::BrdfParams& params, const Vec3& l, cons
 std::vector<BrdfValue> evaluateBrdf(const Material& material, const std::vector<Vec3>& l, const std::vector<Vec3>& v) {
   return api::translateErrors([&] {
     if (l.size() != v.size())
-      throw scene::InputError("brdf", 0, "l, v",
-                              "need as many directions each (" + std::to_string(l.size()) + " and " +
-                                  std::to_string(v.size()) + ")");
+      throw scene::InputError(
+          "brdf", 0, "l, v",
+          "need as many directions each (" + std::to_string(l.size()) + " and " + std::to_string(v.size()) + ")");
     const materials::f64::BrdfParams params = materials::toParams64(api::toEngineMaterial(material, "material"));
     std::vector<BrdfValue> values;
     values.reserve(l.size());

@@ -90,8 +90,8 @@ ParityReport Renderer::parity(const Scene& input, const RenderSettings& settings
     const RenderReport cpu = state_->engine.render(s, facet::Backend::Cpu);
     const RenderReport gpu = state_->engine.render(s, facet::Backend::Gpu);
     const analysis::ParityReport r = analysis::compareImages(cpu.image, gpu.image);
-    ParityReport out{r.width, r.height, r.covered, r.coverageMismatches, r.coveragePass, {}, r.pass,
-                     analysis::describe(r)};
+    ParityReport out{r.width,        r.height, r.covered, r.coverageMismatches,
+                     r.coveragePass, {},       r.pass,    analysis::describe(r)};
     for (const analysis::AovParity& a : r.aovs)
       out.aovs.push_back({a.name, a.maxRelative, a.meanRelative, a.tolerance, a.shareOver, a.pass});
     return out;

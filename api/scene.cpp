@@ -57,7 +57,8 @@ scene::ControlCage engineCage(const Cage& cage, const std::string& where) {
   }
   if (cage.faceVertexCounts.empty()) fail(where + ".faceVertexCounts", "a cage needs at least one face");
   if (corners != cage.faceVertexIndices.size())
-    fail(where + ".faceVertexIndices", "must hold " + std::to_string(corners) + " indices (the sum of faceVertexCounts)");
+    fail(where + ".faceVertexIndices",
+         "must hold " + std::to_string(corners) + " indices (the sum of faceVertexCounts)");
   auto vertex = [&](int index, const std::string& field) {
     if (index < 0 || index >= out.vertexCount())
       fail(field, "vertex " + std::to_string(index) + " is out of range (the cage has " +
@@ -65,7 +66,8 @@ scene::ControlCage engineCage(const Cage& cage, const std::string& where) {
     return index;
   };
   for (std::size_t i = 0; i < cage.faceVertexIndices.size(); ++i)
-    out.faceVertexIndices.push_back(vertex(cage.faceVertexIndices[i], where + ".faceVertexIndices[" + std::to_string(i) + "]"));
+    out.faceVertexIndices.push_back(
+        vertex(cage.faceVertexIndices[i], where + ".faceVertexIndices[" + std::to_string(i) + "]"));
   out.faceVertexCounts = cage.faceVertexCounts;
   for (std::size_t i = 0; i < cage.creases.size(); ++i) {
     const std::string field = where + ".creases[" + std::to_string(i) + "]";

@@ -67,8 +67,7 @@ T choice(const std::string& name, const char* argument, std::initializer_list<st
     if (name == key) return value;
     list += (list.empty() ? "" : ", ") + std::string(key);
   }
-  throw facet::Error(facet::ErrorKind::BadInput,
-                     std::string(argument) + " '" + name + "': expected one of: " + list);
+  throw facet::Error(facet::ErrorKind::BadInput, std::string(argument) + " '" + name + "': expected one of: " + list);
 }
 
 facet::RenderSettings settingsOf(std::optional<std::pair<int, int>> size, const std::string& backend,
@@ -105,9 +104,9 @@ py::dict parityDict(facet::Renderer& renderer, const py::object& sceneOrPath, co
   }();
   py::dict aovs;
   for (const facet::AovParity& a : r.aovs)
-    aovs[py::str(a.name)] = py::dict(py::arg("max_relative") = a.maxRelative, py::arg("mean_relative") = a.meanRelative,
-                                     py::arg("tolerance") = a.tolerance, py::arg("share_over") = a.shareOver,
-                                     py::arg("pass") = a.pass);
+    aovs[py::str(a.name)] =
+        py::dict(py::arg("max_relative") = a.maxRelative, py::arg("mean_relative") = a.meanRelative,
+                 py::arg("tolerance") = a.tolerance, py::arg("share_over") = a.shareOver, py::arg("pass") = a.pass);
   return py::dict(py::arg("pass") = r.pass, py::arg("width") = r.width, py::arg("height") = r.height,
                   py::arg("covered") = r.covered, py::arg("coverage_mismatches") = r.coverageMismatches,
                   py::arg("coverage_pass") = r.coveragePass, py::arg("aovs") = aovs, py::arg("summary") = r.summary);
@@ -129,8 +128,8 @@ std::vector<Vec3> vectors(const Doubles& a) {
 
 py::dict brdfDict(const facet::Material& material, const py::object& l, const py::object& v) {
   // Broadcast l against v, as numpy would, so one direction may meet many.
-  const py::sequence both = py::module_::import("numpy").attr("broadcast_arrays")(
-      directions(l.cast<Doubles>(), "l"), directions(v.cast<Doubles>(), "v"));
+  const py::sequence both = py::module_::import("numpy").attr("broadcast_arrays")(directions(l.cast<Doubles>(), "l"),
+                                                                                  directions(v.cast<Doubles>(), "v"));
   const Doubles ls = Doubles::ensure(both[0]), vs = Doubles::ensure(both[1]);
   const std::vector<facet::BrdfValue> values = facet::evaluateBrdf(material, vectors(ls), vectors(vs));
   std::vector<py::ssize_t> shape(ls.shape(), ls.shape() + ls.ndim() - 1);
@@ -206,8 +205,7 @@ PYBIND11_MODULE(facet, m) {
       .def(py::init([](facet::Cage cage, int material, const std::string& name, bool subdivided) {
              return facet::Object{name, std::move(cage), material, subdivided};
            }),
-           py::arg("cage"), py::kw_only(), py::arg("material") = 0, py::arg("name") = "",
-           py::arg("subdivided") = true);
+           py::arg("cage"), py::kw_only(), py::arg("material") = 0, py::arg("name") = "", py::arg("subdivided") = true);
 
   py::class_<facet::Light>(m, "Light", "A punctual light; color is c_light")
       .def(py::init([](const std::string& type, Vec3 color, Vec3 position, Vec3 direction, double inner, double outer) {
@@ -222,7 +220,9 @@ PYBIND11_MODULE(facet, m) {
            py::arg("outer_cone") = 45.0);
 
   py::class_<facet::Camera>(m, "Camera")
-      .def(py::init([](Vec3 eye, Vec3 target, Vec3 up, double fov) { return facet::Camera{eye, target, up, fov}; }),
+      .def(py::init([](Vec3 eye, Vec3 target, Vec3 up, double fov) {
+             return facet::Camera{eye, target, up, fov};
+           }),
            py::kw_only(), py::arg("eye") = Vec3{0, 0, 5}, py::arg("target") = Vec3{0, 0, 0},
            py::arg("up") = Vec3{0, 1, 0}, py::arg("fov") = 40.0);
 
@@ -230,9 +230,14 @@ PYBIND11_MODULE(facet, m) {
       .def(py::init([](const py::object& file, double intensity, double rotation, const std::string& method,
                        int samples, bool occlusion) {
              const auto ibl = choice<facet::IblMethod>(
-                 method, "method", {{"prefiltered", facet::IblMethod::Prefiltered}, {"sampled", facet::IblMethod::Sampled}});
-             return facet::Environment{py::module_::import("os").attr("fspath")(file).cast<std::string>(), intensity,
-                                       rotation, ibl, samples, occlusion};
+                 method, "method",
+                 {{"prefiltered", facet::IblMethod::Prefiltered}, {"sampled", facet::IblMethod::Sampled}});
+             return facet::Environment{py::module_::import("os").attr("fspath")(file).cast<std::string>(),
+                                       intensity,
+                                       rotation,
+                                       ibl,
+                                       samples,
+                                       occlusion};
            }),
            py::arg("file"), py::kw_only(), py::arg("intensity") = 1.0, py::arg("rotation") = 0.0,
            py::arg("method") = "prefiltered", py::arg("samples") = 16, py::arg("occlusion") = true);
@@ -247,10 +252,14 @@ PYBIND11_MODULE(facet, m) {
            py::arg("objects"), py::kw_only(), py::arg("materials") = std::vector<facet::Material>{},
            py::arg("lights") = std::vector<facet::Light>{}, py::arg("camera") = py::none(),
            py::arg("environment") = py::none(), py::arg("size") = std::pair<int, int>{512, 512})
-      .def_property_readonly("size", [](const facet::Scene& s) { return std::pair<int, int>{s.width(), s.height()}; })
+      .def_property_readonly("size",
+                             [](const facet::Scene& s) {
+                               return std::pair<int, int>{s.width(), s.height()};
+                             })
       .def_property_readonly("object_count", &facet::Scene::objectCount);
-  m.def("load_scene", [](const py::object& path) { return sceneOf(path); }, py::arg("path"),
-        "A .json scene, an .obj cage or a .gltf/.glb file");
+  m.def(
+      "load_scene", [](const py::object& path) { return sceneOf(path); }, py::arg("path"),
+      "A .json scene, an .obj cage or a .gltf/.glb file");
 
   py::class_<facet::Renderer>(m, "Renderer", "Keeps the GPU device and its compiled kernels between renders")
       .def(py::init<const std::string&>(), py::arg("adapter") = "")

@@ -49,7 +49,7 @@ void addBenchCommand(CLI::App& app) {
   auto o = std::make_shared<BenchCommandOptions>();
   auto* c = app.add_subcommand("bench", "Speed against accuracy: Pareto charts, stability map, scaling and peers");
   c->add_option("-o,--output", o->bench.output, "Output folder (CSVs, charts, report.md)")->required();
-  c->add_option("--root", o->bench.root, "The folder that holds scenes/ (default: share/facet beside the binary)")
+  c->add_option("--root", o->bench.root, "The folder that holds scenes/ (default: share/facet of the binary's prefix)")
       ->check(CLI::ExistingDirectory);
   c->add_flag("--quick", o->bench.quick, "Smoke run for CI: tiny sizes, few points, one repetition");
   c->add_option("--repeats", o->bench.repeats, "Timed runs per point (the median is reported)")

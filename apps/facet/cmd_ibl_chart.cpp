@@ -85,9 +85,11 @@ void addIblChartCommand(CLI::App& app) {
                                "Error against time of sampled (N = 1, 4, 16, ...) and prefiltered image-based "
                                "lighting, per roughness and environment: CSV, chart, previews");
   c->add_option("-o,--output", o->output, "Output folder")->required();
-  c->add_option("--scene", o->scene, "Geometry and materials (its punctual lights are removed; default: the preview in share/facet)")
+  c->add_option("--scene", o->scene,
+                "Geometry and materials (its punctual lights are removed; default: the preview in share/facet)")
       ->check(CLI::ExistingFile);
-  c->add_option("--envs", o->environments, "Environment maps, one chart panel each (default: courtyard and sunrise in share/facet)")
+  c->add_option("--envs", o->environments,
+                "Environment maps, one chart panel each (default: courtyard and sunrise in share/facet)")
       ->delimiter(',')
       ->check(CLI::ExistingFile);
   c->add_option("--size", o->size, "Image size WIDTHxHEIGHT (default 128x64)");

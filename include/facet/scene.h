@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace facet {
@@ -15,8 +16,8 @@ struct Vec3 {
 };
 
 // A material as a scene file writes it (docs/shading.md): every field is
-// optional; a preset gives the rest. Names: distribution ggx|beckmann|...,
-// geometry, fresnel as `facet brdf --help` lists them.
+// optional; a preset gives the rest. distribution, geometry and fresnel take
+// the names `facet brdf --help` lists (ggx, smith-ggx-correlated, schlick, ...).
 struct Material {
   std::string name;
   std::optional<std::string> preset;
@@ -48,8 +49,8 @@ struct Cage {
 struct Object {
   std::string name;
   Cage cage;
-  int material = 0;          // index into SceneDescription::materials
-  bool subdivided = true;    // false: the polygons as authored
+  int material = 0;        // index into SceneDescription::materials
+  bool subdivided = true;  // false: the polygons as authored
 };
 
 enum class LightType { Directional, Point, Spot };
