@@ -162,7 +162,18 @@ std::vector<T> integers(const py::array_t<T, py::array::c_style | py::array::for
 PYBIND11_MODULE(facet, m) {
   m.doc() = "facet: physically based materials on subdivision surfaces, rendered on the GPU and a CPU reference";
   m.attr("__version__") = facet::version();
-  py::register_exception<facet::Error>(m, "Error", PyExc_ValueError);
+  // facet.Error(message), a ValueError whose exit_code is the kind of failure
+  // (the exit code `facet` gives it: 1 bad input, 2 output, 3 GPU, 4 internal).
+  static py::exception<facet::Error> error(m, "Error", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr thrown) {
+    try {
+      if (thrown) std::rethrow_exception(thrown);
+    } catch (const facet::Error& e) {
+      py::object instance = py::handle(error.ptr())(e.what());
+      instance.attr("exit_code") = e.exitCode();
+      PyErr_SetObject(error.ptr(), instance.ptr());
+    }
+  });
 
   using OptVec = std::optional<Vec3>;
   using OptText = std::optional<std::string>;

@@ -155,6 +155,16 @@ class Scenes(unittest.TestCase):
         with self.assertRaises(facet.Error) as raised:
             facet.load_scene(bad)
         self.assertEqual(str(raised.exception), expected)
+        self.assertEqual(raised.exception.exit_code, 1)
+
+    def test_a_missing_adapter_is_a_gpu_failure_as_on_the_command_line(self):
+        scene = EXAMPLES / "gold_cube.gltf"
+        run = cli("render", scene, "-o", WORK / "none.exr", "--adapter", "no-such-adapter")
+        with self.assertRaises(facet.Error) as raised:
+            facet.render(scene, adapter="no-such-adapter")
+        self.assertEqual(raised.exception.exit_code, run.returncode)
+        self.assertEqual(run.returncode, 3)
+        self.assertEqual("facet: error: " + str(raised.exception), run.stderr.strip())
 
     def test_bad_cages_and_materials_name_the_field(self):
         corners = np.zeros((4, 3))
