@@ -14,10 +14,10 @@
 namespace facet::analysis::bench {
 
 struct BenchOptions {
-  std::filesystem::path output;      // everything is written below it
-  std::filesystem::path root = ".";  // the folder holding scenes/ (the source tree)
-  bool quick = false;                // the CI smoke run: tiny sizes, few points, one repetition
-  int repeats = 5;                   // timed runs per point; the median is reported
+  std::filesystem::path output;  // everything is written below it
+  std::filesystem::path root;    // the folder holding scenes/ (share/facet or the source tree)
+  bool quick = false;            // the CI smoke run: tiny sizes, few points, one repetition
+  int repeats = 5;               // timed runs per point; the median is reported
 };
 
 // The sections, in the order `facet bench` runs them.

@@ -11,6 +11,7 @@
 
 #include "analysis/bench/bench.h"
 #include "commands.h"
+#include "data_folder.h"
 
 namespace facet::cli {
 namespace {
@@ -18,7 +19,7 @@ namespace {
 namespace bench = analysis::bench;
 
 struct BenchCommandOptions {
-  bench::BenchOptions bench;
+  bench::BenchOptions bench;  // root: --root, else dataFolder()
   std::vector<std::string> sections{"pareto", "stability", "scaling"};
   std::string adapter;
 };
@@ -26,6 +27,7 @@ struct BenchCommandOptions {
 void runBench(const BenchCommandOptions& o) {
   std::filesystem::create_directories(o.bench.output);
   bench::BenchOptions options = o.bench;
+  if (options.root.empty()) options.root = dataFolder();
   if (options.quick) options.repeats = 1;
   const std::set<std::string> chosen(o.sections.begin(), o.sections.end());
   analysis::Report report;
@@ -47,7 +49,7 @@ void addBenchCommand(CLI::App& app) {
   auto o = std::make_shared<BenchCommandOptions>();
   auto* c = app.add_subcommand("bench", "Speed against accuracy: Pareto charts, stability map, scaling and peers");
   c->add_option("-o,--output", o->bench.output, "Output folder (CSVs, charts, report.md)")->required();
-  c->add_option("--root", o->bench.root, "The source tree: the folder that holds scenes/ (default: .)")
+  c->add_option("--root", o->bench.root, "The folder that holds scenes/ (default: share/facet of the binary's prefix)")
       ->check(CLI::ExistingDirectory);
   c->add_flag("--quick", o->bench.quick, "Smoke run for CI: tiny sizes, few points, one repetition");
   c->add_option("--repeats", o->bench.repeats, "Timed runs per point (the median is reported)")

@@ -10,6 +10,7 @@
 
 #include "analysis/ibl_chart.h"
 #include "commands.h"
+#include "data_folder.h"
 #include "material_options.h"
 #include "scene_options.h"
 #include "scenes/scene_file.h"
@@ -19,8 +20,8 @@ namespace {
 
 struct ChartOptions {
   std::string output;
-  std::string scene = "scenes/examples/preview.json";
-  std::vector<std::string> environments{"scenes/environments/courtyard_256x128.hdr", "scenes/environments/sunrise.exr"};
+  std::string scene;                      // default: the preview in dataFolder()
+  std::vector<std::string> environments;  // default: courtyard and sunrise in dataFolder()
   std::string size = "128x64";
   std::string alphas = "0.05,0.25,0.6";
   int maxSamples = 4096;
@@ -52,6 +53,10 @@ std::vector<int> sampleCounts(int maxSamples) {
 }
 
 void runIblChart(ChartOptions o) {
+  if (o.scene.empty()) o.scene = dataFolder() / "scenes/examples/preview.json";
+  if (o.environments.empty())
+    for (const char* map : {"courtyard_256x128.hdr", "sunrise.exr"})
+      o.environments.push_back(dataFolder() / "scenes/environments" / map);
   if (o.quick) {
     o.size = "48x24";
     o.alphas = "0.25";
@@ -80,9 +85,11 @@ void addIblChartCommand(CLI::App& app) {
                                "Error against time of sampled (N = 1, 4, 16, ...) and prefiltered image-based "
                                "lighting, per roughness and environment: CSV, chart, previews");
   c->add_option("-o,--output", o->output, "Output folder")->required();
-  c->add_option("--scene", o->scene, "Geometry and materials (its punctual lights are removed)")
+  c->add_option("--scene", o->scene,
+                "Geometry and materials (its punctual lights are removed; default: the preview in share/facet)")
       ->check(CLI::ExistingFile);
-  c->add_option("--envs", o->environments, "Environment maps, one chart panel each")
+  c->add_option("--envs", o->environments,
+                "Environment maps, one chart panel each (default: courtyard and sunrise in share/facet)")
       ->delimiter(',')
       ->check(CLI::ExistingFile);
   c->add_option("--size", o->size, "Image size WIDTHxHEIGHT (default 128x64)");

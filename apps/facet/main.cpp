@@ -13,6 +13,7 @@
 #include "engine/gpu/gpu.h"
 #include "engine/image/image_io.h"
 #include "exit_codes.h"
+#include "facet/version.h"
 #include "scenes/input_error.h"
 
 namespace {
@@ -43,6 +44,7 @@ int fail(facet::cli::ExitCode code, const std::string& message) {
 int main(int argc, char** argv) {
   using namespace facet::cli;
   CLI::App app{"facet: physically based materials on subdivision surfaces, GPU and CPU"};
+  app.set_version_flag("--version", "facet " FACET_VERSION_STRING);
   app.require_subcommand(1);
   addInfoCommand(app);
   addRenderCommand(app);

@@ -1,0 +1,30 @@
+#include "api/material.h"
+
+namespace facet::api {
+namespace {
+
+std::optional<glm::dvec3> engineVector(const std::optional<v0::Vec3>& v) {
+  if (!v) return std::nullopt;
+  return glm::dvec3(v->x, v->y, v->z);
+}
+
+}  // namespace
+
+materials::Material toEngineMaterial(const v0::Material& material, const std::string& where) {
+  materials::MaterialSpec spec;
+  spec.name = material.name;
+  spec.preset = material.preset;
+  spec.distribution = material.distribution;
+  spec.geometry = material.geometry;
+  spec.fresnel = material.fresnel;
+  spec.alpha = material.alpha;
+  spec.roughness = material.roughness;
+  spec.f0 = engineVector(material.f0);
+  spec.ior = engineVector(material.ior);
+  spec.eta = engineVector(material.eta);
+  spec.k = engineVector(material.k);
+  spec.diffuse = engineVector(material.diffuse);
+  return materials::buildMaterial(spec, [&](std::string_view field) { return where + "." + std::string(field); });
+}
+
+}  // namespace facet::api

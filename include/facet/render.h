@@ -1,0 +1,78 @@
+// Rendering a Scene on the GPU kernels (Vulkan compute; lavapipe when there is
+// no GPU) or on the scalar double-precision CPU reference.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "facet/image.h"
+#include "facet/scene.h"
+
+namespace facet {
+namespace v0 {
+
+enum class Backend { Gpu, Cpu };
+enum class Method { Exact, Tessellated };
+
+// Unset fields keep the scene's own choice.
+struct RenderSettings {
+  Backend backend = Backend::Gpu;
+  std::optional<int> width, height;
+  std::optional<Method> method;
+  std::optional<int> samplesPerPixel;   // a square number
+  std::optional<int> tessellationRate;  // tessellated method
+};
+
+struct RenderResult {
+  Image image;
+  std::string device;  // what ran it
+  double milliseconds = 0;
+};
+
+struct AovParity {
+  std::string name;
+  double maxRelative = 0, meanRelative = 0;
+  double tolerance = 0;  // 0: reported, not gated
+  double shareOver = 0;  // of the compared pixels
+  bool pass = true;
+};
+
+// GPU against the CPU reference, AOV by AOV (docs/rendering.md, "Parity").
+struct ParityReport {
+  int width = 0, height = 0;
+  std::size_t covered = 0;  // on both images
+  std::size_t coverageMismatches = 0;
+  bool coveragePass = true;
+  std::vector<AovParity> aovs;
+  bool pass = true;
+  std::string summary;  // the table `facet parity` prints
+};
+
+// Keeps the GPU device and its compiled kernels between renders; one thread
+// at a time. `adapter`: a substring of the adapter's name (default:
+// $FACET_ADAPTER, else the first hardware GPU, else lavapipe).
+class Renderer {
+ public:
+  explicit Renderer(const std::string& adapter = {});
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  RenderResult render(const Scene& scene, const RenderSettings& settings = {});
+  // Renders on both backends (settings.backend is ignored).
+  ParityReport parity(const Scene& scene, const RenderSettings& settings = {});
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+// The library's version, "major.minor.patch".
+const char* version();
+
+}  // namespace v0
+#ifndef FACET_IMPLEMENTATION  // inside libfacet, facet:: is also the engine's
+using namespace v0;
+#endif
+}  // namespace facet

@@ -1,0 +1,120 @@
+// Scenes: loaded from a file (.json, .obj cage, .gltf/.glb) or described in
+// code as plain data, then validated once into an immutable Scene.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace facet {
+namespace v0 {
+
+struct Vec3 {
+  double x = 0, y = 0, z = 0;
+};
+
+// A material as a scene file writes it (docs/shading.md): every field is
+// optional; a preset gives the rest. distribution, geometry and fresnel take
+// the names `facet brdf --help` lists (ggx, smith-ggx-correlated, schlick, ...).
+struct Material {
+  std::string name;
+  std::optional<std::string> preset;
+  std::optional<std::string> distribution;
+  std::optional<std::string> geometry;
+  std::optional<std::string> fresnel;
+  std::optional<double> alpha;      // microfacet alpha
+  std::optional<double> roughness;  // perceptual: alpha = roughness^2
+  std::optional<Vec3> f0;
+  std::optional<Vec3> ior;
+  std::optional<Vec3> eta;
+  std::optional<Vec3> k;
+  std::optional<Vec3> diffuse;
+};
+
+// A Catmull-Clark control cage in world space; indices are 0-based and each
+// face lists its vertices counter-clockwise seen from outside.
+struct Crease {
+  int v0 = 0, v1 = 0;
+  double sharpness = 0;  // >= 10: infinitely sharp
+};
+struct Cage {
+  std::vector<Vec3> positions;
+  std::vector<int> faceVertexCounts;
+  std::vector<int> faceVertexIndices;
+  std::vector<Crease> creases;
+};
+
+struct Object {
+  std::string name;
+  Cage cage;
+  int material = 0;        // index into SceneDescription::materials
+  bool subdivided = true;  // false: the polygons as authored
+};
+
+enum class LightType { Directional, Point, Spot };
+// color is c_light: what a white Lambertian surface facing the light reflects.
+struct Light {
+  LightType type = LightType::Directional;
+  Vec3 color{1, 1, 1};
+  Vec3 position{0, 0, 0};
+  Vec3 direction{0, -1, 0};  // the way the light travels
+  double innerConeDegrees = 30;
+  double outerConeDegrees = 45;
+};
+
+struct Camera {
+  Vec3 eye{0, 0, 5};
+  Vec3 target{0, 0, 0};
+  Vec3 up{0, 1, 0};
+  double verticalFovDegrees = 40;
+};
+
+enum class IblMethod { Sampled, Prefiltered };
+struct Environment {
+  std::string file;  // .exr or .hdr, equirectangular
+  double intensity = 1;
+  double rotationDegrees = 0;
+  IblMethod method = IblMethod::Prefiltered;
+  int samples = 16;  // sampled: pairs per camera sample
+  bool occlusion = true;
+};
+
+// No camera: framed from the default direction; no lights: the default key
+// light; no materials: grey plastic.
+struct SceneDescription {
+  std::optional<Camera> camera;
+  std::vector<Material> materials;
+  std::vector<Object> objects;
+  std::vector<Light> lights;
+  std::optional<Environment> environment;
+  int width = 512, height = 512;
+};
+
+namespace detail {
+struct SceneData;
+}
+
+// A validated scene, cheap to copy (its data is shared and never changes).
+class Scene {
+ public:
+  explicit Scene(std::shared_ptr<const detail::SceneData> data) : data_(std::move(data)) {}
+  const detail::SceneData& data() const { return *data_; }
+  int width() const;
+  int height() const;
+  int objectCount() const;
+
+ private:
+  std::shared_ptr<const detail::SceneData> data_;
+};
+
+// Both throw Error (BadInput) naming the file or the field and the rule.
+Scene loadScene(const std::string& path);
+Scene buildScene(const SceneDescription& description);
+
+}  // namespace v0
+#ifndef FACET_IMPLEMENTATION  // inside libfacet, facet:: is also the engine's
+using namespace v0;
+#endif
+}  // namespace facet

@@ -1,0 +1,201 @@
+"""The installed Python module against the installed `facet` binary: the
+same numbers from both, and facet's own messages in Python's exceptions."""
+import json
+import os
+import pathlib
+import subprocess
+import unittest
+
+import numpy as np
+import OpenImageIO as oiio
+
+import facet
+
+FACET = os.environ["FACET_BINARY"]
+EXAMPLES = pathlib.Path(os.environ["FACET_EXAMPLES_DIR"])
+WORK = pathlib.Path(os.environ["FACET_WORK_DIR"])
+
+
+def cli(*args):
+    return subprocess.run([FACET, *map(str, args)], capture_output=True, text=True)
+
+
+def cli_error(*args):
+    """The message `facet` prints for a failure, without its prefix."""
+    run = cli(*args)
+    assert run.returncode != 0, run.stdout
+    return run.stderr.strip().removeprefix("facet: error: ")
+
+
+def read_exr(path):
+    """{channel: (height, width) array} of an EXR, each in its stored type."""
+    exr = oiio.ImageInput.open(str(path))
+    assert exr, oiio.geterror()
+    spec = exr.spec()
+    planes = {name: exr.read_image(0, 0, index, index + 1, spec.channelformats[index])[..., 0]
+              for index, name in enumerate(spec.channelnames)}
+    exr.close()
+    return planes
+
+
+def cube(sharp_edge=True):
+    corners = np.array([[x, y, z] for z in (-1, 1) for y in (-1, 1) for x in (-1, 1)], dtype=float)
+    quads = [0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4, 2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5]
+    return facet.Cage(corners, [4] * 6, quads, creases=[(0, 1, 10.0)] if sharp_edge else [])
+
+
+class Render(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        WORK.mkdir(parents=True, exist_ok=True)
+        cls.renderer = facet.Renderer()
+
+    @classmethod
+    def tearDownClass(cls):
+        del cls.renderer
+
+    def test_render_of_a_file_is_the_command_lines(self):
+        scene = EXAMPLES / "gold_cube.gltf"
+        exr = WORK / "gold_cube.exr"
+        run = cli("render", scene, "-o", exr, "--size", "40x30", "--backend", "cpu")
+        self.assertEqual(run.returncode, 0, run.stderr)
+        image = self.renderer.render(str(scene), size=(40, 30), backend="cpu")
+        self.assertEqual(image["beauty"].shape, (30, 40, 4))
+        self.assertEqual(image["beauty"].dtype, np.float32)
+        self.assertEqual(image["patch_id"].dtype, np.uint32)
+        self.assertEqual(image["depth"].shape, (30, 40))
+        # A view of the render's plane, not a copy.
+        self.assertFalse(image["beauty"].flags.owndata)
+        reference = read_exr(exr)
+        for channel, name, index in (("R", "beauty", 0), ("G", "beauty", 1), ("B", "beauty", 2), ("A", "beauty", 3),
+                                     ("Z", "depth", None), ("N.Y", "shading_normal", 1), ("uv.U", "uv", 0)):
+            plane = image[name] if index is None else image[name][..., index]
+            np.testing.assert_array_equal(plane, reference[channel], err_msg=channel)
+        np.testing.assert_array_equal(image["face_id"], reference["faceId"])
+        covered = image["beauty"][..., 3] > 0
+        self.assertGreater(covered.sum(), 100)
+        self.assertTrue(np.isinf(image["depth"][~covered]).all())
+
+    def test_a_cage_built_in_python_renders_on_the_gpu_as_on_the_cpu(self):
+        scene = facet.Scene([facet.Object(cube(), name="cube")],
+                            materials=[facet.Material(preset="gold", roughness=0.4)],
+                            lights=[facet.Light("directional", direction=(-1, -1, -1), color=(2, 2, 2))],
+                            camera=facet.Camera(eye=(3, 2.5, 4), fov=35), size=(48, 32))
+        self.assertEqual(scene.size, (48, 32))
+        image = self.renderer.render(scene)
+        beauty = image["beauty"]
+        covered = beauty[..., 3] > 0
+        self.assertGreater(covered.mean(), 0.1)
+        self.assertTrue(np.isfinite(beauty).all())
+        self.assertGreater(beauty[covered, :3].mean(), 0)
+        # Seen from a corner: at least the three faces turned to the eye, all of the cage's six.
+        faces = set(image["face_id"][covered].tolist())
+        self.assertGreaterEqual(len(faces), 3)
+        self.assertTrue(faces <= set(range(6)), faces)
+        self.assertTrue((image["face_id"][~covered] == 0xFFFFFFFF).all())
+        report = self.renderer.parity(scene)
+        self.assertTrue(report["pass"], report["summary"])
+        self.assertLessEqual(abs(report["covered"] - int(covered.sum())), report["coverage_mismatches"])
+        self.assertIn("beauty", report["aovs"])
+        self.assertLessEqual(report["aovs"]["depth"]["max_relative"], report["aovs"]["depth"]["tolerance"])
+
+    def test_render_settings_are_checked(self):
+        with self.assertRaisesRegex(facet.Error, r"render settings: width: must be in \[1, 16384\]"):
+            self.renderer.render(str(EXAMPLES / "gold_cube.gltf"), size=(0, 10))
+        with self.assertRaisesRegex(facet.Error, "backend 'vulkan': expected one of: gpu, cpu"):
+            self.renderer.render(str(EXAMPLES / "gold_cube.gltf"), backend="vulkan")
+        with self.assertRaisesRegex(facet.Error, "square number"):
+            self.renderer.render(str(EXAMPLES / "gold_cube.gltf"), spp=3)
+
+
+class Scenes(unittest.TestCase):
+    def test_a_bad_scene_file_gives_the_command_lines_message(self):
+        WORK.mkdir(parents=True, exist_ok=True)
+        bad = WORK / "bad_fov.json"
+        cage = EXAMPLES.parent / "cages" / "cube.obj"
+        bad.write_text(json.dumps({"camera": {"fov": 500}, "objects": [{"mesh": str(cage)}]}))
+        expected = cli_error("render", bad, "-o", WORK / "bad.exr")
+        self.assertIn("camera.fov", expected)
+        with self.assertRaises(facet.Error) as raised:
+            facet.load_scene(bad)
+        self.assertEqual(str(raised.exception), expected)
+        self.assertEqual(raised.exception.exit_code, 1)
+
+    def test_a_missing_adapter_is_a_gpu_failure_as_on_the_command_line(self):
+        scene = EXAMPLES / "gold_cube.gltf"
+        run = cli("render", scene, "-o", WORK / "none.exr", "--adapter", "no-such-adapter")
+        with self.assertRaises(facet.Error) as raised:
+            facet.render(scene, adapter="no-such-adapter")
+        self.assertEqual(raised.exception.exit_code, run.returncode)
+        self.assertEqual(run.returncode, 3)
+        self.assertEqual("facet: error: " + str(raised.exception), run.stderr.strip())
+
+    def test_bad_cages_and_materials_name_the_field(self):
+        corners = np.zeros((4, 3))
+        with self.assertRaisesRegex(facet.Error, r"objects\[0\].cage.faceVertexIndices\[3\]: vertex 7 is out of range"):
+            facet.Scene([facet.Object(facet.Cage(corners, [4], [0, 1, 2, 7]))])
+        with self.assertRaisesRegex(facet.Error, r"objects\[0\].cage.faceVertexCounts\[0\]: a face needs at least 3"):
+            facet.Scene([facet.Object(facet.Cage(corners, [2], [0, 1]))])
+        with self.assertRaisesRegex(facet.Error, r"objects\[0\].material: must be in \[0, 0\]"):
+            facet.Scene([facet.Object(cube(), material=1)])
+        with self.assertRaisesRegex(facet.Error, r"materials\[0\].*alpha"):
+            facet.Scene([facet.Object(cube())], materials=[facet.Material(alpha=2.0)])
+        with self.assertRaisesRegex(facet.Error, "camera: eye and target must differ"):
+            facet.Scene([facet.Object(cube())], camera=facet.Camera(eye=(0, 0, 0)))
+        with self.assertRaisesRegex(facet.Error, "environment.file"):
+            facet.Scene([facet.Object(cube())], environment=facet.Environment(WORK / "missing.exr"))
+
+
+class Brdf(unittest.TestCase):
+    def test_brdf_is_the_command_lines_at_every_direction(self):
+        material = dict(d="ggx", g="smith-ggx-correlated", f="schlick", alpha=0.3, f0=(0.9, 0.6, 0.3),
+                        diffuse=(0.1, 0.2, 0.3))
+        cases = [(45, 45, 180), (10, 70, 90), (80, 5, 0), (30, 60, 135)]
+
+        def direction(theta, phi):
+            t, p = np.radians(theta), np.radians(phi)
+            return [np.sin(t) * np.cos(p), np.sin(t) * np.sin(p), np.cos(t)]
+
+        l = np.array([direction(tl, 0) for tl, _, _ in cases])
+        v = np.array([direction(tv, phi) for _, tv, phi in cases])
+        values = facet.brdf(l, v, **material)
+        self.assertEqual(values["f"].shape, (len(cases), 3))
+        self.assertEqual(values["D"].shape, (len(cases),))
+        for i, (theta_l, theta_v, phi) in enumerate(cases):
+            run = cli("brdf", "--d", "ggx", "--g", "smith-ggx-correlated", "--f", "schlick", "--alpha", 0.3,
+                      "--f0", "0.9,0.6,0.3", "--diffuse", "0.1,0.2,0.3", "--theta-l", theta_l, "--theta-v", theta_v,
+                      "--phi", phi, "--json")
+            self.assertEqual(run.returncode, 0, run.stderr)
+            expected = json.loads(run.stdout)
+            for key in ("f", "specular", "diffuse", "F", "D", "G"):
+                np.testing.assert_allclose(values[key][i], expected[key], rtol=1e-12, atol=1e-15, err_msg=key)
+
+    def test_directions_broadcast_as_numpy_does(self):
+        theta = np.radians(np.linspace(0, 80, 9))
+        l = np.stack([np.sin(theta), np.zeros_like(theta), np.cos(theta)], axis=-1).reshape(3, 3, 3)
+        v = np.array([0.0, 0.0, 1.0])
+        grid = facet.brdf(l, v, preset="copper", roughness=0.5)
+        self.assertEqual(grid["f"].shape, (3, 3, 3))
+        one = facet.brdf(l[1, 2], v, preset="copper", roughness=0.5)
+        np.testing.assert_array_equal(grid["f"][1, 2], one["f"])
+        self.assertEqual(one["D"].shape, ())
+        # Reciprocity: f(l, v) = f(v, l).
+        swapped = facet.brdf(v, l, preset="copper", roughness=0.5)
+        np.testing.assert_allclose(swapped["f"], grid["f"], rtol=1e-12)
+
+    def test_bad_arguments_raise_facets_messages(self):
+        expected = cli_error("brdf", "--preset", "unobtainium")
+        with self.assertRaises(facet.Error) as raised:
+            facet.brdf([0, 0, 1], [0, 0, 1], preset="unobtainium")
+        self.assertIn("unobtainium", str(raised.exception))
+        self.assertIn(str(raised.exception).split(": ", 1)[1], expected)
+        with self.assertRaisesRegex(facet.Error, r"l: expected an array of shape \(\.\.\., 3\)"):
+            facet.brdf(np.zeros((4, 2)), [0, 0, 1], preset="gold", roughness=0.3)
+        with self.assertRaisesRegex(facet.Error, "l: a direction must be finite and not the zero vector"):
+            facet.brdf([0, 0, 0], [0, 0, 1], preset="gold", roughness=0.3)
+        with self.assertRaises(ValueError):  # facet.Error is a ValueError
+            facet.brdf([0, 0, 1], [0, 0, 1], alpha=-1)
+
+
+if __name__ == "__main__":
+    unittest.main()
