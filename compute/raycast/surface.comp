@@ -1,9 +1,10 @@
 // Per camera ray that hit: the surface point, its limit normal and, from the
 // centre ray, the pixel's AOVs; per light of a shaded sample, the unshadowed
 // radiance pi f(l, v) c_light (n.l) and the shadow ray that decides it; then
-// the environment's share (docs/rendering.md): prefiltered, or sampled
-// without occlusion, in one slot that no ray tests; sampled with occlusion,
-// one slot and shadow ray per environment and per BRDF sample. A ray that
+// the environment's share (docs/rendering.md): prefiltered, or sampled or
+// filtered without occlusion, in one slot that no ray tests; sampled or
+// filtered with occlusion, one slot and shadow ray per environment and per
+// BRDF sample. A ray that
 // misses writes the miss AOVs and, with an environment, the radiance it
 // sees in the environment's first slot. Every slot gets its contribution;
 // the shadow rays that decide some of them are appended to one compacted
@@ -11,8 +12,9 @@
 // samples or pixels that need no ray.
 //
 // Specialization: LIGHT_COUNT, ENVIRONMENT
-// (0 none, 1 sampled, 2 prefiltered), OCCLUSION (sampled: 1 traces the
-// environment's shadow rays), and the BRDF models D_MODEL, G_MODEL,
+// (0 none, 1 sampled, 2 prefiltered, 3 filtered), OCCLUSION (sampled,
+// filtered: 1 traces the environment's shadow rays), ENVIRONMENT_SAMPLES
+// (filtered: 1 adds the environment technique), and the BRDF models D_MODEL, G_MODEL,
 // F_MODEL, each -1 when the scene's materials use several (the model is then
 // read per material).
 #version 460
@@ -31,6 +33,8 @@
 #include "compute/shared/random.h"
 #include "materials/shading/lights.h"
 #include "compute/shared/sampled_environment.h"
+#include "compute/shared/prefilter.h"
+#include "compute/shared/filtered_environment.h"
 
 layout(constant_id = 1) const int LIGHT_COUNT = 1;
 layout(constant_id = 2) const int D_MODEL = -1;
@@ -38,6 +42,7 @@ layout(constant_id = 3) const int G_MODEL = -1;
 layout(constant_id = 4) const int F_MODEL = -1;
 layout(constant_id = 5) const int ENVIRONMENT = 0;
 layout(constant_id = 6) const int OCCLUSION = 1;
+layout(constant_id = 7) const int ENVIRONMENT_SAMPLES = 0;
 
 layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
 layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord materials[]; };
@@ -93,14 +98,14 @@ void write_shadowed(uint slot, vec3 radiance, vec3 position, vec3 ng, vec3 direc
       RayRecord(origin.x, origin.y, origin.z, frame.shadowOffset, direction.x, direction.y, direction.z, tMax), slot);
 }
 
-// Sampled method, one sample of either technique: its share, and with
+// Sampled or filtered method, one sample of either technique: its share,
+// radiance read at chain level `lod` (filtered) or from the map, and with
 // OCCLUSION its shadow ray for `slot`.
-void environment_sample(uint slot, BrdfParams params, vec3 position, vec3 n, vec3 ng, vec3 v, MisSample s,
+void environment_sample(uint slot, BrdfParams params, vec3 position, vec3 n, vec3 ng, vec3 v, MisSample s, float lod,
                         inout vec3 unshadowed) {
   bool arrives = mis_sample_arrives(s, n, ng);
-  vec3 radiance = arrives ? mis_sample_share(params, n, v, s, environment_radiance(s.direction),
-                                             frame.environmentSamples)
-                          : vec3(0.0);
+  vec3 incoming = ENVIRONMENT == 3 ? filtered_radiance(s.direction, lod) : environment_radiance(s.direction);
+  vec3 radiance = arrives ? mis_sample_share(params, n, v, s, incoming, frame.environmentSamples) : vec3(0.0);
   if (OCCLUSION == 0)
     unshadowed += radiance;
   else if (arrives)
@@ -125,15 +130,26 @@ void shade_environment(uint first, uint pixel, uint sample_index, uint material,
     write_unshadowed(first, frame.environmentIntensity * radiance);
     return;
   }
+  // Per pair, the environment technique's slot (if drawn), then the BRDF technique's.
+  bool with_environment = ENVIRONMENT == 1 || ENVIRONMENT_SAMPLES == 1;
+  uint stride = with_environment ? 2u : 1u;
   vec3 unshadowed = vec3(0.0);
   for (uint k = 0u; k < frame.environmentSamples; ++k) {
     EnvironmentPair pair = environment_pair(params, n, v, pixel, sample_index, frame.environmentSeed, k);
-    vec4 e = sample_environment(pair.texel_bits, pair.environment_u);
-    environment_sample(first + 2u * k, params, position, n, ng, v,
-                       environment_technique_sample(params, n, v, from_map(e.xyz), e.w), unshadowed);
+    uint slot = first + stride * k;
+    if (with_environment) {
+      vec4 e = sample_environment(pair.texel_bits, pair.environment_u);
+      environment_sample(slot, params, position, n, ng, v,
+                         environment_technique_sample(params, n, v, from_map(e.xyz), e.w), 0.0, unshadowed);
+    }
     vec3 lb = pair.brdf_direction;
-    environment_sample(first + 2u * k + 1u, params, position, n, ng, v,
-                       brdf_technique_sample(params, n, v, lb, environment_pdf(to_map(lb))), unshadowed);
+    float pdf_e = with_environment ? environment_pdf(to_map(lb)) : 0.0;
+    MisSample s = filtered_brdf_sample(params, n, v, lb, with_environment, pdf_e);
+    uvec3 source = level_extent(0);
+    float lod = ENVIRONMENT == 3 ? filtered_sample_lod(s, frame.environmentSamples, int(source.y), int(source.z),
+                                                       int(frame.levelCount))
+                                 : 0.0;
+    environment_sample(slot + stride - 1u, params, position, n, ng, v, s, lod, unshadowed);
   }
   if (OCCLUSION == 0) write_unshadowed(first, unshadowed);
 }

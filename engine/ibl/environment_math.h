@@ -35,6 +35,7 @@ FACET_ENVIRONMENT_GLSL_BUILTINS
 #include "compute/shared/prefilter.h"
 #include "compute/shared/random.h"
 #include "compute/shared/sampled_environment.h"
+#include "compute/shared/filtered_environment.h"
 }  // namespace f64
 
 namespace f32 {
@@ -49,6 +50,7 @@ FACET_ENVIRONMENT_GLSL_BUILTINS
 #include "compute/shared/prefilter.h"
 #include "compute/shared/random.h"
 #include "compute/shared/sampled_environment.h"
+#include "compute/shared/filtered_environment.h"
 }  // namespace f32
 
 }  // namespace facet::materials
