@@ -5,6 +5,7 @@
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "analysis/gnuplot.h"
 #include "analysis/image_compare.h"
@@ -76,6 +77,24 @@ void writePointsCsv(const fs::path& path, const std::vector<Point>& points) {
       rows);
 }
 
+// The log-log slope of error against N over a curve's points with N >= 16,
+// where the pixel's own strata have begun to resolve: -0.5 for independent
+// samples, steeper for stratified ones. NaN with fewer than two points.
+double errorSlope(const std::vector<Point>& points, const std::string& setup, double alpha, scene::IblMethod method) {
+  std::vector<std::pair<double, double>> xy;
+  for (const Point& p : points)
+    if (p.setup == setup && p.alpha == alpha && p.method == method && p.samples >= 16)
+      xy.emplace_back(std::log(double(p.samples)), std::log(p.relativeRmse));
+  if (xy.size() < 2) return NAN;
+  double mx = 0, my = 0;
+  for (const auto& [x, y] : xy) mx += x / double(xy.size()), my += y / double(xy.size());
+  double sxy = 0, sxx = 0;
+  for (const auto& [x, y] : xy) sxy += (x - mx) * (y - my), sxx += (x - mx) * (x - mx);
+  return sxy / sxx;
+}
+
+std::string slopeLabel(double slope) { return std::isnan(slope) ? "" : ", slope " + formatNumber(std::round(slope * 100) / 100); }
+
 // One panel per setup; per alpha a colour, sampled as a solid line through
 // its N points (N written beside the first alpha's), filtered as a dashed
 // one, the split sum as one large marker of the same colour.
@@ -106,9 +125,11 @@ void writeChart(const fs::path& directory, const std::vector<std::string>& setup
       const char* colour = kColours[a % std::size(kColours)];
       const std::string label = formatNumber(alphas[a]);
       script << (a ? ", " : "") << "DATA index " << block << " using 1:2 with linespoints lw 2 pt 7 ps 0.8 lc rgb '"
-             << colour << "' title 'sampled, alpha " << label << "', DATA index " << block + 1
-             << " using 1:2 with linespoints lw 2 dt 2 pt 9 ps 0.8 lc rgb '" << colour << "' title 'filtered, alpha "
-             << label << "', DATA index " << block + 2 << " using 1:2 with points pt 5 ps 2 lc rgb '" << colour
+             << colour << "' title 'sampled, alpha " << label
+             << slopeLabel(errorSlope(points, setup, alphas[a], scene::IblMethod::Sampled)) << "', DATA index "
+             << block + 1 << " using 1:2 with linespoints lw 2 dt 2 pt 9 ps 0.8 lc rgb '" << colour
+             << "' title 'filtered, alpha " << label
+             << slopeLabel(errorSlope(points, setup, alphas[a], scene::IblMethod::Filtered)) << "', DATA index " << block + 2 << " using 1:2 with points pt 5 ps 2 lc rgb '" << colour
              << "' title 'prefiltered, alpha " << label << "'";
       if (a == 0)
         for (std::size_t curve : {block, block + 1})
@@ -199,6 +220,9 @@ void writeIblChart(Renderer& renderer, const IblChartSettings& settings) {
         for (int samples : settings.sampleCounts)
           if (method == scene::IblMethod::Sampled || samples <= kMaxFilteredChartSamples) measure(method, samples);
       const Image prefiltered = measure(scene::IblMethod::Prefiltered, 1);
+      for (scene::IblMethod method : kMethodsWithSamples)
+        std::printf("  %s: error slope over N >= 16: %.2f\n", methodName(method),
+                    errorSlope(points, setup, alpha, method));
       writeComparison(output / (setup + "_alpha" + formatNumber(alpha) + ".png"), reference.image, prefiltered);
     }
   }

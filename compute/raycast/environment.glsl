@@ -35,22 +35,24 @@ uvec3 level_extent(int level) {
                     : texelFetch(environmentLevels, level).xyz;
 }
 
-vec3 level_texel(int level, uvec3 extent, int x, int y) {
+// RGB radiance and, for the filtered method with environment samples, the
+// environment's density in w.
+vec4 level_texel(int level, uvec3 extent, int x, int y) {
   int i = int(extent.x + uint(y) * extent.y + uint(x));
-  return level == 0 ? texelFetch(environmentTexels, i).rgb : texelFetch(environmentTables, i).rgb;
+  return level == 0 ? texelFetch(environmentTexels, i) : texelFetch(environmentTables, i);
 }
 
-vec3 level_bilinear(int level, vec2 uv) {
+vec4 level_bilinear(int level, vec2 uv) {
   uvec3 extent = level_extent(level);
   BilinearTaps b = environment_bilinear(uv, int(extent.y), int(extent.z));
-  vec3 top = level_texel(level, extent, b.x0, b.y0) * (1.0 - b.fx) + level_texel(level, extent, b.x1, b.y0) * b.fx;
-  vec3 bottom = level_texel(level, extent, b.x0, b.y1) * (1.0 - b.fx) + level_texel(level, extent, b.x1, b.y1) * b.fx;
+  vec4 top = level_texel(level, extent, b.x0, b.y0) * (1.0 - b.fx) + level_texel(level, extent, b.x1, b.y0) * b.fx;
+  vec4 bottom = level_texel(level, extent, b.x0, b.y1) * (1.0 - b.fx) + level_texel(level, extent, b.x1, b.y1) * b.fx;
   return top * (1.0 - b.fy) + bottom * b.fy;
 }
 
 // Radiance arriving from world direction `world`.
 vec3 environment_radiance(vec3 world) {
-  return frame.environmentIntensity * level_bilinear(0, environment_uv(to_map(world)));
+  return frame.environmentIntensity * level_bilinear(0, environment_uv(to_map(world))).rgb;
 }
 
 float texel_pdf(int x, int y) {
@@ -79,7 +81,7 @@ float environment_pdf(vec3 map_direction) {
 }
 
 // Between levels `level` and `level + 1` of the chain or the ladder, linearly.
-vec3 levels_trilinear(vec2 uv, float level) {
+vec4 levels_trilinear(vec2 uv, float level) {
   int count = int(frame.levelCount);
   int lower = min(int(floor(level)), count - 1);
   int upper = min(lower + 1, count - 1);
@@ -88,13 +90,15 @@ vec3 levels_trilinear(vec2 uv, float level) {
 
 // Split sum lookups (engine/ibl/prefiltered_environment.h has the layouts).
 vec3 prefiltered_radiance(vec3 map_direction, float alpha) {
-  return levels_trilinear(environment_uv(map_direction), prefiltered_level(alpha, int(frame.levelCount)));
+  return levels_trilinear(environment_uv(map_direction), prefiltered_level(alpha, int(frame.levelCount))).rgb;
 }
 
 // Filtered method: radiance arriving from world direction `world`, read from
-// the map's mip chain at `lod` (engine/ibl/environment_mip_chain.h).
-vec3 filtered_radiance(vec3 world, float lod) {
-  return frame.environmentIntensity * levels_trilinear(environment_uv(to_map(world)), lod);
+// the map's mip chain at `lod` (engine/ibl/environment_mip_chain.h), and in
+// w the environment's density read from its chain alike.
+vec4 filtered_lookup(vec3 world, float lod) {
+  vec4 texel = levels_trilinear(environment_uv(to_map(world)), lod);
+  return vec4(frame.environmentIntensity * texel.rgb, texel.w);
 }
 
 vec2 dfg_entry(uint table, int i, int j) {

@@ -31,6 +31,7 @@
 #include "compute/shared/dfg.h"
 #include "compute/shared/spherical_harmonics.h"
 #include "compute/shared/random.h"
+#include "compute/shared/scrambled_net.h"
 #include "materials/shading/lights.h"
 #include "compute/shared/sampled_environment.h"
 #include "compute/shared/prefilter.h"
@@ -98,13 +99,11 @@ void write_shadowed(uint slot, vec3 radiance, vec3 position, vec3 ng, vec3 direc
       RayRecord(origin.x, origin.y, origin.z, frame.shadowOffset, direction.x, direction.y, direction.z, tMax), slot);
 }
 
-// Sampled or filtered method, one sample of either technique: its share,
-// radiance read at chain level `lod` (filtered) or from the map, and with
-// OCCLUSION its shadow ray for `slot`.
-void environment_sample(uint slot, BrdfParams params, vec3 position, vec3 n, vec3 ng, vec3 v, MisSample s, float lod,
-                        inout vec3 unshadowed) {
+// Sampled or filtered method, one sample of either technique: its share for
+// radiance `incoming`, and with OCCLUSION its shadow ray for `slot`.
+void environment_sample(uint slot, BrdfParams params, vec3 position, vec3 n, vec3 ng, vec3 v, MisSample s,
+                        vec3 incoming, inout vec3 unshadowed) {
   bool arrives = mis_sample_arrives(s, n, ng);
-  vec3 incoming = ENVIRONMENT == 3 ? filtered_radiance(s.direction, lod) : environment_radiance(s.direction);
   vec3 radiance = arrives ? mis_sample_share(params, n, v, s, incoming, frame.environmentSamples) : vec3(0.0);
   if (OCCLUSION == 0)
     unshadowed += radiance;
@@ -135,21 +134,27 @@ void shade_environment(uint first, uint pixel, uint sample_index, uint material,
   uint stride = with_environment ? 2u : 1u;
   vec3 unshadowed = vec3(0.0);
   for (uint k = 0u; k < frame.environmentSamples; ++k) {
-    EnvironmentPair pair = environment_pair(params, n, v, pixel, sample_index, frame.environmentSeed, k);
+    EnvironmentPair pair = environment_pair(params, n, v, pixel, sample_index, frame.environmentSeed, k,
+                                         frame.environmentSamples);
     uint slot = first + stride * k;
     if (with_environment) {
       vec4 e = sample_environment(pair.texel_bits, pair.environment_u);
-      environment_sample(slot, params, position, n, ng, v,
-                         environment_technique_sample(params, n, v, from_map(e.xyz), e.w), 0.0, unshadowed);
+      MisSample s = environment_technique_sample(params, n, v, from_map(e.xyz), e.w);
+      environment_sample(slot, params, position, n, ng, v, s, environment_radiance(s.direction), unshadowed);
     }
-    vec3 lb = pair.brdf_direction;
-    float pdf_e = with_environment ? environment_pdf(to_map(lb)) : 0.0;
-    MisSample s = filtered_brdf_sample(params, n, v, lb, with_environment, pdf_e);
-    uvec3 source = level_extent(0);
-    float lod = ENVIRONMENT == 3 ? filtered_sample_lod(s, frame.environmentSamples, int(source.y), int(source.z),
-                                                       int(frame.levelCount))
-                                 : 0.0;
-    environment_sample(slot + stride - 1u, params, position, n, ng, v, s, lod, unshadowed);
+    MisSample s = brdf_technique_sample(params, n, v, pair.brdf_direction, 0.0);
+    vec3 incoming;
+    if (ENVIRONMENT == 3) {
+      uvec3 source = level_extent(0);
+      float lod = filtered_sample_lod(s, frame.environmentSamples, int(source.y), int(source.z), int(frame.levelCount));
+      vec4 filtered = filtered_lookup(s.direction, lod);
+      incoming = filtered.rgb;
+      if (with_environment) s.other_pdf = filtered.w;
+    } else {
+      s.other_pdf = environment_pdf(to_map(s.direction));
+      incoming = environment_radiance(s.direction);
+    }
+    environment_sample(slot + stride - 1u, params, position, n, ng, v, s, incoming, unshadowed);
   }
   if (OCCLUSION == 0) write_unshadowed(first, unshadowed);
 }

@@ -7,7 +7,11 @@
 // Maps with a small bright source add the environment technique, the pair's
 // other half, read at the map's own resolution and weighted by the power
 // heuristic; on soft maps the BRDF samples alone have the lower error per
-// unit time. Needs sampled_environment.h and prefilter.h.
+// unit time. A BRDF sample weighs itself against the environment's density
+// filtered like its radiance (the density's own mip chain at the same
+// level): against the point density, the sun's filtered halo around the
+// sun, which no environment sample covers, would count in full. Needs
+// sampled_environment.h and prefilter.h.
 
 // A map whose brightest texel stands this far above its mean radiance
 // (luminance, solid-angle weighted) has a source that filtered BRDF samples
@@ -18,15 +22,14 @@ FACET_FN bool filtered_uses_environment_samples(real largest_luminance, real mea
   return largest_luminance > FILTERED_MIS_DYNAMIC_RANGE * mean_luminance;
 }
 
-// The BRDF technique's sample: without the environment technique it is
-// weighted 1 (other_pdf = 0 in the power heuristic).
-FACET_FN MisSample filtered_brdf_sample(BrdfParams p, vec3 n, vec3 v, vec3 l, bool with_environment,
-                                        real environment_pdf) {
-  return brdf_technique_sample(p, n, v, l, with_environment ? environment_pdf : real(0));
-}
-
 // The chain level a BRDF sample reads, one of `pairs`, on a map of
-// width x height texels whose chain has `chain_levels` levels.
+// width x height texels whose chain has `chain_levels` levels. Half a level
+// finer than where a texel matches the sample's solid angle: a bilinear
+// read already spreads over twice a texel's width, and its stratified
+// neighbours (scrambled_net.h) cover the rest; chosen by measurement
+// (docs/rendering.md, "Filtered importance sampling").
+const real FILTERED_LOD_OFFSET = real(-0.5);
+
 FACET_FN real filtered_sample_lod(MisSample s, uint pairs, int width, int height, int chain_levels) {
-  return mip_level_for_density(s.pdf, int(pairs), width, height, chain_levels);
+  return mip_level_for_density(s.pdf, int(pairs), width, height, chain_levels, FILTERED_LOD_OFFSET);
 }

@@ -171,7 +171,7 @@ class ReferenceScene {
     };
     glm::dvec3 sum(0.0);
     for (std::uint32_t k = 0; k < pairs; ++k) {
-      const m::EnvironmentPair pair = m::environment_pair(params, n, v, pixel, sample, environment.seed, k);
+      const m::EnvironmentPair pair = m::environment_pair(params, n, v, pixel, sample, environment.seed, k, pairs);
       const ibl::EnvironmentSample e = ibl::sampleEnvironment(distribution, pair.texel_bits, pair.environment_u);
       sum += share(m::environment_technique_sample(params, n, v, fromMap(e.direction), e.pdf));
       sum += share(m::brdf_technique_sample(params, n, v, pair.brdf_direction,
@@ -198,15 +198,16 @@ class ReferenceScene {
     };
     glm::dvec3 sum(0.0);
     for (std::uint32_t k = 0; k < pairs; ++k) {
-      const m::EnvironmentPair pair = m::environment_pair(params, n, v, pixel, sample, environment.seed, k);
+      const m::EnvironmentPair pair = m::environment_pair(params, n, v, pixel, sample, environment.seed, k, pairs);
       if (withEnvironment) {
         const ibl::EnvironmentSample e = ibl::sampleEnvironment(distribution, pair.texel_bits, pair.environment_u);
         sum += share(m::environment_technique_sample(params, n, v, fromMap(e.direction), e.pdf), 0.0);
       }
-      const glm::dvec3 l = pair.brdf_direction;
-      const m::MisSample s = m::filtered_brdf_sample(
-          params, n, v, l, withEnvironment, withEnvironment ? ibl::environmentPdf(distribution, toMap(l)) : 0.0);
-      sum += share(s, m::filtered_sample_lod(s, pairs, chain.front().width, chain.front().height, int(chain.size())));
+      m::MisSample s = m::brdf_technique_sample(params, n, v, pair.brdf_direction, 0.0);
+      const double lod = m::filtered_sample_lod(s, pairs, chain.front().width, chain.front().height, int(chain.size()));
+      if (withEnvironment)
+        s.other_pdf = ibl::mipChainRadiance(environment_->pdfChain, m::environment_uv(toMap(s.direction)), lod).x;
+      sum += share(s, lod);
     }
     return sum;
   }

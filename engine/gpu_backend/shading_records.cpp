@@ -32,6 +32,10 @@ EnvironmentData environmentData(const ibl::EnvironmentLighting& lighting, layout
     for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) to.emplace_back(rgb[i], rgb[i + 1], rgb[i + 2], 0.0f);
   };
   appendRgb(data.texels, map.rgb);
+  // Filtered with the environment technique: the density's chain in w.
+  const bool densityChain = !lighting.pdfChain.empty();
+  if (densityChain)
+    for (std::size_t i = 0; i < data.texels.size(); ++i) data.texels[i].w = float(lighting.pdfChain[0].rgb[3 * i]);
   frame.environmentIntensity = float(environment.intensity);
   frame.environmentCosRotation = float(lighting.cosRotation);
   frame.environmentSinRotation = float(lighting.sinRotation);
@@ -51,7 +55,8 @@ EnvironmentData environmentData(const ibl::EnvironmentLighting& lighting, layout
     for (std::size_t i = 1; i < levels.size(); ++i) {
       data.levels.push_back({offset(), std::uint32_t(levels[i].width), std::uint32_t(levels[i].height), 0});
       for (std::size_t j = 0; j + 2 < levels[i].rgb.size(); j += 3)
-        t.emplace_back(float(levels[i].rgb[j]), float(levels[i].rgb[j + 1]), float(levels[i].rgb[j + 2]), 0.0f);
+        t.emplace_back(float(levels[i].rgb[j]), float(levels[i].rgb[j + 1]), float(levels[i].rgb[j + 2]),
+                       densityChain ? float(lighting.pdfChain[i].rgb[j]) : 0.0f);
     }
     frame.levelCount = std::uint32_t(levels.size());
   };

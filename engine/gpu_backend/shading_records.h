@@ -23,10 +23,10 @@ std::vector<gpu_layout::LightRecord> lightRecords(const scene::Scene& scene, con
 // Everything the environment's lookups read, with its offsets and sizes set
 // in `frame`.
 struct EnvironmentData {
-  std::vector<glm::vec4> texels;  // the map, RGB
+  std::vector<glm::vec4> texels;  // the map, RGB; filtered with environment samples: its density in w
   std::vector<Texel> sampling;    // sampled, filtered: per map texel (keep bits, density bits, alias, 0)
   std::vector<Texel> levels;      // prefiltered, filtered: (first texel, width, height, 0) per level
-  std::vector<glm::vec4> tables;  // levels 1..n RGB; prefiltered: then 9 SH RGB, DFG (scale, bias)
+  std::vector<glm::vec4> tables;  // levels 1..n RGB (filtered: the density's chain in w); prefiltered: 9 SH RGB, DFG
 };
 
 EnvironmentData environmentData(const ibl::EnvironmentLighting& lighting, gpu_layout::FrameParams& frame);

@@ -48,7 +48,14 @@ EnvironmentLighting prepareEnvironmentLighting(const scene::Scene& scene, const 
     case scene::IblMethod::Filtered:
       lighting.mipChain = mipChain(*environment.map);
       lighting.environmentSamples = filteredUsesEnvironmentSamples(*environment.map);
-      if (lighting.environmentSamples) lighting.distribution = buildDistribution(*environment.map);
+      if (lighting.environmentSamples) {
+        lighting.distribution = buildDistribution(*environment.map);
+        scene::EnvironmentMap density;
+        density.width = environment.map->width;
+        density.height = environment.map->height;
+        for (double pdf : lighting.distribution.texelPdf) density.rgb.insert(density.rgb.end(), 3, float(pdf));
+        lighting.pdfChain = mipChain(density);
+      }
       break;
   }
   return lighting;

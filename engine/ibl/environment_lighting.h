@@ -25,6 +25,7 @@ struct EnvironmentLighting {
   std::vector<int> dfgTable;             // per scene material: index into prefiltered.dfg
   std::vector<MipLevel> mipChain;        // filtered
   bool environmentSamples = false;       // filtered: pairs add the environment technique (filtered_environment.h)
+  std::vector<MipLevel> pdfChain;        // filtered with environmentSamples: the density's chain, in all 3 channels
 };
 
 // The filtered method's rule for the environment technique, from the map's

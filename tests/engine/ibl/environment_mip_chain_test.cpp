@@ -47,16 +47,17 @@ TEST(EnvironmentMipChain, LookupsBlendAdjacentLevelsAndClamp) {
   EXPECT_EQ(mipChainRadiance(chain, uv, 40), mipChainRadiance(chain, uv, double(chain.size() - 1)));
 }
 
-// Omega_s = 4^k Omega_p reads level k + 1: each level's texels are 4 times larger.
+// Omega_s = 4^k Omega_p reads level k + offset: each level's texels are 4 times larger.
 TEST(EnvironmentMipChain, SampleLevelFollowsTheDensity) {
   const int width = 256, height = 128, levels = 8, samples = 16;
   const double omegaP = 4 * m::PI / (width * height);
   for (int k = 0; k < 6; ++k) {
     const double pdf = 1 / (samples * omegaP * std::pow(4.0, k));
-    EXPECT_NEAR(m::mip_level_for_density(pdf, samples, width, height, levels), k + 1, 1e-9) << k;
+    EXPECT_NEAR(m::mip_level_for_density(pdf, samples, width, height, levels, 1.0), k + 1, 1e-9) << k;
+    EXPECT_NEAR(m::mip_level_for_density(pdf, samples, width, height, levels, 0.5), k + 0.5, 1e-9) << k;
   }
-  EXPECT_EQ(m::mip_level_for_density(1e12, samples, width, height, levels), 0);
-  EXPECT_EQ(m::mip_level_for_density(0, samples, width, height, levels), levels - 1);
+  EXPECT_EQ(m::mip_level_for_density(1e12, samples, width, height, levels, 1.0), 0);
+  EXPECT_EQ(m::mip_level_for_density(0, samples, width, height, levels, 1.0), levels - 1);
 }
 
 TEST(EnvironmentMipChain, EnvironmentTechniqueOnlyUnderASun) {
