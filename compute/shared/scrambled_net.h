@@ -11,7 +11,8 @@
 
 // A permutation of 32-bit words in which bit j of the result depends only on
 // bits 0 ... j of x: reversed, it permutes each subinterval within its
-// parent, Owen's nested scrambling (Laine & Karras 2011, Burley's constants).
+// parent, Owen's nested scrambling (Laine & Karras 2011; the constants of
+// Vegdahl 2021, "Building a Better LK Hash").
 FACET_FN uint lower_bits_permutation(uint x, uint seed) {
   x ^= x * 0x3d20adeau;
   x += seed;
