@@ -5,6 +5,7 @@
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "analysis/gnuplot.h"
 #include "analysis/image_compare.h"
@@ -21,13 +22,28 @@ namespace fs = std::filesystem;
 struct Point {
   std::string setup;
   double alpha = 0;
-  bool sampled = true;
+  scene::IblMethod method = scene::IblMethod::Sampled;
   int samples = 0;
   double milliseconds = 0;
   double prepMilliseconds = 0;
   double relativeRmse = 0;
   double maxAbsError = 0;
 };
+
+const char* methodName(scene::IblMethod method) {
+  switch (method) {
+    case scene::IblMethod::Sampled:
+      return "sampled";
+    case scene::IblMethod::Prefiltered:
+      return "prefiltered";
+    case scene::IblMethod::Filtered:
+      return "filtered";
+  }
+  return "";
+}
+
+// The methods with N, in the chart's order; the split sum has none.
+constexpr scene::IblMethod kMethodsWithSamples[] = {scene::IblMethod::Sampled, scene::IblMethod::Filtered};
 
 std::string formatNumber(double value) {
   char text[32];
@@ -51,8 +67,9 @@ void writeComparison(const fs::path& path, const Image& reference, const Image& 
 void writePointsCsv(const fs::path& path, const std::vector<Point>& points) {
   std::vector<std::vector<std::string>> rows;
   for (const Point& p : points)
-    rows.push_back({p.setup, formatNumber(p.alpha), p.sampled ? "sampled" : "prefiltered",
-                    p.sampled ? std::to_string(p.samples) : "", formatNumber(p.milliseconds),
+    rows.push_back({p.setup, formatNumber(p.alpha), methodName(p.method),
+                    p.method == scene::IblMethod::Prefiltered ? "" : std::to_string(p.samples),
+                    formatNumber(p.milliseconds),
                     formatNumber(p.prepMilliseconds), formatNumber(p.relativeRmse), formatNumber(p.maxAbsError)});
   writeCsv(
       path,
@@ -60,39 +77,64 @@ void writePointsCsv(const fs::path& path, const std::vector<Point>& points) {
       rows);
 }
 
-// One panel per setup; per alpha a colour, sampled as a line through its N
-// points (N written beside the first alpha's), the split sum as one large
-// marker of the same colour.
+// The log-log slope of error against N over a curve's points with N >= 16,
+// where the pixel's own strata have begun to resolve: -0.5 for independent
+// samples, steeper for stratified ones. NaN with fewer than two points.
+double errorSlope(const std::vector<Point>& points, const std::string& setup, double alpha, scene::IblMethod method) {
+  std::vector<std::pair<double, double>> xy;
+  for (const Point& p : points)
+    if (p.setup == setup && p.alpha == alpha && p.method == method && p.samples >= 16)
+      xy.emplace_back(std::log(double(p.samples)), std::log(p.relativeRmse));
+  if (xy.size() < 2) return NAN;
+  double mx = 0, my = 0;
+  for (const auto& [x, y] : xy) mx += x / double(xy.size()), my += y / double(xy.size());
+  double sxy = 0, sxx = 0;
+  for (const auto& [x, y] : xy) sxy += (x - mx) * (y - my), sxx += (x - mx) * (x - mx);
+  return sxy / sxx;
+}
+
+std::string slopeLabel(double slope) { return std::isnan(slope) ? "" : ", slope " + formatNumber(std::round(slope * 100) / 100); }
+
+// One panel per setup; per alpha a colour, sampled as a solid line through
+// its N points (N written beside the first alpha's), filtered as a dashed
+// one, the split sum as one large marker of the same colour.
 void writeChart(const fs::path& directory, const std::vector<std::string>& setups, const std::vector<double>& alphas,
                 const std::vector<Point>& points, const std::string& subtitle) {
   std::ostringstream data, script;
   for (const std::string& setup : setups)
     for (double alpha : alphas)
-      for (bool sampled : {true, false}) {
+      for (scene::IblMethod method :
+           {scene::IblMethod::Sampled, scene::IblMethod::Filtered, scene::IblMethod::Prefiltered}) {
         for (const Point& p : points)
-          if (p.setup == setup && p.alpha == alpha && p.sampled == sampled)
+          if (p.setup == setup && p.alpha == alpha && p.method == method)
             data << p.milliseconds << " " << p.relativeRmse << " " << p.samples << "\n";
         data << "\n\n";
       }
   static constexpr const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
   script << "set output OUTPUT\n"
-         << "set multiplot layout 1," << setups.size() << " title \"IBL error against time: sampled (lines, N pairs) "
-         << "vs prefiltered split sum (squares)\\n"
+         << "set multiplot layout 1," << setups.size()
+         << " title \"IBL error against time: sampled (solid, N pairs), filtered (dashed, N pairs) "
+         << "and the prefiltered split sum (squares)\\n"
          << subtitle << "\" noenhanced\n"
          << "set logscale xy\nset grid\nset format y '10^{%L}'\nset key bottom left box opaque font ',10'\n"
          << "set xlabel 'time per image (ms, GPU stages)'\nset ylabel 'relative RMSE vs reference'\n";
   std::size_t block = 0;
   for (const std::string& setup : setups) {
     script << "set title \"" << setup << "\" noenhanced\nplot ";
-    for (std::size_t a = 0; a < alphas.size(); ++a, block += 2) {
+    for (std::size_t a = 0; a < alphas.size(); ++a, block += 3) {
       const char* colour = kColours[a % std::size(kColours)];
       const std::string label = formatNumber(alphas[a]);
       script << (a ? ", " : "") << "DATA index " << block << " using 1:2 with linespoints lw 2 pt 7 ps 0.8 lc rgb '"
-             << colour << "' title 'sampled, alpha " << label << "', DATA index " << block + 1
-             << " using 1:2 with points pt 5 ps 2 lc rgb '" << colour << "' title 'prefiltered, alpha " << label << "'";
+             << colour << "' title 'sampled, alpha " << label
+             << slopeLabel(errorSlope(points, setup, alphas[a], scene::IblMethod::Sampled)) << "', DATA index "
+             << block + 1 << " using 1:2 with linespoints lw 2 dt 2 pt 9 ps 0.8 lc rgb '" << colour
+             << "' title 'filtered, alpha " << label
+             << slopeLabel(errorSlope(points, setup, alphas[a], scene::IblMethod::Filtered)) << "', DATA index " << block + 2 << " using 1:2 with points pt 5 ps 2 lc rgb '" << colour
+             << "' title 'prefiltered, alpha " << label << "'";
       if (a == 0)
-        script << ", DATA index " << block
-               << " using 1:2:(sprintf('N=%d', $3)) with labels offset char 0,1 font ',8' notitle";
+        for (std::size_t curve : {block, block + 1})
+          script << ", DATA index " << curve
+                 << " using 1:2:(sprintf('N=%d', $3)) with labels offset char 0,1 font ',8' notitle";
     }
     script << "\n";
   }
@@ -141,6 +183,7 @@ void writeIblChart(Renderer& renderer, const IblChartSettings& settings) {
       // Untimed first runs: they compile each method's kernels and warm the
       // prefilter's disk cache.
       renderWith(scene::IblMethod::Sampled, 1, backend);
+      renderWith(scene::IblMethod::Filtered, 1, backend);
       const RenderReport firstPrefiltered = renderWith(scene::IblMethod::Prefiltered, 1, backend);
       std::printf("%s, alpha %g: reference N=%d %.0f ms; first prefiltered run: preparation %.1f ms\n", setup.c_str(),
                   alpha, referenceSamples, traceMilliseconds(reference), preparationMilliseconds(firstPrefiltered));
@@ -158,21 +201,28 @@ void writeIblChart(Renderer& renderer, const IblChartSettings& settings) {
         if (error.compared == 0) throw std::runtime_error("ibl-chart: the reference image covers no pixel");
         Point p{setup,
                 alpha,
-                method == scene::IblMethod::Sampled,
+                method,
                 samples,
                 median(times),
                 median(preparations),
                 error.relativeRmse,
                 error.maxAbsolute};
-        std::printf("  %-18s %9.1f ms  (+%.1f ms preparation)  relative RMSE %.3g  max |error| %.3g\n",
-                    p.sampled ? ("sampled N=" + std::to_string(samples)).c_str() : "prefiltered", p.milliseconds,
-                    p.prepMilliseconds, p.relativeRmse, p.maxAbsError);
+        const std::string name = method == scene::IblMethod::Prefiltered
+                                     ? std::string("prefiltered")
+                                     : methodName(method) + (" N=" + std::to_string(samples));
+        std::printf("  %-18s %9.1f ms  (+%.1f ms preparation)  relative RMSE %.3g  max |error| %.3g\n", name.c_str(),
+                    p.milliseconds, p.prepMilliseconds, p.relativeRmse, p.maxAbsError);
         std::fflush(stdout);
         points.push_back(p);
         return image;
       };
-      for (int samples : settings.sampleCounts) measure(scene::IblMethod::Sampled, samples);
+      for (scene::IblMethod method : kMethodsWithSamples)
+        for (int samples : settings.sampleCounts)
+          if (method == scene::IblMethod::Sampled || samples <= kMaxFilteredChartSamples) measure(method, samples);
       const Image prefiltered = measure(scene::IblMethod::Prefiltered, 1);
+      for (scene::IblMethod method : kMethodsWithSamples)
+        std::printf("  %s: error slope over N >= 16: %.2f\n", methodName(method),
+                    errorSlope(points, setup, alpha, method));
       writeComparison(output / (setup + "_alpha" + formatNumber(alpha) + ".png"), reference.image, prefiltered);
     }
   }

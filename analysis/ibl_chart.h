@@ -1,6 +1,7 @@
-// Error against time for the two image-based lighting methods, sampled at
-// N = 1, 4, 16, ... pairs and the prefiltered split sum, per roughness, on
-// each environment: a CSV, a gnuplot chart and previews (`facet ibl-chart`).
+// Error against time for the three image-based lighting methods, sampled at
+// N = 1, 4, 16, ... pairs, filtered at N = 1, 4, 16, 64 and the prefiltered
+// split sum, per roughness, on each environment: a CSV, a gnuplot chart and
+// previews (`facet ibl-chart`).
 #pragma once
 
 #include <filesystem>
@@ -25,6 +26,9 @@ struct IblChartSettings {
 // The reference is sampled with this many times the largest N, so that its
 // own noise is half the largest N's and the curve's tail stays meaningful.
 constexpr int kIblReferenceFactor = 4;
+
+// The filtered method's range of N (docs/rendering.md, "Filtered importance sampling").
+constexpr int kMaxFilteredChartSamples = 64;
 
 void writeIblChart(Renderer& renderer, const IblChartSettings& settings);
 

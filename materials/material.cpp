@@ -115,15 +115,17 @@ Material buildMaterial(const MaterialSpec& spec,
   auto onlyFor = [&](std::string_view field, bool given, bool used, std::string_view users) {
     if (given && !used) fail(field, "is only used by fresnel " + std::string(users) + ", not '" + fresnelName + "'");
   };
-  onlyFor("f0", spec.f0.has_value(), m.fresnel == f64::F_SCHLICK || m.fresnel == f64::F_DIELECTRIC,
-          "'schlick' or 'dielectric'");
+  onlyFor("f0", spec.f0.has_value(),
+          m.fresnel == f64::F_SCHLICK || m.fresnel == f64::F_DIELECTRIC || m.fresnel == f64::F_BLENDER_METALLIC,
+          "'schlick', 'dielectric' or 'blender-metallic'");
   onlyFor("ior", spec.ior.has_value(), m.fresnel == f64::F_DIELECTRIC, "'dielectric'");
   onlyFor("eta", spec.eta.has_value(), m.fresnel == f64::F_CONDUCTOR, "'conductor'");
   onlyFor("k", spec.k.has_value(), m.fresnel == f64::F_CONDUCTOR, "'conductor'");
 
   switch (m.fresnel) {
     case f64::F_SCHLICK:
-      if (!f0) fail("f0", "required by fresnel 'schlick' (or give a preset)");
+    case f64::F_BLENDER_METALLIC:
+      if (!f0) fail("f0", "required by fresnel '" + fresnelName + "' (or give a preset)");
       m.f0 = *f0;
       break;
     case f64::F_DIELECTRIC:
@@ -222,6 +224,7 @@ nlohmann::json toJson(const Material& m) {
   if (!m.name.empty()) json["name"] = m.name;
   switch (m.fresnel) {
     case f64::F_SCHLICK:
+    case f64::F_BLENDER_METALLIC:
       json["f0"] = array(m.f0);
       break;
     case f64::F_DIELECTRIC:

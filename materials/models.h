@@ -37,6 +37,8 @@ inline constexpr ModelName kFresnelTerms[] = {
     {f64::F_SCHLICK, "schlick", "Schlick from F(0) = c_spec (RGB)"},
     {f64::F_DIELECTRIC, "dielectric", "exact, real index of refraction"},
     {f64::F_CONDUCTOR, "conductor", "exact, complex index eta + i k per RGB channel"},
+    {f64::F_BLENDER_METALLIC, "blender-metallic",
+     "Blender Cycles' Principled metallic: the index-1.5 dielectric curve rescaled from F(0) = c_spec"},
 };
 
 inline constexpr ModelName kSamplingTechniques[] = {

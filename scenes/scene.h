@@ -71,8 +71,10 @@ struct RenderSettings {
 
 // How an environment lights the surface: Sampled, a Monte Carlo estimate by
 // multiple importance sampling, shadowed when `occlusion`; Prefiltered, the
-// split sum (Karis 2013), unshadowed (docs/rendering.md, "Image-based lighting").
-enum class IblMethod { Sampled, Prefiltered };
+// split sum (Karis 2013), unshadowed; Filtered, BRDF samples read from the
+// map's mip chain (Krivanek & Colbert 2008), shadowed when `occlusion`
+// (docs/rendering.md, "Image-based lighting").
+enum class IblMethod { Sampled, Prefiltered, Filtered };
 
 // Radiance arriving from world direction w is intensity x map(R^-1 w), R a
 // rotation by `rotationDegrees` about +y. Camera rays that miss see it too.
@@ -81,9 +83,9 @@ struct Environment {
   double intensity = 1.0;
   double rotationDegrees = 0.0;
   IblMethod method = IblMethod::Prefiltered;
-  int samples = 16;  // sampled: pairs per camera sample
+  int samples = 16;  // sampled, filtered: pairs per camera sample
   bool occlusion = true;
-  // Sampled: which random numbers (compute/shared/sampled_environment.h); renders
+  // Sampled, filtered: which random numbers (compute/shared/sampled_environment.h); renders
   // with different seeds are statistically independent.
   std::uint32_t seed = 0;
 };

@@ -258,7 +258,8 @@ Environment readEnvironment(const Field& f, const std::filesystem::path& sceneFi
   if (f.has("rotation")) environment.rotationDegrees = f["rotation"].number();
   if (f.has("method"))
     environment.method =
-        f["method"].choice<IblMethod>({{"sampled", IblMethod::Sampled}, {"prefiltered", IblMethod::Prefiltered}});
+        f["method"].choice<IblMethod>(
+            {{"sampled", IblMethod::Sampled}, {"prefiltered", IblMethod::Prefiltered}, {"filtered", IblMethod::Filtered}});
   if (f.has("samples")) environment.samples = f["samples"].integer(1, 16384);
   if (f.has("occlusion")) environment.occlusion = f["occlusion"].boolean();
   return environment;

@@ -52,7 +52,10 @@ void applyEnvironmentOverrides(const SceneOverrides& o, scene::Scene& scene) {
   scene::Environment& e = *scene.environment;
   if (o.environmentIntensity) e.intensity = *o.environmentIntensity;
   if (o.environmentRotation) e.rotationDegrees = *o.environmentRotation;
-  if (!o.ibl.empty()) e.method = o.ibl == "sampled" ? scene::IblMethod::Sampled : scene::IblMethod::Prefiltered;
+  if (!o.ibl.empty())
+    e.method = o.ibl == "sampled"    ? scene::IblMethod::Sampled
+               : o.ibl == "filtered" ? scene::IblMethod::Filtered
+                                     : scene::IblMethod::Prefiltered;
   if (o.iblSamples) e.samples = *o.iblSamples;
   if (!o.occlusion.empty()) e.occlusion = o.occlusion == "on";
 }
@@ -147,9 +150,10 @@ std::string describeEnvironment(const scene::Environment& e) {
   const std::string source = e.map->source.empty() ? "constant colour" : e.map->source.string();
   std::string text =
       "environment: " + source + " (" + std::to_string(e.map->width) + "x" + std::to_string(e.map->height) + "), " +
-      (e.method == scene::IblMethod::Sampled ? "sampled, " + std::to_string(e.samples) +
-                                                   " pairs per camera sample, occlusion " + (e.occlusion ? "on" : "off")
-                                             : std::string("prefiltered"));
+      (e.method == scene::IblMethod::Prefiltered
+           ? std::string("prefiltered")
+           : std::string(e.method == scene::IblMethod::Sampled ? "sampled, " : "filtered, ") +
+                 std::to_string(e.samples) + " pairs per camera sample, occlusion " + (e.occlusion ? "on" : "off"));
   return text;
 }
 
@@ -176,13 +180,14 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& o) {
   command.add_option("--env-intensity", o.environmentIntensity, "Environment radiance scale")
       ->check(CLI::Range(0.0, 1e30));
   command.add_option("--env-rotation", o.environmentRotation, "Environment rotation about +y, in degrees");
-  command.add_option("--ibl", o.ibl, "Image-based lighting: Monte Carlo with MIS, or the prefiltered split sum")
-      ->check(CLI::IsMember({"sampled", "prefiltered"}));
+  command.add_option("--ibl", o.ibl, "Image-based lighting: Monte Carlo with MIS, the prefiltered split sum, or BRDF samples read "
+                     "from the map's mip chain")
+      ->check(CLI::IsMember({"sampled", "prefiltered", "filtered"}));
   command
       .add_option("--ibl-samples", o.iblSamples,
-                  "Sampled IBL: environment + BRDF sample pairs per camera sample (--spp camera samples per pixel)")
+                  "Sampled and filtered IBL: sample pairs per camera sample (--spp camera samples per pixel)")
       ->check(CLI::Range(1, 16384));
-  command.add_option("--occlusion", o.occlusion, "Sampled IBL: shadow rays towards the environment")
+  command.add_option("--occlusion", o.occlusion, "Sampled and filtered IBL: shadow rays towards the environment")
       ->check(CLI::IsMember({"on", "off"}));
 }
 

@@ -1,6 +1,6 @@
 // The environment as the surface kernel sees it: radiance lookups, the
-// luminance distribution of the sampled method and the prefiltered data of
-// the split sum, laid out by FrameParams' offsets
+// luminance distribution of the sampled method, the prefiltered data of
+// the split sum and the mip chain of the filtered method, laid out by FrameParams' offsets
 // (engine/gpu_backend/gpu_renderer.cpp). The same steps as the CPU
 // reference (engine/cpu/reference_renderer.cpp, engine/ibl/), in float.
 // Needs materials/shading.glsl, compute/shared/environment_mapping.h,
@@ -20,37 +20,39 @@ vec3 from_map(vec3 map_direction) {
 // storage binding limit.
 // The map's texels (level 0).
 layout(set = 0, binding = 19) uniform samplerBuffer environmentTexels;
-// Per prefiltered level, where it starts and its size.
+// Per prefiltered level (or level of the filtered method's chain), where it
+// starts and its size.
 layout(set = 0, binding = 20) uniform usamplerBuffer environmentLevels;
 // Per map texel, the sampled method's alias-table entry: keep probability
 // and texel density as float bits, the other texel.
 layout(set = 0, binding = 21) uniform usamplerBuffer environmentSampling;
-// The prefiltered data (levels, SH, DFG), one vec4 per entry.
+// The prefiltered data (levels, SH, DFG) or the chain's levels, one vec4 per entry.
 layout(set = 0, binding = 23) uniform samplerBuffer environmentTables;
 
-// (first texel, width, height) of prefiltered level `level`; level 0 is the
-// map itself.
+// (first texel, width, height) of level `level`; level 0 is the map itself.
 uvec3 level_extent(int level) {
   return level == 0 ? uvec3(0u, frame.environmentWidth, frame.environmentHeight)
                     : texelFetch(environmentLevels, level).xyz;
 }
 
-vec3 level_texel(int level, uvec3 extent, int x, int y) {
+// RGB radiance and, for the filtered method with environment samples, the
+// environment's density in w.
+vec4 level_texel(int level, uvec3 extent, int x, int y) {
   int i = int(extent.x + uint(y) * extent.y + uint(x));
-  return level == 0 ? texelFetch(environmentTexels, i).rgb : texelFetch(environmentTables, i).rgb;
+  return level == 0 ? texelFetch(environmentTexels, i) : texelFetch(environmentTables, i);
 }
 
-vec3 level_bilinear(int level, vec2 uv) {
+vec4 level_bilinear(int level, vec2 uv) {
   uvec3 extent = level_extent(level);
   BilinearTaps b = environment_bilinear(uv, int(extent.y), int(extent.z));
-  vec3 top = level_texel(level, extent, b.x0, b.y0) * (1.0 - b.fx) + level_texel(level, extent, b.x1, b.y0) * b.fx;
-  vec3 bottom = level_texel(level, extent, b.x0, b.y1) * (1.0 - b.fx) + level_texel(level, extent, b.x1, b.y1) * b.fx;
+  vec4 top = level_texel(level, extent, b.x0, b.y0) * (1.0 - b.fx) + level_texel(level, extent, b.x1, b.y0) * b.fx;
+  vec4 bottom = level_texel(level, extent, b.x0, b.y1) * (1.0 - b.fx) + level_texel(level, extent, b.x1, b.y1) * b.fx;
   return top * (1.0 - b.fy) + bottom * b.fy;
 }
 
 // Radiance arriving from world direction `world`.
 vec3 environment_radiance(vec3 world) {
-  return frame.environmentIntensity * level_bilinear(0, environment_uv(to_map(world)));
+  return frame.environmentIntensity * level_bilinear(0, environment_uv(to_map(world))).rgb;
 }
 
 float texel_pdf(int x, int y) {
@@ -78,16 +80,25 @@ float environment_pdf(vec3 map_direction) {
   return texel_pdf(clamp(int(uv.x * float(width)), 0, width - 1), clamp(int(uv.y * float(height)), 0, height - 1));
 }
 
-// Split sum lookups (engine/ibl/prefiltered_environment.h has the layouts).
-vec3 prefiltered_radiance(vec3 map_direction, float alpha) {
+// Between levels `level` and `level + 1` of the chain or the ladder, linearly.
+vec4 levels_trilinear(vec2 uv, float level) {
   int count = int(frame.levelCount);
-  float level = prefiltered_level(alpha, count);
   int lower = min(int(floor(level)), count - 1);
   int upper = min(lower + 1, count - 1);
-  vec2 uv = environment_uv(map_direction);
-  vec3 a = level_bilinear(lower, uv);
-  vec3 b = level_bilinear(upper, uv);
-  return mix(a, b, level - float(lower));
+  return mix(level_bilinear(lower, uv), level_bilinear(upper, uv), level - float(lower));
+}
+
+// Split sum lookups (engine/ibl/prefiltered_environment.h has the layouts).
+vec3 prefiltered_radiance(vec3 map_direction, float alpha) {
+  return levels_trilinear(environment_uv(map_direction), prefiltered_level(alpha, int(frame.levelCount))).rgb;
+}
+
+// Filtered method: radiance arriving from world direction `world`, read from
+// the map's mip chain at `lod` (engine/ibl/environment_mip_chain.h), and in
+// w the environment's density read from its chain alike.
+vec4 filtered_lookup(vec3 world, float lod) {
+  vec4 texel = levels_trilinear(environment_uv(to_map(world)), lod);
+  return vec4(frame.environmentIntensity * texel.rgb, texel.w);
 }
 
 vec2 dfg_entry(uint table, int i, int j) {

@@ -1,9 +1,10 @@
 // Per camera ray that hit: the surface point, its limit normal and, from the
 // centre ray, the pixel's AOVs; per light of a shaded sample, the unshadowed
 // radiance pi f(l, v) c_light (n.l) and the shadow ray that decides it; then
-// the environment's share (docs/rendering.md): prefiltered, or sampled
-// without occlusion, in one slot that no ray tests; sampled with occlusion,
-// one slot and shadow ray per environment and per BRDF sample. A ray that
+// the environment's share (docs/rendering.md): prefiltered, or sampled or
+// filtered without occlusion, in one slot that no ray tests; sampled or
+// filtered with occlusion, one slot and shadow ray per environment and per
+// BRDF sample. A ray that
 // misses writes the miss AOVs and, with an environment, the radiance it
 // sees in the environment's first slot. Every slot gets its contribution;
 // the shadow rays that decide some of them are appended to one compacted
@@ -11,8 +12,9 @@
 // samples or pixels that need no ray.
 //
 // Specialization: LIGHT_COUNT, ENVIRONMENT
-// (0 none, 1 sampled, 2 prefiltered), OCCLUSION (sampled: 1 traces the
-// environment's shadow rays), and the BRDF models D_MODEL, G_MODEL,
+// (0 none, 1 sampled, 2 prefiltered, 3 filtered), OCCLUSION (sampled,
+// filtered: 1 traces the environment's shadow rays), ENVIRONMENT_SAMPLES
+// (filtered: 1 adds the environment technique), and the BRDF models D_MODEL, G_MODEL,
 // F_MODEL, each -1 when the scene's materials use several (the model is then
 // read per material).
 #version 460
@@ -29,8 +31,11 @@
 #include "compute/shared/dfg.h"
 #include "compute/shared/spherical_harmonics.h"
 #include "compute/shared/random.h"
+#include "compute/shared/scrambled_net.h"
 #include "materials/shading/lights.h"
 #include "compute/shared/sampled_environment.h"
+#include "compute/shared/prefilter.h"
+#include "compute/shared/filtered_environment.h"
 
 layout(constant_id = 1) const int LIGHT_COUNT = 1;
 layout(constant_id = 2) const int D_MODEL = -1;
@@ -38,6 +43,7 @@ layout(constant_id = 3) const int G_MODEL = -1;
 layout(constant_id = 4) const int F_MODEL = -1;
 layout(constant_id = 5) const int ENVIRONMENT = 0;
 layout(constant_id = 6) const int OCCLUSION = 1;
+layout(constant_id = 7) const int ENVIRONMENT_SAMPLES = 0;
 
 layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
 layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord materials[]; };
@@ -93,14 +99,12 @@ void write_shadowed(uint slot, vec3 radiance, vec3 position, vec3 ng, vec3 direc
       RayRecord(origin.x, origin.y, origin.z, frame.shadowOffset, direction.x, direction.y, direction.z, tMax), slot);
 }
 
-// Sampled method, one sample of either technique: its share, and with
-// OCCLUSION its shadow ray for `slot`.
+// Sampled or filtered method, one sample of either technique: its share for
+// radiance `incoming`, and with OCCLUSION its shadow ray for `slot`.
 void environment_sample(uint slot, BrdfParams params, vec3 position, vec3 n, vec3 ng, vec3 v, MisSample s,
-                        inout vec3 unshadowed) {
+                        vec3 incoming, inout vec3 unshadowed) {
   bool arrives = mis_sample_arrives(s, n, ng);
-  vec3 radiance = arrives ? mis_sample_share(params, n, v, s, environment_radiance(s.direction),
-                                             frame.environmentSamples)
-                          : vec3(0.0);
+  vec3 radiance = arrives ? mis_sample_share(params, n, v, s, incoming, frame.environmentSamples) : vec3(0.0);
   if (OCCLUSION == 0)
     unshadowed += radiance;
   else if (arrives)
@@ -125,15 +129,32 @@ void shade_environment(uint first, uint pixel, uint sample_index, uint material,
     write_unshadowed(first, frame.environmentIntensity * radiance);
     return;
   }
+  // Per pair, the environment technique's slot (if drawn), then the BRDF technique's.
+  bool with_environment = ENVIRONMENT == 1 || ENVIRONMENT_SAMPLES == 1;
+  uint stride = with_environment ? 2u : 1u;
   vec3 unshadowed = vec3(0.0);
   for (uint k = 0u; k < frame.environmentSamples; ++k) {
-    EnvironmentPair pair = environment_pair(params, n, v, pixel, sample_index, frame.environmentSeed, k);
-    vec4 e = sample_environment(pair.texel_bits, pair.environment_u);
-    environment_sample(first + 2u * k, params, position, n, ng, v,
-                       environment_technique_sample(params, n, v, from_map(e.xyz), e.w), unshadowed);
-    vec3 lb = pair.brdf_direction;
-    environment_sample(first + 2u * k + 1u, params, position, n, ng, v,
-                       brdf_technique_sample(params, n, v, lb, environment_pdf(to_map(lb))), unshadowed);
+    EnvironmentPair pair = environment_pair(params, n, v, pixel, sample_index, frame.environmentSeed, k,
+                                         frame.environmentSamples);
+    uint slot = first + stride * k;
+    if (with_environment) {
+      vec4 e = sample_environment(pair.texel_bits, pair.environment_u);
+      MisSample s = environment_technique_sample(params, n, v, from_map(e.xyz), e.w);
+      environment_sample(slot, params, position, n, ng, v, s, environment_radiance(s.direction), unshadowed);
+    }
+    MisSample s = brdf_technique_sample(params, n, v, pair.brdf_direction, 0.0);
+    vec3 incoming;
+    if (ENVIRONMENT == 3) {
+      uvec3 source = level_extent(0);
+      float lod = filtered_sample_lod(s, frame.environmentSamples, int(source.y), int(source.z), int(frame.levelCount));
+      vec4 filtered = filtered_lookup(s.direction, lod);
+      incoming = filtered.rgb;
+      if (with_environment) s.other_pdf = filtered.w;
+    } else {
+      s.other_pdf = environment_pdf(to_map(s.direction));
+      incoming = environment_radiance(s.direction);
+    }
+    environment_sample(slot + stride - 1u, params, position, n, ng, v, s, incoming, unshadowed);
   }
   if (OCCLUSION == 0) write_unshadowed(first, unshadowed);
 }

@@ -29,16 +29,25 @@ FACET_FN real prefilter_sample_weight(real alpha, vec3 m) {
   return microfacet_G(G_SMITH_GGX_CORRELATED, effective_alpha(alpha), nl, real(1), m.z, m.z);
 }
 
-// Level of the mip chain a sample reads: where a texel is as large as the
-// solid angle the sample stands for, Omega_s = 1 / (n pdf) with pdf = D(m) / 4,
-// one level coarser because a box is narrower than the lobe it stands in
-// for. Omega_p is the mean texel solid angle: equirectangular texels shrink
-// only in azimuth towards the poles, and the chain blurs their polar extent.
-FACET_FN real prefilter_source_lod(real alpha, vec3 m, int samples, int width, int height, int chain_levels) {
-  real pdf = real(0.25) * microfacet_D(D_GGX, effective_alpha(alpha), m.z, m.x * m.x + m.y * m.y);
+// Level of the mip chain a sample of density `pdf` (per unit solid angle),
+// one of `samples`, reads: where a texel is as large as the solid angle the
+// sample stands for, Omega_s = 1 / (samples pdf), moved by `offset` levels
+// (Krivanek & Colbert 2008, eq. 13, where the offset is 1). Omega_p is the
+// mean texel solid angle: equirectangular texels shrink only in azimuth
+// towards the poles, and the chain blurs their polar extent.
+FACET_FN real mip_level_for_density(real pdf, int samples, int width, int height, int chain_levels, real offset) {
+  if (pdf <= real(0)) return real(chain_levels - 1);
   real omega_s = real(1) / (real(samples) * pdf);
   real omega_p = real(4) * PI / (real(width) * real(height));
   // 0.5 log2(x) as log(x) / (2 ln 2): C++ and GLSL share log, not log2.
-  real lod = real(0.72134752044448170368) * log(omega_s / omega_p) + real(1);
+  real lod = real(0.72134752044448170368) * log(omega_s / omega_p) + offset;
   return clamp(lod, real(0), real(chain_levels - 1));
+}
+
+// The prefilter's samples: half vectors drawn from D(m)(n.m) with n = v = r,
+// so that pdf(l) = D(m) / 4, read one level coarser because a box is
+// narrower than the lobe it stands in for.
+FACET_FN real prefilter_source_lod(real alpha, vec3 m, int samples, int width, int height, int chain_levels) {
+  real pdf = real(0.25) * microfacet_D(D_GGX, effective_alpha(alpha), m.z, m.x * m.x + m.y * m.y);
+  return mip_level_for_density(pdf, samples, width, height, chain_levels, real(1));
 }

@@ -16,8 +16,10 @@ FACET_FN uint sample_bits(uint pixel, uint sample_index, uint dimension) {
   return pcg_hash(pixel ^ pcg_hash(sample_index ^ pcg_hash(dimension)));
 }
 
-// A number in [0, 1) with 24 of those bits: exact in float and in double, so
-// both backends start from the same value.
+// A number in [0, 1) from the top 24 of 32 bits: exact in float and in
+// double, so both backends start from the same value.
+FACET_FN real unit_from_bits(uint bits) { return real(bits >> 8u) * real(5.9604644775390625e-8); }
+
 FACET_FN real sample_uniform(uint pixel, uint sample_index, uint dimension) {
-  return real(sample_bits(pixel, sample_index, dimension) >> 8u) * real(5.9604644775390625e-8);
+  return unit_from_bits(sample_bits(pixel, sample_index, dimension));
 }

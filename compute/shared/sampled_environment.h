@@ -5,22 +5,14 @@
 // heuristic against the other technique's density. Drawing from the
 // environment's distribution, and its density, are each backend's own (an
 // alias table in texel buffers, or in vectors); the rest is here. Needs
-// materials/shading/*.h, random.h, mis.h, lobe_sampling.h and materials/shading/lights.h.
+// materials/shading/*.h, random.h, low_discrepancy.h, scrambled_net.h, mis.h, lobe_sampling.h and
+// materials/shading/lights.h.
 
-// Pair k of seed s draws dimensions IBL_DIMENSIONS (s IBL_MAX_SAMPLES + k) +
-// 0 ... 6: 4 for the environment sample (texel as 32 bits, alias, position
-// in the texel), 3 for the BRDF sample (lobe, direction). Another seed draws
-// numbers independent of seed 0's, so that a reference does not share the
-// numbers of the estimate it judges.
-const uint IBL_DIMENSIONS = 7u;
-const uint IBL_MAX_SAMPLES = 16384u;
-
-FACET_FN uint ibl_dimension(uint seed, uint pair, uint d) {
-  return IBL_DIMENSIONS * (seed * IBL_MAX_SAMPLES + pair) + d;
-}
-
-// Pair `pair`'s random numbers for the environment sample, which the backend
-// draws from them, and its BRDF sample.
+// Pair `pair` of `pairs`: point `pair` of the scrambled net of (pixel,
+// sample, seed) (scrambled_net.h), four groups of two dimensions: the texel
+// as 32 bits and keep-or-alias, the position in the texel, the BRDF
+// sample's direction, its lobe. Another seed scrambles independently, so
+// that a reference does not share the numbers of the estimate it judges.
 struct EnvironmentPair {
   uint texel_bits;
   vec3 environment_u;
@@ -28,15 +20,15 @@ struct EnvironmentPair {
 };
 
 FACET_FN EnvironmentPair environment_pair(BrdfParams p, vec3 n, vec3 v, uint pixel, uint sample_index, uint seed,
-                                          uint pair) {
-  uint d = ibl_dimension(seed, pair, 0u);
+                                          uint pair, uint pairs) {
+  uvec2 texel = scrambled_point_bits(pixel, sample_index, seed, 0u, pair, pairs);
+  vec2 position = scrambled_point(pixel, sample_index, seed, 1u, pair, pairs);
+  vec2 direction = scrambled_point(pixel, sample_index, seed, 2u, pair, pairs);
+  real lobe = scrambled_point(pixel, sample_index, seed, 3u, pair, pairs).x;
   EnvironmentPair e;
-  e.texel_bits = sample_bits(pixel, sample_index, d);
-  e.environment_u = vec3(sample_uniform(pixel, sample_index, d + 1u), sample_uniform(pixel, sample_index, d + 2u),
-                         sample_uniform(pixel, sample_index, d + 3u));
-  vec3 u = vec3(sample_uniform(pixel, sample_index, d + 4u), sample_uniform(pixel, sample_index, d + 5u),
-                sample_uniform(pixel, sample_index, d + 6u));
-  e.brdf_direction = sample_brdf_lobes(p, n, v, u);
+  e.texel_bits = texel.x;
+  e.environment_u = vec3(unit_from_bits(texel.y), position.x, position.y);
+  e.brdf_direction = sample_brdf_lobes(p, n, v, vec3(lobe, direction.x, direction.y));
   return e;
 }
 

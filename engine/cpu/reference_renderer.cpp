@@ -15,6 +15,7 @@
 #include "engine/ibl/environment_lighting.h"
 #include "engine/ibl/environment_lookup.h"
 #include "engine/ibl/environment_math.h"
+#include "engine/ibl/environment_mip_chain.h"
 #include "materials/material.h"
 
 namespace facet::cpu {
@@ -75,9 +76,17 @@ class ReferenceScene {
     glm::dvec3 radiance(0.0);
     if (environment_) {
       const int material = scene_.objects[std::size_t(hit.object)].material;
-      radiance += environment_->environment->method == scene::IblMethod::Sampled
-                      ? sampledEnvironment(params, hit.surface.position, n, ng, v, pixel, sample, shadowRays)
-                      : prefilteredEnvironment(params, material, n, v);
+      switch (environment_->environment->method) {
+        case scene::IblMethod::Sampled:
+          radiance += sampledEnvironment(params, hit.surface.position, n, ng, v, pixel, sample, shadowRays);
+          break;
+        case scene::IblMethod::Prefiltered:
+          radiance += prefilteredEnvironment(params, material, n, v);
+          break;
+        case scene::IblMethod::Filtered:
+          radiance += filteredEnvironment(params, hit.surface.position, n, ng, v, pixel, sample, shadowRays);
+          break;
+      }
     }
     for (const scene::Light& light : scene_.lights) {
       const m::LightIncidence incidence = m::light_incidence(punctualLight(light), hit.surface.position);
@@ -139,6 +148,14 @@ class ReferenceScene {
            ibl::bilinearLookup(map.rgb.data(), map.width, map.height, m::environment_uv(toMap(world)));
   }
 
+  // Whether a sample of either technique carries light: above the surface
+  // and, with occlusion, unshadowed.
+  bool sampleArrives(const m::MisSample& s, const glm::dvec3& position, const glm::dvec3& n, const glm::dvec3& ng,
+                     std::uint64_t& shadowRays) const {
+    return m::mis_sample_arrives(s, n, ng) &&
+           !(environment_->environment->occlusion && occluded(position, ng, s.direction, INFINITY, shadowRays));
+  }
+
   // The sampled method (compute/shared/sampled_environment.h), with the
   // environment's distribution in vectors.
   glm::dvec3 sampledEnvironment(const m::BrdfParams& params, const glm::dvec3& position, const glm::dvec3& n,
@@ -148,17 +165,49 @@ class ReferenceScene {
     const ibl::EnvironmentDistribution& distribution = environment_->distribution;
     const auto pairs = std::uint32_t(environment.samples);
     auto share = [&](const m::MisSample& s) {
-      if (!m::mis_sample_arrives(s, n, ng)) return glm::dvec3(0.0);
-      if (environment.occlusion && occluded(position, ng, s.direction, INFINITY, shadowRays)) return glm::dvec3(0.0);
-      return m::mis_sample_share(params, n, v, s, environmentRadiance(s.direction), pairs);
+      return sampleArrives(s, position, n, ng, shadowRays)
+                 ? m::mis_sample_share(params, n, v, s, environmentRadiance(s.direction), pairs)
+                 : glm::dvec3(0.0);
     };
     glm::dvec3 sum(0.0);
     for (std::uint32_t k = 0; k < pairs; ++k) {
-      const m::EnvironmentPair pair = m::environment_pair(params, n, v, pixel, sample, environment.seed, k);
+      const m::EnvironmentPair pair = m::environment_pair(params, n, v, pixel, sample, environment.seed, k, pairs);
       const ibl::EnvironmentSample e = ibl::sampleEnvironment(distribution, pair.texel_bits, pair.environment_u);
       sum += share(m::environment_technique_sample(params, n, v, fromMap(e.direction), e.pdf));
       sum += share(m::brdf_technique_sample(params, n, v, pair.brdf_direction,
                                             ibl::environmentPdf(distribution, toMap(pair.brdf_direction))));
+    }
+    return sum;
+  }
+
+  // The filtered method (compute/shared/filtered_environment.h): the
+  // sampled method's pairs, BRDF samples read from the mip chain.
+  glm::dvec3 filteredEnvironment(const m::BrdfParams& params, const glm::dvec3& position, const glm::dvec3& n,
+                                 const glm::dvec3& ng, const glm::dvec3& v, std::uint32_t pixel, std::uint32_t sample,
+                                 std::uint64_t& shadowRays) const {
+    const scene::Environment& environment = *environment_->environment;
+    const std::vector<ibl::MipLevel>& chain = environment_->mipChain;
+    const bool withEnvironment = environment_->environmentSamples;
+    const ibl::EnvironmentDistribution& distribution = environment_->distribution;
+    const auto pairs = std::uint32_t(environment.samples);
+    auto share = [&](const m::MisSample& s, double lod) {
+      if (!sampleArrives(s, position, n, ng, shadowRays)) return glm::dvec3(0.0);
+      const glm::dvec3 radiance =
+          environment.intensity * ibl::mipChainRadiance(chain, m::environment_uv(toMap(s.direction)), lod);
+      return m::mis_sample_share(params, n, v, s, radiance, pairs);
+    };
+    glm::dvec3 sum(0.0);
+    for (std::uint32_t k = 0; k < pairs; ++k) {
+      const m::EnvironmentPair pair = m::environment_pair(params, n, v, pixel, sample, environment.seed, k, pairs);
+      if (withEnvironment) {
+        const ibl::EnvironmentSample e = ibl::sampleEnvironment(distribution, pair.texel_bits, pair.environment_u);
+        sum += share(m::environment_technique_sample(params, n, v, fromMap(e.direction), e.pdf), 0.0);
+      }
+      m::MisSample s = m::brdf_technique_sample(params, n, v, pair.brdf_direction, 0.0);
+      const double lod = m::filtered_sample_lod(s, pairs, chain.front().width, chain.front().height, int(chain.size()));
+      if (withEnvironment)
+        s.other_pdf = ibl::mipChainRadiance(environment_->pdfChain, m::environment_uv(toMap(s.direction)), lod).x;
+      sum += share(s, lod);
     }
     return sum;
   }

@@ -449,15 +449,27 @@ struct Kernels {
   gpu::ComputePipeline *cameraFallbacks = nullptr, *resolveCameraFallbacks = nullptr, *shadowFallbacks = nullptr;
 };
 
-Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, bool tessellated) {
+double environmentMethod(const scene::Scene& scene) {
+  if (!scene.environment) return 0;
+  switch (scene.environment->method) {
+    case scene::IblMethod::Sampled:
+      return 1;
+    case scene::IblMethod::Prefiltered:
+      return 2;
+    case scene::IblMethod::Filtered:
+      return 3;
+  }
+  return 0;
+}
+
+Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::EnvironmentLighting* lighting,
+                bool tessellated) {
   const std::vector<gpu::ConstantEntry> method{{"METHOD", tessellated ? 1.0 : 0.0}};
-  const double environmentMethod = !scene.environment                                       ? 0
-                                   : scene.environment->method == scene::IblMethod::Sampled ? 1
-                                                                                            : 2;
   Kernels k{&pipelines.get("intersect", method),
             &pipelines.get("surface", {{"LIGHT_COUNT", double(scene.lights.size())},
-                                  {"ENVIRONMENT", environmentMethod},
+                                  {"ENVIRONMENT", environmentMethod(scene)},
                                   {"OCCLUSION", scene.environment && scene.environment->occlusion ? 1.0 : 0.0},
+                                  {"ENVIRONMENT_SAMPLES", lighting && lighting->environmentSamples ? 1.0 : 0.0},
                                   {"D_MODEL", sharedModel(scene, &materials::Material::distribution)},
                                   {"G_MODEL", sharedModel(scene, &materials::Material::geometry)},
                                   {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)}}),
@@ -563,7 +575,7 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   start = std::chrono::steady_clock::now();
   const GpuScene packed = packScene(scene, geometry, origin, rootTolerance(scene, geometry), tessellated);
   layout::FrameParams frame = frameParams(scene, geometry, strata, packed);
-  frame.slotsPerRay = std::uint32_t(scene.lights.size()) + environmentSlots(scene);
+  frame.slotsPerRay = std::uint32_t(scene.lights.size()) + environmentSlots(lighting ? &*lighting : nullptr);
   const EnvironmentData environment = lighting ? environmentData(*lighting, frame) : EnvironmentData{};
   const std::uint64_t key = geometryKey(packed, tessellated, frame.tolerance);
   const bool reused = diced_ && diced_->key == key;
@@ -589,7 +601,7 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   d.queue().writeBuffer(band.frame, 0, &frame, sizeof(frame));
   if (!reused) dice(d, pipelines_, packed, tessellated, table, clock);
 
-  const Kernels k = kernels(pipelines_, scene, tessellated);
+  const Kernels k = kernels(pipelines_, scene, lighting ? &*lighting : nullptr, tessellated);
   result.image = Image(scene.render.width, scene.render.height);
   for (std::uint64_t first = 0; first < pixels;) {
     const std::uint64_t count = std::min(bandPixels, pixels - first);

@@ -32,6 +32,10 @@ EnvironmentData environmentData(const ibl::EnvironmentLighting& lighting, layout
     for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) to.emplace_back(rgb[i], rgb[i + 1], rgb[i + 2], 0.0f);
   };
   appendRgb(data.texels, map.rgb);
+  // Filtered with the environment technique: the density's chain in w.
+  const bool densityChain = !lighting.pdfChain.empty();
+  if (densityChain)
+    for (std::size_t i = 0; i < data.texels.size(); ++i) data.texels[i].w = float(lighting.pdfChain[0].rgb[3 * i]);
   frame.environmentIntensity = float(environment.intensity);
   frame.environmentCosRotation = float(lighting.cosRotation);
   frame.environmentSinRotation = float(lighting.sinRotation);
@@ -39,23 +43,27 @@ EnvironmentData environmentData(const ibl::EnvironmentLighting& lighting, layout
   frame.environmentSeed = environment.seed;
   frame.environmentWidth = std::uint32_t(map.width);
   frame.environmentHeight = std::uint32_t(map.height);
-  if (environment.method == scene::IblMethod::Sampled) {
-    const ibl::EnvironmentDistribution& d = lighting.distribution;
-    for (std::size_t i = 0; i < d.keep.size(); ++i)
-      data.sampling.push_back({std::bit_cast<std::uint32_t>(float(d.keep[i])),
-                               std::bit_cast<std::uint32_t>(float(d.texelPdf[i])), d.alias[i], 0});
-    return data;
-  }
+  const ibl::EnvironmentDistribution& d = lighting.distribution;
+  for (std::size_t i = 0; i < d.keep.size(); ++i)
+    data.sampling.push_back({std::bit_cast<std::uint32_t>(float(d.keep[i])),
+                             std::bit_cast<std::uint32_t>(float(d.texelPdf[i])), d.alias[i], 0});
   std::vector<glm::vec4>& t = data.tables;
   auto offset = [&] { return std::uint32_t(t.size()); };
+  // Levels 1.. of the chain or the ladder; level 0 is read from the texels.
+  auto appendLevels = [&](const auto& levels) {
+    data.levels.push_back({0, std::uint32_t(map.width), std::uint32_t(map.height), 0});
+    for (std::size_t i = 1; i < levels.size(); ++i) {
+      data.levels.push_back({offset(), std::uint32_t(levels[i].width), std::uint32_t(levels[i].height), 0});
+      for (std::size_t j = 0; j + 2 < levels[i].rgb.size(); j += 3)
+        t.emplace_back(float(levels[i].rgb[j]), float(levels[i].rgb[j + 1]), float(levels[i].rgb[j + 2]),
+                       densityChain ? float(lighting.pdfChain[i].rgb[j]) : 0.0f);
+    }
+    frame.levelCount = std::uint32_t(levels.size());
+  };
+  if (environment.method == scene::IblMethod::Filtered) appendLevels(lighting.mipChain);
+  if (environment.method != scene::IblMethod::Prefiltered) return data;
   const ibl::PrefilteredEnvironment& p = lighting.prefiltered;
-  data.levels.push_back({0, std::uint32_t(map.width), std::uint32_t(map.height), 0});  // read from the texels
-  for (std::size_t i = 1; i < p.levels.size(); ++i) {
-    const ibl::RadianceLevel& level = p.levels[i];
-    data.levels.push_back({offset(), std::uint32_t(level.width), std::uint32_t(level.height), 0});
-    appendRgb(t, level.rgb);
-  }
-  frame.levelCount = std::uint32_t(p.levels.size());
+  appendLevels(p.levels);
   frame.shOffset = offset();
   for (const glm::dvec3& c : p.irradianceSh) t.emplace_back(float(c.r), float(c.g), float(c.b), 0.0f);
   frame.dfgOffset = offset();
@@ -66,10 +74,12 @@ EnvironmentData environmentData(const ibl::EnvironmentLighting& lighting, layout
   return data;
 }
 
-std::uint32_t environmentSlots(const scene::Scene& scene) {
-  if (!scene.environment) return 0;
-  const scene::Environment& e = *scene.environment;
-  return e.method == scene::IblMethod::Sampled && e.occlusion ? 2 * std::uint32_t(e.samples) : 1;
+std::uint32_t environmentSlots(const ibl::EnvironmentLighting* lighting) {
+  if (!lighting) return 0;
+  const scene::Environment& e = *lighting->environment;
+  if (!e.occlusion || e.method == scene::IblMethod::Prefiltered) return 1;
+  const bool environmentSamples = e.method == scene::IblMethod::Sampled || lighting->environmentSamples;
+  return (environmentSamples ? 2 : 1) * std::uint32_t(e.samples);
 }
 
 std::vector<layout::LightRecord> lightRecords(const scene::Scene& scene, const glm::dvec3& origin) {

@@ -23,16 +23,16 @@ std::vector<gpu_layout::LightRecord> lightRecords(const scene::Scene& scene, con
 // Everything the environment's lookups read, with its offsets and sizes set
 // in `frame`.
 struct EnvironmentData {
-  std::vector<glm::vec4> texels;  // the map, RGB
-  std::vector<Texel> sampling;    // sampled: per map texel (keep bits, density bits, alias, 0)
-  std::vector<Texel> levels;      // prefiltered: (first texel, width, height, 0) per level
-  std::vector<glm::vec4> tables;  // prefiltered: levels 1..n RGB, 9 SH RGB, DFG (scale, bias)
+  std::vector<glm::vec4> texels;  // the map, RGB; filtered with environment samples: its density in w
+  std::vector<Texel> sampling;    // sampled, filtered: per map texel (keep bits, density bits, alias, 0)
+  std::vector<Texel> levels;      // prefiltered, filtered: (first texel, width, height, 0) per level
+  std::vector<glm::vec4> tables;  // levels 1..n RGB (filtered: the density's chain in w); prefiltered: 9 SH RGB, DFG
 };
 
 EnvironmentData environmentData(const ibl::EnvironmentLighting& lighting, gpu_layout::FrameParams& frame);
 
 // Slots per camera ray after the lights': none without an environment; one
-// for what it adds without shadow rays; two per pair when they are traced.
-std::uint32_t environmentSlots(const scene::Scene& scene);
+// for what it adds without shadow rays; one per traced sample of a pair.
+std::uint32_t environmentSlots(const ibl::EnvironmentLighting* lighting);
 
 }  // namespace facet::gpu_backend

@@ -2,10 +2,27 @@
 
 #include <glm/trigonometric.hpp>
 
+#include "engine/ibl/environment_math.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace facet::ibl {
+
+namespace m = materials::f64;
+
+bool filteredUsesEnvironmentSamples(const scene::EnvironmentMap& map) {
+  double largest = 0, weighted = 0;
+  for (int y = 0; y < map.height; ++y) {
+    const double solidAngle = m::environment_texel_solid_angle(y, map.width, map.height);
+    for (int x = 0; x < map.width; ++x) {
+      const double luminance = m::luminance(glm::dvec3(map.texel(x, y)));
+      largest = std::max(largest, luminance);
+      weighted += luminance * solidAngle;
+    }
+  }
+  return m::filtered_uses_environment_samples(largest, weighted / (4 * m::PI));
+}
 
 EnvironmentLighting prepareEnvironmentLighting(const scene::Scene& scene, const PrefilterBuilder& prefilter) {
   EnvironmentLighting lighting;
@@ -28,6 +45,18 @@ EnvironmentLighting prepareEnvironmentLighting(const scene::Scene& scene, const 
       lighting.prefiltered = prefilter(*environment.map, pairs);
       break;
     }
+    case scene::IblMethod::Filtered:
+      lighting.mipChain = mipChain(*environment.map);
+      lighting.environmentSamples = filteredUsesEnvironmentSamples(*environment.map);
+      if (lighting.environmentSamples) {
+        lighting.distribution = buildDistribution(*environment.map);
+        scene::EnvironmentMap density;
+        density.width = environment.map->width;
+        density.height = environment.map->height;
+        for (double pdf : lighting.distribution.texelPdf) density.rgb.insert(density.rgb.end(), 3, float(pdf));
+        lighting.pdfChain = mipChain(density);
+      }
+      break;
   }
   return lighting;
 }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <glm/common.hpp>
+#include <glm/vec2.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -15,9 +16,10 @@
 #define FACET_FN inline
 
 // What the shared source needs beyond materials/shading.h's built-ins:
-// GLSL's 32-bit uint, two-argument atan and floor.
+// GLSL's 32-bit uint and uvec2, two-argument atan and floor.
 #define FACET_ENVIRONMENT_GLSL_BUILTINS                         \
   using uint = std::uint32_t;                                   \
+  using uvec2 = glm::uvec2;                                     \
   inline real atan(real y, real x) { return std::atan2(y, x); } \
   using glm::floor;
 
@@ -34,7 +36,9 @@ FACET_ENVIRONMENT_GLSL_BUILTINS
 #include "compute/shared/spherical_harmonics.h"
 #include "compute/shared/prefilter.h"
 #include "compute/shared/random.h"
+#include "compute/shared/scrambled_net.h"
 #include "compute/shared/sampled_environment.h"
+#include "compute/shared/filtered_environment.h"
 }  // namespace f64
 
 namespace f32 {
@@ -48,7 +52,9 @@ FACET_ENVIRONMENT_GLSL_BUILTINS
 #include "compute/shared/spherical_harmonics.h"
 #include "compute/shared/prefilter.h"
 #include "compute/shared/random.h"
+#include "compute/shared/scrambled_net.h"
 #include "compute/shared/sampled_environment.h"
+#include "compute/shared/filtered_environment.h"
 }  // namespace f32
 
 }  // namespace facet::materials

@@ -11,6 +11,7 @@
 
 #include "engine/ibl/environment_lookup.h"
 #include "engine/ibl/environment_math.h"
+#include "engine/ibl/environment_mip_chain.h"
 #include "engine/ibl/prefilter_steps.h"
 
 namespace facet::ibl {
@@ -76,50 +77,14 @@ void forEachRow(int rows, const std::function<void(int)>& rowTask) {
   for (int y = 0; y < rows; y += threads) rowTask(y);
 }
 
-struct SourceLevel {
-  LevelSize size;
-  std::vector<double> rgb;
-};
-
-std::vector<SourceLevel> sourceChain(const scene::EnvironmentMap& map) {
-  std::vector<SourceLevel> chain;
-  for (const LevelSize& size : sourceChainSizes(map.width, map.height)) {
-    SourceLevel level{size, {}};
-    if (chain.empty()) {
-      level.rgb.assign(map.rgb.begin(), map.rgb.end());
-    } else {
-      const SourceLevel& finer = chain.back();
-      level.rgb.resize(3 * std::size_t(size.width) * std::size_t(size.height));
-      for (int y = 0; y < size.height; ++y)
-        for (int x = 0; x < size.width; ++x) {
-          const glm::dvec3 mean = coarserTexel(finer.rgb.data(), finer.size.width, finer.size.height, x, y);
-          for (int channel = 0; channel < 3; ++channel)
-            level.rgb[3 * (std::size_t(y) * size.width + x) + channel] = mean[channel];
-        }
-    }
-    chain.push_back(std::move(level));
-  }
-  return chain;
-}
-
-glm::dvec3 trilinear(const std::vector<SourceLevel>& chain, const glm::dvec2& uv, double lod) {
-  const int coarser = int(chain.size()) - 1;
-  const int l0 = std::min(int(std::floor(lod)), coarser);
-  const int l1 = std::min(l0 + 1, coarser);
-  const auto at = [&](int l) {
-    return bilinearLookup(chain[l].rgb.data(), chain[l].size.width, chain[l].size.height, uv);
-  };
-  return glm::mix(at(l0), at(l1), lod - l0);
-}
-
 struct PrefilterSample {
   glm::dvec3 localNormal;
   double weight = 0;
   double lod = 0;
 };
 
-RadianceLevel prefilterLevel(const std::vector<SourceLevel>& chain, LevelSize size, double alpha, int samples) {
-  const LevelSize source = chain.front().size;
+RadianceLevel prefilterLevel(const std::vector<MipLevel>& chain, LevelSize size, double alpha, int samples) {
+  const MipLevel& source = chain.front();
   std::vector<PrefilterSample> lobe;
   for (int k = 0; k < samples; ++k) {
     const glm::dvec3 normal = m::prefilter_sample_normal(k, samples, alpha);
@@ -138,7 +103,7 @@ RadianceLevel prefilterLevel(const std::vector<SourceLevel>& chain, LevelSize si
       double weight = 0;
       for (const PrefilterSample& s : lobe) {
         const glm::dvec3 l = glm::reflect(-r, m::from_local(frame, s.localNormal));
-        sum += s.weight * trilinear(chain, m::environment_uv(l), s.lod);
+        sum += s.weight * mipChainRadiance(chain, m::environment_uv(l), s.lod);
         weight += s.weight;
       }
       const glm::dvec3 radiance = weight > 0 ? sum / weight : glm::dvec3(0.0);
@@ -190,7 +155,7 @@ PrefilteredEnvironment prefilterOnCpu(const scene::EnvironmentMap& map, const Mo
                                       const PrefilterSettings& settings) {
   PrefilteredEnvironment env;
   env.levels.push_back({map.width, map.height, 0.0, map.rgb});
-  const std::vector<SourceLevel> chain = sourceChain(map);
+  const std::vector<MipLevel> chain = mipChain(map);
   for (int i = 1; i < settings.levels; ++i)
     env.levels.push_back(prefilterLevel(chain, prefilteredLevelSize(map, settings, i),
                                         m::prefiltered_level_alpha(i, settings.levels), settings.samples));

@@ -35,6 +35,8 @@ FACET_FN vec3 fresnel_F(BrdfParams p, real cos_i) {
                   fresnel_dielectric(p.eta.z, cos_i));
     case F_CONDUCTOR:
       return fresnel_conductor(p.eta, p.k, cos_i);
+    case F_BLENDER_METALLIC:
+      return fresnel_blender_metallic(p.f0, cos_i);
   }
   return vec3(real(1));
 }

@@ -6,6 +6,7 @@ const int F_NONE = 0;  // F = 1: the bare microfacet term, as used for albedo
 const int F_SCHLICK = 1;
 const int F_DIELECTRIC = 2;
 const int F_CONDUCTOR = 3;
+const int F_BLENDER_METALLIC = 4;  // Blender Cycles' Principled metallic, not the course's
 
 FACET_FN vec3 fresnel_schlick(vec3 f0, real cos_i) {
   real m = real(1) - clamp(cos_i, real(0), real(1));
@@ -43,4 +44,14 @@ FACET_FN vec3 fresnel_conductor(vec3 eta, vec3 k, real cos_i) {
   vec3 t4 = t2 * s2;
   vec3 rp = rs * (t3 - t4) / (t3 + t4);
   return real(0.5) * (rs + rp);
+}
+
+// Blender Cycles' Principled BSDF, metallic: the exact dielectric curve at
+// index 1.5 rescaled to run from F(0) = f0 at normal incidence to 1 at
+// grazing, F = f0 + (1 - f0) (F_d(cos_i) - F_d(1)) / (1 - F_d(1))
+// (docs/shading.md, "Blender's metallic Fresnel").
+FACET_FN vec3 fresnel_blender_metallic(vec3 f0, real cos_i) {
+  real normal = fresnel_dielectric(real(1.5), real(1));
+  real t = (fresnel_dielectric(real(1.5), cos_i) - normal) / (real(1) - normal);
+  return f0 + (vec3(real(1)) - f0) * t;
 }

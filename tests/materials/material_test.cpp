@@ -55,6 +55,17 @@ TEST(MaterialFile, ConductorAndRoundTrip) {
   EXPECT_EQ(again.alpha, m.alpha);
 }
 
+TEST(MaterialFile, BlenderMetallicReadsF0AndRoundTrips) {
+  Material m = build(R"({"preset": "gold", "fresnel": "blender-metallic", "roughness": 0.5})");
+  EXPECT_EQ(m.fresnel, f64::F_BLENDER_METALLIC);
+  EXPECT_EQ(m.f0, findPreset("gold")->f0_linear);
+  Material again = build(toJson(m).dump());
+  EXPECT_EQ(again.fresnel, m.fresnel);
+  EXPECT_EQ(again.f0, m.f0);
+  EXPECT_EQ(errorOf(R"({"fresnel": "blender-metallic", "alpha": 0.2})"),
+            "test.json: field 'f0': required by fresnel 'blender-metallic' (or give a preset)");
+}
+
 TEST(MaterialFile, ErrorsNameTheFileTheFieldAndTheRule) {
   EXPECT_EQ(errorOf(R"({"alpha": 1.5, "f0": 0.04})"), "test.json: field 'alpha': must be in [0, 1], got 1.5");
   EXPECT_EQ(errorOf(R"({"alpha": 0.5, "f0": [0.04, 2, 0.04]})"),

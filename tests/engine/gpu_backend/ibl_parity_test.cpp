@@ -1,6 +1,8 @@
-// Image-based lighting on the GPU held to the CPU reference: both methods,
-// the sampled one with and without shadow rays, drawing the same random
-// numbers (compute/shared/random.h). Tolerances in docs/rendering.md.
+// Image-based lighting on the GPU held to the CPU reference: the three
+// methods, the sampled and filtered ones with and without shadow rays, and
+// the filtered one with its environment technique (under the sunrise),
+// drawing the same random numbers (compute/shared/random.h). Tolerances in
+// docs/rendering.md.
 #include <gtest/gtest.h>
 
 #include <glm/common.hpp>
@@ -30,12 +32,13 @@ struct IblCase {
   IblMethod method;
   bool occlusion;
   int samples;
+  const char* map = "courtyard_256x128.hdr";
 };
 
 void PrintTo(const IblCase& c, std::ostream* out) { *out << c.name; }
 
-// The default preview, lit by the courtyard alone, small.
-scene::Scene previewUnderCourtyard(const IblCase& c) {
+// The default preview, lit by the case's map alone, small.
+scene::Scene previewUnder(const IblCase& c) {
   scene::Scene s = scene::loadScene(std::filesystem::path(FACET_EXAMPLES_DIR) / "preview.json");
   s.lights.clear();
   s.render.width = 64;
@@ -43,7 +46,7 @@ scene::Scene previewUnderCourtyard(const IblCase& c) {
   s.render.method = scene::IntersectionMethod::Tessellated;
   s.environment.emplace();
   s.environment->map = std::make_shared<const scene::EnvironmentMap>(
-      scene::loadEnvironmentMap(std::filesystem::path(FACET_ENVIRONMENTS_DIR) / "courtyard_256x128.hdr"));
+      scene::loadEnvironmentMap(std::filesystem::path(FACET_ENVIRONMENTS_DIR) / c.map));
   s.environment->rotationDegrees = 40;
   s.environment->method = c.method;
   s.environment->occlusion = c.occlusion;
@@ -70,7 +73,7 @@ std::vector<double> relativeErrors(const Image& reference, const Image& candidat
 class IblParity : public gpu::testing::GpuTest, public ::testing::WithParamInterface<IblCase> {};
 
 TEST_P(IblParity, MatchesTheCpuReference) {
-  const scene::Scene s = previewUnderCourtyard(GetParam());
+  const scene::Scene s = previewUnder(GetParam());
   const scene::SceneGeometry geometry = scene::buildGeometry(s);
   cpu::ReferenceStatistics cpuRays;
   const Image reference = cpu::renderReference(s, geometry, &cpuRays);
@@ -92,7 +95,10 @@ TEST_P(IblParity, MatchesTheCpuReference) {
 INSTANTIATE_TEST_SUITE_P(Methods, IblParity,
                          ::testing::Values(IblCase{"prefiltered", IblMethod::Prefiltered, false, 1},
                                            IblCase{"sampled_unoccluded", IblMethod::Sampled, false, 8},
-                                           IblCase{"sampled_occluded", IblMethod::Sampled, true, 4}),
+                                           IblCase{"sampled_occluded", IblMethod::Sampled, true, 4},
+                                           IblCase{"filtered_unoccluded", IblMethod::Filtered, false, 8},
+                                           IblCase{"filtered_occluded", IblMethod::Filtered, true, 4},
+                                           IblCase{"filtered_sun_occluded", IblMethod::Filtered, true, 4, "sunrise.exr"}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 // Under a white environment a white Lambert surface returns 1 with the split

@@ -88,5 +88,30 @@ TEST(Fresnel, SchlickApproximatesExactDielectric) {
   std::printf("worst |Schlick - exact dielectric|: %.4f\n", worst);
 }
 
+// Blender's metallic curve: F(0) = f0 at normal incidence, 1 at grazing,
+// and for f0 = F_d(1) = 0.04 the index-1.5 dielectric itself.
+TEST(Fresnel, BlenderMetallicRescalesTheIndexOnePointFiveDielectric) {
+  const glm::dvec3 f0(0.04, 0.5, 0.955);
+  const double normal = fresnelReference(1.5, 1.0);
+  EXPECT_NEAR(normal, 0.04, 1e-15);
+  for (double degrees : kDegrees) {
+    const double c = cosDegrees(degrees);
+    const double exact = fresnelReference(1.5, c);
+    const glm::dvec3 f = f64::fresnel_blender_metallic(f0, c);
+    const glm::vec3 g = f32::fresnel_blender_metallic(glm::vec3(f0), float(c));
+    for (int i = 0; i < 3; ++i) {
+      const double expected = f0[i] + (1 - f0[i]) * (exact - normal) / (1 - normal);
+      EXPECT_NEAR(f[i], expected, 1e-13) << "theta=" << degrees;
+      EXPECT_NEAR(g[i], expected, 2e-6) << "theta=" << degrees;
+    }
+    EXPECT_NEAR(f.x, exact, 1e-13) << "theta=" << degrees;
+  }
+  const glm::dvec3 atNormal = f64::fresnel_blender_metallic(f0, 1.0), atGrazing = f64::fresnel_blender_metallic(f0, 0.0);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(atNormal[i], f0[i], 1e-15);
+    EXPECT_NEAR(atGrazing[i], 1.0, 1e-15);
+  }
+}
+
 }  // namespace
 }  // namespace facet::materials
