@@ -27,7 +27,7 @@ void requireNumbers(CLI::App& command) {
         if (!CLI::detail::lexical_cast(text, value)) return "expected a number, got '" + text + "'";
         return std::isfinite(value) ? std::string() : "expected a finite number, got '" + text + "'";
       },
-      "NUMBER");
+      "", "number");  // no description: the help keeps CLI11's type and range
   for (CLI::Option* option : command.get_options()) {
     const std::string type = option->get_type_name();
     if (type.find("FLOAT") != std::string::npos || type.find("INT") != std::string::npos) option->transform(number);
