@@ -204,7 +204,7 @@ Material loadMaterial(const std::filesystem::path& path) {
   nlohmann::json json;
   try {
     json = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // syntax errors, and numbers beyond double's range
     throw std::invalid_argument(path.string() + ": not valid JSON: " + e.what());
   }
   const std::string source = path.string();

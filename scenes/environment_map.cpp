@@ -24,6 +24,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "scenes/exr_header.h"
 #include "scenes/input_error.h"
 
 namespace facet::scene {
@@ -85,6 +86,7 @@ void zeroBadTexels(EnvironmentMap& map) {
 
 EnvironmentMap readExr(const fs::path& file) {
   const std::string source = file.string();
+  checkExrHeaders(file, [&](std::int64_t width, std::int64_t height) { checkSize(source, width, height); });
   try {
     Imf::InputFile in(source.c_str());
     const Imath::Box2i window = in.header().dataWindow();

@@ -27,7 +27,10 @@ class Field {
   Field(const json& value, std::string path, const std::string& source)
       : value_(value), path_(std::move(path)), source_(source) {}
 
-  [[noreturn]] void fail(const std::string& rule) const { throw InputError(source_, 0, path_, rule); }
+  // The document itself has no path: it is named as such.
+  [[noreturn]] void fail(const std::string& rule) const {
+    throw InputError(source_, 0, path_.empty() ? "the document" : path_, rule);
+  }
 
   const json& value() const { return value_; }
   const std::string& path() const { return path_; }

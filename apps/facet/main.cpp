@@ -18,20 +18,22 @@
 
 namespace {
 
-// CLI11 reads "nan" and "inf" as numbers, and its ranges let NaN through;
-// every floating-point option of every command takes finite numbers only.
-void requireFiniteNumbers(CLI::App& command) {
-  const CLI::Validator finite(
+// CLI11's ranges call a word that is not a number "not in range", and they
+// let NaN and Inf through: every numeric option of every command first
+// takes a number, finite where it is floating-point.
+void requireNumbers(CLI::App& command) {
+  const CLI::Validator number(
       [](std::string& text) {
         double value = 0;
-        return CLI::detail::lexical_cast(text, value) && !std::isfinite(value)
-                   ? "expected a finite number, got '" + text + "'"
-                   : std::string();
+        if (!CLI::detail::lexical_cast(text, value)) return "expected a number, got '" + text + "'";
+        return std::isfinite(value) ? std::string() : "expected a finite number, got '" + text + "'";
       },
-      "FINITE");
-  for (CLI::Option* option : command.get_options())
-    if (option->get_type_name().find("FLOAT") != std::string::npos) option->check(finite);
-  for (CLI::App* subcommand : command.get_subcommands({})) requireFiniteNumbers(*subcommand);
+      "", "number");  // no description: the help keeps CLI11's type and range
+  for (CLI::Option* option : command.get_options()) {
+    const std::string type = option->get_type_name();
+    if (type.find("FLOAT") != std::string::npos || type.find("INT") != std::string::npos) option->transform(number);
+  }
+  for (CLI::App* subcommand : command.get_subcommands({})) requireNumbers(*subcommand);
 }
 
 int fail(facet::cli::ExitCode code, const std::string& message) {
@@ -56,7 +58,7 @@ int main(int argc, char** argv) {
   addParityCommand(app);
   addIblChartCommand(app);
   addBenchCommand(app);
-  requireFiniteNumbers(app);
+  requireNumbers(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -8,6 +8,7 @@
 #include <stb_image_write.h>  // implemented in facet_image
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -274,6 +275,23 @@ TEST_F(EnvironmentMaps, HeadersAreCheckedBeforeAnyPixelIsRead) {
   // A zero run length would make stb_image loop forever.
   EXPECT_THAT(errorOf(writeBytes("zero_run.hdr", header + "-Y 4 +X 8\n" + std::string("\x02\x02\x00\x08\x00", 5))),
               AllOf(HasSubstr("zero_run.hdr"), HasSubstr("bad run-length data")));
+}
+
+TEST_F(EnvironmentMaps, ExrHeadersAreCheckedBeforeOpenExrAllocatesFromThem) {
+  // After the magic and version: an attribute that claims 1.6 GB, holding 4 bytes.
+  const std::string exr = bytesOf(writeRgbExr("whole.exr", 8, 4, std::vector<float>(96, 1.0f)));
+  const std::int32_t claimed = 1634692198;
+  const std::string attribute =
+      std::string("comment\0opaque\0", 15) + std::string(reinterpret_cast<const char*>(&claimed), 4) + "xxxx";
+  EXPECT_THAT(errorOf(writeBytes("claims.exr", exr.substr(0, 8) + attribute + exr.substr(8))),
+              AllOf(HasSubstr("claims.exr"),
+                    HasSubstr("attribute 'comment' (opaque) claims 1634692198 bytes, more than the file holds")));
+  // OpenEXR reads a channel list to its empty name, whatever its size says.
+  std::string longer = exr;
+  const std::size_t channels = longer.find(std::string("channels\0chlist\0", 16)) + 16;
+  longer[channels] = char(longer[channels] + 1);
+  EXPECT_THAT(errorOf(writeBytes("channels.exr", longer)), HasSubstr("attribute 'channels' (chlist) claims"));
+  EXPECT_EQ(loadEnvironmentMap(writeBytes("copy.exr", exr)).width, 8);
 }
 
 TEST_F(EnvironmentMaps, ExrFilesNeedColourChannels) {

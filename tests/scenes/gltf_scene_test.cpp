@@ -44,8 +44,9 @@ class GltfMeshes : public facet::testing::TempDirTest {
                  const std::vector<std::uint16_t>& indices, int mode) {
     std::vector<char> bytes(positions.size() * sizeof(glm::vec3) + indices.size() * sizeof(std::uint16_t));
     std::memcpy(bytes.data(), positions.data(), positions.size() * sizeof(glm::vec3));
-    std::memcpy(bytes.data() + positions.size() * sizeof(glm::vec3), indices.data(),
-                indices.size() * sizeof(std::uint16_t));
+    if (!indices.empty())  // memcpy from an empty vector's null data is undefined, even for 0 bytes
+      std::memcpy(bytes.data() + positions.size() * sizeof(glm::vec3), indices.data(),
+                  indices.size() * sizeof(std::uint16_t));
     std::ofstream(dir_ / (name + ".bin"), std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
     const std::size_t positionBytes = positions.size() * sizeof(glm::vec3);
     std::string accessors = R"({"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": )" +

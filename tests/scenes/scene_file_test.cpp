@@ -84,6 +84,8 @@ TEST_F(SceneFiles, ErrorsNameTheFileTheFieldAndTheRule) {
   EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj"}],)"),
               AllOf(HasSubstr("not valid JSON"), HasSubstr("line 1")));
   EXPECT_THAT(errorOf(R"({"objects": []})"), AllOf(HasSubstr("objects"), HasSubstr("non-empty")));
+  EXPECT_THAT(errorOf("[1]"), HasSubstr("scene.json: the document: expected an object"));
+  EXPECT_THAT(errorOf("{}"), HasSubstr("scene.json: the document: a scene needs objects"));
   EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj", "material": {"alpha": 2}}]})"),
               AllOf(HasSubstr("objects[0].material.alpha"), HasSubstr("[0, 1]")));
 }

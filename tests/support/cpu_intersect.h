@@ -41,8 +41,12 @@ struct AimedRay {
 inline glm::dvec3 randomDirection(std::mt19937& random) {
   std::normal_distribution<double> normal;
   glm::dvec3 d;
-  do d = glm::dvec3(normal(random), normal(random), normal(random));
-  while (glm::length(d) < 1e-6);
+  do {
+    // Drawn z first, in sequence: the order of a call's arguments is
+    // unspecified, and gcc and clang differ.
+    const double z = normal(random), y = normal(random), x = normal(random);
+    d = glm::dvec3(x, y, z);
+  } while (glm::length(d) < 1e-6);
   return glm::normalize(d);
 }
 

@@ -140,8 +140,9 @@ TEST(TessellatedIntersection, AgreesWithExactOnRandomRays) {
     for (int i = 0; i < kRays; ++i) {
       Ray ray;
       ray.origin = centre + 1.5 * geometry.diagonal * testing::randomDirection(random);
-      ray.direction = glm::normalize(
-          centre + geometry.diagonal * glm::dvec3(offset(random), offset(random), offset(random)) - ray.origin);
+      // Drawn z first, in sequence (see randomDirection).
+      const double z = offset(random), y = offset(random), x = offset(random);
+      ray.direction = glm::normalize(centre + geometry.diagonal * glm::dvec3(x, y, z) - ray.origin);
       std::optional<SurfaceHit> exact = intersectExact(geometry.surface, geometry.bvh, ray);
       std::optional<SurfaceHit> diced = intersectTessellated(geometry.surface, geometry.bvh, tessellation, ray);
       hits += exact.has_value();
