@@ -99,7 +99,7 @@ void printSummary(const scene::Scene& scene, const RenderReport& report, const R
   std::printf("wrote %s%s%s\n", job.exr.c_str(), job.png.empty() ? "" : " and ", job.png.c_str());
 }
 
-// One entry of --json's "renders" (docs/farm.md).
+// One entry of --json's "renders" (README.md, "Rendering on a farm").
 nlohmann::json renderJson(const RenderReport& report, const RenderJob& job, double wallMilliseconds) {
   nlohmann::json stages = nlohmann::json::object();
   for (const StageTime& stage : report.stages) stages[stage.name] = stage.milliseconds;

@@ -26,7 +26,7 @@ void addFarmOptions(CLI::App& command, FarmOptions& o) {
                   "SLURM_CPUS_PER_TASK, else every core)")
       ->check(CLI::Range(1u, 4096u));
   command.add_flag("--quiet", o.quiet, "No progress and no summary; errors and --json only");
-  command.add_flag("--json", o.json, "Print the summary as one JSON object (docs/farm.md)");
+  command.add_flag("--json", o.json, "Print the summary as one JSON object (README.md, \"Rendering on a farm\")");
 }
 
 namespace {

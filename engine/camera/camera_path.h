@@ -9,7 +9,6 @@
 #include <cmath>
 #include <vector>
 
-#include "scenes/camera_keys.h"
 #include "scenes/scene.h"
 
 namespace facet::camera {
