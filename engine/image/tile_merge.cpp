@@ -180,8 +180,6 @@ void mergeTiles(const std::vector<std::filesystem::path>& paths, const MergeOutp
                          previewBand(planes, std::size_t(y1 - y0) * std::size_t(width), outputs.exposure,
                                      preview.data() + std::size_t(y0) * std::size_t(width) * 4);
                      }
-                   } catch (const std::invalid_argument&) {
-                     throw;
                    } catch (const std::exception& e) {
                      throw OutputError(outputs.exr.string() + ": cannot merge the tiles: " + e.what());
                    }

@@ -3,7 +3,8 @@
 #   - 4 tiles merged by facet merge equal the whole render, bit for bit;
 #   - a frame rendered alone equals the same frame of a range (turntable
 #     and camera keys), and '#' pads the frame number;
-#   - render --json prints the documented summary.
+#   - render --json prints the documented summary;
+#   - progress shows in a log, and --quiet prints nothing.
 #   check_farm.sh FACET REPOSITORY WORK_FOLDER
 set -euo pipefail
 facet=$1 repo=$2 work=$3
@@ -55,4 +56,11 @@ for r in s["renders"]:
     assert set(r["stages_ms"]) == {"refine + BVH", "trace + shade"} and r["wall_ms"] > 0
     assert r["gpu_bytes"] == 0
 PY
+# Progress in a log: a line at every tenth, with the time left; --quiet: nothing at all.
+"$facet" render "$ball" --size 40x34 --backend cpu -o progress.exr >/dev/null 2>progress.log
+grep -Eq "^rendering 100%, [0-9.]+ s elapsed, about [0-9.]+ s left$" progress.log || fail "no progress lines in a log"
+lines=$(grep -c "%" progress.log)
+[[ $lines -ge 5 && $lines -le 10 ]] || fail "$lines progress lines, expected one per tenth"
+"$facet" render "$ball" "${common[@]}" -o quiet.exr >quiet.out 2>&1
+[[ ! -s quiet.out ]] || fail "--quiet printed: $(cat quiet.out)"
 echo "check_farm: passed"
