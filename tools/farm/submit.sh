@@ -9,7 +9,7 @@
 # Environment: FACET, the facet binary (default: facet on PATH);
 # FACET_SBATCH_OPTIONS, more sbatch options for every job, e.g.
 # "--partition=render --cpus-per-task=8". Prints the job ids; with --wait,
-# returns when the last job ends, with its exit status.
+# returns when the last job ends: 0 only if every task completed.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 task=$here/facet_task.sbatch
@@ -31,6 +31,14 @@ if [[ ${1:-} == --png ]]; then
   shift 2
 fi
 [[ ${1:-} == -- ]] || usage
+# sbatch --wait reports 0 for a job cancelled before it ran (the merge, when a
+# tile failed), so with --wait every task's final state is read back.
+finished() {
+  [[ ${#wait[@]} -gt 0 ]] || return 0
+  local states
+  states=$(scontrol show job "$1" -o | grep -o 'JobState=[A-Z_]*' | sort -u | tr '\n' ' ')
+  [[ $states == "JobState=COMPLETED " ]] || { echo "submit.sh: job $1 ended as: ${states//JobState=/}" >&2; exit 1; }
+}
 export FACET=${FACET:-facet}
 read -r -a options <<<"${FACET_SBATCH_OPTIONS:-}"
 logs=(--output="$(dirname "$out")/facet-%A_%a.log")
@@ -42,12 +50,14 @@ case "$mode" in
     merge=$(sbatch --parsable "${wait[@]}" "${options[@]}" --output="$(dirname "$out")/facet-%j.log" \
       --dependency="afterok:$array" --kill-on-invalid-dep=yes "$task" merge "$range" "$out" $png)
     echo "merge: job $merge"
+    finished "$merge"
     ;;
   frames)
     [[ $range =~ ^[0-9]+-[0-9]+(:[0-9]+)?$ ]] || usage
     [[ -z $png ]] || usage
     frames=$(sbatch --parsable "${wait[@]}" "${options[@]}" "${logs[@]}" --array="$range" "$task" frame "$out" "$@")
     echo "frames: job $frames"
+    finished "$frames"
     ;;
   *) usage ;;
 esac

@@ -4,7 +4,8 @@
 # generated configuration, localhost only, private socket, ports and state
 # in a temporary folder), submits through tools/farm/submit.sh a 4-tile
 # still and a 4-frame turntable as array tasks, merges the tiles in the
-# dependent job, and checks the results against single-process renders.
+# dependent job, and checks the results against single-process renders;
+# a failing tile must cancel its merge.
 # Needs root (munged runs as the munge user, the Slurm daemons as root).
 # A cluster that cannot start fails the test; the daemons are stopped
 # however it ends.
@@ -121,4 +122,9 @@ for f in 000 001 002 003; do
 done
 same_pixels "$out/turn_000.exr" "$out/turn_001.exr" &&
   fail "the turntable's frames 0 and 1 are the same image"
+# A tile that fails cancels the merge, and --wait reports it.
+if "$repo/tools/farm/submit.sh" --wait tiles 2 "$out/broken.exr" -- "$scene" "${common[@]}" --spp 3 >/dev/null 2>&1; then
+  fail "a failed tile's merge was reported as done"
+fi
+[[ ! -e $out/broken.exr ]] || fail "a failed tile's merge wrote the image"
 echo "slurm_end_to_end: passed"
