@@ -19,7 +19,7 @@ if [[ ${1:-} == --wait ]]; then
   shift
 fi
 usage() {
-  sed -n '2,13p' "$0" >&2
+  sed -n '2,12p' "$0" >&2
   exit 1
 }
 [[ $# -ge 4 ]] || usage
