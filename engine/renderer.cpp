@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
-#include <thread>
+#include <stdexcept>
 
 #include "engine/cpu/reference_renderer.h"
 #include "engine/gpu_backend/gpu_renderer.h"
@@ -83,9 +83,14 @@ RenderReport render(const scene::Scene& scene, Backend backend, const std::funct
   return Renderer(adapter).render(scene, backend, progress);
 }
 
-RenderReport Renderer::render(const scene::Scene& scene, Backend backend,
-                              const std::function<void(double)>& progress) {
+RenderReport Renderer::render(const scene::Scene& scene, Backend backend, const std::function<void(double)>& progress,
+                              const RenderOptions& options) {
   RenderReport report;
+  report.window = options.crop.value_or(PixelRect::whole(scene.render.width, scene.render.height));
+  if (report.window.empty() || !report.window.inside(scene.render.width, scene.render.height))
+    throw std::invalid_argument("crop " + report.window.text() + ": must be a non-empty rectangle inside the " +
+                                std::to_string(scene.render.width) + "x" + std::to_string(scene.render.height) +
+                                " image");
   Stopwatch clock;
   scene::SceneGeometry geometry = scene::buildGeometry(scene);
   report.stages.push_back({"refine + BVH", clock.lap()});
@@ -94,19 +99,19 @@ RenderReport Renderer::render(const scene::Scene& scene, Backend backend,
   switch (backend) {
     case Backend::Cpu: {
       cpu::ReferenceStatistics statistics;
-      report.image = cpu::renderReference(scene, geometry, &statistics, progress);
+      report.image = cpu::renderReference(scene, geometry, &statistics, progress, options.crop, options.threads);
       const double milliseconds = clock.lap();
       if (scene.environment) report.stages.push_back({"environment", statistics.environmentMilliseconds});
       report.stages.push_back({"trace + shade", milliseconds - statistics.environmentMilliseconds});
-      report.device = "CPU reference, double precision, " +
-                      std::to_string(std::max(1u, std::thread::hardware_concurrency())) + " threads";
+      report.device =
+          "CPU reference, double precision, " + std::to_string(cpu::resolveThreadCount(options.threads)) + " threads";
       report.primaryRays = statistics.primaryRays;
       report.shadowRays = statistics.shadowRays;
       break;
     }
     case Backend::Gpu: {
       GpuContext& context = gpuContext();
-      gpu_backend::GpuRenderResult result = context.renderer->render(scene, geometry, progress);
+      gpu_backend::GpuRenderResult result = context.renderer->render(scene, geometry, progress, options.crop);
       report.image = std::move(result.image);
       for (const auto& [name, milliseconds] : result.stageMilliseconds) report.stages.push_back({name, milliseconds});
       report.device = context.device.adapterInfo().name + " (GPU, float)";

@@ -5,11 +5,13 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "engine/gpu/gpu.h"
 #include "engine/image/image.h"
+#include "engine/image/pixel_rect.h"
 #include "scenes/scene.h"
 
 namespace facet {
@@ -22,8 +24,15 @@ struct StageTime {
   double milliseconds = 0;
 };
 
+// What part of the image to render, and on how many threads.
+struct RenderOptions {
+  std::optional<PixelRect> crop;  // of the full image; none: all of it
+  unsigned threads = 0;           // CPU backend's workers; 0: every core
+};
+
 struct RenderReport {
-  Image image;
+  Image image;                  // the crop's pixels, or the whole image
+  PixelRect window;             // where `image` lies in the full image
   std::string device;           // what ran the render
   std::string geometrySummary;  // refinement, patch counts and memory per object
   int patches = 0;
@@ -58,7 +67,8 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  RenderReport render(const scene::Scene& scene, Backend backend, const std::function<void(double)>& progress = {});
+  RenderReport render(const scene::Scene& scene, Backend backend, const std::function<void(double)>& progress = {},
+                      const RenderOptions& options = {});
 
  private:
   struct GpuContext;

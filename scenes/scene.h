@@ -27,6 +27,12 @@ struct Camera {
   double verticalFovDegrees = 40.0;
 };
 
+// The camera at a frame of an animation (scenes/camera_keys.h).
+struct CameraKey {
+  int frame = 0;
+  Camera camera;
+};
+
 enum class LightType { Directional, Point, Spot };
 
 // Punctual lights in the course's convention: `color` is c_light, the
@@ -105,6 +111,7 @@ struct Object {
 struct Scene {
   std::filesystem::path source;
   Camera camera;
+  std::vector<CameraKey> cameraKeys;  // by frame; empty: `camera` in every frame
   std::vector<materials::Material> materials;
   std::vector<Object> objects;
   std::vector<Light> lights;

@@ -10,6 +10,7 @@
 #include <set>
 
 #include "materials/strict_json.h"
+#include "scenes/camera_keys.h"
 #include "scenes/environment_map.h"
 #include "scenes/input_error.h"
 #include "scenes/obj_cage.h"
@@ -281,7 +282,7 @@ Scene loadJsonScene(const std::filesystem::path& path) {
     throw InputError(source, 0, "not valid JSON", e.what());
   }
   const Field root(document, "", source);
-  root.object({"camera", "materials", "objects", "lights", "render", "environment"});
+  root.object({"camera", "camera_keys", "materials", "objects", "lights", "render", "environment"});
 
   Scene scene;
   scene.source = path;
@@ -338,6 +339,11 @@ Scene loadJsonScene(const std::filesystem::path& path) {
   if (root.has("render")) readRender(root["render"], scene.render);
   if (root.has("environment")) scene.environment = readEnvironment(root["environment"], path);
   scene.camera = root.has("camera") ? readCamera(root["camera"]) : frameBounds(cageBounds(scene));
+  if (root.has("camera_keys"))
+    scene.cameraKeys =
+        readCameraKeys(document["camera_keys"], scene.camera, source, [&](const json& camera, const std::string& at) {
+          return readCamera({camera, at, source});
+        });
   if (root.has("lights")) {
     const Field lights = root["lights"];
     if (!lights.value().is_array()) lights.fail("expected an array");

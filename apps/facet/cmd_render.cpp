@@ -1,95 +1,177 @@
-// facet render: a scene file (or a bare cage) to EXR with every AOV, and a PNG preview.
+// facet render: a scene file (or a bare cage) to EXR with every AOV, and a
+// PNG preview; or a crop, a tile or a range of frames of it (farm_options.h).
 #include <CLI/CLI.hpp>
-
-#include <unistd.h>
+#include <nlohmann/json.hpp>
+#include <sys/resource.h>
 
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "commands.h"
 #include "engine/image/image_io.h"
 #include "engine/renderer.h"
+#include "farm_options.h"
+#include "progress_log.h"
 #include "scene_options.h"
 #include "scenes/scene_file.h"
+#include "settings_digest.h"
 
 namespace facet::cli {
 namespace {
 
-struct RenderOptions {
+struct RenderCommandOptions {
   std::string scene;
   std::string exr;
   std::string png;
   float exposure = 0;
   SceneOverrides scene_overrides;
+  FarmOptions farm;
   std::string backend = "gpu";
   std::string adapter;
 };
 
-// Every output is checked before the render and written as a set, so a
-// failure leaves no new file and every old one as it was.
-void checkOutputs(const RenderOptions& o) {
-  checkOutputPath("-o", o.exr);
-  if (o.png.empty()) return;
-  checkOutputPath("--png", o.png);
-  if (std::filesystem::absolute(o.png).lexically_normal() == std::filesystem::absolute(o.exr).lexically_normal())
-    throw OutputError("--png '" + o.png + "': names the same file as -o");
+// One image to render: its frame (none for a still) and where it goes.
+struct RenderJob {
+  std::optional<int> frame;
+  std::string exr;
+  std::string png;
+};
+
+// A single frame may keep a name without '#'; a range needs it.
+std::vector<RenderJob> renderJobs(const RenderCommandOptions& o) {
+  const std::vector<int> frames = chosenFrames(o.farm);
+  if (frames.empty()) return {{std::nullopt, o.exr, o.png}};
+  auto name = [&](const char* flag, const std::string& pattern, int frame) {
+    const bool numbered = frames.size() > 1 || pattern.find('#') != std::string::npos;
+    return pattern.empty() || !numbered ? pattern : framePath(flag, pattern, frame);
+  };
+  std::vector<RenderJob> jobs;
+  for (int frame : frames) jobs.push_back({frame, name("-o", o.exr, frame), name("--png", o.png, frame)});
+  return jobs;
 }
 
-void runRender(const RenderOptions& o) {
-  checkOutputs(o);
-  scene::Scene scene = scene::loadScene(o.scene);
-  applySceneOverrides(o.scene_overrides, scene);
-  checkImagesFitInMemory(scene, 1, o.scene_overrides.size.empty() ? o.scene + ": image size" : "--size");
-  if (scene.environment && scene.environment->map->clampedTexels > 0)
-    std::fprintf(stderr, "warning: %s: %zu texels were negative, NaN or Inf and are set to 0\n",
-                 scene.environment->map->source.c_str(), scene.environment->map->clampedTexels);
-  const bool interactive = isatty(STDERR_FILENO);
-  auto progress = [&](double done) {
-    if (interactive) std::fprintf(stderr, "\rrendering %3d%%", int(done * 100));
-  };
-  const auto start = std::chrono::steady_clock::now();
-  RenderReport report = render(scene, o.backend == "cpu" ? Backend::Cpu : Backend::Gpu, progress, o.adapter);
-  const double wallMilliseconds =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  if (interactive) std::fprintf(stderr, "\r              \r");
+// Every output of every frame is checked before the first render, and each
+// frame's are written as a set, so a failure leaves no new file of that
+// frame and every old one as it was.
+void checkOutputs(const RenderJob& job) {
+  checkOutputPath("-o", job.exr);
+  if (job.png.empty()) return;
+  checkOutputPath("--png", job.png);
+  if (std::filesystem::absolute(job.png).lexically_normal() == std::filesystem::absolute(job.exr).lexically_normal())
+    throw OutputError("--png '" + job.png + "': names the same file as -o");
+}
 
-  std::vector<OutputFile> outputs{exrFile(o.exr, report.image)};
-  if (!o.png.empty()) outputs.push_back(pngFile(o.png, report.image, o.exposure));
-  writeAllOrNothing(outputs);
+std::uint64_t peakResidentBytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return std::uint64_t(usage.ru_maxrss) * 1024;  // Linux reports KiB
+}
 
+// Every stage after refinement casts or shades rays.
+double raysPerSecond(const RenderReport& report) {
+  const double traceSeconds = (report.totalMilliseconds() - report.stages.front().milliseconds) * 1e-3;
+  return double(report.primaryRays + report.shadowRays) / traceSeconds;
+}
+
+void printSummary(const scene::Scene& scene, const RenderReport& report, const RenderJob& job,
+                  double wallMilliseconds) {
   std::printf("%s\n", report.geometrySummary.c_str());
   if (scene.environment) std::printf("%s\n", describeEnvironment(*scene.environment).c_str());
   std::printf("backend: %s; %dx%d, %d spp, %s intersection\n", report.device.c_str(), scene.render.width,
               scene.render.height, scene.render.samplesPerPixel,
               scene.render.method == scene::IntersectionMethod::Exact ? "exact" : "tessellated");
+  if (!(report.window == PixelRect::whole(scene.render.width, scene.render.height)))
+    std::printf("crop: %s (%dx%d pixels)\n", report.window.text().c_str(), report.window.width(),
+                report.window.height());
   for (const StageTime& stage : report.stages)
     std::printf("  %-16s %8.1f ms\n", stage.name.c_str(), stage.milliseconds);
   std::printf("  %-16s %8.1f ms (wall clock, everything)\n", "total", wallMilliseconds);
-  // Every stage after refinement casts or shades rays.
-  const double traceSeconds = (report.totalMilliseconds() - report.stages.front().milliseconds) * 1e-3;
   std::printf("rays: %llu primary, %llu shadow, %.2f Mrays/s\n", (unsigned long long)report.primaryRays,
-              (unsigned long long)report.shadowRays,
-              double(report.primaryRays + report.shadowRays) / traceSeconds * 1e-6);
+              (unsigned long long)report.shadowRays, raysPerSecond(report) * 1e-6);
   if (report.cells)
     std::printf("micro-grid: %llu cells, %llu exact fallbacks, %.1f MiB of GPU arrays\n",
                 (unsigned long long)report.cells, (unsigned long long)report.newtonFallbacks,
                 double(report.gpuBytes) / (1 << 20));
-  std::printf("wrote %s%s%s\n", o.exr.c_str(), o.png.empty() ? "" : " and ", o.png.c_str());
+  std::printf("wrote %s%s%s\n", job.exr.c_str(), job.png.empty() ? "" : " and ", job.png.c_str());
+}
+
+// One entry of --json's "renders" (README.md, "Rendering on a farm").
+nlohmann::json renderJson(const RenderReport& report, const RenderJob& job, double wallMilliseconds) {
+  nlohmann::json stages = nlohmann::json::object();
+  for (const StageTime& stage : report.stages) stages[stage.name] = stage.milliseconds;
+  nlohmann::json outputs = {job.exr};
+  if (!job.png.empty()) outputs.push_back(job.png);
+  return {{"frame", job.frame ? nlohmann::json(*job.frame) : nlohmann::json()},
+          {"crop", {report.window.x0, report.window.y0, report.window.x1, report.window.y1}},
+          {"stages_ms", stages},
+          {"wall_ms", wallMilliseconds},
+          {"primary_rays", report.primaryRays},
+          {"shadow_rays", report.shadowRays},
+          {"rays_per_second", raysPerSecond(report)},
+          {"gpu_bytes", report.gpuBytes},
+          {"outputs", outputs}};
+}
+
+void runRender(const RenderCommandOptions& o) {
+  const std::vector<RenderJob> jobs = renderJobs(o);
+  for (const RenderJob& job : jobs) checkOutputs(job);
+  scene::Scene scene = scene::loadScene(o.scene);
+  applySceneOverrides(o.scene_overrides, scene);
+  const int width = scene.render.width, height = scene.render.height;
+  const std::optional<PixelRect> crop = chosenCrop(o.farm, width, height);
+  checkImagesFitInMemory(scene, 1, o.scene_overrides.size.empty() ? o.scene + ": image size" : "--size", crop);
+  if (scene.environment && scene.environment->map->clampedTexels > 0)
+    std::fprintf(stderr, "warning: %s: %zu texels were negative, NaN or Inf and are set to 0\n",
+                 scene.environment->map->source.c_str(), scene.environment->map->clampedTexels);
+  const Backend backend = o.backend == "cpu" ? Backend::Cpu : Backend::Gpu;
+  const unsigned threads = chosenThreads(o.farm);
+  if (backend == Backend::Gpu) limitLavapipeThreads(threads);
+
+  Renderer renderer(o.adapter);
+  const scene::Camera still = scene.camera;
+  nlohmann::json summary = {{"backend", o.backend},
+                            {"width", width},
+                            {"height", height},
+                            {"spp", scene.render.samplesPerPixel},
+                            {"renders", nlohmann::json::array()}};
+  for (const RenderJob& job : jobs) {
+    scene.camera = job.frame ? frameCamera(still, scene.cameraKeys, o.farm, *job.frame) : still;
+    const auto start = std::chrono::steady_clock::now();
+    ProgressLog progress(job.frame ? "frame " + std::to_string(*job.frame) : std::string("rendering"),
+                         o.farm.quiet || o.farm.json);
+    const RenderReport report = renderer.render(scene, backend, std::ref(progress), {crop, threads});
+    progress.finish();
+    const double wallMilliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+    const ExrPlacement placement{report.window, width, height, settingsDigest(scene, o.backend)};
+    std::vector<OutputFile> outputs{exrFile(job.exr, report.image, placement)};
+    if (!job.png.empty()) outputs.push_back(pngFile(job.png, report.image, o.exposure));
+    writeAllOrNothing(outputs);
+
+    summary["adapter"] = report.device;
+    summary["renders"].push_back(renderJson(report, job, wallMilliseconds));
+    if (!o.farm.quiet && !o.farm.json) printSummary(scene, report, job, wallMilliseconds);
+  }
+  summary["peak_resident_bytes"] = peakResidentBytes();
+  if (o.farm.json) std::printf("%s\n", summary.dump(2).c_str());
 }
 
 }  // namespace
 
 void addRenderCommand(CLI::App& app) {
-  auto o = std::make_shared<RenderOptions>();
+  auto o = std::make_shared<RenderCommandOptions>();
   auto* c = app.add_subcommand("render", "Render a scene (.json), a control cage (.obj) or a glTF file");
   c->add_option("scene", o->scene, "Scene file")->required()->check(CLI::ExistingFile);
-  c->add_option("-o,--output", o->exr, "EXR with beauty and every AOV")->required();
+  c->add_option("-o,--output", o->exr, "EXR with beauty and every AOV ('#' for the frame number)")->required();
   c->add_option("--png", o->png, "Also write an 8-bit sRGB preview");
   c->add_option("--exposure", o->exposure, "PNG exposure in stops");
   addSceneOverrideOptions(*c, o->scene_overrides);
+  addFarmOptions(*c, o->farm);
   c->add_option("--backend", o->backend, "Renderer backend: the GPU kernels or the CPU reference")
       ->check(CLI::IsMember({"gpu", "cpu"}));
   c->add_option("--adapter", o->adapter, "GPU adapter: a substring of its name (default: FACET_ADAPTER or the first)");

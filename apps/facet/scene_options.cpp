@@ -134,16 +134,19 @@ std::string gigabytes(std::uint64_t bytes) {
 
 }  // namespace
 
-void checkImagesFitInMemory(const scene::Scene& scene, int images, const std::string& sizeSource) {
-  const std::uint64_t pixels = std::uint64_t(scene.render.width) * std::uint64_t(scene.render.height);
+void checkImagesFitInMemory(const scene::Scene& scene, int images, const std::string& sizeSource,
+                            const std::optional<PixelRect>& crop) {
+  const std::uint64_t pixels =
+      crop ? crop->pixelCount() : std::uint64_t(scene.render.width) * std::uint64_t(scene.render.height);
   const std::uint64_t needed =
       pixels * (std::uint64_t(images) * kImageBytesPerPixel + kWorkingBytesPerPixel) + kGpuBandBytes;
   const MemoryLimit limit = imageMemoryLimit();
   if (needed > limit.bytes)
     throw std::invalid_argument(sizeSource + " " + std::to_string(scene.render.width) + "x" +
-                                std::to_string(scene.render.height) + ": the render needs about " + gigabytes(needed) +
-                                " of memory and the limit is " + gigabytes(limit.bytes) + " (" + limit.source +
-                                "); give a smaller --size");
+                                std::to_string(scene.render.height) + (crop ? ", crop " + crop->text() : "") +
+                                ": the render needs about " + gigabytes(needed) + " of memory and the limit is " +
+                                gigabytes(limit.bytes) + " (" + limit.source + "); give a smaller --size" +
+                                (crop ? " or more --tile tiles" : " or render it as --tile tiles"));
 }
 
 std::string describeEnvironment(const scene::Environment& e) {

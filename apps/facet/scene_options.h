@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/image/pixel_rect.h"
 #include "scenes/scene.h"
 
 namespace facet::cli {
@@ -39,10 +40,11 @@ void applySceneOverrides(const SceneOverrides& overrides, scene::Scene& scene);
 void applyImageSize(const std::string& size, scene::Scene& scene);
 void applyMethod(const std::string& method, scene::Scene& scene);
 
-// Throws std::invalid_argument unless `images` images of the scene's size fit
-// in memory (docs/reliability.md#limits); `sizeSource` names where the size
-// came from.
-void checkImagesFitInMemory(const scene::Scene& scene, int images, const std::string& sizeSource);
+// Throws std::invalid_argument unless `images` images of the scene's size,
+// or of the crop of it that is rendered, fit in memory
+// (docs/reliability.md#limits); `sizeSource` names where the size came from.
+void checkImagesFitInMemory(const scene::Scene& scene, int images, const std::string& sizeSource,
+                            const std::optional<PixelRect>& crop = {});
 
 // One line for people: the map, its size and the lighting method.
 std::string describeEnvironment(const scene::Environment& environment);

@@ -237,10 +237,16 @@ class ReferenceScene {
 
 }  // namespace
 
+unsigned resolveThreadCount(unsigned threadCount) {
+  return threadCount > 0 ? threadCount : std::max(1u, std::thread::hardware_concurrency());
+}
+
 Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geometry, ReferenceStatistics* statistics,
-                      const std::function<void(double)>& progress) {
+                      const std::function<void(double)>& progress, const std::optional<PixelRect>& crop,
+                      unsigned threadCount) {
   const int width = scene.render.width, height = scene.render.height;
-  Image image(width, height);
+  const PixelRect window = crop.value_or(PixelRect::whole(width, height));
+  Image image(window.width(), window.height());
   const auto environmentStart = std::chrono::steady_clock::now();
   std::optional<ibl::EnvironmentLighting> environment;
   if (scene.environment)
@@ -257,15 +263,17 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
   const std::uint32_t strata = camera::sample_strata(std::uint32_t(scene.render.samplesPerPixel));
   const std::uint32_t raysPerPixel = camera::rays_per_pixel(strata);
 
-  std::atomic<int> nextRow{0}, finishedRows{0};
+  std::atomic<int> nextRow{window.y0}, finishedRows{0};
   std::atomic<std::uint64_t> primaryRays{0}, shadowRays{0};
   std::mutex progressMutex;
   auto worker = [&] {
     std::uint64_t primary = 0, shadow = 0;
-    for (int y = nextRow++; y < height; y = nextRow++) {
-      for (int x = 0; x < width; ++x) {
-        const std::size_t pixel = image.index(x, y);
-        const auto pixelId = std::uint32_t(pixel);
+    for (int y = nextRow++; y < window.y1; y = nextRow++) {
+      for (int x = window.x0; x < window.x1; ++x) {
+        const std::size_t pixel = image.index(x - window.x0, y - window.y0);
+        // Random numbers follow the pixel of the full image, so that a crop
+        // renders exactly the pixels of the whole render.
+        const auto pixelId = std::uint32_t(std::size_t(y) * std::size_t(width) + std::size_t(x));
         glm::dvec3 radiance(0.0);
         double coverage = 0;
         for (std::uint32_t sample = 0; sample < raysPerPixel; ++sample) {
@@ -288,14 +296,14 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
       const int done = ++finishedRows;
       if (progress) {
         std::lock_guard lock(progressMutex);
-        progress(double(done) / height);
+        progress(double(done) / window.height());
       }
     }
     primaryRays += primary;
     shadowRays += shadow;
   };
   std::vector<std::thread> threads;
-  for (unsigned i = 0; i < std::max(1u, std::thread::hardware_concurrency()); ++i) threads.emplace_back(worker);
+  for (unsigned i = 0; i < resolveThreadCount(threadCount); ++i) threads.emplace_back(worker);
   for (auto& t : threads) t.join();
   if (statistics) *statistics = {primaryRays, shadowRays, environmentMilliseconds};
   return image;

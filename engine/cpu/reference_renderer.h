@@ -18,8 +18,10 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 
 #include "engine/image/image.h"
+#include "engine/image/pixel_rect.h"
 #include "scenes/scene.h"
 #include "scenes/scene_geometry.h"
 
@@ -31,8 +33,15 @@ struct ReferenceStatistics {
   double environmentMilliseconds = 0;  // preparing the environment (sampling tables or prefiltering)
 };
 
-// `progress` receives the finished fraction, from any thread, at most once per row.
+// `progress` receives the finished fraction, from any thread, at most once
+// per row. With a crop, only its pixels are rendered, into an image of the
+// crop's size; each equals the same pixel of the whole render. `threadCount`
+// 0 takes every core.
 Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geometry,
-                      ReferenceStatistics* statistics = nullptr, const std::function<void(double)>& progress = {});
+                      ReferenceStatistics* statistics = nullptr, const std::function<void(double)>& progress = {},
+                      const std::optional<PixelRect>& crop = {}, unsigned threadCount = 0);
+
+// The worker threads a render with `threadCount` runs: itself, or every core for 0.
+unsigned resolveThreadCount(unsigned threadCount);
 
 }  // namespace facet::cpu

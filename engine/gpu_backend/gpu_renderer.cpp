@@ -323,14 +323,31 @@ class StageClock {
   bool ran_[kStageCount] = {};
 };
 
-// A band's pixels read back into the image; positions return to world space
-// in double.
-void readBand(BandBuffers& band, std::uint64_t first, std::uint64_t count, const glm::dvec3& origin, Image& image) {
+// The runs of consecutive pixels (indices of the full image, the kernels'
+// firstPixel) that cover a window: one run when it spans whole rows, else
+// one per row.
+struct PixelRun {
+  std::uint64_t first, count;
+};
+
+std::vector<PixelRun> pixelRuns(const PixelRect& window, int width) {
+  const auto index = [&](int x, int y) { return std::uint64_t(y) * std::uint64_t(width) + std::uint64_t(x); };
+  if (window.width() == width) return {{index(0, window.y0), window.pixelCount()}};
+  std::vector<PixelRun> runs;
+  for (int y = window.y0; y < window.y1; ++y) runs.push_back({index(window.x0, y), std::uint64_t(window.width())});
+  return runs;
+}
+
+// A band's pixels, the `count` from full-image pixel `first`, read back into
+// the window's image; positions return to world space in double.
+void readBand(BandBuffers& band, std::uint64_t first, std::uint64_t count, int width, const PixelRect& window,
+              const glm::dvec3& origin, Image& image) {
   const auto pixelAovs = band.aovsHost.mapped<layout::PixelAovs>();
   const auto pixelBeauty = band.beautyHost.mapped<glm::vec4>();
   for (std::uint64_t i = 0; i < count; ++i) {
     const layout::PixelAovs& a = pixelAovs[i];
-    const std::size_t p = std::size_t(first + i);
+    const int x = int((first + i) % std::uint64_t(width)), y = int((first + i) / std::uint64_t(width));
+    const std::size_t p = image.index(x - window.x0, y - window.y0);
     image.beauty[p] = pixelBeauty[i];
     image.depth[p] = a.depth;
     image.position[p] = a.patchId == layout::FACET_NO_HIT
@@ -551,7 +568,7 @@ void traceBand(gpu::Device& d, const Kernels& k, const BindingTable& table, Band
 }  // namespace
 
 GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::SceneGeometry& geometry,
-                                    const std::function<void(double)>& progress) {
+                                    const std::function<void(double)>& progress, const std::optional<PixelRect>& crop) {
   const std::uint32_t strata = camera::sample_strata(std::uint32_t(scene.render.samplesPerPixel));
   const bool tessellated = scene.render.method == scene::IntersectionMethod::Tessellated;
   checkFloatRange(scene, geometry);
@@ -584,7 +601,9 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   const ShadingBuffers shadingBuffers = uploadShading(d, scene, lighting ? &*lighting : nullptr, environment, origin);
   result.stageMilliseconds.emplace_back("top levels", wallClock(start));
 
-  const std::uint64_t pixels = std::uint64_t(scene.render.width) * std::uint64_t(scene.render.height);
+  const int width = scene.render.width;
+  const PixelRect window = crop.value_or(PixelRect::whole(width, scene.render.height));
+  const std::uint64_t pixels = window.pixelCount();
   const std::uint64_t slotBytes = sizeof(layout::ShadowRayRecord) + 16;
   const std::uint64_t rayBytes = sizeof(layout::HitRecord) + 16 + frame.slotsPerRay * slotBytes;
   const std::uint64_t pixelBytes = frame.raysPerPixel * rayBytes + sizeof(layout::PixelAovs) + 16;
@@ -602,27 +621,31 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   if (!reused) dice(d, pipelines_, packed, tessellated, table, clock);
 
   const Kernels k = kernels(pipelines_, scene, lighting ? &*lighting : nullptr, tessellated);
-  result.image = Image(scene.render.width, scene.render.height);
-  for (std::uint64_t first = 0; first < pixels;) {
-    const std::uint64_t count = std::min(bandPixels, pixels - first);
-    frame.firstPixel = std::uint32_t(first);
-    frame.pixelCount = std::uint32_t(count);
-    d.queue().writeBuffer(band.frame, 0, &frame, sizeof(frame));
-    traceBand(d, k, table, band, count * frame.raysPerPixel, count, clock);
-    const layout::RenderCounters counters = band.countersHost.mapped<layout::RenderCounters>()[0];
-    const std::uint32_t needed = std::max(counters.cameraFallbacks, counters.shadowFallbacks);
-    if (needed > frame.fallbackCapacity) {
-      frame.fallbackCapacity = needed;
-      band = allocateBands(d, bandPixels, bandPixels * frame.raysPerPixel, frame.slotsPerRay, needed);
-      table = bindingTable(geometryBuffers, shadingBuffers, band);
-      continue;
+  result.image = Image(window.width(), window.height());
+  std::uint64_t finished = 0;
+  for (const PixelRun& run : pixelRuns(window, width)) {
+    for (std::uint64_t first = run.first, end = run.first + run.count; first < end;) {
+      const std::uint64_t count = std::min(bandPixels, end - first);
+      frame.firstPixel = std::uint32_t(first);
+      frame.pixelCount = std::uint32_t(count);
+      d.queue().writeBuffer(band.frame, 0, &frame, sizeof(frame));
+      traceBand(d, k, table, band, count * frame.raysPerPixel, count, clock);
+      const layout::RenderCounters counters = band.countersHost.mapped<layout::RenderCounters>()[0];
+      const std::uint32_t needed = std::max(counters.cameraFallbacks, counters.shadowFallbacks);
+      if (needed > frame.fallbackCapacity) {
+        frame.fallbackCapacity = needed;
+        band = allocateBands(d, bandPixels, bandPixels * frame.raysPerPixel, frame.slotsPerRay, needed);
+        table = bindingTable(geometryBuffers, shadingBuffers, band);
+        continue;
+      }
+      readBand(band, first, count, width, window, origin, result.image);
+      result.primaryRays += count * frame.raysPerPixel;
+      result.shadowRays += counters.shadowRays;
+      result.newtonFallbacks += counters.cameraFallbacks + counters.shadowFallbacks;
+      first += count;
+      finished += count;
+      if (progress) progress(double(finished) / double(pixels));
     }
-    readBand(band, first, count, origin, result.image);
-    result.primaryRays += count * frame.raysPerPixel;
-    result.shadowRays += counters.shadowRays;
-    result.newtonFallbacks += counters.cameraFallbacks + counters.shadowFallbacks;
-    first += count;
-    if (progress) progress(double(first) / double(pixels));
   }
   result.gpuBytes = geometryBuffers.bytes + band.bytes;
   clock.report(result.stageMilliseconds);

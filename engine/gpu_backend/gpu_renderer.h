@@ -16,12 +16,14 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "engine/gpu/gpu.h"
 #include "engine/image/image.h"
+#include "engine/image/pixel_rect.h"
 #include "scenes/scene.h"
 #include "scenes/scene_geometry.h"
 
@@ -59,8 +61,10 @@ class GpuRenderer {
  public:
   explicit GpuRenderer(gpu::Device& device);
 
+  // With a crop, only its pixels are traced, into an image of the crop's
+  // size; each is the same pixel of the whole render.
   GpuRenderResult render(const scene::Scene& scene, const scene::SceneGeometry& geometry,
-                         const std::function<void(double)>& progress = {});
+                         const std::function<void(double)>& progress = {}, const std::optional<PixelRect>& crop = {});
 
  private:
   // The last render's diced geometry, reused while the scene's geometry,

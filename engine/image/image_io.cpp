@@ -5,6 +5,7 @@
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfStringAttribute.h>
 #include <stb_image_write.h>
 #include <unistd.h>
 
@@ -50,6 +51,12 @@ std::vector<Channel> channels(Image& image) {
       {"uv.U", Imf::FLOAT, f(image.uv, 0), v2},
       {"uv.V", Imf::FLOAT, f(image.uv, 1), v2},
   };
+}
+
+// OpenEXR addresses slices by absolute pixel coordinates: the plane's first
+// pixel is pixel (x0, y0) of the display window.
+char* slicesOrigin(const Channel& c, int x0, int y0, int width) {
+  return c.base - (std::ptrdiff_t(x0) + std::ptrdiff_t(y0) * width) * std::ptrdiff_t(c.stride);
 }
 
 }  // namespace
@@ -104,15 +111,22 @@ void writeAtomically(const std::filesystem::path& path,
   writeAllOrNothing({{path, write}});
 }
 
-OutputFile exrFile(const std::filesystem::path& path, const Image& image) {
-  return {path, [path, &image](const std::filesystem::path& temporary) {
-            Imf::Header header(image.width, image.height);
+OutputFile exrFile(const std::filesystem::path& path, const Image& image,
+                   const std::optional<ExrPlacement>& placement) {
+  return {path, [path, &image, placement](const std::filesystem::path& temporary) {
+            const ExrPlacement where = placement.value_or(
+                ExrPlacement{PixelRect::whole(image.width, image.height), image.width, image.height, {}});
+            const PixelRect& data = where.dataWindow;
+            Imf::Header header(Imath::Box2i({0, 0}, {where.displayWidth - 1, where.displayHeight - 1}),
+                               Imath::Box2i({data.x0, data.y0}, {data.x1 - 1, data.y1 - 1}));
             header.compression() = Imf::ZIP_COMPRESSION;
+            if (!where.digest.empty()) header.insert(kSettingsDigestAttribute, Imf::StringAttribute(where.digest));
             Imf::FrameBuffer frame;
             // The slices only read through these pointers; the table is shared with readExr.
             for (const Channel& c : channels(const_cast<Image&>(image))) {
               header.channels().insert(c.name, Imf::Channel(c.type));
-              frame.insert(c.name, Imf::Slice(c.type, c.base, c.stride, c.stride * std::size_t(image.width)));
+              frame.insert(c.name, Imf::Slice(c.type, slicesOrigin(c, data.x0, data.y0, image.width), c.stride,
+                                              c.stride * std::size_t(image.width)));
             }
             try {
               Imf::OutputFile file(temporary.c_str(), header);
@@ -134,10 +148,8 @@ Image readExr(const std::filesystem::path& path) {
     Imf::FrameBuffer frame;
     for (const Channel& c : channels(image)) {
       if (!file.header().channels().findChannel(c.name)) continue;  // keep the miss default
-      // OpenEXR addresses slices by absolute pixel coordinates.
-      char* origin = c.base - (std::ptrdiff_t(window.min.x) + std::ptrdiff_t(window.min.y) * image.width) *
-                                  std::ptrdiff_t(c.stride);
-      frame.insert(c.name, Imf::Slice(c.type, origin, c.stride, c.stride * std::size_t(image.width)));
+      frame.insert(c.name, Imf::Slice(c.type, slicesOrigin(c, window.min.x, window.min.y, image.width), c.stride,
+                                      c.stride * std::size_t(image.width)));
     }
     file.setFrameBuffer(frame);
     file.readPixels(window.min.y, window.max.y);
@@ -147,18 +159,28 @@ Image readExr(const std::filesystem::path& path) {
   }
 }
 
+void previewPixels(const glm::vec4* beauty, std::size_t count, float exposure, std::uint8_t* rgba) {
+  const float scale = std::exp2(exposure);
+  for (std::size_t i = 0; i < count; ++i) {
+    const glm::vec4& p = beauty[i];
+    for (int c = 0; c < 3; ++c) rgba[4 * i + c] = std::uint8_t(std::lround(previewToneCurve(p[c], scale) * 255.0));
+    rgba[4 * i + 3] = std::uint8_t(std::lround(std::clamp(p.a, 0.0f, 1.0f) * 255.0f));
+  }
+}
+
+OutputFile rgbaPngFile(const std::filesystem::path& path, int width, int height,
+                       const std::vector<std::uint8_t>& rgba) {
+  return {path, [path, width, height, &rgba](const std::filesystem::path& temporary) {
+            if (!stbi_write_png(temporary.c_str(), width, height, 4, rgba.data(), width * 4))
+              throw OutputError(path.string() + ": cannot write PNG (is the folder writable?)");
+          }};
+}
+
 OutputFile pngFile(const std::filesystem::path& path, const Image& image, float exposure) {
   return {path, [path, &image, exposure](const std::filesystem::path& temporary) {
-            const float scale = std::exp2(exposure);
             std::vector<std::uint8_t> pixels(image.pixelCount() * 4);
-            for (std::size_t i = 0; i < image.pixelCount(); ++i) {
-              const glm::vec4& p = image.beauty[i];
-              for (int c = 0; c < 3; ++c)
-                pixels[4 * i + c] = std::uint8_t(std::lround(previewToneCurve(p[c], scale) * 255.0));
-              pixels[4 * i + 3] = std::uint8_t(std::lround(std::clamp(p.a, 0.0f, 1.0f) * 255.0f));
-            }
-            if (!stbi_write_png(temporary.c_str(), image.width, image.height, 4, pixels.data(), image.width * 4))
-              throw OutputError(path.string() + ": cannot write PNG (is the folder writable?)");
+            previewPixels(image.beauty.data(), image.pixelCount(), exposure, pixels.data());
+            rgbaPngFile(path, image.width, image.height, pixels).write(temporary);
           }};
 }
 

@@ -14,12 +14,15 @@
 #pragma once
 
 #include <filesystem>
+#include <cstdint>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "engine/image/image.h"
+#include "engine/image/pixel_rect.h"
 
 namespace facet {
 
@@ -48,9 +51,29 @@ void writeAllOrNothing(const std::vector<OutputFile>& files);
 // Calls write(temporaryPath), then renames the temporary onto `path`.
 void writeAtomically(const std::filesystem::path& path, const std::function<void(const std::filesystem::path&)>& write);
 
-OutputFile exrFile(const std::filesystem::path& path, const Image& image);
+// Where an EXR's pixels lie in the full render (its data window inside the
+// display window), and the digest of the settings that rendered them, kept
+// in the header attribute kSettingsDigestAttribute so that a merge can tell
+// tiles of one render from another's.
+struct ExrPlacement {
+  PixelRect dataWindow;
+  int displayWidth = 0, displayHeight = 0;
+  std::string digest;
+};
+inline constexpr const char* kSettingsDigestAttribute = "facetSettingsDigest";
+
+// Without a placement, the image is the whole display window.
+OutputFile exrFile(const std::filesystem::path& path, const Image& image,
+                   const std::optional<ExrPlacement>& placement = {});
 void writeExr(const std::filesystem::path& path, const Image& image);
 Image readExr(const std::filesystem::path& path);
+
+// 8-bit RGBA preview of `count` beauty pixels through previewToneCurve
+// (engine/image/color.h), exposure in stops.
+void previewPixels(const glm::vec4* beauty, std::size_t count, float exposure, std::uint8_t* rgba);
+
+// A PNG of 8-bit RGBA pixels, row 0 at the top; `rgba` must outlive the write.
+OutputFile rgbaPngFile(const std::filesystem::path& path, int width, int height, const std::vector<std::uint8_t>& rgba);
 
 // 8-bit preview of the beauty through previewToneCurve (engine/image/color.h).
 OutputFile pngFile(const std::filesystem::path& path, const Image& image, float exposure = 0.0f);

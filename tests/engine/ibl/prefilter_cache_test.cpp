@@ -1,10 +1,17 @@
 // cachedPrefilter: a hit skips the build and returns what was stored; a
-// damaged file, other settings or an unwritable directory only cost a build.
+// damaged file, other settings or an unwritable directory only cost a build;
+// processes building one key at once leave one whole file.
 #include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
 
 #include "engine/ibl/prefiltered_environment.h"
 #include "tests/support/environment_maps.h"
@@ -130,6 +137,60 @@ TEST_F(PrefilterCache, UnwritableDirectoryOnlyCostsTheBuild) {
   const PrefilteredEnvironment second = cached(settings_);
   EXPECT_EQ(builds_, 2);
   expectSame(first, second);
+}
+
+TEST_F(PrefilterCache, WithoutFacetCacheDirTheFolderIsUnderXdgCacheHome) {
+  unsetenv("FACET_CACHE_DIR");
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  const std::string kept = xdg ? xdg : "";
+  setenv("XDG_CACHE_HOME", (dir_ / "xdg").c_str(), 1);
+  cached(settings_);
+  if (xdg)
+    setenv("XDG_CACHE_HOME", kept.c_str(), 1);
+  else
+    unsetenv("XDG_CACHE_HOME");
+  ASSERT_TRUE(fs::is_directory(dir_ / "xdg" / "facet"));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "xdg" / "facet"), fs::directory_iterator()), 1);
+}
+
+// Many renders of one environment at once (a farm's array tasks sharing a
+// cache folder): each process builds and writes the same key; every one
+// must return the right maps, and one whole file must remain.
+TEST_F(PrefilterCache, ProcessesBuildingOneKeyAtOnceDoNotCorruptIt) {
+  const PrefilteredEnvironment reference = prefilterOnCpu(map_, models_, settings_);
+  const auto same = [](const PrefilteredEnvironment& a, const PrefilteredEnvironment& b) {
+    bool equal = a.levels.size() == b.levels.size() && a.irradianceSh == b.irradianceSh && a.dfg.size() == b.dfg.size();
+    for (std::size_t i = 0; equal && i < a.levels.size(); ++i) equal = a.levels[i].rgb == b.levels[i].rgb;
+    for (std::size_t i = 0; equal && i < a.dfg.size(); ++i) equal = a.dfg[i].scaleBias == b.dfg[i].scaleBias;
+    return equal;
+  };
+  int start[2];
+  ASSERT_EQ(pipe(start), 0);
+  constexpr int kProcesses = 6;
+  std::vector<pid_t> children;
+  for (int i = 0; i < kProcesses; ++i) {
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {  // waits for the parent's go, so that the builds overlap
+      close(start[1]);
+      char go = 0;
+      if (read(start[0], &go, 1) != 1) _exit(2);
+      _exit(same(cached(settings_), reference) ? 0 : 1);
+    }
+    children.push_back(pid);
+  }
+  close(start[0]);
+  const std::string go(kProcesses, 'g');
+  ASSERT_EQ(write(start[1], go.data(), go.size()), ssize_t(go.size()));
+  close(start[1]);
+  for (pid_t pid : children) {
+    int status = 0;
+    ASSERT_EQ(waitpid(pid, &status, 0), pid);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "a process got wrong maps";
+  }
+  ASSERT_EQ(files().size(), 1u) << "one file, and no temporary left behind";
+  EXPECT_TRUE(same(cached(settings_), reference));
+  EXPECT_EQ(builds_, 0) << "the file the processes left is read";
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/image/image_io.h"
+#include "tests/support/random_image.h"
 #include "tests/support/temp_dir.h"
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -19,29 +20,12 @@ namespace facet {
 namespace {
 
 namespace fs = std::filesystem;
+using facet::testing::randomImage;
 
 class ImageIo : public facet::testing::TempDirTest {
  protected:
   std::vector<fs::path> files() const { return {fs::directory_iterator(dir_), fs::directory_iterator()}; }
 };
-
-Image randomImage(int w, int h) {
-  Image image(w, h);
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<float> u(-10.0f, 10.0f);
-  for (std::size_t i = 0; i < image.pixelCount(); ++i) {
-    if (i % 5 == 0) continue;  // leave some misses
-    image.beauty[i] = {u(rng), u(rng), u(rng), 1.0f};
-    image.depth[i] = std::abs(u(rng));
-    image.position[i] = {u(rng), u(rng), u(rng)};
-    image.geometricNormal[i] = {u(rng), u(rng), u(rng)};
-    image.shadingNormal[i] = {u(rng), u(rng), u(rng)};
-    image.patchId[i] = std::uint32_t(rng());
-    image.faceId[i] = std::uint32_t(rng());
-    image.uv[i] = {u(rng), u(rng)};
-  }
-  return image;
-}
 
 TEST_F(ImageIo, ExrRoundTripKeepsEveryChannelBitExact) {
   Image image = randomImage(37, 19);

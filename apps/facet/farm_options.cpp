@@ -1,0 +1,127 @@
+#include "farm_options.h"
+
+#include <cerrno>
+#include <climits>
+#include <cstdlib>
+#include <stdexcept>
+
+#include "engine/camera/camera_path.h"
+
+namespace facet::cli {
+
+void addFarmOptions(CLI::App& command, FarmOptions& o) {
+  auto* crop = command.add_option("--crop", o.crop,
+                                  "Render only pixels x0 <= x < x1, y0 <= y < y1: an EXR whose data window is the crop "
+                                  "inside the full image");
+  command.add_option("--tile", o.tile, "Render tile I of N (0-based), a band of rows: --tile 2/8")->excludes(crop);
+  auto* frames = command.add_option("--frames", o.frames,
+                                    "Render frames A to B (every STEP): A-B or A-B:STEP; '#' in -o and "
+                                    "--png stands for the frame number, zero-padded");
+  command.add_option("--frame", o.frame, "Render frame N alone")->excludes(frames)->check(CLI::NonNegativeNumber);
+  command.add_option("--turntable", o.turntable, "Orbit the eye about the target: frame f of N at 2 pi f / N")
+      ->check(CLI::Range(1, 1000000));
+  command
+      .add_option("--threads", o.threads,
+                  "CPU backend's threads, lavapipe's workers (default: "
+                  "SLURM_CPUS_PER_TASK, else every core)")
+      ->check(CLI::Range(1u, 4096u));
+  command.add_flag("--quiet", o.quiet, "No progress and no summary; errors and --json only");
+  command.add_flag("--json", o.json, "Print the summary as one JSON object (README.md, \"Rendering on a farm\")");
+}
+
+namespace {
+
+// The whole numbers of `text`, separated by `separators` in that order:
+// "-:" reads A-B:C, or A-B where the text ends early; none unless every
+// character is read.
+std::optional<std::vector<int>> wholeNumbers(const std::string& text, const std::string& separators) {
+  std::vector<int> values;
+  const char* p = text.c_str();
+  for (std::size_t i = 0;; ++i) {
+    char* end = nullptr;
+    errno = 0;
+    const long value = std::strtol(p, &end, 10);
+    if (end == p || errno != 0 || value < INT_MIN || value > INT_MAX) return std::nullopt;
+    values.push_back(int(value));
+    p = end;
+    if (*p == 0) return values;
+    if (i >= separators.size() || *p != separators[i]) return std::nullopt;
+    ++p;
+  }
+}
+
+}  // namespace
+
+std::optional<PixelRect> chosenCrop(const FarmOptions& o, int width, int height) {
+  const std::string image = std::to_string(width) + "x" + std::to_string(height);
+  if (!o.crop.empty()) {
+    const auto v = wholeNumbers(o.crop, ",,,");
+    const PixelRect crop = v && v->size() == 4 ? PixelRect{(*v)[0], (*v)[1], (*v)[2], (*v)[3]} : PixelRect{};
+    if (crop.empty() || !crop.inside(width, height))
+      throw std::invalid_argument("--crop '" + o.crop + "': expected x0,y0,x1,y1 with 0 <= x0 < x1 <= width and " +
+                                  "0 <= y0 < y1 <= height of the " + image + " image");
+    return crop;
+  }
+  if (!o.tile.empty()) {
+    const auto v = wholeNumbers(o.tile, "/");
+    if (!v || v->size() != 2 || (*v)[1] < 1 || (*v)[0] < 0 || (*v)[0] >= (*v)[1] || (*v)[1] > height)
+      throw std::invalid_argument("--tile '" + o.tile + "': expected I/N with 0 <= I < N <= " + std::to_string(height) +
+                                  " (the image's rows)");
+    return tileRows(width, height, (*v)[0], (*v)[1]);
+  }
+  return std::nullopt;
+}
+
+std::vector<int> chosenFrames(const FarmOptions& o) {
+  if (o.frame) return {*o.frame};
+  if (o.frames.empty()) {
+    if (!o.turntable) return {};
+    std::vector<int> all;
+    for (int f = 0; f < *o.turntable; ++f) all.push_back(f);
+    return all;
+  }
+  std::optional<std::vector<int>> v = wholeNumbers(o.frames, "-:");
+  if (v && v->size() == 2) v->push_back(1);
+  if (!v || v->size() != 3 || (*v)[0] < 0 || (*v)[1] < (*v)[0] || (*v)[2] < 1)
+    throw std::invalid_argument("--frames '" + o.frames + "': expected A-B or A-B:STEP with 0 <= A <= B, STEP >= 1");
+  std::vector<int> frames;
+  for (long long f = (*v)[0]; f <= (*v)[1]; f += (*v)[2]) frames.push_back(int(f));
+  return frames;
+}
+
+scene::Camera frameCamera(const scene::Camera& still, const std::vector<scene::CameraKey>& keys, const FarmOptions& o,
+                          int frame) {
+  scene::Camera camera = keys.empty() ? still : camera::keyedCamera(keys, frame);
+  if (o.turntable) camera = camera::turntableCamera(camera, frame, *o.turntable);
+  return camera;
+}
+
+std::string framePath(const std::string& flag, const std::string& pattern, int frame) {
+  const std::size_t first = pattern.find('#');
+  if (first == std::string::npos)
+    throw std::invalid_argument(flag + " '" + pattern +
+                                "': a frame range needs '#' in the name for the frame number, " +
+                                "e.g. frame_####.exr");
+  const std::size_t last = pattern.find_first_not_of('#', first);
+  const std::size_t digits = (last == std::string::npos ? pattern.size() : last) - first;
+  std::string number = std::to_string(frame);
+  if (number.size() < digits) number.insert(0, digits - number.size(), '0');
+  return pattern.substr(0, first) + number + pattern.substr(first + digits);
+}
+
+unsigned chosenThreads(const FarmOptions& o) {
+  if (o.threads) return *o.threads;
+  const char* slot = std::getenv("SLURM_CPUS_PER_TASK");
+  if (!slot || !*slot) return 0;
+  char* end = nullptr;
+  const unsigned long cpus = std::strtoul(slot, &end, 10);
+  if (*end != 0 || cpus < 1 || cpus > 4096)
+    throw std::invalid_argument(std::string("SLURM_CPUS_PER_TASK '") + slot + "': expected a whole number in 1..4096");
+  return unsigned(cpus);
+}
+
+void limitLavapipeThreads(unsigned threads) {
+  if (threads > 0) setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), /*overwrite=*/0);
+}
+
+}  // namespace facet::cli

@@ -1,0 +1,54 @@
+// Flags that make `facet render` one task of many: which part of the image
+// (--crop, --tile), which frames (--frames, --frame, --turntable), how many
+// threads, and how it reports in a farm's logs (--quiet, --json).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/image/pixel_rect.h"
+#include "scenes/scene.h"
+
+namespace facet::cli {
+
+struct FarmOptions {
+  std::string crop;    // x0,y0,x1,y1
+  std::string tile;    // i/N
+  std::string frames;  // A-B or A-B:step
+  std::optional<int> frame;
+  std::optional<int> turntable;  // frames in a full orbit
+  std::optional<unsigned> threads;
+  bool quiet = false;
+  bool json = false;
+};
+
+void addFarmOptions(CLI::App& command, FarmOptions& options);
+
+// The part of the width x height image the flags choose; none: all of it.
+// Throws std::invalid_argument naming the flag.
+std::optional<PixelRect> chosenCrop(const FarmOptions& options, int width, int height);
+
+// The frames to render, in order; empty for a still (no frame flag).
+std::vector<int> chosenFrames(const FarmOptions& options);
+
+// The camera of `frame`: the keys interpolated, or the still camera where
+// there are none, then turned about the target for --turntable.
+scene::Camera frameCamera(const scene::Camera& still, const std::vector<scene::CameraKey>& keys,
+                          const FarmOptions& options, int frame);
+
+// `pattern` with its run of '#' replaced by the frame, zero-padded to the
+// run's length (Blender's convention); `flag` names it in errors.
+std::string framePath(const std::string& flag, const std::string& pattern, int frame);
+
+// --threads, else the slot's SLURM_CPUS_PER_TASK, else 0 (every core).
+unsigned chosenThreads(const FarmOptions& options);
+
+// Lavapipe's worker threads for the GPU backend, unless LP_NUM_THREADS is
+// set already; lavapipe reads it when the Vulkan instance is created, so
+// this must run before the first GPU render.
+void limitLavapipeThreads(unsigned threads);
+
+}  // namespace facet::cli

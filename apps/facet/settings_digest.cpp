@@ -1,0 +1,36 @@
+#include "settings_digest.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+namespace facet::cli {
+
+std::string settingsDigest(const scene::Scene& scene, const std::string& backend) {
+  std::ostringstream text;
+  text << std::hexfloat << backend << '\n';
+  if (!scene.source.empty()) {
+    std::ifstream file(scene.source, std::ios::binary);
+    text << file.rdbuf() << '\n';
+  }
+  const scene::RenderSettings& r = scene.render;
+  text << r.width << ' ' << r.height << ' ' << r.samplesPerPixel << ' ' << int(r.method) << ' ' << r.pixelTolerance
+       << ' ' << r.tessellationRate.value_or(-1) << ' ' << r.exactTolerance.value_or(-1) << '\n';
+  const scene::Camera& c = scene.camera;
+  for (const glm::dvec3& v : {c.eye, c.target, c.up}) text << v.x << ' ' << v.y << ' ' << v.z << ' ';
+  text << c.verticalFovDegrees << '\n';
+  for (const scene::Object& o : scene.objects) text << int(o.subdivision) << ' ';
+  if (const auto& e = scene.environment)
+    text << '\n'
+         << e->map->source << ' ' << e->intensity << ' ' << e->rotationDegrees << ' ' << int(e->method) << ' '
+         << e->samples << ' ' << e->occlusion << ' ' << e->seed;
+  std::uint64_t hash = 14695981039346656037ull;  // FNV-1a, 64-bit
+  for (const char byte : text.str()) hash = (hash ^ std::uint8_t(byte)) * 1099511628211ull;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+  return hex;
+}
+
+}  // namespace facet::cli

@@ -1,0 +1,16 @@
+// The digest of what decides a render's pixels, written into every tile so
+// that `facet merge` joins only tiles of one render.
+#pragma once
+
+#include <string>
+
+#include "scenes/scene.h"
+
+namespace facet::cli {
+
+// Hex FNV-1a of the scene file's bytes, the scene as the flags left it
+// (image size, camera, sampling, method, subdivision, environment) and the
+// backend. Files the scene names (cages, maps) count by path.
+std::string settingsDigest(const scene::Scene& scene, const std::string& backend);
+
+}  // namespace facet::cli

@@ -1,0 +1,45 @@
+// The camera of frame f of an animation: keyframes interpolated, and a
+// turntable orbit about the target.
+#pragma once
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "scenes/scene.h"
+
+namespace facet::camera {
+
+// Eye, target, up and field of view linear between the keys around `frame`;
+// held before the first key and after the last. `keys` is sorted by frame.
+inline scene::Camera keyedCamera(const std::vector<scene::CameraKey>& keys, double frame) {
+  if (frame <= keys.front().frame) return keys.front().camera;
+  if (frame >= keys.back().frame) return keys.back().camera;
+  const auto next = std::upper_bound(keys.begin(), keys.end(), frame,
+                                     [](double f, const scene::CameraKey& key) { return f < key.frame; });
+  const scene::CameraKey& a = *(next - 1);
+  const scene::CameraKey& b = *next;
+  const double t = (frame - a.frame) / double(b.frame - a.frame);
+  scene::Camera c;
+  c.eye = glm::mix(a.camera.eye, b.camera.eye, t);
+  c.target = glm::mix(a.camera.target, b.camera.target, t);
+  c.up = glm::mix(a.camera.up, b.camera.up, t);
+  c.verticalFovDegrees = a.camera.verticalFovDegrees + t * (b.camera.verticalFovDegrees - a.camera.verticalFovDegrees);
+  return c;
+}
+
+// Frame f of an n-frame turntable: the eye turned by 2πf/n about the axis
+// through the target along the camera's up (Rodrigues' rotation formula).
+inline scene::Camera turntableCamera(const scene::Camera& camera, int frame, int frames) {
+  const double angle = glm::two_pi<double>() * double(frame) / double(frames);
+  const glm::dvec3 k = glm::normalize(camera.up), v = camera.eye - camera.target;
+  const double c = std::cos(angle), s = std::sin(angle);
+  scene::Camera turned = camera;
+  turned.eye = camera.target + v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1 - c);
+  return turned;
+}
+
+}  // namespace facet::camera

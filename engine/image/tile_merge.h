@@ -1,0 +1,24 @@
+// Tiles of one render (EXRs whose data windows lie in one display window,
+// each carrying the render's settings digest) merged into the whole image.
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+namespace facet {
+
+struct MergeOutputs {
+  std::filesystem::path exr;
+  std::filesystem::path png;  // empty: none
+  float exposure = 0;         // of the PNG, in stops
+};
+
+// Checks that the tiles share one settings digest, display window and
+// channel list, and cover the display window exactly once; throws
+// std::invalid_argument "<tile>: <what>: <rule>" otherwise, before anything
+// is written. Then streams the tiles into the outputs a band of rows at a
+// time, so memory grows with the width, not the image (the PNG preview
+// holds its 8-bit pixels); outputs are written all or nothing.
+void mergeTiles(const std::vector<std::filesystem::path>& tiles, const MergeOutputs& outputs);
+
+}  // namespace facet
