@@ -220,9 +220,11 @@ void writeIblChart(Renderer& renderer, const IblChartSettings& settings) {
         for (int samples : settings.sampleCounts)
           if (method == scene::IblMethod::Sampled || samples <= kMaxFilteredChartSamples) measure(method, samples);
       const Image prefiltered = measure(scene::IblMethod::Prefiltered, 1);
-      for (scene::IblMethod method : kMethodsWithSamples)
-        std::printf("  %s: error slope over N >= 16: %.2f\n", methodName(method),
-                    errorSlope(points, setup, alpha, method));
+      for (scene::IblMethod method : kMethodsWithSamples) {
+        // A slope needs two sample counts of 16 or more (--quick has one).
+        const double slope = errorSlope(points, setup, alpha, method);
+        if (!std::isnan(slope)) std::printf("  %s: error slope over N >= 16: %.2f\n", methodName(method), slope);
+      }
       writeComparison(output / (setup + "_alpha" + formatNumber(alpha) + ".png"), reference.image, prefiltered);
     }
   }
