@@ -48,9 +48,11 @@ case "$mode" in
     export ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1
     export LSAN_OPTIONS="suppressions=$here/tools/sanitizers/lsan.supp:print_suppressions=0"
     export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+    # No Python module here: the interpreter is not instrumented, and ASan
+    # must be the first library of a process.
     cmake -S "$here" -B "$sanitized" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
       -DCMAKE_CXX_FLAGS_RELEASE="-O1 -gline-tables-only -DNDEBUG" \
-      -DFACET_SANITIZE=ON -DFACET_FUZZ=ON -DFACET_BUILD_BENCHMARKS=OFF
+      -DFACET_SANITIZE=ON -DFACET_FUZZ=ON -DFACET_BUILD_BENCHMARKS=OFF -DFACET_BUILD_PYTHON=OFF
     cmake --build "$sanitized" --parallel "$(nproc)"
     # LeakSanitizer scans the memory of loaded libraries only, and the Vulkan
     # loader unloads lavapipe when an instance ends: what lavapipe's globals

@@ -3,6 +3,7 @@
 # and checks that the library it ran is of this VERSION.
 #   -DCONSUMER=cmake|pkg-config -DPREFIX=dir -DLIBDIR=lib -DDOC=docs/api.md
 #   -DPROJECT=cmake_project -DWORK=dir -DCXX=compiler -DGENERATOR=Ninja -DVERSION=x.y.z
+#   [-DLINK_FLAGS=flags]  what the program's link needs besides the package
 include(${CMAKE_CURRENT_LIST_DIR}/../support/doc_block.cmake)
 facet_doc_block(cpp ${DOC} example)
 file(REMOVE_RECURSE ${WORK})
@@ -18,7 +19,7 @@ endfunction()
 
 if(CONSUMER STREQUAL "cmake")
   run(${CMAKE_COMMAND} -S ${PROJECT} -B ${WORK}/build -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release
-      -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_PREFIX_PATH=${PREFIX} -DEXAMPLE=${WORK}/cube.cpp)
+      -DCMAKE_CXX_COMPILER=${CXX} "-DCMAKE_EXE_LINKER_FLAGS=${LINK_FLAGS}" -DCMAKE_PREFIX_PATH=${PREFIX} -DEXAMPLE=${WORK}/cube.cpp)
   run(${CMAKE_COMMAND} --build ${WORK}/build)
   set(program ${WORK}/build/cube)
 else()
@@ -27,7 +28,8 @@ else()
   separate_arguments(flags UNIX_COMMAND "${out}")
   run(pkg-config --variable=libdir facet)
   string(STRIP "${out}" libdir)
-  run(${CXX} -std=c++17 -O1 ${WORK}/cube.cpp ${flags} -Wl,-rpath,${libdir} -o ${WORK}/cube)
+  separate_arguments(link_flags UNIX_COMMAND "${LINK_FLAGS}")
+  run(${CXX} -std=c++17 -O1 ${WORK}/cube.cpp ${flags} ${link_flags} -Wl,-rpath,${libdir} -o ${WORK}/cube)
   set(program ${WORK}/cube)
 endif()
 run(${program})
