@@ -1,0 +1,64 @@
+#include "render_summary.h"
+
+#include <sys/resource.h>
+
+#include <cstdio>
+
+#include "scene_options.h"
+
+namespace facet::cli {
+namespace {
+
+// Every stage after refinement casts or shades rays.
+double raysPerSecond(const RenderReport& report) {
+  const double traceSeconds = (report.totalMilliseconds() - report.stages.front().milliseconds) * 1e-3;
+  return double(report.primaryRays + report.shadowRays) / traceSeconds;
+}
+
+}  // namespace
+
+std::uint64_t peakResidentBytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return std::uint64_t(usage.ru_maxrss) * 1024;  // Linux reports KiB
+}
+
+void printSummary(const scene::Scene& scene, const RenderReport& report, const RenderJob& job,
+                  double wallMilliseconds) {
+  std::printf("%s\n", report.geometrySummary.c_str());
+  if (scene.environment) std::printf("%s\n", describeEnvironment(*scene.environment).c_str());
+  std::printf("backend: %s; %dx%d, %d spp, %s intersection\n", report.device.c_str(), scene.render.width,
+              scene.render.height, scene.render.samplesPerPixel,
+              scene.render.method == scene::IntersectionMethod::Exact ? "exact" : "tessellated");
+  if (!(report.window == PixelRect::whole(scene.render.width, scene.render.height)))
+    std::printf("crop: %s (%dx%d pixels)\n", report.window.text().c_str(), report.window.width(),
+                report.window.height());
+  for (const StageTime& stage : report.stages)
+    std::printf("  %-16s %8.1f ms\n", stage.name.c_str(), stage.milliseconds);
+  std::printf("  %-16s %8.1f ms (wall clock, everything)\n", "total", wallMilliseconds);
+  std::printf("rays: %llu primary, %llu shadow, %.2f Mrays/s\n", (unsigned long long)report.primaryRays,
+              (unsigned long long)report.shadowRays, raysPerSecond(report) * 1e-6);
+  if (report.cells)
+    std::printf("micro-grid: %llu cells, %llu exact fallbacks, %.1f MiB of GPU arrays\n",
+                (unsigned long long)report.cells, (unsigned long long)report.newtonFallbacks,
+                double(report.gpuBytes) / (1 << 20));
+  std::printf("wrote %s%s%s\n", job.exr.c_str(), job.png.empty() ? "" : " and ", job.png.c_str());
+}
+
+nlohmann::json renderJson(const RenderReport& report, const RenderJob& job, double wallMilliseconds) {
+  nlohmann::json stages = nlohmann::json::object();
+  for (const StageTime& stage : report.stages) stages[stage.name] = stage.milliseconds;
+  nlohmann::json outputs = {job.exr};
+  if (!job.png.empty()) outputs.push_back(job.png);
+  return {{"frame", job.frame ? nlohmann::json(*job.frame) : nlohmann::json()},
+          {"crop", {report.window.x0, report.window.y0, report.window.x1, report.window.y1}},
+          {"stages_ms", stages},
+          {"wall_ms", wallMilliseconds},
+          {"primary_rays", report.primaryRays},
+          {"shadow_rays", report.shadowRays},
+          {"rays_per_second", raysPerSecond(report)},
+          {"gpu_bytes", report.gpuBytes},
+          {"outputs", outputs}};
+}
+
+}  // namespace facet::cli

@@ -1,0 +1,30 @@
+// What `facet render` says of each render: the summary for people, and the
+// JSON of --json (README.md, "Rendering on a farm").
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "engine/renderer.h"
+#include "scenes/scene.h"
+
+namespace facet::cli {
+
+// One image to render: its frame (none for a still) and where it goes.
+struct RenderJob {
+  std::optional<int> frame;
+  std::string exr;
+  std::string png;
+};
+
+void printSummary(const scene::Scene& scene, const RenderReport& report, const RenderJob& job, double wallMilliseconds);
+
+// One entry of --json's "renders".
+nlohmann::json renderJson(const RenderReport& report, const RenderJob& job, double wallMilliseconds);
+
+std::uint64_t peakResidentBytes();
+
+}  // namespace facet::cli
