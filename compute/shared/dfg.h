@@ -1,6 +1,7 @@
 // Shared GLSL / C++ source (rules of materials/shading/common.h; no include
 // guard): the split sum's DFG tables, their grid and their integrals
-// (docs/rendering.md, "Prefiltered: the split sum"). Needs
+// (docs/rendering.md, "Prefiltered: the split sum"), and the
+// multiple-scattering factor they give. Needs
 // materials/shading/*.h, lobe_sampling.h and low_discrepancy.h.
 
 // The two integrals for one sample l of the specular lobe (F = 1), weighted
@@ -50,4 +51,14 @@ FACET_FN vec2 dfg_integrals(int d_model, int g_model, real nv, real alpha, int s
     sum += dfg_sample_weight(brdf_terms(p, n, l, v).specular.x, l.z, pdf, real(0.5) * length(l + v));
   }
   return sum / real(samples);
+}
+
+// Multiple-scattering compensation of the specular lobe (Turquin 2019, after
+// Kulla & Conty 2017): f_ms = f_ss (1 + F0 (1 - E) / E), where E = scale +
+// bias is the lobe's albedo for F = 1 at the view's n.v (docs/shading.md,
+// "Energy compensation"). Returns the factor on f_ss.
+FACET_FN vec3 energy_compensation(vec3 f0, vec2 dfg) {
+  real e = dfg.x + dfg.y;
+  if (e <= real(0)) return vec3(real(1));
+  return vec3(real(1)) + f0 * ((real(1) - e) / e);
 }

@@ -178,17 +178,39 @@ glm::dvec3 prefilteredRadiance(const PrefilteredEnvironment& env, const glm::dve
   return glm::mix(at(l0), at(l1), level - l0);
 }
 
-glm::dvec2 dfgLookup(const DfgTable& table, double nv, double alpha) {
-  const int size = table.size;
+namespace {
+
+// dfg_grid_position's bilinear interpolation over entry(i, j) of a size x size grid.
+glm::dvec2 dfgBilinear(int size, double nv, double alpha, const std::function<glm::dvec2(int, int)>& entry) {
   const glm::dvec2 position = m::dfg_grid_position(nv, alpha, size);
   const double i = position.x, j = position.y;
   const int i0 = int(std::floor(i)), j0 = int(std::floor(j));
   const int i1 = std::min(i0 + 1, size - 1), j1 = std::min(j0 + 1, size - 1);
-  const auto at = [&](int a, int b) {
-    const std::size_t index = 2 * (std::size_t(b) * size + a);
+  return glm::mix(glm::mix(entry(i0, j0), entry(i1, j0), i - i0), glm::mix(entry(i0, j1), entry(i1, j1), i - i0),
+                  j - j0);
+}
+
+}  // namespace
+
+glm::dvec2 dfgLookup(const DfgTable& table, double nv, double alpha) {
+  return dfgBilinear(table.size, nv, alpha, [&](int i, int j) {
+    const std::size_t index = 2 * (std::size_t(j) * table.size + i);
     return glm::dvec2(table.scaleBias[index], table.scaleBias[index + 1]);
-  };
-  return glm::mix(glm::mix(at(i0, j0), at(i1, j0), i - i0), glm::mix(at(i0, j1), at(i1, j1), i - i0), j - j0);
+  });
+}
+
+glm::dvec2 dfgLookupOnDemand(int distribution, int geometry, double nv, double alpha,
+                             const PrefilterSettings& settings) {
+  const int size = settings.dfgSize;
+  return dfgBilinear(size, nv, alpha, [&](int i, int j) {
+    return m::dfg_integrals(distribution, geometry, m::dfg_grid_nv(i, size), m::dfg_grid_alpha(j, size),
+                            settings.dfgSamples);
+  });
+}
+
+glm::dvec3 energyCompensationOnDemand(const m::BrdfParams& params, double nv, const PrefilterSettings& settings) {
+  return m::energy_compensation(m::fresnel_F(params, 1.0),
+                                dfgLookupOnDemand(params.d_model, params.g_model, nv, params.alpha, settings));
 }
 
 glm::dvec3 irradianceOverPi(const PrefilteredEnvironment& env, const glm::dvec3& n) {

@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "materials/shading.h"
 #include "scenes/environment_map.h"
 
 namespace facet::ibl {
@@ -65,6 +66,16 @@ PrefilteredEnvironment prefilterOnCpu(const scene::EnvironmentMap& map, const Mo
 // kernels use. `direction` is in the map's frame.
 glm::dvec3 prefilteredRadiance(const PrefilteredEnvironment& env, const glm::dvec3& direction, double alpha);
 glm::dvec2 dfgLookup(const DfgTable& table, double nv, double alpha);
+// What dfgLookup returns from the (D, G) table `settings` would build,
+// computing only the four entries it reads, in double (the tables store
+// float), for one-off queries.
+glm::dvec2 dfgLookupOnDemand(int distribution, int geometry, double nv, double alpha,
+                             const PrefilterSettings& settings = {});
+// The multiple-scattering factor on the specular lobe at n.v = nv
+// (energy_compensation in compute/shared/dfg.h), from that table for the
+// material's D and G, as a renderer would apply it.
+glm::dvec3 energyCompensationOnDemand(const materials::f64::BrdfParams& params, double nv,
+                                      const PrefilterSettings& settings = {});
 // Irradiance / pi at normal n from the SH coefficients (c_diff times this is
 // the Lambertian radiance), clamped at 0 (bands 0-2 ring below 0 around
 // very bright sources).

@@ -1,7 +1,8 @@
 // The CPU reference of the split sum's precomputation against what each
 // piece must equal: constants stay constant, SH irradiance and the
 // prefiltered levels against brute-force integrals over the map's texels,
-// the DFG tables against the directional albedo of materials/albedo.h.
+// the DFG tables against the directional albedo of materials/albedo.h, and
+// the compensated white furnace they give.
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -13,6 +14,7 @@
 #include "engine/ibl/environment_math.h"
 #include "engine/ibl/prefiltered_environment.h"
 #include "materials/albedo.h"
+#include "tests/support/compensated_furnace.h"
 #include "tests/support/environment_maps.h"
 
 namespace facet::ibl {
@@ -203,8 +205,9 @@ TEST(PrefilteredEnvironment, DfgMatchesDirectionalAlbedo) {
 }
 
 // At the default 4096 samples per entry the table holds E within 1e-3 from
-// n.v = 0.1.
-TEST(PrefilteredEnvironment, DfgAtTheDefaultSamplesMatchesDirectionalAlbedoWithin1e3) {
+// n.v = 0.1, and scales the lobe for multiple scattering: with F = 1 the
+// compensated white furnace reflects everything, within 1% from n.v = 0.1.
+TEST(PrefilteredEnvironment, DfgAtTheDefaultSamplesMatchesDirectionalAlbedoAndCompensatesTheFurnace) {
   PrefilterSettings settings;
   settings.levels = 1;
   const PrefilteredEnvironment env =
@@ -212,6 +215,31 @@ TEST(PrefilteredEnvironment, DfgAtTheDefaultSamplesMatchesDirectionalAlbedoWithi
   const DfgError e = dfgError(env.dfg[0], 0.1);
   EXPECT_LT(e.rest, 1e-3);
   EXPECT_LT(e.grazing, 4e-2);
+  EXPECT_LT(testing::compensatedFurnaceError(env.dfg[0], 0.1), 1e-2);
+}
+
+// The factor read without the table equals the table's, to its float
+// storage: F0 = 1 gives 1 / E, F0 = 0 leaves the lobe as it is, F0 between
+// scales the missing energy.
+TEST(PrefilteredEnvironment, EnergyCompensationOnDemandMatchesTheTable) {
+  PrefilterSettings settings;
+  settings.levels = 1;
+  settings.dfgSize = 8;
+  settings.dfgSamples = 64;
+  const PrefilteredEnvironment env =
+      prefilterOnCpu(mapOf(16, 8, skyWithSun), {{m::D_GGX, m::G_SMITH_GGX_CORRELATED}}, settings);
+  for (const double nv : {0.07, 0.33, 0.8, 1.0})
+    for (const double alpha : {0.0, 0.11, 0.5, 1.0}) {
+      const glm::dvec2 table = dfgLookup(env.dfg[0], nv, alpha);
+      const glm::dvec2 onDemand = dfgLookupOnDemand(m::D_GGX, m::G_SMITH_GGX_CORRELATED, nv, alpha, settings);
+      EXPECT_LT(testing::maxRelativeDifference(glm::dvec3(onDemand, 0.0), glm::dvec3(table, 0.0)), 1e-7);
+      m::BrdfParams params{m::D_GGX,       m::G_SMITH_GGX_CORRELATED, m::F_SCHLICK,   alpha, glm::dvec3(1.0, 0.0, 0.5),
+                           glm::dvec3(1.0), glm::dvec3(0.0),          glm::dvec3(0.0)};
+      const glm::dvec3 factor = energyCompensationOnDemand(params, nv, settings);
+      EXPECT_NEAR(factor.x, 1 / (table.x + table.y), 1e-6) << nv << " " << alpha;
+      EXPECT_EQ(factor.y, 1.0);
+      EXPECT_NEAR(factor.z, 1 + m::fresnel_F(params, 1.0).z * (1 / (table.x + table.y) - 1), 1e-6);
+    }
 }
 
 }  // namespace
