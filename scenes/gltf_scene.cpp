@@ -468,7 +468,7 @@ Scene loadGltfScene(const std::filesystem::path& path) {
   }
   if (scene.objects.empty()) throw InputError(source, 0, "no meshes", "the glTF scene has no node with a mesh");
   scene.camera = camera ? *camera : frameBounds(cageBounds(scene));
-  if (scene.lights.empty()) scene.lights.push_back(defaultKeyLight(scene.camera));
+  if (scene.lights.empty()) addDefaultLighting(scene);
   return scene;
 }
 

@@ -10,6 +10,7 @@
 
 #include "scenes/input_error.h"
 #include "scenes/obj_cage.h"
+#include "scenes/studio_environment.h"
 
 namespace facet::scene {
 
@@ -33,7 +34,7 @@ Scene sceneFromCage(ControlCage cage) {
   object.cage = std::move(cage);
   scene.objects.push_back(std::move(object));
   scene.camera = frameBounds(cageBounds(scene));
-  scene.lights.push_back(defaultKeyLight(scene.camera));
+  addDefaultLighting(scene);
   return scene;
 }
 
@@ -83,6 +84,13 @@ Light defaultKeyLight(const Camera& camera) {
   light.color = glm::dvec3(1.0);
   light.direction = glm::normalize(forward + 0.6 * right - 1.0 * up);
   return light;
+}
+
+void addDefaultLighting(Scene& scene) {
+  if (scene.environment)
+    scene.lights.push_back(defaultKeyLight(scene.camera));
+  else
+    scene.environment = studioEnvironment();
 }
 
 Aabb cageBounds(const Scene& scene) {

@@ -5,8 +5,8 @@
 //   .gltf / .glb  glTF 2.0: meshes rendered as authored, metallic-roughness
 //                 materials, cameras and KHR_lights_punctual lights
 //
-// A scene without a camera is framed from the default direction, one without
-// lights gets the default key light (frameDefaultView). Errors throw
+// A scene without a camera is framed from the default direction; one without
+// lights gets the default lighting (addDefaultLighting). Errors throw
 // InputError naming the file, the line or field, and the rule.
 #pragma once
 
@@ -45,6 +45,11 @@ materials::Material defaultMaterial();
 Camera frameBounds(const Aabb& bounds, double verticalFovDegrees = 40.0);
 // A white directional key light (c_light = 1) from above the camera's left shoulder.
 Light defaultKeyLight(const Camera& camera);
+
+// The lighting of a scene that names no lights: the default key light
+// beside the scene's environment, or the default studio environment
+// (studio_environment.h) where it has none.
+void addDefaultLighting(Scene& scene);
 
 // World-space box of every object's control points (which enclose the limit surface).
 Aabb cageBounds(const Scene& scene);

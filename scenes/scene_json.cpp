@@ -349,7 +349,7 @@ Scene loadJsonScene(const std::filesystem::path& path) {
     if (!lights.value().is_array()) lights.fail("expected an array");
     for (std::size_t i = 0; i < lights.value().size(); ++i) scene.lights.push_back(readLight(lights[i]));
   } else {
-    scene.lights.push_back(defaultKeyLight(scene.camera));
+    addDefaultLighting(scene);
   }
   return scene;
 }

@@ -10,6 +10,7 @@
 #include "commands.h"
 #include "engine/image/image_io.h"
 #include "engine/image/tile_merge.h"
+#include "preview_options.h"
 
 namespace facet::cli {
 namespace {
@@ -18,14 +19,15 @@ struct MergeOptions {
   std::vector<std::string> tiles;
   std::string exr;
   std::string png;
-  float exposure = 0;
+  PreviewFlags preview;
   bool quiet = false;
 };
 
 void runMerge(const MergeOptions& o) {
+  const PreviewOptions preview = chosenPreview(o.preview);
   checkOutputPath("-o", o.exr);
   if (!o.png.empty()) checkOutputPath("--png", o.png);
-  mergeTiles({o.tiles.begin(), o.tiles.end()}, {o.exr, o.png, o.exposure});
+  mergeTiles({o.tiles.begin(), o.tiles.end()}, {o.exr, o.png, preview});
   if (!o.quiet)
     std::printf("merged %zu tiles into %s%s%s\n", o.tiles.size(), o.exr.c_str(), o.png.empty() ? "" : " and ",
                 o.png.c_str());
@@ -41,7 +43,7 @@ void addMergeCommand(CLI::App& app) {
       ->check(CLI::ExistingFile);
   c->add_option("-o,--output", o->exr, "The whole image's EXR")->required();
   c->add_option("--png", o->png, "Also write an 8-bit sRGB preview");
-  c->add_option("--exposure", o->exposure, "PNG exposure in stops");
+  addPreviewOptions(*c, o->preview);
   c->add_flag("--quiet", o->quiet, "Print nothing but errors");
   c->callback([o] { runMerge(*o); });
 }

@@ -1,19 +1,23 @@
-// facet render: a scene file (or a bare cage) to EXR with every AOV, and a
-// PNG preview; or a crop, a tile or a range of frames of it (farm_options.h).
+// facet render: a scene file (or a bare cage) to an EXR with every AOV, a
+// PNG preview, or both; or a crop, a tile or a range of frames of it
+// (farm_options.h).
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include "commands.h"
 #include "engine/image/image_io.h"
 #include "engine/renderer.h"
 #include "farm_options.h"
+#include "preview_options.h"
 #include "progress_log.h"
 #include "render_summary.h"
 #include "scene_options.h"
@@ -25,14 +29,53 @@ namespace {
 
 struct RenderCommandOptions {
   std::string scene;
+  std::string output;  // -o: an EXR or a PNG, by its extension
+  bool writeExr = false;
   std::string exr;
   std::string png;
-  float exposure = 0;
+  std::string pngFlag = "--png";  // the flag that named the PNG
+  PreviewFlags preview;
   SceneOverrides scene_overrides;
   FarmOptions farm;
   std::string backend = "gpu";
   std::string adapter;
 };
+
+std::string lowerCaseExtension(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+// -o's extension chooses its format.
+void chooseOutputFormat(RenderCommandOptions& o) {
+  const std::string extension = lowerCaseExtension(o.output);
+  if (extension == ".png") {
+    if (!o.png.empty())
+      throw std::invalid_argument("--png '" + o.png + "': -o '" + o.output +
+                                  "' is a PNG already; give -o an .exr to write both");
+    o.png = o.output;
+    o.pngFlag = "-o";
+  } else if (extension == ".exr" || o.output.empty() || std::filesystem::is_directory(o.output)) {
+    // An empty path or a folder is checkOutputPath's to reject.
+    o.writeExr = true;
+    o.exr = o.output;
+  } else {
+    throw std::invalid_argument("-o '" + o.output + "': the extension chooses the format: expected .exr or .png");
+  }
+}
+
+// --png adds a preview to -o's EXR or stands alone. A tile is an EXR for
+// facet merge, which writes the preview.
+void chooseOutputs(RenderCommandOptions& o, bool outputGiven) {
+  if (outputGiven)
+    chooseOutputFormat(o);
+  else if (o.png.empty())
+    throw std::invalid_argument("give -o (an .exr or .png file), --png, or both");
+  if (!o.farm.tile.empty() && !o.png.empty())
+    throw std::invalid_argument(o.pngFlag + " '" + o.png +
+                                "': a --tile render writes an EXR only; facet merge --png writes the preview");
+}
 
 // A single frame may keep a name without '#'; a range needs it.
 std::vector<RenderJob> renderJobs(const RenderCommandOptions& o) {
@@ -43,24 +86,26 @@ std::vector<RenderJob> renderJobs(const RenderCommandOptions& o) {
     return pattern.empty() || !numbered ? pattern : framePath(flag, pattern, frame);
   };
   std::vector<RenderJob> jobs;
-  for (int frame : frames) jobs.push_back({frame, name("-o", o.exr, frame), name("--png", o.png, frame)});
+  for (int frame : frames) jobs.push_back({frame, name("-o", o.exr, frame), name(o.pngFlag.c_str(), o.png, frame)});
   return jobs;
 }
 
 // Every output of every frame is checked before the first render, and each
 // frame's are written as a set, so a failure leaves no new file of that
 // frame and every old one as it was.
-void checkOutputs(const RenderJob& job) {
-  checkOutputPath("-o", job.exr);
+void checkOutputs(const RenderJob& job, const RenderCommandOptions& o) {
+  if (o.writeExr) checkOutputPath("-o", job.exr);
   if (job.png.empty()) return;
-  checkOutputPath("--png", job.png);
-  if (std::filesystem::absolute(job.png).lexically_normal() == std::filesystem::absolute(job.exr).lexically_normal())
+  checkOutputPath(o.pngFlag, job.png);
+  if (o.writeExr &&
+      std::filesystem::absolute(job.png).lexically_normal() == std::filesystem::absolute(job.exr).lexically_normal())
     throw OutputError("--png '" + job.png + "': names the same file as -o");
 }
 
 void runRender(const RenderCommandOptions& o) {
+  const PreviewOptions preview = chosenPreview(o.preview);
   const std::vector<RenderJob> jobs = renderJobs(o);
-  for (const RenderJob& job : jobs) checkOutputs(job);
+  for (const RenderJob& job : jobs) checkOutputs(job, o);
   scene::Scene scene = scene::loadScene(o.scene);
   applySceneOverrides(o.scene_overrides, scene);
   const int width = scene.render.width, height = scene.render.height;
@@ -79,6 +124,7 @@ void runRender(const RenderCommandOptions& o) {
                             {"width", width},
                             {"height", height},
                             {"spp", scene.render.samplesPerPixel},
+                            {"lighting", lightingName(scene)},
                             {"renders", nlohmann::json::array()}};
   for (const RenderJob& job : jobs) {
     scene.camera = job.frame ? frameCamera(still, scene.cameraKeys, o.farm, *job.frame) : still;
@@ -90,9 +136,11 @@ void runRender(const RenderCommandOptions& o) {
     const double wallMilliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
-    const ExrPlacement placement{report.window, width, height, settingsDigest(scene, o.backend)};
-    std::vector<OutputFile> outputs{exrFile(job.exr, report.image, placement)};
-    if (!job.png.empty()) outputs.push_back(pngFile(job.png, report.image, o.exposure));
+    std::vector<OutputFile> outputs;
+    if (o.writeExr)
+      outputs.push_back(
+          exrFile(job.exr, report.image, {{report.window, width, height, settingsDigest(scene, o.backend)}}));
+    if (!job.png.empty()) outputs.push_back(pngFile(job.png, report.image, preview));
     writeAllOrNothing(outputs);
 
     summary["adapter"] = report.device;
@@ -109,15 +157,19 @@ void addRenderCommand(CLI::App& app) {
   auto o = std::make_shared<RenderCommandOptions>();
   auto* c = app.add_subcommand("render", "Render a scene (.json), a control cage (.obj) or a glTF file");
   c->add_option("scene", o->scene, "Scene file")->required()->check(CLI::ExistingFile);
-  c->add_option("-o,--output", o->exr, "EXR with beauty and every AOV ('#' for the frame number)")->required();
-  c->add_option("--png", o->png, "Also write an 8-bit sRGB preview");
-  c->add_option("--exposure", o->exposure, "PNG exposure in stops");
+  auto* output = c->add_option("-o,--output", o->output,
+                               "An .exr with beauty and every AOV, or a .png preview ('#' for the frame number)");
+  c->add_option("--png", o->png, "An 8-bit sRGB preview, beside -o's EXR or alone");
+  addPreviewOptions(*c, o->preview);
   addSceneOverrideOptions(*c, o->scene_overrides);
   addFarmOptions(*c, o->farm);
   c->add_option("--backend", o->backend, "Renderer backend: the GPU kernels or the CPU reference")
       ->check(CLI::IsMember({"gpu", "cpu"}));
   c->add_option("--adapter", o->adapter, "GPU adapter: a substring of its name (default: FACET_ADAPTER or the first)");
-  c->callback([o] { runRender(*o); });
+  c->callback([o, output] {
+    chooseOutputs(*o, output->count() > 0);
+    runRender(*o);
+  });
 }
 
 }  // namespace facet::cli

@@ -2,12 +2,24 @@
 
 #include <sys/resource.h>
 
+#include <CLI/CLI.hpp>
+
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "scene_options.h"
+#include "scenes/studio_environment.h"
 
 namespace facet::cli {
 namespace {
+
+std::vector<std::string> outputPaths(const RenderJob& job) {
+  std::vector<std::string> paths;
+  for (const std::string& path : {job.exr, job.png})
+    if (!path.empty()) paths.push_back(path);
+  return paths;
+}
 
 // Every stage after refinement casts or shades rays.
 double raysPerSecond(const RenderReport& report) {
@@ -16,6 +28,10 @@ double raysPerSecond(const RenderReport& report) {
 }
 
 }  // namespace
+
+std::string lightingName(const scene::Scene& scene) {
+  return scene.environment && scene::isStudioEnvironment(*scene.environment) ? scene::kStudioEnvironmentName : "scene";
+}
 
 std::uint64_t peakResidentBytes() {
   rusage usage{};
@@ -26,6 +42,8 @@ std::uint64_t peakResidentBytes() {
 void printSummary(const scene::Scene& scene, const RenderReport& report, const RenderJob& job,
                   double wallMilliseconds) {
   std::printf("%s\n", report.geometrySummary.c_str());
+  if (scene.environment && scene::isStudioEnvironment(*scene.environment))
+    std::printf("lighting: %s (the scene has no lights or environment)\n", scene::kStudioEnvironmentName);
   if (scene.environment) std::printf("%s\n", describeEnvironment(*scene.environment).c_str());
   std::printf("backend: %s; %dx%d, %d spp, %s intersection\n", report.device.c_str(), scene.render.width,
               scene.render.height, scene.render.samplesPerPixel,
@@ -42,14 +60,13 @@ void printSummary(const scene::Scene& scene, const RenderReport& report, const R
     std::printf("micro-grid: %llu cells, %llu exact fallbacks, %.1f MiB of GPU arrays\n",
                 (unsigned long long)report.cells, (unsigned long long)report.newtonFallbacks,
                 double(report.gpuBytes) / (1 << 20));
-  std::printf("wrote %s%s%s\n", job.exr.c_str(), job.png.empty() ? "" : " and ", job.png.c_str());
+  const std::vector<std::string> paths = outputPaths(job);
+  std::printf("wrote %s\n", CLI::detail::join(paths, " and ").c_str());
 }
 
 nlohmann::json renderJson(const RenderReport& report, const RenderJob& job, double wallMilliseconds) {
   nlohmann::json stages = nlohmann::json::object();
   for (const StageTime& stage : report.stages) stages[stage.name] = stage.milliseconds;
-  nlohmann::json outputs = {job.exr};
-  if (!job.png.empty()) outputs.push_back(job.png);
   return {{"frame", job.frame ? nlohmann::json(*job.frame) : nlohmann::json()},
           {"crop", {report.window.x0, report.window.y0, report.window.x1, report.window.y1}},
           {"stages_ms", stages},
@@ -58,7 +75,7 @@ nlohmann::json renderJson(const RenderReport& report, const RenderJob& job, doub
           {"shadow_rays", report.shadowRays},
           {"rays_per_second", raysPerSecond(report)},
           {"gpu_bytes", report.gpuBytes},
-          {"outputs", outputs}};
+          {"outputs", outputPaths(job)}};
 }
 
 }  // namespace facet::cli

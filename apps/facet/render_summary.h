@@ -16,9 +16,13 @@ namespace facet::cli {
 // One image to render: its frame (none for a still) and where it goes.
 struct RenderJob {
   std::optional<int> frame;
-  std::string exr;
-  std::string png;
+  std::string exr;  // empty: none
+  std::string png;  // empty: none
 };
+
+// "default studio environment" for a scene that got it
+// (scenes/studio_environment.h), else "scene".
+std::string lightingName(const scene::Scene& scene);
 
 void printSummary(const scene::Scene& scene, const RenderReport& report, const RenderJob& job, double wallMilliseconds);
 

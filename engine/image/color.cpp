@@ -1,6 +1,5 @@
 #include "engine/image/color.h"
 
-#include <algorithm>
 #include <cmath>
 
 namespace facet {
@@ -11,10 +10,6 @@ double linearToSrgb(double linear) {
 
 glm::dvec3 linearToSrgb(glm::dvec3 linear) {
   return {linearToSrgb(linear.x), linearToSrgb(linear.y), linearToSrgb(linear.z)};
-}
-
-double previewToneCurve(float linear, float exposureScale) {
-  return linearToSrgb(std::clamp(double(linear * exposureScale), 0.0, 1.0));
 }
 
 }  // namespace facet

@@ -1,5 +1,4 @@
-// Display encodings of linear radiance: the sRGB transfer function and the
-// tone curve of the PNG preview.
+// The display encoding of linear radiance: the sRGB transfer function.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -9,9 +8,5 @@ namespace facet {
 // The sRGB transfer function (IEC 61966-2-1), linear -> encoded.
 double linearToSrgb(double linear);
 glm::dvec3 linearToSrgb(glm::dvec3 linear);
-
-// The preview's tone curve: linear × exposureScale (2^stops), clipped to
-// [0, 1], sRGB-encoded.
-double previewToneCurve(float linear, float exposureScale);
 
 }  // namespace facet

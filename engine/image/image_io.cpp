@@ -11,11 +11,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <random>
 #include <stdexcept>
 #include <system_error>
 
-#include "engine/image/color.h"
+#include "engine/image/png_chunks.h"
 
 namespace facet {
 namespace {
@@ -159,33 +160,33 @@ Image readExr(const std::filesystem::path& path) {
   }
 }
 
-void previewPixels(const glm::vec4* beauty, std::size_t count, float exposure, std::uint8_t* rgba) {
-  const float scale = std::exp2(exposure);
-  for (std::size_t i = 0; i < count; ++i) {
-    const glm::vec4& p = beauty[i];
-    for (int c = 0; c < 3; ++c) rgba[4 * i + c] = std::uint8_t(std::lround(previewToneCurve(p[c], scale) * 255.0));
-    rgba[4 * i + 3] = std::uint8_t(std::lround(std::clamp(p.a, 0.0f, 1.0f) * 255.0f));
-  }
-}
-
 OutputFile rgbaPngFile(const std::filesystem::path& path, int width, int height,
                        const std::vector<std::uint8_t>& rgba) {
   return {path, [path, width, height, &rgba](const std::filesystem::path& temporary) {
-            if (!stbi_write_png(temporary.c_str(), width, height, 4, rgba.data(), width * 4))
-              throw OutputError(path.string() + ": cannot write PNG (is the folder writable?)");
+            std::vector<std::uint8_t> png;
+            const auto append = [](void* context, void* data, int size) {
+              auto& bytes = *static_cast<std::vector<std::uint8_t>*>(context);
+              bytes.insert(bytes.end(), static_cast<std::uint8_t*>(data), static_cast<std::uint8_t*>(data) + size);
+            };
+            if (!stbi_write_png_to_func(append, &png, width, height, 4, rgba.data(), width * 4))
+              throw OutputError(path.string() + ": cannot encode the PNG");
+            const std::vector<std::uint8_t> tagged = withSrgbChunks(png.data(), png.size());
+            std::ofstream out(temporary, std::ios::binary);
+            out.write(reinterpret_cast<const char*>(tagged.data()), std::streamsize(tagged.size()));
+            out.close();
+            if (!out) throw OutputError(path.string() + ": cannot write PNG (is the folder writable?)");
           }};
 }
 
-OutputFile pngFile(const std::filesystem::path& path, const Image& image, float exposure) {
-  return {path, [path, &image, exposure](const std::filesystem::path& temporary) {
-            std::vector<std::uint8_t> pixels(image.pixelCount() * 4);
-            previewPixels(image.beauty.data(), image.pixelCount(), exposure, pixels.data());
+OutputFile pngFile(const std::filesystem::path& path, const Image& image, const PreviewOptions& options) {
+  return {path, [path, &image, options](const std::filesystem::path& temporary) {
+            const std::vector<std::uint8_t> pixels = previewPixels(image.beauty, image.width, image.height, options);
             rgbaPngFile(path, image.width, image.height, pixels).write(temporary);
           }};
 }
 
 void writePng(const std::filesystem::path& path, const Image& image, float exposure) {
-  writeAllOrNothing({pngFile(path, image, exposure)});
+  writeAllOrNothing({pngFile(path, image, {exposure, ToneCurve::Clamp})});
 }
 
 }  // namespace facet

@@ -4,7 +4,12 @@
 // once every one of them is written (docs/reliability.md#outputs).
 //
 // EXR channels (all 32-bit float unless noted):
-//   R G B A                   beauty, linear; A = coverage (0 on misses)
+//   R G B A                   beauty, linear: RGB the mean radiance of the pixel's
+//                             samples, a miss counting what it sees (the
+//                             environment, or black); A = coverage, the share
+//                             of samples that hit. So RGB is not premultiplied
+//                             by A: RGB = A C + (1 - A) E, E the environment seen
+//                             (E = 0 without one), and A = 0 on pixels that miss
 //   Z                         depth: distance from the eye along the ray (+inf on misses)
 //   P.X P.Y P.Z               world position
 //   Ng.X Ng.Y Ng.Z            geometric normal
@@ -23,6 +28,7 @@
 
 #include "engine/image/image.h"
 #include "engine/image/pixel_rect.h"
+#include "engine/image/preview.h"
 
 namespace facet {
 
@@ -68,15 +74,15 @@ OutputFile exrFile(const std::filesystem::path& path, const Image& image,
 void writeExr(const std::filesystem::path& path, const Image& image);
 Image readExr(const std::filesystem::path& path);
 
-// 8-bit RGBA preview of `count` beauty pixels through previewToneCurve
-// (engine/image/color.h), exposure in stops.
-void previewPixels(const glm::vec4* beauty, std::size_t count, float exposure, std::uint8_t* rgba);
-
-// A PNG of 8-bit RGBA pixels, row 0 at the top; `rgba` must outlive the write.
+// A PNG of 8-bit RGBA pixels, row 0 at the top, tagged sRGB
+// (png_chunks.h); `rgba` must outlive the write.
 OutputFile rgbaPngFile(const std::filesystem::path& path, int width, int height, const std::vector<std::uint8_t>& rgba);
 
-// 8-bit preview of the beauty through previewToneCurve (engine/image/color.h).
-OutputFile pngFile(const std::filesystem::path& path, const Image& image, float exposure = 0.0f);
+// The preview of the beauty (engine/image/preview.h).
+OutputFile pngFile(const std::filesystem::path& path, const Image& image, const PreviewOptions& options = {});
+
+// Charts and heatmaps: the beauty exposed, clipped to [0, 1] without a tone
+// curve, and opaque.
 void writePng(const std::filesystem::path& path, const Image& image, float exposure = 0.0f);
 
 }  // namespace facet

@@ -124,8 +124,9 @@ Imf::FrameBuffer bandFrameBuffer(std::vector<Plane>& planes, int width, int y0) 
   return frame;
 }
 
-// The band's beauty as 8-bit preview pixels, from its float R, G, B, A planes.
-void previewBand(const std::vector<Plane>& planes, std::size_t pixels, float exposure, std::uint8_t* rgba) {
+// The band's beauty rows into the preview, from its float R, G, B, A planes;
+// with no encoder, only checks that the planes are there.
+void previewBand(const std::vector<Plane>& planes, int width, int rows, PreviewEncoder* encoder) {
   const char* names[4] = {"R", "G", "B", "A"};
   const float* components[4] = {};
   for (int c = 0; c < 4; ++c) {
@@ -135,10 +136,13 @@ void previewBand(const std::vector<Plane>& planes, std::size_t pixels, float exp
                                   names[c]);
     components[c] = reinterpret_cast<const float*>(plane->rows.data());
   }
-  std::vector<glm::vec4> beauty(pixels);
-  for (std::size_t i = 0; i < pixels; ++i)
-    beauty[i] = {components[0][i], components[1][i], components[2][i], components[3][i]};
-  previewPixels(beauty.data(), pixels, exposure, rgba);
+  if (!encoder) return;
+  std::vector<glm::vec4> row(static_cast<std::size_t>(width));
+  for (int y = 0; y < rows; ++y) {
+    for (std::size_t x = 0, i = std::size_t(y) * std::size_t(width); x < row.size(); ++x, ++i)
+      row[x] = {components[0][i], components[1][i], components[2][i], components[3][i]};
+    encoder->push(row.data());
+  }
 }
 
 }  // namespace
@@ -155,8 +159,9 @@ void mergeTiles(const std::vector<std::filesystem::path>& paths, const MergeOutp
     planes.push_back({c.name(), c.channel().type,
                       std::vector<char>(pixelBytes(c.channel().type) * std::size_t(width) * kRowsPerBand)});
   const bool png = !outputs.png.empty();
-  if (png) previewBand(planes, 0, 0, nullptr);  // the channels it needs, checked before writing
+  if (png) previewBand(planes, width, 0, nullptr);  // the channels it needs, checked before writing
   std::vector<std::uint8_t> preview(png ? std::size_t(width) * std::size_t(height) * 4 : 0);
+  PreviewEncoder encoder(width, outputs.preview, preview.data());
 
   // The PNG's pixels are gathered while the EXR streams, so the EXR is the
   // first of the outputs written.
@@ -176,10 +181,9 @@ void mergeTiles(const std::vector<std::filesystem::path>& paths, const MergeOutp
                        }
                        out.setFrameBuffer(frame);
                        out.writePixels(y1 - y0);
-                       if (png)
-                         previewBand(planes, std::size_t(y1 - y0) * std::size_t(width), outputs.exposure,
-                                     preview.data() + std::size_t(y0) * std::size_t(width) * 4);
+                       if (png) previewBand(planes, width, y1 - y0, &encoder);
                      }
+                     encoder.finish();
                    } catch (const std::exception& e) {
                      throw OutputError(outputs.exr.string() + ": cannot merge the tiles: " + e.what());
                    }

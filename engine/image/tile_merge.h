@@ -5,12 +5,14 @@
 #include <filesystem>
 #include <vector>
 
+#include "engine/image/preview.h"
+
 namespace facet {
 
 struct MergeOutputs {
   std::filesystem::path exr;
   std::filesystem::path png;  // empty: none
-  float exposure = 0;         // of the PNG, in stops
+  PreviewOptions preview;     // of the PNG
 };
 
 // Checks that the tiles share one settings digest, display window and

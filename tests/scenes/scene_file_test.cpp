@@ -3,11 +3,13 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <numbers>
 
 #include "scenes/input_error.h"
 #include "scenes/scene_file.h"
+#include "scenes/studio_environment.h"
 #include "tests/support/temp_dir.h"
 
 namespace facet::scene {
@@ -184,7 +186,9 @@ TEST_F(SceneFiles, ABareCageIsFramedAndLit) {
   Scene scene = loadScene(dir_ / "ball.obj");
   ASSERT_EQ(scene.objects.size(), 1u);
   EXPECT_EQ(scene.objects[0].subdivision, Subdivision::CatmullClark);
-  ASSERT_EQ(scene.lights.size(), 1u);
+  EXPECT_TRUE(scene.lights.empty());
+  ASSERT_TRUE(scene.environment.has_value());
+  EXPECT_TRUE(isStudioEnvironment(*scene.environment));
   // Every control point lies inside the view frustum.
   const glm::dvec3 forward = glm::normalize(scene.camera.target - scene.camera.eye);
   const double tanHalf = std::tan(0.5 * scene.camera.verticalFovDegrees * std::numbers::pi / 180);
@@ -228,8 +232,41 @@ TEST_F(SceneFiles, AConstantEnvironmentTakesTheDefaults) {
   EXPECT_EQ(environment.method, IblMethod::Prefiltered);
   EXPECT_EQ(environment.samples, 16);
   EXPECT_TRUE(environment.occlusion);
+}
 
-  EXPECT_FALSE(loadScene(write("plain.json", R"({"objects": [{"mesh": "ball.obj"}]})")).environment.has_value());
+// Neither lights nor an environment: the studio; an environment without
+// lights: the key light beside it; lights given, even none: as given.
+TEST_F(SceneFiles, DefaultLightingFollowsWhatTheSceneBrings) {
+  const Scene plain = loadScene(write("plain.json", R"({"objects": [{"mesh": "ball.obj"}]})"));
+  EXPECT_TRUE(plain.lights.empty());
+  ASSERT_TRUE(plain.environment.has_value());
+  EXPECT_TRUE(isStudioEnvironment(*plain.environment));
+  const Scene withMap =
+      loadScene(write("map.json", R"({"objects": [{"mesh": "ball.obj"}], "environment": {"color": [0.1, 0.2, 0.3]}})"));
+  EXPECT_EQ(withMap.lights.size(), 1u);
+  EXPECT_FALSE(isStudioEnvironment(*withMap.environment));
+  const Scene dark = loadScene(write("dark.json", R"({"objects": [{"mesh": "ball.obj"}], "lights": []})"));
+  EXPECT_TRUE(dark.lights.empty());
+  EXPECT_FALSE(dark.environment.has_value());
+}
+
+TEST(StudioEnvironment, IsANeutralGreyOfModestRange) {
+  const EnvironmentMap map = studioEnvironmentMap();
+  EXPECT_EQ(map.source, kStudioEnvironmentName);
+  ASSERT_EQ(map.width, 2 * map.height);
+  float darkest = map.texel(0, 0).r, brightest = darkest;
+  for (int y = 0; y < map.height; ++y)
+    for (int x = 0; x < map.width; ++x) {
+      const glm::vec3 t = map.texel(x, y);
+      EXPECT_EQ(t.r, t.g);
+      EXPECT_EQ(t.g, t.b);
+      darkest = std::min(darkest, t.r);
+      brightest = std::max(brightest, t.r);
+    }
+  EXPECT_GT(darkest, 0.05f) << "no direction is black";
+  EXPECT_GT(brightest, 1.0f) << "soft boxes shape the surfaces";
+  EXPECT_LT(brightest / darkest, 64.0f);
+  EXPECT_GT(map.texel(0, 0).r, map.texel(0, map.height - 1).r) << "the ceiling is lighter than the floor";
 }
 
 TEST_F(SceneFiles, EnvironmentErrorsNameTheField) {

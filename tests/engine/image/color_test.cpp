@@ -25,11 +25,5 @@ TEST(Srgb, KnownValues) {
   EXPECT_EQ(encoded, glm::dvec3(linearToSrgb(0.0), linearToSrgb(0.5), linearToSrgb(1.0)));
 }
 
-TEST(PreviewToneCurve, ExposesThenClipsThenEncodes) {
-  EXPECT_DOUBLE_EQ(previewToneCurve(0.25f, 2.0f), linearToSrgb(0.5));
-  EXPECT_DOUBLE_EQ(previewToneCurve(0.75f, 2.0f), 1.0);  // over-exposed: clipped to white
-  EXPECT_DOUBLE_EQ(previewToneCurve(-0.5f, 1.0f), 0.0);  // negative radiance: black
-}
-
 }  // namespace
 }  // namespace facet

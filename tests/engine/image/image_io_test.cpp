@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/image/image_io.h"
+#include "engine/image/png_chunks.h"
 #include "tests/support/random_image.h"
 #include "tests/support/temp_dir.h"
 
@@ -44,7 +45,7 @@ TEST_F(ImageIo, ExrRoundTripKeepsEveryChannelBitExact) {
   EXPECT_EQ(files().size(), 1u) << "no temporary file may remain";
 }
 
-TEST_F(ImageIo, PngEncodesSrgbAndCoverage) {
+TEST_F(ImageIo, ChartPngsAreClippedSrgbAndOpaque) {
   Image image(2, 1);
   image.beauty[0] = {0.5f, 0.0f, 2.0f, 1.0f};  // 0.5 linear is 188 in sRGB; 2.0 clamps to 255
   writePng(dir_ / "out.png", image);
@@ -53,8 +54,48 @@ TEST_F(ImageIo, PngEncodesSrgbAndCoverage) {
   ASSERT_NE(pixels, nullptr);
   std::vector<int> rgba(pixels, pixels + 8);
   stbi_image_free(pixels);
-  EXPECT_EQ(rgba, (std::vector<int>{188, 0, 255, 255, 0, 0, 0, 0}));
+  EXPECT_EQ(rgba, (std::vector<int>{188, 0, 255, 255, 0, 0, 0, 255}));
   EXPECT_EQ(files().size(), 1u);
+}
+
+std::string contents(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::uint32_t bigEndian(const std::string& bytes, std::size_t at) {
+  std::uint32_t value = 0;
+  for (std::size_t i = 0; i < 4; ++i) value = value << 8 | std::uint8_t(bytes[at + i]);
+  return value;
+}
+
+// Every chunk's CRC checks (stb_image_write's own, from its table, against
+// pngCrc's bitwise one), and sRGB, gAMA and cHRM precede the image data.
+TEST_F(ImageIo, PngsCarryAnSrgbChunkWithValidCrcs) {
+  writeAllOrNothing({pngFile(dir_ / "out.png", randomImage(7, 5))});
+  const std::string png = contents(dir_ / "out.png");
+  ASSERT_EQ(png.substr(0, 8), "\x89PNG\r\n\x1a\n");
+  std::vector<std::string> types;
+  for (std::size_t at = 8; at + 12 <= png.size();) {
+    const std::uint32_t length = bigEndian(png, at);
+    ASSERT_LE(at + 12 + length, png.size());
+    types.push_back(png.substr(at + 4, 4));
+    EXPECT_EQ(bigEndian(png, at + 8 + length),
+              pngCrc(reinterpret_cast<const std::uint8_t*>(png.data()) + at + 4, 4 + length))
+        << types.back();
+    if (types.back() == "sRGB") {
+      EXPECT_EQ(length, 1u);
+      EXPECT_EQ(png[at + 8], 0) << "perceptual rendering intent";
+    }
+    if (types.back() == "gAMA") {
+      EXPECT_EQ(bigEndian(png, at + 8), 45455u);
+    }
+    at += 12 + length;
+  }
+  ASSERT_GE(types.size(), 5u);
+  EXPECT_EQ(std::vector<std::string>(types.begin(), types.begin() + 5),
+            (std::vector<std::string>{"IHDR", "sRGB", "gAMA", "cHRM", "IDAT"}));
+  EXPECT_EQ(types.back(), "IEND");
 }
 
 TEST_F(ImageIo, FailedWritesNameTheFileAndLeaveNothing) {
@@ -68,11 +109,6 @@ TEST_F(ImageIo, FailedWritesNameTheFileAndLeaveNothing) {
   }
   EXPECT_THROW(writePng(dir_ / "no such folder" / "out.png", image), std::exception);
   EXPECT_TRUE(files().empty());
-}
-
-std::string contents(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 TEST_F(ImageIo, AnOutputSetIsWrittenWhole) {
