@@ -3,7 +3,8 @@
 #   - --png alone writes a PNG and no EXR; -o out.png chooses a PNG;
 #   - a scene without lights or environment gets the default studio
 #     environment, named in the summary and in --json;
-#   - the default preview is opaque and nowhere black; --alpha writes
+#   - the default preview of every example scene is opaque, and the
+#     studio's is nowhere black; --alpha writes
 #     coverage, transparent where the rays miss;
 #   - facet merge --png takes the same preview flags.
 #   check_preview.sh FACET REPOSITORY WORK_FOLDER
@@ -26,6 +27,12 @@ read -r lo hi <<<"$(channel_range alone.png 3)"
 for c in 0 1 2; do
   read -r lo hi <<<"$(channel_range alone.png $c)"
   [[ $lo -gt 0 && $hi -gt $lo ]] || fail "channel $c spans $lo..$hi: black somewhere, or flat"
+done
+
+for scene in "$repo"/scenes/examples/*.{json,obj,gltf}; do
+  "$facet" render "$scene" --size 32x16 --backend cpu --quiet -o example.png
+  read -r lo hi <<<"$(channel_range example.png 3)"
+  [[ $lo == 255 ]] || fail "the preview of $scene is not opaque (alpha from $lo)"
 done
 
 "$facet" render "$ball" "${common[@]}" --quiet -o chosen.png --alpha --tonemap aces --exposure 0.5
