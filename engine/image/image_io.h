@@ -5,11 +5,11 @@
 //
 // EXR channels (all 32-bit float unless noted):
 //   R G B A                   beauty, linear: RGB the mean radiance of the pixel's
-//                             samples, a miss counting what it sees (the
-//                             environment, or black); A = coverage, the share
-//                             of samples that hit. So RGB is not premultiplied
-//                             by A: RGB = A C + (1 - A) E, E the environment seen
-//                             (E = 0 without one), and A = 0 on pixels that miss
+//                             samples, a miss counting what it sees; A = coverage,
+//                             the share of samples that hit (0 on misses). So
+//                             RGB = A C + (1 - A) E, C the surfaces' colour, E the
+//                             environment the misses saw: premultiplied by A only
+//                             without an environment (E = 0) (docs/preview.md)
 //   Z                         depth: distance from the eye along the ray (+inf on misses)
 //   P.X P.Y P.Z               world position
 //   Ng.X Ng.Y Ng.Z            geometric normal
