@@ -139,8 +139,8 @@ scene::Scene engineScene(const SceneDescription& d) {
   s.camera = d.camera ? engineCamera(*d.camera) : scene::frameBounds(scene::cageBounds(s));
   for (std::size_t i = 0; i < d.lights.size(); ++i)
     s.lights.push_back(engineLight(d.lights[i], "lights[" + std::to_string(i) + "]"));
-  if (s.lights.empty()) s.lights.push_back(scene::defaultKeyLight(s.camera));
   if (d.environment) s.environment = engineEnvironment(*d.environment);
+  if (s.lights.empty()) scene::addDefaultLighting(s);
   s.render.width = int(inRange(d.width, 1, 16384, "width"));
   s.render.height = int(inRange(d.height, 1, 16384, "height"));
   return s;
