@@ -13,12 +13,12 @@
 #include "commands.h"
 #include "engine/image/image_io.h"
 #include "engine/renderer.h"
+#include "exr_options.h"
 #include "farm_options.h"
 #include "progress_log.h"
 #include "render_summary.h"
 #include "scene_options.h"
 #include "scenes/scene_file.h"
-#include "settings_digest.h"
 
 namespace facet::cli {
 namespace {
@@ -32,6 +32,7 @@ struct RenderCommandOptions {
   FarmOptions farm;
   std::string backend = "gpu";
   std::string adapter;
+  ExrCommandOptions exrFlags;
 };
 
 // A single frame may keep a name without '#'; a range needs it.
@@ -61,6 +62,7 @@ void checkOutputs(const RenderJob& job) {
 void runRender(const RenderCommandOptions& o) {
   const std::vector<RenderJob> jobs = renderJobs(o);
   for (const RenderJob& job : jobs) checkOutputs(job);
+  chosenExrLayers(o.exrFlags);
   scene::Scene scene = scene::loadScene(o.scene);
   applySceneOverrides(o.scene_overrides, scene);
   const int width = scene.render.width, height = scene.render.height;
@@ -90,8 +92,8 @@ void runRender(const RenderCommandOptions& o) {
     const double wallMilliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
-    const ExrPlacement placement{report.window, width, height, settingsDigest(scene, o.backend)};
-    std::vector<OutputFile> outputs{exrFile(job.exr, report.image, placement)};
+    std::vector<OutputFile> outputs{
+        exrFile(job.exr, report.image, exrOptions(scene, o.backend, report.window, o.exrFlags))};
     if (!job.png.empty()) outputs.push_back(pngFile(job.png, report.image, o.exposure));
     writeAllOrNothing(outputs);
 
@@ -109,11 +111,13 @@ void addRenderCommand(CLI::App& app) {
   auto o = std::make_shared<RenderCommandOptions>();
   auto* c = app.add_subcommand("render", "Render a scene (.json), a control cage (.obj) or a glTF file");
   c->add_option("scene", o->scene, "Scene file")->required()->check(CLI::ExistingFile);
-  c->add_option("-o,--output", o->exr, "EXR with beauty and every AOV ('#' for the frame number)")->required();
+  c->add_option("-o,--output", o->exr, "EXR with the beauty and the --aovs layers ('#' for the frame number)")
+      ->required();
   c->add_option("--png", o->png, "Also write an 8-bit sRGB preview");
   c->add_option("--exposure", o->exposure, "PNG exposure in stops");
   addSceneOverrideOptions(*c, o->scene_overrides);
   addFarmOptions(*c, o->farm);
+  addExrOptions(*c, o->exrFlags);
   c->add_option("--backend", o->backend, "Renderer backend: the GPU kernels or the CPU reference")
       ->check(CLI::IsMember({"gpu", "cpu"}));
   c->add_option("--adapter", o->adapter, "GPU adapter: a substring of its name (default: FACET_ADAPTER or the first)");
