@@ -13,7 +13,6 @@
 #include <vector>
 
 #include "engine/image/image.h"
-#include "engine/image/pixel_rect.h"
 
 namespace facet {
 
