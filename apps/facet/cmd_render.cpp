@@ -16,13 +16,13 @@
 #include "commands.h"
 #include "engine/image/image_io.h"
 #include "engine/renderer.h"
+#include "exr_options.h"
 #include "farm_options.h"
 #include "preview_options.h"
 #include "progress_log.h"
 #include "render_summary.h"
 #include "scene_options.h"
 #include "scenes/scene_file.h"
-#include "settings_digest.h"
 
 namespace facet::cli {
 namespace {
@@ -39,6 +39,7 @@ struct RenderCommandOptions {
   FarmOptions farm;
   std::string backend = "gpu";
   std::string adapter;
+  ExrCommandOptions exrFlags;
 };
 
 std::string lowerCaseExtension(const std::string& path) {
@@ -106,6 +107,7 @@ void runRender(const RenderCommandOptions& o) {
   const PreviewOptions preview = chosenPreview(o.preview);
   const std::vector<RenderJob> jobs = renderJobs(o);
   for (const RenderJob& job : jobs) checkOutputs(job, o);
+  chosenExrLayers(o.exrFlags);
   scene::Scene scene = scene::loadScene(o.scene);
   applySceneOverrides(o.scene_overrides, scene);
   const int width = scene.render.width, height = scene.render.height;
@@ -139,7 +141,7 @@ void runRender(const RenderCommandOptions& o) {
     std::vector<OutputFile> outputs;
     if (o.writeExr)
       outputs.push_back(
-          exrFile(job.exr, report.image, {{report.window, width, height, settingsDigest(scene, o.backend)}}));
+          exrFile(job.exr, report.image, exrOptions(scene, o.backend, report.window, o.exrFlags)));
     if (!job.png.empty()) outputs.push_back(pngFile(job.png, report.image, preview));
     writeAllOrNothing(outputs);
 
@@ -158,11 +160,12 @@ void addRenderCommand(CLI::App& app) {
   auto* c = app.add_subcommand("render", "Render a scene (.json), a control cage (.obj) or a glTF file");
   c->add_option("scene", o->scene, "Scene file")->required()->check(CLI::ExistingFile);
   auto* output = c->add_option("-o,--output", o->output,
-                               "An .exr with beauty and every AOV, or a .png preview ('#' for the frame number)");
+                               "An .exr with the beauty and the --aovs layers, or a .png preview ('#' for the frame number)");
   c->add_option("--png", o->png, "An 8-bit sRGB preview, beside -o's EXR or alone");
   addPreviewOptions(*c, o->preview);
   addSceneOverrideOptions(*c, o->scene_overrides);
   addFarmOptions(*c, o->farm);
+  addExrOptions(*c, o->exrFlags);
   c->add_option("--backend", o->backend, "Renderer backend: the GPU kernels or the CPU reference")
       ->check(CLI::IsMember({"gpu", "cpu"}));
   c->add_option("--adapter", o->adapter, "GPU adapter: a substring of its name (default: FACET_ADAPTER or the first)");

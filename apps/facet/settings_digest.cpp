@@ -33,4 +33,21 @@ std::string settingsDigest(const scene::Scene& scene, const std::string& backend
   return hex;
 }
 
+std::string renderSettingsText(const scene::Scene& scene, const std::string& backend) {
+  const scene::RenderSettings& r = scene.render;
+  const auto orAuto = [](const auto& value) { return value ? std::to_string(*value) : std::string("auto"); };
+  std::ostringstream text;
+  text << "backend=" << backend << " size=" << r.width << 'x' << r.height << " spp=" << r.samplesPerPixel
+       << " method=" << (r.method == scene::IntersectionMethod::Exact ? "exact" : "tess")
+       << " pixelTolerance=" << r.pixelTolerance << " tessellationRate=" << orAuto(r.tessellationRate);
+  if (const auto& e = scene.environment) {
+    const char* methods[] = {"sampled", "prefiltered", "filtered"};  // in IblMethod's order
+    text << " ibl=" << methods[int(e->method)] << " iblSamples=" << e->samples
+         << " iblOcclusion=" << (e->occlusion ? "on" : "off") << " iblSeed=" << e->seed;
+  } else {
+    text << " ibl=none";
+  }
+  return text.str();
+}
+
 }  // namespace facet::cli

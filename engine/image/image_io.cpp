@@ -1,11 +1,5 @@
 #include "engine/image/image_io.h"
 
-#include <ImfChannelList.h>
-#include <ImfFrameBuffer.h>
-#include <ImfHeader.h>
-#include <ImfInputFile.h>
-#include <ImfOutputFile.h>
-#include <ImfStringAttribute.h>
 #include <stb_image_write.h>
 #include <unistd.h>
 
@@ -19,48 +13,6 @@
 #include "engine/image/png_chunks.h"
 
 namespace facet {
-namespace {
-
-struct Channel {
-  const char* name;
-  Imf::PixelType type;
-  char* base;
-  std::size_t stride;  // bytes between pixels
-};
-
-// The channel table shared by the writer and the reader.
-std::vector<Channel> channels(Image& image) {
-  auto f = [](auto& plane, int component) { return reinterpret_cast<char*>(plane.data()) + component * sizeof(float); };
-  const std::size_t v4 = sizeof(glm::vec4), v3 = sizeof(glm::vec3), v2 = sizeof(glm::vec2);
-  return {
-      {"R", Imf::FLOAT, f(image.beauty, 0), v4},
-      {"G", Imf::FLOAT, f(image.beauty, 1), v4},
-      {"B", Imf::FLOAT, f(image.beauty, 2), v4},
-      {"A", Imf::FLOAT, f(image.beauty, 3), v4},
-      {"Z", Imf::FLOAT, f(image.depth, 0), sizeof(float)},
-      {"P.X", Imf::FLOAT, f(image.position, 0), v3},
-      {"P.Y", Imf::FLOAT, f(image.position, 1), v3},
-      {"P.Z", Imf::FLOAT, f(image.position, 2), v3},
-      {"Ng.X", Imf::FLOAT, f(image.geometricNormal, 0), v3},
-      {"Ng.Y", Imf::FLOAT, f(image.geometricNormal, 1), v3},
-      {"Ng.Z", Imf::FLOAT, f(image.geometricNormal, 2), v3},
-      {"N.X", Imf::FLOAT, f(image.shadingNormal, 0), v3},
-      {"N.Y", Imf::FLOAT, f(image.shadingNormal, 1), v3},
-      {"N.Z", Imf::FLOAT, f(image.shadingNormal, 2), v3},
-      {"patchId", Imf::UINT, reinterpret_cast<char*>(image.patchId.data()), sizeof(std::uint32_t)},
-      {"faceId", Imf::UINT, reinterpret_cast<char*>(image.faceId.data()), sizeof(std::uint32_t)},
-      {"uv.U", Imf::FLOAT, f(image.uv, 0), v2},
-      {"uv.V", Imf::FLOAT, f(image.uv, 1), v2},
-  };
-}
-
-// OpenEXR addresses slices by absolute pixel coordinates: the plane's first
-// pixel is pixel (x0, y0) of the display window.
-char* slicesOrigin(const Channel& c, int x0, int y0, int width) {
-  return c.base - (std::ptrdiff_t(x0) + std::ptrdiff_t(y0) * width) * std::ptrdiff_t(c.stride);
-}
-
-}  // namespace
 
 void checkOutputPath(const std::string& flag, const std::filesystem::path& path) {
   const auto reject = [&](const std::string& rule) { throw OutputError(flag + " '" + path.string() + "': " + rule); };
@@ -112,51 +64,6 @@ void writeAtomically(const std::filesystem::path& path,
   writeAllOrNothing({{path, write}});
 }
 
-OutputFile exrFile(const std::filesystem::path& path, const Image& image,
-                   const std::optional<ExrPlacement>& placement) {
-  return {path, [path, &image, placement](const std::filesystem::path& temporary) {
-            const ExrPlacement where = placement.value_or(
-                ExrPlacement{PixelRect::whole(image.width, image.height), image.width, image.height, {}});
-            const PixelRect& data = where.dataWindow;
-            Imf::Header header(Imath::Box2i({0, 0}, {where.displayWidth - 1, where.displayHeight - 1}),
-                               Imath::Box2i({data.x0, data.y0}, {data.x1 - 1, data.y1 - 1}));
-            header.compression() = Imf::ZIP_COMPRESSION;
-            if (!where.digest.empty()) header.insert(kSettingsDigestAttribute, Imf::StringAttribute(where.digest));
-            Imf::FrameBuffer frame;
-            // The slices only read through these pointers; the table is shared with readExr.
-            for (const Channel& c : channels(const_cast<Image&>(image))) {
-              header.channels().insert(c.name, Imf::Channel(c.type));
-              frame.insert(c.name, Imf::Slice(c.type, slicesOrigin(c, data.x0, data.y0, image.width), c.stride,
-                                              c.stride * std::size_t(image.width)));
-            }
-            try {
-              Imf::OutputFile file(temporary.c_str(), header);
-              file.setFrameBuffer(frame);
-              file.writePixels(image.height);
-            } catch (const std::exception& e) {
-              throw OutputError(path.string() + ": cannot write EXR: " + e.what());
-            }
-          }};
-}
-
-void writeExr(const std::filesystem::path& path, const Image& image) { writeAllOrNothing({exrFile(path, image)}); }
-
-Image readExr(const std::filesystem::path& path) {
-  try {
-    Imf::InputFile file(path.c_str());
-    const Imath::Box2i window = file.header().dataWindow();
-    Image image(window.max.x - window.min.x + 1, window.max.y - window.min.y + 1);
-    Imf::FrameBuffer frame;
-    for (const Channel& c : channels(image)) {
-      if (!file.header().channels().findChannel(c.name)) continue;  // keep the miss default
-      frame.insert(c.name, Imf::Slice(c.type, slicesOrigin(c, window.min.x, window.min.y, image.width), c.stride,
-                                      c.stride * std::size_t(image.width)));
-    }
-    file.setFrameBuffer(frame);
-    file.readPixels(window.min.y, window.max.y);
-    return image;
-  } catch (const std::exception& e) {
-    throw std::runtime_error(path.string() + ": cannot read EXR: " + e.what());
   }
 }
 

@@ -1,33 +1,18 @@
 // Writing and reading images. Every writer goes through a temporary file in
 // the destination's folder and renames it into place, so a failure never
 // leaves a partial file behind; a set of outputs is renamed into place only
-// once every one of them is written (docs/reliability.md#outputs).
-//
-// EXR channels (all 32-bit float unless noted):
-//   R G B A                   beauty, linear: RGB the mean radiance of the pixel's
-//                             samples, a miss counting what it sees; A = coverage,
-//                             the share of samples that hit (0 on misses). So
-//                             RGB = A C + (1 - A) E, C the surfaces' colour, E the
-//                             environment the misses saw: premultiplied by A only
-//                             without an environment (E = 0) (docs/preview.md)
-//   Z                         depth: distance from the eye along the ray (+inf on misses)
-//   P.X P.Y P.Z               world position
-//   Ng.X Ng.Y Ng.Z            geometric normal
-//   N.X N.Y N.Z               shading (limit-surface) normal
-//   patchId faceId            32-bit unsigned (0xFFFFFFFF on misses)
-//   uv.U uv.V                 parameter on the control-cage face
+// once every one of them is written (docs/reliability.md#outputs). The EXR
+// writer is exr_file.h.
 #pragma once
 
 #include <filesystem>
 #include <cstdint>
 #include <functional>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "engine/image/image.h"
-#include "engine/image/pixel_rect.h"
 #include "engine/image/preview.h"
 
 namespace facet {
@@ -56,23 +41,6 @@ void writeAllOrNothing(const std::vector<OutputFile>& files);
 
 // Calls write(temporaryPath), then renames the temporary onto `path`.
 void writeAtomically(const std::filesystem::path& path, const std::function<void(const std::filesystem::path&)>& write);
-
-// Where an EXR's pixels lie in the full render (its data window inside the
-// display window), and the digest of the settings that rendered them, kept
-// in the header attribute kSettingsDigestAttribute so that a merge can tell
-// tiles of one render from another's.
-struct ExrPlacement {
-  PixelRect dataWindow;
-  int displayWidth = 0, displayHeight = 0;
-  std::string digest;
-};
-inline constexpr const char* kSettingsDigestAttribute = "facetSettingsDigest";
-
-// Without a placement, the image is the whole display window.
-OutputFile exrFile(const std::filesystem::path& path, const Image& image,
-                   const std::optional<ExrPlacement>& placement = {});
-void writeExr(const std::filesystem::path& path, const Image& image);
-Image readExr(const std::filesystem::path& path);
 
 // A PNG of 8-bit RGBA pixels, row 0 at the top, tagged sRGB
 // (png_chunks.h); `rgba` must outlive the write.

@@ -6,6 +6,7 @@
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <ImfStringAttribute.h>
+#include <half.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -13,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "engine/image/exr_file.h"
 #include "engine/image/image_io.h"
 #include "engine/image/pixel_rect.h"
 
@@ -124,23 +126,29 @@ Imf::FrameBuffer bandFrameBuffer(std::vector<Plane>& planes, int width, int y0) 
   return frame;
 }
 
-// The band's beauty rows into the preview, from its float R, G, B, A planes;
-// with no encoder, only checks that the planes are there.
+float valueAt(const Plane& plane, std::size_t i) {
+  return plane.type == Imf::HALF ? float(reinterpret_cast<const half*>(plane.rows.data())[i])
+                                 : reinterpret_cast<const float*>(plane.rows.data())[i];
+}
+
+// The band's beauty rows into the preview, from its float or half R, G, B, A
+// planes; with no encoder, only checks that the planes are there.
 void previewBand(const std::vector<Plane>& planes, int width, int rows, PreviewEncoder* encoder) {
   const char* names[4] = {"R", "G", "B", "A"};
-  const float* components[4] = {};
+  const Plane* components[4] = {};
   for (int c = 0; c < 4; ++c) {
     auto plane = std::find_if(planes.begin(), planes.end(), [&](const Plane& p) { return p.name == names[c]; });
-    if (plane == planes.end() || plane->type != Imf::FLOAT)
-      throw std::invalid_argument(std::string("merge: --png needs float R, G, B and A channels; the tiles lack ") +
-                                  names[c]);
-    components[c] = reinterpret_cast<const float*>(plane->rows.data());
+    if (plane == planes.end() || plane->type == Imf::UINT)
+      throw std::invalid_argument(
+          std::string("merge: --png needs float or half R, G, B and A channels; the tiles lack ") + names[c]);
+    components[c] = &*plane;
   }
   if (!encoder) return;
   std::vector<glm::vec4> row(static_cast<std::size_t>(width));
   for (int y = 0; y < rows; ++y) {
     for (std::size_t x = 0, i = std::size_t(y) * std::size_t(width); x < row.size(); ++x, ++i)
-      row[x] = {components[0][i], components[1][i], components[2][i], components[3][i]};
+      row[x] = {valueAt(*components[0], i), valueAt(*components[1], i), valueAt(*components[2], i),
+                valueAt(*components[3], i)};
     encoder->push(row.data());
   }
 }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/image/exr_file.h"
 #include "engine/image/image_io.h"
 #include "engine/image/png_chunks.h"
 #include "tests/support/random_image.h"
@@ -27,23 +28,6 @@ class ImageIo : public facet::testing::TempDirTest {
  protected:
   std::vector<fs::path> files() const { return {fs::directory_iterator(dir_), fs::directory_iterator()}; }
 };
-
-TEST_F(ImageIo, ExrRoundTripKeepsEveryChannelBitExact) {
-  Image image = randomImage(37, 19);
-  writeExr(dir_ / "out.exr", image);
-  Image back = readExr(dir_ / "out.exr");
-  ASSERT_EQ(back.width, 37);
-  ASSERT_EQ(back.height, 19);
-  EXPECT_EQ(back.beauty, image.beauty);
-  EXPECT_EQ(back.depth, image.depth);  // +inf on misses survives
-  EXPECT_EQ(back.position, image.position);
-  EXPECT_EQ(back.geometricNormal, image.geometricNormal);
-  EXPECT_EQ(back.shadingNormal, image.shadingNormal);
-  EXPECT_EQ(back.patchId, image.patchId);
-  EXPECT_EQ(back.faceId, image.faceId);
-  EXPECT_EQ(back.uv, image.uv);
-  EXPECT_EQ(files().size(), 1u) << "no temporary file may remain";
-}
 
 TEST_F(ImageIo, ChartPngsAreClippedSrgbAndOpaque) {
   Image image(2, 1);
@@ -151,16 +135,6 @@ TEST_F(ImageIo, OutputPathsAreCheckedBeforeAnythingIsWritten) {
                                                        "' does not exist");
   EXPECT_EQ(errorOf(dir_ / "out.exr"), "accepted");
   EXPECT_TRUE(files().empty());
-}
-
-TEST_F(ImageIo, ReadingAFileThatIsNotExrNamesIt) {
-  std::ofstream(dir_ / "bad.exr") << "not an exr";
-  try {
-    readExr(dir_ / "bad.exr");
-    FAIL() << "expected an error";
-  } catch (const std::exception& e) {
-    EXPECT_THAT(e.what(), ::testing::AllOf(::testing::HasSubstr("bad.exr"), ::testing::HasSubstr("cannot read EXR")));
-  }
 }
 
 TEST(ImageSize, ImpossibleSizesAreRejected) {

@@ -7,7 +7,9 @@
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
+#include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfStandardAttributes.h>
 #include <ImfStringAttribute.h>
 
 #include <fstream>
@@ -15,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/image/image_io.h"
+#include "engine/image/exr_file.h"
 #include "engine/image/tile_merge.h"
 #include "tests/support/image_windows.h"
 #include "tests/support/random_image.h"
@@ -52,7 +54,7 @@ class TileMerge : public testing::TempDirTest {
 
   fs::path writeTile(const std::string& name, const PixelRect& window, const std::string& digest = "d1") {
     const Image crop = cropOf(whole_, window);
-    writeAllOrNothing({exrFile(dir_ / name, crop, ExrPlacement{window, kWidth, kHeight, digest})});
+    writeExr(dir_ / name, crop, {ExrPlacement{window, kWidth, kHeight, digest}});
     return dir_ / name;
   }
 
@@ -141,6 +143,36 @@ TEST_F(TileMerge, AFailedMergeKeepsTheOldOutput) {
                std::invalid_argument);
   std::ifstream kept(dir_ / "merged.exr");
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(kept), {}), "an earlier merge");
+}
+
+TEST_F(TileMerge, TheMergeKeepsTheHeaderAndTheIdLayersOfAHalfBeauty) {
+  ExrOptions options;
+  options.metadata = {ExrCamera{}, "facet 1.2.3", "backend=cpu", ExrNames{{"ball"}, {0}, {0}, {"gold"}}};
+  options.halfBeauty = true;
+  std::vector<fs::path> tiles;
+  for (int i = 0; i < 2; ++i) {
+    options.placement = ExrPlacement{tileRows(kWidth, kHeight, i, 2), kWidth, kHeight, "d1"};
+    tiles.push_back(dir_ / ("tile" + std::to_string(i) + ".exr"));
+    writeExr(tiles.back(), cropOf(whole_, options.placement->dataWindow), options);
+  }
+  options.placement.reset();
+  writeExr(dir_ / "whole.exr", whole_, options);
+  mergeTiles(tiles, {dir_ / "merged.exr", dir_ / "merged.png"});
+
+  Imf::InputFile merged((dir_ / "merged.exr").c_str()), whole((dir_ / "whole.exr").c_str());
+  const Imf::Header &m = merged.header(), &w = whole.header();
+  EXPECT_EQ(m.channels().findChannel("R")->type, Imf::HALF);
+  EXPECT_NE(m.channels().findChannel("CryptoObject00.R"), nullptr);
+  EXPECT_NE(m.channels().findChannel("objectId"), nullptr);
+  EXPECT_EQ(Imf::worldToNDC(m), Imf::worldToNDC(w));
+  for (auto a = w.begin(); a != w.end(); ++a)
+    if (std::string(a.attribute().typeName()) == "string")
+      EXPECT_EQ(m.typedAttribute<Imf::StringAttribute>(a.name()).value(),
+                w.typedAttribute<Imf::StringAttribute>(a.name()).value())
+          << a.name();
+  const Image back = readExr(dir_ / "merged.exr"), expected = readExr(dir_ / "whole.exr");
+  EXPECT_THAT(testing::pixelsThatDiffer(expected, back, PixelRect::whole(kWidth, kHeight)), ::testing::IsEmpty());
+  EXPECT_GT(fs::file_size(dir_ / "merged.png"), 0u);
 }
 
 }  // namespace
