@@ -64,9 +64,6 @@ void writeAtomically(const std::filesystem::path& path,
   writeAllOrNothing({{path, write}});
 }
 
-  }
-}
-
 OutputFile rgbaPngFile(const std::filesystem::path& path, int width, int height,
                        const std::vector<std::uint8_t>& rgba) {
   return {path, [path, width, height, &rgba](const std::filesystem::path& temporary) {
