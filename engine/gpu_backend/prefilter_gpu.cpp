@@ -210,14 +210,13 @@ facet::ibl::PrefilteredEnvironment prefilterOnGpu(gpu::Device& device, const sce
                groupsFor(source.height, FACET_WORKGROUP_SIZE));
 
   const facet::ibl::LevelSize irradianceSize = facet::ibl::irradianceMapSize(settings);
-  const int irradianceSource =
-      materials::f64::irradiance_source_level(source.width, int(chainSizes.size()));
+  const int irradianceSource = materials::f64::irradiance_source_level(source.width, int(chainSizes.size()));
   gpu::Buffer irradiance =
       job.storage("irradiance map", 12 * std::uint64_t(irradianceSize.width) * std::uint64_t(irradianceSize.height));
-  uniforms.push_back(job.uniform(
-      "irradiance params", IrradianceParams{irradianceSize.width, irradianceSize.height,
-                                            chainSizes[irradianceSource].width, chainSizes[irradianceSource].height,
-                                            chainOffsets[irradianceSource]}));
+  uniforms.push_back(
+      job.uniform("irradiance params",
+                  IrradianceParams{irradianceSize.width, irradianceSize.height, chainSizes[irradianceSource].width,
+                                   chainSizes[irradianceSource].height, chainOffsets[irradianceSource]}));
   job.dispatch(job.pipeline("irradiance", spirv::irradiance), {{0, &uniforms.back()}, {1, &chain}, {2, &irradiance}},
                groupsFor(irradianceSize.width, FACET_IBL_TILE_SIZE),
                groupsFor(irradianceSize.height, FACET_IBL_TILE_SIZE));

@@ -296,7 +296,8 @@ std::vector<glm::vec4> irradianceTable(const PrefilteredEnvironment& env) {
   std::vector<glm::vec4> table{{float(env.irradianceFromMap ? m::IRRADIANCE_FROM_MAP : m::IRRADIANCE_FROM_SH),
                                 float(map.width), float(map.height), 0.0f}};
   for (const glm::dvec3& c : env.irradianceSh) table.emplace_back(float(c.r), float(c.g), float(c.b), 0.0f);
-  for (std::size_t i = 0; i + 2 < map.rgb.size(); i += 3) table.emplace_back(map.rgb[i], map.rgb[i + 1], map.rgb[i + 2], 0.0f);
+  for (std::size_t i = 0; i + 2 < map.rgb.size(); i += 3)
+    table.emplace_back(map.rgb[i], map.rgb[i + 1], map.rgb[i + 2], 0.0f);
   return table;
 }
 

@@ -16,6 +16,7 @@
 #include "materials/albedo.h"
 #include "scenes/obj_cage.h"
 #include "scenes/scene_file.h"
+#include "tests/support/blob_scene.h"
 
 namespace facet {
 namespace {
@@ -56,22 +57,9 @@ materials::Material mirrorMetal(double alpha) {
   return m;
 }
 
-// The cube cage's limit surface (convex, so no shadow ray finds it again)
-// under an environment and no punctual light.
 scene::Scene iblScene(const materials::Material& material, std::shared_ptr<const scene::EnvironmentMap> map,
                       IblMethod method, int samples, int size) {
-  scene::Scene s;
-  s.materials.push_back(material);
-  scene::Object blob;
-  blob.name = "blob";
-  blob.cage = scene::loadObjCage(std::filesystem::path(FACET_CAGE_DIR) / "cube.obj");
-  s.objects.push_back(std::move(blob));
-  s.camera.eye = {1.5, 1.0, 3.5};
-  s.camera.verticalFovDegrees = 30;
-  s.render.width = s.render.height = size;
-  s.render.method = scene::IntersectionMethod::Tessellated;
-  s.environment.emplace();
-  s.environment->map = std::move(map);
+  scene::Scene s = testing::blobUnder(material, std::move(map), size);
   s.environment->method = method;
   s.environment->samples = samples;
   return s;
@@ -289,7 +277,7 @@ scene::Scene headOn(scene::Scene s) {
 // The split sum's error per roughness, against a converged sampled render
 // (occlusion off on both, so only the lighting integral differs): a metal
 // on the blob, where v = n fails at every silhouette, and head-on, where it
-// holds; and a Lambert surface, whose irradiance comes from SH bands 0-2.
+// holds; and a Lambert surface, whose irradiance is the split sum's diffuse term.
 // Measured, not hidden: the table is printed (docs/rendering.md quotes it);
 // the bounds, on the courtyard only, catch a broken method. The sunrise's
 // sun makes its N = 1024 reference itself noisy at low roughness.

@@ -123,7 +123,8 @@ TEST(PrefilteredEnvironment, UnderASunTheRuleTakesTheIrradianceMap) {
 // A map quadratic in the direction is all bands 0-2: the SH is exact, and
 // the rule keeps it.
 TEST(PrefilteredEnvironment, ForASoftMapTheRuleKeepsTheSh) {
-  const auto map = mapOf(64, 32, [](glm::dvec3 d) { return glm::dvec3(1.2 + d.y, 1 + 0.5 * d.x, 1 - 0.3 * d.z * d.x); });
+  const auto map =
+      mapOf(64, 32, [](glm::dvec3 d) { return glm::dvec3(1.2 + d.y, 1 + 0.5 * d.x, 1 - 0.3 * d.z * d.x); });
   const PrefilteredEnvironment env = prefilterOnCpu(map, {}, smallSettings());
   std::printf("soft map: SH misses the map by %.3g\n", shIrradianceError(env.irradianceSh, env.irradianceMap));
   EXPECT_FALSE(env.irradianceFromMap);
