@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "analysis/antialiasing_slope.h"
 #include "analysis/gnuplot.h"
 #include "analysis/image_compare.h"
 #include "analysis/report.h"
@@ -62,6 +63,23 @@ void writeComparison(const fs::path& path, const Image& reference, const Image& 
       pair.beauty[pair.index(x + reference.width, y)] = prefiltered.beauty[i];
     }
   writePng(path, pair, middleGreyExposure(reference));
+}
+
+// The camera samples' curve: printed, and antialiasing.csv.
+void writeAntialiasing(Renderer& renderer, const scene::Scene& scene, const IblChartSettings& settings) {
+  const AntialiasingCurve curve = measureAntialiasing(renderer, scene, settings.antialiasingSamples, settings.backend);
+  std::printf("camera samples, prefiltered, against %d spp: relative RMSE on silhouette / smooth pixels\n",
+              curve.referenceSamples);
+  std::vector<std::vector<std::string>> rows;
+  for (const AntialiasingPoint& p : curve.points) {
+    std::printf("  %4d spp  %.3g  %.3g\n", p.samplesPerPixel, p.silhouetteRmse, p.smoothRmse);
+    rows.push_back({std::to_string(p.samplesPerPixel), formatNumber(p.silhouetteRmse), formatNumber(p.smoothRmse)});
+  }
+  if (!std::isnan(curve.silhouetteSlope))
+    std::printf("  error slope over spp >= 4: silhouette %.2f, smooth %.2f\n", curve.silhouetteSlope,
+                curve.smoothSlope);
+  writeCsv(settings.output / "antialiasing.csv",
+           {"samples_per_pixel", "silhouette_relative_rmse", "smooth_relative_rmse"}, rows);
 }
 
 void writePointsCsv(const fs::path& path, const std::vector<Point>& points) {
@@ -228,14 +246,20 @@ void writeIblChart(Renderer& renderer, const IblChartSettings& settings) {
       writeComparison(output / (setup + "_alpha" + formatNumber(alpha) + ".png"), reference.image, prefiltered);
     }
   }
+  if (!settings.antialiasingSamples.empty()) {
+    scene::Scene scene = base;
+    scene.environment->map =
+        std::make_shared<const scene::EnvironmentMap>(scene::loadEnvironmentMap(settings.environments.front()));
+    writeAntialiasing(renderer, scene, settings);
+  }
   writePointsCsv(output / "ibl_chart.csv", points);
   const std::string subtitle = std::to_string(base.render.width) + "x" + std::to_string(base.render.height) + ", " +
                                toString(backend) + ", reference: sampled N=" + std::to_string(referenceSamples) +
                                ", occlusion off, no punctual lights";
   writeChart(output, setups, settings.alphas, points, subtitle);
   std::printf(
-      "wrote %s/ibl_chart.csv, ibl_chart.svg, ibl_chart.png and a reference | prefiltered PNG per setup and "
-      "alpha\n",
+      "wrote %s/ibl_chart.csv, ibl_chart.svg, ibl_chart.png, antialiasing.csv and a reference | prefiltered PNG per "
+      "setup and alpha\n",
       output.c_str());
 }
 

@@ -1,7 +1,8 @@
 // Error against time for the three image-based lighting methods, sampled at
 // N = 1, 4, 16, ... pairs, filtered at N = 1, 4, 16, 64 and the prefiltered
 // split sum, per roughness, on each environment: a CSV, a gnuplot chart and
-// previews (`facet ibl-chart`).
+// previews (`facet ibl-chart`); and the camera samples' convergence on the
+// first environment (antialiasing_slope.h).
 #pragma once
 
 #include <filesystem>
@@ -19,6 +20,7 @@ struct IblChartSettings {
   std::vector<std::filesystem::path> environments;  // one chart panel each
   std::vector<double> alphas;                       // set on every material in turn
   std::vector<int> sampleCounts;                    // N of the sampled method, ascending
+  std::vector<int> antialiasingSamples;             // samples per pixel of the camera samples' curve, powers of 4
   int repeats = 3;                                  // timed runs per point; the median is charted
   Backend backend = Backend::Gpu;
 };

@@ -1,5 +1,6 @@
-// facet ibl-chart: error against time of sampled and prefiltered
-// image-based lighting (analysis/ibl_chart.h).
+// facet ibl-chart: error against time of sampled, filtered and prefiltered
+// image-based lighting, and the camera samples' convergence
+// (analysis/ibl_chart.h).
 #include <CLI/CLI.hpp>
 
 #include <memory>
@@ -71,6 +72,7 @@ void runIblChart(ChartOptions o) {
   applyMethod("tess", settings.base);
   settings.output = o.output;
   settings.environments.assign(o.environments.begin(), o.environments.end());
+  settings.antialiasingSamples = o.quick ? std::vector<int>{1, 4} : std::vector<int>{1, 4, 16, 64, 256};
   settings.repeats = o.repeats;
   settings.backend = o.backend == "cpu" ? Backend::Cpu : Backend::Gpu;
   Renderer renderer(o.adapter);
@@ -83,7 +85,8 @@ void addIblChartCommand(CLI::App& app) {
   auto o = std::make_shared<ChartOptions>();
   auto* c = app.add_subcommand("ibl-chart",
                                "Error against time of sampled (N = 1, 4, 16, ...) and prefiltered image-based "
-                               "lighting, per roughness and environment: CSV, chart, previews");
+                               "lighting, per roughness and environment: CSV, chart, previews; and the camera "
+                               "samples' error against samples per pixel");
   c->add_option("-o,--output", o->output, "Output folder")->required();
   c->add_option("--scene", o->scene,
                 "Geometry and materials (its punctual lights are removed; default: the preview in share/facet)")

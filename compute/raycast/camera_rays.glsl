@@ -1,7 +1,8 @@
 // The camera ray of each invocation of a band, computed where it is needed
 // rather than stored: sample `index % raysPerPixel` of its pixel
-// (compute/shared/sample_plan.h, compute/shared/camera.h). Rays start at the
-// eye, the origin of the GPU's coordinates. Needs ray.glsl and `frame`.
+// (compute/shared/sample_plan.h, camera_samples.h, camera.h). Rays start at
+// the eye, the origin of the GPU's coordinates. Needs ray.glsl,
+// compute/shared/random.h, low_discrepancy.h, scrambled_net.h and `frame`.
 #ifndef FACET_RAYCAST_CAMERA_RAYS_GLSL
 #define FACET_RAYCAST_CAMERA_RAYS_GLSL
 
@@ -9,10 +10,11 @@
 #define FACET_FN
 #include "compute/shared/camera.h"
 #include "compute/shared/sample_plan.h"
+#include "compute/shared/camera_samples.h"
 
 Ray camera_ray(uint index) {
   uint pixel = frame.firstPixel + index / frame.raysPerPixel, sampleIndex = index % frame.raysPerPixel;
-  vec2 offset = sample_offset(sampleIndex, frame.strata);
+  vec2 offset = sample_offset(pixel, sampleIndex, frame.strata);
   uint width = uint(frame.width);
   CameraFrame camera;
   camera.eye = vec3(0.0);

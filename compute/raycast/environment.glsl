@@ -8,6 +8,8 @@
 #ifndef FACET_RAYCAST_ENVIRONMENT_GLSL
 #define FACET_RAYCAST_ENVIRONMENT_GLSL
 
+#include "compute/shared/irradiance_map.h"
+
 vec3 to_map(vec3 world) {
   return environment_to_map(world, frame.environmentCosRotation, frame.environmentSinRotation);
 }
@@ -116,10 +118,24 @@ vec2 dfg_lookup(uint table, float nv, float alpha) {
              mix(dfg_entry(table, i0, j1), dfg_entry(table, i1, j1), fx), fy);
 }
 
+// The irradiance table at frame.shOffset (layout in irradiance_map.h).
+vec3 irradiance_texel(int i) { return texelFetch(environmentTables, int(frame.shOffset) + i).rgb; }
+
+vec3 irradiance_map_bilinear(vec2 uv, int width, int height) {
+  IrradianceTaps t = irradiance_map_taps(uv, width, height);
+  vec3 top = mix(irradiance_texel(irradiance_map_texel(t.t00)), irradiance_texel(irradiance_map_texel(t.t10)), t.fx);
+  vec3 bottom = mix(irradiance_texel(irradiance_map_texel(t.t01)), irradiance_texel(irradiance_map_texel(t.t11)), t.fx);
+  return mix(top, bottom, t.fy);
+}
+
+// E / pi at the normal: from the cosine-convolved map where the prefilter's
+// rule chose it, else from the SH bands 0-2, clamped where they ring.
 vec3 irradiance_over_pi(vec3 map_normal) {
+  vec3 header = irradiance_texel(0);
+  if (int(header.x) == IRRADIANCE_FROM_MAP)
+    return irradiance_map_bilinear(environment_uv(map_normal), int(header.y), int(header.z));
   vec3 sum = vec3(0.0);
-  for (int i = 0; i < 9; ++i)
-    sum += texelFetch(environmentTables, int(frame.shOffset) + i).rgb * (sh_cosine_band(i) * sh_basis(i, map_normal));
+  for (int i = 0; i < 9; ++i) sum += irradiance_texel(irradiance_sh_texel(i)) * (sh_cosine_band(i) * sh_basis(i, map_normal));
   return max(sum, vec3(0.0));
 }
 

@@ -27,6 +27,11 @@ layout(set = 0, binding = 25, std430) readonly buffer ShadowFallbacks { Fallback
 #include "compute/raycast/subdivide_cell.glsl"
 #include "compute/raycast/micro_grid.glsl"
 #include "compute/raycast/cell_reference.glsl"
+#define real float
+#define FACET_FN
+#include "compute/shared/random.h"
+#include "compute/shared/low_discrepancy.h"
+#include "compute/shared/scrambled_net.h"
 #include "compute/raycast/camera_rays.glsl"
 
 const uint HIT_WORDS = 8u;  // sizeof(HitRecord) / 4

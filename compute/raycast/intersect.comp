@@ -20,6 +20,11 @@ void defer_cell(uint reference) {
 }
 
 #include "compute/raycast/trace.glsl"
+#define real float
+#define FACET_FN
+#include "compute/shared/random.h"
+#include "compute/shared/low_discrepancy.h"
+#include "compute/shared/scrambled_net.h"
 #include "compute/raycast/camera_rays.glsl"
 
 void main() {

@@ -5,7 +5,7 @@
 //
 // spp = strata^2. Sample 0 is the ray through the pixel's centre: it gives
 // the AOVs, and at 1 spp the beauty. Above 1 spp samples 1 ... strata^2 are
-// the centres of a strata x strata grid of sub-pixels, row by row, and only
+// the points of a scrambled net over the pixel (camera_samples.h), and only
 // they are shaded. The beauty is the mean of the shaded samples (misses
 // count as black); alpha is the fraction of them that hit.
 
@@ -20,11 +20,3 @@ FACET_FN uint first_shaded_sample(uint strata) { return strata == 1u ? 0u : 1u; 
 FACET_FN bool is_shaded_sample(uint sample_index, uint strata) { return sample_index >= first_shaded_sample(strata); }
 
 FACET_FN uint shaded_sample_count(uint strata) { return strata * strata; }
-
-// Where in its pixel sample `sample_index` passes, in pixels from the
-// pixel's corner.
-FACET_FN vec2 sample_offset(uint sample_index, uint strata) {
-  if (sample_index == 0u) return vec2(real(0.5));
-  uint stratum = sample_index - 1u;
-  return (vec2(real(stratum % strata), real(stratum / strata)) + real(0.5)) / real(strata);
-}

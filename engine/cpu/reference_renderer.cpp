@@ -277,7 +277,7 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
         glm::dvec3 radiance(0.0);
         double coverage = 0;
         for (std::uint32_t sample = 0; sample < raysPerPixel; ++sample) {
-          const glm::dvec2 offset = camera::sample_offset(sample, strata);
+          const glm::dvec2 offset = camera::sample_offset(pixelId, sample, strata);
           const glm::dvec3 direction = camera::camera_ray_direction(frame, x + offset.x, y + offset.y, width, height);
           ++primary;
           const auto hit = reference.intersect(Ray{frame.eye, direction}, false);

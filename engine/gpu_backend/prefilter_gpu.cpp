@@ -41,6 +41,14 @@ struct ShProjectParams {
   std::int32_t height;
 };
 
+struct IrradianceParams {
+  std::int32_t width;
+  std::int32_t height;
+  std::int32_t sourceWidth;
+  std::int32_t sourceHeight;
+  std::uint32_t sourceOffset;
+};
+
 struct DfgParams {
   std::int32_t size;
   std::int32_t samples;
@@ -201,6 +209,18 @@ facet::ibl::PrefilteredEnvironment prefilterOnGpu(gpu::Device& device, const sce
   job.dispatch(job.pipeline("sh_project", spirv::sh_project), {{0, &uniforms.back()}, {1, &chain}, {2, &rowSums}},
                groupsFor(source.height, FACET_WORKGROUP_SIZE));
 
+  const facet::ibl::LevelSize irradianceSize = facet::ibl::irradianceMapSize(settings);
+  const int irradianceSource = materials::f64::irradiance_source_level(source.width, int(chainSizes.size()));
+  gpu::Buffer irradiance =
+      job.storage("irradiance map", 12 * std::uint64_t(irradianceSize.width) * std::uint64_t(irradianceSize.height));
+  uniforms.push_back(
+      job.uniform("irradiance params",
+                  IrradianceParams{irradianceSize.width, irradianceSize.height, chainSizes[irradianceSource].width,
+                                   chainSizes[irradianceSource].height, chainOffsets[irradianceSource]}));
+  job.dispatch(job.pipeline("irradiance", spirv::irradiance), {{0, &uniforms.back()}, {1, &chain}, {2, &irradiance}},
+               groupsFor(irradianceSize.width, FACET_IBL_TILE_SIZE),
+               groupsFor(irradianceSize.height, FACET_IBL_TILE_SIZE));
+
   std::vector<gpu::Buffer> tables;
   uniforms.push_back(job.uniform("DFG params", DfgParams{settings.dfgSize, settings.dfgSamples}));
   for (const auto& [distribution, geometry] : models) {
@@ -212,7 +232,7 @@ facet::ibl::PrefilteredEnvironment prefilterOnGpu(gpu::Device& device, const sce
         groupsFor(settings.dfgSize, FACET_IBL_TILE_SIZE));
   }
 
-  std::vector<const gpu::Buffer*> results{&levels, &rowSums};
+  std::vector<const gpu::Buffer*> results{&levels, &rowSums, &irradiance};
   for (const gpu::Buffer& table : tables) results.push_back(&table);
   const std::vector<std::vector<std::byte>> bytes = job.finish(results);
 
@@ -231,10 +251,13 @@ facet::ibl::PrefilteredEnvironment prefilterOnGpu(gpu::Device& device, const sce
       rows[y][k] = glm::dvec3(sum[0], sum[1], sum[2]);
     }
   env.irradianceSh = facet::ibl::shFromRowSums(rows);
+  env.irradianceMap = {irradianceSize.width, irradianceSize.height, 0.0,
+                       valuesAt<float>(bytes[2], 0, 3 * std::size_t(irradianceSize.width) * irradianceSize.height)};
+  env.irradianceFromMap = facet::ibl::usesIrradianceMap(env.irradianceSh, env.irradianceMap);
   for (std::size_t p = 0; p < models.size(); ++p)
     env.dfg.push_back(
         {models[p].first, models[p].second, settings.dfgSize,
-         valuesAt<float>(bytes[2 + p], 0, 2 * std::size_t(settings.dfgSize) * std::size_t(settings.dfgSize))});
+         valuesAt<float>(bytes[3 + p], 0, 2 * std::size_t(settings.dfgSize) * std::size_t(settings.dfgSize))});
   return env;
 }
 

@@ -10,7 +10,8 @@
 namespace facet::gpu_backend {
 
 // Kernels: downsample (the map's 2x2-box mip chain), prefilter (one level
-// each), sh_project (per-row sums, added up in double on the host) and dfg
+// each), sh_project (per-row sums, added up in double on the host),
+// irradiance (the cosine-convolved map; the rule runs on the host) and dfg
 // (one table per pair, a pipeline variant per pair). A map whose mip chain
 // exceeds one storage binding is box-halved on the host first (see the .cpp).
 ibl::PrefilteredEnvironment prefilterOnGpu(gpu::Device& device, const scene::EnvironmentMap& map,

@@ -65,7 +65,7 @@ EnvironmentData environmentData(const ibl::EnvironmentLighting& lighting, layout
   const ibl::PrefilteredEnvironment& p = lighting.prefiltered;
   appendLevels(p.levels);
   frame.shOffset = offset();
-  for (const glm::dvec3& c : p.irradianceSh) t.emplace_back(float(c.r), float(c.g), float(c.b), 0.0f);
+  for (const glm::vec4& texel : ibl::irradianceTable(p)) t.push_back(texel);
   frame.dfgOffset = offset();
   frame.dfgSize = p.dfg.empty() ? 0 : std::uint32_t(p.dfg.front().size);
   for (const ibl::DfgTable& table : p.dfg)

@@ -30,7 +30,7 @@ constexpr char kMagic[8] = {'F', 'A', 'C', 'E', 'T', 'I', 'B', 'L'};
 // Bump whenever the file layout changes. What the builders compute is
 // keyed by FACET_PREFILTER_FINGERPRINT, a digest of their sources that
 // engine/ibl/CMakeLists.txt takes at configure time.
-constexpr std::uint32_t kFormatVersion = 1;
+constexpr std::uint32_t kFormatVersion = 2;
 
 std::uint64_t fnv1a(const std::string& text) {
   std::uint64_t hash = 14695981039346656037ull;
@@ -47,7 +47,7 @@ std::string keyText(const scene::EnvironmentMap& map, const ModelPairs& models, 
   key << "facet prefiltered environment v" << kFormatVersion << " code " << FACET_PREFILTER_FINGERPRINT << " map "
       << std::hex << map.contentHash() << std::dec << " levels " << settings.levels << " firstLevelWidth "
       << settings.firstLevelWidth << " samples " << settings.samples << " dfgSize " << settings.dfgSize
-      << " dfgSamples " << settings.dfgSamples << " models";
+      << " dfgSamples " << settings.dfgSamples << " irradianceWidth " << settings.irradianceWidth << " models";
   for (const auto& [distribution, geometry] : models) key << " " << distribution << "/" << geometry;
   key << " builder " << builder;
   return key.str();
@@ -120,19 +120,33 @@ class Reader {
   bool ok_ = true;
 };
 
+void putLevel(Writer& w, const RadianceLevel& level) {
+  w.put(std::int32_t(level.width));
+  w.put(std::int32_t(level.height));
+  w.put(level.alpha);
+  w.putArray(level.rgb);
+}
+
+std::optional<RadianceLevel> getLevel(Reader& r) {
+  RadianceLevel level;
+  level.width = r.get<std::int32_t>();
+  level.height = r.get<std::int32_t>();
+  level.alpha = r.get<double>();
+  if (level.width <= 0 || level.height <= 0) return std::nullopt;
+  level.rgb = r.getArray<float>(3 * std::uint64_t(level.width) * std::uint64_t(level.height));
+  return level;
+}
+
 std::vector<char> serialize(const PrefilteredEnvironment& env, const std::string& key) {
   Writer w;
   w.putBytes(kMagic, sizeof kMagic);
   w.put(kFormatVersion);
   w.putArray(std::vector<char>(key.begin(), key.end()));
   w.put(std::uint32_t(env.levels.size()));
-  for (const RadianceLevel& level : env.levels) {
-    w.put(std::int32_t(level.width));
-    w.put(std::int32_t(level.height));
-    w.put(level.alpha);
-    w.putArray(level.rgb);
-  }
+  for (const RadianceLevel& level : env.levels) putLevel(w, level);
   for (const glm::dvec3& c : env.irradianceSh) w.put(c);
+  putLevel(w, env.irradianceMap);
+  w.put(std::uint8_t(env.irradianceFromMap));
   w.put(std::uint32_t(env.dfg.size()));
   for (const DfgTable& table : env.dfg) {
     w.put(std::int32_t(table.distribution));
@@ -152,15 +166,17 @@ std::optional<PrefilteredEnvironment> deserialize(const std::vector<char>& data,
   PrefilteredEnvironment env;
   const auto levels = r.get<std::uint32_t>();
   for (std::uint32_t i = 0; i < levels && r.ok(); ++i) {
-    RadianceLevel level;
-    level.width = r.get<std::int32_t>();
-    level.height = r.get<std::int32_t>();
-    level.alpha = r.get<double>();
-    if (level.width <= 0 || level.height <= 0) return std::nullopt;
-    level.rgb = r.getArray<float>(3 * std::uint64_t(level.width) * std::uint64_t(level.height));
-    env.levels.push_back(std::move(level));
+    std::optional<RadianceLevel> level = getLevel(r);
+    if (!level) return std::nullopt;
+    env.levels.push_back(std::move(*level));
   }
   for (glm::dvec3& c : env.irradianceSh) c = r.get<glm::dvec3>();
+  std::optional<RadianceLevel> irradianceMap = getLevel(r);
+  if (!irradianceMap) return std::nullopt;
+  env.irradianceMap = std::move(*irradianceMap);
+  const auto fromMap = r.get<std::uint8_t>();
+  if (fromMap > 1) return std::nullopt;
+  env.irradianceFromMap = fromMap == 1;
   const auto tables = r.get<std::uint32_t>();
   for (std::uint32_t i = 0; i < tables && r.ok(); ++i) {
     DfgTable table;

@@ -21,6 +21,9 @@ struct LevelSize {
 // Level i >= 1 of the ladder: max(16, min(map width, firstLevelWidth) >> (i - 1)) wide, 2:1.
 LevelSize prefilteredLevelSize(const scene::EnvironmentMap& map, const PrefilterSettings& settings, int level);
 
+// The irradiance map: irradianceWidth x irradianceWidth / 2.
+LevelSize irradianceMapSize(const PrefilterSettings& settings);
+
 // The 2x2-box mip chain of a map: levels while both sides halve evenly,
 // down to a single row.
 std::vector<LevelSize> sourceChainSizes(int width, int height);

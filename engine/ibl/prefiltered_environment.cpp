@@ -23,6 +23,10 @@ LevelSize prefilteredLevelSize(const scene::EnvironmentMap& map, const Prefilter
   return {width, width / 2};
 }
 
+LevelSize irradianceMapSize(const PrefilterSettings& settings) {
+  return {settings.irradianceWidth, settings.irradianceWidth / 2};
+}
+
 std::vector<LevelSize> sourceChainSizes(int width, int height) {
   std::vector<LevelSize> sizes{{width, height}};
   while (sizes.back().height > 1 && sizes.back().width % 2 == 0 && sizes.back().height % 2 == 0)
@@ -114,6 +118,41 @@ RadianceLevel prefilterLevel(const std::vector<MipLevel>& chain, LevelSize size,
   return level;
 }
 
+// Per texel of the irradiance map, the cosine-weighted mean radiance around
+// its direction over every texel of the chain level irradiance_source_level picks.
+RadianceLevel convolveIrradiance(const std::vector<MipLevel>& chain, LevelSize size) {
+  const MipLevel& source = chain[m::irradiance_source_level(chain.front().width, int(chain.size()))];
+  struct SourceTexel {
+    glm::dvec3 direction;
+    double solidAngle;
+    glm::dvec3 radiance;
+  };
+  std::vector<SourceTexel> texels;
+  for (int j = 0; j < source.height; ++j)
+    for (int i = 0; i < source.width; ++i)
+      texels.push_back({m::irradiance_texel_direction(i, j, source.width, source.height),
+                        m::environment_texel_solid_angle(j, source.width, source.height),
+                        texelAt(source.rgb.data(), source.width, i, j)});
+  RadianceLevel map{size.width, size.height, 0.0, {}};
+  map.rgb.resize(3 * std::size_t(size.width) * std::size_t(size.height));
+  forEachRow(size.height, [&](int y) {
+    for (int x = 0; x < size.width; ++x) {
+      const glm::dvec3 n = m::irradiance_texel_direction(x, y, size.width, size.height);
+      glm::dvec3 sum(0.0);
+      double weight = 0;
+      for (const SourceTexel& t : texels) {
+        const double w = m::irradiance_texel_weight(n, t.direction, t.solidAngle);
+        sum += w * t.radiance;
+        weight += w;
+      }
+      const glm::dvec3 mean = sum / weight;
+      for (int channel = 0; channel < 3; ++channel)
+        map.rgb[3 * (std::size_t(y) * size.width + x) + channel] = float(mean[channel]);
+    }
+  });
+  return map;
+}
+
 std::array<glm::dvec3, 9> projectOnSh(const scene::EnvironmentMap& map) {
   std::vector<m::ShColumnIntegrals> columns;
   for (int x = 0; x < map.width; ++x) columns.push_back(m::sh_column_integrals(x, map.width));
@@ -160,6 +199,8 @@ PrefilteredEnvironment prefilterOnCpu(const scene::EnvironmentMap& map, const Mo
     env.levels.push_back(prefilterLevel(chain, prefilteredLevelSize(map, settings, i),
                                         m::prefiltered_level_alpha(i, settings.levels), settings.samples));
   env.irradianceSh = projectOnSh(map);
+  env.irradianceMap = convolveIrradiance(chain, irradianceMapSize(settings));
+  env.irradianceFromMap = usesIrradianceMap(env.irradianceSh, env.irradianceMap);
   for (const auto& [distribution, geometry] : models) env.dfg.push_back(dfgTable(distribution, geometry, settings));
   return env;
 }
@@ -213,10 +254,51 @@ glm::dvec3 energyCompensationOnDemand(const m::BrdfParams& params, double nv, co
                                 dfgLookupOnDemand(params.d_model, params.g_model, nv, params.alpha, settings));
 }
 
-glm::dvec3 irradianceOverPi(const PrefilteredEnvironment& env, const glm::dvec3& n) {
+namespace {
+
+glm::dvec3 shIrradianceOverPi(const std::array<glm::dvec3, 9>& sh, const glm::dvec3& n) {
   glm::dvec3 sum(0.0);
-  for (int i = 0; i < 9; ++i) sum += env.irradianceSh[i] * (m::sh_cosine_band(i) * m::sh_basis(i, n));
+  for (int i = 0; i < 9; ++i) sum += sh[i] * (m::sh_cosine_band(i) * m::sh_basis(i, n));
   return glm::max(sum, glm::dvec3(0.0));
+}
+
+}  // namespace
+
+glm::dvec3 irradianceOverPi(const PrefilteredEnvironment& env, const glm::dvec3& n) {
+  if (!env.irradianceFromMap) return shIrradianceOverPi(env.irradianceSh, n);
+  const RadianceLevel& map = env.irradianceMap;
+  const m::IrradianceTaps t = m::irradiance_map_taps(m::environment_uv(n), map.width, map.height);
+  const auto at = [&](int texel) { return texelAt(map.rgb.data(), map.width, texel % map.width, texel / map.width); };
+  return glm::mix(glm::mix(at(t.t00), at(t.t10), t.fx), glm::mix(at(t.t01), at(t.t11), t.fx), t.fy);
+}
+
+double shIrradianceError(const std::array<glm::dvec3, 9>& sh, const RadianceLevel& irradianceMap) {
+  double difference = 0, total = 0;
+  for (int y = 0; y < irradianceMap.height; ++y) {
+    const double solidAngle = m::environment_texel_solid_angle(y, irradianceMap.width, irradianceMap.height);
+    for (int x = 0; x < irradianceMap.width; ++x) {
+      const glm::dvec3 n = m::irradiance_texel_direction(x, y, irradianceMap.width, irradianceMap.height);
+      const glm::dvec3 convolved = texelAt(irradianceMap.rgb.data(), irradianceMap.width, x, y);
+      const glm::dvec3 error = shIrradianceOverPi(sh, n) - convolved;
+      difference += solidAngle * glm::dot(error, error);
+      total += solidAngle * glm::dot(convolved, convolved);
+    }
+  }
+  return total > 0 ? std::sqrt(difference / total) : 0.0;
+}
+
+bool usesIrradianceMap(const std::array<glm::dvec3, 9>& sh, const RadianceLevel& irradianceMap) {
+  return shIrradianceError(sh, irradianceMap) > 0.01;
+}
+
+std::vector<glm::vec4> irradianceTable(const PrefilteredEnvironment& env) {
+  const RadianceLevel& map = env.irradianceMap;
+  std::vector<glm::vec4> table{{float(env.irradianceFromMap ? m::IRRADIANCE_FROM_MAP : m::IRRADIANCE_FROM_SH),
+                                float(map.width), float(map.height), 0.0f}};
+  for (const glm::dvec3& c : env.irradianceSh) table.emplace_back(float(c.r), float(c.g), float(c.b), 0.0f);
+  for (std::size_t i = 0; i + 2 < map.rgb.size(); i += 3)
+    table.emplace_back(map.rgb[i], map.rgb[i + 1], map.rgb[i + 2], 0.0f);
+  return table;
 }
 
 }  // namespace facet::ibl

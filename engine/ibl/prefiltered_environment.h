@@ -1,7 +1,7 @@
 // The split sum's precomputed half (docs/rendering.md, "Image-based
 // lighting"): an environment prefiltered by GGX at a ladder of roughnesses,
-// its irradiance as spherical harmonics, and the DFG tables of the BRDF
-// models a scene uses. Built in double on the CPU (the reference) or by
+// its irradiance as spherical harmonics and as a cosine-convolved map, and
+// the DFG tables of the BRDF models a scene uses. Built in double on the CPU (the reference) or by
 // compute kernels on the GPU (engine/gpu_backend/prefilter_gpu.h), both into
 // this struct; kept in a disk cache keyed by the map and the settings.
 //
@@ -11,6 +11,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <array>
 #include <cstdint>
@@ -31,6 +32,7 @@ struct PrefilterSettings {
   int samples = 256;          // GGX samples per prefiltered texel
   int dfgSize = 64;           // DFG table: dfgSize x dfgSize over (n.v, sqrt(alpha))
   int dfgSamples = 4096;      // samples per DFG entry
+  int irradianceWidth = 64;   // the irradiance map: irradianceWidth x irradianceWidth / 2 (even)
 };
 
 struct RadianceLevel {
@@ -54,6 +56,8 @@ struct DfgTable {
 struct PrefilteredEnvironment {
   std::vector<RadianceLevel> levels;
   std::array<glm::dvec3, 9> irradianceSh{};  // radiance projected on SH bands 0-2
+  RadianceLevel irradianceMap;               // E / pi, cosine-convolved (alpha unused)
+  bool irradianceFromMap = false;            // the rule's choice (usesIrradianceMap)
   std::vector<DfgTable> dfg;                 // one per requested (D, G) pair, in request order
 };
 
@@ -76,10 +80,19 @@ glm::dvec2 dfgLookupOnDemand(int distribution, int geometry, double nv, double a
 // material's D and G, as a renderer would apply it.
 glm::dvec3 energyCompensationOnDemand(const materials::f64::BrdfParams& params, double nv,
                                       const PrefilterSettings& settings = {});
-// Irradiance / pi at normal n from the SH coefficients (c_diff times this is
-// the Lambertian radiance), clamped at 0 (bands 0-2 ring below 0 around
-// very bright sources).
+// Irradiance / pi at normal n (c_diff times this is the Lambertian
+// radiance): from the irradiance map where the rule chose it, else from the
+// SH coefficients, clamped at 0 (bands 0-2 ring below 0 around very bright
+// sources).
 glm::dvec3 irradianceOverPi(const PrefilteredEnvironment& env, const glm::dvec3& n);
+// The SH irradiance's relative RMS difference from the irradiance map over
+// the sphere (solid-angle weighted, all channels): how far bands 0-2 miss it.
+double shIrradianceError(const std::array<glm::dvec3, 9>& sh, const RadianceLevel& irradianceMap);
+// The rule: the map where the SH misses it by more than 1%, else the SH
+// (exact for maps of bands 0-2 alone, with no interpolation between texels).
+bool usesIrradianceMap(const std::array<glm::dvec3, 9>& sh, const RadianceLevel& irradianceMap);
+// The irradiance table the GPU reads (layout in compute/shared/irradiance_map.h).
+std::vector<glm::vec4> irradianceTable(const PrefilteredEnvironment& env);
 
 // The cache: returns the stored result for (map, models, settings, builder)
 // when present and intact, else runs `build` and stores its result (written

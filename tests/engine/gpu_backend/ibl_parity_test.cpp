@@ -1,7 +1,7 @@
 // Image-based lighting on the GPU held to the CPU reference: the three
-// methods, the sampled and filtered ones with and without shadow rays, and
-// the filtered one with its environment technique (under the sunrise),
-// drawing the same random numbers (compute/shared/random.h). Tolerances in
+// methods, the sampled and filtered ones with and without shadow rays, the
+// split sum's irradiance map and the filtered method's environment
+// technique under the sunrise, drawing the same random numbers (compute/shared/random.h). Tolerances in
 // docs/rendering.md.
 #include <gtest/gtest.h>
 
@@ -94,6 +94,7 @@ TEST_P(IblParity, MatchesTheCpuReference) {
 
 INSTANTIATE_TEST_SUITE_P(Methods, IblParity,
                          ::testing::Values(IblCase{"prefiltered", IblMethod::Prefiltered, false, 1},
+                                           IblCase{"prefiltered_sun", IblMethod::Prefiltered, false, 1, "sunrise.exr"},
                                            IblCase{"sampled_unoccluded", IblMethod::Sampled, false, 8},
                                            IblCase{"sampled_occluded", IblMethod::Sampled, true, 4},
                                            IblCase{"filtered_unoccluded", IblMethod::Filtered, false, 8},

@@ -18,12 +18,22 @@ namespace {
 
 using PrefilterGpu = gpu::testing::GpuTest;
 
-// Largest differences: levels relative, SH relative to band 0, DFG absolute.
+// Largest differences: levels and the irradiance map relative, SH relative
+// to band 0, DFG absolute.
 struct Differences {
   double levels = 0;
   double sh = 0;
+  double irradianceMap = 0;
   double dfg = 0;
 };
+
+double maxRelativeDifference(const std::vector<float>& a, const std::vector<float>& b) {
+  EXPECT_EQ(a.size(), b.size());
+  double worst = 0;
+  for (std::size_t k = 0; k < std::min(a.size(), b.size()); ++k)
+    worst = std::max(worst, std::abs(double(a[k]) - b[k]) / std::max(double(b[k]), 1e-3));
+  return worst;
+}
 
 Differences compareWithCpu(gpu::Device& device, const scene::EnvironmentMap& map) {
   Differences d;
@@ -43,11 +53,7 @@ Differences compareWithCpu(gpu::Device& device, const scene::EnvironmentMap& map
     EXPECT_EQ(a.width, b.width);
     EXPECT_EQ(a.height, b.height);
     EXPECT_EQ(a.alpha, b.alpha);
-    EXPECT_EQ(a.rgb.size(), b.rgb.size());
-    if (a.rgb.size() != b.rgb.size()) continue;
-    double worst = 0;
-    for (std::size_t k = 0; k < b.rgb.size(); ++k)
-      worst = std::max(worst, std::abs(double(a.rgb[k]) - b.rgb[k]) / std::max(double(b.rgb[k]), 1e-3));
+    const double worst = maxRelativeDifference(a.rgb, b.rgb);
     std::printf("level %zu (alpha %.2f): max relative difference %.3g\n", i, b.alpha, worst);
     d.levels = std::max(d.levels, worst);
   }
@@ -57,6 +63,12 @@ Differences compareWithCpu(gpu::Device& device, const scene::EnvironmentMap& map
       d.sh =
           std::max(d.sh, std::abs(gpu.irradianceSh[i][c] - cpu.irradianceSh[i][c]) / std::abs(cpu.irradianceSh[0][c]));
   std::printf("SH: max difference / band 0 %.3g\n", d.sh);
+  EXPECT_EQ(gpu.irradianceMap.width, cpu.irradianceMap.width);
+  EXPECT_EQ(gpu.irradianceMap.height, cpu.irradianceMap.height);
+  d.irradianceMap = maxRelativeDifference(gpu.irradianceMap.rgb, cpu.irradianceMap.rgb);
+  EXPECT_EQ(gpu.irradianceFromMap, cpu.irradianceFromMap);
+  std::printf("irradiance map: max relative difference %.3g; from the map: %d\n", d.irradianceMap,
+              int(cpu.irradianceFromMap));
 
   EXPECT_EQ(gpu.dfg.size(), cpu.dfg.size());
   for (std::size_t p = 0; p < std::min(cpu.dfg.size(), gpu.dfg.size()); ++p) {
@@ -82,6 +94,7 @@ TEST_F(PrefilterGpu, MatchesTheCpuReferenceOnASmoothSky) {
                      }));
   EXPECT_LT(d.levels, 1e-5);
   EXPECT_LT(d.sh, 1e-5);
+  EXPECT_LT(d.irradianceMap, 1e-5);
   EXPECT_LT(d.dfg, 1e-5);
 }
 
@@ -89,6 +102,7 @@ TEST_F(PrefilterGpu, MatchesTheCpuReferenceNextToASun) {
   const Differences d = compareWithCpu(device_, testing::mapOf(64, 32, testing::skyWithSun));
   EXPECT_LT(d.levels, 1e-4);
   EXPECT_LT(d.sh, 1e-5);
+  EXPECT_LT(d.irradianceMap, 1e-5);
   EXPECT_LT(d.dfg, 1e-5);
 }
 

@@ -60,6 +60,9 @@ class PrefilterCache : public facet::testing::TempDirTest {
       EXPECT_EQ(a.levels[i].rgb, b.levels[i].rgb);
     }
     EXPECT_EQ(a.irradianceSh, b.irradianceSh);
+    EXPECT_EQ(a.irradianceMap.width, b.irradianceMap.width);
+    EXPECT_EQ(a.irradianceMap.rgb, b.irradianceMap.rgb);
+    EXPECT_EQ(a.irradianceFromMap, b.irradianceFromMap);
     ASSERT_EQ(a.dfg.size(), b.dfg.size());
     for (std::size_t i = 0; i < a.dfg.size(); ++i) {
       EXPECT_EQ(a.dfg[i].distribution, b.dfg[i].distribution);
@@ -159,7 +162,9 @@ TEST_F(PrefilterCache, WithoutFacetCacheDirTheFolderIsUnderXdgCacheHome) {
 TEST_F(PrefilterCache, ProcessesBuildingOneKeyAtOnceDoNotCorruptIt) {
   const PrefilteredEnvironment reference = prefilterOnCpu(map_, models_, settings_);
   const auto same = [](const PrefilteredEnvironment& a, const PrefilteredEnvironment& b) {
-    bool equal = a.levels.size() == b.levels.size() && a.irradianceSh == b.irradianceSh && a.dfg.size() == b.dfg.size();
+    bool equal = a.levels.size() == b.levels.size() && a.irradianceSh == b.irradianceSh &&
+                 a.irradianceMap.rgb == b.irradianceMap.rgb && a.irradianceFromMap == b.irradianceFromMap &&
+                 a.dfg.size() == b.dfg.size();
     for (std::size_t i = 0; equal && i < a.levels.size(); ++i) equal = a.levels[i].rgb == b.levels[i].rgb;
     for (std::size_t i = 0; equal && i < a.dfg.size(); ++i) equal = a.dfg[i].scaleBias == b.dfg[i].scaleBias;
     return equal;

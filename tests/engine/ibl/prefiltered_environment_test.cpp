@@ -10,10 +10,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include "engine/ibl/environment_math.h"
 #include "engine/ibl/prefiltered_environment.h"
 #include "materials/albedo.h"
+#include "scenes/environment_map.h"
 #include "tests/support/compensated_furnace.h"
 #include "tests/support/environment_maps.h"
 
@@ -90,11 +92,8 @@ TEST(PrefilteredEnvironment, ShIrradianceOfALowFrequencyMapMatchesBruteForce) {
   }
 }
 
-// With a sun 100 times the sky, bands 0-2 miss the sharp part of the cosine
-// lobe's response: the error is measured against the mean irradiance.
-TEST(PrefilteredEnvironment, ShIrradianceOfSkyAndSunMatchesBruteForceWithinBandLimit) {
-  const auto map = mapOf(64, 32, skyWithSun);
-  const PrefilteredEnvironment env = prefilterOnCpu(map, {}, smallSettings());
+// Worst |irradiance - brute force| over kNormals, relative to the mean irradiance.
+double worstIrradianceError(const PrefilteredEnvironment& env, const scene::EnvironmentMap& map) {
   const glm::dvec3 mean = env.irradianceSh[0] * m::sh_basis(0, glm::dvec3(0.0));
   double worst = 0;
   for (const glm::dvec3& direction : kNormals) {
@@ -102,8 +101,60 @@ TEST(PrefilteredEnvironment, ShIrradianceOfSkyAndSunMatchesBruteForceWithinBandL
     const glm::dvec3 difference = irradianceOverPi(env, n) - bruteForceIrradianceOverPi(map, n);
     for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(difference[c]) / mean[c]);
   }
-  std::printf("sky + sun: SH irradiance vs brute force, worst |difference| / mean = %.3g\n", worst);
-  EXPECT_LT(worst, 0.1);
+  return worst;
+}
+
+// With a sun 100 times the sky, bands 0-2 miss the sharp part of the cosine
+// lobe's response; the convolved map holds it, and the rule takes the map.
+TEST(PrefilteredEnvironment, UnderASunTheRuleTakesTheIrradianceMap) {
+  const auto map = mapOf(64, 32, skyWithSun);
+  PrefilteredEnvironment env = prefilterOnCpu(map, {}, smallSettings());
+  EXPECT_TRUE(env.irradianceFromMap);
+  const double fromMap = worstIrradianceError(env, map);
+  env.irradianceFromMap = false;
+  const double fromSh = worstIrradianceError(env, map);
+  std::printf("sky + sun: SH misses the map by %.3g; worst |difference| / mean vs brute force: map %.3g, SH %.3g\n",
+              shIrradianceError(env.irradianceSh, env.irradianceMap), fromMap, fromSh);
+  EXPECT_GT(shIrradianceError(env.irradianceSh, env.irradianceMap), 0.01);
+  EXPECT_LT(fromMap, 0.01);
+  EXPECT_LT(fromSh, 0.1);
+}
+
+// A map quadratic in the direction is all bands 0-2: the SH is exact, and
+// the rule keeps it.
+TEST(PrefilteredEnvironment, ForASoftMapTheRuleKeepsTheSh) {
+  const auto map =
+      mapOf(64, 32, [](glm::dvec3 d) { return glm::dvec3(1.2 + d.y, 1 + 0.5 * d.x, 1 - 0.3 * d.z * d.x); });
+  const PrefilteredEnvironment env = prefilterOnCpu(map, {}, smallSettings());
+  std::printf("soft map: SH misses the map by %.3g\n", shIrradianceError(env.irradianceSh, env.irradianceMap));
+  EXPECT_FALSE(env.irradianceFromMap);
+}
+
+// The shipped maps both hold more than bands 0-2 carry: the sunrise's sun,
+// the courtyard's bright sky against a dark ground.
+TEST(PrefilteredEnvironment, TheShippedMapsTakeTheIrradianceMap) {
+  PrefilterSettings settings = smallSettings();
+  settings.levels = 1;
+  for (const char* file : {"sunrise.exr", "courtyard_256x128.hdr"}) {
+    const scene::EnvironmentMap map = scene::loadEnvironmentMap(std::filesystem::path(FACET_ENVIRONMENTS_DIR) / file);
+    const PrefilteredEnvironment env = prefilterOnCpu(map, {}, settings);
+    std::printf("%s: SH misses the map by %.3g\n", file, shIrradianceError(env.irradianceSh, env.irradianceMap));
+    EXPECT_TRUE(env.irradianceFromMap) << file;
+  }
+}
+
+// The map is the cosine-weighted mean over its source's texels: a constant
+// map's irradiance is the constant, to float's rounding.
+TEST(PrefilteredEnvironment, IrradianceMapOfAConstantMapIsExact) {
+  const glm::dvec3 color(0.3, 1.5, 2.0);
+  const auto map = mapOf(256, 128, [&](glm::dvec3) { return color; });
+  PrefilteredEnvironment env = prefilterOnCpu(map, {}, smallSettings());
+  EXPECT_EQ(env.irradianceMap.width, 64);
+  EXPECT_EQ(env.irradianceMap.height, 32);
+  env.irradianceFromMap = true;
+  const glm::dvec3 stored(map.texel(0, 0));
+  for (const glm::dvec3& n : kNormals)
+    EXPECT_LT(maxRelativeDifference(irradianceOverPi(env, glm::normalize(n)), stored), 1e-6);
 }
 
 // Worst relative difference, over a few texels of the level filtered at
