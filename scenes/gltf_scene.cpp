@@ -35,9 +35,13 @@ struct ElementFormat {
   std::size_t components;
   std::array<int, 3> componentTypes;  // unused slots repeat the first
   const char* name;
+  bool normalizable = false;  // integer components may be normalized
 };
 constexpr ElementFormat kFloatVec3{
     3, {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_FLOAT}, "FLOAT VEC3"};
+constexpr ElementFormat kTexcoord{
+    2, {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+    "VEC2 of FLOAT, UNSIGNED_BYTE or UNSIGNED_SHORT", true};
 constexpr ElementFormat kVertexIndex{1,
                                      {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
                                       TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
@@ -60,7 +64,8 @@ class GltfReader {
   }
 
   // The elements of an accessor as doubles (components × count), checked
-  // against `format` and against the bounds of its buffer.
+  // against `format` and against the bounds of its buffer; normalized
+  // integers of a format that allows them map to [0, 1] (glTF 2.0, 3.11).
   std::vector<double> read(int accessorIndex, const std::string& where, const ElementFormat& format) const {
     if (accessorIndex < 0 || std::size_t(accessorIndex) >= model_.accessors.size())
       fail(where, "accessor index out of range");
@@ -84,12 +89,15 @@ class GltfReader {
       fail(where, accessor + " (count " + std::to_string(a.count) + ", byteOffset " + std::to_string(a.byteOffset) +
                       ", stride " + std::to_string(stride) + ") reads past the end of its buffer");
     const unsigned char* begin = data.data() + view.byteOffset + a.byteOffset;
+    double range = 1.0;
+    if (format.normalizable && a.normalized && a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) range = 255;
+    if (format.normalizable && a.normalized && a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) range = 65535;
     std::vector<double> out;
     out.reserve(a.count * components);
     for (std::size_t i = 0; i < a.count; ++i) {
       const unsigned char* element = begin + i * stride;
       for (std::size_t c = 0; c < components; ++c)
-        out.push_back(component(element + c * componentBytes, a.componentType));
+        out.push_back(component(element + c * componentBytes, a.componentType) / range);
     }
     return out;
   }
@@ -288,14 +296,19 @@ std::size_t triangleCount(int mode, std::size_t vertices, const GltfReader& read
 
 // Adds the primitives of one mesh instance as one welded cage, with its
 // NORMALs per face corner when every primitive has them (shading normals of
-// the mesh as authored).
+// the mesh as authored), and likewise its TEXCOORD_0 as a face-varying
+// channel: one value per welded vertex and coordinate, so corners that
+// share both stay joined and the rest form seams.
 ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const GltfReader& reader,
                    const std::string& where) {
   ControlCage cage;
   cage.source = where;
   std::map<std::tuple<double, double, double>, int> welded;
+  std::map<std::tuple<int, double, double>, int> texcoordValues;
   const bool normals = std::all_of(mesh.primitives.begin(), mesh.primitives.end(),
                                    [](const tinygltf::Primitive& p) { return p.attributes.count("NORMAL") != 0; });
+  const bool texcoords = std::all_of(mesh.primitives.begin(), mesh.primitives.end(),
+                                     [](const tinygltf::Primitive& p) { return p.attributes.count("TEXCOORD_0") != 0; });
   const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(world)));
   for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
     const tinygltf::Primitive& primitive = mesh.primitives[p];
@@ -324,6 +337,13 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
         vertexNormals.push_back(transformed / length);
       }
     }
+    std::vector<double> uv;
+    if (texcoords) {
+      uv = reader.read(primitive.attributes.at("TEXCOORD_0"), at + ".TEXCOORD_0", kTexcoord);
+      if (uv.size() / 2 != remap.size()) reader.fail(at, "TEXCOORD_0 and POSITION have different counts");
+      for (std::size_t v = 0; v < uv.size(); ++v)
+        if (!std::isfinite(uv[v])) reader.fail(at, "TEXCOORD_0 " + std::to_string(v / 2) + " is not finite");
+    }
     std::vector<double> indices;
     if (primitive.indices >= 0) {
       indices = reader.read(primitive.indices, at + ".indices", kVertexIndex);
@@ -348,6 +368,12 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
       cage.faceVertexIndices.insert(cage.faceVertexIndices.end(), corners, corners + 3);
       if (normals)
         for (std::size_t vertex : vertices) cage.faceVertexNormals.push_back(vertexNormals[vertex]);
+      for (int c = 0; texcoords && c < 3; ++c) {
+        const double s = uv[2 * vertices[c]], t = uv[2 * vertices[c] + 1];
+        auto [it, inserted] = texcoordValues.try_emplace({corners[c], s, t}, int(cage.texcoords.size()));
+        if (inserted) cage.texcoords.push_back({s, t});
+        cage.faceVertexTexcoords.push_back(it->second);
+      }
     }
   }
   if (cage.faceCount() == 0) reader.fail(where, "has no faces");
@@ -355,6 +381,7 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
     for (std::size_t f = 0; f < cage.faceVertexIndices.size(); f += 3) {
       std::swap(cage.faceVertexIndices[f + 1], cage.faceVertexIndices[f + 2]);
       if (normals) std::swap(cage.faceVertexNormals[f + 1], cage.faceVertexNormals[f + 2]);
+      if (texcoords) std::swap(cage.faceVertexTexcoords[f + 1], cage.faceVertexTexcoords[f + 2]);
     }
   }
   return cage;

@@ -47,6 +47,7 @@ std::vector<Channel> imageChannels(Image& image) {
   addPlane(table, "ids", {"patchId"}, Imf::UINT, image.patchId);
   addPlane(table, "ids", {"faceId"}, Imf::UINT, image.faceId);
   addPlane(table, "uv", {"uv.U", "uv.V"}, Imf::FLOAT, image.uv);
+  addPlane(table, "texcoord", {"st.s", "st.t"}, Imf::FLOAT, image.texcoord);
   return table;
 }
 

@@ -15,6 +15,7 @@
 //   ids       patchId faceId       32-bit unsigned (0xFFFFFFFF on misses)
 //             objectId materialId  32-bit unsigned, with the scene's names
 //   uv        uv.U uv.V            parameter on the control-cage face
+//   texcoord  st.s st.t            texture coordinates (0 on misses and on surfaces without them)
 //   crypto    CryptoObject00.R G B A, CryptoMaterial00.R G B A
 //                                  Cryptomatte rank 0 and 1 (id, coverage), with the scene's names
 #pragma once
@@ -44,7 +45,7 @@ inline constexpr const char* kSettingsDigestAttribute = "facetSettingsDigest";
 
 // The layers above by name; the beauty is always written.
 using ExrLayers = std::set<std::string>;
-inline constexpr const char* kExrLayers[] = {"beauty", "depth", "position", "normals", "ids", "uv", "crypto"};
+inline constexpr const char* kExrLayers[] = {"beauty", "depth", "position", "normals", "ids", "uv", "texcoord", "crypto"};
 ExrLayers allExrLayers();
 std::string exrLayerNames();  // "beauty, depth, ..."
 // "all", "beauty" or a comma-separated list of layer names; throws

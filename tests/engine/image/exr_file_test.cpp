@@ -78,6 +78,7 @@ TEST_F(ExrFile, RoundTripKeepsEveryChannelBitExact) {
   EXPECT_EQ(back.patchId, image.patchId);
   EXPECT_EQ(back.faceId, image.faceId);
   EXPECT_EQ(back.uv, image.uv);
+  EXPECT_EQ(back.texcoord, image.texcoord);
   EXPECT_EQ(files().size(), 1u) << "no temporary file may remain";
 }
 
@@ -93,7 +94,7 @@ TEST_F(ExrFile, ReadingAFileThatIsNotExrNamesIt) {
 
 TEST(ExrLayerNames, ParseAllBeautyOrAListThatAlwaysHoldsTheBeauty) {
   EXPECT_EQ(parseExrLayers("all", "--aovs"),
-            (ExrLayers{"beauty", "depth", "position", "normals", "ids", "uv", "crypto"}));
+            (ExrLayers{"beauty", "depth", "position", "normals", "ids", "uv", "texcoord", "crypto"}));
   EXPECT_EQ(parseExrLayers("beauty", "--aovs"), ExrLayers{"beauty"});
   EXPECT_EQ(parseExrLayers("depth,crypto", "--aovs"), (ExrLayers{"beauty", "depth", "crypto"}));
   try {
@@ -102,7 +103,7 @@ TEST(ExrLayerNames, ParseAllBeautyOrAListThatAlwaysHoldsTheBeauty) {
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(),
                  "--aovs 'depth,albedo': expected all, or a comma-separated list of: beauty, depth, position, "
-                 "normals, ids, uv, crypto");
+                 "normals, ids, uv, texcoord, crypto");
   }
   EXPECT_THROW(parseExrLayers("", "--aovs"), std::invalid_argument);
   EXPECT_THROW(parseExrLayers("depth,", "--aovs"), std::invalid_argument);
