@@ -36,7 +36,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// facet's sampled environment over camera samples x pairs per camera sample.
+// One facet method at a number of camera samples per pixel, over pairs per
+// camera sample (the split sum has one).
 struct FacetCurve {
   scene::IblMethod method = scene::IblMethod::Sampled;
   int cameraSamples = 1;
@@ -61,7 +62,8 @@ Sizes sizesFor(bool quick) {
            {IblMethod::Sampled, 4, {1, 4, 16, 64}},
            {IblMethod::Sampled, 16, {1, 4, 16}},
            {IblMethod::Filtered, 1, {4, 16, 64}},
-           {IblMethod::Filtered, 4, {4, 16, 64}}},
+           {IblMethod::Filtered, 4, {4, 16, 64}},
+           {IblMethod::Prefiltered, 4, {1}}},
           64,
           64};
 }
@@ -127,7 +129,10 @@ std::string formatted(const char* format, double value) {
 
 std::string joined(const std::vector<int>& values) {
   std::string text;
-  for (int v : values) text += (text.empty() ? "" : ",") + std::to_string(v);
+  for (int v : values) {
+    if (!text.empty()) text += ',';
+    text += std::to_string(v);
+  }
   return text;
 }
 
@@ -175,8 +180,10 @@ std::optional<double> timeToError(const std::vector<Point>& curve, double error)
 }
 
 std::string curveName(const FacetCurve& c) {
-  return std::string(c.method == scene::IblMethod::Sampled ? "sampled" : "filtered") + ", " +
-         std::to_string(c.cameraSamples) + " spp";
+  const char* method = c.method == scene::IblMethod::Sampled    ? "sampled"
+                       : c.method == scene::IblMethod::Filtered ? "filtered"
+                                                                : "prefiltered";
+  return method + (", " + std::to_string(c.cameraSamples) + " spp");
 }
 
 // Every curve as a line through its points, N written beside each; the
@@ -194,11 +201,15 @@ void writeChart(const fs::path& path, const std::vector<std::vector<Point>>& cur
          << "set logscale xy\nset grid\nset key outside right top box font ',10'\n"
          << "set xlabel 'time per image (ms; facet: GPU tracing stages, Cycles: render call)'\n"
          << "set ylabel 'relative RMSE vs facet reference'\n"
-         << "plot " << targetError << " with lines dt 3 lc rgb 'black' title 'Cycles target error'";
+         << "plot " << targetError << " with lines dt 3 lc rgb 'black' title 'Cycles error to reach'";
+  // Cycles (the first curve) in black, facet's in distinct colours.
+  static constexpr const char* kColours[] = {"#000000", "#1f77b4", "#d62728", "#2ca02c", "#9467bd",
+                                             "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
   for (std::size_t i = 0; i < curves.size(); ++i)
-    script << ", DATA index " << i << " using 1:2 with linespoints lw " << (i == 0 ? 3 : 1.5) << " pt 7 title '"
-           << curves[i].front().curve << "', DATA index " << i
-           << " using 1:2:(sprintf('%d', $3)) with labels offset char 0.8,0.6 font ',7' notitle";
+    script << ", DATA index " << i << " using 1:2 with linespoints lw " << (i == 0 ? 3 : 1.5) << " pt 7 lc rgb '"
+           << kColours[i % std::size(kColours)] << "' title '" << curves[i].front().curve << "', DATA index " << i
+           << " using 1:2:(sprintf('%d', $3)) with labels offset char 0.8,0.6 font ',7' tc rgb '"
+           << kColours[i % std::size(kColours)] << "' notitle";
   script << "\n";
   runGnuplot(script.str(), data.str(), path, 960, 600);
 }

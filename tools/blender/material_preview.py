@@ -7,9 +7,11 @@
 #       --fov 34.4 --size 512 512 --f0 1 0.71 0.29 --roughness 0.5 --threads 2 \
 #       --samples 4,16,64,256 --repeats 3 --output DIR
 #
-# Coordinates are facet's (y up); Blender is z up. Writes DIR/cycles_<N>spp.exr
-# (linear float RGBA, the first render of each N) and DIR/cycles_times.csv
-# (one row per timed render).
+# Coordinates are facet's (y up); Blender is z up. The surface is facet's
+# cage under Blender's Catmull-Clark modifier, its vertices on the limit
+# surface (BENCHMARKS.md, "Cycles", states what the levels cost). Writes
+# DIR/cycles_<N>spp.exr (linear float RGBA, the first render of each N) and
+# DIR/cycles_times.csv (one row per timed render call).
 import argparse
 import math
 import sys
