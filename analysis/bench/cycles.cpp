@@ -279,7 +279,7 @@ std::vector<Point> cyclesPoints(const fs::path& directory, const Sizes& sizes, c
     converged = reference;
     converged.beauty = written.beauty;
     points.push_back(
-        {"cycles", samples, 1000 * seconds.at(samples), compareToReference(converged, reference).relativeRmse});
+        {"Cycles", samples, 1000 * seconds.at(samples), compareToReference(converged, reference).relativeRmse});
     std::printf("  cycles %4d spp          %9.1f ms  relative RMSE %.3g\n", samples, points.back().milliseconds,
                 points.back().relativeRmse);
   }
@@ -408,8 +408,8 @@ void runCycles(Renderer& renderer, const BenchOptions& options, Report& report) 
   for (const std::vector<Point>& curve : charted)
     for (const Point& p : curve)
       table.push_back(
-          {p.curve == "cycles" ? "Cycles" : "facet " + p.curve,
-           (p.curve == "cycles" ? "" : "N = ") + std::to_string(p.samples) + (p.curve == "cycles" ? " spp" : ""),
+          {p.curve == "Cycles" ? p.curve : "facet " + p.curve,
+           (p.curve == "Cycles" ? "" : "N = ") + std::to_string(p.samples) + (p.curve == "Cycles" ? " spp" : ""),
            formatted("%.1f", p.milliseconds), formatted("%.3g", p.relativeRmse)});
   report.table({"renderer", "samples", "ms", "relative RMSE"}, table);
   for (const char* chart : {"cycles.svg", "cycles.png"})
