@@ -24,5 +24,7 @@ struct BenchOptions {
 void runPareto(Renderer& renderer, const BenchOptions& options, Report& report);
 void runStability(Renderer& renderer, const BenchOptions& options, Report& report);
 void runScaling(Renderer& renderer, const BenchOptions& options, Report& report);
+// Needs Blender (FACET_BLENDER, else `blender` on PATH); skipped with a note without it.
+void runCycles(Renderer& renderer, const BenchOptions& options, Report& report);
 
 }  // namespace facet::analysis::bench
