@@ -25,6 +25,7 @@
 
 #include "analysis/bench/bench.h"
 #include "analysis/gnuplot.h"
+#include "engine/image/exr_file.h"
 #include "engine/image/image_io.h"
 #include "materials/shading.h"
 #include "scenes/scene_file.h"
