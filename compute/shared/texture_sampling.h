@@ -43,8 +43,12 @@ struct TexelTaps {
 // Texture coordinates `uv` (0 to 1 across the level, v down the rows as glTF
 // stores images) in a level of width x height texels.
 FACET_FN TexelTaps texel_taps(vec2 uv, int width, int height, uint texel_filter, uint wrap_s, uint wrap_t) {
+  // Coordinates beyond 2^24 texels (or NaN) read texel 0: their integer
+  // parts would not survive the conversion to int.
   real x = uv.x * real(width);
   real y = uv.y * real(height);
+  x = abs(x) < real(16777216) ? x : real(0);
+  y = abs(y) < real(16777216) ? y : real(0);
   TexelTaps taps;
   if (texel_filter == FACET_FILTER_NEAREST) {
     taps.x0 = wrap_texel(int(floor(x)), width, wrap_s);
@@ -84,7 +88,7 @@ FACET_FN MipTaps mip_taps(real lod, int levels, uint mag_filter, uint min_filter
   taps.texel_filter = lod <= real(0) ? mag_filter : min_filter;
   if (lod <= real(0) || mip_mode == FACET_MIP_NONE) return taps;
   real top = real(levels - 1);
-  real l = min(lod, top);
+  real l = lod < top ? lod : top;  // NaN reads the coarsest level
   if (mip_mode == FACET_MIP_NEAREST) {
     // OpenGL's rounding: the level nearest to lod, halves rounding down.
     taps.level0 = int(ceil(l + real(0.5)) - real(1));

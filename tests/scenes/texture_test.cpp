@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 
 namespace facet::scene {
 namespace {
@@ -59,6 +60,13 @@ TEST(TextureSampling, MipLevelsAreChosenFromTheLevelOfDetail) {
   EXPECT_DOUBLE_EQ(sampleTexture(texture, uv, 1.75).r, 2.0);
   texture.sampler.mipMode = t::FACET_MIP_NONE;
   EXPECT_DOUBLE_EQ(sampleTexture(texture, uv, 2.5).r, 0.0);
+}
+
+TEST(TextureSampling, NonFiniteCoordinatesAndLevelsStayInsideTheTexture) {
+  const Texture texture = makeTexture("levels", 8, 8, 1, std::vector<float>(64, 0.5f), TextureEncoding::Linear, {});
+  const double nan = std::nan(""), huge = 1e30;
+  for (const glm::dvec2 uv : {glm::dvec2(nan, 0.5), glm::dvec2(0.5, huge), glm::dvec2(-huge, nan)})
+    for (double lod : {nan, 0.0, 3.5, huge}) EXPECT_DOUBLE_EQ(sampleTexture(texture, uv, lod).r, 0.5);
 }
 
 TEST(TextureSampling, TheChainAveragesLinearValues) {
