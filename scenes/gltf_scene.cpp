@@ -144,28 +144,41 @@ TextureSampler toSampler(const tinygltf::Sampler& gltf, const std::string& where
   TextureSampler sampler;
   auto wrap = [&](int mode, const char* field) {
     switch (mode) {
-      case TINYGLTF_TEXTURE_WRAP_REPEAT: return t::FACET_WRAP_REPEAT;
-      case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return t::FACET_WRAP_MIRRORED_REPEAT;
-      case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return t::FACET_WRAP_CLAMP_TO_EDGE;
+      case TINYGLTF_TEXTURE_WRAP_REPEAT:
+        return t::FACET_WRAP_REPEAT;
+      case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT:
+        return t::FACET_WRAP_MIRRORED_REPEAT;
+      case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE:
+        return t::FACET_WRAP_CLAMP_TO_EDGE;
     }
     reader.fail(where + field, "unknown wrap mode " + std::to_string(mode) + " (expected 10497, 33648 or 33071)");
   };
   sampler.wrapS = wrap(gltf.wrapS, ".wrapS");
   sampler.wrapT = wrap(gltf.wrapT, ".wrapT");
-  if (gltf.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) sampler.magFilter = t::FACET_FILTER_NEAREST;
+  if (gltf.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST)
+    sampler.magFilter = t::FACET_FILTER_NEAREST;
   else if (gltf.magFilter != -1 && gltf.magFilter != TINYGLTF_TEXTURE_FILTER_LINEAR)
     reader.fail(where + ".magFilter", "unknown filter " + std::to_string(gltf.magFilter) + " (expected 9728 or 9729)");
-  switch (gltf.minFilter) {
-    case -1: break;
-    case TINYGLTF_TEXTURE_FILTER_NEAREST: sampler = {sampler.wrapS, sampler.wrapT, sampler.magFilter, t::FACET_FILTER_NEAREST, t::FACET_MIP_NONE}; break;
-    case TINYGLTF_TEXTURE_FILTER_LINEAR: sampler.mipMode = t::FACET_MIP_NONE; break;
-    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST: sampler.minFilter = t::FACET_FILTER_NEAREST, sampler.mipMode = t::FACET_MIP_NEAREST; break;
-    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST: sampler.mipMode = t::FACET_MIP_NEAREST; break;
-    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: sampler.minFilter = t::FACET_FILTER_NEAREST; break;
-    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR: break;
-    default:
+  // minFilter: the filter within a level and the mip mode, by OpenGL's codes.
+  struct MinFilter {
+    int code;
+    std::uint32_t texelFilter, mipMode;
+  };
+  const MinFilter minFilters[] = {
+      {TINYGLTF_TEXTURE_FILTER_NEAREST, t::FACET_FILTER_NEAREST, t::FACET_MIP_NONE},
+      {TINYGLTF_TEXTURE_FILTER_LINEAR, t::FACET_FILTER_LINEAR, t::FACET_MIP_NONE},
+      {TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST, t::FACET_FILTER_NEAREST, t::FACET_MIP_NEAREST},
+      {TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST, t::FACET_FILTER_LINEAR, t::FACET_MIP_NEAREST},
+      {TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR, t::FACET_FILTER_NEAREST, t::FACET_MIP_LINEAR},
+      {TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR, t::FACET_FILTER_LINEAR, t::FACET_MIP_LINEAR}};
+  if (gltf.minFilter != -1) {
+    const auto found = std::find_if(std::begin(minFilters), std::end(minFilters),
+                                    [&](const MinFilter& f) { return f.code == gltf.minFilter; });
+    if (found == std::end(minFilters))
       reader.fail(where + ".minFilter",
                   "unknown filter " + std::to_string(gltf.minFilter) + " (expected 9728, 9729 or 9984 to 9987)");
+    sampler.minFilter = found->texelFilter;
+    sampler.mipMode = found->mipMode;
   }
   return sampler;
 }
@@ -178,8 +191,8 @@ class TextureTable {
       : model_(model), reader_(reader), textures_(textures) {}
 
   // The slot of the texture info at field `where`: texture `index` with its extensions.
-  materials::TextureSlot slot(const tinygltf::ExtensionMap& extensions, int index, int texCoord, TextureEncoding encoding,
-                   const std::string& where) {
+  materials::TextureSlot slot(const tinygltf::ExtensionMap& extensions, int index, int texCoord,
+                              TextureEncoding encoding, const std::string& where) {
     materials::TextureSlot slot;
     if (index < 0) return slot;
     if (std::size_t(index) >= model_.textures.size())
@@ -193,7 +206,8 @@ class TextureTable {
       if (transform.Has("rotation")) slot.rotation = number(transform.Get("rotation"), at + ".rotation");
       if (transform.Has("texCoord")) texCoord = int(number(transform.Get("texCoord"), at + ".texCoord"));
     }
-    if (texCoord != 0) reader_.fail(where + ".texCoord", "only TEXCOORD_0 is read, not TEXCOORD_" + std::to_string(texCoord));
+    if (texCoord != 0)
+      reader_.fail(where + ".texCoord", "only TEXCOORD_0 is read, not TEXCOORD_" + std::to_string(texCoord));
     auto [cached, fresh] = cache_.try_emplace({index, encoding}, int(textures_.size()));
     if (fresh) textures_.push_back(convert(index, encoding));
     slot.texture = cached->second;
@@ -280,20 +294,22 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
   for (double c : gltf.emissiveFactor)
     if (!(c >= 0.0 && c <= 1.0))
       reader.fail(material + ".emissiveFactor", "every component must be in [0, 1], is " + formatNumber(c));
-  if (gltf.emissiveFactor.size() == 3) m.emission = {gltf.emissiveFactor[0], gltf.emissiveFactor[1], gltf.emissiveFactor[2]};
+  if (gltf.emissiveFactor.size() == 3)
+    m.emission = {gltf.emissiveFactor[0], gltf.emissiveFactor[1], gltf.emissiveFactor[2]};
 
   materials::MaterialTextures t;
   t.baseColor = base;
   t.metallic = metallic;
   t.roughness = roughness;
   const auto& b = pbr.baseColorTexture;
-  t.baseColorTexture = textures.slot(b.extensions, b.index,
-                                     b.texCoord, TextureEncoding::Srgb, where + ".baseColorTexture");
+  t.baseColorTexture =
+      textures.slot(b.extensions, b.index, b.texCoord, TextureEncoding::Srgb, where + ".baseColorTexture");
   const auto& mr = pbr.metallicRoughnessTexture;
   t.metallicRoughnessTexture =
       textures.slot(mr.extensions, mr.index, mr.texCoord, TextureEncoding::Linear, where + ".metallicRoughnessTexture");
   const auto& n = gltf.normalTexture;
-  t.normalTexture = textures.slot(n.extensions, n.index, n.texCoord, TextureEncoding::Linear, material + ".normalTexture");
+  t.normalTexture =
+      textures.slot(n.extensions, n.index, n.texCoord, TextureEncoding::Linear, material + ".normalTexture");
   t.normalScale = n.scale;
   const auto& o = gltf.occlusionTexture;
   t.occlusionTexture =
@@ -302,9 +318,10 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
     reader.fail(material + ".occlusionTexture.strength", *rule);
   t.occlusionStrength = o.strength;
   const auto& e = gltf.emissiveTexture;
-  t.emissiveTexture = textures.slot(e.extensions, e.index, e.texCoord, TextureEncoding::Srgb, material + ".emissiveTexture");
-  for (const materials::TextureSlot* s : {&t.baseColorTexture, &t.metallicRoughnessTexture, &t.normalTexture,
-                                          &t.occlusionTexture, &t.emissiveTexture})
+  t.emissiveTexture =
+      textures.slot(e.extensions, e.index, e.texCoord, TextureEncoding::Srgb, material + ".emissiveTexture");
+  for (const materials::TextureSlot* s :
+       {&t.baseColorTexture, &t.metallicRoughnessTexture, &t.normalTexture, &t.occlusionTexture, &t.emissiveTexture})
     if (s->texture >= 0) m.textures = t;
   return m;
 }

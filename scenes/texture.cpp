@@ -54,8 +54,8 @@ Texture makeTexture(std::string source, int width, int height, int components, c
     const float* c = &channels[i * std::size_t(components)];
     const bool grey = components <= 2;
     const float alpha = components == 2 ? c[1] : components == 4 ? c[3] : 1.0f;
-    base.texels[i] = grey ? glm::vec4(glm::vec3(colour(c[0])), alpha)
-                          : glm::vec4(colour(c[0]), colour(c[1]), colour(c[2]), alpha);
+    base.texels[i] =
+        grey ? glm::vec4(glm::vec3(colour(c[0])), alpha) : glm::vec4(colour(c[0]), colour(c[1]), colour(c[2]), alpha);
   }
   texture.levels.push_back(std::move(base));
   while (texture.levels.back().width > 1 || texture.levels.back().height > 1)

@@ -37,7 +37,8 @@ class GltfTextures : public facet::testing::TempDirTest {
         {"pbrMetallicRoughness",
          {{"baseColorTexture",
            {{"index", 0},
-            {"extensions", {{"KHR_texture_transform", {{"offset", {0.5, 0.25}}, {"rotation", 0.5}, {"scale", {2, 3}}}}}}}},
+            {"extensions",
+             {{"KHR_texture_transform", {{"offset", {0.5, 0.25}}, {"rotation", 0.5}, {"scale", {2, 3}}}}}}}},
           {"metallicRoughnessTexture", {{"index", 1}}},
           {"roughnessFactor", 0.5}}},
         {"normalTexture", {{"index", 1}, {"scale", 0.75}}}};
@@ -84,7 +85,7 @@ TEST_F(GltfTextures, PngImagesDecodeIntoTheMaterialsSlots) {
 
   const Texture& data = scene.textures.at(std::size_t(m.metallicRoughnessTexture.texture));
   EXPECT_NEAR(data.levels[0].texels[0].g, 128.0 / 255.0, 1e-6);  // not decoded
-  EXPECT_EQ(data.sampler.mipMode, t::FACET_MIP_LINEAR);           // glTF viewers' default
+  EXPECT_EQ(data.sampler.mipMode, t::FACET_MIP_LINEAR);          // glTF viewers' default
   EXPECT_EQ(data.sampler.wrapS, t::FACET_WRAP_REPEAT);
 }
 
@@ -100,14 +101,13 @@ TEST_F(GltfTextures, AMissingImageFileIsNamed) {
   nlohmann::json p = parts();
   p["images"][0]["uri"] = "nowhere.png";
   const auto file = facet::testing::writeTexturedQuad(dir_, "missing", p);
-  EXPECT_THAT([&] { loadScene(file); },
-              ThrowsMessage<InputError>(AllOf(HasSubstr("missing.gltf"), HasSubstr("images[0]"),
-                                              HasSubstr("nowhere.png"))));
+  EXPECT_THAT(
+      [&] { loadScene(file); },
+      ThrowsMessage<InputError>(AllOf(HasSubstr("missing.gltf"), HasSubstr("images[0]"), HasSubstr("nowhere.png"))));
 }
 
 TEST_F(GltfTextures, ABadTextureIndexIsNamed) {
-  const auto file = facet::testing::writeTexturedQuad(
-      dir_, "index", parts({{"normalTexture", {{"index", 7}}}}));
+  const auto file = facet::testing::writeTexturedQuad(dir_, "index", parts({{"normalTexture", {{"index", 7}}}}));
   EXPECT_THAT([&] { loadScene(file); },
               ThrowsMessage<InputError>(AllOf(HasSubstr("materials[0].normalTexture.index"),
                                               HasSubstr("texture index 7 out of range (the file has 2 textures)"))));
@@ -132,9 +132,9 @@ TEST_F(GltfTextures, ABadTransformIsNamed) {
   const auto file = facet::testing::writeTexturedQuad(
       dir_, "transform",
       parts({{"emissiveTexture", {{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"scale", {1}}}}}}}}}));
-  EXPECT_THAT([&] { loadScene(file); },
-              ThrowsMessage<InputError>(HasSubstr("materials[0].emissiveTexture.extensions.KHR_texture_transform.scale: "
-                                                  "must be an array of 2 numbers")));
+  EXPECT_THAT([&] { loadScene(file); }, ThrowsMessage<InputError>(HasSubstr(
+                                            "materials[0].emissiveTexture.extensions.KHR_texture_transform.scale: "
+                                            "must be an array of 2 numbers")));
 }
 
 }  // namespace

@@ -22,10 +22,10 @@ Texture ramp(std::uint32_t wrap) {
 
 TEST(TextureSampling, BilinearFilteringInterpolatesBetweenTexelCentres) {
   const Texture texture = ramp(t::FACET_WRAP_CLAMP_TO_EDGE);
-  EXPECT_DOUBLE_EQ(sampleTexture(texture, {0.125, 0.5}, 0.0).r, 0.0);        // texel 0's centre
-  EXPECT_DOUBLE_EQ(sampleTexture(texture, {0.25, 0.5}, 0.0).r, 0.125);       // between 0 and 1
+  EXPECT_DOUBLE_EQ(sampleTexture(texture, {0.125, 0.5}, 0.0).r, 0.0);   // texel 0's centre
+  EXPECT_DOUBLE_EQ(sampleTexture(texture, {0.25, 0.5}, 0.0).r, 0.125);  // between 0 and 1
   EXPECT_DOUBLE_EQ(sampleTexture(texture, {0.3125, 0.5}, 0.0).r, 0.1875);
-  EXPECT_DOUBLE_EQ(sampleTexture(texture, {0.0, 0.5}, 0.0).r, 0.0);          // clamped edge
+  EXPECT_DOUBLE_EQ(sampleTexture(texture, {0.0, 0.5}, 0.0).r, 0.0);  // clamped edge
   EXPECT_DOUBLE_EQ(sampleTexture(texture, {1.0, 0.5}, 0.0).r, 0.75);
   // Repeat blends the last texel with the first across the seam.
   EXPECT_DOUBLE_EQ(sampleTexture(ramp(t::FACET_WRAP_REPEAT), {0.0, 0.5}, 0.0).r, 0.375);
@@ -53,10 +53,10 @@ TEST(TextureSampling, MipLevelsAreChosenFromTheLevelOfDetail) {
   const glm::dvec2 uv(0.3, 0.6);
   EXPECT_DOUBLE_EQ(sampleTexture(texture, uv, -1.0).r, 0.0);  // magnified
   EXPECT_DOUBLE_EQ(sampleTexture(texture, uv, 1.25).r, 1.25);
-  EXPECT_DOUBLE_EQ(sampleTexture(texture, uv, 9.0).r, 3.0);   // the coarsest
+  EXPECT_DOUBLE_EQ(sampleTexture(texture, uv, 9.0).r, 3.0);  // the coarsest
   texture.sampler.mipMode = t::FACET_MIP_NEAREST;
   EXPECT_DOUBLE_EQ(sampleTexture(texture, uv, 1.25).r, 1.0);
-  EXPECT_DOUBLE_EQ(sampleTexture(texture, uv, 1.5).r, 1.0);   // halves round down
+  EXPECT_DOUBLE_EQ(sampleTexture(texture, uv, 1.5).r, 1.0);  // halves round down
   EXPECT_DOUBLE_EQ(sampleTexture(texture, uv, 1.75).r, 2.0);
   texture.sampler.mipMode = t::FACET_MIP_NONE;
   EXPECT_DOUBLE_EQ(sampleTexture(texture, uv, 2.5).r, 0.0);
