@@ -61,6 +61,7 @@ ParityReport compareImages(const Image& reference, const Image& candidate, const
   Accumulator position{{"position", "|dP| / |P|", 0, 0, 0, 0, 0}};
   Accumulator geometric{{"geometric normal", "angle (rad)", 0, 0, 0, 0, 0}};
   Accumulator uv{{"uv", "|duv|", 0, 0, 0, 0, 0}};
+  Accumulator texcoord{{"texcoord", "|dst|", 0, 0, 0, 0, 0}};
   Accumulator patchId{{"patchId", "differs", 0, 0, 0, 0, 0}};
   Accumulator faceId{{"faceId", "differs", 0, 0, 0, 0, 0}};
 
@@ -93,6 +94,8 @@ ParityReport compareImages(const Image& reference, const Image& candidate, const
       geometric.add(geometricAngle, geometricAngle, onEitherSilhouette, report.heat, p);
       const double duv = glm::length(glm::dvec2(candidate.uv[p]) - glm::dvec2(reference.uv[p]));
       uv.add(duv, duv, onEitherSilhouette, report.heat, p);
+      const double dst = glm::length(glm::dvec2(candidate.texcoord[p]) - glm::dvec2(reference.texcoord[p]));
+      texcoord.add(dst, dst, onEitherSilhouette, report.heat, p);
       const double patchDiffers = reference.patchId[p] != candidate.patchId[p] ? 1.0 : 0.0;
       patchId.add(patchDiffers, patchDiffers, onEitherSilhouette, report.heat, p);
       const double faceDiffers = reference.faceId[p] != candidate.faceId[p] ? 1.0 : 0.0;
@@ -108,7 +111,7 @@ ParityReport compareImages(const Image& reference, const Image& candidate, const
   for (Accumulator* gated : {&depth, &normal}) gated->aov.pass = gated->aov.overInterior == 0;
   beauty.aov.pass =
       beauty.aov.overSilhouette + beauty.aov.overInterior <= allowance(1.0 - tolerances.beautyShare, beauty.count);
-  for (Accumulator* a : {&depth, &normal, &beauty, &alpha, &position, &geometric, &uv, &patchId, &faceId})
+  for (Accumulator* a : {&depth, &normal, &beauty, &alpha, &position, &geometric, &uv, &texcoord, &patchId, &faceId})
     report.aovs.push_back(a->finish());
   report.pass = report.coveragePass;
   for (const AovParity& aov : report.aovs) report.pass = report.pass && aov.pass;

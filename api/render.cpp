@@ -32,6 +32,7 @@ Image publicImage(const facet::Image& image) {
   out.aovs["geometric_normal"] = aov<3>(image.geometricNormal);
   out.aovs["shading_normal"] = aov<3>(image.shadingNormal);
   out.aovs["uv"] = aov<2>(image.uv);
+  out.aovs["texcoord"] = aov<2>(image.texcoord);
   out.ids["patch_id"] = image.patchId;
   out.ids["face_id"] = image.faceId;
   return out;

@@ -2,6 +2,7 @@
 // A subdivision control cage as plain data: what an OBJ file (or any other
 // front-end) says, before OpenSubdiv has seen it. Indices are 0-based.
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <string>
@@ -41,6 +42,12 @@ struct ControlCage {
   // Optional, one per faceVertexIndices entry: the authored shading normals
   // of a mesh rendered as authored (ignored when it is subdivided).
   std::vector<glm::dvec3> faceVertexNormals;
+  // Optional texture coordinates, one face-varying channel as OpenSubdiv
+  // takes it: the distinct values, and one index into them per
+  // faceVertexIndices entry. Corners that share a vertex but not a value
+  // form a seam; options.faceVarying says how the values are subdivided.
+  std::vector<glm::dvec2> texcoords;
+  std::vector<int> faceVertexTexcoords;
   std::vector<CreaseEdge> creases;
   std::vector<CornerVertex> corners;
   std::vector<int> holes;  // face indices

@@ -39,6 +39,8 @@ struct ElementFormat {
 };
 constexpr ElementFormat kFloatVec3{
     3, {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_FLOAT}, "FLOAT VEC3"};
+constexpr ElementFormat kFloatVec2{
+    2, {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_FLOAT}, "FLOAT VEC2"};
 constexpr ElementFormat kVertexIndex{1,
                                      {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
                                       TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
@@ -456,14 +458,19 @@ std::size_t triangleCount(int mode, std::size_t vertices, const GltfReader& read
 
 // Adds the primitives of one mesh instance as one welded cage, with its
 // NORMALs per face corner when every primitive has them (shading normals of
-// the mesh as authored).
+// the mesh as authored), and likewise its TEXCOORD_0 as a face-varying
+// channel: one value per welded vertex and coordinate, so corners that
+// share both stay joined and the rest form seams.
 ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const GltfReader& reader,
                    const std::string& where) {
   ControlCage cage;
   cage.source = where;
   std::map<std::tuple<double, double, double>, int> welded;
+  std::map<std::tuple<int, double, double>, int> texcoordValues;
   const bool normals = std::all_of(mesh.primitives.begin(), mesh.primitives.end(),
                                    [](const tinygltf::Primitive& p) { return p.attributes.count("NORMAL") != 0; });
+  const bool texcoords = std::all_of(mesh.primitives.begin(), mesh.primitives.end(),
+                                     [](const tinygltf::Primitive& p) { return p.attributes.count("TEXCOORD_0") != 0; });
   const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(world)));
   for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
     const tinygltf::Primitive& primitive = mesh.primitives[p];
@@ -492,6 +499,13 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
         vertexNormals.push_back(transformed / length);
       }
     }
+    std::vector<double> uv;
+    if (texcoords) {
+      uv = reader.read(primitive.attributes.at("TEXCOORD_0"), at + ".TEXCOORD_0", kFloatVec2);
+      if (uv.size() / 2 != remap.size()) reader.fail(at, "TEXCOORD_0 and POSITION have different counts");
+      for (std::size_t v = 0; v < uv.size(); ++v)
+        if (!std::isfinite(uv[v])) reader.fail(at, "TEXCOORD_0 " + std::to_string(v / 2) + " is not finite");
+    }
     std::vector<double> indices;
     if (primitive.indices >= 0) {
       indices = reader.read(primitive.indices, at + ".indices", kVertexIndex);
@@ -516,6 +530,12 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
       cage.faceVertexIndices.insert(cage.faceVertexIndices.end(), corners, corners + 3);
       if (normals)
         for (std::size_t vertex : vertices) cage.faceVertexNormals.push_back(vertexNormals[vertex]);
+      for (int c = 0; texcoords && c < 3; ++c) {
+        const double s = uv[2 * vertices[c]], t = uv[2 * vertices[c] + 1];
+        auto [it, inserted] = texcoordValues.try_emplace({corners[c], s, t}, int(cage.texcoords.size()));
+        if (inserted) cage.texcoords.push_back({s, t});
+        cage.faceVertexTexcoords.push_back(it->second);
+      }
     }
   }
   if (cage.faceCount() == 0) reader.fail(where, "has no faces");
@@ -523,6 +543,7 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
     for (std::size_t f = 0; f < cage.faceVertexIndices.size(); f += 3) {
       std::swap(cage.faceVertexIndices[f + 1], cage.faceVertexIndices[f + 2]);
       if (normals) std::swap(cage.faceVertexNormals[f + 1], cage.faceVertexNormals[f + 2]);
+      if (texcoords) std::swap(cage.faceVertexTexcoords[f + 1], cage.faceVertexTexcoords[f + 2]);
     }
   }
   return cage;

@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <utility>
@@ -60,9 +61,9 @@ class ObjReader {
     if (keyword == "v")
       readVertex(tokens);
     else if (keyword == "vt")
-      readAttribute(tokens, 2, 3, textureCoordinateCount_, "texture coordinate");
+      readTexcoord(tokens);
     else if (keyword == "vn")
-      readAttribute(tokens, 3, 3, normalCount_, "normal");
+      readNormal(tokens);
     else if (keyword == "f")
       readFace(tokens);
     else if (keyword == "t")
@@ -78,7 +79,9 @@ class ObjReader {
     line_ = lastLine;
     if (cage_.faceVertexCounts.empty()) fail("empty cage", "the file defines no faces");
     checkFaceReferences();
+    checkTexcoordCorners();
     checkTagReferences();
+    applyPropagateCorners();
     return std::move(cage_);
   }
 
@@ -114,15 +117,28 @@ class ObjReader {
     cage_.positions.push_back(p);
   }
 
-  void readAttribute(const std::vector<std::string_view>& tokens, size_t minValues, size_t maxValues, int& count,
-                     const char* what) {
+  // The attribute's numbers, each finite, minValues to maxValues of them.
+  std::vector<double> readAttribute(const std::vector<std::string_view>& tokens, size_t minValues, size_t maxValues,
+                                    const char* what) const {
     size_t values = tokens.size() - 1;
     if (values < minValues || values > maxValues)
       fail("malformed " + std::string(what), "expected " + std::to_string(minValues) + " to " +
                                                  std::to_string(maxValues) + " numbers, found " +
                                                  std::to_string(values));
-    for (size_t i = 1; i < tokens.size(); ++i) finiteNumber(tokens[i], what);
-    ++count;
+    std::vector<double> numbers;
+    for (size_t i = 1; i < tokens.size(); ++i) numbers.push_back(finiteNumber(tokens[i], what));
+    return numbers;
+  }
+
+  // u v [w]: w (a 3D texture's depth) is ignored.
+  void readTexcoord(const std::vector<std::string_view>& tokens) {
+    const std::vector<double> uvw = readAttribute(tokens, 2, 3, "texture coordinate");
+    cage_.texcoords.push_back({uvw[0], uvw[1]});
+  }
+
+  void readNormal(const std::vector<std::string_view>& tokens) {
+    readAttribute(tokens, 3, 3, "normal");
+    ++normalCount_;
   }
 
   // OBJ indices are 1-based; negative ones count back from the last element
@@ -156,9 +172,13 @@ class ObjReader {
         start = slash + 1;
       }
       int vertex = resolveIndex(parts[0], cage_.vertexCount(), "vertex");
-      if (partCount > 1 && !parts[1].empty())
-        requireInRange(resolveIndex(parts[1], textureCoordinateCount_, "texture coordinate"), textureCoordinateCount_,
-                       "texture coordinate");
+      int texcoord = -1;
+      if (partCount > 1 && !parts[1].empty()) {
+        const int defined = int(cage_.texcoords.size());
+        texcoord = resolveIndex(parts[1], defined, "texture coordinate");
+        requireInRange(texcoord, defined, "texture coordinate");
+      }
+      cage_.faceVertexTexcoords.push_back(texcoord);
       if (partCount > 2 && !parts[2].empty())
         requireInRange(resolveIndex(parts[2], normalCount_, "normal"), normalCount_, "normal");
       cage_.faceVertexIndices.push_back(vertex);
@@ -271,6 +291,11 @@ class ObjReader {
       if (tag.ints[0] < 0 || tag.ints[0] > 5)
         fail("unknown option", "facevaryinginterpolateboundary " + std::to_string(tag.ints[0]) + " is not in 0..5");
       options.faceVarying = static_cast<FaceVaryingInterpolation>(tag.ints[0]);
+    } else if (tag.name == "facevaryingpropagatecorners") {
+      requireArguments(tag, 1, 0, 0);
+      if (tag.ints[0] != 0 && tag.ints[0] != 1)
+        fail("unknown option", "facevaryingpropagatecorners " + std::to_string(tag.ints[0]) + " is not 0 or 1");
+      propagateCorners_ = tag.ints[0] == 1;
     } else if (tag.name == "creasemethod") {
       options.creasing =
           namedOption<CreasingMethod>(tag, {"normal", CreasingMethod::Uniform}, {"chaikin", CreasingMethod::Chaikin});
@@ -295,6 +320,32 @@ class ObjReader {
       }
       offset += cage_.faceVertexCounts[face];
     }
+  }
+
+  // A cage has texture coordinates on every face corner or on none.
+  void checkTexcoordCorners() {
+    std::vector<int>& corners = cage_.faceVertexTexcoords;
+    const bool any = std::any_of(corners.begin(), corners.end(), [](int t) { return t >= 0; });
+    size_t offset = 0;
+    for (size_t face = 0; any && face < cage_.faceVertexCounts.size(); ++face) {
+      for (int c = 0; c < cage_.faceVertexCounts[face]; ++c)
+        if (corners[offset + c] < 0)
+          failAt(faceLines_[face], "missing texture coordinate",
+                 "corner " + std::to_string(c + 1) + " has no vt index, but other faces' corners have");
+      offset += cage_.faceVertexCounts[face];
+    }
+    if (!any) corners.clear();
+  }
+
+  // Hbr's propagate-corners flag, which OpenSubdiv 3 folds into its rules:
+  // under the corners-plus rules it picks CornersPlus2 (1) or CornersPlus1
+  // (0); the other rules have no corners to propagate.
+  void applyPropagateCorners() {
+    FaceVaryingInterpolation& rule = cage_.options.faceVarying;
+    if (!propagateCorners_ ||
+        (rule != FaceVaryingInterpolation::CornersPlus1 && rule != FaceVaryingInterpolation::CornersPlus2))
+      return;
+    rule = *propagateCorners_ ? FaceVaryingInterpolation::CornersPlus2 : FaceVaryingInterpolation::CornersPlus1;
   }
 
   void checkTagReferences() const {
@@ -333,8 +384,8 @@ class ObjReader {
 
   ControlCage cage_;
   int line_ = 0;
-  int textureCoordinateCount_ = 0;
   int normalCount_ = 0;
+  std::optional<bool> propagateCorners_;
   std::vector<int> faceLines_, creaseLines_, cornerLines_, holeLines_;
 };
 

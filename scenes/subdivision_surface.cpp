@@ -71,6 +71,26 @@ Sdc::Options sdcOptions(const SubdivisionOptions& options) {
   return sdc;
 }
 
+void validateTexcoords(const ControlCage& cage) {
+  auto fail = [&cage](const std::string& rule, const std::string& detail) {
+    throw InputError(cage.source, 0, rule, detail);
+  };
+  if (cage.faceVertexTexcoords.empty()) {
+    if (!cage.texcoords.empty()) fail("texture coordinates", "values given, but no face corner uses them");
+    return;
+  }
+  if (cage.faceVertexTexcoords.size() != cage.faceVertexIndices.size())
+    fail("texture coordinates", std::to_string(cage.faceVertexTexcoords.size()) + " indices for " +
+                                    std::to_string(cage.faceVertexIndices.size()) + " face corners");
+  for (int index : cage.faceVertexTexcoords)
+    if (index < 0 || index >= int(cage.texcoords.size()))
+      fail("index out of range", "texture coordinate " + std::to_string(index) + " of " +
+                                     std::to_string(cage.texcoords.size()));
+  for (const glm::dvec2& t : cage.texcoords)
+    if (!std::isfinite(t.x) || !std::isfinite(t.y))
+      fail("non-finite value", "a texture coordinate is NaN or infinite");
+}
+
 // OpenSubdiv trusts its input (an out-of-range index is undefined
 // behaviour, not an error), and cages also come from front-ends other than
 // the OBJ reader, which reports the same rules with line numbers.
@@ -105,6 +125,7 @@ void validateCage(const ControlCage& cage) {
       fail("index out of range", "corner vertex " + std::to_string(corner.vertex));
   for (int hole : cage.holes)
     if (hole < 0 || hole >= cage.faceCount()) fail("index out of range", "hole face " + std::to_string(hole));
+  validateTexcoords(cage);
 }
 
 std::unique_ptr<Far::TopologyRefiner> createRefiner(const ControlCage& cage, Subdivision subdivision) {
@@ -136,6 +157,13 @@ std::unique_ptr<Far::TopologyRefiner> createRefiner(const ControlCage& cage, Sub
   descriptor.cornerWeights = cornerWeights.data();
   descriptor.numHoles = static_cast<int>(cage.holes.size());
   descriptor.holeIndices = cage.holes.data();
+  Far::TopologyDescriptor::FVarChannel texcoords;
+  texcoords.numValues = int(cage.texcoords.size());
+  texcoords.valueIndices = cage.faceVertexTexcoords.data();
+  if (!cage.faceVertexTexcoords.empty()) {
+    descriptor.numFVarChannels = 1;
+    descriptor.fvarChannels = &texcoords;
+  }
 
   OsdMessageCapture capture;
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
@@ -219,6 +247,55 @@ BezierPatch bezierFromGregory(const std::array<glm::dvec3, 20>& cvs) {
   return patch;
 }
 
+// One patch of OpenSubdiv's (vertex or face-varying) in Bézier form, its
+// control points `cvs` into `points`.
+BezierPatch bezierFromPatch(Far::PatchDescriptor::Type type, Far::ConstIndexArray cvs,
+                            const std::vector<OsdPoint>& points, unsigned boundaryMask) {
+  auto gather = [&](auto& array) {
+    for (std::size_t k = 0; k < array.size(); ++k) array[k] = points[std::size_t(cvs[int(k)])].p;
+    return array;
+  };
+  if (type == Far::PatchDescriptor::QUADS) {
+    std::array<glm::dvec3, 4> corners;
+    return bezierFromBilinear(gather(corners));
+  }
+  if (type == Far::PatchDescriptor::GREGORY_BASIS) {
+    std::array<glm::dvec3, 20> basis;
+    return bezierFromGregory(gather(basis));
+  }
+  std::array<glm::dvec3, 16> bspline;
+  return bezierFromBSpline(gather(bspline), boundaryMask);
+}
+
+// Sum_k w[k] points[cvs[k]], k < count, with derivatives in face parameters.
+LimitPoint combine(const PatchInfo& info, const BezierPatch& bezier, const double* wP, const double* wDu,
+                   const double* wDv, Far::ConstIndexArray cvs, int count, const std::vector<OsdPoint>& points,
+                   double u, double v) {
+  LimitPoint result;
+  for (int k = 0; k < count; ++k) {
+    const glm::dvec3& p = points[std::size_t(cvs[k])].p;
+    result.position += wP[k] * p;
+    result.du += wDu[k] * p;
+    result.dv += wDv[k] * p;
+  }
+  // OpenSubdiv scales derivatives by 2^depth, also on the sub-faces of
+  // non-quad faces, which start at depth 1 and so span 2^-(depth-1) of
+  // their ptex face: there its derivatives are twice ours (the
+  // finite-difference test holds this). Rescale to ptex face parameters.
+  const double derivativeScale = 1.0 / (info.domain.size * static_cast<double>(1 << info.depth));
+  result.du *= derivativeScale;
+  result.dv *= derivativeScale;
+  if (bezier.gregory) {
+    // OpenSubdiv's Gregory derivatives freeze the rational interior
+    // (see the header); differentiate the same patch exactly instead.
+    const PatchDomain& domain = info.domain;
+    BezierSample exact = evaluateBezierPatch(bezier, (u - domain.u0) / domain.size, (v - domain.v0) / domain.size);
+    result.du = exact.du / domain.size;
+    result.dv = exact.dv / domain.size;
+  }
+  return result;
+}
+
 // The authored normals at a bilinear patch's corners. On a quad face they are
 // its vertices' own; a face split once has patches through a vertex, two edge
 // midpoints and the centroid, whose normals are the normalized sums of the
@@ -263,6 +340,11 @@ struct SubdivisionSurface::Impl {
   std::vector<PatchInfo> patches;
   std::vector<BezierPatch> bezierPatches;
   std::vector<std::array<glm::dvec3, 4>> authoredNormals;  // per patch, or empty
+  // Texture coordinates (u, v, 0): refined levels, then local points; and
+  // per patch the face-varying patch as OpenSubdiv has it and in Bézier form.
+  std::vector<OsdPoint> texcoordPoints;
+  std::vector<Far::PatchDescriptor::Type> texcoordTypes;
+  std::vector<BezierPatch> texcoordPatches;
   Aabb bounds;
   SurfaceStatistics statistics;
 };
@@ -292,6 +374,12 @@ SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const Ref
   options.generateVaryingTables = false;
   options.generateVaryingLocalPoints = false;
   options.SetPatchPrecision<double>();
+  // Face-varying patches of the same kinds as the vertex ones (the legacy
+  // option makes them all bilinear in the refined values).
+  const bool withTexcoords = !cage.faceVertexTexcoords.empty();
+  options.generateFVarTables = withTexcoords;
+  options.generateFVarLegacyLinearPatches = false;
+  options.SetFVarPatchPrecision<double>();
   refiner.RefineAdaptive(options.GetRefineAdaptiveOptions());
   impl->patchTable.reset(Far::PatchTableFactory::Create(refiner, options));
   const Far::PatchTable& table = *impl->patchTable;
@@ -310,6 +398,22 @@ SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const Ref
   }
   if (localCount > 0)
     table.GetLocalPointStencilTable<double>()->UpdateValues(impl->points.data(), impl->points.data() + refinedCount);
+
+  if (withTexcoords) {
+    const int refinedValues = refiner.GetNumFVarValuesTotal(0);
+    const int localValues = table.GetNumLocalPointsFaceVarying(0);
+    impl->texcoordPoints.resize(std::size_t(refinedValues) + std::size_t(localValues));
+    for (std::size_t t = 0; t < cage.texcoords.size(); ++t) impl->texcoordPoints[t].p = glm::dvec3(cage.texcoords[t], 0.0);
+    OsdPoint* values = impl->texcoordPoints.data();
+    for (int l = 1; l < refiner.GetNumLevels(); ++l) {
+      OsdPoint* next = values + refiner.GetLevel(l - 1).GetNumFVarValues(0);
+      primvarRefiner.InterpolateFaceVarying(l, values, next, 0);
+      values = next;
+    }
+    if (localValues > 0)
+      table.GetLocalPointFaceVaryingStencilTable<double>(0)->UpdateValues(impl->texcoordPoints.data(),
+                                                                         impl->texcoordPoints.data() + refinedValues);
+  }
 
   impl->patchMap = std::make_unique<Far::PatchMap>(table);
 
@@ -357,24 +461,17 @@ SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const Ref
       info.gregory = gregory;
       impl->patches.push_back(info);
 
-      BezierPatch bezier;
+      const BezierPatch bezier = bezierFromPatch(descriptor.GetType(), cvs, impl->points, info.boundaryMask);
       if (quads) {
         std::array<glm::dvec3, 4> points;
         for (int k = 0; k < 4; ++k) points[k] = impl->points[cvs[k]].p;
-        bezier = bezierFromBilinear(points);
         if (withNormals)
           impl->authoredNormals.push_back(
               cornerNormals(cage, info.coarseFace, faceStarts[std::size_t(info.coarseFace)], points));
         ++stats.regularPatches;
       } else if (gregory) {
-        std::array<glm::dvec3, 20> points;
-        for (int k = 0; k < 20; ++k) points[k] = impl->points[cvs[k]].p;
-        bezier = bezierFromGregory(points);
         ++stats.endCapPatches;
       } else {
-        std::array<glm::dvec3, 16> points;
-        for (int k = 0; k < 16; ++k) points[k] = impl->points[cvs[k]].p;
-        bezier = bezierFromBSpline(points, info.boundaryMask);
         // B-spline end caps share the regular patch type.
         if (param.IsRegular())
           ++stats.regularPatches;
@@ -385,6 +482,15 @@ SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const Ref
       if (bezier.gregory)
         for (const glm::dvec3& p : bezier.alternates) impl->bounds.extend(p);
       impl->bezierPatches.push_back(bezier);
+      if (withTexcoords) {
+        const Far::PatchParam texcoordParam = table.GetPatchFVarPatchParam(array, j, 0);
+        const Far::PatchDescriptor::Type type = (texcoordParam.IsRegular() ? table.GetFVarPatchDescriptorRegular(0)
+                                                                           : table.GetFVarPatchDescriptorIrregular(0))
+                                                    .GetType();
+        impl->texcoordTypes.push_back(type);
+        impl->texcoordPatches.push_back(bezierFromPatch(type, table.GetPatchFVarValues(array, j, 0),
+                                                        impl->texcoordPoints, texcoordParam.GetBoundary()));
+      }
     }
   }
 
@@ -416,35 +522,31 @@ const Aabb& SubdivisionSurface::bounds() const { return impl_->bounds; }
 const SurfaceStatistics& SubdivisionSurface::statistics() const { return impl_->statistics; }
 
 LimitPoint SubdivisionSurface::evaluatePatch(int index, double u, double v) const {
-  const Far::PatchTable::PatchHandle& handle = impl_->handles.at(index);
+  const Far::PatchTable::PatchHandle& handle = impl_->handles.at(std::size_t(index));
   double wP[20], wDu[20], wDv[20];
   impl_->patchTable->EvaluateBasis(handle, u, v, wP, wDu, wDv);
   const Far::ConstIndexArray cvs = impl_->patchTable->GetPatchVertices(handle);
-  LimitPoint result;
-  for (int k = 0; k < cvs.size(); ++k) {
-    const glm::dvec3& p = impl_->points[cvs[k]].p;
-    result.position += wP[k] * p;
-    result.du += wDu[k] * p;
-    result.dv += wDv[k] * p;
-  }
-  const PatchInfo& info = impl_->patches[index];
-  // OpenSubdiv scales derivatives by 2^depth, also on the sub-faces of
-  // non-quad faces, which start at depth 1 and so span 2^-(depth-1) of
-  // their ptex face: there its derivatives are twice ours (the
-  // finite-difference test holds this). Rescale to ptex face parameters.
-  const double derivativeScale = 1.0 / (info.domain.size * static_cast<double>(1 << info.depth));
-  result.du *= derivativeScale;
-  result.dv *= derivativeScale;
-  if (info.gregory) {
-    // OpenSubdiv's Gregory derivatives freeze the rational interior
-    // (see the header); differentiate the same patch exactly instead.
-    const PatchDomain& domain = info.domain;
-    BezierSample exact =
-        evaluateBezierPatch(impl_->bezierPatches[index], (u - domain.u0) / domain.size, (v - domain.v0) / domain.size);
-    result.du = exact.du / domain.size;
-    result.dv = exact.dv / domain.size;
-  }
-  return result;
+  return combine(impl_->patches[std::size_t(index)], impl_->bezierPatches[std::size_t(index)], wP, wDu, wDv, cvs,
+                 cvs.size(), impl_->points, u, v);
+}
+
+bool SubdivisionSurface::hasTexcoords() const { return !impl_->texcoordPatches.empty(); }
+
+const BezierPatch* SubdivisionSurface::texcoordPatch(int index) const {
+  return hasTexcoords() ? &impl_->texcoordPatches.at(std::size_t(index)) : nullptr;
+}
+
+LimitTexcoord SubdivisionSurface::evaluateTexcoord(int index, double u, double v) const {
+  if (!hasTexcoords()) return {};
+  const Far::PatchTable::PatchHandle& handle = impl_->handles.at(std::size_t(index));
+  double wP[20], wDu[20], wDv[20];
+  impl_->patchTable->EvaluateBasisFaceVarying(handle, u, v, wP, wDu, wDv, nullptr, nullptr, nullptr, 0);
+  const Far::PatchDescriptor::Type type = impl_->texcoordTypes[std::size_t(index)];
+  const LimitPoint sum =
+      combine(impl_->patches[std::size_t(index)], impl_->texcoordPatches[std::size_t(index)], wP, wDu, wDv,
+              impl_->patchTable->GetPatchFVarValues(handle, 0), Far::PatchDescriptor::GetNumControlVertices(type),
+              impl_->texcoordPoints, u, v);
+  return {glm::dvec2(sum.position), glm::dvec2(sum.du), glm::dvec2(sum.dv)};
 }
 
 std::optional<int> SubdivisionSurface::findPatch(int ptexFace, double u, double v) const {

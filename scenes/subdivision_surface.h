@@ -30,6 +30,11 @@
 // patch (its position is still OpenSubdiv's; the tests hold the two forms
 // equal to 1e-12).
 //
+// Texture coordinates, when the cage has them, are OpenSubdiv's
+// face-varying patches for the same patches (the refinement isolates
+// face-varying features too), of the same kinds and evaluated the same way
+// (EvaluateBasisFaceVarying; Gregory derivatives exact).
+//
 // Parameters: every patch belongs to a ptex face (a quad of the cage, or one
 // of the n quads a non-quad face is split into) and covers the square
 // domain().u0 + [0, size] x domain().v0 + [0, size] of that face's (u, v).
@@ -39,6 +44,8 @@
 
 #include "scenes/bezier_patch.h"
 #include "scenes/control_cage.h"
+
+#include <glm/vec2.hpp>
 
 #include <array>
 #include <cstddef>
@@ -66,6 +73,13 @@ struct LimitPoint {
   glm::dvec3 position{0.0};
   glm::dvec3 du{0.0};  // dP/du in face parameters
   glm::dvec3 dv{0.0};
+};
+
+// Texture coordinates and their derivatives in face parameters.
+struct LimitTexcoord {
+  glm::dvec2 uv{0.0};
+  glm::dvec2 du{0.0};  // d(uv)/du
+  glm::dvec2 dv{0.0};
 };
 
 struct PatchDomain {
@@ -125,6 +139,17 @@ class SubdivisionSurface {
 
   // The limit surface on patch `index` at face parameters (u, v).
   LimitPoint evaluatePatch(int index, double u, double v) const;
+
+  // Whether the cage carried texture coordinates.
+  bool hasTexcoords() const;
+  // The texture coordinates over patch `index` as a Bézier patch in the
+  // patch's (s, t), points (u, v, 0) laid out as bezierPatch()'s; nullptr
+  // without texture coordinates.
+  const BezierPatch* texcoordPatch(int index) const;
+  // Texture coordinates on patch `index` at face parameters (u, v), from
+  // OpenSubdiv's face-varying patch (EvaluateBasisFaceVarying; Gregory
+  // derivatives exact, as for positions); zero without texture coordinates.
+  LimitTexcoord evaluateTexcoord(int index, double u, double v) const;
   // The patch containing face point (u, v), found by Far::PatchMap; empty
   // over holes.
   std::optional<int> findPatch(int ptexFace, double u, double v) const;

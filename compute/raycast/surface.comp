@@ -56,6 +56,7 @@ layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters;
 
 #include "compute/raycast/patch_eval.glsl"
 #include "compute/raycast/limit_normal.glsl"
+#include "compute/raycast/texcoord.glsl"
 #include "compute/raycast/environment.glsl"
 #include "compute/raycast/camera_rays.glsl"
 #include "compute/shared/authored_normal.h"
@@ -185,7 +186,7 @@ void main() {
 
   if (hit.patchIndex == FACET_NO_HIT) {
     if (centre) aovs[pixel] = PixelAovs(INFINITE_DISTANCE, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, FACET_NO_HIT,
-                                        FACET_NO_HIT, 0.0, 0.0);
+                                        FACET_NO_HIT, 0.0, 0.0, 0.0, 0.0);
     for (uint slot = 0u; slot < frame.slotsPerRay; ++slot) write_unshadowed(firstSlot + slot, vec3(0.0));
     if (ENVIRONMENT != 0 && shaded) write_unshadowed(firstSlot + uint(LIGHT_COUNT), environment_radiance(direction));
     return;
@@ -208,10 +209,13 @@ void main() {
     n = -n;
     ng = -ng;
   }
-  if (centre)
+  if (centre) {
+    vec2 texcoord = surface_texcoord(record.firstTexcoord, hit.s, hit.tParam).uv;
     aovs[pixel] = PixelAovs(hit.t, position.x, position.y, position.z, ng.x, ng.y, ng.z, n.x, n.y, n.z,
                             range.patchIdOffset + record.sourcePatch, range.faceIdOffset + record.coarseFace,
-                            record.faceU0 + hit.s * record.faceSize, record.faceV0 + hit.tParam * record.faceSize);
+                            record.faceU0 + hit.s * record.faceSize, record.faceV0 + hit.tParam * record.faceSize,
+                            texcoord.x, texcoord.y);
+  }
 
   BrdfParams params = brdf_params(range.material);
   vec3 v = -direction;

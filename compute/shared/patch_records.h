@@ -11,7 +11,7 @@ const uint FACET_PATCH_GREGORY = 1u;
 const uint FACET_PATCH_POINTS_BEZIER = 16u;
 const uint FACET_PATCH_POINTS_GREGORY = 20u;
 
-// One limit-surface patch, 52 bytes, in the order of its object's patch
+// One limit-surface patch, 56 bytes, in the order of its object's patch
 // BVH leaves. Patch-local (s, t) in [0,1]^2 is face parameter
 // (u, v) = (faceU0 + s * faceSize, faceV0 + t * faceSize) on ptex face
 // `ptexFace`; hits report face, (u, v) and `sourcePatch`.
@@ -33,9 +33,18 @@ struct PatchRecord {
   uint transitionMask;  // same edge bits: the neighbour across is one level
                         // deeper, so crack-free dicing splits that edge twice as finely
   uint firstNormal;     // a mesh as authored with normals: 4 texels of authored normals, else FACET_NO_NORMALS
+  uint firstTexcoord;   // a cage with texture coordinates: its first texcoord texel, else FACET_NO_TEXCOORDS
 };
 
 const uint FACET_NO_NORMALS = 0xFFFFFFFFu;
+
+// A patch's texture coordinates, FACET_TEXCOORD_TEXELS vec4 texels of the
+// texcoord texel buffer from firstTexcoord, two (u, v) points per texel:
+// the 16 Bézier points in patchPoints' order, then the alternates of slots
+// 5, 6, 10, 9, which repeat those slots on a polynomial patch, so that every
+// texcoord patch evaluates as a Gregory patch (compute/raycast/texcoord.glsl).
+const uint FACET_TEXCOORD_TEXELS = 10u;
+const uint FACET_NO_TEXCOORDS = 0xFFFFFFFFu;
 
 // What the ray caster needs of a patch, FACET_HEADER_TEXELS uvec4 texels of
 // the patch header texel buffer (the rest of PatchRecord is read once per

@@ -200,6 +200,8 @@ struct PixelAovs {
   uint faceId;
   float u;
   float v;
+  float texcoordS;  // texture coordinates (0 on misses and without them)
+  float texcoordT;
 };
 
 #endif

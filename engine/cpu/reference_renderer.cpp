@@ -107,6 +107,8 @@ class ReferenceScene {
     image.patchId[pixel] = std::uint32_t(patchOffset_[std::size_t(hit.object)] + hit.surface.patch);
     image.faceId[pixel] = std::uint32_t(faceOffset_[std::size_t(hit.object)] + hit.surface.coarseFace);
     image.uv[pixel] = glm::vec2(float(hit.surface.u), float(hit.surface.v));
+    image.texcoord[pixel] = glm::vec2(geometry_.objects[std::size_t(hit.object)].surface.evaluateTexcoord(
+        hit.surface.patch, hit.surface.u, hit.surface.v).uv);
   }
 
   // What a camera ray that hits nothing sees.

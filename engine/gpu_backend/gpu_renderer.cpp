@@ -105,7 +105,7 @@ double sharedModel(const scene::Scene& scene, int materials::Material::*model) {
 // The scene's buffers for the GPU, rebased on the eye (gpu_scene.h): the
 // geometry, kept while it does not change, and what shades it.
 struct GeometryBuffers {
-  gpu::Buffer nodes, patches, headers, points, normals, objects, gridVertices, edgeMidpoints, cellBounds, refitOrder;
+  gpu::Buffer nodes, patches, headers, points, normals, texcoords, objects, gridVertices, edgeMidpoints, cellBounds, refitOrder;
   std::uint64_t bytes = 0;
 };
 
@@ -134,12 +134,13 @@ GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed) {
   b.headers = upload(d, "patch headers", packed.headers, texel);
   b.points = upload(d, "patch points", packed.points, texel);
   b.normals = upload(d, "authored normals", packed.normals, texel);
+  b.texcoords = upload(d, "texture coordinates", packed.texcoords, texel);
   b.objects = upload(d, "object ranges", packed.objects, in);
   b.gridVertices = d.createBuffer({"grid vertices", bufferBytes(packed.gridVertices * 16), diced});
   b.edgeMidpoints = d.createBuffer({"edge midpoints", bufferBytes(packed.edgeMidpoints * 16), diced});
   b.cellBounds = d.createBuffer({"cell bounds", bufferBytes(packed.cellBounds * 16), diced});
   b.refitOrder = upload(d, "refit order", packed.refitOrder, in);
-  for (const gpu::Buffer* buffer : {&b.nodes, &b.patches, &b.headers, &b.points, &b.normals, &b.objects, &b.gridVertices,
+  for (const gpu::Buffer* buffer : {&b.nodes, &b.patches, &b.headers, &b.points, &b.normals, &b.texcoords, &b.objects, &b.gridVertices,
                                     &b.edgeMidpoints, &b.cellBounds})
     b.bytes += buffer->size();
   return b;
@@ -165,9 +166,9 @@ ShadingBuffers uploadShading(gpu::Device& d, const scene::Scene& scene, const ib
   return b;
 }
 
-// FNV-1a over the packed arrays: the diced geometry is reused while the
-// packed scene (rebased, with its rates), the method and the tolerance are
-// the same.
+// FNV-1a over the packed arrays: the diced geometry (and the attributes
+// uploaded with it) is reused while the packed scene (rebased, with its
+// rates), the method and the tolerance are the same.
 std::uint64_t geometryKey(const GpuScene& packed, bool tessellated, float tolerance) {
   std::uint64_t hash = 0xcbf29ce484222325ull;
   auto add = [&hash](const void* data, std::size_t bytes) {
@@ -179,6 +180,8 @@ std::uint64_t geometryKey(const GpuScene& packed, bool tessellated, float tolera
   addVector(packed.patches);
   addVector(packed.headers);
   addVector(packed.points);
+  addVector(packed.normals);
+  addVector(packed.texcoords);
   addVector(packed.objects);
   add(&tessellated, sizeof tessellated);
   add(&tolerance, sizeof tolerance);
@@ -237,7 +240,7 @@ BindingTable bindingTable(const GeometryBuffers& g, const ShadingBuffers& s, con
           {21, &s.environmentSampling}, {22, &b.rayRadiance},
           {23, &s.environmentTables}, {24, &b.cameraFallbacks},
           {25, &b.shadowFallbacks}, {26, &g.refitOrder},
-          {27, &g.normals}};
+          {27, &g.normals},        {28, &g.texcoords}};
 }
 
 gpu::BindGroup bindGroup(gpu::Device& d, const gpu::ComputePipeline& pipeline, const std::string& label,
@@ -358,6 +361,7 @@ void readBand(BandBuffers& band, std::uint64_t first, std::uint64_t count, int w
     image.patchId[p] = a.patchId;
     image.faceId[p] = a.faceId;
     image.uv[p] = {a.u, a.v};
+    image.texcoord[p] = {a.texcoordS, a.texcoordT};
   }
 }
 

@@ -172,6 +172,17 @@ std::uint32_t quadtreeLevels(std::uint32_t rate) {
   return levels;
 }
 
+// A texcoord patch as FACET_TEXCOORD_TEXELS texels (compute/shared/patch_records.h).
+void packTexcoords(const scene::BezierPatch& patch, std::vector<glm::vec4>& texels) {
+  static constexpr int kInteriorSlot[4] = {5, 6, 10, 9};
+  std::array<glm::dvec3, 20> points;
+  std::copy(patch.points.begin(), patch.points.end(), points.begin());
+  for (int k = 0; k < 4; ++k) points[std::size_t(16 + k)] = patch.gregory ? patch.alternates[std::size_t(k)]
+                                                                           : patch.points[std::size_t(kInteriorSlot[k])];
+  for (std::size_t k = 0; k < points.size(); k += 2)
+    texels.push_back(glm::vec4(float(points[k].x), float(points[k].y), float(points[k + 1].x), float(points[k + 1].y)));
+}
+
 }  // namespace
 
 GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geometry, const glm::dvec3& origin,
@@ -235,6 +246,11 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
       if (const std::array<glm::dvec3, 4>* normals = surface.authoredNormals(source)) {
         record.firstNormal = std::uint32_t(packed.normals.size());
         for (const glm::dvec3& n : *normals) packed.normals.push_back(glm::vec4(glm::vec3(n), 0.0f));
+      }
+      record.firstTexcoord = layout::FACET_NO_TEXCOORDS;
+      if (const scene::BezierPatch* texcoords = surface.texcoordPatch(source)) {
+        record.firstTexcoord = std::uint32_t(packed.texcoords.size());
+        packTexcoords(*texcoords, packed.texcoords);
       }
       auto add = [&](const glm::dvec3& p) { packed.points.push_back(glm::vec4(glm::vec3(p - origin), 0.0f)); };
       for (const glm::dvec3& p : bezier.points) add(p);

@@ -20,7 +20,7 @@ using uint = std::uint32_t;
 }  // namespace facet::gpu_layout
 
 // The layout GLSL sees: 4-byte members, no padding.
-static_assert(sizeof(facet::gpu_layout::PatchRecord) == 52);
+static_assert(sizeof(facet::gpu_layout::PatchRecord) == 56);
 static_assert(offsetof(facet::gpu_layout::PatchRecord, faceU0) == 16);
 static_assert(offsetof(facet::gpu_layout::PatchRecord, transitionMask) == 44);
 static_assert(sizeof(facet::gpu_layout::ObjectRange) == 52);
@@ -35,4 +35,4 @@ static_assert(sizeof(facet::gpu_layout::HitRecord) == 32);
 static_assert(sizeof(facet::gpu_layout::LightRecord) == 48);
 static_assert(sizeof(facet::gpu_layout::MaterialRecord) == 68);
 static_assert(sizeof(facet::gpu_layout::FrameParams) == 168);
-static_assert(sizeof(facet::gpu_layout::PixelAovs) == 56);
+static_assert(sizeof(facet::gpu_layout::PixelAovs) == 64);

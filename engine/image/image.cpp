@@ -18,6 +18,7 @@ Image::Image(int w, int h) : width(w), height(h) {
   patchId.assign(n, kNoId);
   faceId.assign(n, kNoId);
   uv.assign(n, glm::vec2(0.0f));
+  texcoord.assign(n, glm::vec2(0.0f));
 }
 
 }  // namespace facet

@@ -29,6 +29,7 @@ struct Image {
   std::vector<std::uint32_t> patchId;
   std::vector<std::uint32_t> faceId;  // control-cage face
   std::vector<glm::vec2> uv;          // on that face
+  std::vector<glm::vec2> texcoord;    // texture coordinates (0 where the surface has none)
 
   std::size_t pixelCount() const { return std::size_t(width) * std::size_t(height); }
   std::size_t index(int x, int y) const { return std::size_t(y) * std::size_t(width) + std::size_t(x); }

@@ -50,6 +50,8 @@ std::vector<Channel> channels(Image& image) {
       {"faceId", Imf::UINT, reinterpret_cast<char*>(image.faceId.data()), sizeof(std::uint32_t)},
       {"uv.U", Imf::FLOAT, f(image.uv, 0), v2},
       {"uv.V", Imf::FLOAT, f(image.uv, 1), v2},
+      {"st.s", Imf::FLOAT, f(image.texcoord, 0), v2},
+      {"st.t", Imf::FLOAT, f(image.texcoord, 1), v2},
   };
 }
 

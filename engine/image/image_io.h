@@ -11,6 +11,7 @@
 //   N.X N.Y N.Z               shading (limit-surface) normal
 //   patchId faceId            32-bit unsigned (0xFFFFFFFF on misses)
 //   uv.U uv.V                 parameter on the control-cage face
+//   st.s st.t                 texture coordinates (0 on misses and on surfaces without them)
 #pragma once
 
 #include <filesystem>

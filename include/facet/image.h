@@ -17,7 +17,7 @@ struct Aov {
 };
 
 // Names: beauty (RGBA, linear radiance, alpha = coverage), depth, position,
-// geometric_normal, shading_normal, uv; ids: patch_id, face_id.
+// geometric_normal, shading_normal, uv, texcoord; ids: patch_id, face_id.
 struct Image {
   int width = 0, height = 0;
   std::map<std::string, Aov> aovs;

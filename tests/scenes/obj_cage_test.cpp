@@ -32,7 +32,7 @@ TEST(ObjCage, ReadsQuadsTrianglesAndNgonsWithEveryCornerSyntax) {
       "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0  1.0\nv 3 0.5 0\n"
       "vt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 1\n"
       "s off\ng part\no thing\nusemtl steel\n"
-      "f 1/1/1 2/2/1 3/3/1 4//1   # quad, trailing comment\n"
+      "f 1//1 2//1 3 4//1   # quad, trailing comment\n"
       "f 2 5 6 3 \n"
       "f -3 -1 -2\n"  // negative indices: 5 7 6
       "f 1 2 5 7 6 3 4\n",
@@ -77,6 +77,40 @@ TEST(ObjCage, ReadsOpenSubdivTags) {
   EXPECT_EQ(parseObjCage(kQuad + "f 1 2 3 4\n", "defaults").options.boundary, BoundaryInterpolation::EdgeOnly);
   EXPECT_EQ(parseObjCage(kQuad + "f 1 2 3 4\nt interpolateboundary 1/0/0 0\n", "none").options.boundary,
             BoundaryInterpolation::None);
+}
+
+TEST(ObjCage, ReadsTextureCoordinatesAsAFaceVaryingChannel) {
+  const ControlCage cage = parseObjCage(kQuad +
+                                            "v 2 0 0\nv 2 1 0\n"
+                                            "vt 0 0\nvt 0.5 0 7\nvt 0.5 1\nvt 0 1\nvt 0.5 0\nvt 1 0\nvn 0 0 1\n"
+                                            "f 1/1 2/2 3/3/1 4/4\n"
+                                            "f 2/-2 5/-1 6/1 3/3\n",
+                                        "uv");
+  ASSERT_EQ(cage.texcoords.size(), 6u);
+  EXPECT_EQ(cage.texcoords[1], glm::dvec2(0.5, 0.0));  // the third number is ignored
+  // Corners of vertex 1 keep their own values: a seam.
+  EXPECT_EQ(cage.faceVertexTexcoords, (std::vector<int>{0, 1, 2, 3, 4, 5, 0, 2}));
+}
+
+TEST(ObjCage, WithoutTextureCoordinatesTheChannelIsEmpty) {
+  const ControlCage cage = parseObjCage(kQuad + "vt 0 0\nf 1 2 3 4\n", "no uv");
+  EXPECT_TRUE(cage.faceVertexTexcoords.empty());
+}
+
+TEST(ObjCage, PropagateCornersChoosesBetweenTheCornersPlusRules) {
+  const std::string quad = kQuad + "f 1 2 3 4\n";
+  using FV = FaceVaryingInterpolation;
+  const auto rule = [&](const std::string& tags) { return parseObjCage(quad + tags, "tags").options.faceVarying; };
+  EXPECT_EQ(rule("t facevaryinginterpolateboundary 1/0/0 2\nt facevaryingpropagatecorners 1/0/0 1\n"),
+            FV::CornersPlus2);
+  // The order of the tags does not matter.
+  EXPECT_EQ(rule("t facevaryingpropagatecorners 1/0/0 1\nt facevaryinginterpolateboundary 1/0/0 2\n"),
+            FV::CornersPlus2);
+  EXPECT_EQ(rule("t facevaryinginterpolateboundary 1/0/0 3\nt facevaryingpropagatecorners 1/0/0 0\n"),
+            FV::CornersPlus1);
+  EXPECT_EQ(rule("t facevaryinginterpolateboundary 1/0/0 1\nt facevaryingpropagatecorners 1/0/0 1\n"),
+            FV::CornersOnly);
+  EXPECT_EQ(rule("t facevaryingpropagatecorners 1/0/0 1\n"), FV::All);
 }
 
 TEST(ObjCage, LoadsEveryTortureCage) {
@@ -124,6 +158,11 @@ const BadCage kBadCages[] = {
     {kQuad + "f 1 2 3 4\nt crease 4/3/0 0 1 1 2 1.0 2.0 3.0\n", 6, "malformed tag"},
     {kQuad + "f 1 2 3 4\nt interpolateboundary 1/0/0 7\n", 6, "unknown option"},
     {kQuad + "f 1 2 3 4\nt creasemethod 0/0/1 sharp\n", 6, "unknown option"},
+    {kQuad + "f 1 2 3 4\nt facevaryingpropagatecorners 1/0/0 2\n", 6, "unknown option"},
+    {kQuad + "f 1 2 3 4\nt facevaryingpropagatecorners 0/0/1 yes\n", 6, "malformed tag"},
+    {kQuad + "vt 0 0\nvt 1 0 0 0\n", 6, "malformed texture coordinate"},
+    {kQuad + "vt 0 nan\n", 5, "non-finite value"},
+    {kQuad + "vt inf 0\n", 5, "non-finite value"},
     {kQuad + "f 1 2 3 4\nt vertexedit 1/0/0 0\n", 6, "unknown tag"},
     {kQuad + "f 1 2 3 4\nt crease 2/1/0 0 1 -1.0\n", 6, "negative sharpness"},
     {"# nothing but a comment\nv 0 0 0\n", 2, "empty cage"},
@@ -138,6 +177,11 @@ const BadCage kBadCages[] = {
     {kQuad + "f 1 2 3 0\n", 5, "index out of range"},
     {kQuad + "f -5 -1 -2\n", 5, "index out of range"},
     {kQuad + "vt 0 0\nf 1/2 2/1 3/1\n", 6, "index out of range"},
+    {kQuad + "vt 0 0\nf 1/1 2/-2 3/1\n", 6, "index out of range"},
+    {kQuad + "vt 0 0\nf 1/0 2/1 3/1\n", 6, "index out of range"},
+    // Texture coordinates on some corners only: named on the first face that lacks one.
+    {kQuad + "vt 0 0\nf 1/1 2/1 3/1\nf 1/1 3/1 4\n", 7, "missing texture coordinate"},
+    {kQuad + "vt 0 0\nf 1 2 3\nf 1/1 3/1 4/1\n", 6, "missing texture coordinate"},
     {kQuad + "vn 0 0 1\nf 1//1 2//2 3//1\n", 6, "index out of range"},
     // Reported on the face's line even when found after the last line.
     {kQuad + "f 1 2 3 4\nf 1 3 9\n# trailer\n", 6, "index out of range"},

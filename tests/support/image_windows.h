@@ -27,7 +27,8 @@ inline std::vector<std::string> pixelsThatDiffer(const Image& whole, const Image
       if (!same(crop.beauty[c], whole.beauty[w]) || !same(crop.depth[c], whole.depth[w]) ||
           !same(crop.position[c], whole.position[w]) || !same(crop.geometricNormal[c], whole.geometricNormal[w]) ||
           !same(crop.shadingNormal[c], whole.shadingNormal[w]) || !same(crop.patchId[c], whole.patchId[w]) ||
-          !same(crop.faceId[c], whole.faceId[w]) || !same(crop.uv[c], whole.uv[w]))
+          !same(crop.faceId[c], whole.faceId[w]) || !same(crop.uv[c], whole.uv[w]) ||
+          !same(crop.texcoord[c], whole.texcoord[w]))
         differ.push_back("(" + std::to_string(window.x0 + x) + ", " + std::to_string(window.y0 + y) + ")");
     }
   return differ;

@@ -24,6 +24,7 @@ inline Image randomImage(int w, int h) {
     image.patchId[i] = std::uint32_t(rng());
     image.faceId[i] = std::uint32_t(rng());
     image.uv[i] = {u(rng), u(rng)};
+    image.texcoord[i] = {u(rng), u(rng)};
   }
   return image;
 }

@@ -212,6 +212,62 @@ TEST_F(FloatRange, TheGpuRefusesAnEnvironmentBeyondFloatsReach) {
   }
 }
 
+// The texcoord AOV on the checker cube (seams, creases, corners-only rule),
+// subdivided and as authored: where both backends hit the same patch their
+// texture coordinates agree to kTexcoordTolerance, a few times what float
+// evaluation at the GPU's own hit parameters leaves; elsewhere a seam may
+// make them jump.
+constexpr double kTexcoordTolerance = 1e-5;
+
+struct TexcoordCase {
+  scene::IntersectionMethod method;
+  scene::Subdivision subdivision;
+};
+
+class TexcoordParity : public gpu::testing::GpuTest, public ::testing::WithParamInterface<TexcoordCase> {};
+
+TEST_P(TexcoordParity, TheTexcoordAovMatchesTheCpuReference) {
+  scene::Scene scene = scene::loadScene(std::filesystem::path(FACET_TEST_DATA_DIR) / "uv_checker_cube.obj");
+  scene.render.width = 64;
+  scene.render.height = 48;
+  scene.render.method = GetParam().method;
+  scene.objects.at(0).subdivision = GetParam().subdivision;
+  const scene::SceneGeometry geometry = scene::buildGeometry(scene);
+  const Image reference = cpu::renderReference(scene, geometry);
+  gpu_backend::GpuRenderer renderer(device_);
+  const Image gpu = renderer.render(scene, geometry).image;
+  const ParityReport parity = compareImages(reference, gpu);
+  EXPECT_TRUE(parity.pass) << describe(parity);
+
+  std::size_t covered = 0, samePatch = 0;
+  double largest = 0;
+  for (std::size_t p = 0; p < reference.pixelCount(); ++p) {
+    if (reference.patchId[p] == Image::kNoId || gpu.patchId[p] == Image::kNoId) continue;
+    ++covered;
+    if (reference.patchId[p] != gpu.patchId[p]) continue;
+    ++samePatch;
+    largest = std::max(largest, double(glm::distance(reference.texcoord[p], gpu.texcoord[p])));
+  }
+  EXPECT_LE(largest, kTexcoordTolerance);
+  EXPECT_GT(covered, 300u);
+  EXPECT_GT(double(samePatch), 0.95 * double(covered));
+  // The coordinates are there, not zero: the checker spans [0, 1] x [0, 0.75].
+  const auto [low, high] = std::minmax_element(reference.texcoord.begin(), reference.texcoord.end(),
+                                               [](const glm::vec2& a, const glm::vec2& b) { return a.x < b.x; });
+  EXPECT_LT(low->x, 0.1f);
+  EXPECT_GT(high->x, 0.6f);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    UvCheckerCube, TexcoordParity,
+    ::testing::Values(TexcoordCase{scene::IntersectionMethod::Exact, scene::Subdivision::CatmullClark},
+                      TexcoordCase{scene::IntersectionMethod::Tessellated, scene::Subdivision::CatmullClark},
+                      TexcoordCase{scene::IntersectionMethod::Exact, scene::Subdivision::None}),
+    [](const ::testing::TestParamInfo<TexcoordCase>& info) {
+      return std::string(info.param.method == scene::IntersectionMethod::Exact ? "exact" : "tess") +
+             (info.param.subdivision == scene::Subdivision::None ? "_as_authored" : "_subdivided");
+    });
+
 class GpuRendererTest : public gpu::testing::GpuTest {};
 
 // The largest dicing rate --tess-level takes covers what the CPU covers.

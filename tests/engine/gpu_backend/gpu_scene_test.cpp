@@ -4,6 +4,8 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -223,6 +225,46 @@ class SpirvLayout {
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> offsets_;
 };
 
+// Texcoord texels read back as the Gregory patch texcoord.glsl evaluates
+// are OpenSubdiv's face-varying patch, to float precision.
+TEST(PackedTexcoords, AreTheFaceVaryingPatchesInGregoryForm) {
+  const scene::Scene scene = scene::loadScene(std::filesystem::path(FACET_TEST_DATA_DIR) / "uv_checker_cube.obj");
+  const scene::SceneGeometry geometry = scene::buildGeometry(scene);
+  const scene::SubdivisionSurface& surface = geometry.objects[0].surface;
+  const GpuScene packed = packScene(scene, geometry, scene.camera.eye, 0.0, false);
+  ASSERT_EQ(packed.texcoords.size(), layout::FACET_TEXCOORD_TEXELS * packed.patches.size());
+  double worst = 0.0;
+  for (const layout::PatchRecord& record : packed.patches) {
+    ASSERT_NE(record.firstTexcoord, layout::FACET_NO_TEXCOORDS);
+    scene::BezierPatch fromGpu;
+    fromGpu.gregory = true;
+    std::array<glm::dvec3, 20> points;
+    for (std::uint32_t k = 0; k < layout::FACET_TEXCOORD_TEXELS; ++k) {
+      const glm::vec4 texel = packed.texcoords[record.firstTexcoord + k];
+      points[2 * k] = glm::dvec3(texel.x, texel.y, 0.0);
+      points[2 * k + 1] = glm::dvec3(texel.z, texel.w, 0.0);
+    }
+    std::copy(points.begin(), points.begin() + 16, fromGpu.points.begin());
+    std::copy(points.begin() + 16, points.end(), fromGpu.alternates.begin());
+    for (double s : {0.0, 0.3, 0.8})
+      for (double t : {0.1, 0.5, 1.0}) {
+        const scene::LimitTexcoord osd = surface.evaluateTexcoord(
+            int(record.sourcePatch), record.faceU0 + s * record.faceSize, record.faceV0 + t * record.faceSize);
+        const scene::BezierSample gpu = scene::evaluateBezierPatch(fromGpu, s, t);
+        worst = std::max({worst, glm::distance(glm::dvec2(gpu.position), osd.uv),
+                          glm::distance(glm::dvec2(gpu.du), osd.du * double(record.faceSize))});
+      }
+  }
+  EXPECT_LT(worst, 1e-6);
+}
+
+TEST(PackedTexcoords, ACageWithoutThemHasNone) {
+  const scene::Scene scene = cageScene("cube");
+  const GpuScene packed = packScene(scene, scene::buildGeometry(scene), scene.camera.eye, 0.0, false);
+  EXPECT_TRUE(packed.texcoords.empty());
+  for (const layout::PatchRecord& record : packed.patches) EXPECT_EQ(record.firstTexcoord, layout::FACET_NO_TEXCOORDS);
+}
+
 TEST(GpuLayout, GlslLayoutOfTheSharedHeadersIsTheCppLayout) {
   using namespace gpu_layout;
   ASSERT_GT(facet::test_spirv::gpu_layout.size(), 5u);
@@ -242,6 +284,7 @@ TEST(GpuLayout, GlslLayoutOfTheSharedHeadersIsTheCppLayout) {
   FACET_EXPECT_MEMBER(PatchRecord, sourcePatch);
   FACET_EXPECT_MEMBER(PatchRecord, transitionMask);
   FACET_EXPECT_MEMBER(PatchRecord, firstNormal);
+  FACET_EXPECT_MEMBER(PatchRecord, firstTexcoord);
   FACET_EXPECT_MEMBER(ObjectRange, firstPatch);
   FACET_EXPECT_MEMBER(FrameParams, rootNode);
   FACET_EXPECT_MEMBER(ObjectRange, rate);

@@ -41,6 +41,7 @@ TEST_F(ImageIo, ExrRoundTripKeepsEveryChannelBitExact) {
   EXPECT_EQ(back.patchId, image.patchId);
   EXPECT_EQ(back.faceId, image.faceId);
   EXPECT_EQ(back.uv, image.uv);
+  EXPECT_EQ(back.texcoord, image.texcoord);
   EXPECT_EQ(files().size(), 1u) << "no temporary file may remain";
 }
 

@@ -22,7 +22,7 @@ void main() {
   ShadowRayRecord r = shadowRays[0];
   FallbackRecord f = fallbacks[0];
   counters.cameraFallbacks = f.ray + f.cell + uint(f.t) + f.patchIndex + uint(f.tParam) + frame.fallbackCapacity +
-                             p.kind + p.firstPoint + uint(p.faceU0) + p.sourcePatch + p.transitionMask + p.firstNormal + o.firstPatch + frame.rootNode +
+                             p.kind + p.firstPoint + uint(p.faceU0) + p.sourcePatch + p.transitionMask + p.firstNormal + p.firstTexcoord + o.firstPatch + frame.rootNode +
                              o.rate + o.firstQuadtreeNode + o.firstEdgeMidpoint + uint(r.ray.tMax) + r.slot +
                              hits[0].patchIndex + frame.patchCount + uint(frame.tolerance) + frame.dfgSize +
                              FACET_BVH4_TEXELS;
