@@ -82,25 +82,28 @@ FACET_FN vec3 mapped_normal(vec3 n, vec3 dp_ds, vec3 dp_dt, vec2 duv_ds, vec2 du
 // (glTF: 1 + strength (occlusion - 1)).
 FACET_FN real occlusion_factor(real occlusion, real strength) { return real(1) + strength * (occlusion - real(1)); }
 
-// A textured material at a hit: its BRDF parameters, shading normal and the
-// share of the environment's light that reaches it.
+// A textured material at a hit: its BRDF parameters, shading normal, the
+// share of the environment's light that reaches it and the radiance it emits.
 struct TexturedSurface {
   BrdfParams params;
   vec3 n;
   real occlusion;
+  vec3 emission;
 };
 
 // From the material's glTF factors and its slots' values (1 where a slot is
 // empty; `normal_mapped` false keeps n): base colour RGB, metallic-roughness
-// G roughness and B metallic, the normal map's RGB, occlusion R.
+// G roughness and B metallic, the normal map's RGB, occlusion R, emission RGB.
 FACET_FN TexturedSurface textured_surface(BrdfParams p, vec3 n, TextureFootprint f, vec3 base_factor,
                                           real metallic_factor, real roughness_factor, real normal_scale,
-                                          real occlusion_strength, vec3 base, vec3 metallic_roughness,
-                                          bool normal_mapped, vec3 normal_texel, real occlusion) {
+                                          real occlusion_strength, vec3 emission_factor, vec3 base,
+                                          vec3 metallic_roughness, bool normal_mapped, vec3 normal_texel,
+                                          real occlusion, vec3 emission) {
   TexturedSurface surface;
   surface.params = metallic_roughness_params(p, base_factor * base, metallic_factor * metallic_roughness.z,
                                              roughness_factor * metallic_roughness.y);
   surface.n = normal_mapped ? mapped_normal(n, f.dp_ds, f.dp_dt, f.duv_ds, f.duv_dt, normal_texel, normal_scale) : n;
   surface.occlusion = occlusion_factor(occlusion, occlusion_strength);
+  surface.emission = emission_factor * emission;
   return surface;
 }
