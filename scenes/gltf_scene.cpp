@@ -36,11 +36,13 @@ struct ElementFormat {
   std::size_t components;
   std::array<int, 3> componentTypes;  // unused slots repeat the first
   const char* name;
+  bool normalizable = false;  // integer components may be normalized
 };
 constexpr ElementFormat kFloatVec3{
     3, {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_FLOAT}, "FLOAT VEC3"};
-constexpr ElementFormat kFloatVec2{
-    2, {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_FLOAT}, "FLOAT VEC2"};
+constexpr ElementFormat kTexcoord{
+    2, {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+    "VEC2 of FLOAT, UNSIGNED_BYTE or UNSIGNED_SHORT", true};
 constexpr ElementFormat kVertexIndex{1,
                                      {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
                                       TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
@@ -63,7 +65,8 @@ class GltfReader {
   }
 
   // The elements of an accessor as doubles (components × count), checked
-  // against `format` and against the bounds of its buffer.
+  // against `format` and against the bounds of its buffer; normalized
+  // integers of a format that allows them map to [0, 1] (glTF 2.0, 3.11).
   std::vector<double> read(int accessorIndex, const std::string& where, const ElementFormat& format) const {
     if (accessorIndex < 0 || std::size_t(accessorIndex) >= model_.accessors.size())
       fail(where, "accessor index out of range");
@@ -87,12 +90,15 @@ class GltfReader {
       fail(where, accessor + " (count " + std::to_string(a.count) + ", byteOffset " + std::to_string(a.byteOffset) +
                       ", stride " + std::to_string(stride) + ") reads past the end of its buffer");
     const unsigned char* begin = data.data() + view.byteOffset + a.byteOffset;
+    double range = 1.0;
+    if (format.normalizable && a.normalized && a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) range = 255;
+    if (format.normalizable && a.normalized && a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) range = 65535;
     std::vector<double> out;
     out.reserve(a.count * components);
     for (std::size_t i = 0; i < a.count; ++i) {
       const unsigned char* element = begin + i * stride;
       for (std::size_t c = 0; c < components; ++c)
-        out.push_back(component(element + c * componentBytes, a.componentType));
+        out.push_back(component(element + c * componentBytes, a.componentType) / range);
     }
     return out;
   }
@@ -501,7 +507,7 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
     }
     std::vector<double> uv;
     if (texcoords) {
-      uv = reader.read(primitive.attributes.at("TEXCOORD_0"), at + ".TEXCOORD_0", kFloatVec2);
+      uv = reader.read(primitive.attributes.at("TEXCOORD_0"), at + ".TEXCOORD_0", kTexcoord);
       if (uv.size() / 2 != remap.size()) reader.fail(at, "TEXCOORD_0 and POSITION have different counts");
       for (std::size_t v = 0; v < uv.size(); ++v)
         if (!std::isfinite(uv[v])) reader.fail(at, "TEXCOORD_0 " + std::to_string(v / 2) + " is not finite");

@@ -78,6 +78,19 @@ TEST_F(GltfTexcoords, BecomeOneValuePerWeldedVertexAndCoordinate) {
   EXPECT_EQ(cage.texcoords[std::size_t(cage.faceVertexTexcoords[4])], glm::dvec2(0.5, 1.0));
 }
 
+TEST_F(GltfTexcoords, NormalizedIntegersMapToTheUnitSquare) {
+  // The index bytes 0, 1, 3, 4, 2, 3 read as three normalized VEC2s.
+  nlohmann::json bytes = quad();
+  bytes["accessors"].push_back(
+      {{"bufferView", 2}, {"componentType", 5121}, {"normalized", true}, {"count", 3}, {"type", "VEC2"}});
+  bytes["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = 3;
+  bytes["meshes"][0]["primitives"][0].erase("indices");
+  bytes["accessors"][0]["count"] = 3;
+  const ControlCage& cage = loadScene(write(bytes)).objects.at(0).cage;
+  ASSERT_EQ(cage.texcoords.size(), 3u);
+  EXPECT_EQ(cage.texcoords[1], glm::dvec2(3.0 / 255, 4.0 / 255));
+}
+
 TEST_F(GltfTexcoords, AreOnlyReadWhenEveryPrimitiveHasThem) {
   nlohmann::json document = quad();
   document["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", 0}}}, {"indices", 2}});
@@ -90,7 +103,8 @@ TEST_F(GltfTexcoords, BreakingTheirRulesIsAnError) {
   EXPECT_THAT(errorOf(count), HasSubstr("meshes[0].primitives[0]: TEXCOORD_0 and POSITION have different counts"));
   nlohmann::json type = quad();
   type["accessors"][1]["type"] = "VEC3";
-  EXPECT_THAT(errorOf(type), HasSubstr("meshes[0].primitives[0].TEXCOORD_0: accessors[1] must be FLOAT VEC2"));
+  EXPECT_THAT(errorOf(type), HasSubstr("meshes[0].primitives[0].TEXCOORD_0: accessors[1] must be VEC2 of FLOAT, "
+                                       "UNSIGNED_BYTE or UNSIGNED_SHORT"));
   nlohmann::json past = quad();
   past["accessors"][1]["byteOffset"] = 8;
   EXPECT_THAT(errorOf(past), HasSubstr("TEXCOORD_0: accessors[1] (count 5, byteOffset 8, stride 8) reads past the "

@@ -224,6 +224,11 @@ struct TexcoordCase {
   scene::Subdivision subdivision;
 };
 
+void PrintTo(const TexcoordCase& c, std::ostream* out) {
+  *out << (c.method == scene::IntersectionMethod::Exact ? "exact" : "tessellated")
+       << (c.subdivision == scene::Subdivision::None ? ", as authored" : ", subdivided");
+}
+
 class TexcoordParity : public gpu::testing::GpuTest, public ::testing::WithParamInterface<TexcoordCase> {};
 
 TEST_P(TexcoordParity, TheTexcoordAovMatchesTheCpuReference) {

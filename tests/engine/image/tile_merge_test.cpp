@@ -42,6 +42,7 @@ Image cropOf(const Image& whole, const PixelRect& window) {
       crop.patchId[c] = whole.patchId[w];
       crop.faceId[c] = whole.faceId[w];
       crop.uv[c] = whole.uv[w];
+      crop.texcoord[c] = whole.texcoord[w];
     }
   return crop;
 }
