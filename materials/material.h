@@ -15,6 +15,31 @@
 
 namespace facet::materials {
 
+// A texture a material reads, an index into the scene's textures, and the
+// KHR_texture_transform of its coordinates.
+struct TextureSlot {
+  int texture = -1;  // none
+  glm::dvec2 offset{0.0};
+  double rotation = 0.0;  // radians
+  glm::dvec2 scale{1.0};
+};
+
+// glTF's metallic-roughness parameters, kept for a textured material: its
+// textures modulate them per hit, which then map to diffuse, f0 and alpha
+// as for an untextured one (docs/shading.md, "glTF materials").
+struct MaterialTextures {
+  glm::dvec3 baseColor{1.0};
+  double metallic = 1.0;
+  double roughness = 1.0;
+  TextureSlot baseColorTexture;          // sRGB; RGB multiplies baseColor
+  TextureSlot metallicRoughnessTexture;  // G multiplies roughness, B metallic
+  TextureSlot normalTexture;             // tangent space, XY scaled by normalScale
+  double normalScale = 1.0;
+  TextureSlot occlusionTexture;  // R scales the environment's light, by occlusionStrength
+  double occlusionStrength = 1.0;
+  TextureSlot emissiveTexture;  // sRGB; RGB multiplies emission
+};
+
 struct Material {
   std::string name;
   int distribution = f64::D_GGX;
@@ -25,6 +50,8 @@ struct Material {
   glm::dvec3 eta{1.5};  // index of refraction (dielectric) or its real part (conductor)
   glm::dvec3 k{0.0};    // extinction coefficient (conductor)
   glm::dvec3 diffuse{0.0};
+  glm::dvec3 emission{0.0};                  // radiance the surface emits, added to what it reflects
+  std::optional<MaterialTextures> textures;  // set when the material reads any texture
 };
 
 f64::BrdfParams toParams64(const Material& material);

@@ -6,8 +6,11 @@
 #include <ImfInputFile.h>
 
 // The one translation unit that compiles stb_image's implementation; only
-// its Radiance reader is needed.
+// its Radiance reader is needed. Static, so that no stbi symbol leaves the
+// binary: a shared library that links Debian's full stb_image (tinygltf
+// decoding PNG and JPEG) would otherwise bind to this HDR-only copy.
 #define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_STATIC
 #define STBI_ONLY_HDR
 #define STBI_NO_STDIO
 #include <stb_image.h>

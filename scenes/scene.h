@@ -15,6 +15,7 @@
 #include "scenes/control_cage.h"
 #include "scenes/environment_map.h"
 #include "scenes/subdivision_surface.h"
+#include "scenes/texture.h"
 #include "materials/material.h"
 
 namespace facet::scene {
@@ -113,6 +114,7 @@ struct Scene {
   Camera camera;
   std::vector<CameraKey> cameraKeys;  // by frame; empty: `camera` in every frame
   std::vector<materials::Material> materials;
+  std::vector<Texture> textures;  // what materials' texture slots index
   std::vector<Object> objects;
   std::vector<Light> lights;
   std::optional<Environment> environment;

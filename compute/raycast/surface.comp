@@ -14,9 +14,10 @@
 // Specialization: LIGHT_COUNT, ENVIRONMENT
 // (0 none, 1 sampled, 2 prefiltered, 3 filtered), OCCLUSION (sampled,
 // filtered: 1 traces the environment's shadow rays), ENVIRONMENT_SAMPLES
-// (filtered: 1 adds the environment technique), and the BRDF models D_MODEL, G_MODEL,
+// (filtered: 1 adds the environment technique), the BRDF models D_MODEL, G_MODEL,
 // F_MODEL, each -1 when the scene's materials use several (the model is then
-// read per material).
+// read per material), TEXTURES (1 when some material reads a texture) and
+// EMISSION (1 when some material emits: each ray's last slot holds it).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -36,6 +37,8 @@
 #include "compute/shared/sampled_environment.h"
 #include "compute/shared/prefilter.h"
 #include "compute/shared/filtered_environment.h"
+#include "compute/shared/texture_sampling.h"
+#include "compute/shared/textured_material.h"
 
 layout(constant_id = 1) const int LIGHT_COUNT = 1;
 layout(constant_id = 2) const int D_MODEL = -1;
@@ -44,6 +47,8 @@ layout(constant_id = 4) const int F_MODEL = -1;
 layout(constant_id = 5) const int ENVIRONMENT = 0;
 layout(constant_id = 6) const int OCCLUSION = 1;
 layout(constant_id = 7) const int ENVIRONMENT_SAMPLES = 0;
+layout(constant_id = 8) const int TEXTURES = 0;
+layout(constant_id = 9) const int EMISSION = 0;
 
 layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
 layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord materials[]; };
@@ -60,6 +65,7 @@ layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters;
 #include "compute/raycast/environment.glsl"
 #include "compute/raycast/camera_rays.glsl"
 #include "compute/shared/authored_normal.h"
+#include "compute/raycast/textures.glsl"
 
 // The shading normal: a mesh's authored normals interpolated where it has
 // them (turned to the side of the surface's normal `limit`), else `limit`
@@ -100,6 +106,23 @@ void write_shadowed(uint slot, vec3 radiance, vec3 position, vec3 ng, vec3 direc
       RayRecord(origin.x, origin.y, origin.z, frame.shadowOffset, direction.x, direction.y, direction.z, tMax), slot);
 }
 
+// A textured material at a hit on patch `record` of points `c`, seen along
+// `direction` from distance t, with shading normal n and geometric normal ng
+// facing the eye (the CPU reference's ReferenceScene::texturedSurface).
+TexturedSurface textured_hit(MaterialRecord m, PatchRecord record, ControlPoints c, HitRecord hit, BrdfParams params,
+                             vec3 n, vec3 ng, vec3 direction) {
+  PatchSample p = evaluate_patch(c, hit.s, hit.tParam);
+  SurfaceTexcoord uv = surface_texcoord(record.firstTexcoord, hit.s, hit.tParam);
+  TextureFootprint f = TextureFootprint(uv.uv, uv.ds, uv.dt, p.ds, p.dt,
+                                        hit.t * camera_cone_spread(frame.tanHalfFovY, frame.height),
+                                        abs(dot(ng, direction)));
+  return textured_surface(params, n, f, vec3(m.baseR, m.baseG, m.baseB), m.metallic, m.roughness, m.normalScale,
+                          m.occlusionStrength, vec3(m.emissionR, m.emissionG, m.emissionB),
+                          slot_value(m.baseColorTexture, f).rgb, slot_value(m.metallicRoughnessTexture, f).rgb,
+                          m.normalTexture.texture != FACET_NO_TEXTURE, slot_value(m.normalTexture, f).rgb,
+                          slot_value(m.occlusionTexture, f).r, slot_value(m.emissiveTexture, f).rgb);
+}
+
 // Sampled or filtered method, one sample of either technique: its share for
 // radiance `incoming`, and with OCCLUSION its shadow ray for `slot`.
 void environment_sample(uint slot, BrdfParams params, vec3 position, vec3 n, vec3 ng, vec3 v, MisSample s,
@@ -114,9 +137,9 @@ void environment_sample(uint slot, BrdfParams params, vec3 position, vec3 n, vec
     write_unshadowed(slot, vec3(0.0));
 }
 
-// The environment's slots from `first` on.
+// The environment's slots from `first` on, its light scaled by `occlusion`.
 void shade_environment(uint first, uint pixel, uint sample_index, uint material, BrdfParams params, vec3 position,
-                       vec3 n, vec3 ng, vec3 v) {
+                       vec3 n, vec3 ng, vec3 v, float occlusion) {
   if (ENVIRONMENT == 2) {
     float nv = dot(n, v);
     if (nv <= COS_EPSILON) {  // nothing to look up (the lobe may not even exist)
@@ -127,7 +150,7 @@ void shade_environment(uint first, uint pixel, uint sample_index, uint material,
     vec3 radiance = split_sum(params, nv, prefiltered_radiance(to_map(lobe), params.alpha),
                               dfg_lookup(materials[material].dfgTable, nv, params.alpha),
                               irradiance_over_pi(to_map(n)));
-    write_unshadowed(first, frame.environmentIntensity * radiance);
+    write_unshadowed(first, occlusion * frame.environmentIntensity * radiance);
     return;
   }
   // Per pair, the environment technique's slot (if drawn), then the BRDF technique's.
@@ -141,7 +164,8 @@ void shade_environment(uint first, uint pixel, uint sample_index, uint material,
     if (with_environment) {
       vec4 e = sample_environment(pair.texel_bits, pair.environment_u);
       MisSample s = environment_technique_sample(params, n, v, from_map(e.xyz), e.w);
-      environment_sample(slot, params, position, n, ng, v, s, environment_radiance(s.direction), unshadowed);
+      environment_sample(slot, params, position, n, ng, v, s, occlusion * environment_radiance(s.direction),
+                         unshadowed);
     }
     MisSample s = brdf_technique_sample(params, n, v, pair.brdf_direction, 0.0);
     vec3 incoming;
@@ -155,7 +179,7 @@ void shade_environment(uint first, uint pixel, uint sample_index, uint material,
       s.other_pdf = environment_pdf(to_map(s.direction));
       incoming = environment_radiance(s.direction);
     }
-    environment_sample(slot + stride - 1u, params, position, n, ng, v, s, incoming, unshadowed);
+    environment_sample(slot + stride - 1u, params, position, n, ng, v, s, occlusion * incoming, unshadowed);
   }
   if (OCCLUSION == 0) write_unshadowed(first, unshadowed);
 }
@@ -218,6 +242,16 @@ void main() {
   }
 
   BrdfParams params = brdf_params(range.material);
+  MaterialRecord m = materials[range.material];
+  float occlusion = 1.0;
+  vec3 emission = vec3(m.emissionR, m.emissionG, m.emissionB);
+  if (TEXTURES == 1 && m.textured == 1u) {
+    TexturedSurface surface = textured_hit(m, record, c, hit, params, n, ng, direction);
+    params = surface.params;
+    n = surface.n;
+    occlusion = surface.occlusion;
+    emission = surface.emission;
+  }
   vec3 v = -direction;
   for (int l = 0; l < LIGHT_COUNT; ++l) {
     LightIncidence incidence = light_incidence(punctual_light(lights[l]), position);
@@ -232,9 +266,10 @@ void main() {
     // of one invocation count against lavapipe's limit of 65535.
     uint first = firstSlot + uint(LIGHT_COUNT);
     if (shaded)
-      shade_environment(first, frame.firstPixel + pixel, sample_index, range.material, params, position,
-                                  n, ng, v);
+      shade_environment(first, frame.firstPixel + pixel, sample_index, range.material, params, position, n, ng, v,
+                        occlusion);
     else
       for (uint slot = first; slot < firstSlot + frame.slotsPerRay; ++slot) write_unshadowed(slot, vec3(0.0));
   }
+  if (EMISSION == 1) write_unshadowed(firstSlot + frame.slotsPerRay - 1u, shaded ? emission : vec3(0.0));
 }

@@ -114,7 +114,23 @@ struct LightRecord {
   float cosInner;
 };
 
-// A material as BrdfParams wants it (materials/shading/brdf.h).
+// A texture a material reads (an index into the texture table of
+// compute/raycast/textures.glsl, FACET_NO_TEXTURE for none) and its
+// KHR_texture_transform.
+const uint FACET_NO_TEXTURE = 0xFFFFFFFFu;
+struct TextureSlotRecord {
+  uint texture;
+  float offsetX;
+  float offsetY;
+  float cosRotation;
+  float sinRotation;
+  float scaleX;
+  float scaleY;
+};
+
+// A material as BrdfParams wants it (materials/shading/brdf.h), the
+// radiance it emits, and, when `textured`, the glTF parameters its textures
+// modulate per hit (compute/shared/textured_material.h).
 struct MaterialRecord {
   int dModel;
   int gModel;
@@ -133,6 +149,22 @@ struct MaterialRecord {
   float diffuseG;
   float diffuseB;
   uint dfgTable;  // prefiltered environment: which DFG table (by the material's D and G)
+  float emissionR;
+  float emissionG;
+  float emissionB;
+  uint textured;
+  float baseR;
+  float baseG;
+  float baseB;
+  float metallic;
+  float roughness;
+  float normalScale;
+  float occlusionStrength;
+  TextureSlotRecord baseColorTexture;
+  TextureSlotRecord metallicRoughnessTexture;
+  TextureSlotRecord normalTexture;
+  TextureSlotRecord occlusionTexture;
+  TextureSlotRecord emissiveTexture;
 };
 
 // What the camera-side kernels need, one uniform block (std140 agrees: all

@@ -17,6 +17,7 @@
 #include "engine/ibl/environment_math.h"
 #include "engine/ibl/environment_mip_chain.h"
 #include "materials/material.h"
+#include "materials/texture_shading.h"
 
 namespace facet::cpu {
 namespace {
@@ -36,6 +37,8 @@ class ReferenceScene {
     if (scene.render.exactTolerance)
       exactSettings_.tolerance = *scene.render.exactTolerance * geometry.bounds.diagonal();
     shadowOffset_ = m::shadow_ray_offset(geometry.bounds.diagonal(), exactSettings_.tolerance);
+    coneSpread_ = m::camera_cone_spread(std::tan(glm::radians(0.5 * scene.camera.verticalFovDegrees)),
+                                        double(scene.render.height));
     int patches = 0, faces = 0;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
       patchOffset_.push_back(patches);
@@ -72,21 +75,31 @@ class ReferenceScene {
     const glm::dvec3 v = -direction;
     glm::dvec3 n = hit.surface.shadingNormal, ng = hit.surface.geometricNormal;
     if (glm::dot(ng, v) < 0) n = -n, ng = -ng;
-    const auto& params = params_[std::size_t(hit.object)];
-    glm::dvec3 radiance(0.0);
+    m::BrdfParams params = params_[std::size_t(hit.object)];
+    const int material = scene_.objects[std::size_t(hit.object)].material;
+    double occlusion = 1.0;
+    glm::dvec3 radiance = scene_.materials[std::size_t(material)].emission;
+    if (const auto& textures = scene_.materials[std::size_t(material)].textures) {
+      const m::TexturedSurface surface = texturedSurface(hit, *textures, params, n, ng, direction, radiance);
+      params = surface.params;
+      n = surface.n;
+      occlusion = surface.occlusion;
+      radiance = surface.emission;
+    }
     if (environment_) {
-      const int material = scene_.objects[std::size_t(hit.object)].material;
+      glm::dvec3 environment(0.0);
       switch (environment_->environment->method) {
         case scene::IblMethod::Sampled:
-          radiance += sampledEnvironment(params, hit.surface.position, n, ng, v, pixel, sample, shadowRays);
+          environment = sampledEnvironment(params, hit.surface.position, n, ng, v, pixel, sample, shadowRays);
           break;
         case scene::IblMethod::Prefiltered:
-          radiance += prefilteredEnvironment(params, material, n, v);
+          environment = prefilteredEnvironment(params, material, n, v);
           break;
         case scene::IblMethod::Filtered:
-          radiance += filteredEnvironment(params, hit.surface.position, n, ng, v, pixel, sample, shadowRays);
+          environment = filteredEnvironment(params, hit.surface.position, n, ng, v, pixel, sample, shadowRays);
           break;
       }
+      radiance += occlusion * environment;
     }
     for (const scene::Light& light : scene_.lights) {
       const m::LightIncidence incidence = m::light_incidence(punctualLight(light), hit.surface.position);
@@ -117,6 +130,25 @@ class ReferenceScene {
   }
 
  private:
+  // A textured material at `hit`, seen along `direction`, with the normals
+  // n and ng facing the eye and emission factor `emission`
+  // (compute/shared/textured_material.h).
+  m::TexturedSurface texturedSurface(const SceneHit& hit, const materials::MaterialTextures& t,
+                                     const m::BrdfParams& params, const glm::dvec3& n, const glm::dvec3& ng,
+                                     const glm::dvec3& direction, const glm::dvec3& emission) const {
+    const scene::SubdivisionSurface& surface = geometry_.objects[std::size_t(hit.object)].surface;
+    const scene::LimitPoint p = surface.evaluatePatch(hit.surface.patch, hit.surface.u, hit.surface.v);
+    const scene::LimitTexcoord uv = surface.evaluateTexcoord(hit.surface.patch, hit.surface.u, hit.surface.v);
+    const m::TextureFootprint f{
+        uv.uv, uv.du, uv.dv, p.du, p.dv, hit.surface.t * coneSpread_, std::abs(glm::dot(ng, direction))};
+    auto value = [&](const materials::TextureSlot& slot) { return scene::sampleSlot(scene_.textures, slot, f); };
+    return m::textured_surface(params, n, f, t.baseColor, t.metallic, t.roughness, t.normalScale, t.occlusionStrength,
+                               emission, glm::dvec3(value(t.baseColorTexture)),
+                               glm::dvec3(value(t.metallicRoughnessTexture)), t.normalTexture.texture >= 0,
+                               glm::dvec3(value(t.normalTexture)), value(t.occlusionTexture).r,
+                               glm::dvec3(value(t.emissiveTexture)));
+  }
+
   bool occluded(const glm::dvec3& position, const glm::dvec3& ng, const glm::dvec3& l, double distance,
                 std::uint64_t& shadowRays) const {
     ++shadowRays;
@@ -231,6 +263,7 @@ class ReferenceScene {
   const scene::SceneGeometry& geometry_;
   const ibl::EnvironmentLighting* environment_;
   double shadowOffset_;
+  double coneSpread_;  // of camera rays: the angle of one pixel
   ExactSettings exactSettings_;
   std::vector<int> patchOffset_, faceOffset_;
   std::vector<TessellatedSurface> tessellations_;

@@ -17,6 +17,7 @@
 #include "engine/gpu_backend/prefilter_gpu.h"
 #include "engine/gpu_backend/raycast_layout.h"
 #include "engine/gpu_backend/shading_records.h"
+#include "engine/gpu_backend/texture_data.h"
 #include "engine/ibl/environment_lighting.h"
 #include "facet_raycast_kernels/spirv.h"
 #include "materials/material.h"
@@ -111,6 +112,7 @@ struct GeometryBuffers {
 
 struct ShadingBuffers {
   gpu::Buffer materials, lights, environmentTexels, environmentTables, environmentLevels, environmentSampling;
+  gpu::Buffer textureTexels, textureLevels, textureTable;
 };
 
 GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed) {
@@ -149,8 +151,10 @@ GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed) {
 ShadingBuffers uploadShading(gpu::Device& d, const scene::Scene& scene, const ibl::EnvironmentLighting* lighting,
                              const EnvironmentData& environment, const glm::dvec3& origin) {
   const std::uint64_t maxTexels = d.limits().maxTexelBufferElements;
+  const TextureData textures = textureData(scene.textures);
   for (const auto& [name, texels] : {std::pair{"the environment map", environment.texels.size()},
-                                     std::pair{"the environment's tables", environment.tables.size()}})
+                                     std::pair{"the environment's tables", environment.tables.size()},
+                                     std::pair{"the textures", textures.texels.size()}})
     if (texels > maxTexels)
       throw gpu::Error(name + std::string(" needs ") + std::to_string(texels) + " texels in one texel buffer; " +
                        d.adapterInfo().name + " addresses at most " + std::to_string(maxTexels) +
@@ -163,6 +167,9 @@ ShadingBuffers uploadShading(gpu::Device& d, const scene::Scene& scene, const ib
   b.environmentTables = upload(d, "environment tables", environment.tables, texel);
   b.environmentLevels = upload(d, "environment levels", environment.levels, texel);
   b.environmentSampling = upload(d, "environment sampling", environment.sampling, texel);
+  b.textureTexels = upload(d, "texture texels", textures.texels, texel);
+  b.textureLevels = upload(d, "texture levels", textures.levels, texel);
+  b.textureTable = upload(d, "texture table", textures.textures, texel);
   return b;
 }
 
@@ -240,7 +247,9 @@ BindingTable bindingTable(const GeometryBuffers& g, const ShadingBuffers& s, con
           {21, &s.environmentSampling}, {22, &b.rayRadiance},
           {23, &s.environmentTables}, {24, &b.cameraFallbacks},
           {25, &b.shadowFallbacks}, {26, &g.refitOrder},
-          {27, &g.normals},        {28, &g.texcoords}};
+          {27, &g.normals},        {28, &g.texcoords},
+          {29, &s.textureTexels},  {30, &s.textureLevels},
+          {31, &s.textureTable}};
 }
 
 gpu::BindGroup bindGroup(gpu::Device& d, const gpu::ComputePipeline& pipeline, const std::string& label,
@@ -493,7 +502,9 @@ Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::
                                   {"ENVIRONMENT_SAMPLES", lighting && lighting->environmentSamples ? 1.0 : 0.0},
                                   {"D_MODEL", sharedModel(scene, &materials::Material::distribution)},
                                   {"G_MODEL", sharedModel(scene, &materials::Material::geometry)},
-                                  {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)}}),
+                                  {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)},
+                                  {"TEXTURES", scene.textures.empty() ? 0.0 : 1.0},
+                                  {"EMISSION", double(emissionSlots(scene))}}),
             &pipelines.get("dispatch_args", {}),
             &pipelines.get("shadow", method),
             &pipelines.get("gather", {}),
@@ -596,7 +607,8 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   start = std::chrono::steady_clock::now();
   const GpuScene packed = packScene(scene, geometry, origin, rootTolerance(scene, geometry), tessellated);
   layout::FrameParams frame = frameParams(scene, geometry, strata, packed);
-  frame.slotsPerRay = std::uint32_t(scene.lights.size()) + environmentSlots(lighting ? &*lighting : nullptr);
+  frame.slotsPerRay = std::uint32_t(scene.lights.size()) + environmentSlots(lighting ? &*lighting : nullptr) +
+                      emissionSlots(scene);
   const EnvironmentData environment = lighting ? environmentData(*lighting, frame) : EnvironmentData{};
   const std::uint64_t key = geometryKey(packed, tessellated, frame.tolerance);
   const bool reused = diced_ && diced_->key == key;

@@ -4,7 +4,9 @@
 
 #include <bit>
 #include <cmath>
+#include <optional>
 
+#include "engine/gpu_backend/texture_data.h"
 #include "materials/material.h"
 
 namespace facet::gpu_backend {
@@ -17,9 +19,41 @@ std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
     const materials::f32::BrdfParams p = materials::toParams32(scene.materials[i]);
     const bool prefiltered = environment && !environment->dfgTable.empty();
-    records.push_back({p.d_model, p.g_model, p.f_model, p.alpha, p.f0.x, p.f0.y, p.f0.z, p.eta.x, p.eta.y, p.eta.z,
-                       p.k.x, p.k.y, p.k.z, p.diffuse.x, p.diffuse.y, p.diffuse.z,
-                       prefiltered ? std::uint32_t(environment->dfgTable[i]) : 0u});
+    layout::MaterialRecord r{p.d_model,
+                             p.g_model,
+                             p.f_model,
+                             p.alpha,
+                             p.f0.x,
+                             p.f0.y,
+                             p.f0.z,
+                             p.eta.x,
+                             p.eta.y,
+                             p.eta.z,
+                             p.k.x,
+                             p.k.y,
+                             p.k.z,
+                             p.diffuse.x,
+                             p.diffuse.y,
+                             p.diffuse.z,
+                             prefiltered ? std::uint32_t(environment->dfgTable[i]) : 0u};
+    const materials::TextureSlot none;
+    const glm::vec3 emission(scene.materials[i].emission);
+    r.emissionR = emission.r, r.emissionG = emission.g, r.emissionB = emission.b;
+    const std::optional<materials::MaterialTextures>& t = scene.materials[i].textures;
+    r.textured = t ? 1u : 0u;
+    if (t) {
+      r.baseR = float(t->baseColor.r), r.baseG = float(t->baseColor.g), r.baseB = float(t->baseColor.b);
+      r.metallic = float(t->metallic);
+      r.roughness = float(t->roughness);
+      r.normalScale = float(t->normalScale);
+      r.occlusionStrength = float(t->occlusionStrength);
+    }
+    r.baseColorTexture = textureSlotRecord(t ? t->baseColorTexture : none);
+    r.metallicRoughnessTexture = textureSlotRecord(t ? t->metallicRoughnessTexture : none);
+    r.normalTexture = textureSlotRecord(t ? t->normalTexture : none);
+    r.occlusionTexture = textureSlotRecord(t ? t->occlusionTexture : none);
+    r.emissiveTexture = textureSlotRecord(t ? t->emissiveTexture : none);
+    records.push_back(r);
   }
   return records;
 }
@@ -72,6 +106,14 @@ EnvironmentData environmentData(const ibl::EnvironmentLighting& lighting, layout
     for (std::size_t i = 0; i + 1 < table.scaleBias.size(); i += 2)
       t.emplace_back(table.scaleBias[i], table.scaleBias[i + 1], 0.0f, 0.0f);
   return data;
+}
+
+std::uint32_t emissionSlots(const scene::Scene& scene) {
+  for (const scene::Object& object : scene.objects) {
+    const materials::Material& m = scene.materials[std::size_t(object.material)];
+    if (m.emission != glm::dvec3(0.0)) return 1;
+  }
+  return 0;
 }
 
 std::uint32_t environmentSlots(const ibl::EnvironmentLighting* lighting) {

@@ -1,0 +1,89 @@
+// Textured glTF on both backends: a quad with a base-colour checker, a
+// metallic-roughness ramp, a normal map, occlusion and emission, seen at 60
+// degrees so that the ray cone picks mip levels across the image, within the
+// tolerances of analysis/parity.h (beauty 1e-3 relative on 99.9% of covered
+// pixels), under its key light and under a white environment (occlusion).
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <memory>
+#include <random>
+#include <string>
+
+#include "analysis/parity.h"
+#include "engine/cpu/reference_renderer.h"
+#include "engine/gpu_backend/gpu_renderer.h"
+#include "scenes/environment_map.h"
+#include "scenes/scene_file.h"
+#include "scenes/scene_geometry.h"
+#include "tests/support/gpu_device.h"
+#include "tests/support/textured_scenes.h"
+
+namespace facet {
+namespace {
+
+struct TextureCase {
+  scene::IntersectionMethod method;
+  bool environment;
+};
+
+class TextureParity : public gpu::testing::GpuTest, public ::testing::WithParamInterface<TextureCase> {
+ protected:
+  void SetUp() override {
+    GpuTest::SetUp();
+    dir_ = std::filesystem::temp_directory_path() / ("facet_texture_parity_" + std::to_string(std::random_device{}()));
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::filesystem::remove_all(dir_);
+    GpuTest::TearDown();
+  }
+  std::filesystem::path dir_;
+};
+
+TEST_P(TextureParity, MatchesTheCpuReferenceWithinTolerance) {
+  // glTF's LINEAR_MIPMAP_LINEAR: continuous in the coordinates and the level.
+  scene::Scene scene = scene::loadScene(facet::testing::writeTexturedScene(dir_, "quad", 8, 2.0, 9987));
+  ASSERT_EQ(scene.textures.size(), 3u);
+  scene.render.width = 64;
+  scene.render.height = 48;
+  scene.render.method = GetParam().method;
+  if (GetParam().environment) {
+    // Sampled without occlusion: the same random numbers on both backends.
+    scene.environment.emplace();
+    scene.environment->map = std::make_shared<const scene::EnvironmentMap>(scene::constantEnvironment(glm::dvec3(1.0)));
+    scene.environment->method = scene::IblMethod::Sampled;
+    scene.environment->occlusion = false;
+    scene.environment->samples = 4;
+  }
+  const scene::SceneGeometry geometry = scene::buildGeometry(scene);
+  const Image reference = cpu::renderReference(scene, geometry);
+  gpu_backend::GpuRenderer renderer(device_);
+  const analysis::ParityReport parity = analysis::compareImages(reference, renderer.render(scene, geometry).image);
+  EXPECT_TRUE(parity.pass) << analysis::describe(parity);
+  EXPECT_GT(parity.covered, 1000u);
+
+  // Parity of images that ignore the textures would prove nothing: most
+  // pixels must differ from the untextured material's.
+  scene.materials[0].textures.reset();
+  const Image untextured = cpu::renderReference(scene, geometry);
+  std::size_t differing = 0;
+  for (std::size_t p = 0; p < reference.beauty.size(); ++p)
+    if (glm::length(reference.beauty[p] - untextured.beauty[p]) > 0.05f * glm::length(untextured.beauty[p]))
+      ++differing;
+  EXPECT_GT(differing, parity.covered / 2);
+}
+
+INSTANTIATE_TEST_SUITE_P(BothMethods, TextureParity,
+                         ::testing::Values(TextureCase{scene::IntersectionMethod::Exact, false},
+                                           TextureCase{scene::IntersectionMethod::Tessellated, false},
+                                           TextureCase{scene::IntersectionMethod::Exact, true}),
+                         [](const auto& info) {
+                           return std::string(info.param.method == scene::IntersectionMethod::Exact ? "exact"
+                                                                                                    : "tessellated") +
+                                  (info.param.environment ? "_environment" : "");
+                         });
+
+}  // namespace
+}  // namespace facet

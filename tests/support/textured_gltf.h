@@ -1,0 +1,74 @@
+#pragma once
+// Textured glTF scenes the tests make themselves: PNG images written with
+// stb_image_write (facet_image compiles it) and a quad with TEXCOORD_0 whose
+// materials, textures, samplers and images the caller gives.
+
+#include <nlohmann/json.hpp>
+#include <stb_image_write.h>
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace facet::testing {
+
+struct Rgba8 {
+  std::uint8_t r, g, b, a;
+};
+
+// A size x size image of cells x cells squares of `even` and `odd`.
+inline std::vector<Rgba8> checkerTexels(int size, int cells, Rgba8 even, Rgba8 odd) {
+  std::vector<Rgba8> texels;
+  const int cell = size / cells;
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) texels.push_back(((x / cell + y / cell) % 2 == 0) ? even : odd);
+  return texels;
+}
+
+inline bool writePng(const std::filesystem::path& file, int width, int height, const std::vector<Rgba8>& texels) {
+  return stbi_write_png(file.c_str(), width, height, 4, texels.data(), width * 4) != 0;
+}
+
+// A glTF file of one quad from (-1, -1, 0) to (1, 1, 0) facing +z, its
+// TEXCOORD_0 (0, 0) at the top-left corner (-1, 1) and (1, 1) at (1, -1), in
+// material 0; `parts` adds its members ("materials", "textures", ...) to
+// the file's.
+inline std::filesystem::path writeTexturedQuad(const std::filesystem::path& dir, const std::string& name,
+                                               const nlohmann::json& parts) {
+  const float positions[] = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
+  const float uvs[] = {0, 1, 1, 1, 1, 0, 0, 0};
+  const std::uint16_t indices[] = {0, 1, 2, 0, 2, 3};
+  std::vector<char> bytes(sizeof positions + sizeof uvs + sizeof indices);
+  std::memcpy(bytes.data(), positions, sizeof positions);
+  std::memcpy(bytes.data() + sizeof positions, uvs, sizeof uvs);
+  std::memcpy(bytes.data() + sizeof positions + sizeof uvs, indices, sizeof indices);
+  std::ofstream(dir / (name + ".bin"), std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+  nlohmann::json file = {
+      {"asset", {{"version", "2.0"}}},
+      {"scenes", {{{"nodes", {0}}}}},
+      {"nodes", {{{"mesh", 0}}}},
+      {"meshes",
+       {{{"primitives", {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}}}, {"indices", 2}, {"material", 0}}}}}}},
+      {"accessors",
+       {{{"bufferView", 0},
+         {"componentType", 5126},
+         {"type", "VEC3"},
+         {"count", 4},
+         {"min", {-1, -1, 0}},
+         {"max", {1, 1, 0}}},
+        {{"bufferView", 1}, {"componentType", 5126}, {"type", "VEC2"}, {"count", 4}},
+        {{"bufferView", 2}, {"componentType", 5123}, {"type", "SCALAR"}, {"count", 6}}}},
+      {"bufferViews",
+       {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", sizeof positions}},
+        {{"buffer", 0}, {"byteOffset", sizeof positions}, {"byteLength", sizeof uvs}},
+        {{"buffer", 0}, {"byteOffset", sizeof positions + sizeof uvs}, {"byteLength", sizeof indices}}}},
+      {"buffers", {{{"uri", name + ".bin"}, {"byteLength", bytes.size()}}}}};
+  file.update(parts);
+  std::ofstream(dir / (name + ".gltf")) << file.dump(1);
+  return dir / (name + ".gltf");
+}
+
+}  // namespace facet::testing
