@@ -1,6 +1,5 @@
 #include "engine/image/image_io.h"
 
-#include <stb_image_write.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -11,6 +10,7 @@
 #include <system_error>
 
 #include "engine/image/png_chunks.h"
+#include "engine/image/stb_image_write_hidden.h"
 
 namespace facet {
 

@@ -67,7 +67,8 @@ class GltfTexcoords : public facet::testing::TempDirTest {
 };
 
 TEST_F(GltfTexcoords, BecomeOneValuePerWeldedVertexAndCoordinate) {
-  const ControlCage& cage = loadScene(write(quad())).objects.at(0).cage;
+  const Scene scene = loadScene(write(quad()));
+  const ControlCage& cage = scene.objects.at(0).cage;
   ASSERT_EQ(cage.vertexCount(), 4);  // vertices 1 and 4 welded
   ASSERT_EQ(cage.faceVertexTexcoords.size(), 6u);
   // Vertex 3 is shared with one coordinate: one value; vertex 1 is not.
@@ -86,7 +87,8 @@ TEST_F(GltfTexcoords, NormalizedIntegersMapToTheUnitSquare) {
   bytes["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = 3;
   bytes["meshes"][0]["primitives"][0].erase("indices");
   bytes["accessors"][0]["count"] = 3;
-  const ControlCage& cage = loadScene(write(bytes)).objects.at(0).cage;
+  const Scene scene = loadScene(write(bytes));
+  const ControlCage& cage = scene.objects.at(0).cage;
   ASSERT_EQ(cage.texcoords.size(), 3u);
   EXPECT_EQ(cage.texcoords[1], glm::dvec2(3.0 / 255, 4.0 / 255));
 }

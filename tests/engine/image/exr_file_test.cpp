@@ -118,7 +118,7 @@ TEST_F(ExrFile, TheLayersChosenAreTheChannelsWritten) {
               ElementsAre("A", "B", "CryptoMaterial00.A", "CryptoMaterial00.B", "CryptoMaterial00.G",
                           "CryptoMaterial00.R", "CryptoObject00.A", "CryptoObject00.B", "CryptoObject00.G",
                           "CryptoObject00.R", "G", "N.X", "N.Y", "N.Z", "Ng.X", "Ng.Y", "Ng.Z", "P.X", "P.Y", "P.Z",
-                          "R", "Z", "faceId", "materialId", "objectId", "patchId", "uv.U", "uv.V"));
+                          "R", "Z", "faceId", "materialId", "objectId", "patchId", "st.s", "st.t", "uv.U", "uv.V"));
   options.layers = parseExrLayers("beauty", "--aovs");
   writeExr(dir_ / "beauty.exr", image, options);
   EXPECT_THAT(channelNames(dir_ / "beauty.exr"), ElementsAre("A", "B", "G", "R"));
