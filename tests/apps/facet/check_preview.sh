@@ -29,7 +29,7 @@ for c in 0 1 2; do
   [[ $lo -gt 0 && $hi -gt $lo ]] || fail "channel $c spans $lo..$hi: black somewhere, or flat"
 done
 
-for scene in "$repo"/scenes/examples/*.{json,obj,gltf}; do
+for scene in "$repo"/scenes/examples/*.{json,obj,gltf} "$repo"/scenes/examples/*/*.gltf; do
   "$facet" render "$scene" --size 32x16 --backend cpu --quiet -o example.png
   read -r lo hi <<<"$(channel_range example.png 3)"
   [[ $lo == 255 ]] || fail "the preview of $scene is not opaque (alpha from $lo)"

@@ -34,6 +34,8 @@ struct ParityCase {
   std::filesystem::path file;
   scene::IntersectionMethod method;
   int samplesPerPixel = 1;
+  // The file's own subdivision when empty, else what --subdivision would set.
+  std::string subdivision;
 };
 
 void PrintTo(const ParityCase& c, std::ostream* out) {
@@ -60,9 +62,11 @@ std::vector<ParityCase> everyScene() {
   std::sort(cages.begin(), cages.end());
   files.insert(files.end(), cages.begin(), cages.end());
   std::vector<ParityCase> cases;
-  for (const auto& file : files)
-    for (auto method : {scene::IntersectionMethod::Exact, scene::IntersectionMethod::Tessellated})
-      cases.push_back({file, method});
+  for (auto method : {scene::IntersectionMethod::Exact, scene::IntersectionMethod::Tessellated}) {
+    for (const auto& file : files) cases.push_back({file, method});
+    cases.push_back({std::filesystem::path(FACET_EXAMPLES_DIR) / "textured" / "cushion.gltf", method, 1,
+                     "catmull-clark"});
+  }
   return cases;
 }
 
@@ -70,6 +74,7 @@ class GpuParity : public gpu::testing::GpuTest, public ::testing::WithParamInter
 
 TEST_P(GpuParity, MatchesTheCpuReferenceWithinTolerance) {
   scene::Scene scene = scene::loadScene(GetParam().file);
+  if (!GetParam().subdivision.empty()) scene::overrideSubdivision(scene, GetParam().subdivision, "subdivision");
   scene.render.width = 64;
   scene.render.height = 48;
   scene.render.method = GetParam().method;
