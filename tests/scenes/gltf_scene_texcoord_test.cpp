@@ -67,7 +67,8 @@ class GltfTexcoords : public facet::testing::TempDirTest {
 };
 
 TEST_F(GltfTexcoords, BecomeOneValuePerWeldedVertexAndCoordinate) {
-  const ControlCage& cage = loadScene(write(quad())).objects.at(0).cage;
+  const Scene scene = loadScene(write(quad()));
+  const ControlCage& cage = scene.objects.at(0).cage;
   ASSERT_EQ(cage.vertexCount(), 4);  // vertices 1 and 4 welded
   ASSERT_EQ(cage.faceVertexTexcoords.size(), 6u);
   // Vertex 3 is shared with one coordinate: one value; vertex 1 is not.
