@@ -15,6 +15,7 @@
 #include "scenes/input_error.h"
 #include "scenes/obj_cage.h"
 #include "scenes/scene_file.h"
+#include "scenes/texture.h"
 #include "scenes/value_rules.h"
 
 namespace facet::scene {
@@ -152,14 +153,98 @@ Light readLight(const Field& f) {
   return light;
 }
 
-materials::Material readMaterial(const Field& f, const std::string& source) {
-  const std::string& where = f.path();
+// A texture field: an image file relative to the scene file, or an object
+// of the image and its sampling.
+Texture readTexture(const Field& f, const std::filesystem::path& sceneFile, bool roughness) {
+  const bool detailed = f.value().is_object();
+  if (detailed) {
+    f.object({"image", "wrap", "filter"});
+    if (!f.has("image")) f.fail("a texture needs an image (a PNG or JPEG file, relative to the scene file)");
+  } else if (!f.value().is_string()) {
+    f.fail("expected an image file name or an object with image, wrap and filter");
+  }
+  const Field image = detailed ? f["image"] : f;
+  TextureSampler sampler;
+  if (detailed && f.has("wrap"))
+    sampler.wrapS = sampler.wrapT =
+        f["wrap"].choice<std::uint32_t>({{"repeat", materials::f64::FACET_WRAP_REPEAT},
+                                         {"mirror", materials::f64::FACET_WRAP_MIRRORED_REPEAT},
+                                         {"clamp", materials::f64::FACET_WRAP_CLAMP_TO_EDGE}});
+  if (detailed && f.has("filter") && f["filter"].choice<bool>({{"linear", false}, {"nearest", true}})) {
+    sampler.magFilter = sampler.minFilter = materials::f64::FACET_FILTER_NEAREST;
+    sampler.mipMode = materials::f64::FACET_MIP_NEAREST;
+  }
+  const std::filesystem::path file = sceneFile.parent_path() / image.string();
+  if (!std::filesystem::is_regular_file(file)) image.fail("no such file: " + file.string());
   try {
-    return materials::buildMaterial(materials::materialSpecFromJson(f.value(), where),
-                                    [&](std::string_view field) { return where + "." + std::string(field); });
+    return roughness ? loadRoughnessTexture(file, sampler) : loadColorTexture(file, sampler);
+  } catch (const InputError& e) {
+    image.fail(e.what());
+  }
+}
+
+// A material's texture fields, carried by glTF's metallic-roughness mapping
+// that both backends evaluate (docs/scene-format.md): metallic 0 gives
+// c_diff = base colour and F(0) = 0.04, metallic 1 gives F(0) = base colour
+// and no c_diff. A colour factor the user left out is 1 under its texture.
+void readMaterialTextures(const Field& f, const materials::MaterialSpec& spec, materials::Material& m,
+                          const std::filesystem::path& sceneFile, std::vector<Texture>& textures) {
+  const bool diffuseMap = f.has("diffuse_texture"), f0Map = f.has("f0_texture"),
+             roughnessMap = f.has("roughness_texture");
+  if (!diffuseMap && !f0Map && !roughnessMap) return;
+  namespace m64 = materials::f64;
+  const bool readsF0 = m.fresnel == m64::F_SCHLICK || m.fresnel == m64::F_BLENDER_METALLIC;
+  if (f0Map && !readsF0) f["f0_texture"].fail("needs a fresnel that reads f0 (schlick or blender-metallic)");
+  const bool dielectric = !f0Map && (!readsF0 || m.f0 == glm::dvec3(0.04));
+  const bool metal = !diffuseMap && m.diffuse == glm::dvec3(0.0);
+  if (diffuseMap && !dielectric)
+    f["diffuse_texture"].fail(f0Map ? "cannot be combined with f0_texture"
+                                    : "needs f0 0.04 (textures follow glTF's metallic-roughness model)");
+  if (f0Map && !metal)
+    f["f0_texture"].fail(diffuseMap ? "cannot be combined with diffuse_texture"
+                                    : "needs diffuse 0 (textures follow glTF's metallic-roughness model)");
+  if (!dielectric && !metal)
+    f["roughness_texture"].fail("needs diffuse 0 or f0 0.04 (textures follow glTF's metallic-roughness model)");
+
+  materials::MaterialTextures t;
+  t.metallic = dielectric ? 0.0 : 1.0;
+  const bool f0Given = spec.f0 || spec.preset;
+  t.baseColor = dielectric ? (diffuseMap && !spec.diffuse ? glm::dvec3(1.0) : m.diffuse)
+                           : (f0Map && !f0Given ? glm::dvec3(1.0) : m.f0);
+  t.roughness = std::sqrt(m.alpha);
+  auto slot = [&](const char* key, bool roughness) {
+    materials::TextureSlot s;
+    s.texture = int(textures.size());
+    textures.push_back(readTexture(f[key], sceneFile, roughness));
+    return s;
+  };
+  if (diffuseMap) t.baseColorTexture = slot("diffuse_texture", false);
+  if (f0Map) t.baseColorTexture = slot("f0_texture", false);
+  if (roughnessMap) t.metallicRoughnessTexture = slot("roughness_texture", true);
+  m.textures = t;
+}
+
+materials::Material readMaterial(const Field& f, const std::filesystem::path& sceneFile,
+                                 std::vector<Texture>& textures) {
+  const std::string source = sceneFile.string();
+  const std::string& where = f.path();
+  json plain = f.value();
+  if (plain.is_object()) {
+    for (const char* key : {"diffuse_texture", "f0_texture", "roughness_texture"}) plain.erase(key);
+    // A roughness texture alone gives the roughness, as read.
+    if (f.has("roughness_texture") && !plain.contains("roughness") && !plain.contains("alpha"))
+      plain["roughness"] = 1.0;
+  }
+  materials::MaterialSpec spec;
+  materials::Material m;
+  try {
+    spec = materials::materialSpecFromJson(plain, where);
+    m = materials::buildMaterial(spec, [&](std::string_view field) { return where + "." + std::string(field); });
   } catch (const std::invalid_argument& e) {
     throw InputError(source, 0, "invalid material", e.what());
   }
+  if (plain.is_object()) readMaterialTextures(f, spec, m, sceneFile, textures);
+  return m;
 }
 
 glm::dmat4 readTransform(const Field& f) {
@@ -261,9 +346,8 @@ Environment readEnvironment(const Field& f, const std::filesystem::path& sceneFi
   if (f.has("intensity")) environment.intensity = f["intensity"].number(0.0);
   if (f.has("rotation")) environment.rotationDegrees = f["rotation"].number();
   if (f.has("method"))
-    environment.method =
-        f["method"].choice<IblMethod>(
-            {{"sampled", IblMethod::Sampled}, {"prefiltered", IblMethod::Prefiltered}, {"filtered", IblMethod::Filtered}});
+    environment.method = f["method"].choice<IblMethod>(
+        {{"sampled", IblMethod::Sampled}, {"prefiltered", IblMethod::Prefiltered}, {"filtered", IblMethod::Filtered}});
   if (f.has("samples")) environment.samples = f["samples"].integer(1, 16384);
   if (f.has("occlusion")) environment.occlusion = f["occlusion"].boolean();
   return environment;
@@ -291,7 +375,8 @@ Scene loadJsonScene(const std::filesystem::path& path) {
     const Field materials = root["materials"];
     if (!materials.value().is_object()) materials.fail("expected an object of named materials");
     for (const auto& item : materials.value().items()) {
-      materials::Material m = readMaterial(Field(item.value(), "materials." + item.key(), source), source);
+      materials::Material m =
+          readMaterial(Field(item.value(), "materials." + item.key(), source), path, scene.textures);
       m.name = item.key();
       materialIndex[item.key()] = int(scene.materials.size());
       scene.materials.push_back(std::move(m));
@@ -324,12 +409,13 @@ Scene loadJsonScene(const std::filesystem::path& path) {
       } else {
         // A preset name stands for that preset with default roughness.
         object.material = int(scene.materials.size());
-        scene.materials.push_back(readMaterial(Field(json{{"preset", name}}, o["material"].path(), source), source));
+        scene.materials.push_back(
+            readMaterial(Field(json{{"preset", name}}, o["material"].path(), source), path, scene.textures));
         materialIndex[name] = object.material;
       }
     } else {
       object.material = int(scene.materials.size());
-      scene.materials.push_back(readMaterial(o["material"], source));
+      scene.materials.push_back(readMaterial(o["material"], path, scene.textures));
     }
 
     if (o.has("subdivision")) readSubdivision(o["subdivision"], object);

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "materials/texture_shading.h"
+#include "scenes/image_decoder.h"
 
 namespace facet::scene {
 
@@ -38,6 +39,8 @@ glm::dvec4 levelValue(const TextureLevel& level, const m::TexelTaps& taps) {
                   glm::mix(at(taps.x0, taps.y1), at(taps.x1, taps.y1), taps.fx), taps.fy);
 }
 
+constexpr int kMaxTextureSize = 16384;
+
 }  // namespace
 
 Texture makeTexture(std::string source, int width, int height, int components, const std::vector<float>& channels,
@@ -61,6 +64,21 @@ Texture makeTexture(std::string source, int width, int height, int components, c
   while (texture.levels.back().width > 1 || texture.levels.back().height > 1)
     texture.levels.push_back(halve(texture.levels.back()));
   return texture;
+}
+
+Texture loadColorTexture(const std::filesystem::path& file, const TextureSampler& sampler) {
+  const DecodedImage image = decodeImage(file, kMaxTextureSize);
+  return makeTexture(file.string(), image.width, image.height, image.components, image.channels, TextureEncoding::Srgb,
+                     sampler);
+}
+
+Texture loadRoughnessTexture(const std::filesystem::path& file, const TextureSampler& sampler) {
+  const DecodedImage image = decodeImage(file, kMaxTextureSize);
+  std::vector<float> rgb;
+  rgb.reserve(image.channels.size() / std::size_t(image.components) * 3);
+  for (std::size_t i = 0; i < image.channels.size(); i += std::size_t(image.components))
+    rgb.insert(rgb.end(), {1.0f, image.channels[i], 1.0f});
+  return makeTexture(file.string(), image.width, image.height, 3, rgb, TextureEncoding::Linear, sampler);
 }
 
 glm::dvec4 sampleTexture(const Texture& texture, const glm::dvec2& uv, double lod) {

@@ -7,6 +7,7 @@
 #include <glm/vec4.hpp>
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,14 @@ enum class TextureEncoding { Linear, Srgb };
 // chain with a 2 x 2 box filter of the linear values.
 Texture makeTexture(std::string source, int width, int height, int components, const std::vector<float>& channels,
                     TextureEncoding encoding, const TextureSampler& sampler);
+
+// Textures from image files (PNG or JPEG, scenes/image_decoder.h); both
+// throw InputError naming the file when it cannot be decoded. A colour
+// texture decodes through the sRGB curve; a roughness texture holds the
+// file's first channel in G, and 1 in R and B, the layout of glTF's
+// metallic-roughness texture.
+Texture loadColorTexture(const std::filesystem::path& file, const TextureSampler& sampler);
+Texture loadRoughnessTexture(const std::filesystem::path& file, const TextureSampler& sampler);
 
 // The filtered value at texture coordinates `uv` and level of detail `lod`
 // (compute/shared/texture_sampling.h), in double.

@@ -2,14 +2,17 @@
 // metallic-roughness ramp, a normal map, occlusion and emission, seen at 60
 // degrees so that the ray cone picks mip levels across the image, within the
 // tolerances of analysis/parity.h (beauty 1e-3 relative on 99.9% of covered
-// pixels), under its key light and under a white environment (occlusion).
+// pixels), under its key light and under a white environment (occlusion);
+// and a JSON scene's c_diff and roughness textures on a subdivided cage.
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "analysis/parity.h"
 #include "engine/cpu/reference_renderer.h"
@@ -26,7 +29,27 @@ namespace {
 struct TextureCase {
   scene::IntersectionMethod method;
   bool environment;
+  bool jsonCube = false;  // the JSON scene below instead of the glTF quad
 };
+
+// A JSON scene of the subdivided checker cube (face-varying texture
+// coordinates) whose material maps c_diff to a checker and the roughness to
+// a ramp.
+std::filesystem::path writeJsonCheckerCube(const std::filesystem::path& dir) {
+  std::filesystem::copy_file(std::filesystem::path(FACET_TEST_DATA_DIR) / "uv_checker_cube.obj", dir / "cube.obj");
+  facet::testing::writePng(dir / "checker.png", 64, 64,
+                           facet::testing::checkerTexels(64, 8, {230, 200, 40, 255}, {20, 60, 180, 255}));
+  // The ramp's roughness (G) as a grey image: roughness textures read the first channel.
+  std::vector<facet::testing::Rgba8> roughness = facet::testing::metallicRoughnessRamp();
+  for (facet::testing::Rgba8& texel : roughness) texel.r = texel.b = texel.g;
+  facet::testing::writePng(dir / "roughness.png", 64, 64, roughness);
+  std::ofstream(dir / "scene.json") << R"({
+    "objects": [{"mesh": "cube.obj", "material": {
+      "diffuse_texture": {"image": "checker.png", "wrap": "mirror"}, "roughness_texture": "roughness.png",
+      "fresnel": "schlick", "f0": 0.04}}],
+    "camera": {"eye": [1.6, 1.3, 2.1], "target": [0, 0, 0]}})";
+  return dir / "scene.json";
+}
 
 class TextureParity : public gpu::testing::GpuTest, public ::testing::WithParamInterface<TextureCase> {
  protected:
@@ -44,8 +67,10 @@ class TextureParity : public gpu::testing::GpuTest, public ::testing::WithParamI
 
 TEST_P(TextureParity, MatchesTheCpuReferenceWithinTolerance) {
   // glTF's LINEAR_MIPMAP_LINEAR: continuous in the coordinates and the level.
-  scene::Scene scene = scene::loadScene(facet::testing::writeTexturedScene(dir_, "quad", 8, 2.0, 9987));
-  ASSERT_EQ(scene.textures.size(), 3u);
+  scene::Scene scene =
+      scene::loadScene(GetParam().jsonCube ? writeJsonCheckerCube(dir_)
+                                           : facet::testing::writeTexturedScene(dir_, "quad", 8, 2.0, 9987));
+  ASSERT_EQ(scene.textures.size(), GetParam().jsonCube ? 2u : 3u);
   scene.render.width = 64;
   scene.render.height = 48;
   scene.render.method = GetParam().method;
@@ -78,11 +103,13 @@ TEST_P(TextureParity, MatchesTheCpuReferenceWithinTolerance) {
 INSTANTIATE_TEST_SUITE_P(BothMethods, TextureParity,
                          ::testing::Values(TextureCase{scene::IntersectionMethod::Exact, false},
                                            TextureCase{scene::IntersectionMethod::Tessellated, false},
-                                           TextureCase{scene::IntersectionMethod::Exact, true}),
+                                           TextureCase{scene::IntersectionMethod::Exact, true},
+                                           TextureCase{scene::IntersectionMethod::Exact, false, true}),
                          [](const auto& info) {
                            return std::string(info.param.method == scene::IntersectionMethod::Exact ? "exact"
                                                                                                     : "tessellated") +
-                                  (info.param.environment ? "_environment" : "");
+                                  (info.param.environment ? "_environment" : "") +
+                                  (info.param.jsonCube ? "_json_cube" : "");
                          });
 
 }  // namespace
