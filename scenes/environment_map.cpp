@@ -5,10 +5,10 @@
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
 
-// The one translation unit that compiles stb_image's implementation; only
-// its Radiance reader is needed. Static, so that no stbi symbol leaves the
+// stb_image's Radiance reader, static so that no stbi symbol leaves the
 // binary: a shared library that links Debian's full stb_image (tinygltf
-// decoding PNG and JPEG) would otherwise bind to this HDR-only copy.
+// decoding PNG and JPEG) would otherwise bind to this HDR-only copy. The
+// PNG and JPEG decoders of texture files are scenes/image_decoder.cpp's.
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
 #define STBI_ONLY_HDR

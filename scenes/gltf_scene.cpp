@@ -257,7 +257,8 @@ class TextureTable {
     // tinygltf keeps an external image it cannot open as its uri alone.
     if (image.image.empty()) reader_.fail(imageWhere, "cannot read the image '" + name + "' (no such file)");
     if (image.width > kMaxTextureSize || image.height > kMaxTextureSize)
-      reader_.fail(imageWhere, "an image must be at most 16384 x 16384, is " + std::to_string(image.width) + " x " +
+      reader_.fail(imageWhere, "an image must be at most " + std::to_string(kMaxTextureSize) + " x " +
+                                   std::to_string(kMaxTextureSize) + ", is " + std::to_string(image.width) + " x " +
                                    std::to_string(image.height));
     const std::size_t values = std::size_t(image.width) * std::size_t(image.height) * std::size_t(image.component);
     const std::size_t bytes = image.bits == 16 ? 2 : 1;
@@ -272,7 +273,6 @@ class TextureTable {
     return makeTexture(name, image.width, image.height, image.component, channels, encoding, sampler);
   }
 
-  static constexpr int kMaxTextureSize = 16384;
   const tinygltf::Model& model_;
   const GltfReader& reader_;
   std::vector<Texture>& textures_;

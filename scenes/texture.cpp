@@ -39,8 +39,6 @@ glm::dvec4 levelValue(const TextureLevel& level, const m::TexelTaps& taps) {
                   glm::mix(at(taps.x0, taps.y1), at(taps.x1, taps.y1), taps.fx), taps.fy);
 }
 
-constexpr int kMaxTextureSize = 16384;
-
 }  // namespace
 
 Texture makeTexture(std::string source, int width, int height, int components, const std::vector<float>& channels,

@@ -44,6 +44,9 @@ struct Texture {
 // values as they are. Alpha is linear either way.
 enum class TextureEncoding { Linear, Srgb };
 
+// The largest side of a texture image, whichever file names it.
+inline constexpr int kMaxTextureSize = 16384;
+
 // A texture from width x height texels of `components` channels (1 grey, 2
 // grey and alpha, 3 RGB, 4 RGBA), each normalized to [0, 1]; builds the
 // chain with a 2 x 2 box filter of the linear values.
