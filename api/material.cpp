@@ -24,6 +24,7 @@ materials::Material toEngineMaterial(const v0::Material& material, const std::st
   spec.eta = engineVector(material.eta);
   spec.k = engineVector(material.k);
   spec.diffuse = engineVector(material.diffuse);
+  spec.energyCompensation = material.energyCompensation;
   return materials::buildMaterial(spec, [&](std::string_view field) { return where + "." + std::string(field); });
 }
 

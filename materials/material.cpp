@@ -150,6 +150,7 @@ Material buildMaterial(const MaterialSpec& spec,
     checkReflectance("diffuse", *spec.diffuse);
     m.diffuse = *spec.diffuse;
   }
+  m.energyCompensation = spec.energyCompensation.value_or(false);
   return m;
 }
 
@@ -178,8 +179,9 @@ MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view s
     return glm::dvec3(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
   };
 
-  static const char* const kKeys[] = {"name",      "preset", "distribution", "geometry", "fresnel", "alpha",
-                                      "roughness", "f0",     "ior",          "eta",      "k",       "diffuse"};
+  static const char* const kKeys[] = {"name", "preset", "distribution", "geometry", "fresnel",
+                                      "alpha", "roughness", "f0", "ior", "eta",
+                                      "k", "diffuse", "energy_compensation"};
   if (const std::optional<std::string> key = findUnknownKey(json, kKeys)) fail(*key, unknownFieldRule(kKeys));
 
   MaterialSpec spec;
@@ -195,6 +197,10 @@ MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view s
   spec.eta = color("eta");
   spec.k = color("k");
   spec.diffuse = color("diffuse");
+  if (json.contains("energy_compensation")) {
+    if (!json["energy_compensation"].is_boolean()) fail("energy_compensation", "expected true or false");
+    spec.energyCompensation = json["energy_compensation"].get<bool>();
+  }
   return spec;
 }
 
@@ -222,6 +228,7 @@ nlohmann::json toJson(const Material& m) {
       {"diffuse", array(m.diffuse)},
   };
   if (!m.name.empty()) json["name"] = m.name;
+  if (m.energyCompensation) json["energy_compensation"] = true;
   switch (m.fresnel) {
     case f64::F_SCHLICK:
     case f64::F_BLENDER_METALLIC:

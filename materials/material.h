@@ -51,6 +51,9 @@ struct Material {
   glm::dvec3 k{0.0};    // extinction coefficient (conductor)
   glm::dvec3 diffuse{0.0};
   glm::dvec3 emission{0.0};                  // radiance the surface emits, added to what it reflects
+  // Multiple-scattering compensation of the specular lobe (docs/shading.md,
+  // "Energy compensation"); off keeps the course's single-scattering model.
+  bool energyCompensation = false;
   std::optional<MaterialTextures> textures;  // set when the material reads any texture
 };
 
@@ -72,6 +75,7 @@ struct MaterialSpec {
   std::optional<glm::dvec3> eta;
   std::optional<glm::dvec3> k;
   std::optional<glm::dvec3> diffuse;
+  std::optional<bool> energyCompensation;
 };
 
 // Validates and resolves a spec. Throws std::invalid_argument whose message

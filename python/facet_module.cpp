@@ -180,13 +180,16 @@ PYBIND11_MODULE(facet, m) {
   using OptReal = std::optional<double>;
   py::class_<facet::Material>(m, "Material", "A material as scene files write it (docs/shading.md)")
       .def(py::init([](const std::string& name, OptText preset, OptText d, OptText g, OptText f, OptReal alpha,
-                       OptReal roughness, OptVec f0, OptVec ior, OptVec eta, OptVec k, OptVec diffuse) {
-             return facet::Material{name, preset, d, g, f, alpha, roughness, f0, ior, eta, k, diffuse};
+                       OptReal roughness, OptVec f0, OptVec ior, OptVec eta, OptVec k, OptVec diffuse,
+                       bool energyCompensation) {
+             return facet::Material{name, preset, d, g, f, alpha, roughness, f0, ior, eta, k, diffuse,
+                                    energyCompensation};
            }),
            py::kw_only(), py::arg("name") = "", py::arg("preset") = py::none(), py::arg("d") = py::none(),
            py::arg("g") = py::none(), py::arg("f") = py::none(), py::arg("alpha") = py::none(),
            py::arg("roughness") = py::none(), py::arg("f0") = py::none(), py::arg("ior") = py::none(),
-           py::arg("eta") = py::none(), py::arg("k") = py::none(), py::arg("diffuse") = py::none())
+           py::arg("eta") = py::none(), py::arg("k") = py::none(), py::arg("diffuse") = py::none(),
+           py::arg("energy_compensation") = false)
       .def_readwrite("name", &facet::Material::name)
       .def_readwrite("preset", &facet::Material::preset)
       .def_readwrite("d", &facet::Material::distribution)
@@ -198,7 +201,8 @@ PYBIND11_MODULE(facet, m) {
       .def_readwrite("ior", &facet::Material::ior)
       .def_readwrite("eta", &facet::Material::eta)
       .def_readwrite("k", &facet::Material::k)
-      .def_readwrite("diffuse", &facet::Material::diffuse);
+      .def_readwrite("diffuse", &facet::Material::diffuse)
+      .def_readwrite("energy_compensation", &facet::Material::energyCompensation);
 
   py::class_<facet::Cage>(m, "Cage", "A Catmull-Clark control cage in world space, 0-based indices")
       .def(py::init([](const Doubles& positions,

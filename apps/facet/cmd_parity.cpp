@@ -25,6 +25,7 @@ struct ParityOptions {
   std::string size;
   std::string method;
   std::string subdivision;
+  std::string energyCompensation;
   std::string heatmap;
   std::string adapter;
   bool json = false;
@@ -70,6 +71,7 @@ void runParity(const ParityOptions& o) {
   if (!o.size.empty()) applyImageSize(o.size, scene);
   if (!o.method.empty()) applyMethod(o.method, scene);
   if (!o.subdivision.empty()) scene::overrideSubdivision(scene, o.subdivision, "--subdivision");
+  applyEnergyCompensation(o.energyCompensation, scene);
   // Both backends' images, and the heat map's when one is asked for.
   checkImagesFitInMemory(scene, o.heatmap.empty() ? 2 : 3, o.size.empty() ? o.scene + ": image size" : "--size");
   const RenderReport cpu = render(scene, Backend::Cpu);
@@ -100,6 +102,7 @@ void addParityCommand(CLI::App& app) {
   c->add_option(
       "--subdivision", o->subdivision,
       "Subdivision of every object, whatever the file chose: catmull-clark, or none (the polygons as authored)");
+  addEnergyCompensationOption(*c, o->energyCompensation);
   c->add_option("--heatmap", o->heatmap, "Write the per-pixel error (in units of tolerance) as a PNG");
   c->add_option("--adapter", o->adapter, "GPU adapter: a substring of its name");
   c->add_flag("--json", o->json, "Machine-readable report");

@@ -83,6 +83,20 @@ void applySceneOverrides(const SceneOverrides& o, scene::Scene& scene) {
     scene.render.samplesPerPixel = *o.spp;
   }
   applyEnvironmentOverrides(o, scene);
+  applyEnergyCompensation(o.energyCompensation, scene);
+}
+
+void applyEnergyCompensation(const std::string& onOrOff, scene::Scene& scene) {
+  if (onOrOff.empty()) return;
+  for (materials::Material& material : scene.materials) material.energyCompensation = onOrOff == "on";
+}
+
+void addEnergyCompensationOption(CLI::App& command, std::string& onOrOff) {
+  command
+      .add_option("--energy-compensation", onOrOff,
+                  "Multiple-scattering compensation of every material's specular lobe (default: each material's "
+                  "energy_compensation, off)")
+      ->check(CLI::IsMember({"on", "off"}));
 }
 
 namespace {
@@ -192,6 +206,7 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& o) {
       ->check(CLI::Range(1, 16384));
   command.add_option("--occlusion", o.occlusion, "Sampled and filtered IBL: shadow rays towards the environment")
       ->check(CLI::IsMember({"on", "off"}));
+  addEnergyCompensationOption(command, o.energyCompensation);
 }
 
 }  // namespace facet::cli

@@ -1,6 +1,6 @@
 // Command-line flags that change a scene as loaded (render, parity,
-// ibl-chart): image size, camera, intersection method, sampling and the
-// environment.
+// ibl-chart): image size, camera, intersection method, sampling, the
+// environment and energy compensation.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -28,6 +28,7 @@ struct SceneOverrides {
   std::string ibl;
   std::optional<int> iblSamples;
   std::string occlusion;
+  std::string energyCompensation;
 };
 
 void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides);
@@ -35,6 +36,11 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides);
 // Command-line settings win over the scene file's; throws
 // std::invalid_argument naming the flag.
 void applySceneOverrides(const SceneOverrides& overrides, scene::Scene& scene);
+
+// --energy-compensation on|off alone: sets every material's flag; "" keeps
+// what the scene chose.
+void addEnergyCompensationOption(CLI::App& command, std::string& onOrOff);
+void applyEnergyCompensation(const std::string& onOrOff, scene::Scene& scene);
 
 // --size WIDTHxHEIGHT and --method exact|tess alone.
 void applyImageSize(const std::string& size, scene::Scene& scene);

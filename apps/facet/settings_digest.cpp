@@ -1,5 +1,6 @@
 #include "settings_digest.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
@@ -21,7 +22,8 @@ std::string settingsDigest(const scene::Scene& scene, const std::string& backend
   const scene::Camera& c = scene.camera;
   for (const glm::dvec3& v : {c.eye, c.target, c.up}) text << v.x << ' ' << v.y << ' ' << v.z << ' ';
   text << c.verticalFovDegrees << '\n';
-  for (const scene::Object& o : scene.objects) text << int(o.subdivision) << ' ';
+  for (const scene::Object& o : scene.objects)
+    text << int(o.subdivision) << ' ' << scene.materials[std::size_t(o.material)].energyCompensation << ' ';
   if (const auto& e = scene.environment)
     text << '\n'
          << e->map->source << ' ' << e->intensity << ' ' << e->rotationDegrees << ' ' << int(e->method) << ' '
@@ -47,6 +49,8 @@ std::string renderSettingsText(const scene::Scene& scene, const std::string& bac
   } else {
     text << " ibl=none";
   }
+  const auto compensated = [](const materials::Material& m) { return m.energyCompensation; };
+  if (std::any_of(scene.materials.begin(), scene.materials.end(), compensated)) text << " energyCompensation=on";
   return text.str();
 }
 

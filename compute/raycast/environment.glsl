@@ -9,6 +9,7 @@
 #define FACET_RAYCAST_ENVIRONMENT_GLSL
 
 #include "compute/shared/irradiance_map.h"
+#include "compute/raycast/dfg_tables.glsl"
 
 vec3 to_map(vec3 world) {
   return environment_to_map(world, frame.environmentCosRotation, frame.environmentSinRotation);
@@ -103,19 +104,9 @@ vec4 filtered_lookup(vec3 world, float lod) {
   return vec4(frame.environmentIntensity * texel.rgb, texel.w);
 }
 
-vec2 dfg_entry(uint table, int i, int j) {
-  uint size = frame.dfgSize;
-  return texelFetch(environmentTables, int(frame.dfgOffset + table * size * size + uint(j) * size + uint(i))).xy;
-}
-
 vec2 dfg_lookup(uint table, float nv, float alpha) {
-  int size = int(frame.dfgSize);
-  vec2 position = dfg_grid_position(nv, alpha, size);
-  int i0 = int(floor(position.x)), j0 = int(floor(position.y));
-  int i1 = min(i0 + 1, size - 1), j1 = min(j0 + 1, size - 1);
-  float fx = position.x - float(i0), fy = position.y - float(j0);
-  return mix(mix(dfg_entry(table, i0, j0), dfg_entry(table, i1, j0), fx),
-             mix(dfg_entry(table, i0, j1), dfg_entry(table, i1, j1), fx), fy);
+  uint size = frame.dfgSize;
+  return dfg_table_lookup(environmentTables, frame.dfgOffset + table * size * size, int(size), nv, alpha);
 }
 
 // The irradiance table at frame.shOffset (layout in irradiance_map.h).

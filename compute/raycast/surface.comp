@@ -17,7 +17,8 @@
 // (filtered: 1 adds the environment technique), the BRDF models D_MODEL, G_MODEL,
 // F_MODEL, each -1 when the scene's materials use several (the model is then
 // read per material), TEXTURES (1 when some material reads a texture) and
-// EMISSION (1 when some material emits: each ray's last slot holds it).
+// EMISSION (1 when some material emits: each ray's last slot holds it) and
+// COMPENSATION (1 when some material's specular lobe is energy-compensated).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -49,6 +50,7 @@ layout(constant_id = 6) const int OCCLUSION = 1;
 layout(constant_id = 7) const int ENVIRONMENT_SAMPLES = 0;
 layout(constant_id = 8) const int TEXTURES = 0;
 layout(constant_id = 9) const int EMISSION = 0;
+layout(constant_id = 10) const int COMPENSATION = 0;
 
 layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
 layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord materials[]; };
@@ -66,6 +68,7 @@ layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters;
 #include "compute/raycast/camera_rays.glsl"
 #include "compute/shared/authored_normal.h"
 #include "compute/raycast/textures.glsl"
+#include "compute/raycast/energy_compensation.glsl"
 
 // The shading normal: a mesh's authored normals interpolated where it has
 // them (turned to the side of the surface's normal `limit`), else `limit`
@@ -125,10 +128,11 @@ TexturedSurface textured_hit(MaterialRecord m, PatchRecord record, ControlPoints
 
 // Sampled or filtered method, one sample of either technique: its share for
 // radiance `incoming`, and with OCCLUSION its shadow ray for `slot`.
-void environment_sample(uint slot, BrdfParams params, vec3 position, vec3 n, vec3 ng, vec3 v, MisSample s,
-                        vec3 incoming, inout vec3 unshadowed) {
+void environment_sample(uint slot, BrdfParams params, vec3 specular_scale, vec3 position, vec3 n, vec3 ng, vec3 v,
+                        MisSample s, vec3 incoming, inout vec3 unshadowed) {
   bool arrives = mis_sample_arrives(s, n, ng);
-  vec3 radiance = arrives ? mis_sample_share(params, n, v, s, incoming, frame.environmentSamples) : vec3(0.0);
+  vec3 radiance =
+      arrives ? mis_sample_share(params, n, v, s, incoming, frame.environmentSamples, specular_scale) : vec3(0.0);
   if (OCCLUSION == 0)
     unshadowed += radiance;
   else if (arrives)
@@ -138,8 +142,8 @@ void environment_sample(uint slot, BrdfParams params, vec3 position, vec3 n, vec
 }
 
 // The environment's slots from `first` on, its light scaled by `occlusion`.
-void shade_environment(uint first, uint pixel, uint sample_index, uint material, BrdfParams params, vec3 position,
-                       vec3 n, vec3 ng, vec3 v, float occlusion) {
+void shade_environment(uint first, uint pixel, uint sample_index, uint material, BrdfParams params,
+                       vec3 specular_scale, vec3 position, vec3 n, vec3 ng, vec3 v, float occlusion) {
   if (ENVIRONMENT == 2) {
     float nv = dot(n, v);
     if (nv <= COS_EPSILON) {  // nothing to look up (the lobe may not even exist)
@@ -149,7 +153,7 @@ void shade_environment(uint first, uint pixel, uint sample_index, uint material,
     vec3 lobe = split_sum_direction(n, v, params.alpha);
     vec3 radiance = split_sum(params, nv, prefiltered_radiance(to_map(lobe), params.alpha),
                               dfg_lookup(materials[material].dfgTable, nv, params.alpha),
-                              irradiance_over_pi(to_map(n)));
+                              irradiance_over_pi(to_map(n)), specular_scale);
     write_unshadowed(first, occlusion * frame.environmentIntensity * radiance);
     return;
   }
@@ -164,8 +168,8 @@ void shade_environment(uint first, uint pixel, uint sample_index, uint material,
     if (with_environment) {
       vec4 e = sample_environment(pair.texel_bits, pair.environment_u);
       MisSample s = environment_technique_sample(params, n, v, from_map(e.xyz), e.w);
-      environment_sample(slot, params, position, n, ng, v, s, occlusion * environment_radiance(s.direction),
-                         unshadowed);
+      environment_sample(slot, params, specular_scale, position, n, ng, v, s,
+                         occlusion * environment_radiance(s.direction), unshadowed);
     }
     MisSample s = brdf_technique_sample(params, n, v, pair.brdf_direction, 0.0);
     vec3 incoming;
@@ -179,7 +183,8 @@ void shade_environment(uint first, uint pixel, uint sample_index, uint material,
       s.other_pdf = environment_pdf(to_map(s.direction));
       incoming = environment_radiance(s.direction);
     }
-    environment_sample(slot + stride - 1u, params, position, n, ng, v, s, occlusion * incoming, unshadowed);
+    environment_sample(slot + stride - 1u, params, specular_scale, position, n, ng, v, s, occlusion * incoming,
+                       unshadowed);
   }
   if (OCCLUSION == 0) write_unshadowed(first, unshadowed);
 }
@@ -253,11 +258,12 @@ void main() {
     emission = surface.emission;
   }
   vec3 v = -direction;
+  vec3 specular_scale = material_specular_scale(m.compensationTable, params, dot(n, v));
   for (int l = 0; l < LIGHT_COUNT; ++l) {
     LightIncidence incidence = light_incidence(punctual_light(lights[l]), position);
     if (shaded && light_arrives(incidence, n, ng))
-      write_shadowed(firstSlot + l, punctual_radiance(params, n, incidence.direction, v, incidence.color), position,
-                     ng, incidence.direction, incidence.distance);
+      write_shadowed(firstSlot + l, punctual_radiance(params, n, incidence.direction, v, incidence.color, specular_scale),
+                     position, ng, incidence.direction, incidence.distance);
     else
       write_unshadowed(firstSlot + l, vec3(0.0));
   }
@@ -266,8 +272,8 @@ void main() {
     // of one invocation count against lavapipe's limit of 65535.
     uint first = firstSlot + uint(LIGHT_COUNT);
     if (shaded)
-      shade_environment(first, frame.firstPixel + pixel, sample_index, range.material, params, position, n, ng, v,
-                        occlusion);
+      shade_environment(first, frame.firstPixel + pixel, sample_index, range.material, params, specular_scale, position, n,
+                        ng, v, occlusion);
     else
       for (uint slot = first; slot < firstSlot + frame.slotsPerRay; ++slot) write_unshadowed(slot, vec3(0.0));
   }

@@ -62,3 +62,8 @@ FACET_FN vec3 energy_compensation(vec3 f0, vec2 dfg) {
   if (e <= real(0)) return vec3(real(1));
   return vec3(real(1)) + f0 * ((real(1) - e) / e);
 }
+
+// The factor on material p's specular lobe, from its (D, G) table's entry
+// `dfg` at the view's n.v and p's alpha. F0 is Fresnel at normal incidence:
+// f0 for Schlick's F, what the other models give there.
+FACET_FN vec3 specular_compensation(BrdfParams p, vec2 dfg) { return energy_compensation(fresnel_F(p, real(1)), dfg); }

@@ -118,6 +118,9 @@ struct LightRecord {
 // compute/raycast/textures.glsl, FACET_NO_TEXTURE for none) and its
 // KHR_texture_transform.
 const uint FACET_NO_TEXTURE = 0xFFFFFFFFu;
+
+// A material without energy compensation (MaterialRecord.compensationTable).
+const uint FACET_NO_COMPENSATION = 0xFFFFFFFFu;
 struct TextureSlotRecord {
   uint texture;
   float offsetX;
@@ -165,6 +168,7 @@ struct MaterialRecord {
   TextureSlotRecord normalTexture;
   TextureSlotRecord occlusionTexture;
   TextureSlotRecord emissiveTexture;
+  uint compensationTable;  // energy compensation's table (by D and G), or FACET_NO_COMPENSATION
 };
 
 // What the camera-side kernels need, one uniform block (std140 agrees: all
@@ -214,6 +218,7 @@ struct FrameParams {
   uint shOffset;    // prefiltered: 9 RGB SH coefficients
   uint dfgOffset;   // prefiltered: the DFG tables, each dfgSize^2 (scale, bias) texels
   uint dfgSize;
+  uint compensationSize;  // energy compensation: each of its tables is compensationSize^2 (scale, bias) texels
 };
 
 // The AOVs of one pixel (beauty is written separately, as a vec4).

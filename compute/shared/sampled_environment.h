@@ -62,9 +62,11 @@ FACET_FN bool mis_sample_arrives(MisSample s, vec3 n, vec3 ng) {
 }
 
 // Its share of the estimate, unshadowed, for radiance `radiance` arriving
-// from its direction: f L (n.l) w_MIS / pdf, over the `pairs` pairs.
-FACET_FN vec3 mis_sample_share(BrdfParams p, vec3 n, vec3 v, MisSample s, vec3 radiance, uint pairs) {
+// from its direction: f L (n.l) w_MIS / pdf, over the `pairs` pairs, the
+// specular lobe scaled by `specular_scale` (brdf_evaluate_scaled).
+FACET_FN vec3 mis_sample_share(BrdfParams p, vec3 n, vec3 v, MisSample s, vec3 radiance, uint pairs,
+                               vec3 specular_scale) {
   vec3 l = s.direction;
-  return brdf_evaluate(p, n, l, v) * radiance * dot(n, l) * (power_heuristic(s.pdf, s.other_pdf) / s.pdf) /
-         real(pairs);
+  return brdf_evaluate_scaled(p, n, l, v, specular_scale) * radiance * dot(n, l) *
+         (power_heuristic(s.pdf, s.other_pdf) / s.pdf) / real(pairs);
 }

@@ -12,6 +12,7 @@
 #include "engine/camera/camera.h"
 #include "engine/camera/sample_plan.h"
 #include "engine/cpu/intersect.h"
+#include "engine/ibl/compensation_tables.h"
 #include "engine/ibl/environment_lighting.h"
 #include "engine/ibl/environment_lookup.h"
 #include "engine/ibl/environment_math.h"
@@ -33,7 +34,7 @@ class ReferenceScene {
  public:
   ReferenceScene(const scene::Scene& scene, const scene::SceneGeometry& geometry,
                  const ibl::EnvironmentLighting* environment)
-      : scene_(scene), geometry_(geometry), environment_(environment) {
+      : scene_(scene), geometry_(geometry), environment_(environment), compensation_(ibl::compensationTables(scene)) {
     if (scene.render.exactTolerance)
       exactSettings_.tolerance = *scene.render.exactTolerance * geometry.bounds.diagonal();
     shadowOffset_ = m::shadow_ray_offset(geometry.bounds.diagonal(), exactSettings_.tolerance);
@@ -86,17 +87,20 @@ class ReferenceScene {
       occlusion = surface.occlusion;
       radiance = surface.emission;
     }
+    const glm::dvec3 specularScale = ibl::specularScale(compensation_, material, params, glm::dot(n, v));
     if (environment_) {
       glm::dvec3 environment(0.0);
       switch (environment_->environment->method) {
         case scene::IblMethod::Sampled:
-          environment = sampledEnvironment(params, hit.surface.position, n, ng, v, pixel, sample, shadowRays);
+          environment =
+              sampledEnvironment(params, specularScale, hit.surface.position, n, ng, v, pixel, sample, shadowRays);
           break;
         case scene::IblMethod::Prefiltered:
-          environment = prefilteredEnvironment(params, material, n, v);
+          environment = prefilteredEnvironment(params, specularScale, material, n, v);
           break;
         case scene::IblMethod::Filtered:
-          environment = filteredEnvironment(params, hit.surface.position, n, ng, v, pixel, sample, shadowRays);
+          environment =
+              filteredEnvironment(params, specularScale, hit.surface.position, n, ng, v, pixel, sample, shadowRays);
           break;
       }
       radiance += occlusion * environment;
@@ -105,7 +109,7 @@ class ReferenceScene {
       const m::LightIncidence incidence = m::light_incidence(punctualLight(light), hit.surface.position);
       if (!m::light_arrives(incidence, n, ng)) continue;
       if (occluded(hit.surface.position, ng, incidence.direction, incidence.distance, shadowRays)) continue;
-      radiance += m::punctual_radiance(params, n, incidence.direction, v, incidence.color);
+      radiance += m::punctual_radiance(params, n, incidence.direction, v, incidence.color, specularScale);
     }
     return radiance;
   }
@@ -192,15 +196,16 @@ class ReferenceScene {
 
   // The sampled method (compute/shared/sampled_environment.h), with the
   // environment's distribution in vectors.
-  glm::dvec3 sampledEnvironment(const m::BrdfParams& params, const glm::dvec3& position, const glm::dvec3& n,
-                                const glm::dvec3& ng, const glm::dvec3& v, std::uint32_t pixel, std::uint32_t sample,
+  glm::dvec3 sampledEnvironment(const m::BrdfParams& params, const glm::dvec3& specularScale,
+                                const glm::dvec3& position, const glm::dvec3& n, const glm::dvec3& ng,
+                                const glm::dvec3& v, std::uint32_t pixel, std::uint32_t sample,
                                 std::uint64_t& shadowRays) const {
     const scene::Environment& environment = *environment_->environment;
     const ibl::EnvironmentDistribution& distribution = environment_->distribution;
     const auto pairs = std::uint32_t(environment.samples);
     auto share = [&](const m::MisSample& s) {
       return sampleArrives(s, position, n, ng, shadowRays)
-                 ? m::mis_sample_share(params, n, v, s, environmentRadiance(s.direction), pairs)
+                 ? m::mis_sample_share(params, n, v, s, environmentRadiance(s.direction), pairs, specularScale)
                  : glm::dvec3(0.0);
     };
     glm::dvec3 sum(0.0);
@@ -216,8 +221,9 @@ class ReferenceScene {
 
   // The filtered method (compute/shared/filtered_environment.h): the
   // sampled method's pairs, BRDF samples read from the mip chain.
-  glm::dvec3 filteredEnvironment(const m::BrdfParams& params, const glm::dvec3& position, const glm::dvec3& n,
-                                 const glm::dvec3& ng, const glm::dvec3& v, std::uint32_t pixel, std::uint32_t sample,
+  glm::dvec3 filteredEnvironment(const m::BrdfParams& params, const glm::dvec3& specularScale,
+                                 const glm::dvec3& position, const glm::dvec3& n, const glm::dvec3& ng,
+                                 const glm::dvec3& v, std::uint32_t pixel, std::uint32_t sample,
                                  std::uint64_t& shadowRays) const {
     const scene::Environment& environment = *environment_->environment;
     const std::vector<ibl::MipLevel>& chain = environment_->mipChain;
@@ -228,7 +234,7 @@ class ReferenceScene {
       if (!sampleArrives(s, position, n, ng, shadowRays)) return glm::dvec3(0.0);
       const glm::dvec3 radiance =
           environment.intensity * ibl::mipChainRadiance(chain, m::environment_uv(toMap(s.direction)), lod);
-      return m::mis_sample_share(params, n, v, s, radiance, pairs);
+      return m::mis_sample_share(params, n, v, s, radiance, pairs, specularScale);
     };
     glm::dvec3 sum(0.0);
     for (std::uint32_t k = 0; k < pairs; ++k) {
@@ -246,8 +252,8 @@ class ReferenceScene {
     return sum;
   }
 
-  glm::dvec3 prefilteredEnvironment(const m::BrdfParams& params, int material, const glm::dvec3& n,
-                                    const glm::dvec3& v) const {
+  glm::dvec3 prefilteredEnvironment(const m::BrdfParams& params, const glm::dvec3& specularScale, int material,
+                                    const glm::dvec3& n, const glm::dvec3& v) const {
     const ibl::PrefilteredEnvironment& prefiltered = environment_->prefiltered;
     const double nv = glm::dot(n, v);
     if (nv <= m::COS_EPSILON) return glm::dvec3(0.0);  // nothing to look up (the lobe may not even exist)
@@ -256,12 +262,13 @@ class ReferenceScene {
            m::split_sum(params, nv, ibl::prefilteredRadiance(prefiltered, toMap(lobe), params.alpha),
                         ibl::dfgLookup(prefiltered.dfg[std::size_t(environment_->dfgTable[std::size_t(material)])], nv,
                                        params.alpha),
-                        ibl::irradianceOverPi(prefiltered, toMap(n)));
+                        ibl::irradianceOverPi(prefiltered, toMap(n)), specularScale);
   }
 
   const scene::Scene& scene_;
   const scene::SceneGeometry& geometry_;
   const ibl::EnvironmentLighting* environment_;
+  const ibl::CompensationTables compensation_;
   double shadowOffset_;
   double coneSpread_;  // of camera rays: the angle of one pixel
   ExactSettings exactSettings_;

@@ -112,7 +112,7 @@ struct GeometryBuffers {
 
 struct ShadingBuffers {
   gpu::Buffer materials, lights, environmentTexels, environmentTables, environmentLevels, environmentSampling;
-  gpu::Buffer textureTexels, textureLevels, textureTable;
+  gpu::Buffer textureTexels, textureLevels, textureTable, compensationTables;
 };
 
 GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed) {
@@ -149,7 +149,8 @@ GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed) {
 }
 
 ShadingBuffers uploadShading(gpu::Device& d, const scene::Scene& scene, const ibl::EnvironmentLighting* lighting,
-                             const EnvironmentData& environment, const glm::dvec3& origin) {
+                             const EnvironmentData& environment, const ibl::CompensationTables& compensation,
+                             const std::vector<glm::vec4>& compensationTexels, const glm::dvec3& origin) {
   const std::uint64_t maxTexels = d.limits().maxTexelBufferElements;
   const TextureData textures = textureData(scene.textures);
   for (const auto& [name, texels] : {std::pair{"the environment map", environment.texels.size()},
@@ -161,7 +162,7 @@ ShadingBuffers uploadShading(gpu::Device& d, const scene::Scene& scene, const ib
                        ": use a smaller map");
   const BufferUsage in = BufferUsage::Storage, texel = BufferUsage::Texel;
   ShadingBuffers b;
-  b.materials = upload(d, "materials", materialRecords(scene, lighting), in);
+  b.materials = upload(d, "materials", materialRecords(scene, lighting, compensation), in);
   b.lights = upload(d, "lights", lightRecords(scene, origin), in);
   b.environmentTexels = upload(d, "environment texels", environment.texels, texel);
   b.environmentTables = upload(d, "environment tables", environment.tables, texel);
@@ -170,6 +171,7 @@ ShadingBuffers uploadShading(gpu::Device& d, const scene::Scene& scene, const ib
   b.textureTexels = upload(d, "texture texels", textures.texels, texel);
   b.textureLevels = upload(d, "texture levels", textures.levels, texel);
   b.textureTable = upload(d, "texture table", textures.textures, texel);
+  b.compensationTables = upload(d, "compensation tables", compensationTexels, texel);
   return b;
 }
 
@@ -242,7 +244,8 @@ BindingTable bindingTable(const GeometryBuffers& g, const ShadingBuffers& s, con
           {10, &b.counters},       {11, &s.materials},
           {12, &s.lights},         {13, &b.aovs},
           {14, &b.shadowRays},     {15, &b.contributions},
-          {16, &g.cellBounds},     {18, &b.beauty},
+          {16, &g.cellBounds},     {17, &s.compensationTables},
+          {18, &b.beauty},
           {19, &s.environmentTexels}, {20, &s.environmentLevels},
           {21, &s.environmentSampling}, {22, &b.rayRadiance},
           {23, &s.environmentTables}, {24, &b.cameraFallbacks},
@@ -493,7 +496,7 @@ double environmentMethod(const scene::Scene& scene) {
 }
 
 Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::EnvironmentLighting* lighting,
-                bool tessellated) {
+                const ibl::CompensationTables& compensation, bool tessellated) {
   const std::vector<gpu::ConstantEntry> method{{"METHOD", tessellated ? 1.0 : 0.0}};
   Kernels k{&pipelines.get("intersect", method),
             &pipelines.get("surface", {{"LIGHT_COUNT", double(scene.lights.size())},
@@ -504,7 +507,8 @@ Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::
                                   {"G_MODEL", sharedModel(scene, &materials::Material::geometry)},
                                   {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)},
                                   {"TEXTURES", scene.textures.empty() ? 0.0 : 1.0},
-                                  {"EMISSION", double(emissionSlots(scene))}}),
+                                  {"EMISSION", double(emissionSlots(scene))},
+                                  {"COMPENSATION", compensation.tables.empty() ? 0.0 : 1.0}}),
             &pipelines.get("dispatch_args", {}),
             &pipelines.get("shadow", method),
             &pipelines.get("gather", {}),
@@ -610,11 +614,14 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   frame.slotsPerRay = std::uint32_t(scene.lights.size()) + environmentSlots(lighting ? &*lighting : nullptr) +
                       emissionSlots(scene);
   const EnvironmentData environment = lighting ? environmentData(*lighting, frame) : EnvironmentData{};
+  const ibl::CompensationTables compensation = ibl::compensationTables(scene);
+  const std::vector<glm::vec4> compensationTexelData = compensationTexels(compensation, frame);
   const std::uint64_t key = geometryKey(packed, tessellated, frame.tolerance);
   const bool reused = diced_ && diced_->key == key;
   if (!reused) diced_ = std::make_shared<DicedGeometry>(DicedGeometry{key, uploadGeometry(d, packed)});
   const GeometryBuffers& geometryBuffers = diced_->buffers;
-  const ShadingBuffers shadingBuffers = uploadShading(d, scene, lighting ? &*lighting : nullptr, environment, origin);
+  const ShadingBuffers shadingBuffers =
+      uploadShading(d, scene, lighting ? &*lighting : nullptr, environment, compensation, compensationTexelData, origin);
   result.stageMilliseconds.emplace_back("top levels", wallClock(start));
 
   const int width = scene.render.width;
@@ -636,7 +643,7 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   d.queue().writeBuffer(band.frame, 0, &frame, sizeof(frame));
   if (!reused) dice(d, pipelines_, packed, tessellated, table, clock);
 
-  const Kernels k = kernels(pipelines_, scene, lighting ? &*lighting : nullptr, tessellated);
+  const Kernels k = kernels(pipelines_, scene, lighting ? &*lighting : nullptr, compensation, tessellated);
   result.image = Image(window.width(), window.height());
   std::uint64_t finished = 0;
   for (const PixelRun& run : pixelRuns(window, width)) {

@@ -34,6 +34,6 @@ static_assert(sizeof(facet::gpu_layout::FallbackRecord) == 28);
 static_assert(sizeof(facet::gpu_layout::HitRecord) == 32);
 static_assert(sizeof(facet::gpu_layout::LightRecord) == 48);
 static_assert(sizeof(facet::gpu_layout::TextureSlotRecord) == 28);
-static_assert(sizeof(facet::gpu_layout::MaterialRecord) == 252);
-static_assert(sizeof(facet::gpu_layout::FrameParams) == 168);
+static_assert(sizeof(facet::gpu_layout::MaterialRecord) == 256);
+static_assert(sizeof(facet::gpu_layout::FrameParams) == 172);
 static_assert(sizeof(facet::gpu_layout::PixelAovs) == 64);

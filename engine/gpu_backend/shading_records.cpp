@@ -13,8 +13,22 @@ namespace facet::gpu_backend {
 
 namespace layout = gpu_layout;
 
+namespace {
+
+// Appends the tables' entries as (scale, bias, 0, 0) texels; returns their
+// common size (0 for none).
+std::uint32_t appendDfgTables(const std::vector<ibl::DfgTable>& tables, std::vector<glm::vec4>& texels) {
+  for (const ibl::DfgTable& table : tables)
+    for (std::size_t i = 0; i + 1 < table.scaleBias.size(); i += 2)
+      texels.emplace_back(table.scaleBias[i], table.scaleBias[i + 1], 0.0f, 0.0f);
+  return tables.empty() ? 0 : std::uint32_t(tables.front().size);
+}
+
+}  // namespace
+
 std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
-                                                    const ibl::EnvironmentLighting* environment) {
+                                                    const ibl::EnvironmentLighting* environment,
+                                                    const ibl::CompensationTables& compensation) {
   std::vector<layout::MaterialRecord> records;
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
     const materials::f32::BrdfParams p = materials::toParams32(scene.materials[i]);
@@ -53,6 +67,8 @@ std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
     r.normalTexture = textureSlotRecord(t ? t->normalTexture : none);
     r.occlusionTexture = textureSlotRecord(t ? t->occlusionTexture : none);
     r.emissiveTexture = textureSlotRecord(t ? t->emissiveTexture : none);
+    const int table = compensation.tableOfMaterial[i];
+    r.compensationTable = table == ibl::CompensationTables::kNone ? layout::FACET_NO_COMPENSATION : std::uint32_t(table);
     records.push_back(r);
   }
   return records;
@@ -101,11 +117,14 @@ EnvironmentData environmentData(const ibl::EnvironmentLighting& lighting, layout
   frame.shOffset = offset();
   for (const glm::vec4& texel : ibl::irradianceTable(p)) t.push_back(texel);
   frame.dfgOffset = offset();
-  frame.dfgSize = p.dfg.empty() ? 0 : std::uint32_t(p.dfg.front().size);
-  for (const ibl::DfgTable& table : p.dfg)
-    for (std::size_t i = 0; i + 1 < table.scaleBias.size(); i += 2)
-      t.emplace_back(table.scaleBias[i], table.scaleBias[i + 1], 0.0f, 0.0f);
+  frame.dfgSize = appendDfgTables(p.dfg, t);
   return data;
+}
+
+std::vector<glm::vec4> compensationTexels(const ibl::CompensationTables& compensation, layout::FrameParams& frame) {
+  std::vector<glm::vec4> texels;
+  frame.compensationSize = appendDfgTables(compensation.tables, texels);
+  return texels;
 }
 
 std::uint32_t emissionSlots(const scene::Scene& scene) {

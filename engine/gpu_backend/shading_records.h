@@ -10,13 +10,20 @@
 #include <vector>
 
 #include "engine/gpu_backend/raycast_layout.h"
+#include "engine/ibl/compensation_tables.h"
 #include "engine/ibl/environment_lighting.h"
 #include "scenes/scene.h"
 
 namespace facet::gpu_backend {
 
 std::vector<gpu_layout::MaterialRecord> materialRecords(const scene::Scene& scene,
-                                                        const ibl::EnvironmentLighting* environment);
+                                                        const ibl::EnvironmentLighting* environment,
+                                                        const ibl::CompensationTables& compensation);
+
+// Energy compensation's tables, one (scale, bias, 0, 0) texel per entry,
+// with their size set in `frame`.
+std::vector<glm::vec4> compensationTexels(const ibl::CompensationTables& compensation,
+                                          gpu_layout::FrameParams& frame);
 
 std::vector<gpu_layout::LightRecord> lightRecords(const scene::Scene& scene, const glm::dvec3& origin);
 

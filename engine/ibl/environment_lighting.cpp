@@ -36,12 +36,8 @@ EnvironmentLighting prepareEnvironmentLighting(const scene::Scene& scene, const 
       break;
     case scene::IblMethod::Prefiltered: {
       ModelPairs pairs;
-      for (const materials::Material& material : scene.materials) {
-        const std::pair<int, int> pair{material.distribution, material.geometry};
-        auto found = std::find(pairs.begin(), pairs.end(), pair);
-        lighting.dfgTable.push_back(int(found - pairs.begin()));
-        if (found == pairs.end()) pairs.push_back(pair);
-      }
+      for (const materials::Material& material : scene.materials)
+        lighting.dfgTable.push_back(modelPairIndex(pairs, material));
       lighting.prefiltered = prefilter(*environment.map, pairs);
       break;
     }

@@ -173,6 +173,8 @@ std::array<glm::dvec3, 9> projectOnSh(const scene::EnvironmentMap& map) {
   return shFromRowSums(rows);
 }
 
+}  // namespace
+
 DfgTable dfgTable(int distribution, int geometry, const PrefilterSettings& settings) {
   const int size = settings.dfgSize;
   DfgTable table{distribution, geometry, size, std::vector<float>(2 * std::size_t(size) * std::size_t(size))};
@@ -188,7 +190,13 @@ DfgTable dfgTable(int distribution, int geometry, const PrefilterSettings& setti
   return table;
 }
 
-}  // namespace
+int modelPairIndex(ModelPairs& pairs, const materials::Material& material) {
+  const std::pair<int, int> pair{material.distribution, material.geometry};
+  const auto found = std::find(pairs.begin(), pairs.end(), pair);
+  if (found != pairs.end()) return int(found - pairs.begin());
+  pairs.push_back(pair);
+  return int(pairs.size()) - 1;
+}
 
 PrefilteredEnvironment prefilterOnCpu(const scene::EnvironmentMap& map, const ModelPairs& models,
                                       const PrefilterSettings& settings) {
@@ -250,8 +258,8 @@ glm::dvec2 dfgLookupOnDemand(int distribution, int geometry, double nv, double a
 }
 
 glm::dvec3 energyCompensationOnDemand(const m::BrdfParams& params, double nv, const PrefilterSettings& settings) {
-  return m::energy_compensation(m::fresnel_F(params, 1.0),
-                                dfgLookupOnDemand(params.d_model, params.g_model, nv, params.alpha, settings));
+  return m::specular_compensation(params,
+                                  dfgLookupOnDemand(params.d_model, params.g_model, nv, params.alpha, settings));
 }
 
 namespace {

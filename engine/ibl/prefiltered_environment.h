@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "materials/material.h"
 #include "materials/shading.h"
 #include "scenes/environment_map.h"
 
@@ -63,6 +64,9 @@ struct PrefilteredEnvironment {
 
 using ModelPairs = std::vector<std::pair<int, int>>;  // (distribution, geometry) ids of materials/shading
 
+// The index of `material`'s (D, G) pair in `pairs`, appended if new.
+int modelPairIndex(ModelPairs& pairs, const materials::Material& material);
+
 PrefilteredEnvironment prefilterOnCpu(const scene::EnvironmentMap& map, const ModelPairs& models,
                                       const PrefilterSettings& settings = {});
 
@@ -70,6 +74,9 @@ PrefilteredEnvironment prefilterOnCpu(const scene::EnvironmentMap& map, const Mo
 // kernels use. `direction` is in the map's frame.
 glm::dvec3 prefilteredRadiance(const PrefilteredEnvironment& env, const glm::dvec3& direction, double alpha);
 glm::dvec2 dfgLookup(const DfgTable& table, double nv, double alpha);
+// The (D, G) pair's table at settings.dfgSize^2 entries of settings.dfgSamples
+// samples each, built in double and stored in float.
+DfgTable dfgTable(int distribution, int geometry, const PrefilterSettings& settings = {});
 // What dfgLookup returns from the (D, G) table `settings` would build,
 // computing only the four entries it reads, in double (the tables store
 // float), for one-off queries.

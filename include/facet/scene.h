@@ -31,6 +31,7 @@ struct Material {
   std::optional<Vec3> eta;
   std::optional<Vec3> k;
   std::optional<Vec3> diffuse;
+  bool energyCompensation = false;  // multiple-scattering compensation of the specular lobe
 };
 
 // A Catmull-Clark control cage in world space; indices are 0-based and each

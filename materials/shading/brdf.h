@@ -72,3 +72,11 @@ FACET_FN BrdfTerms brdf_terms(BrdfParams p, vec3 n, vec3 l, vec3 v) {
 }
 
 FACET_FN vec3 brdf_evaluate(BrdfParams p, vec3 n, vec3 l, vec3 v) { return brdf_terms(p, n, l, v).value; }
+
+// f(l, v) with its specular lobe scaled per channel by `specular_scale`:
+// vec3(1) is the course's single-scattering model, bit for bit; energy
+// compensation's factor (compute/shared/dfg.h) restores what it loses.
+FACET_FN vec3 brdf_evaluate_scaled(BrdfParams p, vec3 n, vec3 l, vec3 v, vec3 specular_scale) {
+  BrdfTerms t = brdf_terms(p, n, l, v);
+  return t.specular * specular_scale + t.diffuse;
+}

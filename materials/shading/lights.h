@@ -60,9 +60,10 @@ FACET_FN bool light_arrives(LightIncidence incidence, vec3 n, vec3 ng) {
 }
 
 // The radiance towards v of a light of incident colour c_light from l:
-// pi f(l, v) c_light (n.l).
-FACET_FN vec3 punctual_radiance(BrdfParams p, vec3 n, vec3 l, vec3 v, vec3 color) {
-  return PI * brdf_evaluate(p, n, l, v) * color * dot(n, l);
+// pi f(l, v) c_light (n.l), the specular lobe scaled by `specular_scale`
+// (brdf_evaluate_scaled).
+FACET_FN vec3 punctual_radiance(BrdfParams p, vec3 n, vec3 l, vec3 v, vec3 color, vec3 specular_scale) {
+  return PI * brdf_evaluate_scaled(p, n, l, v, specular_scale) * color * dot(n, l);
 }
 
 // Shadow rays leave the hit point along the geometric normal and start their

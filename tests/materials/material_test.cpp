@@ -66,6 +66,15 @@ TEST(MaterialFile, BlenderMetallicReadsF0AndRoundTrips) {
             "test.json: field 'f0': required by fresnel 'blender-metallic' (or give a preset)");
 }
 
+TEST(MaterialFile, EnergyCompensationIsOffByDefaultAndRoundTrips) {
+  EXPECT_FALSE(build(R"({"preset": "gold", "roughness": 0.5})").energyCompensation);
+  Material m = build(R"({"preset": "gold", "roughness": 0.5, "energy_compensation": true})");
+  EXPECT_TRUE(m.energyCompensation);
+  EXPECT_TRUE(build(toJson(m).dump()).energyCompensation);
+  EXPECT_EQ(errorOf(R"({"preset": "gold", "alpha": 0.2, "energy_compensation": 1})"),
+            "test.json: field 'energy_compensation': expected true or false");
+}
+
 TEST(MaterialFile, ErrorsNameTheFileTheFieldAndTheRule) {
   EXPECT_EQ(errorOf(R"({"alpha": 1.5, "f0": 0.04})"), "test.json: field 'alpha': must be in [0, 1], got 1.5");
   EXPECT_EQ(errorOf(R"({"alpha": 0.5, "f0": [0.04, 2, 0.04]})"),

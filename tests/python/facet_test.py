@@ -99,6 +99,24 @@ class Render(unittest.TestCase):
         self.assertIn("beauty", report["aovs"])
         self.assertLessEqual(report["aovs"]["depth"]["max_relative"], report["aovs"]["depth"]["tolerance"])
 
+    def test_energy_compensation_brightens_a_rough_metal_on_both_backends(self):
+        def scene(compensated):
+            material = facet.Material(preset="gold", roughness=0.9, energy_compensation=compensated)
+            self.assertEqual(material.energy_compensation, compensated)
+            return facet.Scene([facet.Object(cube(sharp_edge=False), name="cube")], materials=[material],
+                               lights=[facet.Light("directional", direction=(-1, -1, -1), color=(2, 2, 2))],
+                               camera=facet.Camera(eye=(3, 2.5, 4), fov=35), size=(48, 32))
+        single = self.renderer.render(scene(False), backend="cpu")["beauty"]
+        compensated = self.renderer.render(scene(True), backend="cpu")["beauty"]
+        lit = single[..., :3].sum(axis=-1) > 0
+        self.assertGreater(lit.sum(), 100)
+        ratio = compensated[lit, :3].sum() / single[lit, :3].sum()
+        # A rough gold loses a sizeable share of its light to single scattering.
+        self.assertGreater(ratio, 1.05)
+        self.assertTrue((compensated[..., :3] >= single[..., :3]).all())
+        report = self.renderer.parity(scene(True))
+        self.assertTrue(report["pass"], report["summary"])
+
     def test_render_settings_are_checked(self):
         with self.assertRaisesRegex(facet.Error, r"render settings: width: must be in \[1, 16384\]"):
             self.renderer.render(str(EXAMPLES / "gold_cube.gltf"), size=(0, 10))

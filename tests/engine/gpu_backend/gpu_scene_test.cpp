@@ -301,6 +301,7 @@ TEST(GpuLayout, GlslLayoutOfTheSharedHeadersIsTheCppLayout) {
   FACET_EXPECT_MEMBER(FrameParams, patchCount);
   FACET_EXPECT_MEMBER(FrameParams, tolerance);
   FACET_EXPECT_MEMBER(FrameParams, dfgSize);
+  FACET_EXPECT_MEMBER(FrameParams, compensationSize);
 #undef FACET_EXPECT_MEMBER
 }
 

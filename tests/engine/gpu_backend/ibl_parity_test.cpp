@@ -33,6 +33,7 @@ struct IblCase {
   bool occlusion;
   int samples;
   const char* map = "courtyard_256x128.hdr";
+  bool compensated = false;  // energy compensation on every material
 };
 
 void PrintTo(const IblCase& c, std::ostream* out) { *out << c.name; }
@@ -51,6 +52,7 @@ scene::Scene previewUnder(const IblCase& c) {
   s.environment->method = c.method;
   s.environment->occlusion = c.occlusion;
   s.environment->samples = c.samples;
+  for (materials::Material& m : s.materials) m.energyCompensation = c.compensated;
   return s;
 }
 
@@ -99,7 +101,13 @@ INSTANTIATE_TEST_SUITE_P(Methods, IblParity,
                                            IblCase{"sampled_occluded", IblMethod::Sampled, true, 4},
                                            IblCase{"filtered_unoccluded", IblMethod::Filtered, false, 8},
                                            IblCase{"filtered_occluded", IblMethod::Filtered, true, 4},
-                                           IblCase{"filtered_sun_occluded", IblMethod::Filtered, true, 4, "sunrise.exr"}),
+                                           IblCase{"filtered_sun_occluded", IblMethod::Filtered, true, 4, "sunrise.exr"},
+                                           IblCase{"prefiltered_compensated", IblMethod::Prefiltered, false, 1,
+                                                   "courtyard_256x128.hdr", true},
+                                           IblCase{"sampled_compensated", IblMethod::Sampled, true, 4,
+                                                   "courtyard_256x128.hdr", true},
+                                           IblCase{"filtered_sun_compensated", IblMethod::Filtered, false, 8,
+                                                   "sunrise.exr", true}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 // Under a white environment a white Lambert surface returns 1 with the split

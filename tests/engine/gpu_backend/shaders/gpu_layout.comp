@@ -24,7 +24,7 @@ void main() {
   counters.cameraFallbacks = f.ray + f.cell + uint(f.t) + f.patchIndex + uint(f.tParam) + frame.fallbackCapacity +
                              p.kind + p.firstPoint + uint(p.faceU0) + p.sourcePatch + p.transitionMask + p.firstNormal + p.firstTexcoord + o.firstPatch + frame.rootNode +
                              o.rate + o.firstQuadtreeNode + o.firstEdgeMidpoint + uint(r.ray.tMax) + r.slot +
-                             hits[0].patchIndex + frame.patchCount + uint(frame.tolerance) + frame.dfgSize +
+                             hits[0].patchIndex + frame.patchCount + uint(frame.tolerance) + frame.dfgSize + frame.compensationSize +
                              FACET_BVH4_TEXELS;
   counters.shadowX = 0u;
   counters.cameraFallbackX = 0u;

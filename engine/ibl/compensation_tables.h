@@ -1,0 +1,30 @@
+// Energy compensation's albedo tables (docs/shading.md, "Energy
+// compensation"): one DFG table per (D, G) pair of the scene's compensated
+// materials, built like the split sum's and read alike by both backends. A
+// scene with no compensated material builds none.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+#include "engine/ibl/prefiltered_environment.h"
+#include "scenes/scene.h"
+
+namespace facet::ibl {
+
+struct CompensationTables {
+  static constexpr int kNone = -1;
+  std::vector<DfgTable> tables;
+  std::vector<int> tableOfMaterial;  // per scene material: index into tables, or kNone
+};
+
+CompensationTables compensationTables(const scene::Scene& scene);
+
+// The factor on scene material `material`'s specular lobe, parameters
+// `params` after its textures, seen at n.v = nv: vec3(1) when the material
+// is not compensated.
+glm::dvec3 specularScale(const CompensationTables& tables, int material, const materials::f64::BrdfParams& params,
+                         double nv);
+
+}  // namespace facet::ibl
