@@ -1,7 +1,7 @@
-// The prefiltered environment's disk cache. One file per key; the file
-// repeats the key's text, so that a hash collision reads as a miss, and
-// ends in a magic, so that a truncated file does too. Any failure to read
-// or write only costs the build.
+// The disk cache of prefiltered environments and of DFG tables. One file
+// per key; the file repeats the key's text, so that a hash collision reads
+// as a miss, and ends in a magic, so that a truncated file does too. Any
+// failure to read or write only costs the build.
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -50,6 +50,13 @@ std::string keyText(const scene::EnvironmentMap& map, const ModelPairs& models, 
       << " dfgSamples " << settings.dfgSamples << " irradianceWidth " << settings.irradianceWidth << " models";
   for (const auto& [distribution, geometry] : models) key << " " << distribution << "/" << geometry;
   key << " builder " << builder;
+  return key.str();
+}
+
+std::string dfgKeyText(int distribution, int geometry, const PrefilterSettings& settings) {
+  std::ostringstream key;
+  key << "facet dfg table v" << kFormatVersion << " code " << FACET_PREFILTER_FINGERPRINT << " dfgSize "
+      << settings.dfgSize << " dfgSamples " << settings.dfgSamples << " model " << distribution << "/" << geometry;
   return key.str();
 }
 
@@ -137,32 +144,56 @@ std::optional<RadianceLevel> getLevel(Reader& r) {
   return level;
 }
 
-std::vector<char> serialize(const PrefilteredEnvironment& env, const std::string& key) {
-  Writer w;
+void putTable(Writer& w, const DfgTable& table) {
+  w.put(std::int32_t(table.distribution));
+  w.put(std::int32_t(table.geometry));
+  w.put(std::int32_t(table.size));
+  w.putArray(table.scaleBias);
+}
+
+std::optional<DfgTable> getTable(Reader& r) {
+  DfgTable table;
+  table.distribution = r.get<std::int32_t>();
+  table.geometry = r.get<std::int32_t>();
+  table.size = r.get<std::int32_t>();
+  if (table.size <= 0) return std::nullopt;
+  table.scaleBias = r.getArray<float>(2 * std::uint64_t(table.size) * std::uint64_t(table.size));
+  return table;
+}
+
+// The head every file starts with: the magic, the format and the key.
+void putHead(Writer& w, const std::string& key) {
   w.putBytes(kMagic, sizeof kMagic);
   w.put(kFormatVersion);
   w.putArray(std::vector<char>(key.begin(), key.end()));
+}
+
+bool headMatches(Reader& r, const std::string& key) {
+  if (!r.matches(kMagic, sizeof kMagic) || r.get<std::uint32_t>() != kFormatVersion) return false;
+  const auto storedKey = r.getArray<char>(key.size());
+  return r.ok() && std::string(storedKey.begin(), storedKey.end()) == key;
+}
+
+// The tail it ends with, which a truncated file lacks.
+bool tailMatches(Reader& r) { return r.matches(kMagic, sizeof kMagic) && r.ok() && r.atEnd(); }
+
+std::vector<char> serialize(const PrefilteredEnvironment& env, const std::string& key) {
+  Writer w;
+  putHead(w, key);
   w.put(std::uint32_t(env.levels.size()));
   for (const RadianceLevel& level : env.levels) putLevel(w, level);
   for (const glm::dvec3& c : env.irradianceSh) w.put(c);
   putLevel(w, env.irradianceMap);
   w.put(std::uint8_t(env.irradianceFromMap));
   w.put(std::uint32_t(env.dfg.size()));
-  for (const DfgTable& table : env.dfg) {
-    w.put(std::int32_t(table.distribution));
-    w.put(std::int32_t(table.geometry));
-    w.put(std::int32_t(table.size));
-    w.putArray(table.scaleBias);
-  }
+  for (const DfgTable& table : env.dfg) putTable(w, table);
   w.putBytes(kMagic, sizeof kMagic);
   return w.data();
 }
 
 std::optional<PrefilteredEnvironment> deserialize(const std::vector<char>& data, const std::string& key) {
   Reader r(data);
-  if (!r.matches(kMagic, sizeof kMagic) || r.get<std::uint32_t>() != kFormatVersion) return std::nullopt;
-  const auto storedKey = r.getArray<char>(key.size());
-  if (!r.ok() || std::string(storedKey.begin(), storedKey.end()) != key) return std::nullopt;
+  if (!headMatches(r, key)) return std::nullopt;
   PrefilteredEnvironment env;
   const auto levels = r.get<std::uint32_t>();
   for (std::uint32_t i = 0; i < levels && r.ok(); ++i) {
@@ -179,15 +210,11 @@ std::optional<PrefilteredEnvironment> deserialize(const std::vector<char>& data,
   env.irradianceFromMap = fromMap == 1;
   const auto tables = r.get<std::uint32_t>();
   for (std::uint32_t i = 0; i < tables && r.ok(); ++i) {
-    DfgTable table;
-    table.distribution = r.get<std::int32_t>();
-    table.geometry = r.get<std::int32_t>();
-    table.size = r.get<std::int32_t>();
-    if (table.size <= 0) return std::nullopt;
-    table.scaleBias = r.getArray<float>(2 * std::uint64_t(table.size) * std::uint64_t(table.size));
-    env.dfg.push_back(std::move(table));
+    std::optional<DfgTable> table = getTable(r);
+    if (!table) return std::nullopt;
+    env.dfg.push_back(std::move(*table));
   }
-  if (!r.matches(kMagic, sizeof kMagic) || !r.ok() || !r.atEnd()) return std::nullopt;
+  if (!tailMatches(r)) return std::nullopt;
   return env;
 }
 
@@ -219,25 +246,52 @@ void writeFileAtomically(const fs::path& file, const std::vector<char>& data) {
   if (error) fs::remove(temporary, error);
 }
 
+std::vector<char> serialize(const DfgTable& table, const std::string& key) {
+  Writer w;
+  putHead(w, key);
+  putTable(w, table);
+  w.putBytes(kMagic, sizeof kMagic);
+  return w.data();
+}
+
+std::optional<DfgTable> deserializeTable(const std::vector<char>& data, const std::string& key) {
+  Reader r(data);
+  if (!headMatches(r, key)) return std::nullopt;
+  std::optional<DfgTable> table = getTable(r);
+  if (!table || !tailMatches(r)) return std::nullopt;
+  return table;
+}
+
+// The stored value of `key` (file `<prefix>-<hash>.bin`) when present and
+// intact, else `build`'s, stored.
+template <class T, class Deserialize, class Build>
+T cached(const std::string& prefix, const std::string& key, Deserialize deserializeStored, Build build) {
+  const std::optional<fs::path> directory = cacheDirectory();
+  if (!directory) return build();
+  char name[48];
+  std::snprintf(name, sizeof name, "%s-%016llx.bin", prefix.c_str(), static_cast<unsigned long long>(fnv1a(key)));
+  const fs::path file = *directory / name;
+  try {
+    if (const auto data = readFile(file))
+      if (std::optional<T> stored = deserializeStored(*data, key)) return std::move(*stored);
+  } catch (const std::exception&) {  // a file too large to hold: a miss like any other bad file
+  }
+  T value = build();
+  writeFileAtomically(file, serialize(value, key));
+  return value;
+}
+
 }  // namespace
 
 PrefilteredEnvironment cachedPrefilter(const scene::EnvironmentMap& map, const ModelPairs& models,
                                        const PrefilterSettings& settings, const std::string& builder,
                                        const std::function<PrefilteredEnvironment()>& build) {
-  const std::optional<fs::path> directory = cacheDirectory();
-  if (!directory) return build();
-  const std::string key = keyText(map, models, settings, builder);
-  char name[40];
-  std::snprintf(name, sizeof name, "prefiltered-%016llx.bin", static_cast<unsigned long long>(fnv1a(key)));
-  const fs::path file = *directory / name;
-  try {
-    if (const auto data = readFile(file))
-      if (auto stored = deserialize(*data, key)) return std::move(*stored);
-  } catch (const std::exception&) {  // a file too large to hold: a miss like any other bad file
-  }
-  PrefilteredEnvironment env = build();
-  writeFileAtomically(file, serialize(env, key));
-  return env;
+  return cached<PrefilteredEnvironment>("prefiltered", keyText(map, models, settings, builder), deserialize, build);
+}
+
+DfgTable cachedDfgTable(int distribution, int geometry, const PrefilterSettings& settings) {
+  return cached<DfgTable>("dfg", dfgKeyText(distribution, geometry, settings), deserializeTable,
+                          [&] { return dfgTable(distribution, geometry, settings); });
 }
 
 }  // namespace facet::ibl

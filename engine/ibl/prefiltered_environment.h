@@ -109,5 +109,7 @@ std::vector<glm::vec4> irradianceTable(const PrefilteredEnvironment& env);
 PrefilteredEnvironment cachedPrefilter(const scene::EnvironmentMap& map, const ModelPairs& models,
                                        const PrefilterSettings& settings, const std::string& builder,
                                        const std::function<PrefilteredEnvironment()>& build);
+// dfgTable through the same cache, keyed by the pair and the table's settings.
+DfgTable cachedDfgTable(int distribution, int geometry, const PrefilterSettings& settings = {});
 
 }  // namespace facet::ibl

@@ -1,6 +1,6 @@
-// cachedPrefilter: a hit skips the build and returns what was stored; a
-// damaged file, other settings or an unwritable directory only cost a build;
-// processes building one key at once leave one whole file.
+// cachedPrefilter and cachedDfgTable: a hit skips the build and returns what
+// was stored; a damaged file, other settings or an unwritable directory only
+// cost a build; processes building one key at once leave one whole file.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -109,6 +109,27 @@ TEST_F(PrefilterCache, DamagedFileIsRebuilt) {
   EXPECT_EQ(builds_, 4);
   expectSame(cached(settings_), reference);
   EXPECT_EQ(builds_, 4);
+}
+
+// The DFG tables energy compensation reads go through the same files: a hit
+// returns the table dfgTable builds, a damaged file is rebuilt, and another
+// pair or grid is another file.
+TEST_F(PrefilterCache, DfgTablesAreCachedLikeEnvironments) {
+  const DfgTable built = dfgTable(0, 4, settings_);
+  EXPECT_EQ(cachedDfgTable(0, 4, settings_).scaleBias, built.scaleBias);
+  ASSERT_EQ(files().size(), 1u);
+  const fs::path file = files().at(0);
+  EXPECT_EQ(file.filename().string().rfind("dfg-", 0), 0u);
+  const auto modified = fs::last_write_time(file);
+  EXPECT_EQ(cachedDfgTable(0, 4, settings_).scaleBias, built.scaleBias);
+  EXPECT_EQ(fs::last_write_time(file), modified);  // read, not rebuilt
+
+  fs::resize_file(file, fs::file_size(file) - 1);
+  EXPECT_EQ(cachedDfgTable(0, 4, settings_).scaleBias, built.scaleBias);
+  const DfgTable other = cachedDfgTable(1, 6, settings_);
+  EXPECT_EQ(other.distribution, 1);
+  EXPECT_EQ(other.scaleBias, dfgTable(1, 6, settings_).scaleBias);
+  EXPECT_EQ(files().size(), 2u);
 }
 
 TEST_F(PrefilterCache, OtherSettingsModelsOrMapUseAnotherFile) {
