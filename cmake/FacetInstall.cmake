@@ -5,6 +5,7 @@
 #   <libdir>/cmake/facet/facetConfig*.cmake  imported target facet::facet
 #   <libdir>/pkgconfig/facet.pc
 #   share/facet/scenes/                      examples, cages, environments
+#   share/facet/tools/blender/               the Cycles comparison's script (facet bench)
 #   <FACET_PYTHON_INSTALL_DIR>/facet*.so     the Python module
 # Kernels are compiled into the code; nothing installed reads the source tree.
 include(CMakePackageConfigHelpers)
@@ -35,8 +36,10 @@ install(FILES ${PROJECT_BINARY_DIR}/facet.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}
 foreach(folder examples cages environments)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenes/${folder} DESTINATION ${FACET_DATA_INSTALL_DIR}/scenes)
 endforeach()
+install(FILES ${PROJECT_SOURCE_DIR}/tools/blender/material_preview.py DESTINATION ${FACET_DATA_INSTALL_DIR}/tools/blender)
 
 # The build tree's binary finds its data as an installed one does
-# (apps/facet/data_folder.h): share/facet/scenes beside it.
-file(MAKE_DIRECTORY ${PROJECT_BINARY_DIR}/share/facet)
+# (apps/facet/data_folder.h): share/facet/scenes and tools/blender beside it.
+file(MAKE_DIRECTORY ${PROJECT_BINARY_DIR}/share/facet/tools)
 file(CREATE_LINK ${PROJECT_SOURCE_DIR}/scenes ${PROJECT_BINARY_DIR}/share/facet/scenes SYMBOLIC)
+file(CREATE_LINK ${PROJECT_SOURCE_DIR}/tools/blender ${PROJECT_BINARY_DIR}/share/facet/tools/blender SYMBOLIC)

@@ -11,7 +11,8 @@ endif()
 foreach(path bin/facet ${LIBDIR}/libfacet.so include/facet/facet.h include/facet/version.h
              ${LIBDIR}/cmake/facet/facetConfig.cmake ${LIBDIR}/cmake/facet/facetConfigVersion.cmake
              ${LIBDIR}/pkgconfig/facet.pc share/facet/scenes/examples/preview.json
-             share/facet/scenes/environments/sunrise.exr share/facet/scenes/cages/cube.obj)
+             share/facet/scenes/environments/sunrise.exr share/facet/scenes/cages/cube.obj
+             share/facet/tools/blender/material_preview.py)
   if(NOT EXISTS ${PREFIX}/${path})
     message(FATAL_ERROR "the install has no ${path}")
   endif()
