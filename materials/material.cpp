@@ -179,9 +179,9 @@ MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view s
     return glm::dvec3(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
   };
 
-  static const char* const kKeys[] = {"name", "preset", "distribution", "geometry", "fresnel",
-                                      "alpha", "roughness", "f0", "ior", "eta",
-                                      "k", "diffuse", "energy_compensation"};
+  static const char* const kKeys[] = {
+      "name", "preset", "distribution", "geometry",           "fresnel", "alpha", "roughness", "f0", "ior",
+      "eta",  "k",      "diffuse",      "energy_compensation"};
   if (const std::optional<std::string> key = findUnknownKey(json, kKeys)) fail(*key, unknownFieldRule(kKeys));
 
   MaterialSpec spec;

@@ -50,7 +50,7 @@ struct Material {
   glm::dvec3 eta{1.5};  // index of refraction (dielectric) or its real part (conductor)
   glm::dvec3 k{0.0};    // extinction coefficient (conductor)
   glm::dvec3 diffuse{0.0};
-  glm::dvec3 emission{0.0};                  // radiance the surface emits, added to what it reflects
+  glm::dvec3 emission{0.0};  // radiance the surface emits, added to what it reflects
   // Multiple-scattering compensation of the specular lobe (docs/shading.md,
   // "Energy compensation"); off keeps the course's single-scattering model.
   bool energyCompensation = false;

@@ -182,8 +182,8 @@ PYBIND11_MODULE(facet, m) {
       .def(py::init([](const std::string& name, OptText preset, OptText d, OptText g, OptText f, OptReal alpha,
                        OptReal roughness, OptVec f0, OptVec ior, OptVec eta, OptVec k, OptVec diffuse,
                        bool energyCompensation) {
-             return facet::Material{name, preset, d, g, f, alpha, roughness, f0, ior, eta, k, diffuse,
-                                    energyCompensation};
+             return facet::Material{
+                 name, preset, d, g, f, alpha, roughness, f0, ior, eta, k, diffuse, energyCompensation};
            }),
            py::kw_only(), py::arg("name") = "", py::arg("preset") = py::none(), py::arg("d") = py::none(),
            py::arg("g") = py::none(), py::arg("f") = py::none(), py::arg("alpha") = py::none(),

@@ -236,22 +236,36 @@ BandBuffers allocateBands(gpu::Device& d, std::uint64_t bandPixels, std::uint64_
 using BindingTable = std::map<std::uint32_t, const gpu::Buffer*>;
 
 BindingTable bindingTable(const GeometryBuffers& g, const ShadingBuffers& s, const BandBuffers& b) {
-  return {{0, &b.frame},           {1, &g.nodes},
-          {2, &g.patches},         {3, &g.points},
-          {4, &g.objects},         {5, &g.gridVertices},
-          {6, &g.edgeMidpoints},   {7, &g.headers},
+  return {{0, &b.frame},
+          {1, &g.nodes},
+          {2, &g.patches},
+          {3, &g.points},
+          {4, &g.objects},
+          {5, &g.gridVertices},
+          {6, &g.edgeMidpoints},
+          {7, &g.headers},
           {9, &b.hits},
-          {10, &b.counters},       {11, &s.materials},
-          {12, &s.lights},         {13, &b.aovs},
-          {14, &b.shadowRays},     {15, &b.contributions},
-          {16, &g.cellBounds},     {17, &s.compensationTables},
+          {10, &b.counters},
+          {11, &s.materials},
+          {12, &s.lights},
+          {13, &b.aovs},
+          {14, &b.shadowRays},
+          {15, &b.contributions},
+          {16, &g.cellBounds},
+          {17, &s.compensationTables},
           {18, &b.beauty},
-          {19, &s.environmentTexels}, {20, &s.environmentLevels},
-          {21, &s.environmentSampling}, {22, &b.rayRadiance},
-          {23, &s.environmentTables}, {24, &b.cameraFallbacks},
-          {25, &b.shadowFallbacks}, {26, &g.refitOrder},
-          {27, &g.normals},        {28, &g.texcoords},
-          {29, &s.textureTexels},  {30, &s.textureLevels},
+          {19, &s.environmentTexels},
+          {20, &s.environmentLevels},
+          {21, &s.environmentSampling},
+          {22, &b.rayRadiance},
+          {23, &s.environmentTables},
+          {24, &b.cameraFallbacks},
+          {25, &b.shadowFallbacks},
+          {26, &g.refitOrder},
+          {27, &g.normals},
+          {28, &g.texcoords},
+          {29, &s.textureTexels},
+          {30, &s.textureLevels},
           {31, &s.textureTable}};
 }
 
@@ -500,15 +514,15 @@ Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::
   const std::vector<gpu::ConstantEntry> method{{"METHOD", tessellated ? 1.0 : 0.0}};
   Kernels k{&pipelines.get("intersect", method),
             &pipelines.get("surface", {{"LIGHT_COUNT", double(scene.lights.size())},
-                                  {"ENVIRONMENT", environmentMethod(scene)},
-                                  {"OCCLUSION", scene.environment && scene.environment->occlusion ? 1.0 : 0.0},
-                                  {"ENVIRONMENT_SAMPLES", lighting && lighting->environmentSamples ? 1.0 : 0.0},
-                                  {"D_MODEL", sharedModel(scene, &materials::Material::distribution)},
-                                  {"G_MODEL", sharedModel(scene, &materials::Material::geometry)},
-                                  {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)},
-                                  {"TEXTURES", scene.textures.empty() ? 0.0 : 1.0},
-                                  {"EMISSION", double(emissionSlots(scene))},
-                                  {"COMPENSATION", compensation.tables.empty() ? 0.0 : 1.0}}),
+                                       {"ENVIRONMENT", environmentMethod(scene)},
+                                       {"OCCLUSION", scene.environment && scene.environment->occlusion ? 1.0 : 0.0},
+                                       {"ENVIRONMENT_SAMPLES", lighting && lighting->environmentSamples ? 1.0 : 0.0},
+                                       {"D_MODEL", sharedModel(scene, &materials::Material::distribution)},
+                                       {"G_MODEL", sharedModel(scene, &materials::Material::geometry)},
+                                       {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)},
+                                       {"TEXTURES", scene.textures.empty() ? 0.0 : 1.0},
+                                       {"EMISSION", double(emissionSlots(scene))},
+                                       {"COMPENSATION", compensation.tables.empty() ? 0.0 : 1.0}}),
             &pipelines.get("dispatch_args", {}),
             &pipelines.get("shadow", method),
             &pipelines.get("gather", {}),
@@ -620,8 +634,8 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   const bool reused = diced_ && diced_->key == key;
   if (!reused) diced_ = std::make_shared<DicedGeometry>(DicedGeometry{key, uploadGeometry(d, packed)});
   const GeometryBuffers& geometryBuffers = diced_->buffers;
-  const ShadingBuffers shadingBuffers =
-      uploadShading(d, scene, lighting ? &*lighting : nullptr, environment, compensation, compensationTexelData, origin);
+  const ShadingBuffers shadingBuffers = uploadShading(d, scene, lighting ? &*lighting : nullptr, environment,
+                                                      compensation, compensationTexelData, origin);
   result.stageMilliseconds.emplace_back("top levels", wallClock(start));
 
   const int width = scene.render.width;

@@ -68,7 +68,8 @@ std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
     r.occlusionTexture = textureSlotRecord(t ? t->occlusionTexture : none);
     r.emissiveTexture = textureSlotRecord(t ? t->emissiveTexture : none);
     const int table = compensation.tableOfMaterial[i];
-    r.compensationTable = table == ibl::CompensationTables::kNone ? layout::FACET_NO_COMPENSATION : std::uint32_t(table);
+    r.compensationTable =
+        table == ibl::CompensationTables::kNone ? layout::FACET_NO_COMPENSATION : std::uint32_t(table);
     records.push_back(r);
   }
   return records;

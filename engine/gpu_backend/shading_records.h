@@ -22,8 +22,7 @@ std::vector<gpu_layout::MaterialRecord> materialRecords(const scene::Scene& scen
 
 // Energy compensation's tables, one (scale, bias, 0, 0) texel per entry,
 // with their size set in `frame`.
-std::vector<glm::vec4> compensationTexels(const ibl::CompensationTables& compensation,
-                                          gpu_layout::FrameParams& frame);
+std::vector<glm::vec4> compensationTexels(const ibl::CompensationTables& compensation, gpu_layout::FrameParams& frame);
 
 std::vector<gpu_layout::LightRecord> lightRecords(const scene::Scene& scene, const glm::dvec3& origin);
 

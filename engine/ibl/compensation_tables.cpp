@@ -24,7 +24,8 @@ CompensationTables compensationTables(const scene::Scene& scene) {
   for (const materials::Material& material : scene.materials)
     result.tableOfMaterial.push_back(material.energyCompensation ? modelPairIndex(pairs, material)
                                                                  : CompensationTables::kNone);
-  for (const auto& [distribution, geometry] : pairs) result.tables.push_back(cachedDfgTable(distribution, geometry, compensationTableSettings()));
+  for (const auto& [distribution, geometry] : pairs)
+    result.tables.push_back(cachedDfgTable(distribution, geometry, compensationTableSettings()));
   return result;
 }
 

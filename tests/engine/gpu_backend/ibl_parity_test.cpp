@@ -94,21 +94,20 @@ TEST_P(IblParity, MatchesTheCpuReference) {
   EXPECT_NEAR(double(gpu.shadowRays), double(cpuRays.shadowRays), 1e-2 * double(cpuRays.shadowRays) + 2);
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, IblParity,
-                         ::testing::Values(IblCase{"prefiltered", IblMethod::Prefiltered, false, 1},
-                                           IblCase{"prefiltered_sun", IblMethod::Prefiltered, false, 1, "sunrise.exr"},
-                                           IblCase{"sampled_unoccluded", IblMethod::Sampled, false, 8},
-                                           IblCase{"sampled_occluded", IblMethod::Sampled, true, 4},
-                                           IblCase{"filtered_unoccluded", IblMethod::Filtered, false, 8},
-                                           IblCase{"filtered_occluded", IblMethod::Filtered, true, 4},
-                                           IblCase{"filtered_sun_occluded", IblMethod::Filtered, true, 4, "sunrise.exr"},
-                                           IblCase{"prefiltered_compensated", IblMethod::Prefiltered, false, 1,
-                                                   "courtyard_256x128.hdr", true},
-                                           IblCase{"sampled_compensated", IblMethod::Sampled, true, 4,
-                                                   "courtyard_256x128.hdr", true},
-                                           IblCase{"filtered_sun_compensated", IblMethod::Filtered, false, 8,
-                                                   "sunrise.exr", true}),
-                         [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(
+    Methods, IblParity,
+    ::testing::Values(IblCase{"prefiltered", IblMethod::Prefiltered, false, 1},
+                      IblCase{"prefiltered_sun", IblMethod::Prefiltered, false, 1, "sunrise.exr"},
+                      IblCase{"sampled_unoccluded", IblMethod::Sampled, false, 8},
+                      IblCase{"sampled_occluded", IblMethod::Sampled, true, 4},
+                      IblCase{"filtered_unoccluded", IblMethod::Filtered, false, 8},
+                      IblCase{"filtered_occluded", IblMethod::Filtered, true, 4},
+                      IblCase{"filtered_sun_occluded", IblMethod::Filtered, true, 4, "sunrise.exr"},
+                      IblCase{"prefiltered_compensated", IblMethod::Prefiltered, false, 1, "courtyard_256x128.hdr",
+                              true},
+                      IblCase{"sampled_compensated", IblMethod::Sampled, true, 4, "courtyard_256x128.hdr", true},
+                      IblCase{"filtered_sun_compensated", IblMethod::Filtered, false, 8, "sunrise.exr", true}),
+    [](const auto& info) { return std::string(info.param.name); });
 
 // Under a white environment a white Lambert surface returns 1 with the split
 // sum: the GPU's SH projection is exact too.
