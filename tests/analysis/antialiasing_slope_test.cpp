@@ -34,7 +34,9 @@ TEST(AntialiasingSlope, SilhouettesConvergeAndFlatShadingIsExact) {
               curve.points[3].silhouetteRmse, curve.silhouetteSlope);
   for (std::size_t i = 0; i < curve.points.size(); ++i) {
     EXPECT_LT(curve.points[i].smoothRmse, 1e-6) << curve.points[i].samplesPerPixel << " spp";
-    if (i > 0) EXPECT_LT(curve.points[i].silhouetteRmse, curve.points[i - 1].silhouetteRmse);
+    if (i > 0) {
+      EXPECT_LT(curve.points[i].silhouetteRmse, curve.points[i - 1].silhouetteRmse);
+    }
   }
   EXPECT_GT(curve.points.back().silhouetteRmse, 0.0);
   EXPECT_LT(curve.silhouetteSlope, 0.0);

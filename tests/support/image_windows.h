@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -12,6 +13,14 @@
 #include "engine/image/pixel_rect.h"
 
 namespace facet::testing {
+
+// "(x, y)"; built with snprintf, since GCC 12 warns (-Wrestrict, falsely) on
+// a literal + std::string chain here.
+inline std::string pixelName(int x, int y) {
+  char name[32];
+  std::snprintf(name, sizeof name, "(%d, %d)", x, y);
+  return name;
+}
 
 // The pixels of `crop` that differ from pixel (x0 + x, y0 + y) of `whole`
 // in any plane, as "(x, y)" of the whole image; at most `most` of them.
@@ -29,7 +38,7 @@ inline std::vector<std::string> pixelsThatDiffer(const Image& whole, const Image
           !same(crop.shadingNormal[c], whole.shadingNormal[w]) || !same(crop.patchId[c], whole.patchId[w]) ||
           !same(crop.faceId[c], whole.faceId[w]) || !same(crop.uv[c], whole.uv[w]) ||
           !same(crop.texcoord[c], whole.texcoord[w]))
-        differ.push_back("(" + std::to_string(window.x0 + x) + ", " + std::to_string(window.y0 + y) + ")");
+        differ.push_back(pixelName(window.x0 + x, window.y0 + y));
     }
   return differ;
 }

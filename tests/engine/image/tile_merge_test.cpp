@@ -166,11 +166,13 @@ TEST_F(TileMerge, TheMergeKeepsTheHeaderAndTheIdLayersOfAHalfBeauty) {
   EXPECT_NE(m.channels().findChannel("CryptoObject00.R"), nullptr);
   EXPECT_NE(m.channels().findChannel("objectId"), nullptr);
   EXPECT_EQ(Imf::worldToNDC(m), Imf::worldToNDC(w));
-  for (auto a = w.begin(); a != w.end(); ++a)
-    if (std::string(a.attribute().typeName()) == "string")
+  for (auto a = w.begin(); a != w.end(); ++a) {
+    if (std::string(a.attribute().typeName()) == "string") {
       EXPECT_EQ(m.typedAttribute<Imf::StringAttribute>(a.name()).value(),
                 w.typedAttribute<Imf::StringAttribute>(a.name()).value())
           << a.name();
+    }
+  }
   const Image back = readExr(dir_ / "merged.exr"), expected = readExr(dir_ / "whole.exr");
   EXPECT_THAT(testing::pixelsThatDiffer(expected, back, PixelRect::whole(kWidth, kHeight)), ::testing::IsEmpty());
   EXPECT_GT(fs::file_size(dir_ / "merged.png"), 0u);
