@@ -19,12 +19,20 @@ FACET_FN real specular_lobe_probability(BrdfParams p) {
 // visible normals where D is GGX, else D-proportional normals.
 FACET_FN int specular_technique(BrdfParams p) { return p.d_model == D_GGX ? SAMPLE_GGX_VISIBLE : SAMPLE_D; }
 
-// u.x picks the lobe, u.yz the direction within it.
-FACET_FN vec3 sample_brdf_lobes(BrdfParams p, vec3 n, vec3 v, vec3 u) {
+// The largest real below 1 that float holds, for coordinates rescaled into
+// [0, 1).
+const real BELOW_ONE = real(0.99999994039535522461);
+
+// u.x picks the lobe and, stretched back to [0, 1) over the lobe's share, is
+// also the first coordinate of the direction within it: each lobe then
+// draws a stratified subset of a stratified point set, where a separate
+// lobe dimension would hand it a random one.
+FACET_FN vec3 sample_brdf_lobes(BrdfParams p, vec3 n, vec3 v, vec2 u) {
   real p_spec = specular_lobe_probability(p);
-  vec2 uv = vec2(u.y, u.z);
-  return u.x < p_spec ? sample_direction(specular_technique(p), p, n, v, uv)
-                      : sample_direction(SAMPLE_COSINE, p, n, v, uv);
+  if (u.x < p_spec)
+    return sample_direction(specular_technique(p), p, n, v, vec2(min(u.x / p_spec, BELOW_ONE), u.y));
+  return sample_direction(SAMPLE_COSINE, p, n, v,
+                          vec2(min((u.x - p_spec) / (real(1) - p_spec), BELOW_ONE), u.y));
 }
 
 FACET_FN real brdf_lobes_pdf(BrdfParams p, vec3 n, vec3 l, vec3 v) {

@@ -9,10 +9,11 @@
 // materials/shading/lights.h.
 
 // Pair `pair` of `pairs`: point `pair` of the scrambled net of (pixel,
-// sample, seed) (scrambled_net.h), four groups of two dimensions: the texel
-// as 32 bits and keep-or-alias, the position in the texel, the BRDF
-// sample's direction, its lobe. Another seed scrambles independently, so
-// that a reference does not share the numbers of the estimate it judges.
+// sample, seed) (scrambled_net.h), three groups of two dimensions: the
+// texel as 32 bits and keep-or-alias, the position in the texel, the BRDF
+// sample's lobe and direction (sample_brdf_lobes). Another seed scrambles
+// independently, so that a reference does not share the numbers of the
+// estimate it judges.
 struct EnvironmentPair {
   uint texel_bits;
   vec3 environment_u;
@@ -24,11 +25,10 @@ FACET_FN EnvironmentPair environment_pair(BrdfParams p, vec3 n, vec3 v, uint pix
   uvec2 texel = scrambled_point_bits(pixel, sample_index, seed, 0u, pair, pairs);
   vec2 position = scrambled_point(pixel, sample_index, seed, 1u, pair, pairs);
   vec2 direction = scrambled_point(pixel, sample_index, seed, 2u, pair, pairs);
-  real lobe = scrambled_point(pixel, sample_index, seed, 3u, pair, pairs).x;
   EnvironmentPair e;
   e.texel_bits = texel.x;
   e.environment_u = vec3(unit_from_bits(texel.y), position.x, position.y);
-  e.brdf_direction = sample_brdf_lobes(p, n, v, vec3(lobe, direction.x, direction.y));
+  e.brdf_direction = sample_brdf_lobes(p, n, v, direction);
   return e;
 }
 
