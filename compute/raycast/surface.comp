@@ -262,8 +262,9 @@ void main() {
   for (int l = 0; l < LIGHT_COUNT; ++l) {
     LightIncidence incidence = light_incidence(punctual_light(lights[l]), position);
     if (shaded && light_arrives(incidence, n, ng))
-      write_shadowed(firstSlot + l, punctual_radiance(params, n, incidence.direction, v, incidence.color, specular_scale),
-                     position, ng, incidence.direction, incidence.distance);
+      write_shadowed(firstSlot + l,
+                     punctual_radiance(params, n, incidence.direction, v, incidence.color, specular_scale), position,
+                     ng, incidence.direction, incidence.distance);
     else
       write_unshadowed(firstSlot + l, vec3(0.0));
   }
@@ -272,8 +273,8 @@ void main() {
     // of one invocation count against lavapipe's limit of 65535.
     uint first = firstSlot + uint(LIGHT_COUNT);
     if (shaded)
-      shade_environment(first, frame.firstPixel + pixel, sample_index, range.material, params, specular_scale, position, n,
-                        ng, v, occlusion);
+      shade_environment(first, frame.firstPixel + pixel, sample_index, range.material, params, specular_scale,
+                        position, n, ng, v, occlusion);
     else
       for (uint slot = first; slot < firstSlot + frame.slotsPerRay; ++slot) write_unshadowed(slot, vec3(0.0));
   }

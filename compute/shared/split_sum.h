@@ -19,12 +19,13 @@ FACET_FN vec3 split_sum_direction(vec3 n, vec3 v, real alpha) {
   return normalize(r * (real(1) - a) + n * a);
 }
 
-// specular = prefiltered radiance x (F0 scale + F90 bias) x specular_scale
-// (energy compensation, dfg.h; vec3(1) without it: Fdez-Aguera 2019's form
-// when it is on), diffuse = c_diff x irradiance / pi. F90 is Fresnel's grazing limit (0 only for a dielectric
-// of index 1, no interface), written as the limit: lavapipe reassociates F
-// evaluated near the horizon into 0. Under the BRDF's horizon policy
-// (n.v <= COS_EPSILON) nothing is reflected, as with the sampled method.
+// specular = prefiltered radiance x (F0 scale + F90 bias) x specular_scale,
+// diffuse = c_diff x irradiance / pi. specular_scale is energy
+// compensation's factor (dfg.h; Fdez-Aguera 2019's form), vec3(1) without
+// it. F90 is Fresnel's grazing limit (0 only for a dielectric of index 1, no
+// interface), written as the limit: lavapipe reassociates F evaluated near
+// the horizon into 0. Under the BRDF's horizon policy (n.v <= COS_EPSILON)
+// nothing is reflected, as with the sampled method.
 FACET_FN vec3 split_sum(BrdfParams p, real nv, vec3 prefiltered, vec2 dfg, vec3 irradiance_over_pi,
                         vec3 specular_scale) {
   if (nv <= COS_EPSILON) return vec3(real(0));
@@ -32,5 +33,6 @@ FACET_FN vec3 split_sum(BrdfParams p, real nv, vec3 prefiltered, vec2 dfg, vec3 
   vec3 f90 =
       vec3(dielectric && p.eta.x == real(1) ? real(0) : real(1), dielectric && p.eta.y == real(1) ? real(0) : real(1),
            dielectric && p.eta.z == real(1) ? real(0) : real(1));
-  return prefiltered * (fresnel_F(p, real(1)) * dfg.x + f90 * dfg.y) * specular_scale + p.diffuse * irradiance_over_pi;
+  return prefiltered * (fresnel_F(p, real(1)) * dfg.x + f90 * dfg.y) * specular_scale +
+         p.diffuse * irradiance_over_pi;
 }
