@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "commands.h"
+#include "engine/ibl/compensation_tables.h"
 #include "engine/ibl/prefiltered_environment.h"
 #include "material_options.h"
 #include "materials/albedo.h"
@@ -31,7 +32,7 @@ void runAlbedo(const AlbedoOptions& o) {
   materials::AlbedoResult r = materials::directionalAlbedo(params, mu, o.nodes);
   // With multiple-scattering compensation the specular lobe is scaled by a
   // factor of n.v alone, read from the renderer's albedo table.
-  const glm::dvec3 factor = ibl::energyCompensationOnDemand(params, mu);
+  const glm::dvec3 factor = ibl::energyCompensationOnDemand(params, mu, ibl::compensationTableSettings());
   const glm::dvec3 compensatedSpecular = r.specular * factor;
   const glm::dvec3 compensated = compensatedSpecular + r.diffuse;
   // Without Fresnel or colored parameters all channels agree; otherwise the

@@ -4,8 +4,6 @@
 
 namespace facet::ibl {
 
-namespace {
-
 // The split sum's grid at a quarter of its samples per entry: what the
 // grid's interpolation leaves dominates the error either way, and every
 // (D, G) pair's compensated furnace stays within 1% at n.v >= 0.1, chosen by
@@ -15,8 +13,6 @@ PrefilterSettings compensationTableSettings() {
   settings.dfgSamples = 1024;
   return settings;
 }
-
-}  // namespace
 
 CompensationTables compensationTables(const scene::Scene& scene) {
   CompensationTables result;

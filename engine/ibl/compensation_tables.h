@@ -19,6 +19,9 @@ struct CompensationTables {
   std::vector<int> tableOfMaterial;  // per scene material: index into tables, or kNone
 };
 
+// The size and samples of each table (dfgSize, dfgSamples).
+PrefilterSettings compensationTableSettings();
+
 CompensationTables compensationTables(const scene::Scene& scene);
 
 // The factor on scene material `material`'s specular lobe, parameters

@@ -175,6 +175,8 @@ bool headMatches(Reader& r, const std::string& key) {
 }
 
 // The tail it ends with, which a truncated file lacks.
+void putTail(Writer& w) { w.putBytes(kMagic, sizeof kMagic); }
+
 bool tailMatches(Reader& r) { return r.matches(kMagic, sizeof kMagic) && r.ok() && r.atEnd(); }
 
 std::vector<char> serialize(const PrefilteredEnvironment& env, const std::string& key) {
@@ -187,7 +189,7 @@ std::vector<char> serialize(const PrefilteredEnvironment& env, const std::string
   w.put(std::uint8_t(env.irradianceFromMap));
   w.put(std::uint32_t(env.dfg.size()));
   for (const DfgTable& table : env.dfg) putTable(w, table);
-  w.putBytes(kMagic, sizeof kMagic);
+  putTail(w);
   return w.data();
 }
 
@@ -250,7 +252,7 @@ std::vector<char> serialize(const DfgTable& table, const std::string& key) {
   Writer w;
   putHead(w, key);
   putTable(w, table);
-  w.putBytes(kMagic, sizeof kMagic);
+  putTail(w);
   return w.data();
 }
 

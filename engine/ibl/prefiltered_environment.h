@@ -84,7 +84,8 @@ glm::dvec2 dfgLookupOnDemand(int distribution, int geometry, double nv, double a
                              const PrefilterSettings& settings = {});
 // The multiple-scattering factor on the specular lobe at n.v = nv
 // (energy_compensation in compute/shared/dfg.h), from that table for the
-// material's D and G, as a renderer would apply it.
+// material's D and G; with compensationTableSettings()
+// (engine/ibl/compensation_tables.h), the factor the renderers apply.
 glm::dvec3 energyCompensationOnDemand(const materials::f64::BrdfParams& params, double nv,
                                       const PrefilterSettings& settings = {});
 // Irradiance / pi at normal n (c_diff times this is the Lambertian
