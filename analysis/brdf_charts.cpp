@@ -24,7 +24,7 @@ std::string describe(const materials::Material& m) {
 }  // namespace
 
 void writeLobeChart(const materials::Material& material, double theta_v, const std::filesystem::path& out) {
-  materials::f64::BrdfParams p = materials::toParams64(material);
+  rules::f64::BrdfParams p = materials::toParams64(material);
   const double to_radians = std::numbers::pi / 180;
   const glm::dvec3 n(0, 0, 1), v(-std::sin(theta_v * to_radians), 0, std::cos(theta_v * to_radians));
   std::ostringstream data;
@@ -32,7 +32,7 @@ void writeLobeChart(const materials::Material& material, double theta_v, const s
   for (int i = 0; i <= 720; ++i) {
     double theta = (-90 + 0.25 * i) * to_radians;
     glm::dvec3 l(std::sin(theta), 0, std::cos(theta));
-    glm::dvec3 f = materials::f64::brdf_evaluate(p, n, l, v) * std::max(l.z, 0.0);
+    glm::dvec3 f = rules::f64::brdf_evaluate(p, n, l, v) * std::max(l.z, 0.0);
     double r = (f.x + f.y + f.z) / 3;
     extent = std::max(extent, r);
     data << r * l.x << " " << r * l.z << "\n";
@@ -53,7 +53,7 @@ void writeAlbedoChart(const materials::Material& material, const std::vector<dou
                       const std::filesystem::path& out) {
   std::ostringstream data, script;
   for (double alpha : alphas) {
-    materials::f64::BrdfParams p = materials::toParams64(material);
+    rules::f64::BrdfParams p = materials::toParams64(material);
     p.alpha = alpha;
     for (int i = 0; i <= 45; ++i) {
       double theta = std::min(2.0 * i, 89.9);

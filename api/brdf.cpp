@@ -6,7 +6,7 @@
 
 #include "api/errors.h"
 #include "api/material.h"
-#include "materials/shading.h"
+#include "rules/rules.h"
 #include "scenes/input_error.h"
 
 namespace facet::v0 {
@@ -22,9 +22,9 @@ glm::dvec3 unit(const Vec3& v, const char* name) {
   return d / length;
 }
 
-BrdfValue evaluate(const materials::f64::BrdfParams& params, const Vec3& l, const Vec3& v) {
-  const materials::f64::BrdfTerms t =
-      materials::f64::brdf_terms(params, glm::dvec3(0, 0, 1), unit(l, "l"), unit(v, "v"));
+BrdfValue evaluate(const rules::f64::BrdfParams& params, const Vec3& l, const Vec3& v) {
+  const rules::f64::BrdfTerms t =
+      rules::f64::brdf_terms(params, glm::dvec3(0, 0, 1), unit(l, "l"), unit(v, "v"));
   return {publicVector(t.value), publicVector(t.specular), publicVector(t.diffuse), publicVector(t.F), t.D, t.G};
 }
 
@@ -36,7 +36,7 @@ std::vector<BrdfValue> evaluateBrdf(const Material& material, const std::vector<
       throw scene::InputError(
           "brdf", 0, "l, v",
           "need as many directions each (" + std::to_string(l.size()) + " and " + std::to_string(v.size()) + ")");
-    const materials::f64::BrdfParams params = materials::toParams64(api::toEngineMaterial(material, "material"));
+    const rules::f64::BrdfParams params = materials::toParams64(api::toEngineMaterial(material, "material"));
     std::vector<BrdfValue> values;
     values.reserve(l.size());
     for (std::size_t i = 0; i < l.size(); ++i) values.push_back(evaluate(params, l[i], v[i]));

@@ -47,22 +47,22 @@ struct Integrals {
 // COS_EPSILON, exactly for cos(phi) > bound. Integrating over that range
 // keeps the kink of the cut out of the quadrature.
 double azimuthCosineBound(double cos_v, double sin_v, glm::dvec3 m) {
-  double numerator = (cos_v + f64::COS_EPSILON) / (2 * m.z) - cos_v * m.z;
+  double numerator = (cos_v + rules::f64::COS_EPSILON) / (2 * m.z) - cos_v * m.z;
   double denominator = sin_v * m.x;
   if (denominator <= 1e-300) return numerator < 0 ? -HUGE_VAL : HUGE_VAL;
   return numerator / denominator;
 }
 
-Integrals integrate(const f64::BrdfParams& params, double mu, int nodes) {
+Integrals integrate(const rules::f64::BrdfParams& params, double mu, int nodes) {
   const glm::dvec3 n(0, 0, 1);
   const double sin_v = std::sqrt(std::max(0.0, 1 - mu * mu));
   const glm::dvec3 v(sin_v, 0, mu);
-  f64::BrdfParams specular = params;
+  rules::f64::BrdfParams specular = params;
   specular.diffuse = glm::dvec3(0);
-  const double alpha = f64::effective_alpha(params.alpha);
+  const double alpha = rules::f64::effective_alpha(params.alpha);
   const QuadratureRule rule = gaussLegendre01(nodes);
   Integrals sum;
-  if (mu <= f64::COS_EPSILON) return sum;
+  if (mu <= rules::f64::COS_EPSILON) return sum;
 
   // Each integrand is f (n.l) / pdf at l(u): the same functions the renderer
   // uses, so the quadrature checks them and copies nothing. Specular: u1 ->
@@ -70,7 +70,7 @@ Integrals integrate(const f64::BrdfParams& params, double mu, int nodes) {
   // (symmetric about v's plane). That range is the whole circle, part of it
   // or empty as u1 grows; the u1 integral is split where it changes, so each
   // panel is smooth.
-  auto polar = [&](double u1) { return f64::sample_microfacet_normal(params.d_model, alpha, {u1, 0.0}); };
+  auto polar = [&](double u1) { return rules::f64::sample_microfacet_normal(params.d_model, alpha, {u1, 0.0}); };
   // Where the bound crosses target, by bisection (the D samplers run theta_m
   // up or down with u1, so the side is taken from the ends); 0 if it does
   // not cross.
@@ -98,9 +98,9 @@ Integrals integrate(const f64::BrdfParams& params, double mu, int nodes) {
         double phi = phi_max * rule.nodes[j];
         glm::dvec3 m(m_polar.x * std::cos(phi), m_polar.x * std::sin(phi), m_polar.z);
         glm::dvec3 l = glm::reflect(-v, m);
-        double pdf = f64::direction_pdf(f64::SAMPLE_D, specular, n, l, v);
+        double pdf = rules::f64::direction_pdf(rules::f64::SAMPLE_D, specular, n, l, v);
         double w = width * rule.weights[i] * rule.weights[j] * phi_max / std::numbers::pi;
-        if (pdf > 0) sum.specular += w * f64::brdf_evaluate(specular, n, l, v) * (l.z / pdf);
+        if (pdf > 0) sum.specular += w * rules::f64::brdf_evaluate(specular, n, l, v) * (l.z / pdf);
       }
     }
   }
@@ -109,10 +109,10 @@ Integrals integrate(const f64::BrdfParams& params, double mu, int nodes) {
   for (int i = 0; i < nodes; ++i) {
     for (int j = 0; j < nodes; ++j) {
       glm::dvec2 u(rule.nodes[i], rule.nodes[j]);
-      glm::dvec3 l = f64::sample_direction(f64::SAMPLE_COSINE, params, n, v, u);
-      double pdf = f64::direction_pdf(f64::SAMPLE_COSINE, params, n, l, v);
+      glm::dvec3 l = rules::f64::sample_direction(rules::f64::SAMPLE_COSINE, params, n, v, u);
+      double pdf = rules::f64::direction_pdf(rules::f64::SAMPLE_COSINE, params, n, l, v);
       if (pdf > 0)
-        sum.diffuse += rule.weights[i] * rule.weights[j] * f64::brdf_terms(params, n, l, v).diffuse * (l.z / pdf);
+        sum.diffuse += rule.weights[i] * rule.weights[j] * rules::f64::brdf_terms(params, n, l, v).diffuse * (l.z / pdf);
     }
   }
   return sum;
@@ -120,7 +120,7 @@ Integrals integrate(const f64::BrdfParams& params, double mu, int nodes) {
 
 }  // namespace
 
-AlbedoResult directionalAlbedo(const f64::BrdfParams& params, double mu, int nodes) {
+AlbedoResult directionalAlbedo(const rules::f64::BrdfParams& params, double mu, int nodes) {
   if (nodes < 2 || nodes % 2 != 0) throw std::invalid_argument("albedo quadrature needs an even number of nodes >= 2");
   Integrals fine = integrate(params, mu, nodes);
   Integrals coarse = integrate(params, mu, nodes / 2);

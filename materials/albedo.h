@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "materials/shading.h"
+#include "rules/rules.h"
 
 namespace facet::materials {
 
@@ -22,7 +22,7 @@ struct AlbedoResult {
 // map u -> m -> l, where f (n.l) / pdf = F G (v.m) / ((n.v)(n.m)) stays
 // smooth however peaked D is; the diffuse one through the cosine map.
 // `nodes` (even, >= 2) per dimension.
-AlbedoResult directionalAlbedo(const f64::BrdfParams& params, double mu, int nodes = 256);
+AlbedoResult directionalAlbedo(const rules::f64::BrdfParams& params, double mu, int nodes = 256);
 
 struct QuadratureRule {
   std::vector<double> nodes;    // in [0, 1]

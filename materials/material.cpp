@@ -43,9 +43,9 @@ std::string formatVector(glm::dvec3 v) { return formatNumber(v.x) + "," + format
 
 }  // namespace
 
-f64::BrdfParams toParams64(const Material& material) { return toParams<f64::BrdfParams, glm::dvec3>(material); }
+rules::f64::BrdfParams toParams64(const Material& material) { return toParams<rules::f64::BrdfParams, glm::dvec3>(material); }
 
-f32::BrdfParams toParams32(const Material& material) { return toParams<f32::BrdfParams, glm::vec3>(material); }
+rules::f32::BrdfParams toParams32(const Material& material) { return toParams<rules::f32::BrdfParams, glm::vec3>(material); }
 
 Material buildMaterial(const MaterialSpec& spec,
                        const std::function<std::string(std::string_view field)>& describeField) {
@@ -90,9 +90,9 @@ Material buildMaterial(const MaterialSpec& spec,
     }
   };
   bool hasFresnelParameter = spec.f0 || spec.ior || spec.eta || spec.k || preset;
-  m.distribution = parse(kDistributions, "distribution", spec.distribution, f64::D_GGX);
-  m.geometry = parse(kGeometryTerms, "geometry", spec.geometry, f64::G_SMITH_GGX_CORRELATED);
-  m.fresnel = parse(kFresnelTerms, "fresnel", spec.fresnel, hasFresnelParameter ? f64::F_SCHLICK : f64::F_NONE);
+  m.distribution = parse(kDistributions, "distribution", spec.distribution, rules::f64::D_GGX);
+  m.geometry = parse(kGeometryTerms, "geometry", spec.geometry, rules::f64::G_SMITH_GGX_CORRELATED);
+  m.fresnel = parse(kFresnelTerms, "fresnel", spec.fresnel, hasFresnelParameter ? rules::f64::F_SCHLICK : rules::f64::F_NONE);
 
   if (spec.alpha && spec.roughness) fail("alpha", "give alpha or roughness, not both");
   if (!spec.alpha && !spec.roughness) fail("alpha", "required (or roughness = sqrt(alpha))");
@@ -116,19 +116,19 @@ Material buildMaterial(const MaterialSpec& spec,
     if (given && !used) fail(field, "is only used by fresnel " + std::string(users) + ", not '" + fresnelName + "'");
   };
   onlyFor("f0", spec.f0.has_value(),
-          m.fresnel == f64::F_SCHLICK || m.fresnel == f64::F_DIELECTRIC || m.fresnel == f64::F_BLENDER_METALLIC,
+          m.fresnel == rules::f64::F_SCHLICK || m.fresnel == rules::f64::F_DIELECTRIC || m.fresnel == rules::f64::F_BLENDER_METALLIC,
           "'schlick', 'dielectric' or 'blender-metallic'");
-  onlyFor("ior", spec.ior.has_value(), m.fresnel == f64::F_DIELECTRIC, "'dielectric'");
-  onlyFor("eta", spec.eta.has_value(), m.fresnel == f64::F_CONDUCTOR, "'conductor'");
-  onlyFor("k", spec.k.has_value(), m.fresnel == f64::F_CONDUCTOR, "'conductor'");
+  onlyFor("ior", spec.ior.has_value(), m.fresnel == rules::f64::F_DIELECTRIC, "'dielectric'");
+  onlyFor("eta", spec.eta.has_value(), m.fresnel == rules::f64::F_CONDUCTOR, "'conductor'");
+  onlyFor("k", spec.k.has_value(), m.fresnel == rules::f64::F_CONDUCTOR, "'conductor'");
 
   switch (m.fresnel) {
-    case f64::F_SCHLICK:
-    case f64::F_BLENDER_METALLIC:
+    case rules::f64::F_SCHLICK:
+    case rules::f64::F_BLENDER_METALLIC:
       if (!f0) fail("f0", "required by fresnel '" + fresnelName + "' (or give a preset)");
       m.f0 = *f0;
       break;
-    case f64::F_DIELECTRIC:
+    case rules::f64::F_DIELECTRIC:
       if (spec.ior) {
         m.eta = *spec.ior;
       } else if (f0) {
@@ -139,7 +139,7 @@ Material buildMaterial(const MaterialSpec& spec,
         fail("ior", "required by fresnel 'dielectric' (or give f0 or a preset)");
       }
       break;
-    case f64::F_CONDUCTOR:
+    case rules::f64::F_CONDUCTOR:
       if (!spec.eta || !spec.k) fail(spec.eta ? "k" : "eta", "required by fresnel 'conductor'");
       m.eta = *spec.eta;
       m.k = *spec.k;
@@ -230,14 +230,14 @@ nlohmann::json toJson(const Material& m) {
   if (!m.name.empty()) json["name"] = m.name;
   if (m.energyCompensation) json["energy_compensation"] = true;
   switch (m.fresnel) {
-    case f64::F_SCHLICK:
-    case f64::F_BLENDER_METALLIC:
+    case rules::f64::F_SCHLICK:
+    case rules::f64::F_BLENDER_METALLIC:
       json["f0"] = array(m.f0);
       break;
-    case f64::F_DIELECTRIC:
+    case rules::f64::F_DIELECTRIC:
       json["ior"] = array(m.eta);
       break;
-    case f64::F_CONDUCTOR:
+    case rules::f64::F_CONDUCTOR:
       json["eta"] = array(m.eta);
       json["k"] = array(m.k);
       break;

@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-#include "materials/shading.h"
+#include "rules/rules.h"
 
 namespace facet::materials {
 
@@ -42,9 +42,9 @@ struct MaterialTextures {
 
 struct Material {
   std::string name;
-  int distribution = f64::D_GGX;
-  int geometry = f64::G_SMITH_GGX_CORRELATED;
-  int fresnel = f64::F_SCHLICK;
+  int distribution = rules::f64::D_GGX;
+  int geometry = rules::f64::G_SMITH_GGX_CORRELATED;
+  int fresnel = rules::f64::F_SCHLICK;
   double alpha = 0.25;  // microfacet alpha = perceptual roughness^2
   glm::dvec3 f0{0.04};  // used by Schlick
   glm::dvec3 eta{1.5};  // index of refraction (dielectric) or its real part (conductor)
@@ -57,8 +57,8 @@ struct Material {
   std::optional<MaterialTextures> textures;  // set when the material reads any texture
 };
 
-f64::BrdfParams toParams64(const Material& material);
-f32::BrdfParams toParams32(const Material& material);
+rules::f64::BrdfParams toParams64(const Material& material);
+rules::f32::BrdfParams toParams32(const Material& material);
 
 // What a user wrote, before validation. Field names are the JSON keys; the
 // command line uses the same names as flags.

@@ -2,7 +2,7 @@
 // OpenEXR file (any compression OpenEXR reads, DWAB included), a Radiance
 // .hdr file, or a constant colour. Knows no renderer.
 //
-// Mapping (compute/shared/environment_mapping.h has the formulas both backends use):
+// Mapping (rules/environment/environment_mapping.h has the formulas both backends use):
 // row 0 is the top (+y, theta = 0); u = 0.5 looks down -z; u grows towards
 // +x. A map is 2:1 (width = 2 x height).
 #pragma once

@@ -92,7 +92,7 @@ struct Environment {
   IblMethod method = IblMethod::Prefiltered;
   int samples = 16;  // sampled, filtered: pairs per camera sample
   bool occlusion = true;
-  // Sampled, filtered: which random numbers (compute/shared/sampled_environment.h); renders
+  // Sampled, filtered: which random numbers (rules/environment/sampled_environment.h); renders
   // with different seeds are statistically independent.
   std::uint32_t seed = 0;
 };

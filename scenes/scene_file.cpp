@@ -54,9 +54,9 @@ void overrideSubdivision(Scene& scene, const std::string& name, const std::strin
 materials::Material defaultMaterial() {
   materials::Material m;
   m.name = "default";
-  m.distribution = materials::f64::D_GGX;
-  m.geometry = materials::f64::G_SMITH_GGX_CORRELATED;
-  m.fresnel = materials::f64::F_SCHLICK;
+  m.distribution = rules::f64::D_GGX;
+  m.geometry = rules::f64::G_SMITH_GGX_CORRELATED;
+  m.fresnel = rules::f64::F_SCHLICK;
   m.alpha = 0.25;
   m.f0 = glm::dvec3(0.04);
   m.diffuse = glm::dvec3(0.5);

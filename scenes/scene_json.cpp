@@ -167,12 +167,12 @@ Texture readTexture(const Field& f, const std::filesystem::path& sceneFile, bool
   TextureSampler sampler;
   if (detailed && f.has("wrap"))
     sampler.wrapS = sampler.wrapT =
-        f["wrap"].choice<std::uint32_t>({{"repeat", materials::f64::FACET_WRAP_REPEAT},
-                                         {"mirror", materials::f64::FACET_WRAP_MIRRORED_REPEAT},
-                                         {"clamp", materials::f64::FACET_WRAP_CLAMP_TO_EDGE}});
+        f["wrap"].choice<std::uint32_t>({{"repeat", rules::f64::FACET_WRAP_REPEAT},
+                                         {"mirror", rules::f64::FACET_WRAP_MIRRORED_REPEAT},
+                                         {"clamp", rules::f64::FACET_WRAP_CLAMP_TO_EDGE}});
   if (detailed && f.has("filter") && f["filter"].choice<bool>({{"linear", false}, {"nearest", true}})) {
-    sampler.magFilter = sampler.minFilter = materials::f64::FACET_FILTER_NEAREST;
-    sampler.mipMode = materials::f64::FACET_MIP_NEAREST;
+    sampler.magFilter = sampler.minFilter = rules::f64::FACET_FILTER_NEAREST;
+    sampler.mipMode = rules::f64::FACET_MIP_NEAREST;
   }
   const std::filesystem::path file = sceneFile.parent_path() / image.string();
   if (!std::filesystem::is_regular_file(file)) image.fail("no such file: " + file.string());
@@ -192,7 +192,7 @@ void readMaterialTextures(const Field& f, const materials::MaterialSpec& spec, m
   const bool diffuseMap = f.has("diffuse_texture"), f0Map = f.has("f0_texture"),
              roughnessMap = f.has("roughness_texture");
   if (!diffuseMap && !f0Map && !roughnessMap) return;
-  namespace m64 = materials::f64;
+  namespace m64 = rules::f64;
   const bool readsF0 = m.fresnel == m64::F_SCHLICK || m.fresnel == m64::F_BLENDER_METALLIC;
   if (f0Map && !readsF0) f["f0_texture"].fail("needs a fresnel that reads f0 (schlick or blender-metallic)");
   const bool dielectric = !f0Map && (!readsF0 || m.f0 == glm::dvec3(0.04));

@@ -40,7 +40,7 @@ EnvironmentMap studioEnvironmentMap() {
   map.rgb.reserve(std::size_t(3 * map.width * map.height));
   for (int y = 0; y < map.height; ++y)
     for (int x = 0; x < map.width; ++x) {
-      // compute/shared/environment_mapping.h's direction of the texel's centre.
+      // rules/environment/environment_mapping.h's direction of the texel's centre.
       const double phi = 2.0 * std::numbers::pi * ((x + 0.5) / map.width - 0.5);
       const double theta = std::numbers::pi * (y + 0.5) / map.height;
       const glm::dvec3 d(std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi));

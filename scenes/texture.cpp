@@ -6,12 +6,12 @@
 #include <cmath>
 #include <utility>
 
-#include "materials/texture_shading.h"
+#include "rules/rules.h"
 #include "scenes/image_decoder.h"
 
 namespace facet::scene {
 
-namespace m = materials::f64;
+namespace m = rules::f64;
 
 namespace {
 

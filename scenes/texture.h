@@ -1,6 +1,6 @@
 // A texture as plain data: linear RGBA texels decoded at load, their mip
 // chain, and the glTF sampler that reads them. Knows no GPU; the lookup
-// both backends share is compute/shared/texture_sampling.h.
+// both backends share is rules/texture/texture_sampling.h.
 #pragma once
 
 #include <glm/vec2.hpp>
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "materials/material.h"
-#include "materials/texture_shading.h"
+#include "rules/rules.h"
 
 namespace facet::scene {
 
@@ -23,14 +23,14 @@ struct TextureLevel {
   std::vector<glm::vec4> texels;
 };
 
-// Codes of compute/shared/texture_sampling.h; the defaults are what glTF
+// Codes of rules/texture/texture_sampling.h; the defaults are what glTF
 // viewers use when a texture has no sampler.
 struct TextureSampler {
-  std::uint32_t wrapS = materials::f64::FACET_WRAP_REPEAT;
-  std::uint32_t wrapT = materials::f64::FACET_WRAP_REPEAT;
-  std::uint32_t magFilter = materials::f64::FACET_FILTER_LINEAR;
-  std::uint32_t minFilter = materials::f64::FACET_FILTER_LINEAR;
-  std::uint32_t mipMode = materials::f64::FACET_MIP_LINEAR;
+  std::uint32_t wrapS = rules::f64::FACET_WRAP_REPEAT;
+  std::uint32_t wrapT = rules::f64::FACET_WRAP_REPEAT;
+  std::uint32_t magFilter = rules::f64::FACET_FILTER_LINEAR;
+  std::uint32_t minFilter = rules::f64::FACET_FILTER_LINEAR;
+  std::uint32_t mipMode = rules::f64::FACET_MIP_LINEAR;
 };
 
 struct Texture {
@@ -62,12 +62,12 @@ Texture loadColorTexture(const std::filesystem::path& file, const TextureSampler
 Texture loadRoughnessTexture(const std::filesystem::path& file, const TextureSampler& sampler);
 
 // The filtered value at texture coordinates `uv` and level of detail `lod`
-// (compute/shared/texture_sampling.h), in double.
+// (rules/texture/texture_sampling.h), in double.
 glm::dvec4 sampleTexture(const Texture& texture, const glm::dvec2& uv, double lod);
 
 // The value of a material's slot where footprint `f` reads it, among the
 // scene's `textures`; 1 for an empty slot.
 glm::dvec4 sampleSlot(const std::vector<Texture>& textures, const materials::TextureSlot& slot,
-                      const materials::f64::TextureFootprint& f);
+                      const rules::f64::TextureFootprint& f);
 
 }  // namespace facet::scene

@@ -27,7 +27,7 @@
 #include "analysis/gnuplot.h"
 #include "engine/image/exr_file.h"
 #include "engine/image/image_io.h"
-#include "materials/shading.h"
+#include "rules/rules.h"
 #include "scenes/scene_file.h"
 
 extern char** environ;
@@ -230,8 +230,8 @@ scene::Scene materialPreview(const fs::path& root, const fs::path& map, int size
   scene.render.width = scene.render.height = size;
   scene.render.method = scene::IntersectionMethod::Exact;
   for (materials::Material& m : scene.materials) {
-    m.geometry = materials::f64::G_SMITH_GGX;
-    m.fresnel = materials::f64::F_BLENDER_METALLIC;
+    m.geometry = rules::f64::G_SMITH_GGX;
+    m.fresnel = rules::f64::F_BLENDER_METALLIC;
   }
   return scene;
 }

@@ -35,14 +35,14 @@ float embreeSharpness(float sharpness) {
 // What the casting loops share: the scene, the camera's rays and the depth image.
 struct ImageCast {
   RTCScene scene;
-  camera::CameraFrame frame;
+  rules::f64::CameraFrame frame;
   int width;
   int height;
   float* depth;
 
   // The unit ray direction through pixel (x, y)'s centre, in Embree's float.
   glm::vec3 direction(int x, int y) const {
-    return glm::vec3(camera::camera_ray_direction(frame, x + 0.5, y + 0.5, double(width), double(height)));
+    return glm::vec3(rules::f64::camera_ray_direction(frame, x + 0.5, y + 0.5, double(width), double(height)));
   }
   float* pixel(int x, int y) const { return depth + std::size_t(y) * std::size_t(width) + std::size_t(x); }
 };

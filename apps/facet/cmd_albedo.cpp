@@ -28,7 +28,7 @@ void runAlbedo(const AlbedoOptions& o) {
   if (mu < 0 || mu > 1) throw std::invalid_argument("--mu: must be in [0, 1] (cos theta_v)");
   if (o.nodes < 2 || o.nodes % 2 != 0 || o.nodes > 4096)
     throw std::invalid_argument("--nodes: must be even, in [2, 4096]");
-  const materials::f64::BrdfParams params = materials::toParams64(material);
+  const rules::f64::BrdfParams params = materials::toParams64(material);
   materials::AlbedoResult r = materials::directionalAlbedo(params, mu, o.nodes);
   // With multiple-scattering compensation the specular lobe is scaled by a
   // factor of n.v alone, read from the renderer's albedo table.

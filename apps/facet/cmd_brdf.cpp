@@ -34,11 +34,11 @@ void runBrdf(const BrdfOptions& o) {
   double theta_v = parseNumber("--theta-v", o.theta_v);
   double phi = parseNumber("--phi", o.phi);
   const glm::dvec3 n(0, 0, 1), l = direction(theta_l, 0), v = direction(theta_v, phi);
-  materials::f64::BrdfParams p = materials::toParams64(material);
-  materials::f64::BrdfTerms t = materials::f64::brdf_terms(p, n, l, v);
+  rules::f64::BrdfParams p = materials::toParams64(material);
+  rules::f64::BrdfTerms t = rules::f64::brdf_terms(p, n, l, v);
   nlohmann::json pdf;
   for (const materials::ModelName& technique : materials::kSamplingTechniques)
-    pdf[std::string(technique.name)] = materials::f64::direction_pdf(technique.id, p, n, l, v);
+    pdf[std::string(technique.name)] = rules::f64::direction_pdf(technique.id, p, n, l, v);
   auto rgb = [](glm::dvec3 c) { return nlohmann::json::array({c.x, c.y, c.z}); };
   nlohmann::json out = {
       {"material", materials::toJson(material)},

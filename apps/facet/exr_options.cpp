@@ -9,7 +9,7 @@ namespace facet::cli {
 namespace {
 
 ExrCamera exrCamera(const scene::Camera& camera, int width, int height) {
-  const camera::CameraFrame f = camera::cameraFrame(camera, width, height);
+  const rules::f64::CameraFrame f = camera::cameraFrame(camera, width, height);
   return {f.eye, f.right, f.up, f.forward, f.tanHalfFovY, f.aspect};
 }
 

@@ -3,8 +3,8 @@
 // so camera rays start at the origin and float keeps its precision where the
 // picture is. Layouts are written by ceiling_bench.cpp.
 //
-//   bvhNodes  facet's node layout (compute/shared/wide_bvh.h), read by the
-//             same node test (compute/raycast/wide_bvh_node.glsl)
+//   bvhNodes  facet's node layout (compute/layout/wide_bvh.h), read by the
+//             same node test (compute/raycast/traversal/wide_bvh_node.glsl)
 //   tris      3 RGBA32F texels per triangle: v0, v1 - v0, v2 - v0
 //
 // A reference is a node index, FACET_BVH4_EMPTY, or LEAF | (count - 1) << 27
@@ -14,9 +14,9 @@
 #ifndef CEILING_GLSL
 #define CEILING_GLSL
 
-#include "compute/shared/raycast_layout.h"
-#include "compute/shared/wide_bvh.h"
-#include "compute/raycast/ray.glsl"
+#include "compute/layout/raycast_layout.h"
+#include "compute/layout/wide_bvh.h"
+#include "compute/raycast/traversal/ray.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -30,7 +30,7 @@ layout(set = 0, binding = 0, std140) uniform Frame {
 layout(set = 0, binding = 1) uniform usamplerBuffer bvhNodes;
 layout(set = 0, binding = 2) uniform samplerBuffer tris;
 
-#include "compute/raycast/wide_bvh_node.glsl"
+#include "compute/raycast/traversal/wide_bvh_node.glsl"
 
 const uint LEAF = 0x80000000u;
 const uint EMPTY = FACET_BVH4_EMPTY;
@@ -39,7 +39,7 @@ const float INF = INFINITE_DISTANCE;
 
 uint pixel_count() { return uint(frame.screen.x) * uint(frame.screen.y); }
 
-// compute/shared/camera.h's pinhole, pixel centres.
+// rules/camera/camera.h's pinhole, pixel centres.
 vec3 camera_direction(uint pixel) {
   uint width = uint(frame.screen.x);
   float x = float(pixel % width) + 0.5, y = float(pixel / width) + 0.5;

@@ -49,7 +49,7 @@ using glm::vec3;
 
 constexpr int kSize = 512;
 constexpr int kCheckStride = 97;
-// facet's node layout (compute/shared/wide_bvh.h), which the kernels test
+// facet's node layout (compute/layout/wide_bvh.h), which the kernels test
 // with facet's own node code; leaves reference triangle ranges instead of cells.
 namespace gpu_layout = facet::gpu_layout;
 constexpr std::size_t kNodeTexels = gpu_layout::FACET_BVH4_TEXELS;
@@ -340,7 +340,7 @@ Row run(gpu::Device& device, const std::string& path) {
                 ? geometry.bounds.centre() - 2 * diagonal * glm::normalize(l.direction)
                 : l.position;
   }
-  const facet::camera::CameraFrame camera = facet::camera::cameraFrame(scene.camera, kSize, kSize);
+  const facet::rules::f64::CameraFrame camera = facet::camera::cameraFrame(scene.camera, kSize, kSize);
   const float shadowOffset = float(1e-4 * diagonal);
   const FrameBlock frame{glm::vec4(vec3(camera.forward), 0), glm::vec4(vec3(camera.right), 0),
                          glm::vec4(vec3(camera.up), 0), glm::vec4(vec3(light - eye), shadowOffset),
@@ -388,11 +388,11 @@ Row run(gpu::Device& device, const std::string& path) {
 
   // Camera rays in double; shadow rays start where the kernel's do (same
   // float arithmetic), so a mismatch there is the traversal's, not the offset's.
-  facet::camera::CameraFrame relative = camera;
+  facet::rules::f64::CameraFrame relative = camera;
   relative.eye = dvec3(0);
   const vec3 lightF = vec3(light - eye);
   for (std::size_t p = 0; p < pixels; p += kCheckStride) {
-    const dvec3 d = facet::camera::camera_ray_direction(relative, double(p % kSize) + 0.5, double(p / kSize) + 0.5,
+    const dvec3 d = facet::rules::f64::camera_ray_direction(relative, double(p % kSize) + 0.5, double(p / kSize) + 0.5,
                                                         kSize, kSize);
     const double reference = bruteForce(bvh.tris, dvec3(0), d, kInf, false);
     ++row.checked;

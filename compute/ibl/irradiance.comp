@@ -1,13 +1,19 @@
 // The irradiance map: per texel, the cosine-weighted mean radiance around its
 // direction over every texel of one level of the source map's mip chain
-// (compute/shared/irradiance_map.h, as in the CPU reference).
+// (rules/environment/irradiance_map.h, as in the CPU reference).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
-#include "materials/shading.glsl"
-#include "compute/shared/config.h"
-#include "compute/shared/environment_mapping.h"
-#include "compute/shared/irradiance_map.h"
+#include "rules/language.glsl"
+#include "rules/math.h"
+#include "rules/shading/domain.h"
+#include "rules/shading/microfacet.h"
+#include "rules/shading/fresnel.h"
+#include "rules/shading/brdf.h"
+#include "rules/shading/brdf_sampling.h"
+#include "rules/grid/config.h"
+#include "rules/environment/environment_mapping.h"
+#include "rules/environment/irradiance_map.h"
 
 layout(local_size_x = FACET_IBL_TILE_SIZE, local_size_y = FACET_IBL_TILE_SIZE) in;
 

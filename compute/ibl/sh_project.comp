@@ -5,9 +5,15 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
-#include "materials/shading.glsl"
-#include "compute/shared/config.h"
-#include "compute/shared/spherical_harmonics.h"
+#include "rules/language.glsl"
+#include "rules/math.h"
+#include "rules/shading/domain.h"
+#include "rules/shading/microfacet.h"
+#include "rules/shading/fresnel.h"
+#include "rules/shading/brdf.h"
+#include "rules/shading/brdf_sampling.h"
+#include "rules/grid/config.h"
+#include "rules/environment/spherical_harmonics.h"
 
 layout(local_size_x = FACET_WORKGROUP_SIZE) in;
 

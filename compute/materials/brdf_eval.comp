@@ -1,9 +1,9 @@
 // Evaluates the shared BRDF source on the GPU, for comparing GLSL float with
-// the C++ double reference (facet::materials::f64) case by case; building it
+// the C++ double reference (facet::rules::f64) case by case; building it
 // is also the check that materials/shading/*.h compile as GLSL.
 //
 // Specialization constants 0, 1, 2: d_model, g_model, f_model (ids of
-// materials/shading/microfacet.h and fresnel.h), so that each variant only
+// rules/shading/microfacet.h and fresnel.h), so that each variant only
 // keeps its own branches. std430 buffers of vec4 (w of inputs unused):
 //   binding 0, read:  Case   { vec4 n; vec4 l; vec4 v; }
 //   binding 1, write: Result { vec4 f_D;   xyz = f, w = D
@@ -14,7 +14,13 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
-#include "materials/shading.glsl"
+#include "rules/language.glsl"
+#include "rules/math.h"
+#include "rules/shading/domain.h"
+#include "rules/shading/microfacet.h"
+#include "rules/shading/fresnel.h"
+#include "rules/shading/brdf.h"
+#include "rules/shading/brdf_sampling.h"
 
 layout(local_size_x = 64) in;
 

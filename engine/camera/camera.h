@@ -1,25 +1,19 @@
-// C++ side of compute/shared/camera.h, in double for the CPU reference.
+// The scene's camera as the frame of the pinhole rule (rules/camera/camera.h),
+// in double for the CPU reference and the host side of the GPU path.
 #pragma once
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
-#include <glm/vec3.hpp>
 
 #include <cmath>
 
+#include "rules/rules.h"
 #include "scenes/scene.h"
 
 namespace facet::camera {
 
-using real = double;
-using vec3 = glm::dvec3;
-using glm::normalize;
-#define FACET_FN inline
-#include "compute/shared/camera.h"
-#undef FACET_FN
-
-inline CameraFrame cameraFrame(const scene::Camera& camera, int width, int height) {
-  CameraFrame frame;
+inline rules::f64::CameraFrame cameraFrame(const scene::Camera& camera, int width, int height) {
+  rules::f64::CameraFrame frame;
   frame.eye = camera.eye;
   frame.forward = glm::normalize(camera.target - camera.eye);
   frame.right = glm::normalize(glm::cross(frame.forward, camera.up));

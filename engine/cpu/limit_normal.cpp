@@ -4,43 +4,26 @@
 
 #include <array>
 
+#include "rules/rules.h"
+
 namespace facet::cpu {
 
-namespace {
-
-using real = double;
-using vec3 = glm::dvec3;
-using glm::length;
-#define FACET_FN inline
-#include "compute/shared/authored_normal.h"
-#undef FACET_FN
-
-bool wellDefined(const scene::LimitPoint& point, glm::dvec3& normal) {
-  glm::dvec3 n = glm::cross(point.du, point.dv);
-  double scale = glm::length(point.du) * glm::length(point.dv);
-  if (!(scale > 0.0) || glm::length(n) <= kDegenerateSine * scale) return false;
-  normal = glm::normalize(n);
-  return true;
-}
-
-}  // namespace
+using namespace rules::f64;
 
 glm::dvec3 limitNormal(const scene::SubdivisionSurface& surface, int patch, double u, double v) {
   glm::dvec3 normal(0.0);
-  if (wellDefined(surface.evaluatePatch(patch, u, v), normal)) return normal;
+  scene::LimitPoint point = surface.evaluatePatch(patch, u, v);
+  if (well_defined_normal(point.du, point.dv, normal)) return normal;
 
   const scene::PatchDomain& domain = surface.patch(patch).domain;
   const double centreU = domain.u0 + 0.5 * domain.size, centreV = domain.v0 + 0.5 * domain.size;
-  for (double step = 1e-7; step <= 1e-3; step *= 10.0) {
-    double nu = u + step * (centreU - u), nv = v + step * (centreV - v);
-    if (wellDefined(surface.evaluatePatch(patch, nu, nv), normal)) return normal;
+  for (int probe = 0; probe < LIMIT_NORMAL_PROBES; ++probe) {
+    const double step = limit_normal_probe_step(probe);
+    point = surface.evaluatePatch(patch, toward_patch_centre(u, centreU, step), toward_patch_centre(v, centreV, step));
+    if (well_defined_normal(point.du, point.dv, normal)) return normal;
   }
-  // Degenerate across the whole neighbourhood (a collapsed patch): the
-  // normal at the patch centre is the best we know.
   scene::LimitPoint centre = surface.evaluatePatch(patch, centreU, centreV);
-  glm::dvec3 fallback = glm::cross(centre.du, centre.dv);
-  double length = glm::length(fallback);
-  return length > 0.0 ? fallback / length : glm::dvec3(0.0, 0.0, 1.0);
+  return unit_normal_or_up(glm::cross(centre.du, centre.dv));
 }
 
 glm::dvec3 shadingNormal(const scene::SubdivisionSurface& surface, int patch, double u, double v,

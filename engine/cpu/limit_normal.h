@@ -1,11 +1,7 @@
 #pragma once
-// The shading normal of the limit surface, robust where dP/du x dP/dv
-// vanishes (OpenSubdiv issues #947 and #1352). On our cages that happens at
-// patch corners: where an infinitely sharp crease turns a corner, dP/du and
-// dP/dv become parallel; at some end-cap corners both are zero. The limit
-// normal approaching such a point from inside its patch is well defined, so
-// we evaluate at points moved towards the patch centre by growing fractions
-// (1e-7 .. 1e-3 of the way) and take the first that is well defined.
+// The shading normal on the CPU reference: the limit normal with the
+// fallback of rules/surface/limit_normal.h where dP/du x dP/dv vanishes,
+// evaluated by OpenSubdiv's own patch evaluation.
 
 #include "scenes/subdivision_surface.h"
 
@@ -15,14 +11,9 @@ namespace facet::cpu {
 glm::dvec3 limitNormal(const scene::SubdivisionSurface& surface, int patch, double u, double v);
 
 // The shading normal at (u, v): where a mesh as authored carries normals,
-// theirs interpolated (compute/shared/authored_normal.h), turned to the side
+// theirs interpolated (rules/surface/authored_normal.h), turned to the side
 // of the surface's own normal `limit`; else `limit`.
 glm::dvec3 shadingNormal(const scene::SubdivisionSurface& surface, int patch, double u, double v,
                          const glm::dvec3& limit);
-
-// The cross product is trusted when |du x dv| exceeds this fraction of
-// |du| |dv| (the sine of the angle between them) and neither derivative is
-// zero.
-inline constexpr double kDegenerateSine = 1e-6;
 
 }  // namespace facet::cpu

@@ -10,20 +10,18 @@
 #include <thread>
 
 #include "engine/camera/camera.h"
-#include "engine/camera/sample_plan.h"
 #include "engine/cpu/intersect.h"
 #include "engine/ibl/compensation_tables.h"
 #include "engine/ibl/environment_lighting.h"
 #include "engine/ibl/environment_lookup.h"
-#include "engine/ibl/environment_math.h"
 #include "engine/ibl/environment_mip_chain.h"
 #include "materials/material.h"
-#include "materials/texture_shading.h"
+#include "rules/rules.h"
 
 namespace facet::cpu {
 namespace {
 
-namespace m = materials::f64;
+namespace m = rules::f64;
 
 struct SceneHit {
   SurfaceHit surface;
@@ -136,7 +134,7 @@ class ReferenceScene {
  private:
   // A textured material at `hit`, seen along `direction`, with the normals
   // n and ng facing the eye and emission factor `emission`
-  // (compute/shared/textured_material.h).
+  // (rules/shading/textured_material.h).
   m::TexturedSurface texturedSurface(const SceneHit& hit, const materials::MaterialTextures& t,
                                      const m::BrdfParams& params, const glm::dvec3& n, const glm::dvec3& ng,
                                      const glm::dvec3& direction, const glm::dvec3& emission) const {
@@ -194,7 +192,7 @@ class ReferenceScene {
            !(environment_->environment->occlusion && occluded(position, ng, s.direction, INFINITY, shadowRays));
   }
 
-  // The sampled method (compute/shared/sampled_environment.h), with the
+  // The sampled method (rules/environment/sampled_environment.h), with the
   // environment's distribution in vectors.
   glm::dvec3 sampledEnvironment(const m::BrdfParams& params, const glm::dvec3& specularScale,
                                 const glm::dvec3& position, const glm::dvec3& n, const glm::dvec3& ng,
@@ -219,7 +217,7 @@ class ReferenceScene {
     return sum;
   }
 
-  // The filtered method (compute/shared/filtered_environment.h): the
+  // The filtered method (rules/environment/filtered_environment.h): the
   // sampled method's pairs, BRDF samples read from the mip chain.
   glm::dvec3 filteredEnvironment(const m::BrdfParams& params, const glm::dvec3& specularScale,
                                  const glm::dvec3& position, const glm::dvec3& n, const glm::dvec3& ng,
@@ -274,7 +272,7 @@ class ReferenceScene {
   ExactSettings exactSettings_;
   std::vector<int> patchOffset_, faceOffset_;
   std::vector<TessellatedSurface> tessellations_;
-  std::vector<materials::f64::BrdfParams> params_;
+  std::vector<rules::f64::BrdfParams> params_;
 };
 
 }  // namespace
@@ -301,9 +299,9 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
   const double environmentMilliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - environmentStart).count();
   const ReferenceScene reference(scene, geometry, environment ? &*environment : nullptr);
-  const camera::CameraFrame frame = camera::cameraFrame(scene.camera, width, height);
-  const std::uint32_t strata = camera::sample_strata(std::uint32_t(scene.render.samplesPerPixel));
-  const std::uint32_t raysPerPixel = camera::rays_per_pixel(strata);
+  const rules::f64::CameraFrame frame = camera::cameraFrame(scene.camera, width, height);
+  const std::uint32_t strata = rules::f64::sample_strata(std::uint32_t(scene.render.samplesPerPixel));
+  const std::uint32_t raysPerPixel = rules::f64::rays_per_pixel(strata);
 
   std::atomic<int> nextRow{window.y0}, finishedRows{0};
   std::atomic<std::uint64_t> primaryRays{0}, shadowRays{0};
@@ -319,12 +317,12 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
         glm::dvec3 radiance(0.0);
         double coverage = 0;
         for (std::uint32_t sample = 0; sample < raysPerPixel; ++sample) {
-          const glm::dvec2 offset = camera::sample_offset(pixelId, sample, strata);
-          const glm::dvec3 direction = camera::camera_ray_direction(frame, x + offset.x, y + offset.y, width, height);
+          const glm::dvec2 offset = rules::f64::sample_offset(pixelId, sample, strata);
+          const glm::dvec3 direction = rules::f64::camera_ray_direction(frame, x + offset.x, y + offset.y, width, height);
           ++primary;
           const auto hit = reference.intersect(Ray{frame.eye, direction}, false);
           if (sample == 0 && hit) reference.writeAovs(image, pixel, *hit, direction);
-          if (!camera::is_shaded_sample(sample, strata)) continue;
+          if (!rules::f64::is_shaded_sample(sample, strata)) continue;
           if (!hit) {
             radiance += reference.background(direction);
             continue;
@@ -332,7 +330,7 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
           coverage += 1;
           radiance += reference.shade(*hit, direction, pixelId, sample, shadow);
         }
-        const double samples = double(camera::shaded_sample_count(strata));
+        const double samples = double(rules::f64::shaded_sample_count(strata));
         image.beauty[pixel] = glm::vec4(glm::vec3(radiance / samples), float(coverage / samples));
       }
       const int done = ++finishedRows;

@@ -10,9 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include "compute/shared/config.h"
 #include "engine/camera/camera.h"
-#include "engine/camera/sample_plan.h"
 #include "engine/gpu_backend/gpu_scene.h"
 #include "engine/gpu_backend/prefilter_gpu.h"
 #include "engine/gpu_backend/raycast_layout.h"
@@ -21,7 +19,7 @@
 #include "engine/ibl/environment_lighting.h"
 #include "facet_raycast_kernels/spirv.h"
 #include "materials/material.h"
-#include "materials/shading.h"
+#include "rules/rules.h"
 #include "scenes/input_error.h"
 
 namespace facet::gpu_backend {
@@ -59,18 +57,9 @@ const char* const kStageNames[kStageCount] = {
     "dice grid", "dice cells", "quadtrees", "refit", "intersect", "compact", "fallbacks", "fallbacks", "surface",
     "compact",   "shadow rays", "compact",  "shadow fallbacks", "gather",  "resolve"};
 
-namespace grid {
-using uint = std::uint32_t;
-using glm::min;
-using glm::uvec3;
-#define FACET_FN inline
-#include "compute/shared/workgroup_grid.h"
-#undef FACET_FN
-}  // namespace grid
-
 std::pair<std::uint32_t, std::uint32_t> workgroups(std::uint64_t invocations) {
   if (invocations > UINT32_MAX) throw gpu::Error("a pass of more than 2^32 invocations");
-  const glm::uvec3 grid = grid::workgroup_grid(std::uint32_t(invocations));
+  const glm::uvec3 grid = rules::f32::workgroup_grid(std::uint32_t(invocations));
   return {grid.x, grid.y};
 }
 
@@ -231,7 +220,7 @@ BandBuffers allocateBands(gpu::Device& d, std::uint64_t bandPixels, std::uint64_
 }
 
 // Every buffer by its binding number: a number names one buffer in every
-// kernel (compute/raycast/scene_bindings.glsl, trace_bindings.glsl and the
+// kernel (compute/raycast/common/scene_bindings.glsl, trace_bindings.glsl and the
 // kernels' own), so each kernel's bind group follows from its layout.
 using BindingTable = std::map<std::uint32_t, const gpu::Buffer*>;
 
@@ -279,7 +268,7 @@ gpu::BindGroup bindGroup(gpu::Device& d, const gpu::ComputePipeline& pipeline, c
 
 layout::FrameParams frameParams(const scene::Scene& scene, const scene::SceneGeometry& geometry,
                                 std::uint32_t strata, const GpuScene& packed) {
-  const camera::CameraFrame camera = camera::cameraFrame(scene.camera, scene.render.width, scene.render.height);
+  const rules::f64::CameraFrame camera = camera::cameraFrame(scene.camera, scene.render.width, scene.render.height);
   layout::FrameParams f{};
   // Rays start at the eye, the origin of the GPU's coordinates.
   f.forwardX = float(camera.forward.x), f.forwardY = float(camera.forward.y), f.forwardZ = float(camera.forward.z);
@@ -290,7 +279,7 @@ layout::FrameParams frameParams(const scene::Scene& scene, const scene::SceneGeo
   f.width = float(scene.render.width);
   f.height = float(scene.render.height);
   f.strata = strata;
-  f.raysPerPixel = camera::rays_per_pixel(strata);
+  f.raysPerPixel = rules::f64::rays_per_pixel(strata);
   f.objectCount = std::uint32_t(scene.objects.size());
   f.rootNode = packed.rootNode;
   f.cellBlockCount = std::uint32_t(packed.blocks);
@@ -300,7 +289,7 @@ layout::FrameParams frameParams(const scene::Scene& scene, const scene::SceneGeo
   const double diagonal = geometry.bounds.diagonal(), tolerance = rootTolerance(scene, geometry);
   f.tolerance = float(tolerance);
   f.minimumPiece = float(std::max(4 * tolerance, 1e-6 * diagonal));
-  f.shadowOffset = float(materials::f64::shadow_ray_offset(diagonal, tolerance));
+  f.shadowOffset = float(rules::f64::shadow_ray_offset(diagonal, tolerance));
   return f;
 }
 
@@ -602,7 +591,7 @@ void traceBand(gpu::Device& d, const Kernels& k, const BindingTable& table, Band
 
 GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::SceneGeometry& geometry,
                                     const std::function<void(double)>& progress, const std::optional<PixelRect>& crop) {
-  const std::uint32_t strata = camera::sample_strata(std::uint32_t(scene.render.samplesPerPixel));
+  const std::uint32_t strata = rules::f64::sample_strata(std::uint32_t(scene.render.samplesPerPixel));
   const bool tessellated = scene.render.method == scene::IntersectionMethod::Tessellated;
   checkFloatRange(scene, geometry);
   const glm::dvec3 origin = scene.camera.eye;

@@ -172,7 +172,7 @@ std::uint32_t quadtreeLevels(std::uint32_t rate) {
   return levels;
 }
 
-// A texcoord patch as FACET_TEXCOORD_TEXELS texels (compute/shared/patch_records.h).
+// A texcoord patch as FACET_TEXCOORD_TEXELS texels (compute/layout/patch_records.h).
 void packTexcoords(const scene::BezierPatch& patch, std::vector<glm::vec4>& texels) {
   static constexpr int kInteriorSlot[4] = {5, 6, 10, 9};
   std::array<glm::dvec3, 20> points;

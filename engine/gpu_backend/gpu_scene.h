@@ -1,7 +1,7 @@
 // A scene's geometry packed for the GPU ray caster: the top levels of each
 // object's 4-wide BVH (its patch BVH collapsed), patch records, headers and
 // control points, and where each object's micro-grid and quadtrees go
-// (compute/shared/wide_bvh.h, raycast_layout.h).
+// (compute/layout/wide_bvh.h, raycast_layout.h).
 //
 // Everything is rebased on `origin` (the eye) in double before it is
 // rounded to float, so the kernels' error scales with the scene's size seen
@@ -25,7 +25,7 @@ struct GpuScene {
   std::vector<Texel> topNodes;  // nodes 0 .. topNodes.size() / FACET_BVH4_TEXELS - 1 of the node buffer
   std::uint32_t rootNode = 0;
   // The top nodes, children before parents: the order in which their boxes
-  // are refitted to the diced cells (compute/raycast/refit_top_levels.comp).
+  // are refitted to the diced cells (compute/raycast/dicing/refit_top_levels.comp).
   std::vector<std::uint32_t> refitOrder;
   std::uint64_t nodeCount = 0;  // top levels and every quadtree
   std::vector<gpu_layout::PatchRecord> patches;

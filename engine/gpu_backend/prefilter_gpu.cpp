@@ -7,10 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "compute/shared/config.h"
-#include "engine/ibl/environment_math.h"
 #include "engine/ibl/prefilter_steps.h"
 #include "facet_ibl_kernels/spirv.h"
+#include "rules/rules.h"
 
 namespace facet::gpu_backend {
 
@@ -188,7 +187,7 @@ facet::ibl::PrefilteredEnvironment prefilterOnGpu(gpu::Device& device, const sce
   std::uint64_t levelFloats = 0;
   for (int i = 1; i < settings.levels; ++i) {
     const facet::ibl::LevelSize size = facet::ibl::prefilteredLevelSize(map, settings, i);
-    env.levels.push_back({size.width, size.height, materials::f64::prefiltered_level_alpha(i, settings.levels), {}});
+    env.levels.push_back({size.width, size.height, rules::f64::prefiltered_level_alpha(i, settings.levels), {}});
     levelFloats += 3 * std::uint64_t(size.width) * std::uint64_t(size.height);
   }
   gpu::Buffer levels = job.storage("prefiltered levels", 4 * std::max<std::uint64_t>(levelFloats, 1));
@@ -210,7 +209,7 @@ facet::ibl::PrefilteredEnvironment prefilterOnGpu(gpu::Device& device, const sce
                groupsFor(source.height, FACET_WORKGROUP_SIZE));
 
   const facet::ibl::LevelSize irradianceSize = facet::ibl::irradianceMapSize(settings);
-  const int irradianceSource = materials::f64::irradiance_source_level(source.width, int(chainSizes.size()));
+  const int irradianceSource = rules::f64::irradiance_source_level(source.width, int(chainSizes.size()));
   gpu::Buffer irradiance =
       job.storage("irradiance map", 12 * std::uint64_t(irradianceSize.width) * std::uint64_t(irradianceSize.height));
   uniforms.push_back(

@@ -1,11 +1,13 @@
-// The C++ view of the GPU ray caster's shared headers: they are written in
-// the common subset of GLSL and C++, need only GLSL's `uint` spelled out, and
-// include nothing themselves, so including them inside a namespace is safe.
+// The C++ view of the GPU buffer layouts of compute/layout/: they are written
+// in the subset of rules/language.h, need only its `uint`, and include
+// nothing themselves, so including them inside a namespace is safe.
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
+
+#include "rules/rules.h"
 
 namespace facet::gpu_backend {
 // One RGBA32UI texel of a texel buffer.
@@ -13,10 +15,10 @@ using Texel = std::array<std::uint32_t, 4>;
 }  // namespace facet::gpu_backend
 
 namespace facet::gpu_layout {
-using uint = std::uint32_t;
-#include "compute/shared/patch_records.h"
-#include "compute/shared/raycast_layout.h"
-#include "compute/shared/wide_bvh.h"
+using rules::f32::uint;
+#include "compute/layout/patch_records.h"
+#include "compute/layout/raycast_layout.h"
+#include "compute/layout/wide_bvh.h"
 }  // namespace facet::gpu_layout
 
 // The layout GLSL sees: 4-byte members, no padding.

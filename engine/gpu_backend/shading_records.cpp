@@ -31,7 +31,7 @@ std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
                                                     const ibl::CompensationTables& compensation) {
   std::vector<layout::MaterialRecord> records;
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
-    const materials::f32::BrdfParams p = materials::toParams32(scene.materials[i]);
+    const rules::f32::BrdfParams p = materials::toParams32(scene.materials[i]);
     const bool prefiltered = environment && !environment->dfgTable.empty();
     layout::MaterialRecord r{p.d_model,
                              p.g_model,

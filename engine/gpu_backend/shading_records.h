@@ -1,6 +1,6 @@
 // What the surface kernel reads of a scene besides its geometry, packed as
-// compute/shared/raycast_layout.h lays it out: materials, lights (rebased on
-// the eye) and the environment's tables (compute/raycast/environment.glsl).
+// compute/layout/raycast_layout.h lays it out: materials, lights (rebased on
+// the eye) and the environment's tables (compute/raycast/shading/environment.glsl).
 #pragma once
 
 #include <glm/vec3.hpp>

@@ -1,6 +1,6 @@
 #include "engine/ibl/compensation_tables.h"
 
-#include "engine/ibl/environment_math.h"
+#include "rules/rules.h"
 
 namespace facet::ibl {
 
@@ -25,11 +25,11 @@ CompensationTables compensationTables(const scene::Scene& scene) {
   return result;
 }
 
-glm::dvec3 specularScale(const CompensationTables& tables, int material, const materials::f64::BrdfParams& params,
+glm::dvec3 specularScale(const CompensationTables& tables, int material, const rules::f64::BrdfParams& params,
                          double nv) {
   const int table = tables.tableOfMaterial[std::size_t(material)];
   if (table == CompensationTables::kNone) return glm::dvec3(1.0);
-  return materials::f64::specular_compensation(params, dfgLookup(tables.tables[std::size_t(table)], nv, params.alpha));
+  return rules::f64::specular_compensation(params, dfgLookup(tables.tables[std::size_t(table)], nv, params.alpha));
 }
 
 }  // namespace facet::ibl

@@ -27,7 +27,7 @@ CompensationTables compensationTables(const scene::Scene& scene);
 // The factor on scene material `material`'s specular lobe, parameters
 // `params` after its textures, seen at n.v = nv: vec3(1) when the material
 // is not compensated.
-glm::dvec3 specularScale(const CompensationTables& tables, int material, const materials::f64::BrdfParams& params,
+glm::dvec3 specularScale(const CompensationTables& tables, int material, const rules::f64::BrdfParams& params,
                          double nv);
 
 }  // namespace facet::ibl

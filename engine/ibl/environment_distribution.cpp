@@ -2,12 +2,12 @@
 
 #include <algorithm>
 
-#include "engine/ibl/environment_math.h"
+#include "rules/rules.h"
 
 namespace facet::ibl {
 namespace {
 
-namespace m = materials::f64;
+namespace m = rules::f64;
 
 // Vose's construction: texels whose scaled probability n p is below 1 are
 // topped up by one above 1, which becomes their alias; exact in expectation

@@ -2,14 +2,14 @@
 
 #include <glm/trigonometric.hpp>
 
-#include "engine/ibl/environment_math.h"
+#include "rules/rules.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace facet::ibl {
 
-namespace m = materials::f64;
+namespace m = rules::f64;
 
 bool filteredUsesEnvironmentSamples(const scene::EnvironmentMap& map) {
   double largest = 0, weighted = 0;

@@ -1,6 +1,6 @@
 // Texel reads and bilinear lookups in equirectangular RGB arrays (float maps
 // and levels, double mip chains), in double: the CPU side of what the kernels
-// do with environment_bilinear (compute/shared/environment_mapping.h).
+// do with environment_bilinear (rules/environment/environment_mapping.h).
 #pragma once
 
 #include <glm/common.hpp>
@@ -9,7 +9,7 @@
 
 #include <cstddef>
 
-#include "engine/ibl/environment_math.h"
+#include "rules/rules.h"
 
 namespace facet::ibl {
 
@@ -21,7 +21,7 @@ glm::dvec3 texelAt(const Real* rgb, int width, int x, int y) {
 
 template <class Real>
 glm::dvec3 bilinearLookup(const Real* rgb, int width, int height, const glm::dvec2& uv) {
-  const materials::f64::BilinearTaps t = materials::f64::environment_bilinear(uv, width, height);
+  const rules::f64::BilinearTaps t = rules::f64::environment_bilinear(uv, width, height);
   const glm::dvec3 top = glm::mix(texelAt(rgb, width, t.x0, t.y0), texelAt(rgb, width, t.x1, t.y0), t.fx);
   const glm::dvec3 bottom = glm::mix(texelAt(rgb, width, t.x0, t.y1), texelAt(rgb, width, t.x1, t.y1), t.fx);
   return glm::mix(top, bottom, t.fy);

@@ -33,7 +33,7 @@ std::vector<LevelSize> sourceChainSizes(int width, int height);
 // as downsample.comp computes it.
 template <class Real>
 glm::dvec3 coarserTexel(const Real* finer, int finerWidth, int finerHeight, int x, int y) {
-  const double upper = materials::f64::environment_upper_row_share(y, finerHeight);
+  const double upper = rules::f64::environment_upper_row_share(y, finerHeight);
   return 0.5 * (upper * (texelAt(finer, finerWidth, 2 * x, 2 * y) + texelAt(finer, finerWidth, 2 * x + 1, 2 * y)) +
                 (1 - upper) *
                     (texelAt(finer, finerWidth, 2 * x, 2 * y + 1) + texelAt(finer, finerWidth, 2 * x + 1, 2 * y + 1)));

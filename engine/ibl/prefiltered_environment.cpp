@@ -10,13 +10,13 @@
 #include <thread>
 
 #include "engine/ibl/environment_lookup.h"
-#include "engine/ibl/environment_math.h"
+#include "rules/rules.h"
 #include "engine/ibl/environment_mip_chain.h"
 #include "engine/ibl/prefilter_steps.h"
 
 namespace facet::ibl {
 
-namespace m = materials::f64;
+namespace m = rules::f64;
 
 LevelSize prefilteredLevelSize(const scene::EnvironmentMap& map, const PrefilterSettings& settings, int level) {
   const int width = std::max(16, std::min(map.width, settings.firstLevelWidth) >> (level - 1));

@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "materials/material.h"
-#include "materials/shading.h"
+#include "rules/rules.h"
 #include "scenes/environment_map.h"
 
 namespace facet::ibl {
@@ -45,7 +45,7 @@ struct RadianceLevel {
 
 // For one (D, G) pair: entry (i, j) at n.v = (i + 1) / size and
 // sqrt(alpha) = j / (size - 1) (dfg_grid_nv, dfg_grid_alpha in
-// compute/shared/dfg.h) holds (scale, bias), so that for Schlick's
+// rules/shading/dfg.h) holds (scale, bias), so that for Schlick's
 // F the directional albedo of the specular lobe is F(0) scale + bias.
 struct DfgTable {
   int distribution = 0;
@@ -83,10 +83,10 @@ DfgTable dfgTable(int distribution, int geometry, const PrefilterSettings& setti
 glm::dvec2 dfgLookupOnDemand(int distribution, int geometry, double nv, double alpha,
                              const PrefilterSettings& settings = {});
 // The multiple-scattering factor on the specular lobe at n.v = nv
-// (energy_compensation in compute/shared/dfg.h), from that table for the
+// (energy_compensation in rules/shading/dfg.h), from that table for the
 // material's D and G; with compensationTableSettings()
 // (engine/ibl/compensation_tables.h), the factor the renderers apply.
-glm::dvec3 energyCompensationOnDemand(const materials::f64::BrdfParams& params, double nv,
+glm::dvec3 energyCompensationOnDemand(const rules::f64::BrdfParams& params, double nv,
                                       const PrefilterSettings& settings = {});
 // Irradiance / pi at normal n (c_diff times this is the Lambertian
 // radiance): from the irradiance map where the rule chose it, else from the
@@ -99,7 +99,7 @@ double shIrradianceError(const std::array<glm::dvec3, 9>& sh, const RadianceLeve
 // The rule: the map where the SH misses it by more than 1%, else the SH
 // (exact for maps of bands 0-2 alone, with no interpolation between texels).
 bool usesIrradianceMap(const std::array<glm::dvec3, 9>& sh, const RadianceLevel& irradianceMap);
-// The irradiance table the GPU reads (layout in compute/shared/irradiance_map.h).
+// The irradiance table the GPU reads (layout in rules/environment/irradiance_map.h).
 std::vector<glm::vec4> irradianceTable(const PrefilteredEnvironment& env);
 
 // The cache: returns the stored result for (map, models, settings, builder)

@@ -18,7 +18,7 @@ namespace facet {
 // the translation is the last row; m[i][j] is Imath's x[i][j].
 using RowMatrix = std::array<std::array<double, 4>, 4>;
 
-// The pinhole camera of compute/shared/camera.h: an orthonormal frame, the
+// The pinhole camera of rules/camera/camera.h: an orthonormal frame, the
 // image plane at distance 1 along `forward`, scaled by tan(fov / 2).
 struct ExrCamera {
   glm::dvec3 eye{0.0}, right{1.0, 0.0, 0.0}, up{0.0, 1.0, 0.0}, forward{0.0, 0.0, -1.0};

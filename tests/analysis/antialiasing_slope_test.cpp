@@ -17,7 +17,7 @@ namespace {
 
 scene::Scene greyBlobUnderWhite() {
   materials::Material m = scene::defaultMaterial();
-  m.fresnel = materials::f64::F_DIELECTRIC;
+  m.fresnel = rules::f64::F_DIELECTRIC;
   m.eta = glm::dvec3(1.0);  // no interface: no specular lobe
   m.diffuse = glm::dvec3(0.8);
   return testing::blobUnder(

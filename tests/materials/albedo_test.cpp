@@ -10,11 +10,11 @@
 namespace facet::materials {
 namespace {
 
-f64::BrdfParams bare(int d, int g, double alpha) {
-  f64::BrdfParams p;
+rules::f64::BrdfParams bare(int d, int g, double alpha) {
+  rules::f64::BrdfParams p;
   p.d_model = d;
   p.g_model = g;
-  p.f_model = f64::F_NONE;
+  p.f_model = rules::f64::F_NONE;
   p.alpha = alpha;
   p.f0 = p.eta = p.k = p.diffuse = glm::dvec3(0);
   return p;
@@ -34,7 +34,7 @@ TEST(Albedo, GaussLegendreIsExactForPolynomials) {
 
 TEST(Albedo, LambertIsExactlyItsColor) {
   // 1e-12: the cosine map makes the integrand constant.
-  f64::BrdfParams p = bare(f64::D_GGX, f64::G_SMITH_GGX, 0.5);
+  rules::f64::BrdfParams p = bare(rules::f64::D_GGX, rules::f64::G_SMITH_GGX, 0.5);
   p.diffuse = {0.25, 0.5, 1.0};
   for (double mu : {0.05, 0.5, 1.0}) {
     AlbedoResult r = directionalAlbedo(p, mu, 16);
@@ -45,7 +45,7 @@ TEST(Albedo, LambertIsExactlyItsColor) {
 TEST(Albedo, UniformDistributionWithImplicitGIsOneQuarter) {
   // Blinn-Phong at alpha = 1 is D = 1/pi; with G = (n.l)(n.v) and F = 1,
   // f = 1/(4 pi) and E = 1/4 for every mu (less the horizon's 1e-8).
-  f64::BrdfParams p = bare(f64::D_BLINN_PHONG, f64::G_IMPLICIT, 1.0);
+  rules::f64::BrdfParams p = bare(rules::f64::D_BLINN_PHONG, rules::f64::G_IMPLICIT, 1.0);
   for (double mu : {0.1, 0.5, 0.9, 1.0}) {
     AlbedoResult r = directionalAlbedo(p, mu, 64);
     EXPECT_NEAR(r.albedo.x, 0.25, 1e-6) << "mu=" << mu;
@@ -57,7 +57,7 @@ TEST(Albedo, ErrorEstimateBoundsTheTrueError) {
   // 4x finer quadrature, for narrow and broad lobes and grazing views.
   for (double alpha : {0.05, 0.5, 1.0}) {
     for (double mu : {0.05, 0.5, 1.0}) {
-      f64::BrdfParams p = bare(f64::D_GGX, f64::G_SMITH_GGX_CORRELATED, alpha);
+      rules::f64::BrdfParams p = bare(rules::f64::D_GGX, rules::f64::G_SMITH_GGX_CORRELATED, alpha);
       AlbedoResult r = directionalAlbedo(p, mu, 64);
       AlbedoResult fine = directionalAlbedo(p, mu, 256);
       EXPECT_LE(std::abs(r.albedo.x - fine.albedo.x), r.error_estimate + 1e-12) << "alpha=" << alpha << " mu=" << mu;
@@ -70,8 +70,8 @@ TEST(Albedo, ErrorEstimateBoundsTheTrueError) {
 // Blinn-Phong at high alpha), undercounts masking and creates energy; see
 // docs/shading.md. Every other pairing is a valid masking model.
 bool consistentPairing(int d, int g) {
-  bool beckmann_smith = g == f64::G_SMITH_BECKMANN || g == f64::G_SMITH_BECKMANN_CORRELATED;
-  return !beckmann_smith || d == f64::D_BECKMANN;
+  bool beckmann_smith = g == rules::f64::G_SMITH_BECKMANN || g == rules::f64::G_SMITH_BECKMANN_CORRELATED;
+  return !beckmann_smith || d == rules::f64::D_BECKMANN;
 }
 
 struct Furnace {
@@ -113,8 +113,8 @@ TEST(Albedo, WhiteFurnaceNeverGainsEnergy) {
 TEST(Albedo, BeckmannSmithOnOtherSurfacesGainsEnergy) {
   // The documented exception, held to the size the table in docs/shading.md
   // gives it, so that the table stays true: each pairing reaches E > 1.3.
-  for (int d : {f64::D_GGX, f64::D_BLINN_PHONG})
-    for (int g : {f64::G_SMITH_BECKMANN, f64::G_SMITH_BECKMANN_CORRELATED}) {
+  for (int d : {rules::f64::D_GGX, rules::f64::D_BLINN_PHONG})
+    for (int g : {rules::f64::G_SMITH_BECKMANN, rules::f64::G_SMITH_BECKMANN_CORRELATED}) {
       Furnace furnace = whiteFurnace(d, g);
       EXPECT_GT(furnace.highest, 1.3) << modelName(kDistributions, d) << "/" << modelName(kGeometryTerms, g);
       std::printf("furnace %-11s %-26s max E = %.6f at %s\n", modelName(kDistributions, d).data(),

@@ -29,9 +29,9 @@ std::string errorOf(const std::string& text) {
 TEST(MaterialFile, PresetWithRoughness) {
   Material m = build(R"({"preset": "gold", "roughness": 0.5, "geometry": "smith-ggx"})");
   EXPECT_EQ(m.name, "gold");
-  EXPECT_EQ(m.distribution, f64::D_GGX);
-  EXPECT_EQ(m.geometry, f64::G_SMITH_GGX);
-  EXPECT_EQ(m.fresnel, f64::F_SCHLICK);
+  EXPECT_EQ(m.distribution, rules::f64::D_GGX);
+  EXPECT_EQ(m.geometry, rules::f64::G_SMITH_GGX);
+  EXPECT_EQ(m.fresnel, rules::f64::F_SCHLICK);
   EXPECT_DOUBLE_EQ(m.alpha, 0.25);  // alpha = roughness^2
   EXPECT_EQ(m.f0, findPreset("gold")->f0_linear);
   EXPECT_EQ(m.diffuse, glm::dvec3(0));
@@ -46,7 +46,7 @@ TEST(MaterialFile, ConductorAndRoundTrip) {
   Material m = build(R"({"name": "cu", "distribution": "beckmann", "fresnel": "conductor",
                          "alpha": 0.2, "eta": [0.27, 0.68, 1.22], "k": [3.61, 2.63, 2.29],
                          "diffuse": 0})");
-  EXPECT_EQ(m.fresnel, f64::F_CONDUCTOR);
+  EXPECT_EQ(m.fresnel, rules::f64::F_CONDUCTOR);
   EXPECT_EQ(m.k, glm::dvec3(3.61, 2.63, 2.29));
   Material again = build(toJson(m).dump());
   EXPECT_EQ(again.eta, m.eta);
@@ -57,7 +57,7 @@ TEST(MaterialFile, ConductorAndRoundTrip) {
 
 TEST(MaterialFile, BlenderMetallicReadsF0AndRoundTrips) {
   Material m = build(R"({"preset": "gold", "fresnel": "blender-metallic", "roughness": 0.5})");
-  EXPECT_EQ(m.fresnel, f64::F_BLENDER_METALLIC);
+  EXPECT_EQ(m.fresnel, rules::f64::F_BLENDER_METALLIC);
   EXPECT_EQ(m.f0, findPreset("gold")->f0_linear);
   Material again = build(toJson(m).dump());
   EXPECT_EQ(again.fresnel, m.fresnel);

@@ -9,7 +9,7 @@
 #include "materials/material.h"
 #include "materials/models.h"
 #include "materials/precision.h"
-#include "materials/shading.h"
+#include "rules/rules.h"
 
 namespace facet::materials {
 namespace {
@@ -34,7 +34,7 @@ TEST(Stability, SamplersAreFiniteAtTheEdgesOfTheUnitSquare) {
   // horizon: directions and pdfs stay finite in float and double.
   const float kEdges[] = {0.0f, 1e-7f, 0.5f, 1 - 6e-8f, 1.0f};
   const float kThetaV[] = {0.0f, 1.0f, 1.5707f, 1.5708f, 2.0f, 3.1415926f};
-  for (int technique : {f64::SAMPLE_COSINE, f64::SAMPLE_D, f64::SAMPLE_GGX_VISIBLE})
+  for (int technique : {rules::f64::SAMPLE_COSINE, rules::f64::SAMPLE_D, rules::f64::SAMPLE_GGX_VISIBLE})
     for (const ModelName& d : kDistributions)
       for (float alpha : {0.0f, 1e-3f, 0.5f, 1.0f})
         for (float theta : kThetaV)
@@ -42,22 +42,22 @@ TEST(Stability, SamplersAreFiniteAtTheEdgesOfTheUnitSquare) {
             for (float u2 : kEdges) {
               Material material;
               material.distribution = d.id;
-              material.geometry = f64::G_SMITH_GGX;
-              material.fresnel = f64::F_NONE;
+              material.geometry = rules::f64::G_SMITH_GGX;
+              material.fresnel = rules::f64::F_NONE;
               material.alpha = alpha;
               material.f0 = material.eta = material.k = material.diffuse = glm::dvec3(0);
-              const f32::BrdfParams p32 = toParams32(material);
+              const rules::f32::BrdfParams p32 = toParams32(material);
               glm::vec3 n(0, 0, 1), v(std::sin(theta), 0, std::cos(theta));
-              glm::vec3 l = f32::sample_direction(technique, p32, n, v, {u1, u2});
-              float pdf = f32::direction_pdf(technique, p32, n, l, v);
+              glm::vec3 l = rules::f32::sample_direction(technique, p32, n, v, {u1, u2});
+              float pdf = rules::f32::direction_pdf(technique, p32, n, l, v);
               EXPECT_TRUE(std::isfinite(l.x) && std::isfinite(l.y) && std::isfinite(l.z) && std::isfinite(pdf))
                   << "technique " << technique << " d=" << d.name << " alpha=" << alpha << " theta_v=" << theta
                   << " u=" << u1 << "," << u2;
 
-              const f64::BrdfParams p64 = toParams64(material);
+              const rules::f64::BrdfParams p64 = toParams64(material);
               glm::dvec3 l64 =
-                  f64::sample_direction(technique, p64, glm::dvec3(n), glm::dvec3(v), {double(u1), double(u2)});
-              double pdf64 = f64::direction_pdf(technique, p64, glm::dvec3(n), l64, glm::dvec3(v));
+                  rules::f64::sample_direction(technique, p64, glm::dvec3(n), glm::dvec3(v), {double(u1), double(u2)});
+              double pdf64 = rules::f64::direction_pdf(technique, p64, glm::dvec3(n), l64, glm::dvec3(v));
               EXPECT_TRUE(std::isfinite(l64.x) && std::isfinite(l64.y) && std::isfinite(l64.z) && std::isfinite(pdf64));
             }
 }

@@ -18,7 +18,7 @@ using facet::testing::Rgba8;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
-namespace t = materials::f64;
+namespace t = rules::f64;
 
 class GltfTextures : public facet::testing::TempDirTest {
  protected:

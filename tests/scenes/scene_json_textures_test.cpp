@@ -9,7 +9,7 @@
 #include <fstream>
 #include <vector>
 
-#include "materials/texture_shading.h"
+#include "rules/rules.h"
 #include "scenes/input_error.h"
 #include "scenes/scene_file.h"
 #include "tests/support/temp_dir.h"
@@ -18,7 +18,7 @@ namespace facet::scene {
 namespace {
 
 namespace fs = std::filesystem;
-namespace m = materials::f64;
+namespace m = rules::f64;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 

@@ -9,7 +9,7 @@
 namespace facet::scene {
 namespace {
 
-namespace t = materials::f64;
+namespace t = rules::f64;
 
 // A 4 x 1 ramp 0, 1, 2, 3 in every channel, one level, linear.
 Texture ramp(std::uint32_t wrap) {

@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "engine/ibl/environment_math.h"
+#include "rules/rules.h"
 #include "engine/ibl/prefiltered_environment.h"
 #include "materials/albedo.h"
 
@@ -21,7 +21,7 @@ namespace facet::ibl::testing {
 // sqrt(alpha) in (0, 1], at points between the table's entries and at the
 // ends (alpha = 1, n.v = minNv, n.v = 1).
 inline double compensatedFurnaceError(const DfgTable& table, double minNv) {
-  namespace m = materials::f64;
+  namespace m = rules::f64;
   std::vector<double> nvs, roughnesses;
   for (double nv = minNv; nv < 1.0; nv += 0.0617) nvs.push_back(nv);
   for (double roughness = 0.013; roughness < 1.0; roughness += 0.0571) roughnesses.push_back(roughness);

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <functional>
 
-#include "engine/ibl/environment_math.h"
+#include "rules/rules.h"
 #include "scenes/environment_map.h"
 
 namespace facet::ibl::testing {
@@ -20,7 +20,7 @@ inline scene::EnvironmentMap mapOf(int width, int height, const std::function<gl
   map.height = height;
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
-      const glm::dvec3 d = materials::f64::environment_direction(glm::dvec2((x + 0.5) / width, (y + 0.5) / height));
+      const glm::dvec3 d = rules::f64::environment_direction(glm::dvec2((x + 0.5) / width, (y + 0.5) / height));
       const glm::dvec3 value = radiance(d);
       for (int channel = 0; channel < 3; ++channel) map.rgb.push_back(float(value[channel]));
     }
@@ -40,7 +40,7 @@ inline glm::dvec3 skyWithSun(const glm::dvec3& d) {
 // cells of exact solid angle.
 inline glm::dvec3 integrateOverTexels(const scene::EnvironmentMap& map, int sub,
                                       const std::function<double(glm::dvec3)>& weight, double* weightSum = nullptr) {
-  namespace m = materials::f64;
+  namespace m = rules::f64;
   glm::dvec3 sum(0.0);
   double total = 0;
   const int columns = map.width * sub, rows = map.height * sub;

@@ -8,7 +8,7 @@
 
 #include "facet_materials_spirv/spirv.h"
 #include "materials/models.h"
-#include "materials/shading.h"
+#include "rules/rules.h"
 #include "tests/support/gpu_device.h"
 
 namespace facet::materials {
@@ -37,7 +37,7 @@ glm::dvec3 randomDirection(std::mt19937& rng, double minCos) {
 
 TEST_P(BrdfGpuParity, GlslFloatMatchesCppDouble) {
   const Variant variant = GetParam();
-  f64::BrdfParams p{variant.d,
+  rules::f64::BrdfParams p{variant.d,
                     variant.g,
                     variant.f,
                     0.0,
@@ -83,7 +83,7 @@ TEST_P(BrdfGpuParity, GlslFloatMatchesCppDouble) {
   // domain; lavapipe's exp and pow stay far inside it.
   double worst = 0;
   for (std::uint32_t i = 0; i < count; ++i) {
-    const glm::dvec3 expected = f64::brdf_evaluate(p, n, ls[i], vs[i]);
+    const glm::dvec3 expected = rules::f64::brdf_evaluate(p, n, ls[i], vs[i]);
     const glm::dvec3 gpu = glm::dvec3(glm::vec3(out[3 * i]));
     ASSERT_TRUE(std::isfinite(gpu.x) && std::isfinite(gpu.y) && std::isfinite(gpu.z)) << "case " << i;
     const double scale = std::max({expected.x, expected.y, expected.z, 1e-30});
@@ -97,11 +97,11 @@ TEST_P(BrdfGpuParity, GlslFloatMatchesCppDouble) {
 std::vector<Variant> variants() {
   // Every D, G and F at least once, each with the defaults of the other two.
   std::vector<Variant> v;
-  for (const ModelName& d : kDistributions) v.push_back({d.id, f64::G_SMITH_GGX_CORRELATED, f64::F_SCHLICK});
+  for (const ModelName& d : kDistributions) v.push_back({d.id, rules::f64::G_SMITH_GGX_CORRELATED, rules::f64::F_SCHLICK});
   for (const ModelName& g : kGeometryTerms)
-    if (g.id != f64::G_SMITH_GGX_CORRELATED) v.push_back({f64::D_GGX, g.id, f64::F_SCHLICK});
+    if (g.id != rules::f64::G_SMITH_GGX_CORRELATED) v.push_back({rules::f64::D_GGX, g.id, rules::f64::F_SCHLICK});
   for (const ModelName& f : kFresnelTerms)
-    if (f.id != f64::F_SCHLICK) v.push_back({f64::D_GGX, f64::G_SMITH_GGX_CORRELATED, f.id});
+    if (f.id != rules::f64::F_SCHLICK) v.push_back({rules::f64::D_GGX, rules::f64::G_SMITH_GGX_CORRELATED, f.id});
   return v;
 }
 

@@ -1,6 +1,7 @@
 // The limit normal's fallback where the partial derivatives' cross product
-// vanishes (engine/cpu/limit_normal.h).
+// vanishes (engine/cpu/limit_normal.h over rules/surface/limit_normal.h).
 #include "engine/cpu/limit_normal.h"
+#include "rules/rules.h"
 #include "tests/support/cpu_intersect.h"
 
 #include <gtest/gtest.h>
@@ -28,8 +29,8 @@ TEST(LimitNormal, FallsBackWhereTheCrossProductVanishes) {
         const double s = corner & 1, t = corner >> 1;
         const double u = domain.u0 + s * domain.size, v = domain.v0 + t * domain.size;
         const scene::LimitPoint point = geometry.surface.evaluatePatch(patch, u, v);
-        const double scale = glm::length(point.du) * glm::length(point.dv);
-        if (scale > 0.0 && glm::length(glm::cross(point.du, point.dv)) > kDegenerateSine * scale) continue;
+        glm::dvec3 unused;
+        if (rules::f64::well_defined_normal(point.du, point.dv, unused)) continue;
         ++degenerate;
         const glm::dvec3 normal = limitNormal(geometry.surface, patch, u, v);
         EXPECT_NEAR(glm::length(normal), 1.0, 1e-12);

@@ -43,7 +43,7 @@ std::shared_ptr<const scene::EnvironmentMap> courtyard() {
 // at every angle, where Schlick's F would still rise at grazing).
 materials::Material lambert(double albedo) {
   materials::Material m = scene::defaultMaterial();
-  m.fresnel = materials::f64::F_DIELECTRIC;
+  m.fresnel = rules::f64::F_DIELECTRIC;
   m.eta = glm::dvec3(1.0);
   m.diffuse = glm::dvec3(albedo);
   return m;

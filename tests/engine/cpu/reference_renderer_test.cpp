@@ -103,7 +103,7 @@ TEST_P(ReferenceRenderer, AovsAgreeWithEachOtherAndWithTheCamera) {
   s.render.method = GetParam();
   RenderReport report = render(s, Backend::Cpu);
   const Image& image = report.image;
-  const camera::CameraFrame frame = camera::cameraFrame(s.camera, image.width, image.height);
+  const rules::f64::CameraFrame frame = camera::cameraFrame(s.camera, image.width, image.height);
   int covered = 0;
   for (int y = 0; y < image.height; ++y) {
     for (int x = 0; x < image.width; ++x) {
@@ -114,7 +114,7 @@ TEST_P(ReferenceRenderer, AovsAgreeWithEachOtherAndWithTheCamera) {
         continue;
       }
       ++covered;
-      const glm::dvec3 direction = camera::camera_ray_direction(frame, x + 0.5, y + 0.5, image.width, image.height);
+      const glm::dvec3 direction = rules::f64::camera_ray_direction(frame, x + 0.5, y + 0.5, image.width, image.height);
       const glm::dvec3 expected = frame.eye + double(image.depth[i]) * direction;
       EXPECT_LT(glm::distance(glm::dvec3(image.position[i]), expected), 1e-5 * image.depth[i]) << x << "," << y;
       EXPECT_NEAR(glm::length(image.shadingNormal[i]), 1.0f, 1e-5f);

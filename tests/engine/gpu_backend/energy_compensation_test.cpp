@@ -41,7 +41,7 @@ scene::Scene furnace(IblMethod method, bool compensated) {
   s.render.method = scene::IntersectionMethod::Tessellated;
   for (std::size_t i = 0; i < s.materials.size(); ++i) {
     materials::Material& m = s.materials[i];
-    m.fresnel = materials::f64::F_SCHLICK;
+    m.fresnel = rules::f64::F_SCHLICK;
     m.f0 = glm::dvec3(1.0);
     m.diffuse = glm::dvec3(0.0);
     const double roughness = double(i + 1) / double(s.materials.size());

@@ -1,7 +1,7 @@
 // Image-based lighting on the GPU held to the CPU reference: the three
 // methods, the sampled and filtered ones with and without shadow rays, the
 // split sum's irradiance map and the filtered method's environment
-// technique under the sunrise, drawing the same random numbers (compute/shared/random.h). Tolerances in
+// technique under the sunrise, drawing the same random numbers (rules/sampling/random.h). Tolerances in
 // docs/rendering.md.
 #include <gtest/gtest.h>
 
@@ -116,7 +116,7 @@ class IblFurnaceOnGpu : public gpu::testing::GpuTest {};
 TEST_F(IblFurnaceOnGpu, PrefilteredWhiteLambertReturnsOne) {
   scene::Scene s = scene::loadScene(std::filesystem::path(FACET_CAGE_DIR) / "cube.obj");
   s.lights.clear();
-  s.materials[0].fresnel = materials::f64::F_DIELECTRIC;  // index 1: no specular lobe at all
+  s.materials[0].fresnel = rules::f64::F_DIELECTRIC;  // index 1: no specular lobe at all
   s.materials[0].eta = glm::dvec3(1.0);
   s.materials[0].diffuse = glm::dvec3(1.0);
   s.render.width = s.render.height = 24;

@@ -128,7 +128,7 @@ TEST_F(PrefilterGpu, CompensatedFurnaceReflectsEverything) {
   settings.levels = 1;
   const PrefilteredEnvironment env = gpu_backend::prefilterOnGpu(
       device_, testing::mapOf(16, 8, testing::skyWithSun),
-      {{materials::f64::D_GGX, materials::f64::G_SMITH_GGX_CORRELATED}}, settings);
+      {{rules::f64::D_GGX, rules::f64::G_SMITH_GGX_CORRELATED}}, settings);
   ASSERT_EQ(env.dfg.size(), 1u);
   EXPECT_LT(testing::compensatedFurnaceError(env.dfg[0], 0.1), 1e-2);
 }

@@ -2,7 +2,7 @@
 // hits are known in closed form (or, for Catmull-Clark, checkable against
 // the double-precision limit surface), rendered through the public API and
 // checked pixel by pixel against rays computed in double with the same
-// camera convention (engine/camera/camera.h, compute/shared/camera.h).
+// camera convention (engine/camera/camera.h, rules/camera/camera.h).
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -40,8 +40,8 @@ const char* methodName(scene::IntersectionMethod method) {
 
 // The centre ray of pixel (x, y) (or a point offset from the centre by
 // (dx, dy) pixels), in double, as both backends define it.
-glm::dvec3 rayDirection(const camera::CameraFrame& frame, int x, int y, double dx = 0.0, double dy = 0.0) {
-  return camera::camera_ray_direction(frame, x + 0.5 + dx, y + 0.5 + dy, double(kWidth), double(kHeight));
+glm::dvec3 rayDirection(const rules::f64::CameraFrame& frame, int x, int y, double dx = 0.0, double dy = 0.0) {
+  return rules::f64::camera_ray_direction(frame, x + 0.5 + dx, y + 0.5 + dy, double(kWidth), double(kHeight));
 }
 
 // Angle between two directions, robust near 0.
@@ -167,7 +167,7 @@ TEST_P(PlanarSquare, HitsAreTheAnalyticRayPlaneHits) {
   ASSERT_EQ(image.width, kWidth);
   ASSERT_EQ(image.height, kHeight);
 
-  const camera::CameraFrame frame = camera::cameraFrame(scene.camera, kWidth, kHeight);
+  const rules::f64::CameraFrame frame = camera::cameraFrame(scene.camera, kWidth, kHeight);
   const glm::dvec3 eye = scene.camera.eye;
   const glm::dvec3 planeNormal = square.normal();
 
@@ -271,7 +271,7 @@ TEST_P(CubeLimitSurface, ExactHitsLieOnTheLimitSurfaceAndOnTheirRay) {
   const gpu_backend::GpuRenderResult result = renderer.render(scene, geometry);
   const Image& image = result.image;
 
-  const camera::CameraFrame frame = camera::cameraFrame(scene.camera, kWidth, kHeight);
+  const rules::f64::CameraFrame frame = camera::cameraFrame(scene.camera, kWidth, kHeight);
   const glm::dvec3 eye = scene.camera.eye;
 
   double worstOnSurface = 0.0, worstOnRay = 0.0, worstEyeRelative = 0.0, worstUvOutside = 0.0;
@@ -376,7 +376,7 @@ TEST_P(ShadowRays, ReceiverIsDarkExactlyInsideTheAnalyticShadow) {
   const gpu_backend::GpuRenderResult result = renderer.render(scene, geometry);
   const Image& image = result.image;
 
-  const camera::CameraFrame frame = camera::cameraFrame(scene.camera, kWidth, kHeight);
+  const rules::f64::CameraFrame frame = camera::cameraFrame(scene.camera, kWidth, kHeight);
   const glm::dvec3 eye = scene.camera.eye;
 
   // What each pixel's centre ray sees, analytically.

@@ -1,17 +1,17 @@
 // Energy compensation's tables (engine/ibl/compensation_tables.h): built for
 // the compensated materials' (D, G) pairs only, read as the factor of
-// compute/shared/dfg.h.
+// rules/shading/dfg.h.
 #include <gtest/gtest.h>
 
 #include "engine/ibl/compensation_tables.h"
-#include "engine/ibl/environment_math.h"
+#include "rules/rules.h"
 #include "materials/material.h"
 #include "tests/support/compensated_furnace.h"
 
 namespace facet::ibl {
 namespace {
 
-namespace m = materials::f64;
+namespace m = rules::f64;
 
 materials::Material material(int distribution, bool compensated) {
   materials::Material result;

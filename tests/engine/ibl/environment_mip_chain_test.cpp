@@ -8,14 +8,14 @@
 
 #include "engine/ibl/environment_lighting.h"
 #include "engine/ibl/environment_lookup.h"
-#include "engine/ibl/environment_math.h"
+#include "rules/rules.h"
 #include "engine/ibl/environment_mip_chain.h"
 #include "tests/support/environment_maps.h"
 
 namespace facet::ibl {
 namespace {
 
-namespace m = materials::f64;
+namespace m = rules::f64;
 using testing::mapOf;
 using testing::skyWithSun;
 

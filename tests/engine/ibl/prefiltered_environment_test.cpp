@@ -12,7 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "engine/ibl/environment_math.h"
+#include "rules/rules.h"
 #include "engine/ibl/prefiltered_environment.h"
 #include "materials/albedo.h"
 #include "scenes/environment_map.h"
@@ -22,7 +22,7 @@
 namespace facet::ibl {
 namespace {
 
-namespace m = materials::f64;
+namespace m = rules::f64;
 using testing::integrateOverTexels;
 using testing::mapOf;
 using testing::maxRelativeDifference;

@@ -23,7 +23,7 @@ Vector times(const Vector& p, const RowMatrix& m) {
   return q;
 }
 
-ExrCamera exrCamera(const camera::CameraFrame& f) { return {f.eye, f.right, f.up, f.forward, f.tanHalfFovY, f.aspect}; }
+ExrCamera exrCamera(const rules::f64::CameraFrame& f) { return {f.eye, f.right, f.up, f.forward, f.tanHalfFovY, f.aspect}; }
 
 TEST(ExrCameraMatrices, APointOnAPixelsRayLandsAtThatPixelsCentre) {
   scene::Camera camera;
@@ -32,12 +32,12 @@ TEST(ExrCameraMatrices, APointOnAPixelsRayLandsAtThatPixelsCentre) {
   camera.up = {0.1, 1.0, 0.0};
   camera.verticalFovDegrees = 47.0;
   const int width = 37, height = 23;
-  const camera::CameraFrame frame = camera::cameraFrame(camera, width, height);
+  const rules::f64::CameraFrame frame = camera::cameraFrame(camera, width, height);
   const RowMatrix toCamera = worldToCamera(exrCamera(frame)), toNdc = worldToNdc(exrCamera(frame));
   for (const auto& [px, py] : {std::pair{0, 0}, {36, 0}, {0, 22}, {36, 22}, {20, 8}, {5, 17}})
     for (const double distance : {0.5, 3.0, 40.0}) {
       const double x = px + 0.5, y = py + 0.5;
-      const glm::dvec3 p = frame.eye + distance * camera::camera_ray_direction(frame, x, y, width, height);
+      const glm::dvec3 p = frame.eye + distance * rules::f64::camera_ray_direction(frame, x, y, width, height);
       const Vector ndc = times({p.x, p.y, p.z, 1.0}, toNdc);
       EXPECT_NEAR(ndc[0] / ndc[3], x / width, 1e-12) << px << ',' << py;
       EXPECT_NEAR(ndc[1] / ndc[3], y / height, 1e-12) << px << ',' << py;
@@ -51,7 +51,7 @@ TEST(ExrCameraMatrices, APointOnAPixelsRayLandsAtThatPixelsCentre) {
 }
 
 TEST(ExrCameraMatrices, CameraSpaceIsLeftHandedLikeOpenExrs) {
-  const camera::CameraFrame frame = camera::cameraFrame(scene::Camera{}, 4, 4);
+  const rules::f64::CameraFrame frame = camera::cameraFrame(scene::Camera{}, 4, 4);
   const RowMatrix m = worldToCamera(exrCamera(frame));
   const glm::dvec3 x{m[0][0], m[1][0], m[2][0]}, y{m[0][1], m[1][1], m[2][1]}, z{m[0][2], m[1][2], m[2][2]};
   // The camera's axes in a right-handed world: x cross y is -z.

@@ -3,11 +3,11 @@
 // surface_texcoord at one (patch, s, t) per invocation: uv, d(uv)/ds, d(uv)/dt.
 layout(local_size_x = 64) in;
 
-#include "compute/shared/patch_records.h"
+#include "compute/layout/patch_records.h"
 
 layout(binding = 3) uniform samplerBuffer patchPoints;  // patch_eval.glsl's, unread here
-#include "compute/raycast/patch_eval.glsl"
-#include "compute/raycast/texcoord.glsl"
+#include "compute/raycast/common/patch_eval.glsl"
+#include "compute/raycast/shading/texcoord.glsl"
 
 struct TexcoordCase {
   uint firstTexcoord;

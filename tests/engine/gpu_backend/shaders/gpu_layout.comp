@@ -2,9 +2,9 @@
 // Compiles the GPU ray caster's shared headers as GLSL, in the buffer
 // layouts the kernels use, so a C++-only construct in them breaks the build.
 #extension GL_GOOGLE_include_directive : require
-#include "compute/shared/patch_records.h"
-#include "compute/shared/raycast_layout.h"
-#include "compute/shared/wide_bvh.h"
+#include "compute/layout/patch_records.h"
+#include "compute/layout/raycast_layout.h"
+#include "compute/layout/wide_bvh.h"
 
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) readonly buffer Patches { PatchRecord patches[]; };

@@ -1,0 +1,244 @@
+// The GPU ray caster's buffers as both languages see them. The layouts of
+// compute/layout/ are valid GLSL and valid C++:
+//   - members are 32-bit scalars (float, uint, int) or structs of them, no
+//     vectors and no arrays, so std430, std140 and C++ agree without padding;
+//   - constants are `const uint` at file scope;
+//   - no #include, no C++-only syntax.
+// C++ includes them through engine/gpu_backend/raycast_layout.h, which
+// static_asserts the sizes; tests/engine/gpu_backend/gpu_scene_test.cpp checks the
+// offsets glslang chose.
+#ifndef FACET_LAYOUT_RAYCAST_LAYOUT_H
+#define FACET_LAYOUT_RAYCAST_LAYOUT_H
+
+// Where one object's data starts in the concatenated scene arrays; every
+// index is absolute. Its micro-grid has k x k cells per patch; each patch's
+// quadtree (compute/layout/wide_bvh.h) has `quadtreeLevels` levels of nodes
+// over a side^2 grid, side = 2^quadtreeLevels >= k, whose last level holds
+// 2 x 2 cells a node.
+struct ObjectRange {
+  uint firstPatch;  // PatchRecord and patch header index
+  uint patchCount;
+  uint patchIdOffset;  // patch and cage-face ids count on across objects
+  uint faceIdOffset;
+  uint material;
+  uint rate;  // k
+  uint quadtreeLevels;
+  uint firstQuadtreeNode;  // patch p's quadtree starts at firstQuadtreeNode + p * quadtreeNodes
+  uint quadtreeNodes;
+  uint firstBlock;         // dicing: the object's first 2 x 2 block of cells
+  uint firstCell;          // exact: FACET_CELL_TEXELS of bounds per cell
+  uint firstGridVertex;    // tessellated: (k + 1)^2 limit points per patch
+  uint firstEdgeMidpoint;  // tessellated: 4 k per patch (those of unsplit edges unused)
+};
+
+// A ray from `origin` along `direction`, over [tMin, tMax).
+struct RayRecord {
+  float originX;
+  float originY;
+  float originZ;
+  float tMin;
+  float directionX;
+  float directionY;
+  float directionZ;
+  float tMax;
+};
+
+// A shadow ray of the compacted list, with the light slot it decides.
+struct ShadowRayRecord {
+  RayRecord ray;
+  uint slot;
+};
+
+// Counted by the kernels, read back per band. Each list's length comes with
+// the workgroup grid of the pass that works it off (indirect dispatch).
+struct RenderCounters {
+  uint shadowRays;  // appended by the surface kernel
+  uint shadowX;
+  uint shadowY;
+  uint shadowZ;
+  uint cameraFallbacks;  // exact cells of camera rays left to subdivision
+  uint cameraFallbackX;
+  uint cameraFallbackY;
+  uint cameraFallbackZ;
+  uint shadowFallbacks;  // the same for shadow rays
+  uint shadowFallbackX;
+  uint shadowFallbackY;
+  uint shadowFallbackZ;
+};
+
+// An exact cell that Newton did not settle, deferred to the fallback pass
+// (compute/raycast/finish/fallback.comp): the ray (camera or shadow ray index) and
+// the cell; for camera rays the fallback adds the closest root it found.
+struct FallbackRecord {
+  uint ray;
+  uint cell;  // its reference (compute/layout/wide_bvh.h)
+  uint object;
+  float t;
+  uint patchIndex;
+  float s;
+  float tParam;
+};
+
+// The closest hit; patchIndex == FACET_NO_HIT on a miss. (s, t) is patch-local.
+// The geometric normal is the micro-triangle's (tessellated only; the exact
+// method's is the limit normal, found when shading).
+struct HitRecord {
+  float t;
+  uint patchIndex;  // absolute PatchRecord index
+  uint object;
+  float s;
+  float tParam;
+  float geometricX;
+  float geometricY;
+  float geometricZ;
+};
+
+const uint FACET_NO_HIT = 0xFFFFFFFFu;
+
+// A punctual light in world space; the spot cones are given as cosines.
+const uint FACET_LIGHT_DIRECTIONAL = 0u;
+const uint FACET_LIGHT_POINT = 1u;
+const uint FACET_LIGHT_SPOT = 2u;
+struct LightRecord {
+  uint type;
+  float colorR;
+  float colorG;
+  float colorB;
+  float positionX;
+  float positionY;
+  float positionZ;
+  float cosOuter;
+  float directionX;
+  float directionY;
+  float directionZ;
+  float cosInner;
+};
+
+// A texture a material reads (an index into the texture table of
+// compute/raycast/shading/textures.glsl, FACET_NO_TEXTURE for none) and its
+// KHR_texture_transform.
+const uint FACET_NO_TEXTURE = 0xFFFFFFFFu;
+
+// A material without energy compensation (MaterialRecord.compensationTable).
+const uint FACET_NO_COMPENSATION = 0xFFFFFFFFu;
+struct TextureSlotRecord {
+  uint texture;
+  float offsetX;
+  float offsetY;
+  float cosRotation;
+  float sinRotation;
+  float scaleX;
+  float scaleY;
+};
+
+// A material as BrdfParams wants it (rules/shading/brdf.h), the
+// radiance it emits, and, when `textured`, the glTF parameters its textures
+// modulate per hit (rules/shading/textured_material.h).
+struct MaterialRecord {
+  int dModel;
+  int gModel;
+  int fModel;
+  float alpha;
+  float f0R;
+  float f0G;
+  float f0B;
+  float etaR;
+  float etaG;
+  float etaB;
+  float kR;
+  float kG;
+  float kB;
+  float diffuseR;
+  float diffuseG;
+  float diffuseB;
+  uint dfgTable;  // prefiltered environment: which DFG table (by the material's D and G)
+  float emissionR;
+  float emissionG;
+  float emissionB;
+  uint textured;
+  float baseR;
+  float baseG;
+  float baseB;
+  float metallic;
+  float roughness;
+  float normalScale;
+  float occlusionStrength;
+  TextureSlotRecord baseColorTexture;
+  TextureSlotRecord metallicRoughnessTexture;
+  TextureSlotRecord normalTexture;
+  TextureSlotRecord occlusionTexture;
+  TextureSlotRecord emissiveTexture;
+  uint compensationTable;  // energy compensation's table (by D and G), or FACET_NO_COMPENSATION
+};
+
+// What the camera-side kernels need, one uniform block (std140 agrees: all
+// members are scalars, the camera first).
+struct FrameParams {
+  float eyeX;
+  float eyeY;
+  float eyeZ;
+  float tanHalfFovY;
+  float forwardX;
+  float forwardY;
+  float forwardZ;
+  float aspect;
+  float rightX;
+  float rightY;
+  float rightZ;
+  float width;
+  float upX;
+  float upY;
+  float upZ;
+  float height;
+  uint firstPixel;  // the band of pixels this pass renders
+  uint pixelCount;
+  uint strata;        // samples per pixel = strata^2
+  uint raysPerPixel;  // 1 when strata == 1, else the centre ray plus strata^2
+  uint objectCount;
+  uint rootNode;            // of the scene's BVH
+  uint cellBlockCount;      // dicing: 2 x 2 blocks of cells in all
+  uint gridVertexCount;     // tessellated dicing: grid vertices, then edge midpoints
+  uint edgeMidpointCount;
+  uint patchCount;
+  float tolerance;     // exact method: largest ray-to-surface distance of a root
+  float minimumPiece;  // exact method: pieces are not split below this size
+  float shadowOffset;  // shadow_ray_offset (rules/shading/lights.h)
+  uint slotsPerRay;    // shadow-ray slots per camera ray: one per light, then the environment's
+  uint fallbackCapacity;  // records in each fallback list
+  // The environment (compute/raycast/shading/environment.glsl); offsets count
+  // texels of the environment tables (the map's texels have their own).
+  float environmentIntensity;
+  float environmentCosRotation;
+  float environmentSinRotation;
+  uint environmentSamples;  // sampled: pairs per camera sample
+  uint environmentSeed;
+  uint environmentWidth;
+  uint environmentHeight;
+  uint levelCount;  // prefiltered: radiance levels, (first texel, width, height, 0) each
+  uint shOffset;    // prefiltered: 9 RGB SH coefficients
+  uint dfgOffset;   // prefiltered: the DFG tables, each dfgSize^2 (scale, bias) texels
+  uint dfgSize;
+  uint compensationSize;  // energy compensation: each of its tables is compensationSize^2 (scale, bias) texels
+};
+
+// The AOVs of one pixel (beauty is written separately, as a vec4).
+struct PixelAovs {
+  float depth;
+  float positionX;
+  float positionY;
+  float positionZ;
+  float geometricX;
+  float geometricY;
+  float geometricZ;
+  float shadingX;
+  float shadingY;
+  float shadingZ;
+  uint patchId;
+  uint faceId;
+  float u;
+  float v;
+  float texcoordS;  // texture coordinates (0 on misses and without them)
+  float texcoordT;
+};
+
+#endif

@@ -1,0 +1,21 @@
+// Energy compensation as the surface kernel applies it (docs/shading.md,
+// "Energy compensation"): the factor on a material's specular lobe, read
+// from the scene's compensation tables (engine/ibl/compensation_tables.h)
+// like the CPU reference's ibl::specularScale. Needs the rules of rules/shading/,
+// rules/shading/dfg.h, `frame` and the specialization constant
+// COMPENSATION (1 when some material is compensated).
+#ifndef FACET_RAYCAST_ENERGY_COMPENSATION_GLSL
+#define FACET_RAYCAST_ENERGY_COMPENSATION_GLSL
+
+#include "compute/raycast/shading/dfg_tables.glsl"
+
+layout(set = 0, binding = 17) uniform samplerBuffer compensationTables;
+
+// vec3(1) for a material without compensation, or in a scene with none.
+vec3 material_specular_scale(uint table, BrdfParams p, float nv) {
+  if (COMPENSATION == 0 || table == FACET_NO_COMPENSATION) return vec3(1.0);
+  int size = int(frame.compensationSize);
+  return specular_compensation(p, dfg_table_lookup(compensationTables, table * uint(size * size), size, nv, p.alpha));
+}
+
+#endif

@@ -1,0 +1,288 @@
+// Per camera ray that hit: the surface point, its limit normal and, from the
+// centre ray, the pixel's AOVs; per light of a shaded sample, the unshadowed
+// radiance pi f(l, v) c_light (n.l) and the shadow ray that decides it; then
+// the environment's share (docs/rendering.md): prefiltered, or sampled or
+// filtered without occlusion, in one slot that no ray tests; sampled or
+// filtered with occlusion, one slot and shadow ray per environment and per
+// BRDF sample. A ray that
+// misses writes the miss AOVs and, with an environment, the radiance it
+// sees in the environment's first slot. Every slot gets its contribution;
+// the shadow rays that decide some of them are appended to one compacted
+// list (counters.shadowRays), so the shadow pass costs nothing for slots,
+// samples or pixels that need no ray.
+//
+// Specialization: LIGHT_COUNT, ENVIRONMENT
+// (0 none, 1 sampled, 2 prefiltered, 3 filtered), OCCLUSION (sampled,
+// filtered: 1 traces the environment's shadow rays), ENVIRONMENT_SAMPLES
+// (filtered: 1 adds the environment technique), the BRDF models D_MODEL, G_MODEL,
+// F_MODEL, each -1 when the scene's materials use several (the model is then
+// read per material), TEXTURES (1 when some material reads a texture) and
+// EMISSION (1 when some material emits: each ray's last slot holds it) and
+// COMPENSATION (1 when some material's specular lobe is energy-compensated).
+#version 460
+#extension GL_GOOGLE_include_directive : require
+
+#include "compute/raycast/common/scene_bindings.glsl"
+#include "compute/raycast/traversal/ray.glsl"
+#include "rules/language.glsl"
+#include "rules/math.h"
+#include "rules/shading/domain.h"
+#include "rules/shading/microfacet.h"
+#include "rules/shading/fresnel.h"
+#include "rules/shading/brdf.h"
+#include "rules/shading/brdf_sampling.h"
+#include "rules/environment/environment_mapping.h"
+#include "rules/sampling/mis.h"
+#include "rules/shading/lobe_sampling.h"
+#include "rules/environment/split_sum.h"
+#include "rules/sampling/low_discrepancy.h"
+#include "rules/shading/dfg.h"
+#include "rules/environment/spherical_harmonics.h"
+#include "rules/sampling/random.h"
+#include "rules/sampling/scrambled_net.h"
+#include "rules/shading/lights.h"
+#include "rules/environment/sampled_environment.h"
+#include "rules/environment/prefilter.h"
+#include "rules/environment/filtered_environment.h"
+#include "rules/texture/texture_sampling.h"
+#include "rules/shading/textured_material.h"
+
+layout(constant_id = 1) const int LIGHT_COUNT = 1;
+layout(constant_id = 2) const int D_MODEL = -1;
+layout(constant_id = 3) const int G_MODEL = -1;
+layout(constant_id = 4) const int F_MODEL = -1;
+layout(constant_id = 5) const int ENVIRONMENT = 0;
+layout(constant_id = 6) const int OCCLUSION = 1;
+layout(constant_id = 7) const int ENVIRONMENT_SAMPLES = 0;
+layout(constant_id = 8) const int TEXTURES = 0;
+layout(constant_id = 9) const int EMISSION = 0;
+layout(constant_id = 10) const int COMPENSATION = 0;
+
+layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
+layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord materials[]; };
+layout(set = 0, binding = 12, std430) readonly buffer Lights { LightRecord lights[]; };
+layout(set = 0, binding = 13, std430) writeonly buffer Aovs { PixelAovs aovs[]; };
+layout(set = 0, binding = 14, std430) writeonly buffer ShadowRays { ShadowRayRecord shadowRays[]; };
+layout(set = 0, binding = 15, std430) writeonly buffer Contributions { vec4 contributions[]; };
+layout(set = 0, binding = 27) uniform samplerBuffer authoredNormals;
+layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters; };
+
+#include "compute/raycast/common/patch_eval.glsl"
+#include "compute/raycast/shading/limit_normal.glsl"
+#include "compute/raycast/shading/texcoord.glsl"
+#include "compute/raycast/shading/environment.glsl"
+#include "compute/raycast/common/camera_rays.glsl"
+#include "rules/surface/authored_normal.h"
+#include "compute/raycast/shading/textures.glsl"
+#include "compute/raycast/shading/energy_compensation.glsl"
+
+// The shading normal: a mesh's authored normals interpolated where it has
+// them (turned to the side of the surface's normal `limit`), else `limit`
+// (engine/cpu/limit_normal.h).
+vec3 shading_normal(PatchRecord record, float s, float t, vec3 limit) {
+  if (record.firstNormal == FACET_NO_NORMALS) return limit;
+  int i = int(record.firstNormal);
+  vec3 n = authored_normal(texelFetch(authoredNormals, i).xyz, texelFetch(authoredNormals, i + 1).xyz,
+                           texelFetch(authoredNormals, i + 2).xyz, texelFetch(authoredNormals, i + 3).xyz, s, t);
+  if (n == vec3(0.0)) return limit;
+  return dot(n, limit) < 0.0 ? -n : n;
+}
+
+BrdfParams brdf_params(uint index) {
+  MaterialRecord m = materials[index];
+  BrdfParams p;
+  p.d_model = D_MODEL >= 0 ? D_MODEL : m.dModel;
+  p.g_model = G_MODEL >= 0 ? G_MODEL : m.gModel;
+  p.f_model = F_MODEL >= 0 ? F_MODEL : m.fModel;
+  p.alpha = m.alpha;
+  p.f0 = vec3(m.f0R, m.f0G, m.f0B);
+  p.eta = vec3(m.etaR, m.etaG, m.etaB);
+  p.k = vec3(m.kR, m.kG, m.kB);
+  p.diffuse = vec3(m.diffuseR, m.diffuseG, m.diffuseB);
+  return p;
+}
+
+// A slot whose radiance arrives without a test.
+void write_unshadowed(uint slot, vec3 radiance) { contributions[slot] = vec4(radiance, 0.0); }
+
+// A slot whose radiance arrives from `direction` unless something lies
+// along the shadow ray from `position` up to tMax; the shadow pass clears it
+// then.
+void write_shadowed(uint slot, vec3 radiance, vec3 position, vec3 ng, vec3 direction, float tMax) {
+  contributions[slot] = vec4(radiance, 0.0);
+  vec3 origin = shadow_ray_origin(position, ng, frame.shadowOffset);
+  shadowRays[atomicAdd(counters.shadowRays, 1u)] = ShadowRayRecord(
+      RayRecord(origin.x, origin.y, origin.z, frame.shadowOffset, direction.x, direction.y, direction.z, tMax), slot);
+}
+
+// A textured material at a hit on patch `record` of points `c`, seen along
+// `direction` from distance t, with shading normal n and geometric normal ng
+// facing the eye (the CPU reference's ReferenceScene::texturedSurface).
+TexturedSurface textured_hit(MaterialRecord m, PatchRecord record, ControlPoints c, HitRecord hit, BrdfParams params,
+                             vec3 n, vec3 ng, vec3 direction) {
+  PatchSample p = evaluate_patch(c, hit.s, hit.tParam);
+  SurfaceTexcoord uv = surface_texcoord(record.firstTexcoord, hit.s, hit.tParam);
+  TextureFootprint f = TextureFootprint(uv.uv, uv.ds, uv.dt, p.ds, p.dt,
+                                        hit.t * camera_cone_spread(frame.tanHalfFovY, frame.height),
+                                        abs(dot(ng, direction)));
+  return textured_surface(params, n, f, vec3(m.baseR, m.baseG, m.baseB), m.metallic, m.roughness, m.normalScale,
+                          m.occlusionStrength, vec3(m.emissionR, m.emissionG, m.emissionB),
+                          slot_value(m.baseColorTexture, f).rgb, slot_value(m.metallicRoughnessTexture, f).rgb,
+                          m.normalTexture.texture != FACET_NO_TEXTURE, slot_value(m.normalTexture, f).rgb,
+                          slot_value(m.occlusionTexture, f).r, slot_value(m.emissiveTexture, f).rgb);
+}
+
+// Sampled or filtered method, one sample of either technique: its share for
+// radiance `incoming`, and with OCCLUSION its shadow ray for `slot`.
+void environment_sample(uint slot, BrdfParams params, vec3 specular_scale, vec3 position, vec3 n, vec3 ng, vec3 v,
+                        MisSample s, vec3 incoming, inout vec3 unshadowed) {
+  bool arrives = mis_sample_arrives(s, n, ng);
+  vec3 radiance =
+      arrives ? mis_sample_share(params, n, v, s, incoming, frame.environmentSamples, specular_scale) : vec3(0.0);
+  if (OCCLUSION == 0)
+    unshadowed += radiance;
+  else if (arrives)
+    write_shadowed(slot, radiance, position, ng, s.direction, INFINITE_DISTANCE);
+  else
+    write_unshadowed(slot, vec3(0.0));
+}
+
+// The environment's slots from `first` on, its light scaled by `occlusion`.
+void shade_environment(uint first, uint pixel, uint sample_index, uint material, BrdfParams params,
+                       vec3 specular_scale, vec3 position, vec3 n, vec3 ng, vec3 v, float occlusion) {
+  if (ENVIRONMENT == 2) {
+    float nv = dot(n, v);
+    if (nv <= COS_EPSILON) {  // nothing to look up (the lobe may not even exist)
+      write_unshadowed(first, vec3(0.0));
+      return;
+    }
+    vec3 lobe = split_sum_direction(n, v, params.alpha);
+    vec3 radiance = split_sum(params, nv, prefiltered_radiance(to_map(lobe), params.alpha),
+                              dfg_lookup(materials[material].dfgTable, nv, params.alpha),
+                              irradiance_over_pi(to_map(n)), specular_scale);
+    write_unshadowed(first, occlusion * frame.environmentIntensity * radiance);
+    return;
+  }
+  // Per pair, the environment technique's slot (if drawn), then the BRDF technique's.
+  bool with_environment = ENVIRONMENT == 1 || ENVIRONMENT_SAMPLES == 1;
+  uint stride = with_environment ? 2u : 1u;
+  vec3 unshadowed = vec3(0.0);
+  for (uint k = 0u; k < frame.environmentSamples; ++k) {
+    EnvironmentPair pair = environment_pair(params, n, v, pixel, sample_index, frame.environmentSeed, k,
+                                         frame.environmentSamples);
+    uint slot = first + stride * k;
+    if (with_environment) {
+      vec4 e = sample_environment(pair.texel_bits, pair.environment_u);
+      MisSample s = environment_technique_sample(params, n, v, from_map(e.xyz), e.w);
+      environment_sample(slot, params, specular_scale, position, n, ng, v, s,
+                         occlusion * environment_radiance(s.direction), unshadowed);
+    }
+    MisSample s = brdf_technique_sample(params, n, v, pair.brdf_direction, 0.0);
+    vec3 incoming;
+    if (ENVIRONMENT == 3) {
+      uvec3 source = level_extent(0);
+      float lod = filtered_sample_lod(s, frame.environmentSamples, int(source.y), int(source.z), int(frame.levelCount));
+      vec4 filtered = filtered_lookup(s.direction, lod);
+      incoming = filtered.rgb;
+      if (with_environment) s.other_pdf = filtered.w;
+    } else {
+      s.other_pdf = environment_pdf(to_map(s.direction));
+      incoming = environment_radiance(s.direction);
+    }
+    environment_sample(slot + stride - 1u, params, specular_scale, position, n, ng, v, s, occlusion * incoming,
+                       unshadowed);
+  }
+  if (OCCLUSION == 0) write_unshadowed(first, unshadowed);
+}
+
+PunctualLight punctual_light(LightRecord record) {
+  PunctualLight light;
+  light.directional = record.type == FACET_LIGHT_DIRECTIONAL;
+  light.spot = record.type == FACET_LIGHT_SPOT;
+  light.position = vec3(record.positionX, record.positionY, record.positionZ);
+  light.direction = vec3(record.directionX, record.directionY, record.directionZ);
+  light.color = vec3(record.colorR, record.colorG, record.colorB);
+  light.cos_inner = record.cosInner;
+  light.cos_outer = record.cosOuter;
+  return light;
+}
+
+void main() {
+  uint index = invocation_index();
+  if (index >= frame.pixelCount * frame.raysPerPixel) return;
+  uint sample_index = index % frame.raysPerPixel;
+  bool centre = sample_index == 0u;
+  bool shaded = is_shaded_sample(sample_index, frame.strata);
+  uint pixel = index / frame.raysPerPixel;
+  HitRecord hit = hits[index];
+  uint firstSlot = index * frame.slotsPerRay;
+  Ray ray = camera_ray(index);
+  vec3 direction = ray.direction;
+
+  if (hit.patchIndex == FACET_NO_HIT) {
+    if (centre) aovs[pixel] = PixelAovs(INFINITE_DISTANCE, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, FACET_NO_HIT,
+                                        FACET_NO_HIT, 0.0, 0.0, 0.0, 0.0);
+    for (uint slot = 0u; slot < frame.slotsPerRay; ++slot) write_unshadowed(firstSlot + slot, vec3(0.0));
+    if (ENVIRONMENT != 0 && shaded) write_unshadowed(firstSlot + uint(LIGHT_COUNT), environment_radiance(direction));
+    return;
+  }
+
+  vec3 origin = ray.origin;
+  ObjectRange range = objects[hit.object];
+  PatchRecord record = patches[hit.patchIndex];
+  ControlPoints c = load_control_points(record.firstPoint, record.kind);
+  vec3 limit = limit_normal(c, hit.s, hit.tParam);
+  vec3 n = shading_normal(record, hit.s, hit.tParam, limit);
+  // A hit on a micro-triangle (the tessellated finish reports its normal)
+  // lies on it; an exact hit is the limit point.
+  vec3 triangleNormal = vec3(hit.geometricX, hit.geometricY, hit.geometricZ);
+  bool onMicroTriangle = triangleNormal != vec3(0.0);
+  vec3 position = onMicroTriangle ? origin + hit.t * direction : evaluate_patch(c, hit.s, hit.tParam).position;
+  vec3 ng = onMicroTriangle ? triangleNormal : limit;
+  // Two-sided: both normals face the eye.
+  if (dot(ng, direction) > 0.0) {
+    n = -n;
+    ng = -ng;
+  }
+  if (centre) {
+    vec2 texcoord = surface_texcoord(record.firstTexcoord, hit.s, hit.tParam).uv;
+    aovs[pixel] = PixelAovs(hit.t, position.x, position.y, position.z, ng.x, ng.y, ng.z, n.x, n.y, n.z,
+                            range.patchIdOffset + record.sourcePatch, range.faceIdOffset + record.coarseFace,
+                            record.faceU0 + hit.s * record.faceSize, record.faceV0 + hit.tParam * record.faceSize,
+                            texcoord.x, texcoord.y);
+  }
+
+  BrdfParams params = brdf_params(range.material);
+  MaterialRecord m = materials[range.material];
+  float occlusion = 1.0;
+  vec3 emission = vec3(m.emissionR, m.emissionG, m.emissionB);
+  if (TEXTURES == 1 && m.textured == 1u) {
+    TexturedSurface surface = textured_hit(m, record, c, hit, params, n, ng, direction);
+    params = surface.params;
+    n = surface.n;
+    occlusion = surface.occlusion;
+    emission = surface.emission;
+  }
+  vec3 v = -direction;
+  vec3 specular_scale = material_specular_scale(m.compensationTable, params, dot(n, v));
+  for (int l = 0; l < LIGHT_COUNT; ++l) {
+    LightIncidence incidence = light_incidence(punctual_light(lights[l]), position);
+    if (shaded && light_arrives(incidence, n, ng))
+      write_shadowed(firstSlot + l,
+                     punctual_radiance(params, n, incidence.direction, v, incidence.color, specular_scale), position,
+                     ng, incidence.direction, incidence.distance);
+    else
+      write_unshadowed(firstSlot + l, vec3(0.0));
+  }
+  if (ENVIRONMENT != 0) {
+    // Every environment slot is written exactly once either way: the loops
+    // of one invocation count against lavapipe's limit of 65535.
+    uint first = firstSlot + uint(LIGHT_COUNT);
+    if (shaded)
+      shade_environment(first, frame.firstPixel + pixel, sample_index, range.material, params, specular_scale,
+                        position, n, ng, v, occlusion);
+    else
+      for (uint slot = first; slot < firstSlot + frame.slotsPerRay; ++slot) write_unshadowed(slot, vec3(0.0));
+  }
+  if (EMISSION == 1) write_unshadowed(firstSlot + frame.slotsPerRay - 1u, shaded ? emission : vec3(0.0));
+}

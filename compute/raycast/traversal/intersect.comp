@@ -1,0 +1,36 @@
+// The closest hit of each camera ray, by the method METHOD (0 exact,
+// 1 tessellated); exact cells Newton leaves undecided are listed for the
+// fallback pass.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+
+#include "compute/raycast/common/scene_bindings.glsl"
+#include "compute/raycast/traversal/trace_bindings.glsl"
+
+layout(constant_id = 0) const int METHOD = 0;
+
+layout(set = 0, binding = 9, std430) writeonly buffer Hits { HitRecord hits[]; };
+layout(set = 0, binding = 24, std430) writeonly buffer CameraFallbacks { FallbackRecord cameraFallbacks[]; };
+
+uint rayIndex;
+
+void defer_cell(uint reference) {
+  uint at = atomicAdd(counters.cameraFallbacks, 1u);
+  if (at < frame.fallbackCapacity) cameraFallbacks[at] = FallbackRecord(rayIndex, reference, 0u, 0.0, FACET_NO_HIT, 0.0, 0.0);
+}
+
+#include "compute/raycast/traversal/trace.glsl"
+#include "rules/language.glsl"
+#include "rules/sampling/random.h"
+#include "rules/sampling/low_discrepancy.h"
+#include "rules/sampling/scrambled_net.h"
+#include "compute/raycast/common/camera_rays.glsl"
+
+void main() {
+  uint index = invocation_index();
+  if (index >= frame.pixelCount * frame.raysPerPixel) return;
+  rayIndex = index;
+  Hit hit = trace(camera_ray(index), false);
+  hits[index] = HitRecord(hit.t, hit.patchIndex, hit.object, hit.st.x, hit.st.y, hit.geometricNormal.x,
+                          hit.geometricNormal.y, hit.geometricNormal.z);
+}

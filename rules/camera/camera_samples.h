@@ -1,0 +1,15 @@
+// Where in its pixel each camera sample of sample_plan.h passes
+// (docs/rendering.md, "Rays"). Needs sample_plan.h and scrambled_net.h.
+//
+// Sample 0 passes through the pixel's centre. The shaded samples 1 ...
+// strata^2 are the points of an Owen-scrambled net (scrambled_net.h) keyed
+// by the pixel's index in the full image, so that a crop or a tile casts
+// the rays of the whole render, and by a sample index no camera sample
+// has, so that they are independent of the lighting's nets.
+const uint CAMERA_NET_SAMPLE = 0xFFFFFFFFu;
+
+// In pixels from the pixel's corner.
+FACET_FN vec2 sample_offset(uint pixel, uint sample_index, uint strata) {
+  if (sample_index == 0u) return vec2(real(0.5));
+  return scrambled_point(pixel, CAMERA_NET_SAMPLE, 0u, 0u, sample_index - 1u, shaded_sample_count(strata));
+}

@@ -1,0 +1,37 @@
+// The split sum of the prefiltered method (Karis 2013; the corrections are in
+// docs/rendering.md, "Prefiltered: the split sum"). Needs the rules of
+// rules/shading/.
+
+// Levels are spaced evenly in perceptual roughness sqrt(alpha): level i of
+// `levels` has alpha = (i / (levels - 1))^2, level 0 is the map itself.
+FACET_FN real prefiltered_level(real alpha, int levels) {
+  return sqrt(clamp(alpha, real(0), real(1))) * real(levels - 1);
+}
+
+FACET_FN real prefiltered_level_alpha(int level, int levels) { return sqr(real(level) / real(levels - 1)); }
+
+// Where the levels are read: the lobe's dominant direction, r bent towards
+// n by alpha (Lagarde & de Rousiers 2014, as in Filament).
+FACET_FN vec3 split_sum_direction(vec3 n, vec3 v, real alpha) {
+  vec3 r = reflect(-v, n);
+  real a = clamp(alpha, real(0), real(1));
+  return normalize(r * (real(1) - a) + n * a);
+}
+
+// specular = prefiltered radiance x (F0 scale + F90 bias) x specular_scale,
+// diffuse = c_diff x irradiance / pi. specular_scale is energy
+// compensation's factor (dfg.h; Fdez-Aguera 2019's form), vec3(1) without
+// it. F90 is Fresnel's grazing limit (0 only for a dielectric of index 1, no
+// interface), written as the limit: lavapipe reassociates F evaluated near
+// the horizon into 0. Under the BRDF's horizon policy (n.v <= COS_EPSILON)
+// nothing is reflected, as with the sampled method.
+FACET_FN vec3 split_sum(BrdfParams p, real nv, vec3 prefiltered, vec2 dfg, vec3 irradiance_over_pi,
+                        vec3 specular_scale) {
+  if (nv <= COS_EPSILON) return vec3(real(0));
+  bool dielectric = p.f_model == F_DIELECTRIC;
+  vec3 f90 =
+      vec3(dielectric && p.eta.x == real(1) ? real(0) : real(1), dielectric && p.eta.y == real(1) ? real(0) : real(1),
+           dielectric && p.eta.z == real(1) ? real(0) : real(1));
+  return prefiltered * (fresnel_F(p, real(1)) * dfg.x + f90 * dfg.y) * specular_scale +
+         p.diffuse * irradiance_over_pi;
+}

@@ -1,0 +1,82 @@
+// The whole BRDF
+//   f(l, v) = F(v.h) G(l, v, h) D(h) / (4 (n.l)(n.v)) + c_diff / pi
+// for any choice of D, G and F.
+
+// Which fields are read depends on the models: f0 for F_SCHLICK, eta for
+// F_DIELECTRIC (per channel, so dispersion is possible), eta and k for
+// F_CONDUCTOR. alpha is the microfacet alpha, not perceptual roughness.
+struct BrdfParams {
+  int d_model;
+  int g_model;
+  int f_model;
+  real alpha;
+  vec3 f0;
+  vec3 eta;
+  vec3 k;
+  vec3 diffuse;
+};
+
+// Every factor of one evaluation; all zero under the horizon policy.
+struct BrdfTerms {
+  vec3 value;  // specular + diffuse
+  vec3 specular;
+  vec3 diffuse;
+  real D;
+  real G;
+  vec3 F;
+};
+
+FACET_FN vec3 fresnel_F(BrdfParams p, real cos_i) {
+  switch (p.f_model) {
+    case F_SCHLICK:
+      return fresnel_schlick(p.f0, cos_i);
+    case F_DIELECTRIC:
+      return vec3(fresnel_dielectric(p.eta.x, cos_i), fresnel_dielectric(p.eta.y, cos_i),
+                  fresnel_dielectric(p.eta.z, cos_i));
+    case F_CONDUCTOR:
+      return fresnel_conductor(p.eta, p.k, cos_i);
+    case F_BLENDER_METALLIC:
+      return fresnel_blender_metallic(p.f0, cos_i);
+  }
+  return vec3(real(1));
+}
+
+// n, l, v: unit vectors; l points to the light, v to the viewer.
+FACET_FN BrdfTerms brdf_terms(BrdfParams p, vec3 n, vec3 l, vec3 v) {
+  BrdfTerms t;
+  t.value = vec3(real(0));
+  t.specular = vec3(real(0));
+  t.diffuse = vec3(real(0));
+  t.D = real(0);
+  t.G = real(0);
+  t.F = vec3(real(0));
+  real nl = dot(n, l);
+  real nv = dot(n, v);
+  if (nl <= COS_EPSILON || nv <= COS_EPSILON) return t;
+  // |l + v| >= n.l + n.v > 2 COS_EPSILON, so h is well defined. v.h is taken
+  // as |l + v| / 2, which equals l.h exactly and keeps f(l, v) = f(v, l)
+  // bit for bit in the Fresnel and G terms.
+  vec3 l_plus_v = l + v;
+  real len = length(l_plus_v);
+  vec3 h = l_plus_v / len;
+  real vh = real(0.5) * len;
+  real nh = dot(n, h);
+  real alpha = effective_alpha(p.alpha);
+  t.D = microfacet_D(p.d_model, alpha, nh, sin2_between(n, h));
+  t.G = microfacet_G(p.g_model, alpha, nl, nv, nh, vh);
+  t.F = fresnel_F(p, vh);
+  t.specular = t.F * (t.D * t.G / (real(4) * nl * nv));
+  t.diffuse = p.diffuse * INV_PI;
+  t.value = t.specular + t.diffuse;
+  return t;
+}
+
+FACET_FN vec3 brdf_evaluate(BrdfParams p, vec3 n, vec3 l, vec3 v) { return brdf_terms(p, n, l, v).value; }
+
+// f(l, v) with its specular lobe scaled per channel by `specular_scale`:
+// vec3(1) is the course's single-scattering model, bit for bit; energy
+// compensation's factor (rules/shading/dfg.h) restores what it loses.
+FACET_FN vec3 brdf_evaluate_scaled(BrdfParams p, vec3 n, vec3 l, vec3 v, vec3 specular_scale) {
+  BrdfTerms t = brdf_terms(p, n, l, v);
+  return t.specular * specular_scale + t.diffuse;
+}

@@ -1,0 +1,43 @@
+// One BRDF sample across a material's two lobes, and its density
+// (docs/rendering.md, "Sampled"). Needs the rules of rules/shading/.
+
+FACET_FN real luminance(vec3 c) { return real(0.2126) * c.x + real(0.7152) * c.y + real(0.0722) * c.z; }
+
+// Probability of choosing the specular lobe: its share of the lobes' albedo
+// at normal incidence, kept within [0.1, 0.9] when both are present so that
+// neither lobe is starved.
+FACET_FN real specular_lobe_probability(BrdfParams p) {
+  real specular = luminance(fresnel_F(p, real(1)));
+  real diffuse = luminance(p.diffuse);
+  if (diffuse <= real(0)) return real(1);
+  if (specular <= real(0)) return real(0);
+  return clamp(specular / (specular + diffuse), real(0.1), real(0.9));
+}
+
+// The microfacet technique a material samples its specular lobe with: GGX's
+// visible normals where D is GGX, else D-proportional normals.
+FACET_FN int specular_technique(BrdfParams p) { return p.d_model == D_GGX ? SAMPLE_GGX_VISIBLE : SAMPLE_D; }
+
+// The largest real below 1 that float holds, for coordinates rescaled into
+// [0, 1).
+const real BELOW_ONE = real(0.99999994039535522461);
+
+// u.x picks the lobe and, stretched back to [0, 1) over the lobe's share, is
+// also the first coordinate of the direction within it: each lobe then
+// draws a stratified subset of a stratified point set, where a separate
+// lobe dimension would hand it a random one.
+FACET_FN vec3 sample_brdf_lobes(BrdfParams p, vec3 n, vec3 v, vec2 u) {
+  real p_spec = specular_lobe_probability(p);
+  if (u.x < p_spec)
+    return sample_direction(specular_technique(p), p, n, v, vec2(min(u.x / p_spec, BELOW_ONE), u.y));
+  return sample_direction(SAMPLE_COSINE, p, n, v,
+                          vec2(min((u.x - p_spec) / (real(1) - p_spec), BELOW_ONE), u.y));
+}
+
+FACET_FN real brdf_lobes_pdf(BrdfParams p, vec3 n, vec3 l, vec3 v) {
+  real p_spec = specular_lobe_probability(p);
+  real pdf = real(0);
+  if (p_spec > real(0)) pdf += p_spec * direction_pdf(specular_technique(p), p, n, l, v);
+  if (p_spec < real(1)) pdf += (real(1) - p_spec) * direction_pdf(SAMPLE_COSINE, p, n, l, v);
+  return pdf;
+}

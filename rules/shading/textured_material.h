@@ -1,0 +1,108 @@
+// What a textured glTF material becomes at a hit (docs/shading.md, "Textures").
+// Needs rules/shading/brdf.h and texture_sampling.h.
+
+// The half angle by which a camera ray's cone widens: one pixel's angle at
+// the image centre, for an image `height` pixels high (Akenine-Möller et al.
+// 2021, eq. 30).
+FACET_FN real camera_cone_spread(real tan_half_fov_y, real height) {
+  return atan(real(2) * tan_half_fov_y / height);
+}
+
+// The linear part of KHR_texture_transform, applied to a partial d(uv)/dx.
+FACET_FN vec2 transform_uv_partial(vec2 d, real cos_rotation, real sin_rotation, vec2 scale) {
+  return transform_uv(d, vec2(real(0), real(0)), cos_rotation, sin_rotation, scale);
+}
+
+// What a hit offers texture lookups: the texture coordinates and their
+// partials, the position's partials over the patch's (s, t), and the ray
+// cone's width there and the cosine at which it meets the surface.
+struct TextureFootprint {
+  vec2 uv;
+  vec2 duv_ds;
+  vec2 duv_dt;
+  vec3 dp_ds;
+  vec3 dp_dt;
+  real cone_width;
+  real cos_view;
+};
+
+// Where a slot of KHR_texture_transform (offset, rotation as cos and sin,
+// scale) reads a texture of width x height texels: its coordinates and
+// level of detail.
+struct SlotLookup {
+  vec2 uv;
+  real lod;
+};
+
+FACET_FN SlotLookup slot_lookup(TextureFootprint f, vec2 offset, real cos_rotation, real sin_rotation, vec2 scale,
+                                int width, int height) {
+  SlotLookup l;
+  l.uv = transform_uv(f.uv, offset, cos_rotation, sin_rotation, scale);
+  l.lod = cone_texture_lod(f.cone_width, f.cos_view, f.dp_ds, f.dp_dt,
+                           transform_uv_partial(f.duv_ds, cos_rotation, sin_rotation, scale),
+                           transform_uv_partial(f.duv_dt, cos_rotation, sin_rotation, scale), width, height);
+  return l;
+}
+
+// glTF's metallic-roughness mapping (docs/shading.md): base colour and
+// metallic to c_diff and F(0), perceptual roughness to alpha.
+FACET_FN BrdfParams metallic_roughness_params(BrdfParams p, vec3 base, real metallic, real roughness) {
+  p.diffuse = base * (real(1) - metallic);
+  p.f0 = mix(vec3(real(0.04), real(0.04), real(0.04)), base, metallic);
+  p.alpha = roughness * roughness;
+  return p;
+}
+
+// The normal a tangent-space normal map's `texel` (RGB in [0, 1]) gives on a
+// surface of unit normal n and partials dp_ds, dp_dt, duv_ds, duv_dt: the
+// tangent is dP/du made orthogonal to n, the bitangent n x tangent turned
+// against dP/dv (image rows grow down, the map's +Y is up), as
+// glTF-Sample-Viewer builds the frame from derivatives. `scale` scales the
+// map's X and Y (glTF normalTexture.scale). Returns n where the texture
+// coordinates do not vary.
+FACET_FN vec3 mapped_normal(vec3 n, vec3 dp_ds, vec3 dp_dt, vec2 duv_ds, vec2 duv_dt, vec3 texel, real scale) {
+  real det = duv_ds.x * duv_dt.y - duv_ds.y * duv_dt.x;
+  if (det == real(0)) return n;
+  vec3 dp_du = (dp_ds * duv_dt.y - dp_dt * duv_ds.y) / det;
+  vec3 dp_dv = (dp_dt * duv_ds.x - dp_ds * duv_dt.x) / det;
+  vec3 tangent = dp_du - n * dot(n, dp_du);
+  real length2 = dot(tangent, tangent);
+  if (!(length2 > real(0))) return n;
+  tangent = tangent * inversesqrt(length2);
+  vec3 bitangent = cross(n, tangent);
+  if (dot(bitangent, dp_dv) > real(0)) bitangent = -bitangent;
+  vec3 m = texel * real(2) - vec3(real(1), real(1), real(1));
+  vec3 mapped = tangent * (m.x * scale) + bitangent * (m.y * scale) + n * m.z;
+  real mapped2 = dot(mapped, mapped);
+  return mapped2 > real(0) ? mapped * inversesqrt(mapped2) : n;
+}
+
+// What an occlusion texture's red channel leaves of the environment's light
+// (glTF: 1 + strength (occlusion - 1)).
+FACET_FN real occlusion_factor(real occlusion, real strength) { return real(1) + strength * (occlusion - real(1)); }
+
+// A textured material at a hit: its BRDF parameters, shading normal, the
+// share of the environment's light that reaches it and the radiance it emits.
+struct TexturedSurface {
+  BrdfParams params;
+  vec3 n;
+  real occlusion;
+  vec3 emission;
+};
+
+// From the material's glTF factors and its slots' values (1 where a slot is
+// empty; `normal_mapped` false keeps n): base colour RGB, metallic-roughness
+// G roughness and B metallic, the normal map's RGB, occlusion R, emission RGB.
+FACET_FN TexturedSurface textured_surface(BrdfParams p, vec3 n, TextureFootprint f, vec3 base_factor,
+                                          real metallic_factor, real roughness_factor, real normal_scale,
+                                          real occlusion_strength, vec3 emission_factor, vec3 base,
+                                          vec3 metallic_roughness, bool normal_mapped, vec3 normal_texel,
+                                          real occlusion, vec3 emission) {
+  TexturedSurface surface;
+  surface.params = metallic_roughness_params(p, base_factor * base, metallic_factor * metallic_roughness.z,
+                                             roughness_factor * metallic_roughness.y);
+  surface.n = normal_mapped ? mapped_normal(n, f.dp_ds, f.dp_dt, f.duv_ds, f.duv_dt, normal_texel, normal_scale) : n;
+  surface.occlusion = occlusion_factor(occlusion, occlusion_strength);
+  surface.emission = emission_factor * emission;
+  return surface;
+}
