@@ -1,0 +1,98 @@
+// Internal: the parts of the glTF 2.0 loader that its files share. Only
+// scenes/gltf_*.cpp include this file.
+#pragma once
+
+#include <tiny_gltf.h>
+
+#include <glm/mat4x4.hpp>
+
+#include <array>
+#include <cstddef>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "scenes/scene.h"
+#include "scenes/texture.h"
+#include "scenes/input_error.h"
+
+namespace facet::scene::detail {
+
+// What an accessor's elements must be, from the glTF 2.0 specification's
+// tables of mesh attributes and indices (3.7.2.1).
+struct ElementFormat {
+  std::size_t components;
+  std::array<int, 3> componentTypes;  // unused slots repeat the first
+  const char* name;
+  bool normalizable = false;  // integer components may be normalized
+};
+// The file's errors and its accessors (gltf_accessors.cpp).
+class GltfReader {
+ public:
+  GltfReader(const tinygltf::Model& model, std::string source) : model_(model), source_(std::move(source)) {}
+
+  [[noreturn]] void fail(const std::string& where, const std::string& rule) const {
+    throw InputError(source_, 0, where, rule);
+  }
+
+  // The elements of an accessor as doubles (components × count), checked
+  // against `format` and against the bounds of its buffer; normalized
+  // integers of a format that allows them map to [0, 1] (glTF 2.0, 3.11).
+  std::vector<double> read(int accessorIndex, const std::string& where, const ElementFormat& format) const;
+
+ private:
+  static double component(const unsigned char* p, int type);
+
+  const tinygltf::Model& model_;
+  std::string source_;
+};
+
+// The scene's textures, converted from the glTF file's as materials use
+// them: one per glTF texture and encoding (gltf_materials.cpp).
+class TextureTable {
+ public:
+  TextureTable(const tinygltf::Model& model, const GltfReader& reader, std::vector<Texture>& textures)
+      : model_(model), reader_(reader), textures_(textures) {}
+
+  // The slot of the texture info at field `where`: texture `index` with its extensions.
+  materials::TextureSlot slot(const tinygltf::ExtensionMap& extensions, int index, int texCoord,
+                              TextureEncoding encoding, const std::string& where);
+
+ private:
+  double number(const tinygltf::Value& value, const std::string& where) const;
+  glm::dvec2 pair(const tinygltf::Value& transform, const char* key, const std::string& at, glm::dvec2 fallback) const;
+  Texture convert(int index, TextureEncoding encoding) const;
+
+  const tinygltf::Model& model_;
+  const GltfReader& reader_;
+  std::vector<Texture>& textures_;
+  std::map<std::pair<int, TextureEncoding>, int> cache_;
+};
+
+// gltf_materials.cpp
+materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index, const GltfReader& reader,
+                               TextureTable& textures);
+
+// gltf_meshes.cpp: adds the primitives of one mesh instance as one welded
+// cage, with its NORMALs per face corner when every primitive has them
+// (shading normals of the mesh as authored), and likewise its TEXCOORD_0 as a
+// face-varying channel: one value per welded vertex and coordinate, so
+// corners that share both stay joined and the rest form seams.
+ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const GltfReader& reader,
+                   const std::string& where);
+
+// gltf_nodes.cpp
+glm::dmat4 localTransform(const tinygltf::Node& node);
+// Light `index` of KHR_lights_punctual, placed by node `where`.
+Light toLight(const tinygltf::Light& gltf, int index, const glm::dmat4& world, const GltfReader& reader,
+              const std::string& where);
+// Perspective camera `index`, placed by node `where` and its world matrix.
+Camera toCamera(const tinygltf::Camera& gltf, int index, const glm::dmat4& world, const GltfReader& reader,
+                const std::string& where);
+// The roots of the scene to render, once the node hierarchy is checked to be
+// the forest glTF requires (2.0, 3.5.3): a node has at most one parent, and a
+// root has none and is listed once.
+std::vector<int> sceneRoots(const tinygltf::Model& model, const GltfReader& reader);
+
+}  // namespace facet::scene::detail

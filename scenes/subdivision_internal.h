@@ -1,0 +1,60 @@
+// Internal: what the files of SubdivisionSurface share. Only
+// scenes/subdivision_*.cpp include this file.
+#pragma once
+
+#include "scenes/subdivision_surface.h"
+
+#include <glm/vec3.hpp>
+
+#include <opensubdiv/far/patchMap.h>
+#include <opensubdiv/far/patchTable.h>
+#include <opensubdiv/far/topologyRefiner.h>
+
+#include <memory>
+#include <vector>
+
+namespace facet::scene {
+
+namespace Far = OpenSubdiv::Far;
+
+namespace detail {
+
+// The point type OpenSubdiv's refiner and stencil tables interpolate.
+struct OsdPoint {
+  glm::dvec3 p{0.0};
+  void Clear() { p = glm::dvec3(0.0); }
+  void AddWithWeight(const OsdPoint& src, double weight) { p += weight * src.p; }
+};
+
+// subdivision_refiner.cpp: the cage checked against the rules OpenSubdiv
+// relies on (InputError otherwise) and handed to its refiner.
+std::unique_ptr<Far::TopologyRefiner> createRefiner(const ControlCage& cage, Subdivision subdivision);
+int isolationLevelFor(const ControlCage& cage, const RefinementSettings& settings);
+
+// subdivision_bezier.cpp: one patch of OpenSubdiv's (vertex or face-varying)
+// in Bézier form, its control points `cvs` into `points`.
+BezierPatch bezierFromPatch(Far::PatchDescriptor::Type type, Far::ConstIndexArray cvs,
+                            const std::vector<OsdPoint>& points, unsigned boundaryMask);
+
+}  // namespace detail
+
+// Everything evaluation needs; the refiner is dropped once the patch table
+// and the points exist.
+struct SubdivisionSurface::Impl {
+  std::unique_ptr<Far::PatchTable> patchTable;
+  std::unique_ptr<Far::PatchMap> patchMap;
+  std::vector<detail::OsdPoint> points;  // refined levels, then local points
+  std::vector<Far::PatchTable::PatchHandle> handles;
+  std::vector<PatchInfo> patches;
+  std::vector<BezierPatch> bezierPatches;
+  std::vector<std::array<glm::dvec3, 4>> authoredNormals;  // per patch, or empty
+  // Texture coordinates (u, v, 0): refined levels, then local points; and
+  // per patch the face-varying patch as OpenSubdiv has it and in Bézier form.
+  std::vector<detail::OsdPoint> texcoordPoints;
+  std::vector<Far::PatchDescriptor::Type> texcoordTypes;
+  std::vector<BezierPatch> texcoordPatches;
+  Aabb bounds;
+  SurfaceStatistics statistics;
+};
+
+}  // namespace facet::scene
