@@ -10,41 +10,24 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <map>
 #include <memory>
 #include <numbers>
-#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "analysis/bench/bench.h"
 #include "analysis/bench/stability_map.h"
-#include "scenes/input_error.h"
-#include "scenes/obj_cage.h"
+#include "analysis/bench/stability_runner.h"
+#include "analysis/bench/stability_scenes.h"
 #include "scenes/scene_file.h"
 
 namespace facet::analysis::bench {
 namespace {
 
-namespace fs = std::filesystem;
 using scene::IblMethod;
 using scene::IntersectionMethod;
-using stability::Cell;
-using stability::Sweep;
-using stability::Tolerance;
-
-constexpr int kTessellationRate = 8;
-// Dense enough that its chords are far below a pixel here: the coverage
-// against which an exact method's misses count as Newton failures.
-constexpr int kCoverageRate = 24;
-
-struct Method {
-  std::string label;
-  Backend backend = Backend::Cpu;
-  IntersectionMethod intersection = IntersectionMethod::Exact;
-  std::string lighting;  // a key the sweep's lighting function understands; "" for its default
-};
+using namespace stability;
 
 std::vector<Method> geometryMethods() {
   return {{"gpu exact", Backend::Gpu, IntersectionMethod::Exact, ""},
@@ -52,127 +35,6 @@ std::vector<Method> geometryMethods() {
           {"cpu exact", Backend::Cpu, IntersectionMethod::Exact, ""},
           {"cpu tess k=8", Backend::Cpu, IntersectionMethod::Tessellated, ""}};
 }
-
-// Per-method tolerances: the tessellated method's depth and normal differ
-// from the limit surface by its chord error, which is its design, not a
-// failure. Its bounds sit a margin above the chord error of k = 8 on these
-// cages at scale 1 and the origin, so that what fails is what the condition
-// broke.
-struct Tolerances {
-  Tolerance exact;
-  Tolerance tessellated{5e-3, 0.1, 5e-2};
-  const Tolerance& of(IntersectionMethod m) const { return m == IntersectionMethod::Exact ? exact : tessellated; }
-};
-
-std::string methodsText(const Tolerances& t) {
-  std::ostringstream text;
-  text << "Tolerances: exact methods depth " << cell(t.exact.depthRelative) << " relative, normal "
-       << cell(t.exact.normalRadians) << " rad, beauty " << cell(t.exact.beautyRelative)
-       << " relative; tessellated (k = " << kTessellationRate << ", chord error included) depth "
-       << cell(t.tessellated.depthRelative) << ", normal " << cell(t.tessellated.normalRadians) << " rad, beauty "
-       << cell(t.tessellated.beautyRelative)
-       << ". A hole is a pixel the reference covers with all 8 neighbours that the method misses; a Newton miss "
-          "a pixel a CPU tessellation at k = "
-       << kCoverageRate << " covers with all 8 neighbours that an exact method misses.";
-  return text.str();
-}
-
-class Runner {
- public:
-  Runner(Renderer& renderer, const BenchOptions& options)
-      : renderer_(renderer), options_(options), size_(options.quick ? 24 : 128) {}
-
-  int size() const { return size_; }
-  bool quick() const { return options_.quick; }
-  const fs::path& root() const { return options_.root; }
-
-  scene::Scene sceneOf(scene::ControlCage cage) const {
-    scene::Scene scene = scene::sceneFromCage(std::move(cage));
-    scene.render.width = scene.render.height = size_;
-    return scene;
-  }
-
-  Image render(scene::Scene scene, const Method& method, double* milliseconds = nullptr) {
-    scene.render.method = method.intersection;
-    if (method.intersection == IntersectionMethod::Tessellated) scene.render.tessellationRate = kTessellationRate;
-    const auto start = std::chrono::steady_clock::now();
-    RenderReport report = renderer_.render(scene, method.backend);
-    if (milliseconds)
-      *milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    ++renders_;
-    return std::move(report.image);
-  }
-
-  // Renders `scene` at column `column` of `sweep` with every method, each
-  // against the CPU exact render with the same lighting. `light` sets a
-  // method's lighting on a copy of the scene; `newton` adds the dense
-  // coverage that Newton misses are counted against; `converged`, when set,
-  // gives the reference each cell's methodError is measured against.
-  void run(Sweep& sweep, std::size_t column, const scene::Scene& scene, const std::vector<Method>& methods,
-           const std::function<void(scene::Scene&, const std::string&)>& light, bool newton,
-           const std::function<Image()>& converged = {}) {
-    struct Timed {
-      Image image;
-      double milliseconds = 0;
-    };
-    std::map<std::string, Timed> references;
-    auto lit = [&](const std::string& lighting) {
-      scene::Scene copy = scene;
-      if (light) light(copy, lighting);
-      return copy;
-    };
-    std::optional<Image> coverage;
-    if (newton) {
-      // Coverage only: no environment to prepare or sample.
-      scene::Scene dense = scene;
-      dense.environment.reset();
-      dense.render.method = IntersectionMethod::Tessellated;
-      dense.render.tessellationRate = kCoverageRate;
-      coverage = renderer_.render(dense, Backend::Cpu).image;
-      ++renders_;
-    }
-    std::optional<Image> convergedImage;
-    if (converged) convergedImage = converged();
-    for (const Method& method : methods) {
-      if (!references.count(method.lighting)) {
-        Timed& reference = references[method.lighting];
-        reference.image = render(lit(method.lighting), {"", Backend::Cpu, IntersectionMethod::Exact, method.lighting},
-                                 &reference.milliseconds);
-      }
-      const Timed& reference = references[method.lighting];
-      const bool isReference = method.backend == Backend::Cpu && method.intersection == IntersectionMethod::Exact;
-      double milliseconds = reference.milliseconds;
-      Image image;
-      try {
-        image = isReference ? reference.image : render(lit(method.lighting), method, &milliseconds);
-      } catch (const scene::InputError&) {  // beyond the backend's range: every pixel fails
-        Cell refused;
-        refused.row = method.label;
-        refused.column = column;
-        refused.failureShare = 1;
-        sweep.cells.push_back(refused);
-        continue;
-      }
-      const Image* dense = coverage && method.intersection == IntersectionMethod::Exact ? &*coverage : nullptr;
-      Cell c = stability::measure(image, reference.image, dense, tolerances_.of(method.intersection));
-      c.row = method.label;
-      c.column = column;
-      c.milliseconds = milliseconds;
-      if (convergedImage) c.methodError = compareToReference(image, *convergedImage).relativeRmse;
-      sweep.cells.push_back(c);
-    }
-  }
-
-  const Tolerances& tolerances() const { return tolerances_; }
-  int renders() const { return renders_; }
-
- private:
-  Renderer& renderer_;
-  const BenchOptions& options_;
-  int size_;
-  Tolerances tolerances_;
-  int renders_ = 0;
-};
 
 std::vector<std::string> labelsOf(const std::vector<Method>& methods) {
   std::vector<std::string> labels;
@@ -196,86 +58,6 @@ Sweep sweepOf(const std::string& name, const std::string& title, const std::stri
   s.values = std::move(values);
   for (double v : s.values) s.valueLabels.push_back(shortLabel(v));
   return s;
-}
-
-// A flat open grid in the xz plane, normal +y, 8 x 8 quads over [-6, 6]^2.
-scene::ControlCage planeCage() {
-  std::ostringstream obj;
-  constexpr int n = 8;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) obj << "v " << -6 + 12.0 * i / n << " 0 " << -6 + 12.0 * j / n << "\n";
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i + 1;
-      obj << "f " << a << " " << a + n + 1 << " " << a + n + 2 << " " << a + 1 << "\n";
-    }
-  return scene::parseObjCage(obj.str(), "stability plane");
-}
-
-// A closed quad cage with two poles of valence n on the unit sphere (at
-// +-y); between them two rings of 2n vertices, whose alternate vertices are
-// valence 3 for every n, so only the poles change along the sweep.
-scene::ControlCage poleCage(int n) {
-  std::ostringstream obj;
-  const int m = 2 * n;
-  auto ring = [&](double y, double radius) {
-    for (int k = 0; k < m; ++k) {
-      const double phi = 2 * std::numbers::pi * k / m;
-      obj << "v " << radius * std::cos(phi) << " " << y << " " << radius * std::sin(phi) << "\n";
-    }
-  };
-  ring(0.5, std::sqrt(0.75));
-  ring(-0.5, std::sqrt(0.75));
-  obj << "v 0 1 0\nv 0 -1 0\n";
-  const int top = 2 * m + 1, bottom = 2 * m + 2;
-  auto upper = [&](int k) { return k % m + 1; };
-  auto lower = [&](int k) { return m + k % m + 1; };
-  for (int i = 0; i < n; ++i) {
-    obj << "f " << top << " " << upper(2 * i + 2) << " " << upper(2 * i + 1) << " " << upper(2 * i) << "\n";
-    obj << "f " << bottom << " " << lower(2 * i) << " " << lower(2 * i + 1) << " " << lower(2 * i + 2) << "\n";
-  }
-  for (int k = 0; k < m; ++k)
-    obj << "f " << upper(k) << " " << upper(k + 1) << " " << lower(k + 1) << " " << lower(k) << "\n";
-  return scene::parseObjCage(obj.str(), "stability pole " + std::to_string(n));
-}
-
-// The unit cube cage with the loop of its four top edges creased.
-scene::ControlCage creasedCube(double sharpness) {
-  std::ostringstream obj;
-  obj << "v -1 -1 -1\nv 1 -1 -1\nv -1 1 -1\nv 1 1 -1\nv -1 -1 1\nv 1 -1 1\nv -1 1 1\nv 1 1 1\n"
-         "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
-  if (sharpness > 0) obj << "t crease 8/1/0 2 6 6 7 7 3 3 2 " << sharpness << "\n";
-  return scene::parseObjCage(obj.str(), "stability creased cube");
-}
-
-scene::ControlCage cubeCage() { return creasedCube(0); }
-
-scene::Environment environmentOf(scene::EnvironmentMap map) {
-  scene::Environment environment;
-  environment.map = std::make_shared<const scene::EnvironmentMap>(std::move(map));
-  return environment;
-}
-
-// A constant sky of radiance 1 with a 2 x 2 texel sun of radiance `sun`,
-// 31 degrees above the horizon, on the camera's side.
-scene::EnvironmentMap sunEnvironment(double sun) {
-  scene::EnvironmentMap map;
-  map.width = 64;
-  map.height = 32;
-  map.rgb.assign(std::size_t(map.width) * map.height * 3, 1.0f);
-  for (int y = 10; y < 12; ++y)
-    for (int x = 54; x < 56; ++x)
-      for (int c = 0; c < 3; ++c) map.rgb[3 * (std::size_t(y) * map.width + x) + c] = float(sun);
-  return map;
-}
-
-materials::Material metal(double alpha, const glm::dvec3& f0) {
-  materials::Material m = scene::defaultMaterial();
-  m.name = "metal";
-  m.f0 = f0;
-  m.diffuse = glm::dvec3(0.0);
-  m.alpha = alpha;
-  return m;
 }
 
 void setIbl(scene::Scene& scene, const std::string& lighting) {
