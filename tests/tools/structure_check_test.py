@@ -1,0 +1,123 @@
+"""tools/check_structure.py on tiny trees built for each case: it accepts a
+tree that keeps the layering and rejects each way of breaking it.
+
+    python3 -m unittest tests/tools/structure_check_test.py
+"""
+
+import contextlib
+import importlib.util
+import io
+import os
+import tempfile
+import unittest
+
+SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "check_structure.py")
+spec = importlib.util.spec_from_file_location("check_structure", SCRIPT)
+check_structure = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(check_structure)
+
+
+def includes(*names):
+    return "".join(f'#include "{name}"\n' for name in names)
+
+
+# A tree that keeps the real table's layering, with each kind of include the
+# script has to resolve: root-relative, beside the including file, the public
+# API as "facet/...", and generated SPIR-V headers that exist in no folder.
+GOOD_TREE = {
+    "materials/material.h": "#pragma once\n#include <vector>\n",
+    "scenes/scene.h": includes("materials/material.h"),
+    "engine/camera/camera.h": includes("scenes/scene.h", "camera_math.h"),
+    "engine/camera/camera_math.h": "",
+    "engine/gpu_backend/renderer.cpp": includes("engine/camera/camera.h", "detail/packing.h", "facet_kernels/spirv.h"),
+    "engine/gpu_backend/detail/packing.h": "",
+    "compute/raycast/trace.comp": includes("compute/shared/layout.h", "ray.glsl"),
+    "compute/raycast/ray.glsl": "",
+    "compute/shared/layout.h": "",
+    "include/facet/scene.h": "",
+    "apps/facet/main.cpp": includes("facet/scene.h", "facet/version.h", "engine/camera/camera.h"),
+    "benchmarks/ceiling/bench.cpp": includes("ceiling_kernels/spirv.h", "compute/shared/layout.h"),
+    "tools/helper.py": "print('not parsed for includes')\n",
+    # Tests are not checked: they may include anything and be any length.
+    "tests/materials/material_test.cpp": includes("apps/facet/main.cpp") + "\n" * 600,
+}
+
+
+class StructureCheckTest(unittest.TestCase):
+    def check(self, changes):
+        """(violations, cycles, exit status, output) for GOOD_TREE with changes
+        (a path mapped to None is left out)."""
+        files = {**GOOD_TREE, **changes}
+        with tempfile.TemporaryDirectory() as root:
+            for path, text in files.items():
+                if text is None:
+                    continue
+                os.makedirs(os.path.join(root, os.path.dirname(path)), exist_ok=True)
+                with open(os.path.join(root, path), "w") as file:
+                    file.write(text)
+            violations, cycles, _ = check_structure.check(root)
+            output = io.StringIO()
+            with contextlib.redirect_stdout(output):
+                status = check_structure.main([root])
+        return violations, cycles, status, output.getvalue()
+
+    def test_accepts_a_tree_that_keeps_the_layering(self):
+        violations, cycles, status, output = self.check({})
+        self.assertEqual(violations, [])
+        self.assertEqual(cycles, [])
+        self.assertEqual(status, 0)
+        self.assertRegex(output, r"^check_structure: 13 files, 13 includes, \d+ layers")
+
+    def test_rejects_an_include_that_points_up(self):
+        violations, _, status, output = self.check({"materials/material.h": includes("scenes/scene.h")})
+        expected = ('materials/material.h:1: includes "scenes/scene.h" (layer materials, rank 1) -> '
+                    "layer scenes (rank 2): includes must point down")
+        self.assertEqual(violations, [expected])
+        self.assertEqual(status, 1)
+        self.assertIn(expected, output)
+
+    def test_rejects_an_include_between_two_layers_of_the_same_rank(self):
+        violations, _, _, _ = self.check({"materials/brdf.h": "\n" + includes("compute/shared/layout.h")})
+        self.assertEqual(violations, ['materials/brdf.h:2: includes "compute/shared/layout.h" (layer materials, '
+                                      "rank 1) -> layer compute (rank 1): includes must point down"])
+
+    def test_reports_a_cycle_between_layers(self):
+        violations, cycles, status, output = self.check({
+            "compute/raycast/shade.comp": includes("materials/material.h"),
+            "materials/material.h": includes("compute/shared/layout.h"),
+        })
+        self.assertEqual(len(violations), 2)
+        self.assertEqual(cycles, [[("compute", "materials", "compute/raycast/shade.comp:1"),
+                                   ("materials", "compute", "materials/material.h:1")]])
+        self.assertEqual(status, 1)
+        self.assertIn("layer cycle: compute -> materials -> compute", output)
+
+    def test_rejects_a_folder_in_no_layer(self):
+        violations, _, status, _ = self.check({
+            "widgets/widget.h": "",
+            "scenes/scene.cpp": includes("widgets/widget.h"),
+            # engine/ is split into layers, so a new subfolder must be named too.
+            "engine/newpart/part.h": "",
+        })
+        self.assertEqual(status, 1)
+        self.assertEqual(len(violations), 3)
+        self.assertIn("engine/newpart/part.h: in no layer", violations[0])
+        self.assertIn('scenes/scene.cpp:1: includes "widgets/widget.h" (layer scenes, rank 2) -> widgets/widget.h, '
+                      "in no layer", violations[1])
+        self.assertIn("widgets/widget.h: in no layer", violations[2])
+
+    def test_a_root_relative_file_wins_over_one_beside_the_includer(self):
+        # engine/gpu/scenes/scene.h exists, but "scenes/scene.h" means the root's, one rank up.
+        violations, _, _, _ = self.check({"engine/gpu/scenes/scene.h": "",
+                                          "engine/gpu/device.cpp": includes("scenes/scene.h")})
+        self.assertEqual(len(violations), 1)
+        self.assertIn("-> layer scenes (rank 2)", violations[0])
+
+    def test_accepts_450_lines_and_rejects_451(self):
+        violations, _, _, _ = self.check({"scenes/long.cpp": "x\n" * 450, "apps/facet/long.cpp": "x\n" * 451,
+                                          "tools/long.py": "x\n" * 450 + "x"})
+        self.assertEqual(violations, ["apps/facet/long.cpp: 451 lines > 450", "tools/long.py: 451 lines > 450"])
+
+
+if __name__ == "__main__":
+    unittest.main()

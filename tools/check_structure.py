@@ -1,0 +1,242 @@
+#!/usr/bin/env python3
+"""Checks the tree's structure: includes point down the layers, and no
+source file outside tests/ is longer than MAX_LINES.
+
+    python3 tools/check_structure.py [repo root]
+
+Exits 0 with a one-line summary, or 1 after printing every violation.
+Python 3 standard library only, so it runs wherever the build does.
+"""
+
+import argparse
+import os
+import re
+import subprocess
+import sys
+from collections import defaultdict, deque
+
+# The layers, (folder, rank): a file may include files of its own layer or of
+# a layer of strictly lower rank. This table IS the layering that
+# docs/architecture.md ("Layers") draws; change both together. A folder that
+# is split into sub-layers (engine/) owns only the files directly in it, so a
+# new subfolder must be named here before it can be included.
+LAYERS = [
+    ("rules", 0),  # the rules both backends apply, in the GLSL/C++ subset
+    ("include", 0),  # the public API headers, include/facet/
+    ("compute", 1),  # GLSL kernels and GPU buffer layouts
+    ("materials", 1),
+    ("engine/gpu", 1),
+    ("engine/image", 1),
+    ("scenes", 2),
+    ("engine/camera", 3),
+    ("engine/ibl", 3),
+    ("engine/cpu", 4),
+    ("engine/gpu_backend", 4),
+    ("engine", 5),  # engine/renderer.h, engine/smoke.h
+    ("analysis", 6),
+    ("api", 7),
+    ("apps", 7),
+    ("benchmarks", 7),
+    ("fuzz", 7),
+    ("python", 8),
+    ("tools", 8),
+]
+
+MAX_LINES = 450
+INCLUDING_SUFFIXES = (".h", ".cpp", ".glsl", ".comp")
+COUNTED_SUFFIXES = INCLUDING_SUFFIXES + (".py",)
+
+# Include roots other than the repository root: the public API is included as
+# "facet/...", and the build generates the headers that embed SPIR-V
+# (cmake/FacetShaders.cmake), which exist in no source folder.
+PUBLIC_API = ("facet/", "include/facet/")
+GENERATED_HEADER_LAYERS = {
+    "facet_kernels/": "compute",
+    "facet_raycast_kernels/": "compute",
+    "facet_ibl_kernels/": "compute",
+    "facet_materials_spirv/": "compute",
+    "ceiling_kernels/": "benchmarks",
+}
+
+INCLUDE_PATTERN = re.compile(r'^[ \t]*#[ \t]*include[ \t]*"([^"]+)"', re.MULTILINE)
+
+
+def source_files(root):
+    """The tracked files under root, as '/'-separated relative paths; where
+    root is not the top of a git work tree, every file on disk but those in
+    hidden and build folders."""
+    if git_top_level(root) == os.path.realpath(root):
+        listed = subprocess.run(["git", "ls-files", "-z"], cwd=root, capture_output=True, check=True).stdout
+        paths = [p for p in listed.decode("utf-8", "replace").split("\0") if p]
+    else:
+        paths = []
+        for folder, subfolders, files in os.walk(root):
+            subfolders[:] = [s for s in subfolders if not s.startswith((".", "build"))]
+            relative = os.path.relpath(folder, root).replace(os.sep, "/")
+            paths += [f if relative == "." else f"{relative}/{f}" for f in files]
+    # A tracked file deleted in the work tree is not part of the tree being checked.
+    return sorted(p for p in paths if not p.startswith("tests/") and os.path.isfile(os.path.join(root, p)))
+
+
+def git_top_level(root):
+    try:
+        found = subprocess.run(["git", "rev-parse", "--show-toplevel"], cwd=root, capture_output=True, text=True)
+    except OSError:  # no git installed
+        return None
+    return os.path.realpath(found.stdout.strip()) if found.returncode == 0 else None
+
+
+def layer_of(path, layers=LAYERS):
+    """(layer, rank) of the longest layer folder holding path, or None. A
+    layer with sub-layers keeps only its direct files (see LAYERS)."""
+    folders = {folder for folder, _ in layers}
+    for folder, rank in sorted(layers, key=lambda entry: -len(entry[0])):
+        if not path.startswith(folder + "/"):
+            continue
+        rest = path[len(folder) + 1 :]
+        split_further = any(other.startswith(folder + "/") for other in folders)
+        if split_further and "/" in rest:
+            return None
+        return folder, rank
+    return None
+
+
+def resolve_include(root, including_path, name):
+    """The repository path (or, for a generated header, the layer) a quoted
+    include names, the way the build's include paths find it."""
+    folder = os.path.dirname(including_path)
+    beside = os.path.normpath(os.path.join(folder, name)).replace(os.sep, "/")
+    if "/" not in name:
+        return beside, None
+    for prefix, layer in GENERATED_HEADER_LAYERS.items():
+        if name.startswith(prefix):
+            return name, layer
+    if os.path.isfile(os.path.join(root, name)):
+        return name, None
+    if os.path.isfile(os.path.join(root, beside)):
+        return beside, None
+    if name.startswith(PUBLIC_API[0]):
+        return PUBLIC_API[1] + name[len(PUBLIC_API[0]) :], None
+    return name, None
+
+
+def count_lines(data):
+    return data.count(b"\n") + (1 if data and not data.endswith(b"\n") else 0)
+
+
+def check(root, layers=LAYERS, max_lines=MAX_LINES):
+    """Returns (violations, cycles, stats): violations are printable lines,
+    cycles come from layer_cycles."""
+    ranks = dict(layers)
+    violations = []
+    edges = defaultdict(dict)  # layer -> {included layer: an example "path:line"}
+    files = includes = 0
+    for path in source_files(root):
+        if not path.endswith(COUNTED_SUFFIXES):
+            continue
+        files += 1
+        with open(os.path.join(root, path), "rb") as source:
+            data = source.read()
+        lines = count_lines(data)
+        if lines > max_lines:
+            violations.append(f"{path}: {lines} lines > {max_lines}")
+        if not path.endswith(INCLUDING_SUFFIXES):
+            continue
+        own = layer_of(path, layers)
+        if own is None:
+            violations.append(f"{path}: in no layer: add its folder to LAYERS in tools/check_structure.py")
+            continue
+        text = data.decode("utf-8", "replace")
+        for match in INCLUDE_PATTERN.finditer(text):
+            includes += 1
+            name = match.group(1)
+            line = text.count("\n", 0, match.start(1)) + 1
+            target, generated_layer = resolve_include(root, path, name)
+            if generated_layer is not None:
+                other = (generated_layer, ranks.get(generated_layer))
+            else:
+                other = layer_of(target, layers)
+            where = f"{path}:{line}"
+            if other is None or other[1] is None:
+                violations.append(f'{where}: includes "{name}" (layer {own[0]}, rank {own[1]}) -> {target}, '
+                                  "in no layer: add its folder to LAYERS in tools/check_structure.py")
+                continue
+            if other[0] == own[0]:
+                continue
+            edges[own[0]].setdefault(other[0], where)
+            if other[1] >= own[1]:
+                violations.append(f'{where}: includes "{name}" (layer {own[0]}, rank {own[1]}) -> '
+                                  f"layer {other[0]} (rank {other[1]}): includes must point down")
+    stats = {"files": files, "includes": includes, "layers": len(layers)}
+    return violations, layer_cycles(edges), stats
+
+
+def layer_cycles(edges):
+    """One cycle through each group of layers that reach one another (Tarjan's
+    strongly connected components), as steps (layer, included layer, "path:line")."""
+    index, lowlink, stack, groups = {}, {}, [], []
+
+    def visit(node):
+        index[node] = lowlink[node] = len(index)
+        stack.append(node)
+        for successor in edges.get(node, {}):
+            if successor not in index:
+                visit(successor)
+                lowlink[node] = min(lowlink[node], lowlink[successor])
+            elif successor in stack:
+                lowlink[node] = min(lowlink[node], index[successor])
+        if lowlink[node] == index[node]:
+            group = set()
+            while node not in group:
+                group.add(stack.pop())
+            if len(group) > 1:
+                groups.append(group)
+
+    for node in sorted(edges):
+        if node not in index:
+            visit(node)
+    cycles = []
+    for group in sorted(groups, key=min):
+        layers = shortest_cycle(min(group), group, edges)
+        cycles.append([(a, b, edges[a][b]) for a, b in zip(layers, layers[1:])])
+    return cycles
+
+
+def shortest_cycle(start, group, edges):
+    """[start, ..., start]: the shortest way back to start inside group (breadth first)."""
+    came_from = {}
+    queue = deque([start])
+    while start not in came_from:
+        node = queue.popleft()
+        for successor in sorted(edges[node]):
+            if successor in group and successor not in came_from:
+                came_from[successor] = node
+                queue.append(successor)
+    path = [start, came_from[start]]
+    while path[-1] != start:
+        path.append(came_from[path[-1]])
+    return list(reversed(path))
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("root", nargs="?", default=os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
+                        help="the repository root (default: the one holding this script)")
+    root = parser.parse_args(argv).root
+    violations, cycles, stats = check(root)
+    counts = f"{stats['files']} files, {stats['includes']} includes, {stats['layers']} layers"
+    for violation in violations:
+        print(violation)
+    for cycle in cycles:
+        print("layer cycle: " + " -> ".join([layer for layer, _, _ in cycle] + [cycle[0][0]]))
+        for layer, included, where in cycle:
+            print(f"    {layer} -> {included}: {where}")
+    if violations or cycles:
+        print(f"check_structure: {len(violations)} violations, {len(cycles)} layer cycles ({counts})")
+        return 1
+    print(f"check_structure: {counts}: includes point down, no file over {MAX_LINES} lines")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
