@@ -150,7 +150,7 @@ class ExactPatchIntersector {
       const double error = glm::length(residual);
       if (error <= tolerance_) {
         converged = true;
-        // Past the tolerance, one more step, as the GPU takes (trace.glsl):
+        // Past the tolerance, one more step, as the GPU takes (exact_newton.glsl):
         // convergence is quadratic, so the root lands at double's
         // resolution whatever the tolerance; kept only if it is no worse.
         double s1, t1, rayT1;

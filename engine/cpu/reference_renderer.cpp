@@ -5,12 +5,13 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <thread>
 
 #include "engine/camera/camera.h"
-#include "engine/cpu/intersect.h"
+#include "engine/cpu/intersector.h"
 #include "engine/ibl/compensation_tables.h"
 #include "engine/ibl/environment_lighting.h"
 #include "engine/ibl/environment_lookup.h"
@@ -33,35 +34,35 @@ class ReferenceScene {
   ReferenceScene(const scene::Scene& scene, const scene::SceneGeometry& geometry,
                  const ibl::EnvironmentLighting* environment)
       : scene_(scene), geometry_(geometry), environment_(environment), compensation_(ibl::compensationTables(scene)) {
+    ExactSettings exactSettings;
     if (scene.render.exactTolerance)
-      exactSettings_.tolerance = *scene.render.exactTolerance * geometry.bounds.diagonal();
-    shadowOffset_ = m::shadow_ray_offset(geometry.bounds.diagonal(), exactSettings_.tolerance);
+      exactSettings.tolerance = *scene.render.exactTolerance * geometry.bounds.diagonal();
+    shadowOffset_ = m::shadow_ray_offset(geometry.bounds.diagonal(), exactSettings.tolerance);
     coneSpread_ = m::camera_cone_spread(std::tan(glm::radians(0.5 * scene.camera.verticalFovDegrees)),
                                         double(scene.render.height));
     int patches = 0, faces = 0;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+      const scene::ObjectGeometry& object = geometry.objects[i];
       patchOffset_.push_back(patches);
       faceOffset_.push_back(faces);
-      patches += geometry.objects[i].surface.patchCount();
+      patches += object.surface.patchCount();
       faces += scene.objects[i].cage.faceCount();
       if (scene.render.method == scene::IntersectionMethod::Tessellated)
-        tessellations_.push_back(
-            TessellatedSurface::dice(geometry.objects[i].surface, geometry.objects[i].refinement.tessellationRate));
+        intersectors_.push_back(
+            std::make_unique<TessellatedIntersector>(object.surface, object.bvh, object.refinement.tessellationRate));
+      else
+        intersectors_.push_back(std::make_unique<ExactIntersector>(object.surface, object.bvh, exactSettings));
       params_.push_back(materials::toParams64(scene.materials[std::size_t(scene.objects[i].material)]));
     }
   }
 
-  // Nearest hit of all objects; `firstOnly` stops at any hit (shadow rays).
-  std::optional<SceneHit> intersect(Ray ray, bool firstOnly) const {
+  // Nearest hit of all objects; each searches only nearer than the best so far.
+  std::optional<SceneHit> closestHit(Ray ray) const {
     std::optional<SceneHit> nearest;
-    for (std::size_t i = 0; i < geometry_.objects.size(); ++i) {
-      const scene::ObjectGeometry& o = geometry_.objects[i];
-      std::optional<SurfaceHit> hit = tessellations_.empty()
-                                          ? intersectExact(o.surface, o.bvh, ray, exactSettings_)
-                                          : intersectTessellated(o.surface, o.bvh, tessellations_[i], ray);
+    for (std::size_t i = 0; i < intersectors_.size(); ++i) {
+      std::optional<SurfaceHit> hit = intersectors_[i]->closestHit(ray);
       if (!hit) continue;
       nearest = SceneHit{*hit, int(i)};
-      if (firstOnly) break;
       ray.tMax = hit->t;
     }
     return nearest;
@@ -122,8 +123,9 @@ class ReferenceScene {
     image.patchId[pixel] = std::uint32_t(patchOffset_[std::size_t(hit.object)] + hit.surface.patch);
     image.faceId[pixel] = std::uint32_t(faceOffset_[std::size_t(hit.object)] + hit.surface.coarseFace);
     image.uv[pixel] = glm::vec2(float(hit.surface.u), float(hit.surface.v));
-    image.texcoord[pixel] = glm::vec2(geometry_.objects[std::size_t(hit.object)].surface.evaluateTexcoord(
-        hit.surface.patch, hit.surface.u, hit.surface.v).uv);
+    image.texcoord[pixel] = glm::vec2(geometry_.objects[std::size_t(hit.object)]
+                                          .surface.evaluateTexcoord(hit.surface.patch, hit.surface.u, hit.surface.v)
+                                          .uv);
   }
 
   // What a camera ray that hits nothing sees.
@@ -154,8 +156,10 @@ class ReferenceScene {
   bool occluded(const glm::dvec3& position, const glm::dvec3& ng, const glm::dvec3& l, double distance,
                 std::uint64_t& shadowRays) const {
     ++shadowRays;
-    return intersect(Ray{m::shadow_ray_origin(position, ng, shadowOffset_), l, shadowOffset_, distance}, true)
-        .has_value();
+    const Ray ray{m::shadow_ray_origin(position, ng, shadowOffset_), l, shadowOffset_, distance};
+    for (const std::unique_ptr<Intersector>& object : intersectors_)
+      if (object->anyHit(ray)) return true;
+    return false;
   }
 
   static m::PunctualLight punctualLight(const scene::Light& light) {
@@ -269,9 +273,8 @@ class ReferenceScene {
   const ibl::CompensationTables compensation_;
   double shadowOffset_;
   double coneSpread_;  // of camera rays: the angle of one pixel
-  ExactSettings exactSettings_;
   std::vector<int> patchOffset_, faceOffset_;
-  std::vector<TessellatedSurface> tessellations_;
+  std::vector<std::unique_ptr<Intersector>> intersectors_;  // parallel to the scene's objects
   std::vector<rules::f64::BrdfParams> params_;
 };
 
@@ -320,7 +323,7 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
           const glm::dvec2 offset = rules::f64::sample_offset(pixelId, sample, strata);
           const glm::dvec3 direction = rules::f64::camera_ray_direction(frame, x + offset.x, y + offset.y, width, height);
           ++primary;
-          const auto hit = reference.intersect(Ray{frame.eye, direction}, false);
+          const auto hit = reference.closestHit(Ray{frame.eye, direction});
           if (sample == 0 && hit) reference.writeAovs(image, pixel, *hit, direction);
           if (!rules::f64::is_shaded_sample(sample, strata)) continue;
           if (!hit) {

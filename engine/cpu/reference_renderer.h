@@ -4,15 +4,19 @@
 // to be fast; rows are spread over the machine's cores.
 //
 // Conventions both backends share (docs/rendering.md):
-//   - samples: an n x n grid of sub-pixel centres (n² = samplesPerPixel); the
-//     AOVs come from the ray through the pixel centre;
+//   - samples: sample 0 through the pixel centre gives the AOVs; above 1 spp
+//     the shaded samples are the n² = samplesPerPixel points of a scrambled
+//     net over the pixel (compute/shared/camera_samples.h);
 //   - surfaces are two-sided: normals are flipped to face the eye;
 //   - L_o = Σ π f(l, v) c_light (n·l)+ V(l), V from a shadow ray that leaves
-//     the surface 1e-6 × scene diagonal along the geometric normal;
+//     the surface along the geometric normal by shadow_ray_offset
+//     (materials/shading/lights.h): 1e-6 × scene diagonal, and clear of the
+//     root tolerance;
 //   - plus the environment's reflected radiance by the scene's IBL method
-//     (the random numbers of sample s of pixel p come from
-//     sample_uniform(p, s, ...), s = 0 the centre ray, 1 + stratum the
-//     others); camera rays that miss see the environment;
+//     (sampled and filtered: the pairs of camera sample s of pixel p are
+//     points of the scrambled net of (p, s, seed),
+//     compute/shared/sampled_environment.h);
+//     camera rays that miss see the environment;
 //   - ids are global: patchId and faceId count on from the previous objects.
 #pragma once
 
