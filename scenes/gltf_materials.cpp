@@ -15,9 +15,9 @@
 namespace facet::scene::detail {
 namespace {
 
-// The glTF sampler's codes (OpenGL's enums) as compute/shared/texture_sampling.h's.
+// The glTF sampler's codes (OpenGL's enums) as rules/texture/texture_sampling.h's.
 TextureSampler toSampler(const tinygltf::Sampler& gltf, const std::string& where, const GltfReader& reader) {
-  namespace t = materials::f64;
+  namespace t = rules::f64;
   TextureSampler sampler;
   auto wrap = [&](int mode, const char* field) {
     switch (mode) {

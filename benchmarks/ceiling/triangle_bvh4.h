@@ -14,7 +14,7 @@
 
 namespace facet::benchmarks::ceiling {
 
-// facet's node layout (compute/shared/wide_bvh.h), which the kernels test
+// facet's node layout (compute/layout/wide_bvh.h), which the kernels test
 // with facet's own node code; leaves reference triangle ranges instead of cells.
 constexpr std::size_t kNodeTexels = facet::gpu_layout::FACET_BVH4_TEXELS;
 constexpr std::uint32_t kEmpty = facet::gpu_layout::FACET_BVH4_EMPTY;

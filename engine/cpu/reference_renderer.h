@@ -6,16 +6,16 @@
 // Conventions both backends share (docs/rendering.md):
 //   - samples: sample 0 through the pixel centre gives the AOVs; above 1 spp
 //     the shaded samples are the n² = samplesPerPixel points of a scrambled
-//     net over the pixel (compute/shared/camera_samples.h);
+//     net over the pixel (rules/camera/camera_samples.h);
 //   - surfaces are two-sided: normals are flipped to face the eye;
 //   - L_o = Σ π f(l, v) c_light (n·l)+ V(l), V from a shadow ray that leaves
 //     the surface along the geometric normal by shadow_ray_offset
-//     (materials/shading/lights.h): 1e-6 × scene diagonal, and clear of the
+//     (rules/shading/lights.h): 1e-6 × scene diagonal, and clear of the
 //     root tolerance;
 //   - plus the environment's reflected radiance by the scene's IBL method
 //     (sampled and filtered: the pairs of camera sample s of pixel p are
 //     points of the scrambled net of (p, s, seed),
-//     compute/shared/sampled_environment.h);
+//     rules/environment/sampled_environment.h);
 //     camera rays that miss see the environment;
 //   - ids are global: patchId and faceId count on from the previous objects.
 #pragma once

@@ -62,7 +62,7 @@ struct PrefilteredEnvironment {
   std::vector<DfgTable> dfg;                 // one per requested (D, G) pair, in request order
 };
 
-using ModelPairs = std::vector<std::pair<int, int>>;  // (distribution, geometry) ids of materials/shading
+using ModelPairs = std::vector<std::pair<int, int>>;  // (distribution, geometry) ids of rules/shading/microfacet.h
 
 // The index of `material`'s (D, G) pair in `pairs`, appended if new.
 int modelPairIndex(ModelPairs& pairs, const materials::Material& material);
