@@ -52,7 +52,7 @@ struct Light {
 
 enum class IntersectionMethod { Exact, Tessellated };
 
-// Samples per pixel form an n x n grid of sub-pixel centres.
+// Samples per pixel are a square number n²: the points of a scrambled net (rules/camera/sample_plan.h).
 inline bool isSquare(int n) {
   int root = 0;
   while ((root + 1) * (root + 1) <= n) ++root;
