@@ -21,13 +21,13 @@ double medianMilliseconds(int repeats, const std::function<double()>& run) {
 double traceMilliseconds(const RenderReport& report) {
   double total = 0;
   for (const StageTime& stage : report.stages)
-    if (stage.name != "refine + BVH" && stage.name != "environment") total += stage.milliseconds;
+    if (stage.stage != Stage::RefineBvh && stage.stage != Stage::Environment) total += stage.milliseconds;
   return total;
 }
 
 double preparationMilliseconds(const RenderReport& report) {
   for (const StageTime& stage : report.stages)
-    if (stage.name == "environment") return stage.milliseconds;
+    if (stage.stage == Stage::Environment) return stage.milliseconds;
   return 0;
 }
 

@@ -41,14 +41,14 @@ Row runFacet(facet::Renderer& renderer, const NamedCage& cage, const Scene& scen
   row.traceMs = 0;
   double primary = 0;  // GPU: camera rays generated and intersected, fallbacks included (Embree's loop does both too)
   for (const auto& stage : report.stages) {
-    row.stages += stage.name + "=" + fmt(stage.milliseconds, "%.2f") + ";";
-    if (stage.name == "refine + BVH") {
+    row.stages += std::string(stageName(stage.stage)) + "=" + fmt(stage.milliseconds, "%.2f") + ";";
+    if (stage.stage == Stage::RefineBvh) {
       row.refineMs = stage.milliseconds;
       continue;
     }
     row.traceMs += stage.milliseconds;
-    if (stage.name == "intersect" || stage.name == "fallbacks") primary += stage.milliseconds;
-    if (stage.name == "shadow rays" || stage.name == "shadow fallbacks")
+    if (stage.stage == Stage::Intersect || stage.stage == Stage::Fallbacks) primary += stage.milliseconds;
+    if (stage.stage == Stage::ShadowRays || stage.stage == Stage::ShadowFallbacks)
       row.shadowMs = (std::isnan(row.shadowMs) ? 0 : row.shadowMs) + stage.milliseconds;
   }
   if (primary > 0) row.primaryMs = primary;

@@ -93,7 +93,7 @@ RenderReport Renderer::render(const scene::Scene& scene, Backend backend, const 
                                 " image");
   Stopwatch clock;
   scene::SceneGeometry geometry = scene::buildGeometry(scene);
-  report.stages.push_back({"refine + BVH", clock.lap()});
+  report.stages.push_back({Stage::RefineBvh, clock.lap()});
   report.patches = geometry.patchCount();
   report.geometrySummary = scene::describe(scene, geometry);
   switch (backend) {
@@ -101,8 +101,8 @@ RenderReport Renderer::render(const scene::Scene& scene, Backend backend, const 
       cpu::ReferenceStatistics statistics;
       report.image = cpu::renderReference(scene, geometry, &statistics, progress, options.crop, options.threads);
       const double milliseconds = clock.lap();
-      if (scene.environment) report.stages.push_back({"environment", statistics.environmentMilliseconds});
-      report.stages.push_back({"trace + shade", milliseconds - statistics.environmentMilliseconds});
+      if (scene.environment) report.stages.push_back({Stage::Environment, statistics.environmentMilliseconds});
+      report.stages.push_back({Stage::TraceShade, milliseconds - statistics.environmentMilliseconds});
       report.device =
           "CPU reference, double precision, " + std::to_string(cpu::resolveThreadCount(options.threads)) + " threads";
       report.primaryRays = statistics.primaryRays;
@@ -113,7 +113,7 @@ RenderReport Renderer::render(const scene::Scene& scene, Backend backend, const 
       GpuContext& context = gpuContext();
       gpu_backend::GpuRenderResult result = context.renderer->render(scene, geometry, progress, options.crop);
       report.image = std::move(result.image);
-      for (const auto& [name, milliseconds] : result.stageMilliseconds) report.stages.push_back({name, milliseconds});
+      report.stages.insert(report.stages.end(), result.stageMilliseconds.begin(), result.stageMilliseconds.end());
       report.device = context.device.adapterInfo().name + " (GPU, float)";
       report.primaryRays = result.primaryRays;
       report.shadowRays = result.shadowRays;

@@ -12,17 +12,13 @@
 #include "engine/gpu/gpu.h"
 #include "engine/image/image.h"
 #include "engine/image/pixel_rect.h"
+#include "engine/stages/stages.h"
 #include "scenes/scene.h"
 
 namespace facet {
 
 enum class Backend { Cpu, Gpu };
 const char* toString(Backend backend);
-
-struct StageTime {
-  std::string name;
-  double milliseconds = 0;
-};
 
 // What part of the image to render, and on how many threads.
 struct RenderOptions {

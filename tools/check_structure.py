@@ -26,6 +26,7 @@ LAYERS = [
     ("materials", 1),
     ("engine/gpu", 1),
     ("engine/image", 1),
+    ("engine/stages", 1),  # the stages a render reports, named for every reader
     ("scenes", 2),
     ("engine/camera", 3),
     ("engine/ibl", 3),

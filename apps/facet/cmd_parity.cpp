@@ -47,7 +47,7 @@ nlohmann::json toJson(const ParityReport& report, const RenderReport& cpu, const
                     {"pass", a.pass}});
   auto milliseconds = [](const RenderReport& r) {
     nlohmann::json stages = nlohmann::json::object();
-    for (const StageTime& s : r.stages) stages[s.name] = s.milliseconds;
+    for (const StageTime& s : r.stages) stages[std::string(stageName(s.stage))] = s.milliseconds;
     return stages;
   };
   return {{"width", report.width},

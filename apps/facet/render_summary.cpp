@@ -52,7 +52,7 @@ void printSummary(const scene::Scene& scene, const RenderReport& report, const R
     std::printf("crop: %s (%dx%d pixels)\n", report.window.text().c_str(), report.window.width(),
                 report.window.height());
   for (const StageTime& stage : report.stages)
-    std::printf("  %-16s %8.1f ms\n", stage.name.c_str(), stage.milliseconds);
+    std::printf("  %-16s %8.1f ms\n", std::string(stageName(stage.stage)).c_str(), stage.milliseconds);
   std::printf("  %-16s %8.1f ms (wall clock, everything)\n", "total", wallMilliseconds);
   std::printf("rays: %llu primary, %llu shadow, %.2f Mrays/s\n", (unsigned long long)report.primaryRays,
               (unsigned long long)report.shadowRays, raysPerSecond(report) * 1e-6);
@@ -66,7 +66,7 @@ void printSummary(const scene::Scene& scene, const RenderReport& report, const R
 
 nlohmann::json renderJson(const RenderReport& report, const RenderJob& job, double wallMilliseconds) {
   nlohmann::json stages = nlohmann::json::object();
-  for (const StageTime& stage : report.stages) stages[stage.name] = stage.milliseconds;
+  for (const StageTime& stage : report.stages) stages[std::string(stageName(stage.stage))] = stage.milliseconds;
   return {{"frame", job.frame ? nlohmann::json(*job.frame) : nlohmann::json()},
           {"crop", {report.window.x0, report.window.y0, report.window.x1, report.window.y1}},
           {"stages_ms", stages},

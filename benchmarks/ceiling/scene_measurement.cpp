@@ -108,7 +108,7 @@ Row measureScene(gpu::Device& device, const std::string& path) {
                 ? geometry.bounds.centre() - 2 * diagonal * glm::normalize(l.direction)
                 : l.position;
   }
-  const facet::camera::CameraFrame camera = facet::camera::cameraFrame(scene.camera, kSize, kSize);
+  const facet::rules::f64::CameraFrame camera = facet::camera::cameraFrame(scene.camera, kSize, kSize);
   const float shadowOffset = float(1e-4 * diagonal);
   const FrameBlock frame{glm::vec4(vec3(camera.forward), 0), glm::vec4(vec3(camera.right), 0),
                          glm::vec4(vec3(camera.up), 0), glm::vec4(vec3(light - eye), shadowOffset),
@@ -156,12 +156,12 @@ Row measureScene(gpu::Device& device, const std::string& path) {
 
   // Camera rays in double; shadow rays start where the kernel's do (same
   // float arithmetic), so a mismatch there is the traversal's, not the offset's.
-  facet::camera::CameraFrame relative = camera;
+  facet::rules::f64::CameraFrame relative = camera;
   relative.eye = dvec3(0);
   const vec3 lightF = vec3(light - eye);
   for (std::size_t p = 0; p < pixels; p += kCheckStride) {
-    const dvec3 d =
-        facet::camera::camera_ray_direction(relative, double(p % kSize) + 0.5, double(p / kSize) + 0.5, kSize, kSize);
+    const dvec3 d = facet::rules::f64::camera_ray_direction(relative, double(p % kSize) + 0.5, double(p / kSize) + 0.5,
+                                                            kSize, kSize);
     const double reference = bruteForce(bvh.tris, dvec3(0), d, kInf, false);
     ++row.checked;
     if ((reference < kInf) != (hitTri(p) != kEmpty))

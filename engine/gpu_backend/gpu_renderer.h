@@ -2,8 +2,9 @@
 // compute/raycast/ on a gpu::Device, into the same Image as the CPU
 // reference and under the same conventions. docs/rendering.md ("The GPU
 // path") has the design and the precision rules, docs/architecture.md the
-// stages file by file; the stage names below are those `facet render`
-// reports (GPU timestamps per pass, wall clock for the host's).
+// stages file by file; the stages it reports are those of
+// engine/stages/stages.h (GPU timestamps per pass, stage_clock.h; wall clock
+// for the host's).
 //
 // Large images are rendered in bands of pixels, so that one band's buffers
 // stay far below the storage binding limit. The diced geometry is kept for
@@ -14,16 +15,15 @@
 
 #include <cstdint>
 #include <functional>
-#include <map>
 #include <memory>
 #include <optional>
-#include <string>
-#include <utility>
 #include <vector>
 
 #include "engine/gpu/gpu.h"
+#include "engine/gpu_backend/pipeline_cache.h"
 #include "engine/image/image.h"
 #include "engine/image/pixel_rect.h"
+#include "engine/stages/stages.h"
 #include "scenes/scene.h"
 #include "scenes/scene_geometry.h"
 
@@ -31,30 +31,12 @@ namespace facet::gpu_backend {
 
 struct GpuRenderResult {
   Image image;
-  std::vector<std::pair<std::string, double>> stageMilliseconds;  // GPU time per stage
+  std::vector<StageTime> stageMilliseconds;  // GPU time per stage
   std::uint64_t primaryRays = 0;
   std::uint64_t shadowRays = 0;
   std::uint64_t cells = 0;            // of the micro-grid
   std::uint64_t newtonFallbacks = 0;  // exact cells whose domain was subdivided
   std::uint64_t gpuBytes = 0;         // scene arrays and one band's ray buffers
-};
-
-// The exact method's root tolerance on the GPU: 8 float ulps of the scene
-// as seen from the eye where 1e-9 of its diagonal is below float's
-// resolution (docs/rendering.md, "The GPU path").
-double rootTolerance(const scene::Scene& scene, const scene::SceneGeometry& geometry);
-
-// The ray caster's kernels, and a pipeline per variant of specialization
-// constants, created at first use and kept.
-class PipelineCache {
- public:
-  explicit PipelineCache(gpu::Device& device);
-  gpu::ComputePipeline& get(const char* kernel, const std::vector<gpu::ConstantEntry>& constants);
-
- private:
-  gpu::Device& device_;
-  std::map<std::string, gpu::ShaderModule> modules_;
-  std::map<std::string, gpu::ComputePipeline> pipelines_;
 };
 
 class GpuRenderer {

@@ -1,0 +1,168 @@
+#include "engine/gpu_backend/render_buffers.h"
+
+#include <algorithm>
+#include <string>
+#include <utility>
+
+#include "engine/gpu_backend/raycast_layout.h"
+#include "engine/gpu_backend/texture_data.h"
+
+namespace facet::gpu_backend {
+namespace {
+
+using gpu::BufferUsage;
+namespace layout = gpu_layout;
+
+// Vulkan has no empty buffers, and a binding holds at least one element (one
+// texel): an unused array gets that much.
+std::uint64_t bufferBytes(std::uint64_t bytes) { return std::max<std::uint64_t>(16, bytes); }
+
+template <class T>
+gpu::Buffer upload(gpu::Device& device, const char* label, const std::vector<T>& data, BufferUsage usage) {
+  gpu::Buffer buffer = device.createBuffer(
+      {label, bufferBytes(std::max(sizeof(T), data.size() * sizeof(T))), usage | BufferUsage::CopyDst});
+  if (!data.empty()) device.queue().writeBuffer(buffer, 0, data.data(), data.size() * sizeof(T));
+  return buffer;
+}
+
+gpu::Buffer storage(gpu::Device& device, const char* label, std::uint64_t bytes,
+                    BufferUsage extra = BufferUsage::None) {
+  return device.createBuffer({label, bufferBytes(bytes), BufferUsage::Storage | extra});
+}
+
+}  // namespace
+
+GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed) {
+  const std::uint64_t maxTexels = d.limits().maxTexelBufferElements;
+  for (const auto& [name, texels] :
+       {std::pair{"BVH nodes", packed.nodeCount * layout::FACET_BVH4_TEXELS},
+        std::pair{"grid vertices", packed.gridVertices}, std::pair{"cell bounds", packed.cellBounds}})
+    if (texels > maxTexels)
+      throw gpu::Error(std::string("the micro-grid's ") + name + " need " + std::to_string(texels) + " texels; " +
+                       d.adapterInfo().name + " addresses at most " + std::to_string(maxTexels) +
+                       " in one texel buffer: lower the dicing rate (--tess-level)");
+  const BufferUsage in = BufferUsage::Storage, texel = BufferUsage::Texel;
+  // Written by the dicing kernels, read by the tracing ones.
+  const BufferUsage diced = BufferUsage::Texel | BufferUsage::StorageTexel;
+  GeometryBuffers b;
+  b.nodes = d.createBuffer({"BVH nodes", bufferBytes(packed.nodeCount * layout::FACET_BVH4_TEXELS * sizeof(Texel)),
+                            diced | BufferUsage::CopyDst});
+  if (!packed.topNodes.empty())
+    d.queue().writeBuffer(b.nodes, 0, packed.topNodes.data(), packed.topNodes.size() * sizeof(Texel));
+  b.patches = upload(d, "patch records", packed.patches, in);
+  b.headers = upload(d, "patch headers", packed.headers, texel);
+  b.points = upload(d, "patch points", packed.points, texel);
+  b.normals = upload(d, "authored normals", packed.normals, texel);
+  b.texcoords = upload(d, "texture coordinates", packed.texcoords, texel);
+  b.objects = upload(d, "object ranges", packed.objects, in);
+  b.gridVertices = d.createBuffer({"grid vertices", bufferBytes(packed.gridVertices * 16), diced});
+  b.edgeMidpoints = d.createBuffer({"edge midpoints", bufferBytes(packed.edgeMidpoints * 16), diced});
+  b.cellBounds = d.createBuffer({"cell bounds", bufferBytes(packed.cellBounds * 16), diced});
+  b.refitOrder = upload(d, "refit order", packed.refitOrder, in);
+  for (const gpu::Buffer* buffer : {&b.nodes, &b.patches, &b.headers, &b.points, &b.normals, &b.texcoords, &b.objects,
+                                    &b.gridVertices, &b.edgeMidpoints, &b.cellBounds})
+    b.bytes += buffer->size();
+  return b;
+}
+
+ShadingBuffers uploadShading(gpu::Device& d, const scene::Scene& scene, const ibl::EnvironmentLighting* lighting,
+                             const EnvironmentData& environment, const ibl::CompensationTables& compensation,
+                             const std::vector<glm::vec4>& compensationTexels, const glm::dvec3& origin) {
+  const std::uint64_t maxTexels = d.limits().maxTexelBufferElements;
+  const TextureData textures = textureData(scene.textures);
+  for (const auto& [name, texels] : {std::pair{"the environment map", environment.texels.size()},
+                                     std::pair{"the environment's tables", environment.tables.size()},
+                                     std::pair{"the textures", textures.texels.size()}})
+    if (texels > maxTexels)
+      throw gpu::Error(name + std::string(" needs ") + std::to_string(texels) + " texels in one texel buffer; " +
+                       d.adapterInfo().name + " addresses at most " + std::to_string(maxTexels) +
+                       ": use a smaller map");
+  const BufferUsage in = BufferUsage::Storage, texel = BufferUsage::Texel;
+  ShadingBuffers b;
+  b.materials = upload(d, "materials", materialRecords(scene, lighting, compensation), in);
+  b.lights = upload(d, "lights", lightRecords(scene, origin), in);
+  b.environmentTexels = upload(d, "environment texels", environment.texels, texel);
+  b.environmentTables = upload(d, "environment tables", environment.tables, texel);
+  b.environmentLevels = upload(d, "environment levels", environment.levels, texel);
+  b.environmentSampling = upload(d, "environment sampling", environment.sampling, texel);
+  b.textureTexels = upload(d, "texture texels", textures.texels, texel);
+  b.textureLevels = upload(d, "texture levels", textures.levels, texel);
+  b.textureTable = upload(d, "texture table", textures.textures, texel);
+  b.compensationTables = upload(d, "compensation tables", compensationTexels, texel);
+  return b;
+}
+
+std::uint64_t geometryKey(const GpuScene& packed, bool tessellated, float tolerance) {
+  std::uint64_t hash = 0xcbf29ce484222325ull;
+  auto add = [&hash](const void* data, std::size_t bytes) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) hash = (hash ^ p[i]) * 0x100000001b3ull;
+  };
+  auto addVector = [&add](const auto& v) { add(v.data(), v.size() * sizeof(v[0])); };
+  addVector(packed.topNodes);
+  addVector(packed.patches);
+  addVector(packed.headers);
+  addVector(packed.points);
+  addVector(packed.normals);
+  addVector(packed.texcoords);
+  addVector(packed.objects);
+  add(&tessellated, sizeof tessellated);
+  add(&tolerance, sizeof tolerance);
+  return hash;
+}
+
+BandBuffers allocateBands(gpu::Device& d, std::uint64_t bandPixels, std::uint64_t bandRays, std::uint32_t slots,
+                          std::uint32_t fallbackCapacity) {
+  BandBuffers b;
+  const std::uint64_t fallbackBytes = std::max(1u, fallbackCapacity) * sizeof(layout::FallbackRecord);
+  b.cameraFallbacks = storage(d, "camera ray fallbacks", fallbackBytes);
+  b.shadowFallbacks = storage(d, "shadow ray fallbacks", fallbackBytes);
+  b.frame = d.createBuffer({"frame", sizeof(layout::FrameParams), BufferUsage::Uniform | BufferUsage::CopyDst});
+  b.hits = storage(d, "camera hits", bandRays * sizeof(layout::HitRecord));
+  b.shadowRays = storage(d, "shadow rays", bandRays * slots * sizeof(layout::ShadowRayRecord));
+  b.contributions = storage(d, "light contributions", bandRays * slots * 16);
+  b.aovs = storage(d, "AOVs", bandPixels * sizeof(layout::PixelAovs), BufferUsage::CopySrc);
+  b.rayRadiance = storage(d, "camera ray radiance", bandRays * 16);
+  b.beauty = storage(d, "beauty", bandPixels * 16, BufferUsage::CopySrc);
+  b.counters = storage(d, "counters", sizeof(layout::RenderCounters),
+                       BufferUsage::Indirect | BufferUsage::CopyDst | BufferUsage::CopySrc);
+  b.aovsHost = d.createBuffer({"AOVs readback", b.aovs.size(), BufferUsage::MapRead | BufferUsage::CopyDst});
+  b.beautyHost = d.createBuffer({"beauty readback", b.beauty.size(), BufferUsage::MapRead | BufferUsage::CopyDst});
+  b.countersHost = d.createBuffer({"counter readback", b.counters.size(), BufferUsage::MapRead | BufferUsage::CopyDst});
+  for (const gpu::Buffer* buffer : {&b.hits, &b.shadowRays, &b.contributions, &b.aovs, &b.rayRadiance, &b.beauty,
+                                    &b.cameraFallbacks, &b.shadowFallbacks})
+    b.bytes += buffer->size();
+  return b;
+}
+
+std::vector<PixelRun> pixelRuns(const PixelRect& window, int width) {
+  const auto index = [&](int x, int y) { return std::uint64_t(y) * std::uint64_t(width) + std::uint64_t(x); };
+  if (window.width() == width) return {{index(0, window.y0), window.pixelCount()}};
+  std::vector<PixelRun> runs;
+  for (int y = window.y0; y < window.y1; ++y) runs.push_back({index(window.x0, y), std::uint64_t(window.width())});
+  return runs;
+}
+
+void readBand(BandBuffers& band, std::uint64_t first, std::uint64_t count, int width, const PixelRect& window,
+              const glm::dvec3& origin, Image& image) {
+  const auto pixelAovs = band.aovsHost.mapped<layout::PixelAovs>();
+  const auto pixelBeauty = band.beautyHost.mapped<glm::vec4>();
+  for (std::uint64_t i = 0; i < count; ++i) {
+    const layout::PixelAovs& a = pixelAovs[i];
+    const int x = int((first + i) % std::uint64_t(width)), y = int((first + i) / std::uint64_t(width));
+    const std::size_t p = image.index(x - window.x0, y - window.y0);
+    image.beauty[p] = pixelBeauty[i];
+    image.depth[p] = a.depth;
+    image.position[p] = a.patchId == layout::FACET_NO_HIT
+                            ? glm::vec3(0.0f)
+                            : glm::vec3(origin + glm::dvec3(a.positionX, a.positionY, a.positionZ));
+    image.geometricNormal[p] = {a.geometricX, a.geometricY, a.geometricZ};
+    image.shadingNormal[p] = {a.shadingX, a.shadingY, a.shadingZ};
+    image.patchId[p] = a.patchId;
+    image.faceId[p] = a.faceId;
+    image.uv[p] = {a.u, a.v};
+    image.texcoord[p] = {a.texcoordS, a.texcoordT};
+  }
+}
+
+}  // namespace facet::gpu_backend

@@ -1,0 +1,71 @@
+// The GPU buffers of a render: the scene's geometry (kept while it does not
+// change), what shades it, and one band of pixels' rays and results, with
+// the band's read-back into the image. Every array is rebased on the eye
+// (gpu_scene.h).
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <cstdint>
+#include <vector>
+
+#include "engine/gpu/gpu.h"
+#include "engine/gpu_backend/gpu_scene.h"
+#include "engine/gpu_backend/shading_records.h"
+#include "engine/ibl/compensation_tables.h"
+#include "engine/ibl/environment_lighting.h"
+#include "engine/image/image.h"
+#include "engine/image/pixel_rect.h"
+#include "scenes/scene.h"
+
+namespace facet::gpu_backend {
+
+struct GeometryBuffers {
+  gpu::Buffer nodes, patches, headers, points, normals, texcoords, objects, gridVertices, edgeMidpoints, cellBounds,
+      refitOrder;
+  std::uint64_t bytes = 0;
+};
+
+struct ShadingBuffers {
+  gpu::Buffer materials, lights, environmentTexels, environmentTables, environmentLevels, environmentSampling;
+  gpu::Buffer textureTexels, textureLevels, textureTable, compensationTables;
+};
+
+// What one band of pixels needs, reused band after band.
+struct BandBuffers {
+  gpu::Buffer frame, hits, shadowRays, contributions, aovs, rayRadiance, beauty, counters;
+  gpu::Buffer cameraFallbacks, shadowFallbacks;  // exact method: FallbackRecords, fallbackCapacity each
+  gpu::Buffer aovsHost, beautyHost, countersHost;
+  std::uint64_t bytes = 0;
+};
+
+GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed);
+
+ShadingBuffers uploadShading(gpu::Device& d, const scene::Scene& scene, const ibl::EnvironmentLighting* lighting,
+                             const EnvironmentData& environment, const ibl::CompensationTables& compensation,
+                             const std::vector<glm::vec4>& compensationTexels, const glm::dvec3& origin);
+
+// FNV-1a over the packed arrays: the diced geometry (and the attributes
+// uploaded with it) is reused while the packed scene (rebased, with its
+// rates), the method and the tolerance are the same.
+std::uint64_t geometryKey(const GpuScene& packed, bool tessellated, float tolerance);
+
+BandBuffers allocateBands(gpu::Device& d, std::uint64_t bandPixels, std::uint64_t bandRays, std::uint32_t slots,
+                          std::uint32_t fallbackCapacity);
+
+// The runs of consecutive pixels (indices of the full image, the kernels'
+// firstPixel) that cover a window: one run when it spans whole rows, else
+// one per row.
+struct PixelRun {
+  std::uint64_t first, count;
+};
+
+std::vector<PixelRun> pixelRuns(const PixelRect& window, int width);
+
+// A band's pixels, the `count` from full-image pixel `first`, read back into
+// the window's image; positions return to world space in double.
+void readBand(BandBuffers& band, std::uint64_t first, std::uint64_t count, int width, const PixelRect& window,
+              const glm::dvec3& origin, Image& image);
+
+}  // namespace facet::gpu_backend
