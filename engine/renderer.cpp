@@ -91,6 +91,10 @@ RenderReport Renderer::render(const scene::Scene& scene, Backend backend, const 
     throw std::invalid_argument("crop " + report.window.text() + ": must be a non-empty rectangle inside the " +
                                 std::to_string(scene.render.width) + "x" + std::to_string(scene.render.height) +
                                 " image");
+  if (backend == Backend::Gpu && scene.render.bounces > 0)
+    throw std::invalid_argument("bounces " + std::to_string(scene.render.bounces) +
+                                ": paths of more than 0 bounces render on the CPU reference only for now "
+                                "(--backend cpu)");
   Stopwatch clock;
   scene::SceneGeometry geometry = scene::buildGeometry(scene);
   report.stages.push_back({Stage::RefineBvh, clock.lap()});
@@ -107,6 +111,7 @@ RenderReport Renderer::render(const scene::Scene& scene, Backend backend, const 
           "CPU reference, double precision, " + std::to_string(cpu::resolveThreadCount(options.threads)) + " threads";
       report.primaryRays = statistics.primaryRays;
       report.shadowRays = statistics.shadowRays;
+      report.raysPerBounce = std::move(statistics.raysPerBounce);
       break;
     }
     case Backend::Gpu: {

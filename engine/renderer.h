@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/cpu/path_tracer.h"
 #include "engine/gpu/gpu.h"
 #include "engine/image/image.h"
 #include "engine/image/pixel_rect.h"
@@ -35,6 +36,8 @@ struct RenderReport {
   std::vector<StageTime> stages;
   std::uint64_t primaryRays = 0;
   std::uint64_t shadowRays = 0;
+  // CPU, with bounces > 0: the rays of bounce 0 (camera rays) to the last
+  std::vector<cpu::BounceRays> raysPerBounce;
   std::uint64_t newtonFallbacks = 0;  // GPU exact method: cells whose domain was subdivided
   std::uint64_t cells = 0;            // GPU: of the micro-grid
   std::uint64_t gpuBytes = 0;         // GPU: scene arrays and one band's ray buffers

@@ -14,6 +14,7 @@
 #include "rules/sampling/low_discrepancy.h"
 #include "rules/sampling/scrambled_net.h"
 #include "rules/sampling/mis.h"
+#include "rules/sampling/path_samples.h"
 #include "rules/shading/lobe_sampling.h"
 #include "rules/shading/dfg.h"
 #include "rules/environment/environment_mapping.h"

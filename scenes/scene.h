@@ -60,10 +60,19 @@ inline bool isSquare(int n) {
 }
 inline constexpr const char* kSamplesPerPixelRule = "samples per pixel must be a square number (an n x n grid)";
 
+// Paths (docs/rendering.md, "Paths on the CPU reference"): a continuation that
+// misses adds nothing because the vertex it left counted the environment with
+// its shadow rays, so paths need them.
+inline constexpr int kMaxBounces = 64;
+inline constexpr const char* kBouncesNeedOcclusionRule =
+    "bounces above 0 need the environment lit with its shadow rays (ibl sampled or filtered, occlusion on): a "
+    "continuation that misses adds nothing because the vertex it left counted the environment, shadowed";
+
 struct RenderSettings {
   int width = 512;
   int height = 512;
   int samplesPerPixel = 1;  // a square number: stratified sqrt x sqrt
+  int bounces = 0;          // continuations per camera sample's path; 0: direct light only
   IntersectionMethod method = IntersectionMethod::Exact;
   // Screen-space tolerance, in pixels, that chooses refinement and dicing
   // levels (see chooseRefinement).
@@ -96,6 +105,11 @@ struct Environment {
   // with different seeds are statistically independent.
   std::uint32_t seed = 0;
 };
+
+// Whether paths of `bounces` count the environment once (kBouncesNeedOcclusionRule).
+inline bool pathsCountEnvironmentOnce(int bounces, const std::optional<Environment>& environment) {
+  return bounces == 0 || !environment || (environment->occlusion && environment->method != IblMethod::Prefiltered);
+}
 
 struct Object {
   std::string name;

@@ -312,13 +312,14 @@ void readSubdivision(const Field& f, Object& object) {
 }
 
 void readRender(const Field& f, RenderSettings& r) {
-  f.object({"width", "height", "spp", "method", "tess_level", "pixel_tolerance"});
+  f.object({"width", "height", "spp", "bounces", "method", "tess_level", "pixel_tolerance"});
   if (f.has("width")) r.width = f["width"].integer(1, 16384);
   if (f.has("height")) r.height = f["height"].integer(1, 16384);
   if (f.has("spp")) {
     r.samplesPerPixel = f["spp"].integer(1, 4096);
     if (!isSquare(r.samplesPerPixel)) f["spp"].fail(kSamplesPerPixelRule);
   }
+  if (f.has("bounces")) r.bounces = f["bounces"].integer(0, kMaxBounces);
   if (f.has("method"))
     r.method = f["method"].choice<IntersectionMethod>(
         {{"exact", IntersectionMethod::Exact}, {"tess", IntersectionMethod::Tessellated}});
@@ -424,6 +425,8 @@ Scene loadJsonScene(const std::filesystem::path& path) {
 
   if (root.has("render")) readRender(root["render"], scene.render);
   if (root.has("environment")) scene.environment = readEnvironment(root["environment"], path);
+  if (!pathsCountEnvironmentOnce(scene.render.bounces, scene.environment))
+    root["render"]["bounces"].fail(kBouncesNeedOcclusionRule);
   scene.camera = root.has("camera") ? readCamera(root["camera"]) : frameBounds(cageBounds(scene));
   if (root.has("camera_keys"))
     scene.cameraKeys =

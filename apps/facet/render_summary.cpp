@@ -21,10 +21,26 @@ std::vector<std::string> outputPaths(const RenderJob& job) {
   return paths;
 }
 
+std::uint64_t continuationRays(const RenderReport& report) {
+  std::uint64_t rays = 0;
+  for (std::size_t bounce = 1; bounce < report.raysPerBounce.size(); ++bounce)
+    rays += report.raysPerBounce[bounce].rays;
+  return rays;
+}
+
 // Every stage after refinement casts or shades rays.
 double raysPerSecond(const RenderReport& report) {
   const double traceSeconds = (report.totalMilliseconds() - report.stages.front().milliseconds) * 1e-3;
-  return double(report.primaryRays + report.shadowRays) / traceSeconds;
+  return double(report.primaryRays + report.shadowRays + continuationRays(report)) / traceSeconds;
+}
+
+void printRaysPerBounce(const RenderReport& report) {
+  for (std::size_t bounce = 0; bounce < report.raysPerBounce.size(); ++bounce) {
+    const cpu::BounceRays& rays = report.raysPerBounce[bounce];
+    std::printf("  bounce %-2zu %llu %s rays (%llu hit), %llu shadow\n", bounce, (unsigned long long)rays.rays,
+                bounce == 0 ? "camera" : "continuation", (unsigned long long)rays.hits,
+                (unsigned long long)rays.shadowRays);
+  }
 }
 
 }  // namespace
@@ -56,6 +72,7 @@ void printSummary(const scene::Scene& scene, const RenderReport& report, const R
   std::printf("  %-16s %8.1f ms (wall clock, everything)\n", "total", wallMilliseconds);
   std::printf("rays: %llu primary, %llu shadow, %.2f Mrays/s\n", (unsigned long long)report.primaryRays,
               (unsigned long long)report.shadowRays, raysPerSecond(report) * 1e-6);
+  printRaysPerBounce(report);
   if (report.cells)
     std::printf("micro-grid: %llu cells, %llu exact fallbacks, %.1f MiB of GPU arrays\n",
                 (unsigned long long)report.cells, (unsigned long long)report.newtonFallbacks,
@@ -67,15 +84,21 @@ void printSummary(const scene::Scene& scene, const RenderReport& report, const R
 nlohmann::json renderJson(const RenderReport& report, const RenderJob& job, double wallMilliseconds) {
   nlohmann::json stages = nlohmann::json::object();
   for (const StageTime& stage : report.stages) stages[std::string(stageName(stage.stage))] = stage.milliseconds;
-  return {{"frame", job.frame ? nlohmann::json(*job.frame) : nlohmann::json()},
-          {"crop", {report.window.x0, report.window.y0, report.window.x1, report.window.y1}},
-          {"stages_ms", stages},
-          {"wall_ms", wallMilliseconds},
-          {"primary_rays", report.primaryRays},
-          {"shadow_rays", report.shadowRays},
-          {"rays_per_second", raysPerSecond(report)},
-          {"gpu_bytes", report.gpuBytes},
-          {"outputs", outputPaths(job)}};
+  nlohmann::json render = {{"frame", job.frame ? nlohmann::json(*job.frame) : nlohmann::json()},
+                           {"crop", {report.window.x0, report.window.y0, report.window.x1, report.window.y1}},
+                           {"stages_ms", stages},
+                           {"wall_ms", wallMilliseconds},
+                           {"primary_rays", report.primaryRays},
+                           {"shadow_rays", report.shadowRays},
+                           {"rays_per_second", raysPerSecond(report)},
+                           {"gpu_bytes", report.gpuBytes},
+                           {"outputs", outputPaths(job)}};
+  if (report.raysPerBounce.empty()) return render;
+  nlohmann::json bounces = nlohmann::json::array();
+  for (const cpu::BounceRays& rays : report.raysPerBounce)
+    bounces.push_back({{"rays", rays.rays}, {"hits", rays.hits}, {"shadow_rays", rays.shadowRays}});
+  render["rays_per_bounce"] = bounces;
+  return render;
 }
 
 }  // namespace facet::cli

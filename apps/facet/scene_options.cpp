@@ -82,7 +82,11 @@ void applySceneOverrides(const SceneOverrides& o, scene::Scene& scene) {
       throw std::invalid_argument("--spp " + std::to_string(*o.spp) + ": " + scene::kSamplesPerPixelRule);
     scene.render.samplesPerPixel = *o.spp;
   }
+  if (o.bounces) scene.render.bounces = *o.bounces;
   applyEnvironmentOverrides(o, scene);
+  if (!scene::pathsCountEnvironmentOnce(scene.render.bounces, scene.environment))
+    throw std::invalid_argument("bounces " + std::to_string(scene.render.bounces) + " (--bounces or the scene's " +
+                                "render.bounces): " + scene::kBouncesNeedOcclusionRule);
   applyEnergyCompensation(o.energyCompensation, scene);
 }
 
@@ -192,6 +196,11 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& o) {
   command.add_option("--tess-level", o.tessLevel, "Dicing rate k (k x k per patch) for --method tess")
       ->check(CLI::Range(1, 256));
   command.add_option("--spp", o.spp, "Samples per pixel (a square number)")->check(CLI::Range(1, 4096));
+  command
+      .add_option("--bounces", o.bounces,
+                  "Continuations of each camera sample's path (0: direct light only; above 0: --backend cpu, "
+                  "--ibl sampled or filtered with --occlusion on)")
+      ->check(CLI::Range(0, scene::kMaxBounces));
   command.add_option("--env", o.environment, "Environment map (.exr or .hdr, equirectangular 2:1) lighting the scene")
       ->check(CLI::ExistingFile);
   command.add_option("--env-intensity", o.environmentIntensity, "Environment radiance scale")

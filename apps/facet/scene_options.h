@@ -21,6 +21,7 @@ struct SceneOverrides {
   std::string method;
   std::optional<int> tessLevel;
   std::optional<int> spp;
+  std::optional<int> bounces;
   std::string subdivision;
   std::string environment;
   std::optional<double> environmentIntensity;

@@ -19,6 +19,7 @@ std::string settingsDigest(const scene::Scene& scene, const std::string& backend
   const scene::RenderSettings& r = scene.render;
   text << r.width << ' ' << r.height << ' ' << r.samplesPerPixel << ' ' << int(r.method) << ' ' << r.pixelTolerance
        << ' ' << r.tessellationRate.value_or(-1) << ' ' << r.exactTolerance.value_or(-1) << '\n';
+  if (r.bounces > 0) text << "bounces " << r.bounces << '\n';  // only above 0: a render without paths keeps its digest
   const scene::Camera& c = scene.camera;
   for (const glm::dvec3& v : {c.eye, c.target, c.up}) text << v.x << ' ' << v.y << ' ' << v.z << ' ';
   text << c.verticalFovDegrees << '\n';
@@ -42,6 +43,7 @@ std::string renderSettingsText(const scene::Scene& scene, const std::string& bac
   text << "backend=" << backend << " size=" << r.width << 'x' << r.height << " spp=" << r.samplesPerPixel
        << " method=" << (r.method == scene::IntersectionMethod::Exact ? "exact" : "tess")
        << " pixelTolerance=" << r.pixelTolerance << " tessellationRate=" << orAuto(r.tessellationRate);
+  if (r.bounces > 0) text << " bounces=" << r.bounces;
   if (const auto& e = scene.environment) {
     const char* methods[] = {"sampled", "prefiltered", "filtered"};  // in IblMethod's order
     text << " ibl=" << methods[int(e->method)] << " iblSamples=" << e->samples

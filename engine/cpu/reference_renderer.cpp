@@ -8,10 +8,13 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <thread>
 
 #include "engine/camera/camera.h"
 #include "engine/cpu/intersector.h"
+#include "engine/cpu/path_tracer.h"
 #include "engine/ibl/compensation_tables.h"
 #include "engine/ibl/environment_lighting.h"
 #include "engine/ibl/environment_lookup.h"
@@ -29,7 +32,7 @@ struct SceneHit {
   int object = -1;
 };
 
-class ReferenceScene {
+class ReferenceScene final : public PathScene {
  public:
   ReferenceScene(const scene::Scene& scene, const scene::SceneGeometry& geometry,
                  const ibl::EnvironmentLighting* environment)
@@ -72,6 +75,15 @@ class ReferenceScene {
   // and the environment; (pixel, sample) name the sample's random numbers.
   glm::dvec3 shade(const SceneHit& hit, const glm::dvec3& direction, std::uint32_t pixel, std::uint32_t sample,
                    std::uint64_t& shadowRays) const {
+    return shadeVertex(hit, direction, pixel, sample, environmentSeed(), shadowRays).radiance;
+  }
+
+  // The scene's seed: vertex 1's environment pairs (rules/sampling/path_samples.h).
+  std::uint32_t environmentSeed() const { return environment_ ? environment_->environment->seed : 0u; }
+
+  // shade(), its environment pairs drawn with `seed`, and the BRDF there.
+  PathVertex shadeVertex(const SceneHit& hit, const glm::dvec3& direction, std::uint32_t pixel, std::uint32_t sample,
+                         std::uint32_t seed, std::uint64_t& shadowRays) const {
     const glm::dvec3 v = -direction;
     glm::dvec3 n = hit.surface.shadingNormal, ng = hit.surface.geometricNormal;
     if (glm::dot(ng, v) < 0) n = -n, ng = -ng;
@@ -91,15 +103,15 @@ class ReferenceScene {
       glm::dvec3 environment(0.0);
       switch (environment_->environment->method) {
         case scene::IblMethod::Sampled:
-          environment =
-              sampledEnvironment(params, specularScale, hit.surface.position, n, ng, v, pixel, sample, shadowRays);
+          environment = sampledEnvironment(params, specularScale, hit.surface.position, n, ng, v, pixel, sample, seed,
+                                           shadowRays);
           break;
         case scene::IblMethod::Prefiltered:
           environment = prefilteredEnvironment(params, specularScale, material, n, v);
           break;
         case scene::IblMethod::Filtered:
-          environment =
-              filteredEnvironment(params, specularScale, hit.surface.position, n, ng, v, pixel, sample, shadowRays);
+          environment = filteredEnvironment(params, specularScale, hit.surface.position, n, ng, v, pixel, sample, seed,
+                                            shadowRays);
           break;
       }
       radiance += occlusion * environment;
@@ -110,8 +122,17 @@ class ReferenceScene {
       if (occluded(hit.surface.position, ng, incidence.direction, incidence.distance, shadowRays)) continue;
       radiance += m::punctual_radiance(params, n, incidence.direction, v, incidence.color, specularScale);
     }
-    return radiance;
+    return {radiance, params, specularScale, hit.surface.position, n, ng, v};
   }
+
+  std::optional<PathVertex> shadeNearest(const Ray& ray, std::uint32_t pixel, std::uint32_t sample, std::uint32_t seed,
+                                         std::uint64_t& shadowRays) const override {
+    const std::optional<SceneHit> hit = closestHit(ray);
+    if (!hit) return std::nullopt;
+    return shadeVertex(*hit, ray.direction, pixel, sample, seed, shadowRays);
+  }
+
+  double leavingOffset() const override { return shadowOffset_; }
 
   void writeAovs(Image& image, std::size_t pixel, const SceneHit& hit, const glm::dvec3& direction) const {
     glm::dvec3 n = hit.surface.shadingNormal, ng = hit.surface.geometricNormal;
@@ -200,7 +221,7 @@ class ReferenceScene {
   // environment's distribution in vectors.
   glm::dvec3 sampledEnvironment(const m::BrdfParams& params, const glm::dvec3& specularScale,
                                 const glm::dvec3& position, const glm::dvec3& n, const glm::dvec3& ng,
-                                const glm::dvec3& v, std::uint32_t pixel, std::uint32_t sample,
+                                const glm::dvec3& v, std::uint32_t pixel, std::uint32_t sample, std::uint32_t seed,
                                 std::uint64_t& shadowRays) const {
     const scene::Environment& environment = *environment_->environment;
     const ibl::EnvironmentDistribution& distribution = environment_->distribution;
@@ -212,7 +233,7 @@ class ReferenceScene {
     };
     glm::dvec3 sum(0.0);
     for (std::uint32_t k = 0; k < pairs; ++k) {
-      const m::EnvironmentPair pair = m::environment_pair(params, n, v, pixel, sample, environment.seed, k, pairs);
+      const m::EnvironmentPair pair = m::environment_pair(params, n, v, pixel, sample, seed, k, pairs);
       const ibl::EnvironmentSample e = ibl::sampleEnvironment(distribution, pair.texel_bits, pair.environment_u);
       sum += share(m::environment_technique_sample(params, n, v, fromMap(e.direction), e.pdf));
       sum += share(m::brdf_technique_sample(params, n, v, pair.brdf_direction,
@@ -225,7 +246,7 @@ class ReferenceScene {
   // sampled method's pairs, BRDF samples read from the mip chain.
   glm::dvec3 filteredEnvironment(const m::BrdfParams& params, const glm::dvec3& specularScale,
                                  const glm::dvec3& position, const glm::dvec3& n, const glm::dvec3& ng,
-                                 const glm::dvec3& v, std::uint32_t pixel, std::uint32_t sample,
+                                 const glm::dvec3& v, std::uint32_t pixel, std::uint32_t sample, std::uint32_t seed,
                                  std::uint64_t& shadowRays) const {
     const scene::Environment& environment = *environment_->environment;
     const std::vector<ibl::MipLevel>& chain = environment_->mipChain;
@@ -240,7 +261,7 @@ class ReferenceScene {
     };
     glm::dvec3 sum(0.0);
     for (std::uint32_t k = 0; k < pairs; ++k) {
-      const m::EnvironmentPair pair = m::environment_pair(params, n, v, pixel, sample, environment.seed, k, pairs);
+      const m::EnvironmentPair pair = m::environment_pair(params, n, v, pixel, sample, seed, k, pairs);
       if (withEnvironment) {
         const ibl::EnvironmentSample e = ibl::sampleEnvironment(distribution, pair.texel_bits, pair.environment_u);
         sum += share(m::environment_technique_sample(params, n, v, fromMap(e.direction), e.pdf), 0.0);
@@ -287,6 +308,9 @@ unsigned resolveThreadCount(unsigned threadCount) {
 Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geometry, ReferenceStatistics* statistics,
                       const std::function<void(double)>& progress, const std::optional<PixelRect>& crop,
                       unsigned threadCount) {
+  if (!scene::pathsCountEnvironmentOnce(scene.render.bounces, scene.environment))
+    throw std::invalid_argument("bounces " + std::to_string(scene.render.bounces) + ": " +
+                                scene::kBouncesNeedOcclusionRule);
   const int width = scene.render.width, height = scene.render.height;
   const PixelRect window = crop.value_or(PixelRect::whole(width, height));
   Image image(window.width(), window.height());
@@ -308,9 +332,12 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
 
   std::atomic<int> nextRow{window.y0}, finishedRows{0};
   std::atomic<std::uint64_t> primaryRays{0}, shadowRays{0};
+  const int bounces = scene.render.bounces;
+  std::vector<BounceRays> raysPerBounce(bounces > 0 ? std::size_t(bounces) + 1 : 0);
   std::mutex progressMutex;
   auto worker = [&] {
     std::uint64_t primary = 0, shadow = 0;
+    std::vector<BounceRays> bounceRays(raysPerBounce.size());
     for (int y = nextRow++; y < window.y1; y = nextRow++) {
       for (int x = window.x0; x < window.x1; ++x) {
         const std::size_t pixel = image.index(x - window.x0, y - window.y0);
@@ -321,9 +348,11 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
         double coverage = 0;
         for (std::uint32_t sample = 0; sample < raysPerPixel; ++sample) {
           const glm::dvec2 offset = rules::f64::sample_offset(pixelId, sample, strata);
-          const glm::dvec3 direction = rules::f64::camera_ray_direction(frame, x + offset.x, y + offset.y, width, height);
+          const glm::dvec3 direction =
+              rules::f64::camera_ray_direction(frame, x + offset.x, y + offset.y, width, height);
           ++primary;
           const auto hit = reference.closestHit(Ray{frame.eye, direction});
+          if (hit && !bounceRays.empty()) ++bounceRays[0].hits;
           if (sample == 0 && hit) reference.writeAovs(image, pixel, *hit, direction);
           if (!rules::f64::is_shaded_sample(sample, strata)) continue;
           if (!hit) {
@@ -331,7 +360,14 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
             continue;
           }
           coverage += 1;
-          radiance += reference.shade(*hit, direction, pixelId, sample, shadow);
+          if (bounces == 0) {
+            radiance += reference.shade(*hit, direction, pixelId, sample, shadow);
+            continue;
+          }
+          const PathVertex first = reference.shadeVertex(*hit, direction, pixelId, sample, reference.environmentSeed(),
+                                                         bounceRays[0].shadowRays);
+          radiance += tracePath(reference, first, {pixelId, sample, raysPerPixel, reference.environmentSeed()}, bounces,
+                                bounceRays);
         }
         const double samples = double(rules::f64::shaded_sample_count(strata));
         image.beauty[pixel] = glm::vec4(glm::vec3(radiance / samples), float(coverage / samples));
@@ -342,13 +378,21 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
         progress(double(done) / window.height());
       }
     }
+    if (!bounceRays.empty()) bounceRays[0].rays = primary;
+    std::lock_guard lock(progressMutex);
+    for (std::size_t b = 0; b < bounceRays.size(); ++b) {
+      raysPerBounce[b].rays += bounceRays[b].rays;
+      raysPerBounce[b].hits += bounceRays[b].hits;
+      raysPerBounce[b].shadowRays += bounceRays[b].shadowRays;
+      shadow += bounceRays[b].shadowRays;
+    }
     primaryRays += primary;
     shadowRays += shadow;
   };
   std::vector<std::thread> threads;
   for (unsigned i = 0; i < resolveThreadCount(threadCount); ++i) threads.emplace_back(worker);
   for (auto& t : threads) t.join();
-  if (statistics) *statistics = {primaryRays, shadowRays, environmentMilliseconds};
+  if (statistics) *statistics = {primaryRays, shadowRays, environmentMilliseconds, std::move(raysPerBounce)};
   return image;
 }
 

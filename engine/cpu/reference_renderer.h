@@ -17,13 +17,17 @@
 //     points of the scrambled net of (p, s, seed),
 //     rules/environment/sampled_environment.h);
 //     camera rays that miss see the environment;
-//   - ids are global: patchId and faceId count on from the previous objects.
+//   - ids are global: patchId and faceId count on from the previous objects;
+//   - with render.bounces above 0, each camera sample that hits continues as
+//     a path (path_tracer.h); at 0 the image is the one without paths, bit
+//     for bit.
 #pragma once
 
 #include <cstdint>
 #include <functional>
 #include <optional>
 
+#include "engine/cpu/path_tracer.h"
 #include "engine/image/image.h"
 #include "engine/image/pixel_rect.h"
 #include "scenes/scene.h"
@@ -34,7 +38,8 @@ namespace facet::cpu {
 struct ReferenceStatistics {
   std::uint64_t primaryRays = 0;
   std::uint64_t shadowRays = 0;
-  double environmentMilliseconds = 0;  // preparing the environment (sampling tables or prefiltering)
+  double environmentMilliseconds = 0;     // preparing the environment (sampling tables or prefiltering)
+  std::vector<BounceRays> raysPerBounce;  // with bounces > 0: bounce 0 (camera rays) to the last
 };
 
 // `progress` receives the finished fraction, from any thread, at most once

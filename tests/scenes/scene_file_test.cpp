@@ -81,6 +81,11 @@ TEST_F(SceneFiles, ErrorsNameTheFileTheFieldAndTheRule) {
               AllOf(HasSubstr("objects[0].material"), HasSubstr("unknown preset 'unobtainium'")));
   EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj"}], "render": {"spp": 3}})"),
               AllOf(HasSubstr("render.spp"), HasSubstr("square")));
+  EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj"}], "render": {"bounces": 65}})"),
+              AllOf(HasSubstr("render.bounces"), HasSubstr("[0, 64]")));
+  EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj"}], "render": {"bounces": 2},
+                          "environment": {"color": [1, 1, 1], "method": "sampled", "occlusion": false}})"),
+              AllOf(HasSubstr("scene.json"), HasSubstr("render.bounces"), HasSubstr("occlusion on")));
   EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj"}], "lights": [{"type": "point", "color": [1, 1, 1]}]})"),
               AllOf(HasSubstr("lights[0]"), HasSubstr("needs a position")));
   EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj"}],)"),
@@ -90,6 +95,14 @@ TEST_F(SceneFiles, ErrorsNameTheFileTheFieldAndTheRule) {
   EXPECT_THAT(errorOf("{}"), HasSubstr("scene.json: the document: a scene needs objects"));
   EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj", "material": {"alpha": 2}}]})"),
               AllOf(HasSubstr("objects[0].material.alpha"), HasSubstr("[0, 1]")));
+}
+
+TEST_F(SceneFiles, RenderBouncesDefaultToNone) {
+  EXPECT_EQ(loadScene(write("direct.json", R"({"objects": [{"mesh": "ball.obj"}]})")).render.bounces, 0);
+  EXPECT_EQ(loadScene(write("paths.json", R"({"objects": [{"mesh": "ball.obj"}], "render": {"bounces": 3},
+      "environment": {"color": [1, 1, 1], "method": "sampled"}})"))
+                .render.bounces,
+            3);
 }
 
 TEST_F(SceneFiles, ObjectsChooseTheirSubdivision) {

@@ -22,6 +22,7 @@ namespace facet {
 namespace {
 
 using scene::IblMethod;
+using testing::lambertian;
 
 std::shared_ptr<const scene::EnvironmentMap> white() {
   return std::make_shared<const scene::EnvironmentMap>(scene::constantEnvironment(glm::dvec3(1.0)));
@@ -37,16 +38,6 @@ std::shared_ptr<const scene::EnvironmentMap> courtyard() {
   static const auto map = std::make_shared<const scene::EnvironmentMap>(
       scene::loadEnvironmentMap(std::filesystem::path(FACET_ENVIRONMENTS_DIR) / "courtyard_256x128.hdr"));
   return map;
-}
-
-// No specular lobe at all: a dielectric of index 1 is no interface (F = 0
-// at every angle, where Schlick's F would still rise at grazing).
-materials::Material lambert(double albedo) {
-  materials::Material m = scene::defaultMaterial();
-  m.fresnel = rules::f64::F_DIELECTRIC;
-  m.eta = glm::dvec3(1.0);
-  m.diffuse = glm::dvec3(albedo);
-  return m;
 }
 
 materials::Material mirrorMetal(double alpha) {
@@ -92,7 +83,7 @@ double meanRadiance(const Image& image) {
 }
 
 TEST(IblFurnace, PrefilteredWhiteLambertReturnsExactlyOne) {
-  const Image image = render(iblScene(lambert(1.0), white(), IblMethod::Prefiltered, 1, 24), Backend::Cpu).image;
+  const Image image = render(iblScene(lambertian(1.0), white(), IblMethod::Prefiltered, 1, 24), Backend::Cpu).image;
   const auto pixels = covered(image);
   ASSERT_GT(pixels.size(), 100u);
   for (std::size_t i = 0; i < image.beauty.size(); ++i)
@@ -111,7 +102,7 @@ void expectZeroMean(const std::vector<double>& deviations) {
 
 // With MIS the estimator is not constant, only its mean.
 TEST(IblFurnace, SampledWhiteLambertAveragesToOne) {
-  const Image image = render(iblScene(lambert(1.0), white(), IblMethod::Sampled, 64, 24), Backend::Cpu).image;
+  const Image image = render(iblScene(lambertian(1.0), white(), IblMethod::Sampled, 64, 24), Backend::Cpu).image;
   std::vector<double> deviations;
   for (std::size_t p : covered(image)) deviations.push_back(image.beauty[p].g - 1.0);
   ASSERT_GT(deviations.size(), 100u);
@@ -232,7 +223,7 @@ TEST(IblConvergence, FilteredErrorIsBelowSampledAtEveryN) {
 // (docs/rendering.md quotes the printed numbers).
 TEST(IblIrradianceAccuracy, LambertUnderTheSunIsWithinFivePercent) {
   for (const auto& [envName, map] : {std::pair{"sunrise", sunrise()}, std::pair{"courtyard", courtyard()}}) {
-    scene::Scene s = iblScene(lambert(0.8), map, IblMethod::Sampled, 4096, 16);
+    scene::Scene s = iblScene(lambertian(0.8), map, IblMethod::Sampled, 4096, 16);
     s.environment->occlusion = false;
     s.environment->seed = 1;
     const Image reference = render(s, Backend::Cpu).image;
@@ -297,7 +288,8 @@ TEST(IblPrefilteredAccuracy, ErrorAgainstAConvergedReferencePerRoughness) {
     for (const Case& c : cases) {
       std::printf("\n%-16s", c.name);
       for (double alpha : alphas) {
-        scene::Scene s = iblScene(c.lambertian ? lambert(0.8) : mirrorMetal(alpha), map, IblMethod::Sampled, 1024, 16);
+        scene::Scene s =
+            iblScene(c.lambertian ? lambertian(0.8) : mirrorMetal(alpha), map, IblMethod::Sampled, 1024, 16);
         if (c.flat) s = headOn(std::move(s));
         s.environment->occlusion = false;
         const Image reference = render(s, Backend::Cpu).image;

@@ -1,0 +1,69 @@
+// Paths on the CPU reference (docs/rendering.md, "Paths on the CPU
+// reference"): per camera sample that hits,
+//   L = D(x1) + T1 D(x2) + T1 T2 D(x3) + ...,
+// D(x) the per-hit estimator of direct light at x (punctual lights, the
+// environment by the scene's IBL method with its shadow rays, emission), and
+// each continuation drawn from the whole BRDF at its vertex, T = f |cos| / pdf.
+// A continuation that misses adds nothing: D at the vertex it left already
+// counted the environment, shadowed.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "engine/cpu/ray.h"
+#include "rules/rules.h"
+
+namespace facet::cpu {
+
+// A shaded path vertex: D(x) towards v, and the BRDF the path continues by.
+struct PathVertex {
+  glm::dvec3 radiance{0.0};  // D(x)
+  rules::f64::BrdfParams params{};
+  glm::dvec3 specularScale{1.0};  // energy compensation's factor on the specular lobe
+  glm::dvec3 position{0.0};
+  glm::dvec3 n{0.0}, ng{0.0};  // shading and geometric normals, facing v
+  glm::dvec3 v{0.0};           // towards where the path came from
+};
+
+// The rays of one bounce: bounce 0 is the camera rays and the shadow rays of
+// their hits; bounce k >= 1 the continuation rays that leave vertex k and the
+// shadow rays of the vertices they hit.
+struct BounceRays {
+  std::uint64_t rays = 0;  // camera or continuation rays
+  std::uint64_t hits = 0;  // of those, the ones that hit a surface
+  std::uint64_t shadowRays = 0;
+};
+
+// What a path needs of the scene.
+class PathScene {
+ public:
+  // D at the nearest hit of `ray`, seen from the ray's origin, its
+  // environment pairs drawn with `seed`; none where the ray hits nothing.
+  virtual std::optional<PathVertex> shadeNearest(const Ray& ray, std::uint32_t pixel, std::uint32_t sample,
+                                                 std::uint32_t seed, std::uint64_t& shadowRays) const = 0;
+  // The offset and t_min of rays that leave a surface (shadow_ray_offset).
+  virtual double leavingOffset() const = 0;
+
+ protected:
+  ~PathScene() = default;
+};
+
+// Which random numbers a path draws (rules/sampling/path_samples.h).
+struct PathSampleKey {
+  std::uint32_t pixel = 0;    // in the full image
+  std::uint32_t sample = 0;   // the camera sample
+  std::uint32_t samples = 1;  // camera rays of the pixel
+  std::uint32_t seed = 0;     // the environment's seed
+};
+
+// L of the path whose first vertex is `first` (shaded with the scene's
+// seed), with at most `bounces` continuations; `rays` (bounces + 1 entries)
+// counts each bounce's continuation and shadow rays.
+glm::dvec3 tracePath(const PathScene& scene, const PathVertex& first, const PathSampleKey& key, int bounces,
+                     std::vector<BounceRays>& rays);
+
+}  // namespace facet::cpu
