@@ -51,6 +51,9 @@ scene::Scene withSettings(const Scene& input, const RenderSettings& s) {
             "samplesPerPixel", std::string("must be in [1, 4096]; ") + scene::kSamplesPerPixelRule);
   if (s.tessellationRate)
     require(*s.tessellationRate >= 1 && *s.tessellationRate <= 256, "tessellationRate", "must be in [1, 256]");
+  if (s.bounces)
+    require(*s.bounces >= 0 && *s.bounces <= scene::kMaxBounces, "bounces",
+            "must be in [0, " + std::to_string(scene::kMaxBounces) + "]");
   out.render.width = s.width.value_or(out.render.width);
   out.render.height = s.height.value_or(out.render.height);
   out.render.samplesPerPixel = s.samplesPerPixel.value_or(out.render.samplesPerPixel);
@@ -58,6 +61,9 @@ scene::Scene withSettings(const Scene& input, const RenderSettings& s) {
     out.render.method =
         *s.method == Method::Exact ? scene::IntersectionMethod::Exact : scene::IntersectionMethod::Tessellated;
   if (s.tessellationRate) out.render.tessellationRate = s.tessellationRate;
+  out.render.bounces = s.bounces.value_or(out.render.bounces);
+  require(scene::pathsCountEnvironmentOnce(out.render.bounces, out.environment), "bounces",
+          scene::kBouncesNeedOcclusionRule);
   return out;
 }
 
@@ -81,15 +87,19 @@ RenderResult Renderer::render(const Scene& input, const RenderSettings& settings
   return api::translateErrors([&] {
     const RenderReport report = state_->engine.render(
         withSettings(input, settings), settings.backend == Backend::Cpu ? facet::Backend::Cpu : facet::Backend::Gpu);
-    return RenderResult{publicImage(report.image), report.device, report.totalMilliseconds()};
+    RenderResult result{publicImage(report.image), report.device, report.totalMilliseconds(), {}};
+    for (const cpu::BounceRays& rays : report.raysPerBounce)
+      result.raysPerBounce.push_back({rays.rays, rays.hits, rays.shadowRays});
+    return result;
   });
 }
 
 ParityReport Renderer::parity(const Scene& input, const RenderSettings& settings) {
   return api::translateErrors([&] {
     const scene::Scene s = withSettings(input, settings);
-    const RenderReport cpu = state_->engine.render(s, facet::Backend::Cpu);
+    // The GPU first: it refuses what it cannot render (bounces above 0) before the CPU spends a render on it.
     const RenderReport gpu = state_->engine.render(s, facet::Backend::Gpu);
+    const RenderReport cpu = state_->engine.render(s, facet::Backend::Cpu);
     const analysis::ParityReport r = analysis::compareImages(cpu.image, gpu.image);
     ParityReport out{r.width,        r.height, r.covered, r.coverageMismatches,
                      r.coveragePass, {},       r.pass,    analysis::describe(r)};

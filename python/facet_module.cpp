@@ -72,7 +72,7 @@ T choice(const std::string& name, const char* argument, std::initializer_list<st
 
 facet::RenderSettings settingsOf(std::optional<std::pair<int, int>> size, const std::string& backend,
                                  std::optional<std::string> method, std::optional<int> spp,
-                                 std::optional<int> tessLevel) {
+                                 std::optional<int> tessLevel, std::optional<int> bounces) {
   facet::RenderSettings s;
   s.backend = choice<facet::Backend>(backend, "backend", {{"gpu", facet::Backend::Gpu}, {"cpu", facet::Backend::Cpu}});
   if (size) {
@@ -84,6 +84,7 @@ facet::RenderSettings settingsOf(std::optional<std::pair<int, int>> size, const 
                                      {{"exact", facet::Method::Exact}, {"tess", facet::Method::Tessellated}});
   s.samplesPerPixel = spp;
   s.tessellationRate = tessLevel;
+  s.bounces = bounces;
   return s;
 }
 
@@ -93,7 +94,15 @@ py::dict renderDict(facet::Renderer& renderer, const py::object& sceneOrPath, co
     py::gil_scoped_release unlocked;
     return renderer.render(scene, settings);
   }();
-  return imageDict(std::move(result.image));
+  py::dict out = imageDict(std::move(result.image));
+  // As `facet render --json` reports it: only paths of bounces above 0 have it.
+  if (result.raysPerBounce.empty()) return out;
+  py::list bounces;
+  for (const facet::BounceRays& rays : result.raysPerBounce)
+    bounces.append(
+        py::dict(py::arg("rays") = rays.rays, py::arg("hits") = rays.hits, py::arg("shadow_rays") = rays.shadowRays));
+  out["rays_per_bounce"] = bounces;
+  return out;
 }
 
 py::dict parityDict(facet::Renderer& renderer, const py::object& sceneOrPath, const facet::RenderSettings& settings) {
@@ -281,34 +290,37 @@ PYBIND11_MODULE(facet, m) {
       .def(
           "render",
           [](facet::Renderer& r, const py::object& scene, std::optional<std::pair<int, int>> size,
-             const std::string& backend, OptText method, std::optional<int> spp, std::optional<int> tessLevel) {
-            return renderDict(r, scene, settingsOf(size, backend, method, spp, tessLevel));
+             const std::string& backend, OptText method, std::optional<int> spp, std::optional<int> tessLevel,
+             std::optional<int> bounces) {
+            return renderDict(r, scene, settingsOf(size, backend, method, spp, tessLevel, bounces));
           },
           py::arg("scene"), py::kw_only(), py::arg("size") = py::none(), py::arg("backend") = "gpu",
-          py::arg("method") = py::none(), py::arg("spp") = py::none(), py::arg("tess_level") = py::none())
+          py::arg("method") = py::none(), py::arg("spp") = py::none(), py::arg("tess_level") = py::none(),
+          py::arg("bounces") = py::none())
       .def(
           "parity",
           [](facet::Renderer& r, const py::object& scene, std::optional<std::pair<int, int>> size, OptText method) {
-            return parityDict(r, scene, settingsOf(size, "gpu", method, std::nullopt, std::nullopt));
+            return parityDict(r, scene, settingsOf(size, "gpu", method, std::nullopt, std::nullopt, std::nullopt));
           },
           py::arg("scene"), py::kw_only(), py::arg("size") = py::none(), py::arg("method") = py::none());
 
   m.def(
       "render",
       [](const py::object& scene, std::optional<std::pair<int, int>> size, const std::string& backend, OptText method,
-         std::optional<int> spp, std::optional<int> tessLevel, const std::string& adapter) {
+         std::optional<int> spp, std::optional<int> tessLevel, std::optional<int> bounces, const std::string& adapter) {
         facet::Renderer renderer(adapter);
-        return renderDict(renderer, scene, settingsOf(size, backend, method, spp, tessLevel));
+        return renderDict(renderer, scene, settingsOf(size, backend, method, spp, tessLevel, bounces));
       },
       py::arg("scene"), py::kw_only(), py::arg("size") = py::none(), py::arg("backend") = "gpu",
       py::arg("method") = py::none(), py::arg("spp") = py::none(), py::arg("tess_level") = py::none(),
-      py::arg("adapter") = "",
-      "Renders a Scene or a scene file; returns {aov name: numpy array (height, width[, channels])}");
+      py::arg("bounces") = py::none(), py::arg("adapter") = "",
+      "Renders a Scene or a scene file; returns {aov name: numpy array (height, width[, channels])}, with "
+      "rays_per_bounce when bounces > 0");
   m.def(
       "parity",
       [](const py::object& scene, std::optional<std::pair<int, int>> size, OptText method, const std::string& adapter) {
         facet::Renderer renderer(adapter);
-        return parityDict(renderer, scene, settingsOf(size, "gpu", method, std::nullopt, std::nullopt));
+        return parityDict(renderer, scene, settingsOf(size, "gpu", method, std::nullopt, std::nullopt, std::nullopt));
       },
       py::arg("scene"), py::kw_only(), py::arg("size") = py::none(), py::arg("method") = py::none(),
       py::arg("adapter") = "", "GPU against the CPU reference, AOV by AOV; returns the report as a dict");

@@ -2,9 +2,11 @@
 // no GPU) or on the scalar double-precision CPU reference.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "facet/image.h"
 #include "facet/scene.h"
@@ -22,12 +24,24 @@ struct RenderSettings {
   std::optional<Method> method;
   std::optional<int> samplesPerPixel;   // a square number
   std::optional<int> tessellationRate;  // tessellated method
+  // Continuations of each camera sample's path, in [0, 64]; 0 is direct light
+  // only. Above 0: the CPU backend alone, and an environment, if any, sampled
+  // or filtered with occlusion on (docs/rendering.md, "Paths on the CPU reference").
+  std::optional<int> bounces;
+};
+
+// The rays of one bounce of the paths: bounce 0 casts the camera rays.
+struct BounceRays {
+  std::uint64_t rays = 0;  // camera or continuation rays
+  std::uint64_t hits = 0;  // of those, the ones that hit a surface
+  std::uint64_t shadowRays = 0;
 };
 
 struct RenderResult {
   Image image;
   std::string device;  // what ran it
   double milliseconds = 0;
+  std::vector<BounceRays> raysPerBounce;  // bounce 0 to the last; empty unless bounces > 0
 };
 
 struct AovParity {

@@ -38,10 +38,16 @@ def read_exr(path):
     return planes
 
 
-def cube(sharp_edge=True):
-    corners = np.array([[x, y, z] for z in (-1, 1) for y in (-1, 1) for x in (-1, 1)], dtype=float)
+def box(low, high, creases=()):
+    """The cage of an axis-aligned box from corner `low` to corner `high`."""
+    corners = np.array([[(low, high)[bool(i & bit)][axis] for axis, bit in enumerate((1, 2, 4))] for i in range(8)],
+                       dtype=float)
     quads = [0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4, 2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5]
-    return facet.Cage(corners, [4] * 6, quads, creases=[(0, 1, 10.0)] if sharp_edge else [])
+    return facet.Cage(corners, [4] * 6, quads, creases=list(creases))
+
+
+def cube(sharp_edge=True):
+    return box((-1, -1, -1), (1, 1, 1), creases=[(0, 1, 10.0)] if sharp_edge else [])
 
 
 class Render(unittest.TestCase):
@@ -116,6 +122,30 @@ class Render(unittest.TestCase):
         self.assertTrue((compensated[..., :3] >= single[..., :3]).all())
         report = self.renderer.parity(scene(True))
         self.assertTrue(report["pass"], report["summary"])
+
+    def test_one_bounce_on_the_cpu_adds_the_light_between_objects(self):
+        # A cube on a slab under a sampled, shadowed environment: continuations from each find the other.
+        def scene(method):
+            environment = facet.Environment(EXAMPLES.parent / "environments" / "courtyard_256x128.hdr",
+                                            method=method, samples=4, occlusion=True)
+            objects = [facet.Object(box((-1, -1, -1), (1, 1, 1)), subdivided=False),
+                       facet.Object(box((-4, -1.5, -4), (4, -1, 4)), subdivided=False)]
+            return facet.Scene(objects,
+                               camera=facet.Camera(eye=(3, 2.5, 4), target=(0, -0.5, 0), fov=50),
+                               environment=environment, size=(16, 16))
+        direct = self.renderer.render(scene("sampled"), backend="cpu", spp=1, bounces=0)
+        paths = self.renderer.render(scene("sampled"), backend="cpu", spp=1, bounces=1)
+        self.assertNotIn("rays_per_bounce", direct)
+        self.assertEqual([sorted(rays) for rays in paths["rays_per_bounce"]], [["hits", "rays", "shadow_rays"]] * 2)
+        self.assertEqual(paths["rays_per_bounce"][0]["rays"], 16 * 16)
+        self.assertGreater(paths["rays_per_bounce"][1]["hits"], 0)
+        self.assertGreater(paths["beauty"][..., :3].sum(), direct["beauty"][..., :3].sum())
+        with self.assertRaisesRegex(facet.Error, "render settings: bounces: bounces above 0 need the environment"):
+            self.renderer.render(scene("prefiltered"), backend="cpu", bounces=1)
+        with self.assertRaisesRegex(facet.Error, r"render settings: bounces: must be in \[0, 64\]"):
+            self.renderer.render(scene("sampled"), backend="cpu", bounces=65)
+        with self.assertRaisesRegex(facet.Error, "CPU reference only"):
+            facet.render(scene("sampled"), backend="gpu", bounces=1)
 
     def test_render_settings_are_checked(self):
         with self.assertRaisesRegex(facet.Error, r"render settings: width: must be in \[1, 16384\]"):

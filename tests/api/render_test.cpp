@@ -1,0 +1,105 @@
+// Renderer::render's settings (api/render.cpp) through the public API alone:
+// paths of bounces above 0 on the CPU, and the settings the renderers refuse.
+#include <gtest/gtest.h>
+
+#include <facet/facet.h>
+
+#include <string>
+
+namespace {
+
+// A cube on a slab under a sampled, shadowed environment: continuations from
+// each find the other, so a bounce adds light that direct lighting lacks.
+facet::Cage box(facet::Vec3 low, facet::Vec3 high) {
+  facet::Cage cage;
+  for (int i = 0; i < 8; ++i)
+    cage.positions.push_back({i & 1 ? high.x : low.x, i & 2 ? high.y : low.y, i & 4 ? high.z : low.z});
+  cage.faceVertexCounts = {4, 4, 4, 4, 4, 4};
+  cage.faceVertexIndices = {0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4, 2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5};
+  return cage;
+}
+
+facet::Scene cubeOnSlab(facet::IblMethod method) {
+  facet::SceneDescription description;  // no materials: grey plastic
+  description.objects = {{"cube", box({-1, -1, -1}, {1, 1, 1}), 0, false},
+                         {"slab", box({-4, -1.5, -4}, {4, -1, 4}), 0, false}};
+  description.camera = facet::Camera{{3, 2.5, 4}, {0, -0.5, 0}, {0, 1, 0}, 50};
+  facet::Environment environment;
+  environment.file = std::string(FACET_ENVIRONMENTS_DIR) + "/courtyard_256x128.hdr";
+  environment.method = method;
+  environment.samples = 4;
+  description.environment = environment;
+  description.width = description.height = 16;
+  return facet::buildScene(description);
+}
+
+facet::RenderSettings onCpu(int bounces) {
+  facet::RenderSettings settings;
+  settings.backend = facet::Backend::Cpu;
+  settings.bounces = bounces;
+  return settings;
+}
+
+double sumOfBeauty(const facet::RenderResult& result) {
+  const facet::Aov& beauty = result.image.aov("beauty");
+  double sum = 0;
+  for (std::size_t i = 0; i < beauty.values.size(); i += 4)
+    sum += beauty.values[i] + beauty.values[i + 1] + beauty.values[i + 2];
+  return sum;
+}
+
+std::string errorOf(facet::Renderer& renderer, const facet::Scene& scene, const facet::RenderSettings& settings) {
+  try {
+    renderer.render(scene, settings);
+  } catch (const facet::Error& e) {
+    EXPECT_EQ(e.kind(), facet::ErrorKind::BadInput);
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(ApiRender, OneBounceAddsTheLightBetweenObjectsAndCountsItsRays) {
+  facet::Renderer renderer;
+  const facet::Scene scene = cubeOnSlab(facet::IblMethod::Sampled);
+  const facet::RenderResult direct = renderer.render(scene, onCpu(0));
+  const facet::RenderResult paths = renderer.render(scene, onCpu(1));
+  EXPECT_TRUE(direct.raysPerBounce.empty());
+  ASSERT_EQ(paths.raysPerBounce.size(), 2u);
+  EXPECT_EQ(paths.raysPerBounce[0].rays, 16u * 16u);  // one camera ray per pixel at 1 spp
+  EXPECT_GT(paths.raysPerBounce[1].hits, 0u);
+  EXPECT_GT(sumOfBeauty(paths), sumOfBeauty(direct));
+}
+
+TEST(ApiRender, BouncesAreCheckedAsTheSceneFileChecksThem) {
+  facet::Renderer renderer;
+  const facet::Scene sampled = cubeOnSlab(facet::IblMethod::Sampled);
+  EXPECT_EQ(errorOf(renderer, sampled, onCpu(65)), "render settings: bounces: must be in [0, 64]");
+  EXPECT_EQ(errorOf(renderer, sampled, onCpu(-1)), "render settings: bounces: must be in [0, 64]");
+  // The split sum counts the environment unshadowed at every vertex: paths would count it twice.
+  const std::string prefiltered = errorOf(renderer, cubeOnSlab(facet::IblMethod::Prefiltered), onCpu(1));
+  EXPECT_EQ(
+      prefiltered.rfind("render settings: bounces: bounces above 0 need the environment lit with its shadow rays", 0),
+      0u)
+      << prefiltered;
+}
+
+TEST(ApiRender, TheGpuRefusesBouncesBeforeRendering) {
+  facet::Renderer renderer;
+  facet::RenderSettings settings = onCpu(1);
+  settings.backend = facet::Backend::Gpu;
+  const std::string message = errorOf(renderer, cubeOnSlab(facet::IblMethod::Sampled), settings);
+  EXPECT_NE(message.find("bounces 1: paths of more than 0 bounces render on the CPU reference only"), std::string::npos)
+      << message;
+}
+
+TEST(ApiRender, ParityRefusesBouncesOnItsGpuHalf) {
+  facet::Renderer renderer;
+  try {
+    renderer.parity(cubeOnSlab(facet::IblMethod::Sampled), onCpu(1));
+    FAIL() << "parity rendered paths";
+  } catch (const facet::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("CPU reference only"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
