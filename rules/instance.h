@@ -16,6 +16,7 @@
 #include "rules/sampling/mis.h"
 #include "rules/sampling/path_samples.h"
 #include "rules/shading/lobe_sampling.h"
+#include "rules/shading/path_continuation.h"
 #include "rules/shading/dfg.h"
 #include "rules/environment/environment_mapping.h"
 #include "rules/environment/split_sum.h"

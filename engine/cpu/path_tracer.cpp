@@ -21,24 +21,21 @@ glm::dvec3 tracePath(const PathScene& scene, const PathVertex& first, const Path
       throughput /= survival;
     }
     const glm::dvec2 u = m::path_continuation_u(key.pixel, key.sample, key.samples, key.seed, vertexIndex);
-    const glm::dvec3 l = m::sample_brdf_lobes(vertex.params, vertex.n, vertex.v, u);
-    if (!m::above_surface(vertex.n, vertex.ng, l)) break;
-    const double pdf = m::brdf_lobes_pdf(vertex.params, vertex.n, l, vertex.v);
-    if (!(pdf > 0.0)) break;
-    const glm::dvec3 f = m::brdf_evaluate_scaled(vertex.params, vertex.n, l, vertex.v, vertex.specularScale);
-    throughput *= f * glm::dot(vertex.n, l) / pdf;
+    const m::PathContinuation next =
+        m::continue_path(vertex.params, vertex.n, vertex.ng, vertex.v, vertex.specularScale, u);
+    throughput *= next.weight;
     if (throughput == glm::dvec3(0.0)) break;
 
     BounceRays& counts = rays[std::size_t(bounce)];
     ++counts.rays;
     const double offset = scene.leavingOffset();
-    const Ray ray{m::shadow_ray_origin(vertex.position, vertex.ng, offset), l, offset};
-    const std::optional<PathVertex> next = scene.shadeNearest(
+    const Ray ray{m::shadow_ray_origin(vertex.position, vertex.ng, offset), next.direction, offset};
+    const std::optional<PathVertex> hit = scene.shadeNearest(
         ray, key.pixel, key.sample, m::path_vertex_seed(key.seed, vertexIndex + 1), counts.shadowRays);
-    if (!next) break;  // the environment was counted, shadowed, by D at the vertex the ray left
+    if (!hit) break;  // the environment was counted, shadowed, by D at the vertex the ray left
     ++counts.hits;
-    radiance += throughput * next->radiance;
-    vertex = *next;
+    radiance += throughput * hit->radiance;
+    vertex = *hit;
   }
   return radiance;
 }
