@@ -41,3 +41,10 @@ FACET_FN real path_survival_probability(vec3 throughput, uint bounce) {
   if (bounce < PATH_FIRST_ROULETTE_BOUNCE) return real(1);
   return min(real(1), max(throughput.x, max(throughput.y, throughput.z)));
 }
+
+// The number that picks reflection or transmission at a dielectric interface
+// of vertex `vertex` (rules/shading/transmissive_continuation.h): the other
+// coordinate of roulette's group.
+FACET_FN real path_interface_u(uint pixel, uint sample_index, uint samples, uint seed, uint vertex) {
+  return scrambled_point(pixel, PATH_CONTINUATION_SAMPLE, path_vertex_seed(seed, vertex), 1u, sample_index, samples).y;
+}
