@@ -65,7 +65,8 @@ FACET_FN TransmissiveContinuation continue_path_transmissive(BrdfParams p, Trans
     if (s.transmitted || p_diffuse <= real(0)) {
       // No other lobe reaches this direction: the weight is the dielectric's alone.
       c.weight = vec3(s.weight / (real(1) - p_diffuse));
-      if (s.transmitted && t.thin_walled) c.weight *= beer_lambert(t.sigma, t.thickness / max(s.cos_inside, COS_EPSILON));
+      if (s.transmitted && t.thin_walled)
+        c.weight *= beer_lambert(t.sigma, t.thickness / max(s.cos_inside, COS_EPSILON));
       return c;
     }
   } else {
