@@ -26,6 +26,17 @@ class Stopwatch {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
+// Transmission renders on the CPU reference only for now (docs/rendering.md,
+// "Transmission and absorption").
+void refuseTransmissionOnGpu(const scene::Scene& scene) {
+  for (const scene::Object& object : scene.objects) {
+    const materials::Material& material = scene.materials[std::size_t(object.material)];
+    if (materials::isTransmissive(material))
+      throw std::invalid_argument("material '" + material.name + "' of object '" + object.name +
+                                  "': transmissive materials render on the CPU reference only for now (--backend cpu)");
+  }
+}
+
 }  // namespace
 
 gpu::InstanceDescriptor gpuInstanceFromEnvironment() {
@@ -95,6 +106,7 @@ RenderReport Renderer::render(const scene::Scene& scene, Backend backend, const 
     throw std::invalid_argument("bounces " + std::to_string(scene.render.bounces) +
                                 ": paths of more than 0 bounces render on the CPU reference only for now "
                                 "(--backend cpu)");
+  if (backend == Backend::Gpu) refuseTransmissionOnGpu(scene);
   Stopwatch clock;
   scene::SceneGeometry geometry = scene::buildGeometry(scene);
   report.stages.push_back({Stage::RefineBvh, clock.lap()});
