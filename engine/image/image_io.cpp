@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <random>
@@ -19,9 +20,27 @@ void checkOutputPath(const std::string& flag, const std::filesystem::path& path)
   if (path.empty()) reject("the output path is empty");
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) reject("is a folder; name a file in it");
+  const std::filesystem::file_status status = std::filesystem::symlink_status(path, error);
+  if (std::filesystem::is_symlink(status)) reject("is a symbolic link; facet writes only regular files");
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    reject("is a device, FIFO or socket; facet replaces only regular files");
   const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   if (!std::filesystem::is_directory(folder, error)) reject("the folder '" + folder.string() + "' does not exist");
   if (::access(folder.c_str(), W_OK) != 0) reject("the folder '" + folder.string() + "' is not writable");
+}
+
+void checkOutputExtension(const std::string& flag, const std::filesystem::path& path, const std::string& extension) {
+  std::string found = path.extension().string();
+  for (char& c : found) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (found != extension)
+    throw OutputError(flag + " '" + path.string() + "': the extension chooses the format: expected " + extension);
+}
+
+bool namesSameFile(const std::filesystem::path& a, const std::filesystem::path& b) {
+  std::error_code error;
+  if (std::filesystem::exists(a, error) && std::filesystem::exists(b, error))
+    return std::filesystem::equivalent(a, b, error);
+  return std::filesystem::absolute(a).lexically_normal() == std::filesystem::absolute(b).lexically_normal();
 }
 
 void writeAllOrNothing(const std::vector<OutputFile>& files) {

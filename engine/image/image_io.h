@@ -30,9 +30,19 @@ struct OutputFile {
 };
 
 // Throws OutputError "<flag> '<path>': <rule>" unless `path` names a file
-// that can be created or replaced: not empty, not a folder, in an existing
-// writable folder. Checked before the work that produces the file.
+// that can be created or replaced: not empty, not a folder, not a symbolic
+// link, a device, a FIFO or a socket (an output replaces a regular file or
+// nothing), in an existing writable folder. Checked before the work that
+// produces the file.
 void checkOutputPath(const std::string& flag, const std::filesystem::path& path);
+
+// The extension chooses an output's format: throws OutputError unless
+// `path` ends in `extension` (".exr", ".png"; any case).
+void checkOutputExtension(const std::string& flag, const std::filesystem::path& path, const std::string& extension);
+
+// Whether two paths name one file: the same file where both exist (links
+// and other spellings included), else the same normalized absolute path.
+bool namesSameFile(const std::filesystem::path& a, const std::filesystem::path& b);
 
 // Writes every file to a temporary in its destination's folder, then renames
 // them all into place. When a write fails, removes the temporaries and leaves

@@ -1,5 +1,6 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cmath>
 #include <fstream>
@@ -135,6 +136,42 @@ TEST_F(ImageIo, OutputPathsAreCheckedBeforeAnythingIsWritten) {
                                                        "' does not exist");
   EXPECT_EQ(errorOf(dir_ / "out.exr"), "accepted");
   EXPECT_TRUE(files().empty());
+}
+
+TEST_F(ImageIo, OutputsReplaceOnlyRegularFiles) {
+  const auto rejected = [](const fs::path& path) {
+    try {
+      checkOutputPath("-o", path);
+    } catch (const OutputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  std::ofstream(dir_ / "target.exr") << "kept";
+  fs::create_symlink(dir_ / "target.exr", dir_ / "link.exr");
+  EXPECT_NE(rejected(dir_ / "link.exr").find("is a symbolic link"), std::string::npos);
+  fs::create_symlink(dir_ / "nowhere.exr", dir_ / "dangling.exr");
+  EXPECT_NE(rejected(dir_ / "dangling.exr").find("is a symbolic link"), std::string::npos);
+  ASSERT_EQ(mkfifo((dir_ / "fifo.exr").c_str(), 0600), 0);
+  EXPECT_NE(rejected(dir_ / "fifo.exr").find("is a device, FIFO or socket"), std::string::npos);
+  EXPECT_NE(rejected("/dev/null").find("is a device, FIFO or socket"), std::string::npos);
+  EXPECT_EQ(rejected(dir_ / "target.exr"), "");
+  EXPECT_EQ(contents(dir_ / "target.exr"), "kept");
+}
+
+TEST_F(ImageIo, TheExtensionChoosesTheFormat) {
+  EXPECT_NO_THROW(checkOutputExtension("-o", dir_ / "a.EXR", ".exr"));
+  EXPECT_THROW(checkOutputExtension("-o", dir_ / "a.png", ".exr"), OutputError);
+  EXPECT_THROW(checkOutputExtension("--png", dir_ / "a", ".png"), OutputError);
+}
+
+TEST_F(ImageIo, TwoSpellingsOfOneFileAreTheSameFile) {
+  std::ofstream(dir_ / "tile.exr") << "tile";
+  fs::create_symlink(dir_ / "tile.exr", dir_ / "alias.exr");
+  EXPECT_TRUE(namesSameFile(dir_ / "tile.exr", dir_ / "." / "tile.exr"));
+  EXPECT_TRUE(namesSameFile(dir_ / "alias.exr", dir_ / "tile.exr"));
+  EXPECT_TRUE(namesSameFile(dir_ / "new.exr", dir_ / "sub" / ".." / "new.exr"));
+  EXPECT_FALSE(namesSameFile(dir_ / "tile.exr", dir_ / "other.exr"));
 }
 
 TEST(ImageSize, ImpossibleSizesAreRejected) {
