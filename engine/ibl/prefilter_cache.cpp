@@ -1,9 +1,14 @@
 // The disk cache of prefiltered environments and of DFG tables. One file
 // per key; the file repeats the key's text, so that a hash collision reads
-// as a miss, and ends in a magic, so that a truncated file does too. Any
-// failure to read or write only costs the build.
+// as a miss, carries a checksum of everything before it, so that a changed
+// byte does too, and ends in a magic, so that a truncated file does too. What
+// a file holds must also fit the request (its levels, its tables, finite
+// values) or it is rebuilt. Only regular files are read. Any failure to read
+// or write only costs the build.
 #include <glm/vec3.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -30,16 +35,20 @@ constexpr char kMagic[8] = {'F', 'A', 'C', 'E', 'T', 'I', 'B', 'L'};
 // Bump whenever the file layout changes. What the builders compute is
 // keyed by FACET_PREFILTER_FINGERPRINT, a digest of their sources that
 // engine/ibl/CMakeLists.txt takes at configure time.
-constexpr std::uint32_t kFormatVersion = 2;
+constexpr std::uint32_t kFormatVersion = 3;
+// A cache file larger than this is not one facet wrote (a link to a device).
+constexpr std::uintmax_t kLargestFile = std::uintmax_t(4) << 30;
 
-std::uint64_t fnv1a(const std::string& text) {
+std::uint64_t fnv1a(const char* bytes, std::size_t size) {
   std::uint64_t hash = 14695981039346656037ull;
-  for (unsigned char c : text) {
-    hash ^= c;
+  for (std::size_t i = 0; i < size; ++i) {
+    hash ^= static_cast<unsigned char>(bytes[i]);
     hash *= 1099511628211ull;
   }
   return hash;
 }
+
+std::uint64_t fnv1a(const std::string& text) { return fnv1a(text.data(), text.size()); }
 
 std::string keyText(const scene::EnvironmentMap& map, const ModelPairs& models, const PrefilterSettings& settings,
                     const std::string& builder) {
@@ -115,6 +124,7 @@ class Reader {
   }
   bool ok() const { return ok_; }
   bool atEnd() const { return position_ == data_.size(); }
+  std::size_t position() const { return position_; }
 
  private:
   bool take(std::uint64_t size) {
@@ -174,10 +184,18 @@ bool headMatches(Reader& r, const std::string& key) {
   return r.ok() && std::string(storedKey.begin(), storedKey.end()) == key;
 }
 
-// The tail it ends with, which a truncated file lacks.
-void putTail(Writer& w) { w.putBytes(kMagic, sizeof kMagic); }
+// The tail it ends with: the checksum of every byte before it, and the
+// magic, which a truncated file lacks.
+void putTail(Writer& w) {
+  w.put(fnv1a(w.data().data(), w.data().size()));
+  w.putBytes(kMagic, sizeof kMagic);
+}
 
-bool tailMatches(Reader& r) { return r.matches(kMagic, sizeof kMagic) && r.ok() && r.atEnd(); }
+bool tailMatches(Reader& r, const std::vector<char>& data) {
+  const std::size_t payload = r.position();
+  const auto checksum = r.get<std::uint64_t>();
+  return r.matches(kMagic, sizeof kMagic) && r.ok() && r.atEnd() && checksum == fnv1a(data.data(), payload);
+}
 
 std::vector<char> serialize(const PrefilteredEnvironment& env, const std::string& key) {
   Writer w;
@@ -216,11 +234,14 @@ std::optional<PrefilteredEnvironment> deserialize(const std::vector<char>& data,
     if (!table) return std::nullopt;
     env.dfg.push_back(std::move(*table));
   }
-  if (!tailMatches(r)) return std::nullopt;
+  if (!tailMatches(r, data)) return std::nullopt;
   return env;
 }
 
 std::optional<std::vector<char>> readFile(const fs::path& file) {
+  // A FIFO would block the read and a device never end it.
+  std::error_code error;
+  if (!fs::is_regular_file(file, error) || fs::file_size(file, error) > kLargestFile || error) return std::nullopt;
   std::ifstream in(file, std::ios::binary);
   if (!in) return std::nullopt;
   std::vector<char> data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -260,14 +281,36 @@ std::optional<DfgTable> deserializeTable(const std::vector<char>& data, const st
   Reader r(data);
   if (!headMatches(r, key)) return std::nullopt;
   std::optional<DfgTable> table = getTable(r);
-  if (!table || !tailMatches(r)) return std::nullopt;
+  if (!table || !tailMatches(r, data)) return std::nullopt;
   return table;
+}
+
+bool allFinite(const std::vector<float>& values) {
+  return std::all_of(values.begin(), values.end(), [](float v) { return std::isfinite(v); });
+}
+
+bool tableFits(const DfgTable& table, int distribution, int geometry, const PrefilterSettings& settings) {
+  return table.distribution == distribution && table.geometry == geometry && table.size == settings.dfgSize &&
+         allFinite(table.scaleBias);
+}
+
+bool levelFits(const RadianceLevel& level) { return std::isfinite(level.alpha) && allFinite(level.rgb); }
+
+// What the renderers index without a check: a level per setting, a table
+// per model pair in request order, and finite values everywhere.
+bool environmentFits(const PrefilteredEnvironment& env, const ModelPairs& models, const PrefilterSettings& settings) {
+  if (env.levels.size() != std::size_t(settings.levels) || env.dfg.size() != models.size()) return false;
+  for (std::size_t i = 0; i < models.size(); ++i)
+    if (!tableFits(env.dfg[i], models[i].first, models[i].second, settings)) return false;
+  for (const glm::dvec3& c : env.irradianceSh)
+    if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) return false;
+  return std::all_of(env.levels.begin(), env.levels.end(), levelFits) && levelFits(env.irradianceMap);
 }
 
 // The stored value of `key` (file `<prefix>-<hash>.bin`) when present and
 // intact, else `build`'s, stored.
-template <class T, class Deserialize, class Build>
-T cached(const std::string& prefix, const std::string& key, Deserialize deserializeStored, Build build) {
+template <class T, class Deserialize, class Fits, class Build>
+T cached(const std::string& prefix, const std::string& key, Deserialize deserializeStored, Fits fits, Build build) {
   const std::optional<fs::path> directory = cacheDirectory();
   if (!directory) return build();
   char name[48];
@@ -275,7 +318,7 @@ T cached(const std::string& prefix, const std::string& key, Deserialize deserial
   const fs::path file = *directory / name;
   try {
     if (const auto data = readFile(file))
-      if (std::optional<T> stored = deserializeStored(*data, key)) return std::move(*stored);
+      if (std::optional<T> stored = deserializeStored(*data, key); stored && fits(*stored)) return std::move(*stored);
   } catch (const std::exception&) {  // a file too large to hold: a miss like any other bad file
   }
   T value = build();
@@ -288,12 +331,16 @@ T cached(const std::string& prefix, const std::string& key, Deserialize deserial
 PrefilteredEnvironment cachedPrefilter(const scene::EnvironmentMap& map, const ModelPairs& models,
                                        const PrefilterSettings& settings, const std::string& builder,
                                        const std::function<PrefilteredEnvironment()>& build) {
-  return cached<PrefilteredEnvironment>("prefiltered", keyText(map, models, settings, builder), deserialize, build);
+  return cached<PrefilteredEnvironment>(
+      "prefiltered", keyText(map, models, settings, builder), deserialize,
+      [&](const PrefilteredEnvironment& env) { return environmentFits(env, models, settings); }, build);
 }
 
 DfgTable cachedDfgTable(int distribution, int geometry, const PrefilterSettings& settings) {
-  return cached<DfgTable>("dfg", dfgKeyText(distribution, geometry, settings), deserializeTable,
-                          [&] { return dfgTable(distribution, geometry, settings); });
+  return cached<DfgTable>(
+      "dfg", dfgKeyText(distribution, geometry, settings), deserializeTable,
+      [&](const DfgTable& table) { return tableFits(table, distribution, geometry, settings); },
+      [&] { return dfgTable(distribution, geometry, settings); });
 }
 
 }  // namespace facet::ibl
