@@ -120,8 +120,10 @@ void runRender(const RenderCommandOptions& o) {
   const unsigned threads = chosenThreads(o.farm);
   if (backend == Backend::Gpu) limitLavapipeThreads(threads);
 
-  Renderer renderer(o.adapter);
   const scene::Camera still = scene.camera;
+  for (const RenderJob& job : jobs)  // every frame's camera before the first render
+    if (job.frame) frameCamera(still, scene.cameraKeys, o.farm, *job.frame);
+  Renderer renderer(o.adapter);
   nlohmann::json summary = {{"backend", o.backend},
                             {"width", width},
                             {"height", height},
