@@ -149,6 +149,10 @@ Scene wrap(scene::Scene s) { return Scene(std::make_shared<const detail::SceneDa
 
 }  // namespace
 
+Scene::Scene(std::shared_ptr<const detail::SceneData> data) : data_(std::move(data)) {
+  if (!data_) throw Error(ErrorKind::BadInput, "Scene: no scene data; make a Scene with loadScene or buildScene");
+}
+
 int Scene::width() const { return data_->scene.render.width; }
 int Scene::height() const { return data_->scene.render.height; }
 int Scene::objectCount() const { return int(data_->scene.objects.size()); }

@@ -63,8 +63,8 @@ struct ParityReport {
   std::string summary;  // the table `facet parity` prints
 };
 
-// Keeps the GPU device and its compiled kernels between renders; one thread
-// at a time. `adapter`: a substring of the adapter's name (default:
+// Keeps the GPU device and its compiled kernels between renders. Safe to
+// share between threads: its renders run one at a time. `adapter`: a substring of the adapter's name (default:
 // $FACET_ADAPTER, else the first hardware GPU, else lavapipe).
 class Renderer {
  public:
