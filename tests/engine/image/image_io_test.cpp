@@ -1,6 +1,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <fstream>
@@ -168,6 +169,33 @@ TEST_F(ImageIo, TwoSpellingsOfOneFileAreTheSameFile) {
   EXPECT_TRUE(namesSameFile(dir_ / "alias.exr", dir_ / "tile.exr"));
   EXPECT_TRUE(namesSameFile(dir_ / "new.exr", dir_ / "sub" / ".." / "new.exr"));
   EXPECT_FALSE(namesSameFile(dir_ / "tile.exr", dir_ / "other.exr"));
+}
+
+TEST_F(ImageIo, ANameTooLongForItsTemporaryIsRefusedBeforeTheWork) {
+  EXPECT_EQ(outputPathError(dir_ / (std::string(225, 'a') + ".exr")), "accepted");
+  EXPECT_NE(outputPathError(dir_ / (std::string(226, 'a') + ".exr")).find("the file name is 230 bytes, more than 229"),
+            std::string::npos);
+}
+
+TEST_F(ImageIo, TemporariesOfAKilledWriterAreRemovedByTheNextWrite) {
+  // pid_max is at most 2^22, so no process has this pid; this process's is alive.
+  const fs::path orphan = dir_ / "out.exr.tmp-999999999-17";
+  const fs::path live = dir_ / ("out.exr.tmp-" + std::to_string(getpid()) + "-17");
+  const fs::path otherOutput = dir_ / "other.exr.tmp-999999999-17";
+  for (const fs::path& file : {orphan, live, otherOutput}) std::ofstream(file) << "partial";
+  writeAllOrNothing({exrFile(dir_ / "out.exr", Image(2, 2))});
+  EXPECT_FALSE(fs::exists(orphan));
+  EXPECT_TRUE(fs::exists(live)) << "a running writer's temporary is its own";
+  EXPECT_TRUE(fs::exists(otherOutput)) << "only the destinations written are swept";
+}
+
+TEST_F(ImageIo, AFullDiskIsNamedAsSuch) {
+  try {
+    writeBytes("/dev/full", std::vector<std::uint8_t>(4096, 1), "preview.png");
+    FAIL() << "writing to /dev/full succeeded";
+  } catch (const OutputError& e) {
+    EXPECT_STREQ(e.what(), "preview.png: cannot write: No space left on device");
+  }
 }
 
 TEST(ImageSize, ImpossibleSizesAreRejected) {
