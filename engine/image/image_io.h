@@ -5,6 +5,8 @@
 // writer is exr_file.h.
 #pragma once
 
+#include <signal.h>
+
 #include <filesystem>
 #include <cstdint>
 #include <functional>
@@ -51,6 +53,21 @@ bool namesSameFile(const std::filesystem::path& a, const std::filesystem::path& 
 // untouched; temporaries a killed run left of the same destinations are
 // removed first.
 void writeAllOrNothing(const std::vector<OutputFile>& files);
+
+// Holds SIGINT, SIGTERM and SIGHUP back while it lives, so that the renames
+// that put a set of outputs in place are not cut short: an interrupted
+// command ends with the old set or the new one. The signals are delivered
+// when it ends.
+class SignalsHeld {
+ public:
+  SignalsHeld();
+  ~SignalsHeld();
+  SignalsHeld(const SignalsHeld&) = delete;
+  SignalsHeld& operator=(const SignalsHeld&) = delete;
+
+ private:
+  sigset_t previous_;
+};
 
 // Writes `bytes` to `file`; a failure is an OutputError naming
 // `destination` and the system's reason ("No space left on device").
