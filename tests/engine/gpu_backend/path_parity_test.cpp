@@ -134,6 +134,21 @@ INSTANTIATE_TEST_SUITE_P(BothMethods, GpuPathParity,
                            return info.param == scene::IntersectionMethod::Exact ? "exact" : "tessellated";
                          });
 
+// A crop's paths draw the numbers of the full image's pixels, so its pixels
+// are the whole render's, bit for bit.
+TEST_F(GpuPaths, ACropTracesTheWholeRendersPaths) {
+  const scene::Scene scene = previewWithPaths(scene::IntersectionMethod::Tessellated, 2);
+  const scene::SceneGeometry geometry = scene::buildGeometry(scene);
+  gpu_backend::GpuRenderer renderer(device_);
+  const Image whole = renderer.render(scene, geometry).image;
+  const PixelRect window{13, 5, 37, 19};
+  const Image crop = renderer.render(scene, geometry, {}, window).image;
+  for (int y = window.y0; y < window.y1; ++y)
+    for (int x = window.x0; x < window.x1; ++x)
+      ASSERT_EQ(crop.beauty[crop.index(x - window.x0, y - window.y0)], whole.beauty[whole.index(x, y)])
+          << x << ", " << y;
+}
+
 // A measurement, not a check (run with --gtest_also_run_disabled_tests):
 // the scene file $FACET_PATHS_SCENE (its own bounces), on the GPU and the
 // CPU, both methods: GPU time per bounce, rays per second, the mean's
