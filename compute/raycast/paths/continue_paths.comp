@@ -38,8 +38,8 @@ layout(set = 0, binding = 33, std430) writeonly buffer PathRays { PathRayRecord 
 void main() {
   uint path = invocation_index();
   if (path >= frame.pixelCount * frame.raysPerPixel) return;
+  if (pathStates[path].alive == 0u) return;  // before loading the rest: most paths end early
   PathState state = pathStates[path];
-  if (state.alive == 0u) return;
   uint pixel = frame.firstPixel + path / frame.raysPerPixel, sample_index = path % frame.raysPerPixel;
   uint vertex = frame.pathVertex;
   vec3 throughput = path_throughput(state);
