@@ -103,7 +103,8 @@ ParityReport Renderer::parity(const Scene& input, const RenderSettings& settings
   return api::translateErrors([&] {
     const std::scoped_lock oneAtATime(state_->rendering);
     const scene::Scene s = withSettings(input, settings);
-    // The GPU first: it refuses what it cannot render (bounces above 0) before the CPU spends a render on it.
+    // The GPU first: it refuses what it cannot render (a scene beyond float's range) before the CPU spends a
+    // render on it.
     const RenderReport gpu = state_->engine.render(s, facet::Backend::Gpu);
     const RenderReport cpu = state_->engine.render(s, facet::Backend::Cpu);
     const analysis::ParityReport r = analysis::compareImages(cpu.image, gpu.image);

@@ -165,8 +165,8 @@ class Render(unittest.TestCase):
             self.renderer.render(scene("prefiltered"), backend="cpu", bounces=1)
         with self.assertRaisesRegex(facet.Error, r"render settings: bounces: must be in \[0, 64\]"):
             self.renderer.render(scene("sampled"), backend="cpu", bounces=65)
-        with self.assertRaisesRegex(facet.Error, "CPU reference only"):
-            facet.render(scene("sampled"), backend="gpu", bounces=1)
+        on_gpu = self.renderer.render(scene("sampled"), backend="gpu", spp=1, bounces=1)
+        self.assertEqual(on_gpu["rays_per_bounce"][1]["rays"], paths["rays_per_bounce"][1]["rays"])
 
     def test_render_settings_are_checked(self):
         with self.assertRaisesRegex(facet.Error, r"render settings: width: must be in \[1, 16384\]"):
