@@ -87,8 +87,8 @@ void writePointsCsv(const fs::path& path, const std::vector<Point>& points) {
   for (const Point& p : points)
     rows.push_back({p.setup, formatNumber(p.alpha), methodName(p.method),
                     p.method == scene::IblMethod::Prefiltered ? "" : std::to_string(p.samples),
-                    formatNumber(p.milliseconds),
-                    formatNumber(p.prepMilliseconds), formatNumber(p.relativeRmse), formatNumber(p.maxAbsError)});
+                    formatNumber(p.milliseconds), formatNumber(p.prepMilliseconds), formatNumber(p.relativeRmse),
+                    formatNumber(p.maxAbsError)});
   writeCsv(
       path,
       {"setup", "alpha", "method", "samples", "milliseconds", "prep_milliseconds", "relative_rmse", "max_abs_error"},
@@ -111,7 +111,9 @@ double errorSlope(const std::vector<Point>& points, const std::string& setup, do
   return sxy / sxx;
 }
 
-std::string slopeLabel(double slope) { return std::isnan(slope) ? "" : ", slope " + formatNumber(std::round(slope * 100) / 100); }
+std::string slopeLabel(double slope) {
+  return std::isnan(slope) ? "" : ", slope " + formatNumber(std::round(slope * 100) / 100);
+}
 
 // One panel per setup; per alpha a colour, sampled as a solid line through
 // its N points (N written beside the first alpha's), filtered as a dashed
@@ -147,8 +149,9 @@ void writeChart(const fs::path& directory, const std::vector<std::string>& setup
              << slopeLabel(errorSlope(points, setup, alphas[a], scene::IblMethod::Sampled)) << "', DATA index "
              << block + 1 << " using 1:2 with linespoints lw 2 dt 2 pt 9 ps 0.8 lc rgb '" << colour
              << "' title 'filtered, alpha " << label
-             << slopeLabel(errorSlope(points, setup, alphas[a], scene::IblMethod::Filtered)) << "', DATA index " << block + 2 << " using 1:2 with points pt 5 ps 2 lc rgb '" << colour
-             << "' title 'prefiltered, alpha " << label << "'";
+             << slopeLabel(errorSlope(points, setup, alphas[a], scene::IblMethod::Filtered)) << "', DATA index "
+             << block + 2 << " using 1:2 with points pt 5 ps 2 lc rgb '" << colour << "' title 'prefiltered, alpha "
+             << label << "'";
       if (a == 0)
         for (std::size_t curve : {block, block + 1})
           script << ", DATA index " << curve
@@ -217,14 +220,8 @@ void writeIblChart(Renderer& renderer, const IblChartSettings& settings) {
         }
         const ImageError error = compareToReference(image, reference.image);
         if (error.compared == 0) throw std::runtime_error("ibl-chart: the reference image covers no pixel");
-        Point p{setup,
-                alpha,
-                method,
-                samples,
-                median(times),
-                median(preparations),
-                error.relativeRmse,
-                error.maxAbsolute};
+        Point p{
+            setup, alpha, method, samples, median(times), median(preparations), error.relativeRmse, error.maxAbsolute};
         const std::string name = method == scene::IblMethod::Prefiltered
                                      ? std::string("prefiltered")
                                      : methodName(method) + (" N=" + std::to_string(samples));
@@ -257,10 +254,6 @@ void writeIblChart(Renderer& renderer, const IblChartSettings& settings) {
                                toString(backend) + ", reference: sampled N=" + std::to_string(referenceSamples) +
                                ", occlusion off, no punctual lights";
   writeChart(output, setups, settings.alphas, points, subtitle);
-  std::printf(
-      "wrote %s/ibl_chart.csv, ibl_chart.svg, ibl_chart.png, antialiasing.csv and a reference | prefiltered PNG per "
-      "setup and alpha\n",
-      output.c_str());
 }
 
 }  // namespace facet::analysis

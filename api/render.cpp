@@ -2,6 +2,8 @@
 // as named AOV planes.
 #include "facet/render.h"
 
+#include <mutex>
+
 #include "analysis/parity.h"
 #include "api/errors.h"
 #include "api/scene_data.h"
@@ -77,6 +79,8 @@ const Aov& Image::aov(const std::string& name) const {
 
 struct Renderer::State {
   explicit State(const std::string& adapter) : engine(adapter) {}
+  // The engine's renderer holds one GPU context and its buffers: one render at a time.
+  std::mutex rendering;
   facet::Renderer engine;
 };
 
@@ -85,6 +89,7 @@ Renderer::~Renderer() = default;
 
 RenderResult Renderer::render(const Scene& input, const RenderSettings& settings) {
   return api::translateErrors([&] {
+    const std::scoped_lock oneAtATime(state_->rendering);
     const RenderReport report = state_->engine.render(
         withSettings(input, settings), settings.backend == Backend::Cpu ? facet::Backend::Cpu : facet::Backend::Gpu);
     RenderResult result{publicImage(report.image), report.device, report.totalMilliseconds(), {}};
@@ -96,8 +101,10 @@ RenderResult Renderer::render(const Scene& input, const RenderSettings& settings
 
 ParityReport Renderer::parity(const Scene& input, const RenderSettings& settings) {
   return api::translateErrors([&] {
+    const std::scoped_lock oneAtATime(state_->rendering);
     const scene::Scene s = withSettings(input, settings);
-    // The GPU first: it refuses what it cannot render (bounces above 0) before the CPU spends a render on it.
+    // The GPU first: it refuses what it cannot render (a scene beyond float's range) before the CPU spends a
+    // render on it.
     const RenderReport gpu = state_->engine.render(s, facet::Backend::Gpu);
     const RenderReport cpu = state_->engine.render(s, facet::Backend::Cpu);
     const analysis::ParityReport r = analysis::compareImages(cpu.image, gpu.image);

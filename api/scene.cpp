@@ -9,6 +9,7 @@
 #include "api/material.h"
 #include "api/scene_data.h"
 #include "scenes/input_error.h"
+#include "scenes/camera_rules.h"
 #include "scenes/scene_file.h"
 #include "scenes/value_rules.h"
 
@@ -98,9 +99,7 @@ scene::Camera engineCamera(const Camera& camera) {
   out.up = direction(camera.up, "camera.up");
   out.verticalFovDegrees =
       inRange(camera.verticalFovDegrees, scene::kMinFovDegrees, scene::kMaxFovDegrees, "camera.verticalFovDegrees");
-  if (glm::length(out.target - out.eye) < 1e-12) fail("camera", "eye and target must differ");
-  if (glm::length(glm::cross(glm::normalize(out.target - out.eye), out.up)) < 1e-9)
-    fail("camera", "up must not be parallel to the view direction");
+  if (const char* problem = scene::cameraProblem(out)) fail("camera", problem);
   return out;
 }
 
@@ -149,6 +148,10 @@ scene::Scene engineScene(const SceneDescription& d) {
 Scene wrap(scene::Scene s) { return Scene(std::make_shared<const detail::SceneData>(detail::SceneData{std::move(s)})); }
 
 }  // namespace
+
+Scene::Scene(std::shared_ptr<const detail::SceneData> data) : data_(std::move(data)) {
+  if (!data_) throw Error(ErrorKind::BadInput, "Scene: no scene data; make a Scene with loadScene or buildScene");
+}
 
 int Scene::width() const { return data_->scene.render.width; }
 int Scene::height() const { return data_->scene.render.height; }

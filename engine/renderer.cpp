@@ -102,10 +102,6 @@ RenderReport Renderer::render(const scene::Scene& scene, Backend backend, const 
     throw std::invalid_argument("crop " + report.window.text() + ": must be a non-empty rectangle inside the " +
                                 std::to_string(scene.render.width) + "x" + std::to_string(scene.render.height) +
                                 " image");
-  if (backend == Backend::Gpu && scene.render.bounces > 0)
-    throw std::invalid_argument("bounces " + std::to_string(scene.render.bounces) +
-                                ": paths of more than 0 bounces render on the CPU reference only for now "
-                                "(--backend cpu)");
   if (backend == Backend::Gpu) refuseTransmissionOnGpu(scene);
   Stopwatch clock;
   scene::SceneGeometry geometry = scene::buildGeometry(scene);
@@ -137,6 +133,8 @@ RenderReport Renderer::render(const scene::Scene& scene, Backend backend, const 
       report.newtonFallbacks = result.newtonFallbacks;
       report.cells = result.cells;
       report.gpuBytes = result.gpuBytes;
+      for (const gpu_backend::GpuBounceRays& rays : result.raysPerBounce)
+        report.raysPerBounce.push_back({rays.rays, rays.hits, rays.shadowRays});
       break;
     }
   }

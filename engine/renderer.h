@@ -36,7 +36,7 @@ struct RenderReport {
   std::vector<StageTime> stages;
   std::uint64_t primaryRays = 0;
   std::uint64_t shadowRays = 0;
-  // CPU, with bounces > 0: the rays of bounce 0 (camera rays) to the last
+  // With bounces > 0 (either backend): the rays of bounce 0 (camera rays) to the last
   std::vector<cpu::BounceRays> raysPerBounce;
   std::uint64_t newtonFallbacks = 0;  // GPU exact method: cells whose domain was subdivided
   std::uint64_t cells = 0;            // GPU: of the micro-grid

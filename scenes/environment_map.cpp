@@ -29,6 +29,7 @@
 
 #include "scenes/exr_header.h"
 #include "scenes/input_error.h"
+#include "scenes/input_file.h"
 
 namespace facet::scene {
 namespace {
@@ -264,8 +265,7 @@ EnvironmentMap loadEnvironmentMap(const fs::path& file) {
   if (extension != ".exr" && extension != ".hdr")
     throw InputError(source, 0, "unknown environment map format",
                      "expected .exr (OpenEXR) or .hdr (Radiance), not '" + file.extension().string() + "'");
-  std::error_code error;
-  if (!fs::is_regular_file(file, error)) throw InputError(source, 0, "cannot open the environment map", "no such file");
+  checkInputFile(file, "the environment map");
 
   EnvironmentMap map = extension == ".exr" ? readExr(file) : readHdr(file);
   zeroBadTexels(map);

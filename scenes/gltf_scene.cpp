@@ -1,5 +1,6 @@
 // glTF 2.0 scenes through tinygltf; the mapping to facet's scene is
 // docs/scene-format.md, "glTF 2.0".
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -55,6 +56,37 @@ std::string_view glbJson(std::string_view file) {
   return file.substr(20, length);
 }
 
+// An image stored in a buffer view is decoded by tinygltf while it parses,
+// from a pointer it does not bound: every such view must lie inside its
+// buffer before tinygltf sees the file. Malformed JSON is left to tinygltf.
+void checkImageViews(std::string_view json, const std::string& source) {
+  const nlohmann::json gltf = nlohmann::json::parse(json, nullptr, false);
+  if (!gltf.is_object() || !gltf.contains("images") || !gltf["images"].is_array()) return;
+  const auto list = [&](const char* name) {
+    return gltf.contains(name) && gltf[name].is_array() ? gltf[name] : nlohmann::json::array();
+  };
+  const nlohmann::json views = list("bufferViews"), buffers = list("buffers");
+  const auto number = [](const nlohmann::json& object, const char* key) -> double {
+    return object.is_object() && object.contains(key) && object[key].is_number() ? object[key].get<double>() : 0.0;
+  };
+  for (std::size_t i = 0; i < gltf["images"].size(); ++i) {
+    const nlohmann::json& image = gltf["images"][i];
+    if (!image.is_object() || !image.contains("bufferView")) continue;
+    const std::string where = "images[" + std::to_string(i) + "].bufferView";
+    const double view = number(image, "bufferView");
+    if (!(view >= 0 && view < double(views.size())))
+      throw InputError(source, 0, where,
+                       "index out of range (the file has " + std::to_string(views.size()) + " buffer views)");
+    const nlohmann::json& v = views[std::size_t(view)];
+    const double buffer = number(v, "buffer");
+    if (!(buffer >= 0 && buffer < double(buffers.size())))
+      throw InputError(source, 0, where, "its view's buffer index is out of range");
+    const double end = number(v, "byteOffset") + number(v, "byteLength");
+    if (!(end <= number(buffers[std::size_t(buffer)], "byteLength")))
+      throw InputError(source, 0, where, "its view ends past the end of its buffer");
+  }
+}
+
 }  // namespace
 
 Scene loadGltfScene(const std::filesystem::path& path) {
@@ -66,6 +98,7 @@ Scene loadGltfScene(const std::filesystem::path& path) {
   if (jsonNesting(binary ? glbJson(file) : file, kMaxJsonNesting) > kMaxJsonNesting)
     throw InputError(source, 0, "JSON nesting",
                      "arrays and objects nest deeper than " + std::to_string(kMaxJsonNesting) + " levels");
+  checkImageViews(binary ? glbJson(file) : file, source);
   tinygltf::Model model;
   tinygltf::TinyGLTF loader;
   std::string error, warning;

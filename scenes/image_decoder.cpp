@@ -14,6 +14,7 @@
 #include <string>
 
 #include "scenes/input_error.h"
+#include "scenes/input_file.h"
 
 namespace facet::scene {
 
@@ -31,6 +32,7 @@ std::vector<float> normalized(const T* samples, std::size_t count, float range) 
 
 DecodedImage decodeImage(const std::filesystem::path& file, int maxSize) {
   const std::string source = file.string();
+  checkInputFile(file, "the image");
   DecodedImage image;
   if (!stbi_info(source.c_str(), &image.width, &image.height, &image.components))
     throw InputError(source, 0, "cannot decode the image (PNG or JPEG expected)", stbi_failure_reason());

@@ -1,6 +1,7 @@
 #include "scenes/obj_cage.h"
 
 #include "scenes/input_error.h"
+#include "scenes/input_file.h"
 
 #include <algorithm>
 #include <cctype>
@@ -394,7 +395,8 @@ class ObjReader {
 ControlCage parseObjCage(std::string_view text, const std::string& source) {
   ObjReader reader(source);
   int lineNumber = 0;
-  size_t start = 0;
+  // A UTF-8 byte-order mark (editors on Windows write one) is not part of the first line.
+  size_t start = text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0;
   while (start < text.size()) {
     size_t end = text.find('\n', start);
     if (end == std::string_view::npos) end = text.size();
@@ -407,6 +409,7 @@ ControlCage parseObjCage(std::string_view text, const std::string& source) {
 }
 
 ControlCage loadObjCage(const std::filesystem::path& path) {
+  checkInputFile(path, "the control cage");
   std::ifstream file(path, std::ios::binary);
   if (!file) throw InputError(path.string(), 0, "missing file", "cannot open for reading");
   std::ostringstream contents;

@@ -9,12 +9,14 @@
 #include <stdexcept>
 
 #include "scenes/input_error.h"
+#include "scenes/input_file.h"
 #include "scenes/obj_cage.h"
 #include "scenes/studio_environment.h"
 
 namespace facet::scene {
 
 Scene loadScene(const std::filesystem::path& path) {
+  checkInputFile(path, "the scene");
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });

@@ -3,6 +3,7 @@
 // (analysis/ibl_chart.h).
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -11,6 +12,7 @@
 
 #include "analysis/ibl_chart.h"
 #include "commands.h"
+#include "engine/image/output_folder.h"
 #include "data_folder.h"
 #include "material_options.h"
 #include "scene_options.h"
@@ -70,13 +72,19 @@ void runIblChart(ChartOptions o) {
   settings.base = scene::loadScene(o.scene);
   applyImageSize(o.size, settings.base);
   applyMethod("tess", settings.base);
-  settings.output = o.output;
+  StagedOutputFolder folder(o.output);
+  settings.output = folder.path();
   settings.environments.assign(o.environments.begin(), o.environments.end());
   settings.antialiasingSamples = o.quick ? std::vector<int>{1, 4} : std::vector<int>{1, 4, 16, 64, 256};
   settings.repeats = o.repeats;
   settings.backend = o.backend == "cpu" ? Backend::Cpu : Backend::Gpu;
   Renderer renderer(o.adapter);
   analysis::writeIblChart(renderer, settings);
+  folder.publish();
+  std::printf(
+      "wrote %s/ibl_chart.csv, ibl_chart.svg, ibl_chart.png, antialiasing.csv and a reference | prefiltered PNG per "
+      "setup and alpha\n",
+      o.output.c_str());
 }
 
 }  // namespace

@@ -26,7 +26,17 @@ struct MergeOptions {
 void runMerge(const MergeOptions& o) {
   const PreviewOptions preview = chosenPreview(o.preview);
   checkOutputPath("-o", o.exr);
-  if (!o.png.empty()) checkOutputPath("--png", o.png);
+  checkOutputExtension("-o", o.exr, ".exr");
+  if (!o.png.empty()) {
+    checkOutputPath("--png", o.png);
+    checkOutputExtension("--png", o.png, ".png");
+  }
+  // merge never overwrites what it reads.
+  for (const std::string& tile : o.tiles) {
+    if (namesSameFile(tile, o.exr)) throw OutputError("-o '" + o.exr + "': names the input tile '" + tile + "'");
+    if (!o.png.empty() && namesSameFile(tile, o.png))
+      throw OutputError("--png '" + o.png + "': names the input tile '" + tile + "'");
+  }
   mergeTiles({o.tiles.begin(), o.tiles.end()}, {o.exr, o.png, preview});
   if (!o.quiet)
     std::printf("merged %zu tiles into %s%s%s\n", o.tiles.size(), o.exr.c_str(), o.png.empty() ? "" : " and ",

@@ -77,10 +77,6 @@ void runParity(const ParityOptions& o) {
   if (!o.subdivision.empty()) scene::overrideSubdivision(scene, o.subdivision, "--subdivision");
   applyEnergyCompensation(o.energyCompensation, scene);
   if (o.bounces) scene.render.bounces = *o.bounces;
-  if (scene.render.bounces > 0)
-    throw std::invalid_argument("bounces " + std::to_string(scene.render.bounces) +
-                                " (--bounces or the scene's render.bounces): parity needs both backends, and paths "
-                                "of more than 0 bounces render on the CPU reference only for now (--backend cpu)");
   // Both backends' images, and the heat map's when one is asked for.
   checkImagesFitInMemory(scene, o.heatmap.empty() ? 2 : 3, o.size.empty() ? o.scene + ": image size" : "--size");
   const RenderReport cpu = render(scene, Backend::Cpu);
@@ -112,7 +108,7 @@ void addParityCommand(CLI::App& app) {
       "--subdivision", o->subdivision,
       "Subdivision of every object, whatever the file chose: catmull-clark, or none (the polygons as authored)");
   addEnergyCompensationOption(*c, o->energyCompensation);
-  c->add_option("--bounces", o->bounces, "Continuations of each camera sample's path (above 0: the CPU only, for now)")
+  c->add_option("--bounces", o->bounces, "Continuations of each camera sample's path")
       ->check(CLI::Range(0, scene::kMaxBounces));
   c->add_option("--heatmap", o->heatmap, "Write the per-pixel error (in units of tolerance) as a PNG");
   c->add_option("--adapter", o->adapter, "GPU adapter: a substring of its name");

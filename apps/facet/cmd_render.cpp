@@ -98,9 +98,9 @@ void checkOutputs(const RenderJob& job, const RenderCommandOptions& o) {
   if (o.writeExr) checkOutputPath("-o", job.exr);
   if (job.png.empty()) return;
   checkOutputPath(o.pngFlag, job.png);
-  if (o.writeExr &&
-      std::filesystem::absolute(job.png).lexically_normal() == std::filesystem::absolute(job.exr).lexically_normal())
+  if (o.writeExr && namesSameFile(job.png, job.exr))
     throw OutputError("--png '" + job.png + "': names the same file as -o");
+  checkOutputExtension(o.pngFlag, job.png, ".png");
 }
 
 void runRender(const RenderCommandOptions& o) {
@@ -120,8 +120,10 @@ void runRender(const RenderCommandOptions& o) {
   const unsigned threads = chosenThreads(o.farm);
   if (backend == Backend::Gpu) limitLavapipeThreads(threads);
 
-  Renderer renderer(o.adapter);
   const scene::Camera still = scene.camera;
+  for (const RenderJob& job : jobs)  // every frame's camera before the first render
+    if (job.frame) frameCamera(still, scene.cameraKeys, o.farm, *job.frame);
+  Renderer renderer(o.adapter);
   nlohmann::json summary = {{"backend", o.backend},
                             {"width", width},
                             {"height", height},
@@ -140,8 +142,7 @@ void runRender(const RenderCommandOptions& o) {
 
     std::vector<OutputFile> outputs;
     if (o.writeExr)
-      outputs.push_back(
-          exrFile(job.exr, report.image, exrOptions(scene, o.backend, report.window, o.exrFlags)));
+      outputs.push_back(exrFile(job.exr, report.image, exrOptions(scene, o.backend, report.window, o.exrFlags)));
     if (!job.png.empty()) outputs.push_back(pngFile(job.png, report.image, preview));
     writeAllOrNothing(outputs);
 
@@ -159,8 +160,9 @@ void addRenderCommand(CLI::App& app) {
   auto o = std::make_shared<RenderCommandOptions>();
   auto* c = app.add_subcommand("render", "Render a scene (.json), a control cage (.obj) or a glTF file");
   c->add_option("scene", o->scene, "Scene file")->required()->check(CLI::ExistingFile);
-  auto* output = c->add_option("-o,--output", o->output,
-                               "An .exr with the beauty and the --aovs layers, or a .png preview ('#' for the frame number)");
+  auto* output =
+      c->add_option("-o,--output", o->output,
+                    "An .exr with the beauty and the --aovs layers, or a .png preview ('#' for the frame number)");
   c->add_option("--png", o->png, "An 8-bit sRGB preview, beside -o's EXR or alone");
   addPreviewOptions(*c, o->preview);
   addSceneOverrideOptions(*c, o->scene_overrides);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "engine/camera/camera_path.h"
+#include "scenes/camera_rules.h"
 
 namespace facet::cli {
 
@@ -14,9 +15,14 @@ void addFarmOptions(CLI::App& command, FarmOptions& o) {
                                   "Render only pixels x0 <= x < x1, y0 <= y < y1: an EXR whose data window is the crop "
                                   "inside the full image");
   command.add_option("--tile", o.tile, "Render tile I of N (0-based), a band of rows: --tile 2/8")->excludes(crop);
-  auto* frames = command.add_option("--frames", o.frames,
-                                    "Render frames A to B (every STEP): A-B or A-B:STEP; '#' in -o and "
-                                    "--png stands for the frame number, zero-padded");
+  auto* frames = command.add_option_function<std::string>(
+      "--frames",
+      [&o](const std::string& range) {
+        o.frames = range;
+        o.framesGiven = true;
+      },
+      "Render frames A to B (every STEP): A-B or A-B:STEP; '#' in -o and "
+      "--png stands for the frame number, zero-padded");
   command.add_option("--frame", o.frame, "Render frame N alone")->excludes(frames)->check(CLI::NonNegativeNumber);
   command.add_option("--turntable", o.turntable, "Orbit the eye about the target: frame f of N at 2 pi f / N")
       ->check(CLI::Range(1, 1000000));
@@ -74,6 +80,8 @@ std::optional<PixelRect> chosenCrop(const FarmOptions& o, int width, int height)
 
 std::vector<int> chosenFrames(const FarmOptions& o) {
   if (o.frame) return {*o.frame};
+  if (o.framesGiven && o.frames.empty())
+    throw std::invalid_argument("--frames '': expected A-B or A-B:STEP with 0 <= A <= B, STEP >= 1");
   if (o.frames.empty()) {
     if (!o.turntable) return {};
     std::vector<int> all;
@@ -84,6 +92,10 @@ std::vector<int> chosenFrames(const FarmOptions& o) {
   if (v && v->size() == 2) v->push_back(1);
   if (!v || v->size() != 3 || (*v)[0] < 0 || (*v)[1] < (*v)[0] || (*v)[2] < 1)
     throw std::invalid_argument("--frames '" + o.frames + "': expected A-B or A-B:STEP with 0 <= A <= B, STEP >= 1");
+  const long long count = ((long long)(*v)[1] - (*v)[0]) / (*v)[2] + 1;
+  if (count > kMostFrames)
+    throw std::invalid_argument("--frames '" + o.frames + "': " + std::to_string(count) + " frames, more than " +
+                                std::to_string(kMostFrames) + " in one command; split the range across array tasks");
   std::vector<int> frames;
   for (long long f = (*v)[0]; f <= (*v)[1]; f += (*v)[2]) frames.push_back(int(f));
   return frames;
@@ -93,6 +105,11 @@ scene::Camera frameCamera(const scene::Camera& still, const std::vector<scene::C
                           int frame) {
   scene::Camera camera = keys.empty() ? still : camera::keyedCamera(keys, frame);
   if (o.turntable) camera = camera::turntableCamera(camera, frame, *o.turntable);
+  // Each key is a valid camera, but the line between two may pass through
+  // one that is not (the eye through the target, up through zero).
+  if (const char* problem = scene::cameraProblem(camera))
+    throw std::invalid_argument("frame " + std::to_string(frame) + ": the camera keys interpolate to a camera that " +
+                                "cannot render (" + problem + "); add a key in between");
   return camera;
 }
 

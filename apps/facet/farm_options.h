@@ -18,6 +18,7 @@ struct FarmOptions {
   std::string crop;    // x0,y0,x1,y1
   std::string tile;    // i/N
   std::string frames;  // A-B or A-B:step
+  bool framesGiven = false;
   std::optional<int> frame;
   std::optional<int> turntable;  // frames in a full orbit
   std::optional<unsigned> threads;
@@ -30,6 +31,10 @@ void addFarmOptions(CLI::App& command, FarmOptions& options);
 // The part of the width x height image the flags choose; none: all of it.
 // Throws std::invalid_argument naming the flag.
 std::optional<PixelRect> chosenCrop(const FarmOptions& options, int width, int height);
+
+// A command renders at most this many frames; a farm splits longer ranges
+// across array tasks (docs/reliability.md, "Limits").
+constexpr long long kMostFrames = 1000000;
 
 // The frames to render, in order; empty for a still (no frame flag).
 std::vector<int> chosenFrames(const FarmOptions& options);

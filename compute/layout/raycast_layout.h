@@ -64,6 +64,61 @@ struct RenderCounters {
   uint shadowFallbackX;
   uint shadowFallbackY;
   uint shadowFallbackZ;
+  uint pathRays;  // continuation rays, appended by the continuation kernel (paths only)
+  uint pathX;
+  uint pathY;
+  uint pathZ;
+  uint pathHits;  // rays of this bounce that hit: camera rays at bounce 0, then continuation rays
+};
+
+// A continuation ray of the compacted list (paths, docs/rendering.md
+// "Paths"), with the camera ray whose path it continues.
+struct PathRayRecord {
+  RayRecord ray;
+  uint path;
+};
+
+// A path's state, one per camera ray: its throughput T1 ... Tk, and the
+// vertex it continues from (eye-relative position, shading and geometric
+// normals facing v, the BRDF after textures, energy compensation's specular
+// scale). `alive` is 0 once the path has ended (or never started: a miss or
+// an unshaded sample).
+struct PathState {
+  float throughputR;
+  float throughputG;
+  float throughputB;
+  uint alive;
+  float positionX;
+  float positionY;
+  float positionZ;
+  float nX;
+  float nY;
+  float nZ;
+  float ngX;
+  float ngY;
+  float ngZ;
+  float vX;
+  float vY;
+  float vZ;
+  int dModel;
+  int gModel;
+  int fModel;
+  float alpha;
+  float f0R;
+  float f0G;
+  float f0B;
+  float etaR;
+  float etaG;
+  float etaB;
+  float kR;
+  float kG;
+  float kB;
+  float diffuseR;
+  float diffuseG;
+  float diffuseB;
+  float specularR;
+  float specularG;
+  float specularB;
 };
 
 // An exact cell that Newton did not settle, deferred to the fallback pass
@@ -219,6 +274,11 @@ struct FrameParams {
   uint dfgOffset;   // prefiltered: the DFG tables, each dfgSize^2 (scale, bias) texels
   uint dfgSize;
   uint compensationSize;  // energy compensation: each of its tables is compensationSize^2 (scale, bias) texels
+  // Paths: the vertex the bounce's continuation rays leave (0 for the camera
+  // rays' pass), and the scene's environment seed that keys their numbers
+  // (environmentSeed is then that of the vertex they hit).
+  uint pathVertex;
+  uint pathSeed;
 };
 
 // The AOVs of one pixel (beauty is written separately, as a vec4).

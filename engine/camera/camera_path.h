@@ -22,7 +22,8 @@ inline scene::Camera keyedCamera(const std::vector<scene::CameraKey>& keys, doub
                                      [](double f, const scene::CameraKey& key) { return f < key.frame; });
   const scene::CameraKey& a = *(next - 1);
   const scene::CameraKey& b = *next;
-  const double t = (frame - a.frame) / double(b.frame - a.frame);
+  // In double: keys may lie more than 2^31 frames apart.
+  const double t = (frame - double(a.frame)) / (double(b.frame) - double(a.frame));
   scene::Camera c;
   c.eye = glm::mix(a.camera.eye, b.camera.eye, t);
   c.target = glm::mix(a.camera.target, b.camera.target, t);

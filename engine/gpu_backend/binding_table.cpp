@@ -36,7 +36,11 @@ BindingTable bindingTable(const GeometryBuffers& g, const ShadingBuffers& s, con
           {28, &g.texcoords},
           {29, &s.textureTexels},
           {30, &s.textureLevels},
-          {31, &s.textureTable}};
+          {31, &s.textureTable},
+          // Without paths no kernel that runs reads or writes these: they
+          // name a buffer that is there, so that nothing is allocated.
+          {32, b.pathStates ? &b.pathStates : &b.hits},
+          {33, b.pathRays ? &b.pathRays : &b.hits}};
 }
 
 gpu::BindGroup bindGroup(gpu::Device& d, const gpu::ComputePipeline& pipeline, const std::string& label,

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <optional>
 
+#include "engine/gpu_backend/band_passes.h"
 #include "engine/gpu_backend/binding_table.h"
 #include "engine/gpu_backend/frame_params.h"
 #include "engine/gpu_backend/gpu_scene.h"
@@ -43,63 +44,6 @@ ibl::EnvironmentLighting prepareEnvironment(gpu::Device& d, const scene::Scene& 
   });
 }
 
-// The pipelines of one render, by the scene's specialization constants.
-struct Kernels {
-  gpu::ComputePipeline *intersect, *surface, *dispatchArgs, *shadow, *gather, *resolve;
-  gpu::ComputePipeline *cameraFallbacks = nullptr, *resolveCameraFallbacks = nullptr, *shadowFallbacks = nullptr;
-};
-
-// A BRDF model as a specialization constant when every object's material
-// uses the same one, else -1 (read per material).
-double sharedModel(const scene::Scene& scene, int materials::Material::*model) {
-  int shared = -1;
-  for (const scene::Object& object : scene.objects) {
-    const int id = scene.materials[std::size_t(object.material)].*model;
-    if (shared >= 0 && shared != id) return -1;
-    shared = id;
-  }
-  return shared;
-}
-
-double environmentMethod(const scene::Scene& scene) {
-  if (!scene.environment) return 0;
-  switch (scene.environment->method) {
-    case scene::IblMethod::Sampled:
-      return 1;
-    case scene::IblMethod::Prefiltered:
-      return 2;
-    case scene::IblMethod::Filtered:
-      return 3;
-  }
-  return 0;
-}
-
-Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::EnvironmentLighting* lighting,
-                const ibl::CompensationTables& compensation, bool tessellated) {
-  const std::vector<gpu::ConstantEntry> method{{"METHOD", tessellated ? 1.0 : 0.0}};
-  Kernels k{&pipelines.get("intersect", method),
-            &pipelines.get("surface", {{"LIGHT_COUNT", double(scene.lights.size())},
-                                       {"ENVIRONMENT", environmentMethod(scene)},
-                                       {"OCCLUSION", scene.environment && scene.environment->occlusion ? 1.0 : 0.0},
-                                       {"ENVIRONMENT_SAMPLES", lighting && lighting->environmentSamples ? 1.0 : 0.0},
-                                       {"D_MODEL", sharedModel(scene, &materials::Material::distribution)},
-                                       {"G_MODEL", sharedModel(scene, &materials::Material::geometry)},
-                                       {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)},
-                                       {"TEXTURES", scene.textures.empty() ? 0.0 : 1.0},
-                                       {"EMISSION", double(emissionSlots(scene))},
-                                       {"COMPENSATION", compensation.tables.empty() ? 0.0 : 1.0}}),
-            &pipelines.get("dispatch_args", {}),
-            &pipelines.get("shadow", method),
-            &pipelines.get("gather", {}),
-            &pipelines.get("resolve", {})};
-  if (!tessellated) {
-    k.cameraFallbacks = &pipelines.get("fallback", {{"SHADOW", 0}});
-    k.resolveCameraFallbacks = &pipelines.get("fallback_resolve", {});
-    k.shadowFallbacks = &pipelines.get("fallback", {{"SHADOW", 1}});
-  }
-  return k;
-}
-
 // Stage: dicing, the micro-grid and every patch's quadtree, then the top
 // levels refitted to them.
 void dice(gpu::Device& d, PipelineCache& pipelines, const GpuScene& packed, bool tessellated, const BindingTable& table,
@@ -120,48 +64,6 @@ void dice(gpu::Device& d, PipelineCache& pipelines, const GpuScene& packed, bool
   d.queue().submit(encoder.finish());
   d.queue().waitIdle();
   clock.read(Pass::DiceGrid, Pass::Refit);
-}
-
-// Stages per band: trace and shade, one command buffer, each list worked
-// off by an indirect dispatch sized from its length.
-void traceBand(gpu::Device& d, const Kernels& k, const BindingTable& table, BandBuffers& band, std::uint64_t rays,
-               std::uint64_t pixels, StageClock& clock) {
-  auto group = [&](const gpu::ComputePipeline* p, const char* label) { return bindGroup(d, *p, label, table); };
-  auto indirect = [&](Pass pass, const gpu::ComputePipeline* p, const gpu::BindGroup& g, std::size_t arguments,
-                      gpu::CommandEncoder& encoder) {
-    clock.begin(encoder, pass, *p, g).dispatchWorkgroupsIndirect(band.counters, arguments);
-  };
-  const gpu::BindGroup dispatchArgs = group(k.dispatchArgs, "dispatch args");
-  auto compact = [&](Pass pass, gpu::CommandEncoder& encoder) {
-    clock.begin(encoder, pass, *k.dispatchArgs, dispatchArgs).dispatchWorkgroups(1);
-  };
-  gpu::CommandEncoder encoder = d.createCommandEncoder({"render band"});
-  encoder.clearBuffer(band.counters);
-  clock.dispatch(encoder, Pass::Intersect, *k.intersect, group(k.intersect, "intersect"), rays);
-  if (k.cameraFallbacks) {
-    compact(Pass::CompactCameraFallbacks, encoder);
-    indirect(Pass::CameraFallbacks, k.cameraFallbacks, group(k.cameraFallbacks, "camera ray fallbacks"),
-             offsetof(layout::RenderCounters, cameraFallbackX), encoder);
-    indirect(Pass::ResolveCameraFallbacks, k.resolveCameraFallbacks,
-             group(k.resolveCameraFallbacks, "resolve fallbacks"), offsetof(layout::RenderCounters, cameraFallbackX),
-             encoder);
-  }
-  clock.dispatch(encoder, Pass::Surface, *k.surface, group(k.surface, "surface"), rays);
-  compact(Pass::CompactShadowRays, encoder);
-  indirect(Pass::Shadow, k.shadow, group(k.shadow, "shadow"), offsetof(layout::RenderCounters, shadowX), encoder);
-  if (k.shadowFallbacks) {
-    compact(Pass::CompactShadowFallbacks, encoder);
-    indirect(Pass::ShadowFallbacks, k.shadowFallbacks, group(k.shadowFallbacks, "shadow ray fallbacks"),
-             offsetof(layout::RenderCounters, shadowFallbackX), encoder);
-  }
-  clock.dispatch(encoder, Pass::Gather, *k.gather, group(k.gather, "gather"), rays);
-  clock.dispatch(encoder, Pass::Resolve, *k.resolve, group(k.resolve, "resolve"), pixels);
-  encoder.copyBufferToBuffer(band.aovs, 0, band.aovsHost, 0, pixels * sizeof(layout::PixelAovs));
-  encoder.copyBufferToBuffer(band.beauty, 0, band.beautyHost, 0, pixels * 16);
-  encoder.copyBufferToBuffer(band.counters, 0, band.countersHost, 0, band.counters.size());
-  d.queue().submit(encoder.finish());
-  d.queue().waitIdle();
-  clock.read(Pass::Intersect, Pass::Resolve);
 }
 
 }  // namespace
@@ -208,14 +110,17 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   const PixelRect window = crop.value_or(PixelRect::whole(width, scene.render.height));
   const std::uint64_t pixels = window.pixelCount();
   const std::uint64_t slotBytes = sizeof(layout::ShadowRayRecord) + 16;
-  const std::uint64_t rayBytes = sizeof(layout::HitRecord) + 16 + frame.slotsPerRay * slotBytes;
+  // Paths add a path state and a continuation ray record per camera ray.
+  const int bounces = scene.render.bounces;
+  const std::uint64_t pathBytes = bounces > 0 ? sizeof(layout::PathState) + sizeof(layout::PathRayRecord) : 0;
+  const std::uint64_t rayBytes = sizeof(layout::HitRecord) + 16 + frame.slotsPerRay * slotBytes + pathBytes;
   const std::uint64_t pixelBytes = frame.raysPerPixel * rayBytes + sizeof(layout::PixelAovs) + 16;
   const std::uint64_t bandPixels = std::min<std::uint64_t>(pixels, std::max<std::uint64_t>(1, kBandBytes / pixelBytes));
   // Fallbacks are rare (cells Newton leaves undecided); a band whose lists
   // overflow is rendered again with room for all.
   frame.fallbackCapacity = tessellated ? 0 : std::uint32_t(bandPixels * frame.raysPerPixel / 16 + 1024);
-  BandBuffers band =
-      allocateBands(d, bandPixels, bandPixels * frame.raysPerPixel, frame.slotsPerRay, frame.fallbackCapacity);
+  BandBuffers band = allocateBands(d, bandPixels, bandPixels * frame.raysPerPixel, frame.slotsPerRay,
+                                   frame.fallbackCapacity, bounces > 0);
   BindingTable table = bindingTable(geometryBuffers, shadingBuffers, band);
   result.cells = packed.cells;
 
@@ -232,19 +137,27 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
       frame.firstPixel = std::uint32_t(first);
       frame.pixelCount = std::uint32_t(count);
       d.queue().writeBuffer(band.frame, 0, &frame, sizeof(frame));
-      traceBand(d, k, table, band, count * frame.raysPerPixel, count, clock);
-      const layout::RenderCounters counters = band.countersHost.mapped<layout::RenderCounters>()[0];
-      const std::uint32_t needed = std::max(counters.cameraFallbacks, counters.shadowFallbacks);
+      const BandCounts counts = traceBand(d, k, table, band, frame, bounces, count * frame.raysPerPixel, count, clock);
+      const std::uint32_t needed = counts.neededFallbacks;
       if (needed > frame.fallbackCapacity) {
         frame.fallbackCapacity = needed;
-        band = allocateBands(d, bandPixels, bandPixels * frame.raysPerPixel, frame.slotsPerRay, needed);
+        band = allocateBands(d, bandPixels, bandPixels * frame.raysPerPixel, frame.slotsPerRay, needed, bounces > 0);
         table = bindingTable(geometryBuffers, shadingBuffers, band);
         continue;
       }
       readBand(band, first, count, width, window, origin, result.image);
       result.primaryRays += count * frame.raysPerPixel;
-      result.shadowRays += counters.shadowRays;
-      result.newtonFallbacks += counters.cameraFallbacks + counters.shadowFallbacks;
+      result.shadowRays += counts.shadowRays;
+      result.newtonFallbacks += counts.newtonFallbacks;
+      result.raysPerBounce.resize(counts.bounces.size());
+      result.bounceMilliseconds.resize(counts.bounceMilliseconds.size());
+      for (std::size_t b = 0; b < counts.bounces.size(); ++b) {
+        result.raysPerBounce[b].rays += counts.bounces[b].rays;
+        result.raysPerBounce[b].hits += counts.bounces[b].hits;
+        result.raysPerBounce[b].shadowRays += counts.bounces[b].shadowRays;
+      }
+      for (std::size_t b = 0; b < counts.bounceMilliseconds.size(); ++b)
+        result.bounceMilliseconds[b] += counts.bounceMilliseconds[b];
       first += count;
       finished += count;
       if (progress) progress(double(finished) / double(pixels));

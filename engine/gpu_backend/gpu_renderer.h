@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "engine/gpu/gpu.h"
+#include "engine/gpu_backend/band_passes.h"
 #include "engine/gpu_backend/pipeline_cache.h"
 #include "engine/image/image.h"
 #include "engine/image/pixel_rect.h"
@@ -37,6 +38,10 @@ struct GpuRenderResult {
   std::uint64_t cells = 0;            // of the micro-grid
   std::uint64_t newtonFallbacks = 0;  // exact cells whose domain was subdivided
   std::uint64_t gpuBytes = 0;         // scene arrays and one band's ray buffers
+  // Paths (bounces above 0): bounce 0's camera rays to the last bounce's
+  // continuation rays, and the GPU time of bounces 1 ... (continuation on).
+  std::vector<GpuBounceRays> raysPerBounce;
+  std::vector<double> bounceMilliseconds;
 };
 
 class GpuRenderer {

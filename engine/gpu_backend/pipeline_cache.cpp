@@ -21,7 +21,8 @@ PipelineCache::PipelineCache(gpu::Device& device) : device_(device) {
       {"fallback_resolve", raycast::spirv::fallback_resolve},
       {"shadow", raycast::spirv::shadow},
       {"gather", raycast::spirv::gather},
-      {"resolve", raycast::spirv::resolve}};
+      {"resolve", raycast::spirv::resolve},
+      {"continue_paths", raycast::spirv::continue_paths}};
   for (const auto& [name, code] : kernels) modules_.emplace(name, device_.createShaderModule({name, code}));
 }
 

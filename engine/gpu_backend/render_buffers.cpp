@@ -112,8 +112,13 @@ std::uint64_t geometryKey(const GpuScene& packed, bool tessellated, float tolera
 }
 
 BandBuffers allocateBands(gpu::Device& d, std::uint64_t bandPixels, std::uint64_t bandRays, std::uint32_t slots,
-                          std::uint32_t fallbackCapacity) {
+                          std::uint32_t fallbackCapacity, bool paths) {
   BandBuffers b;
+  if (paths) {
+    b.pathStates = storage(d, "path states", bandRays * sizeof(layout::PathState));
+    b.pathRays = storage(d, "continuation rays", bandRays * sizeof(layout::PathRayRecord));
+    b.bytes += b.pathStates.size() + b.pathRays.size();
+  }
   const std::uint64_t fallbackBytes = std::max(1u, fallbackCapacity) * sizeof(layout::FallbackRecord);
   b.cameraFallbacks = storage(d, "camera ray fallbacks", fallbackBytes);
   b.shadowFallbacks = storage(d, "shadow ray fallbacks", fallbackBytes);

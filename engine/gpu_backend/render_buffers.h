@@ -36,6 +36,7 @@ struct ShadingBuffers {
 struct BandBuffers {
   gpu::Buffer frame, hits, shadowRays, contributions, aovs, rayRadiance, beauty, counters;
   gpu::Buffer cameraFallbacks, shadowFallbacks;  // exact method: FallbackRecords, fallbackCapacity each
+  gpu::Buffer pathStates, pathRays;              // paths only: a PathState and a PathRayRecord per camera ray
   gpu::Buffer aovsHost, beautyHost, countersHost;
   std::uint64_t bytes = 0;
 };
@@ -51,8 +52,9 @@ ShadingBuffers uploadShading(gpu::Device& d, const scene::Scene& scene, const ib
 // rates), the method and the tolerance are the same.
 std::uint64_t geometryKey(const GpuScene& packed, bool tessellated, float tolerance);
 
+// With `paths`, the path states and the continuation rays' list too.
 BandBuffers allocateBands(gpu::Device& d, std::uint64_t bandPixels, std::uint64_t bandRays, std::uint32_t slots,
-                          std::uint32_t fallbackCapacity);
+                          std::uint32_t fallbackCapacity, bool paths);
 
 // The runs of consecutive pixels (indices of the full image, the kernels'
 // firstPixel) that cover a window: one run when it spans whole rows, else

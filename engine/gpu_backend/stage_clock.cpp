@@ -14,11 +14,13 @@ namespace {
 
 // The stage each pass is reported as, in the order of Pass: every list's
 // compaction is one stage, and the camera rays' fallbacks with their resolve
-// another.
-constexpr Stage kPassStages[] = {Stage::DiceGrid,        Stage::DiceCells, Stage::Quadtrees,  Stage::Refit,
-                                 Stage::Intersect,       Stage::Compact,   Stage::Fallbacks,  Stage::Fallbacks,
-                                 Stage::Surface,         Stage::Compact,   Stage::ShadowRays, Stage::Compact,
-                                 Stage::ShadowFallbacks, Stage::Gather,    Stage::Resolve};
+// another; every pass of a bounce's continuation rays is the stage Bounces.
+constexpr Stage kPassStages[] = {
+    Stage::DiceGrid,        Stage::DiceCells, Stage::Quadtrees, Stage::Refit,   Stage::Intersect,  Stage::Compact,
+    Stage::Fallbacks,       Stage::Fallbacks, Stage::Surface,   Stage::Compact, Stage::ShadowRays, Stage::Compact,
+    Stage::ShadowFallbacks, Stage::Gather,    Stage::Continue,  Stage::Bounces, Stage::Bounces,    Stage::Bounces,
+    Stage::Bounces,         Stage::Bounces,   Stage::Bounces,   Stage::Bounces, Stage::Bounces,    Stage::Bounces,
+    Stage::Bounces,         Stage::Bounces,   Stage::Resolve};
 static_assert(std::size(kPassStages) == kPassCount);
 
 std::pair<std::uint32_t, std::uint32_t> workgroups(std::uint64_t invocations) {
@@ -36,6 +38,7 @@ gpu::ComputePassEncoder StageClock::begin(gpu::CommandEncoder& encoder, Pass pas
                                           const gpu::BindGroup& group) {
   const std::uint32_t index = std::uint32_t(pass);
   ran_[index] = true;
+  unread_[index] = true;
   gpu::ComputePassEncoder encoded =
       encoder.beginComputePass({std::string(stageName(kPassStages[index])), {&timestamps_, 2 * index, 2 * index + 1}});
   encoded.setPipeline(pipeline);
@@ -49,12 +52,16 @@ void StageClock::dispatch(gpu::CommandEncoder& encoder, Pass pass, const gpu::Co
   begin(encoder, pass, pipeline, group).dispatchWorkgroups(x, y);
 }
 
-void StageClock::read(Pass first, Pass last) {
+double StageClock::read(Pass first, Pass last) {
+  double sum = 0;
   for (std::uint32_t p = std::uint32_t(first); p <= std::uint32_t(last); ++p) {
-    if (!ran_[p]) continue;
+    if (!unread_[p]) continue;
+    unread_[p] = false;
     const std::vector<double> ns = timestamps_.readTimestampsNs(2 * p, 2);
     nanoseconds_[p] += ns[1] - ns[0];
+    sum += ns[1] - ns[0];
   }
+  return sum * 1e-6;
 }
 
 void StageClock::report(std::vector<StageTime>& stages) const {

@@ -27,6 +27,20 @@ enum class Pass {
   CompactShadowFallbacks,
   ShadowFallbacks,
   Gather,
+  // Paths: per bounce, the continuation, then its rays as the camera rays'
+  // passes from Intersect to Gather work them.
+  Continue,
+  BounceCompact,
+  BounceIntersect,
+  BounceCompactFallbacks,
+  BounceFallbacks,
+  BounceResolveFallbacks,
+  BounceSurface,
+  BounceCompactShadowRays,
+  BounceShadow,
+  BounceCompactShadowFallbacks,
+  BounceShadowFallbacks,
+  BounceGather,
   Resolve,
 };
 inline constexpr std::size_t kPassCount = std::size_t(Pass::Resolve) + 1;
@@ -44,8 +58,9 @@ class StageClock {
   void dispatch(gpu::CommandEncoder& encoder, Pass pass, const gpu::ComputePipeline& pipeline,
                 const gpu::BindGroup& group, std::uint64_t invocations);
 
-  // After the queue is idle: adds the times of passes first ... last.
-  void read(Pass first, Pass last);
+  // After the queue is idle: adds the times of the passes first ... last
+  // that ran since the last read, and returns their sum in milliseconds.
+  double read(Pass first, Pass last);
 
   // Appends each stage that ran, or adds to one `stages` already lists.
   void report(std::vector<StageTime>& stages) const;
@@ -54,6 +69,7 @@ class StageClock {
   gpu::QuerySet timestamps_;
   double nanoseconds_[kPassCount] = {};
   bool ran_[kPassCount] = {};
+  bool unread_[kPassCount] = {};  // ran since the last read
 };
 
 }  // namespace facet::gpu_backend

@@ -1,13 +1,11 @@
-// The disk cache of prefiltered environments and of DFG tables. One file
-// per key; the file repeats the key's text, so that a hash collision reads
-// as a miss, and ends in a magic, so that a truncated file does too. Any
-// failure to read or write only costs the build.
-#include <glm/vec3.hpp>
-
+// The disk cache of prefiltered environments and of DFG tables: one file
+// per key, in the format of prefilter_cache_format.h. What a file holds must
+// also fit the request (its levels, its tables, finite values) or it is
+// rebuilt. Only regular files are read. Any failure to read or write only
+// costs the build.
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -18,6 +16,7 @@
 #include <system_error>
 #include <vector>
 
+#include "engine/ibl/prefilter_cache_format.h"
 #include "engine/ibl/prefiltered_environment.h"
 
 namespace facet::ibl {
@@ -26,20 +25,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr char kMagic[8] = {'F', 'A', 'C', 'E', 'T', 'I', 'B', 'L'};
-// Bump whenever the file layout changes. What the builders compute is
-// keyed by FACET_PREFILTER_FINGERPRINT, a digest of their sources that
-// engine/ibl/CMakeLists.txt takes at configure time.
-constexpr std::uint32_t kFormatVersion = 2;
+using cache_format::fnv1a;
+using cache_format::kFormatVersion;
 
-std::uint64_t fnv1a(const std::string& text) {
-  std::uint64_t hash = 14695981039346656037ull;
-  for (unsigned char c : text) {
-    hash ^= c;
-    hash *= 1099511628211ull;
-  }
-  return hash;
-}
+// A cache file larger than this is not one facet wrote (a link to a device).
+constexpr std::uintmax_t kLargestFile = std::uintmax_t(4) << 30;
+
+std::uint64_t fnv1a(const std::string& text) { return fnv1a(text.data(), text.size()); }
 
 std::string keyText(const scene::EnvironmentMap& map, const ModelPairs& models, const PrefilterSettings& settings,
                     const std::string& builder) {
@@ -67,160 +59,10 @@ std::optional<fs::path> cacheDirectory() {
   return std::nullopt;
 }
 
-class Writer {
- public:
-  template <class T>
-  void put(const T& value) {
-    const auto* bytes = reinterpret_cast<const char*>(&value);
-    data_.insert(data_.end(), bytes, bytes + sizeof(T));
-  }
-  template <class T>
-  void putArray(const std::vector<T>& values) {
-    put(std::uint64_t(values.size()));
-    const auto* bytes = reinterpret_cast<const char*>(values.data());
-    data_.insert(data_.end(), bytes, bytes + values.size() * sizeof(T));
-  }
-  void putBytes(const char* bytes, std::size_t size) { data_.insert(data_.end(), bytes, bytes + size); }
-  const std::vector<char>& data() const { return data_; }
-
- private:
-  std::vector<char> data_;
-};
-
-// Reads what Writer wrote; every read checks the bounds, and a failed one
-// leaves ok() false for good.
-class Reader {
- public:
-  explicit Reader(const std::vector<char>& data) : data_(data) {}
-  template <class T>
-  T get() {
-    T value{};
-    if (take(sizeof(T))) std::memcpy(&value, data_.data() + position_ - sizeof(T), sizeof(T));
-    return value;
-  }
-  template <class T>
-  std::vector<T> getArray(std::uint64_t expectedCount) {
-    const auto count = get<std::uint64_t>();
-    // Compared by division: a crafted count times sizeof(T) could wrap.
-    if (count != expectedCount || count > (data_.size() - position_) / sizeof(T) || !take(count * sizeof(T))) {
-      ok_ = false;
-      return {};
-    }
-    std::vector<T> values(count);
-    std::memcpy(values.data(), data_.data() + position_ - count * sizeof(T), count * sizeof(T));
-    return values;
-  }
-  bool matches(const char* bytes, std::size_t size) {
-    return take(size) && std::memcmp(data_.data() + position_ - size, bytes, size) == 0;
-  }
-  bool ok() const { return ok_; }
-  bool atEnd() const { return position_ == data_.size(); }
-
- private:
-  bool take(std::uint64_t size) {
-    if (!ok_ || size > data_.size() - position_) return ok_ = false;
-    position_ += size;
-    return true;
-  }
-  const std::vector<char>& data_;
-  std::size_t position_ = 0;
-  bool ok_ = true;
-};
-
-void putLevel(Writer& w, const RadianceLevel& level) {
-  w.put(std::int32_t(level.width));
-  w.put(std::int32_t(level.height));
-  w.put(level.alpha);
-  w.putArray(level.rgb);
-}
-
-std::optional<RadianceLevel> getLevel(Reader& r) {
-  RadianceLevel level;
-  level.width = r.get<std::int32_t>();
-  level.height = r.get<std::int32_t>();
-  level.alpha = r.get<double>();
-  if (level.width <= 0 || level.height <= 0) return std::nullopt;
-  level.rgb = r.getArray<float>(3 * std::uint64_t(level.width) * std::uint64_t(level.height));
-  return level;
-}
-
-void putTable(Writer& w, const DfgTable& table) {
-  w.put(std::int32_t(table.distribution));
-  w.put(std::int32_t(table.geometry));
-  w.put(std::int32_t(table.size));
-  w.putArray(table.scaleBias);
-}
-
-std::optional<DfgTable> getTable(Reader& r) {
-  DfgTable table;
-  table.distribution = r.get<std::int32_t>();
-  table.geometry = r.get<std::int32_t>();
-  table.size = r.get<std::int32_t>();
-  if (table.size <= 0) return std::nullopt;
-  table.scaleBias = r.getArray<float>(2 * std::uint64_t(table.size) * std::uint64_t(table.size));
-  return table;
-}
-
-// The head every file starts with: the magic, the format and the key.
-void putHead(Writer& w, const std::string& key) {
-  w.putBytes(kMagic, sizeof kMagic);
-  w.put(kFormatVersion);
-  w.putArray(std::vector<char>(key.begin(), key.end()));
-}
-
-bool headMatches(Reader& r, const std::string& key) {
-  if (!r.matches(kMagic, sizeof kMagic) || r.get<std::uint32_t>() != kFormatVersion) return false;
-  const auto storedKey = r.getArray<char>(key.size());
-  return r.ok() && std::string(storedKey.begin(), storedKey.end()) == key;
-}
-
-// The tail it ends with, which a truncated file lacks.
-void putTail(Writer& w) { w.putBytes(kMagic, sizeof kMagic); }
-
-bool tailMatches(Reader& r) { return r.matches(kMagic, sizeof kMagic) && r.ok() && r.atEnd(); }
-
-std::vector<char> serialize(const PrefilteredEnvironment& env, const std::string& key) {
-  Writer w;
-  putHead(w, key);
-  w.put(std::uint32_t(env.levels.size()));
-  for (const RadianceLevel& level : env.levels) putLevel(w, level);
-  for (const glm::dvec3& c : env.irradianceSh) w.put(c);
-  putLevel(w, env.irradianceMap);
-  w.put(std::uint8_t(env.irradianceFromMap));
-  w.put(std::uint32_t(env.dfg.size()));
-  for (const DfgTable& table : env.dfg) putTable(w, table);
-  putTail(w);
-  return w.data();
-}
-
-std::optional<PrefilteredEnvironment> deserialize(const std::vector<char>& data, const std::string& key) {
-  Reader r(data);
-  if (!headMatches(r, key)) return std::nullopt;
-  PrefilteredEnvironment env;
-  const auto levels = r.get<std::uint32_t>();
-  for (std::uint32_t i = 0; i < levels && r.ok(); ++i) {
-    std::optional<RadianceLevel> level = getLevel(r);
-    if (!level) return std::nullopt;
-    env.levels.push_back(std::move(*level));
-  }
-  for (glm::dvec3& c : env.irradianceSh) c = r.get<glm::dvec3>();
-  std::optional<RadianceLevel> irradianceMap = getLevel(r);
-  if (!irradianceMap) return std::nullopt;
-  env.irradianceMap = std::move(*irradianceMap);
-  const auto fromMap = r.get<std::uint8_t>();
-  if (fromMap > 1) return std::nullopt;
-  env.irradianceFromMap = fromMap == 1;
-  const auto tables = r.get<std::uint32_t>();
-  for (std::uint32_t i = 0; i < tables && r.ok(); ++i) {
-    std::optional<DfgTable> table = getTable(r);
-    if (!table) return std::nullopt;
-    env.dfg.push_back(std::move(*table));
-  }
-  if (!tailMatches(r)) return std::nullopt;
-  return env;
-}
-
 std::optional<std::vector<char>> readFile(const fs::path& file) {
+  // A FIFO would block the read and a device never end it.
+  std::error_code error;
+  if (!fs::is_regular_file(file, error) || fs::file_size(file, error) > kLargestFile || error) return std::nullopt;
   std::ifstream in(file, std::ios::binary);
   if (!in) return std::nullopt;
   std::vector<char> data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -248,26 +90,11 @@ void writeFileAtomically(const fs::path& file, const std::vector<char>& data) {
   if (error) fs::remove(temporary, error);
 }
 
-std::vector<char> serialize(const DfgTable& table, const std::string& key) {
-  Writer w;
-  putHead(w, key);
-  putTable(w, table);
-  putTail(w);
-  return w.data();
-}
-
-std::optional<DfgTable> deserializeTable(const std::vector<char>& data, const std::string& key) {
-  Reader r(data);
-  if (!headMatches(r, key)) return std::nullopt;
-  std::optional<DfgTable> table = getTable(r);
-  if (!table || !tailMatches(r)) return std::nullopt;
-  return table;
-}
-
-// The stored value of `key` (file `<prefix>-<hash>.bin`) when present and
-// intact, else `build`'s, stored.
-template <class T, class Deserialize, class Build>
-T cached(const std::string& prefix, const std::string& key, Deserialize deserializeStored, Build build) {
+// The stored value of `key` (file `<prefix>-<hash>.bin`) when present,
+// intact and fitting the request, else `build`'s, stored.
+template <class T, class ToPayload, class FromPayload, class Fits, class Build>
+T cached(const std::string& prefix, const std::string& key, ToPayload toPayload, FromPayload fromPayload, Fits fits,
+         Build build) {
   const std::optional<fs::path> directory = cacheDirectory();
   if (!directory) return build();
   char name[48];
@@ -275,11 +102,12 @@ T cached(const std::string& prefix, const std::string& key, Deserialize deserial
   const fs::path file = *directory / name;
   try {
     if (const auto data = readFile(file))
-      if (std::optional<T> stored = deserializeStored(*data, key)) return std::move(*stored);
+      if (const auto payload = cache_format::unseal(*data, key))
+        if (std::optional<T> stored = fromPayload(*payload); stored && fits(*stored)) return std::move(*stored);
   } catch (const std::exception&) {  // a file too large to hold: a miss like any other bad file
   }
   T value = build();
-  writeFileAtomically(file, serialize(value, key));
+  writeFileAtomically(file, cache_format::seal(key, toPayload(value)));
   return value;
 }
 
@@ -288,12 +116,17 @@ T cached(const std::string& prefix, const std::string& key, Deserialize deserial
 PrefilteredEnvironment cachedPrefilter(const scene::EnvironmentMap& map, const ModelPairs& models,
                                        const PrefilterSettings& settings, const std::string& builder,
                                        const std::function<PrefilteredEnvironment()>& build) {
-  return cached<PrefilteredEnvironment>("prefiltered", keyText(map, models, settings, builder), deserialize, build);
+  return cached<PrefilteredEnvironment>(
+      "prefiltered", keyText(map, models, settings, builder), cache_format::environmentPayload,
+      cache_format::environmentFromPayload,
+      [&](const PrefilteredEnvironment& env) { return cache_format::environmentFits(env, models, settings); }, build);
 }
 
 DfgTable cachedDfgTable(int distribution, int geometry, const PrefilterSettings& settings) {
-  return cached<DfgTable>("dfg", dfgKeyText(distribution, geometry, settings), deserializeTable,
-                          [&] { return dfgTable(distribution, geometry, settings); });
+  return cached<DfgTable>(
+      "dfg", dfgKeyText(distribution, geometry, settings), cache_format::tablePayload, cache_format::tableFromPayload,
+      [&](const DfgTable& table) { return cache_format::tableFits(table, distribution, geometry, settings); },
+      [&] { return dfgTable(distribution, geometry, settings); });
 }
 
 }  // namespace facet::ibl

@@ -45,7 +45,8 @@ inline constexpr const char* kSettingsDigestAttribute = "facetSettingsDigest";
 
 // The layers above by name; the beauty is always written.
 using ExrLayers = std::set<std::string>;
-inline constexpr const char* kExrLayers[] = {"beauty", "depth", "position", "normals", "ids", "uv", "texcoord", "crypto"};
+inline constexpr const char* kExrLayers[] = {"beauty", "depth", "position", "normals",
+                                             "ids",    "uv",    "texcoord", "crypto"};
 ExrLayers allExrLayers();
 std::string exrLayerNames();  // "beauty, depth, ..."
 // "all", "beauty" or a comma-separated list of layer names; throws

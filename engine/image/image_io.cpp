@@ -1,9 +1,17 @@
 #include "engine/image/image_io.h"
 
+#include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <climits>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <random>
 #include <stdexcept>
@@ -14,27 +22,95 @@
 
 namespace facet {
 
+namespace {
+
+// A temporary is named after its destination and its writer's process:
+// "<name>.tmp-<pid>-<random>", at most this many bytes longer.
+constexpr std::size_t kTemporarySuffix = 5 + 10 + 1 + 10;
+
+}  // namespace
+
 void checkOutputPath(const std::string& flag, const std::filesystem::path& path) {
   const auto reject = [&](const std::string& rule) { throw OutputError(flag + " '" + path.string() + "': " + rule); };
   if (path.empty()) reject("the output path is empty");
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) reject("is a folder; name a file in it");
+  const std::filesystem::file_status status = std::filesystem::symlink_status(path, error);
+  if (std::filesystem::is_symlink(status)) reject("is a symbolic link; facet writes only regular files");
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    reject("is a device, FIFO or socket; facet replaces only regular files");
   const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   if (!std::filesystem::is_directory(folder, error)) reject("the folder '" + folder.string() + "' does not exist");
   if (::access(folder.c_str(), W_OK) != 0) reject("the folder '" + folder.string() + "' is not writable");
+  const std::size_t longest = std::size_t(NAME_MAX) - kTemporarySuffix;
+  if (path.filename().string().size() > longest)
+    reject("the file name is " + std::to_string(path.filename().string().size()) + " bytes, more than " +
+           std::to_string(longest) + " (the system's " + std::to_string(NAME_MAX) +
+           " less the temporary name's suffix facet writes it under first)");
 }
+
+void checkOutputExtension(const std::string& flag, const std::filesystem::path& path, const std::string& extension) {
+  std::string found = path.extension().string();
+  for (char& c : found) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (found != extension)
+    throw OutputError(flag + " '" + path.string() + "': the extension chooses the format: expected " + extension);
+}
+
+bool namesSameFile(const std::filesystem::path& a, const std::filesystem::path& b) {
+  std::error_code error;
+  if (std::filesystem::exists(a, error) && std::filesystem::exists(b, error))
+    return std::filesystem::equivalent(a, b, error);
+  return std::filesystem::absolute(a).lexically_normal() == std::filesystem::absolute(b).lexically_normal();
+}
+
+namespace {
+
+std::string temporaryPrefix(const std::filesystem::path& destination) {
+  return destination.filename().string() + ".tmp-";
+}
+
+// Temporaries of `destination` whose writer no longer runs (it was killed
+// between writing and renaming): removed, so a killed run leaves nothing
+// behind once the next one starts.
+void removeOrphanedTemporaries(const std::filesystem::path& destination) {
+  const std::filesystem::path folder = destination.has_parent_path() ? destination.parent_path() : ".";
+  const std::string prefix = temporaryPrefix(destination);
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    const std::size_t dash = name.find('-', prefix.size());
+    if (dash == std::string::npos) continue;
+    char* end = nullptr;
+    const long pid = std::strtol(name.c_str() + prefix.size(), &end, 10);
+    if (end != name.c_str() + dash || pid <= 0) continue;
+    if (::kill(pid_t(pid), 0) != 0 && errno == ESRCH) std::filesystem::remove(entry.path(), error);
+  }
+}
+
+}  // namespace
+
+SignalsHeld::SignalsHeld() {
+  sigset_t held;
+  sigemptyset(&held);
+  for (int signal : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&held, signal);
+  pthread_sigmask(SIG_BLOCK, &held, &previous_);
+}
+
+SignalsHeld::~SignalsHeld() { pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
 
 void writeAllOrNothing(const std::vector<OutputFile>& files) {
   std::random_device entropy;
   std::vector<std::filesystem::path> temporaries;
+  for (const OutputFile& file : files) removeOrphanedTemporaries(file.path);
   const auto removeTemporaries = [&](std::size_t first) {
     std::error_code ignored;
     for (std::size_t i = first; i < temporaries.size(); ++i) std::filesystem::remove(temporaries[i], ignored);
   };
   try {
     for (const OutputFile& file : files) {
-      temporaries.push_back(file.path);
-      temporaries.back() += ".tmp-" + std::to_string(entropy());
+      temporaries.push_back(file.path.parent_path() / (temporaryPrefix(file.path) + std::to_string(::getpid()) + "-" +
+                                                       std::to_string(entropy())));
       file.write(temporaries.back());
     }
   } catch (const OutputError&) {
@@ -49,6 +125,7 @@ void writeAllOrNothing(const std::vector<OutputFile>& files) {
   }
   // rename(2) within one folder does not fail once the temporary is written
   // there, short of the folder itself changing under us.
+  const SignalsHeld held;
   for (std::size_t i = 0; i < files.size(); ++i) {
     std::error_code error;
     std::filesystem::rename(temporaries[i], files[i].path, error);
@@ -64,6 +141,26 @@ void writeAtomically(const std::filesystem::path& path,
   writeAllOrNothing({{path, write}});
 }
 
+void writeBytes(const std::filesystem::path& file, const std::vector<std::uint8_t>& bytes,
+                const std::filesystem::path& destination) {
+  const auto fail = [&](int error) {
+    throw OutputError(destination.string() + ": cannot write: " + std::strerror(error));
+  };
+  const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) fail(errno);
+  for (std::size_t done = 0; done < bytes.size();) {
+    const ssize_t wrote = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (wrote < 0 && errno == EINTR) continue;
+    if (wrote <= 0) {
+      const int error = wrote < 0 ? errno : ENOSPC;
+      ::close(fd);
+      fail(error);
+    }
+    done += std::size_t(wrote);
+  }
+  if (::close(fd) != 0) fail(errno);
+}
+
 OutputFile rgbaPngFile(const std::filesystem::path& path, int width, int height,
                        const std::vector<std::uint8_t>& rgba) {
   return {path, [path, width, height, &rgba](const std::filesystem::path& temporary) {
@@ -75,10 +172,7 @@ OutputFile rgbaPngFile(const std::filesystem::path& path, int width, int height,
             if (!stbi_write_png_to_func(append, &png, width, height, 4, rgba.data(), width * 4))
               throw OutputError(path.string() + ": cannot encode the PNG");
             const std::vector<std::uint8_t> tagged = withSrgbChunks(png.data(), png.size());
-            std::ofstream out(temporary, std::ios::binary);
-            out.write(reinterpret_cast<const char*>(tagged.data()), std::streamsize(tagged.size()));
-            out.close();
-            if (!out) throw OutputError(path.string() + ": cannot write PNG (is the folder writable?)");
+            writeBytes(temporary, tagged, path);
           }};
 }
 

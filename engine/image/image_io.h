@@ -5,6 +5,8 @@
 // writer is exr_file.h.
 #pragma once
 
+#include <signal.h>
+
 #include <filesystem>
 #include <cstdint>
 #include <functional>
@@ -30,14 +32,47 @@ struct OutputFile {
 };
 
 // Throws OutputError "<flag> '<path>': <rule>" unless `path` names a file
-// that can be created or replaced: not empty, not a folder, in an existing
-// writable folder. Checked before the work that produces the file.
+// that can be created or replaced: not empty, not a folder, not a symbolic
+// link, a device, a FIFO or a socket (an output replaces a regular file or
+// nothing), in an existing writable folder, with a name short enough to be
+// written under a temporary name first. Checked before the work that
+// produces the file.
 void checkOutputPath(const std::string& flag, const std::filesystem::path& path);
 
+// The extension chooses an output's format: throws OutputError unless
+// `path` ends in `extension` (".exr", ".png"; any case).
+void checkOutputExtension(const std::string& flag, const std::filesystem::path& path, const std::string& extension);
+
+// Whether two paths name one file: the same file where both exist (links
+// and other spellings included), else the same normalized absolute path.
+bool namesSameFile(const std::filesystem::path& a, const std::filesystem::path& b);
+
 // Writes every file to a temporary in its destination's folder, then renames
-// them all into place. When a write fails, removes the temporaries and leaves
-// every existing destination untouched.
+// them all into place with SIGINT, SIGTERM and SIGHUP held back. When a write
+// fails, removes the temporaries and leaves every existing destination
+// untouched; temporaries a killed run left of the same destinations are
+// removed first.
 void writeAllOrNothing(const std::vector<OutputFile>& files);
+
+// Holds SIGINT, SIGTERM and SIGHUP back while it lives, so that the renames
+// that put a set of outputs in place are not cut short: an interrupted
+// command ends with the old set or the new one. The signals are delivered
+// when it ends.
+class SignalsHeld {
+ public:
+  SignalsHeld();
+  ~SignalsHeld();
+  SignalsHeld(const SignalsHeld&) = delete;
+  SignalsHeld& operator=(const SignalsHeld&) = delete;
+
+ private:
+  sigset_t previous_;
+};
+
+// Writes `bytes` to `file`; a failure is an OutputError naming
+// `destination` and the system's reason ("No space left on device").
+void writeBytes(const std::filesystem::path& file, const std::vector<std::uint8_t>& bytes,
+                const std::filesystem::path& destination);
 
 // Calls write(temporaryPath), then renames the temporary onto `path`.
 void writeAtomically(const std::filesystem::path& path, const std::function<void(const std::filesystem::path&)>& write);

@@ -26,6 +26,10 @@ enum class Stage {
   ShadowRays,
   ShadowFallbacks,
   Gather,
+  // Paths (docs/rendering.md, "Paths"): roulette and continuation, then the
+  // continuation rays traced, shaded, their shadow rays and their gather.
+  Continue,
+  Bounces,
   Resolve,
 };
 
@@ -62,6 +66,10 @@ constexpr std::string_view stageName(Stage stage) {
       return "shadow fallbacks";
     case Stage::Gather:
       return "gather";
+    case Stage::Continue:
+      return "continue";
+    case Stage::Bounces:
+      return "bounces";
     case Stage::Resolve:
       return "resolve";
   }

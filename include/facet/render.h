@@ -25,8 +25,8 @@ struct RenderSettings {
   std::optional<int> samplesPerPixel;   // a square number
   std::optional<int> tessellationRate;  // tessellated method
   // Continuations of each camera sample's path, in [0, 64]; 0 is direct light
-  // only. Above 0: the CPU backend alone, and an environment, if any, sampled
-  // or filtered with occlusion on (docs/rendering.md, "Paths on the CPU reference").
+  // only. Above 0: an environment, if any, sampled or filtered with
+  // occlusion on (docs/rendering.md, "Paths").
   std::optional<int> bounces;
 };
 
@@ -63,8 +63,8 @@ struct ParityReport {
   std::string summary;  // the table `facet parity` prints
 };
 
-// Keeps the GPU device and its compiled kernels between renders; one thread
-// at a time. `adapter`: a substring of the adapter's name (default:
+// Keeps the GPU device and its compiled kernels between renders. Safe to
+// share between threads: its renders run one at a time. `adapter`: a substring of the adapter's name (default:
 // $FACET_ADAPTER, else the first hardware GPU, else lavapipe).
 class Renderer {
  public:

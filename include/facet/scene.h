@@ -100,7 +100,8 @@ struct SceneData;
 // A validated scene, cheap to copy (its data is shared and never changes).
 class Scene {
  public:
-  explicit Scene(std::shared_ptr<const detail::SceneData> data) : data_(std::move(data)) {}
+  // From loadScene or buildScene; throws Error (BadInput) on no data.
+  explicit Scene(std::shared_ptr<const detail::SceneData> data);
   const detail::SceneData& data() const { return *data_; }
   int width() const;
   int height() const;

@@ -2,6 +2,8 @@
 #include "scenes/obj_cage.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
+#include <sys/stat.h>
 
 #include <cctype>
 #include <filesystem>
@@ -108,8 +110,7 @@ TEST(ObjCage, PropagateCornersChoosesBetweenTheCornersPlusRules) {
             FV::CornersPlus2);
   EXPECT_EQ(rule("t facevaryinginterpolateboundary 1/0/0 3\nt facevaryingpropagatecorners 1/0/0 0\n"),
             FV::CornersPlus1);
-  EXPECT_EQ(rule("t facevaryinginterpolateboundary 1/0/0 1\nt facevaryingpropagatecorners 1/0/0 1\n"),
-            FV::CornersOnly);
+  EXPECT_EQ(rule("t facevaryinginterpolateboundary 1/0/0 1\nt facevaryingpropagatecorners 1/0/0 1\n"), FV::CornersOnly);
   EXPECT_EQ(rule("t facevaryingpropagatecorners 1/0/0 1\n"), FV::All);
 }
 
@@ -132,8 +133,36 @@ TEST(ObjCageErrors, MissingFile) {
   } catch (const InputError& error) {
     EXPECT_EQ(error.source(), "/nonexistent/facet/cage.obj");
     EXPECT_EQ(error.line(), 0);
-    EXPECT_EQ(error.rule(), "missing file");
+    EXPECT_EQ(error.rule(), "cannot open the control cage");
+    EXPECT_NE(std::string(error.what()).find("no such file"), std::string::npos);
   }
+}
+
+TEST(ObjCage, AByteOrderMarkIsNotPartOfTheFirstLine) {
+  const std::string cube = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+  const ControlCage plain = parseObjCage(cube, "plain.obj");
+  const ControlCage marked = parseObjCage("\xEF\xBB\xBF" + cube, "marked.obj");
+  EXPECT_EQ(marked.positions, plain.positions);
+}
+
+// Only regular files are read: a FIFO would block the read, a device never
+// end it, a folder cannot be parsed.
+TEST(ObjCageErrors, OnlyRegularFilesAreRead) {
+  const std::filesystem::path fifo =
+      std::filesystem::temp_directory_path() / ("facet_fifo_" + std::to_string(getpid()));
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const auto messageOf = [](const std::filesystem::path& path) {
+    try {
+      loadObjCage(path);
+    } catch (const InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string("loaded");
+  };
+  EXPECT_NE(messageOf(fifo).find("it is a FIFO, socket or device"), std::string::npos);
+  std::filesystem::remove(fifo);
+  EXPECT_NE(messageOf("/dev/zero").find("it is a FIFO, socket or device"), std::string::npos);
+  EXPECT_NE(messageOf(std::filesystem::temp_directory_path()).find("it is a folder"), std::string::npos);
 }
 
 // Each text with its one error: the line it is reported on and the rule.

@@ -31,4 +31,8 @@ void main() {
   counters.shadowFallbackX = shadowFallback.x;
   counters.shadowFallbackY = shadowFallback.y;
   counters.shadowFallbackZ = shadowFallback.z;
+  uvec3 path = workgroup_grid(counters.pathRays);  // paths' continuation rays (0 without paths)
+  counters.pathX = path.x;
+  counters.pathY = path.y;
+  counters.pathZ = path.z;
 }

@@ -3,7 +3,9 @@
 // (SHADOW = 0): a root nearer than the ray's hit so far lowers the hit's t
 // (atomically: a ray may have several such cells) and is kept in the record
 // for fallback_resolve.comp. Shadow rays (SHADOW = 1): any root blocks the
-// light, clearing the ray's slot.
+// light, clearing the ray's slot. PATHS = 1 (with SHADOW = 0): the cells of
+// continuation rays, whose ray is the compacted list's (docs/rendering.md,
+// "Paths") and whose hit is at its index in that list.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -11,6 +13,7 @@
 #include "compute/raycast/traversal/trace_bindings.glsl"
 
 layout(constant_id = 0) const int SHADOW = 0;
+layout(constant_id = 1) const int PATHS = 0;
 
 // The camera hits as words: a HitRecord's t first, its float bits ordered as
 // the floats (t >= 0), so atomicMin keeps the nearest.
@@ -19,6 +22,7 @@ layout(set = 0, binding = 14, std430) readonly buffer ShadowRays { ShadowRayReco
 layout(set = 0, binding = 15, std430) buffer Contributions { vec4 contributions[]; };
 layout(set = 0, binding = 24, std430) buffer CameraFallbacks { FallbackRecord cameraFallbacks[]; };
 layout(set = 0, binding = 25, std430) readonly buffer ShadowFallbacks { FallbackRecord shadowFallbacks[]; };
+layout(set = 0, binding = 33, std430) readonly buffer PathRays { PathRayRecord pathRays[]; };
 
 #include "compute/raycast/traversal/ray.glsl"
 #include "compute/raycast/common/patch_eval.glsl"
@@ -46,7 +50,7 @@ void main() {
     ray = to_ray(shadowRays[record.ray].ray);
   } else {
     record = cameraFallbacks[index];
-    ray = camera_ray(record.ray);
+    ray = PATHS == 1 ? to_ray(pathRays[record.ray].ray) : camera_ray(record.ray);
     ray.tMax = uintBitsToFloat(hitWords[HIT_WORDS * record.ray]);
   }
   Cell cell = cell_of(record.cell);

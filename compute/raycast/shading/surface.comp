@@ -19,6 +19,12 @@
 // read per material), TEXTURES (1 when some material reads a texture) and
 // EMISSION (1 when some material emits: each ray's last slot holds it) and
 // COMPENSATION (1 when some material's specular lobe is energy-compensated).
+// PATHS (docs/rendering.md, "Paths"): 1 writes each camera ray's path state
+// (its first vertex, or none) and counts the rays that hit; with
+// frame.pathVertex > 0 the invocations are those of the compacted
+// continuation rays instead (dispatched indirectly), each shading the vertex
+// it hits into its camera ray's slots, with the environment pairs of that
+// vertex's seed, and moving its path on to that vertex (a miss ends it).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -57,6 +63,7 @@ layout(constant_id = 7) const int ENVIRONMENT_SAMPLES = 0;
 layout(constant_id = 8) const int TEXTURES = 0;
 layout(constant_id = 9) const int EMISSION = 0;
 layout(constant_id = 10) const int COMPENSATION = 0;
+layout(constant_id = 11) const int PATHS = 0;
 
 layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
 layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord materials[]; };
@@ -66,6 +73,8 @@ layout(set = 0, binding = 14, std430) writeonly buffer ShadowRays { ShadowRayRec
 layout(set = 0, binding = 15, std430) writeonly buffer Contributions { vec4 contributions[]; };
 layout(set = 0, binding = 27) uniform samplerBuffer authoredNormals;
 layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters; };
+layout(set = 0, binding = 32, std430) buffer PathStates { PathState pathStates[]; };
+layout(set = 0, binding = 33, std430) readonly buffer PathRays { PathRayRecord pathRays[]; };
 
 #include "compute/raycast/common/patch_eval.glsl"
 #include "compute/raycast/shading/limit_normal.glsl"
@@ -75,6 +84,7 @@ layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters;
 #include "rules/surface/authored_normal.h"
 #include "compute/raycast/shading/textures.glsl"
 #include "compute/raycast/shading/energy_compensation.glsl"
+#include "compute/raycast/paths/path_state.glsl"
 
 // The shading normal: a mesh's authored normals interpolated where it has
 // them (turned to the side of the surface's normal `limit`), else `limit`
@@ -209,16 +219,21 @@ PunctualLight punctual_light(LightRecord record) {
 
 void main() {
   uint index = invocation_index();
-  if (index >= frame.pixelCount * frame.raysPerPixel) return;
-  uint sample_index = index % frame.raysPerPixel;
-  bool centre = sample_index == 0u;
+  bool continuation = PATHS == 1 && frame.pathVertex > 0u;
+  if (index >= (continuation ? counters.pathRays : frame.pixelCount * frame.raysPerPixel)) return;
+  uint camera = continuation ? pathRays[index].path : index;  // the camera ray: its slots and path
+  uint sample_index = camera % frame.raysPerPixel;
+  bool centre = !continuation && sample_index == 0u;
   bool shaded = is_shaded_sample(sample_index, frame.strata);
-  uint pixel = index / frame.raysPerPixel;
+  uint pixel = camera / frame.raysPerPixel;
   HitRecord hit = hits[index];
-  uint firstSlot = index * frame.slotsPerRay;
-  Ray ray = camera_ray(index);
+  uint firstSlot = camera * frame.slotsPerRay;
+  Ray ray = continuation ? to_ray(pathRays[index].ray) : camera_ray(index);
   vec3 direction = ray.direction;
 
+  if (PATHS == 1 && hit.patchIndex == FACET_NO_HIT) pathStates[camera].alive = 0u;
+  if (continuation && hit.patchIndex == FACET_NO_HIT) return;  // adds nothing: D at the vertex it left counted it
+  if (PATHS == 1 && hit.patchIndex != FACET_NO_HIT) atomicAdd(counters.pathHits, 1u);
   if (hit.patchIndex == FACET_NO_HIT) {
     if (centre) aovs[pixel] = PixelAovs(INFINITE_DISTANCE, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, FACET_NO_HIT,
                                         FACET_NO_HIT, 0.0, 0.0, 0.0, 0.0);
@@ -285,4 +300,8 @@ void main() {
       for (uint slot = first; slot < firstSlot + frame.slotsPerRay; ++slot) write_unshadowed(slot, vec3(0.0));
   }
   if (EMISSION == 1) write_unshadowed(firstSlot + frame.slotsPerRay - 1u, shaded ? emission : vec3(0.0));
+  if (PATHS == 1) {
+    vec3 throughput = continuation ? path_throughput(pathStates[camera]) : vec3(1.0);
+    pathStates[camera] = pack_path_state(throughput, shaded, PathVertex(position, n, ng, v, params, specular_scale));
+  }
 }

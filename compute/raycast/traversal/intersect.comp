@@ -1,6 +1,8 @@
 // The closest hit of each camera ray, by the method METHOD (0 exact,
 // 1 tessellated); exact cells Newton leaves undecided are listed for the
-// fallback pass.
+// fallback pass. PATHS = 1: of each continuation ray of the compacted list
+// instead (counters.pathRays of them, dispatched indirectly; docs/rendering.md,
+// "Paths"), its hit at its index in the list.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -8,9 +10,11 @@
 #include "compute/raycast/traversal/trace_bindings.glsl"
 
 layout(constant_id = 0) const int METHOD = 0;
+layout(constant_id = 1) const int PATHS = 0;
 
 layout(set = 0, binding = 9, std430) writeonly buffer Hits { HitRecord hits[]; };
 layout(set = 0, binding = 24, std430) writeonly buffer CameraFallbacks { FallbackRecord cameraFallbacks[]; };
+layout(set = 0, binding = 33, std430) readonly buffer PathRays { PathRayRecord pathRays[]; };
 
 uint rayIndex;
 
@@ -28,9 +32,9 @@ void defer_cell(uint reference) {
 
 void main() {
   uint index = invocation_index();
-  if (index >= frame.pixelCount * frame.raysPerPixel) return;
+  if (index >= (PATHS == 1 ? counters.pathRays : frame.pixelCount * frame.raysPerPixel)) return;
   rayIndex = index;
-  Hit hit = trace(camera_ray(index), false);
+  Hit hit = trace(PATHS == 1 ? to_ray(pathRays[index].ray) : camera_ray(index), false);
   hits[index] = HitRecord(hit.t, hit.patchIndex, hit.object, hit.st.x, hit.st.y, hit.geometricNormal.x,
                           hit.geometricNormal.y, hit.geometricNormal.z);
 }

@@ -1,6 +1,7 @@
 #!/bin/bash
 # facet render's farm flags end to end, on the CPU backend:
 #   - 4 tiles merged by facet merge equal the whole render, bit for bit;
+#     merge never writes over an input tile, and -o's extension is .exr;
 #   - a frame rendered alone equals the same frame of a range (turntable
 #     and camera keys), and '#' pads the frame number;
 #   - render --json prints the documented summary;
@@ -22,6 +23,14 @@ same_pixels whole.exr merged.exr || fail "the merged tiles differ from the whole
 "$facet" render "$ball" "${common[@]}" --crop 5,3,31,20 -o crop.exr
 "$facet" merge --quiet crop.exr tile0.exr -o never.exr 2>/dev/null && fail "overlapping tiles were merged"
 [[ ! -e never.exr ]] || fail "a refused merge left a file"
+cp tile1.exr tile1.kept
+"$facet" merge --quiet tile0.exr tile1.exr tile2.exr tile3.exr -o ./tile1.exr 2>/dev/null &&
+  fail "merge overwrote one of its input tiles"
+cmp -s tile1.exr tile1.kept || fail "a refused merge changed its input tile"
+"$facet" merge --quiet tile0.exr tile1.exr tile2.exr tile3.exr -o merged.png 2>/dev/null &&
+  fail "merge wrote EXR data into a .png"
+[[ $(head -c 4 merged.png | od -An -tx1 | tr -d ' ') == 89504e47 ]] ||
+  fail "a refused merge replaced merged.png"
 
 "$facet" render "$ball" "${common[@]}" --turntable 6 --frames 1-5:2 -o 'turn_##.exr' --png 'turn_##.png'
 for f in 01 03 05; do [[ -f turn_$f.exr && -f turn_$f.png ]] || fail "frame $f of the range is missing"; done

@@ -25,6 +25,12 @@ TEST(CameraPath, KeysAreLinearBetweenAndHeldOutside) {
   EXPECT_EQ(keyedCamera(keys, 99).eye, glm::dvec3(10, 0, 4));
 }
 
+TEST(CameraPath, KeysFurtherApartThanAnIntHoldsInterpolate) {
+  const std::vector<scene::CameraKey> keys = {key(-2000000000, {0, 0, 4}, 30), key(2000000000, {8, 0, 4}, 50)};
+  EXPECT_EQ(keyedCamera(keys, 0).eye, glm::dvec3(4, 0, 4));
+  EXPECT_DOUBLE_EQ(keyedCamera(keys, 1000000000).verticalFovDegrees, 45);
+}
+
 TEST(CameraPath, TheTurntableOrbitsTheTargetAboutUp) {
   scene::Camera c;
   c.eye = {1, 2, 5};

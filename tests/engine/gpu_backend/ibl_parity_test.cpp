@@ -19,9 +19,12 @@
 #include "scenes/scene_file.h"
 #include "scenes/scene_geometry.h"
 #include "tests/support/gpu_device.h"
+#include "tests/support/relative_errors.h"
 
 namespace facet {
 namespace {
+
+using testing::relativeErrors;
 
 using analysis::compareImages;
 
@@ -54,22 +57,6 @@ scene::Scene previewUnder(const IblCase& c) {
   s.environment->samples = c.samples;
   for (materials::Material& m : s.materials) m.energyCompensation = c.compensated;
   return s;
-}
-
-// Per pixel, background included, max_c |gpu - cpu| / max(max_c cpu, 1e-3 x
-// the brightest), sorted.
-std::vector<double> relativeErrors(const Image& reference, const Image& candidate) {
-  float brightest = 0;
-  for (const glm::vec4& b : reference.beauty) brightest = std::max({brightest, b.r, b.g, b.b});
-  std::vector<double> errors;
-  for (std::size_t i = 0; i < reference.beauty.size(); ++i) {
-    const glm::vec3 a(reference.beauty[i]), b(candidate.beauty[i]);
-    const glm::vec3 d = glm::abs(a - b);
-    const double scale = std::max({a.r, a.g, a.b, 1e-3f * brightest});
-    errors.push_back(std::max({d.r, d.g, d.b}) / scale);
-  }
-  std::sort(errors.begin(), errors.end());
-  return errors;
 }
 
 class IblParity : public gpu::testing::GpuTest, public ::testing::WithParamInterface<IblCase> {};

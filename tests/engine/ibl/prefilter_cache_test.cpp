@@ -3,9 +3,11 @@
 // cost a build; processes building one key at once leave one whole file.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -109,6 +111,50 @@ TEST_F(PrefilterCache, DamagedFileIsRebuilt) {
   EXPECT_EQ(builds_, 4);
   expectSame(cached(settings_), reference);
   EXPECT_EQ(builds_, 4);
+}
+
+// A changed byte inside the maps (no longer at the magic) is caught by the
+// checksum: without it, the file would read as another image.
+TEST_F(PrefilterCache, AChangedValueInsideTheFileIsRebuilt) {
+  const PrefilteredEnvironment reference = cached(settings_);
+  const fs::path file = files().at(0);
+  {
+    std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(std::streamoff(fs::file_size(file) / 2));
+    f.put('\x7f');
+  }
+  expectSame(cached(settings_), reference);
+  EXPECT_EQ(builds_, 2);
+}
+
+// A whole file whose contents do not fit the request (written by a faulty
+// build: no DFG tables, a NaN texel) is rebuilt, never used.
+TEST_F(PrefilterCache, AFileThatDoesNotFitTheRequestIsRebuilt) {
+  const PrefilteredEnvironment reference = prefilterOnCpu(map_, models_, settings_);
+  for (int fault = 0; fault < 2; ++fault) {
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    cachedPrefilter(map_, models_, settings_, "cpu", [&] {
+      PrefilteredEnvironment broken = reference;
+      if (fault == 0) broken.dfg.clear();
+      if (fault == 1) broken.levels[1].rgb[4] = std::nanf("");
+      return broken;
+    });
+    builds_ = 0;
+    expectSame(cached(settings_), reference);
+    EXPECT_EQ(builds_, 1) << "fault " << fault;
+  }
+}
+
+// A FIFO where a cache file belongs is a miss, never a read that blocks.
+TEST_F(PrefilterCache, AFifoInTheCacheFolderIsAMiss) {
+  cached(settings_);
+  const fs::path file = files().at(0);
+  fs::remove(file);
+  ASSERT_EQ(mkfifo(file.c_str(), 0600), 0);
+  const PrefilteredEnvironment again = cached(settings_);
+  EXPECT_EQ(builds_, 2);
+  EXPECT_FALSE(again.dfg.empty());
 }
 
 // The DFG tables energy compensation reads go through the same files: a hit

@@ -1,5 +1,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <fstream>
@@ -119,15 +121,18 @@ TEST_F(ImageIo, AFailedWriteInASetLeavesEveryExistingFileAsItWas) {
   EXPECT_EQ(files().size(), 1u) << "no temporary file may remain";
 }
 
+// checkOutputPath's message for `path`, or "accepted".
+std::string outputPathError(const fs::path& path) {
+  try {
+    checkOutputPath("-o", path);
+  } catch (const OutputError& e) {
+    return std::string(e.what());
+  }
+  return std::string("accepted");
+}
+
 TEST_F(ImageIo, OutputPathsAreCheckedBeforeAnythingIsWritten) {
-  const auto errorOf = [](const fs::path& path) {
-    try {
-      checkOutputPath("-o", path);
-    } catch (const OutputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
-  };
+  const auto errorOf = outputPathError;
   EXPECT_EQ(errorOf(""), "-o '': the output path is empty");
   EXPECT_EQ(errorOf(dir_), "-o '" + dir_.string() + "': is a folder; name a file in it");
   EXPECT_EQ(errorOf(dir_ / "missing" / "out.exr"), "-o '" + (dir_ / "missing" / "out.exr").string() +
@@ -135,6 +140,62 @@ TEST_F(ImageIo, OutputPathsAreCheckedBeforeAnythingIsWritten) {
                                                        "' does not exist");
   EXPECT_EQ(errorOf(dir_ / "out.exr"), "accepted");
   EXPECT_TRUE(files().empty());
+}
+
+TEST_F(ImageIo, OutputsReplaceOnlyRegularFiles) {
+  const auto rejected = outputPathError;
+  std::ofstream(dir_ / "target.exr") << "kept";
+  fs::create_symlink(dir_ / "target.exr", dir_ / "link.exr");
+  EXPECT_NE(rejected(dir_ / "link.exr").find("is a symbolic link"), std::string::npos);
+  fs::create_symlink(dir_ / "nowhere.exr", dir_ / "dangling.exr");
+  EXPECT_NE(rejected(dir_ / "dangling.exr").find("is a symbolic link"), std::string::npos);
+  ASSERT_EQ(mkfifo((dir_ / "fifo.exr").c_str(), 0600), 0);
+  EXPECT_NE(rejected(dir_ / "fifo.exr").find("is a device, FIFO or socket"), std::string::npos);
+  EXPECT_NE(rejected("/dev/null").find("is a device, FIFO or socket"), std::string::npos);
+  EXPECT_EQ(rejected(dir_ / "target.exr"), "accepted");
+  EXPECT_EQ(contents(dir_ / "target.exr"), "kept");
+}
+
+TEST_F(ImageIo, TheExtensionChoosesTheFormat) {
+  EXPECT_NO_THROW(checkOutputExtension("-o", dir_ / "a.EXR", ".exr"));
+  EXPECT_THROW(checkOutputExtension("-o", dir_ / "a.png", ".exr"), OutputError);
+  EXPECT_THROW(checkOutputExtension("--png", dir_ / "a", ".png"), OutputError);
+}
+
+TEST_F(ImageIo, TwoSpellingsOfOneFileAreTheSameFile) {
+  std::ofstream(dir_ / "tile.exr") << "tile";
+  fs::create_symlink(dir_ / "tile.exr", dir_ / "alias.exr");
+  EXPECT_TRUE(namesSameFile(dir_ / "tile.exr", dir_ / "." / "tile.exr"));
+  EXPECT_TRUE(namesSameFile(dir_ / "alias.exr", dir_ / "tile.exr"));
+  EXPECT_TRUE(namesSameFile(dir_ / "new.exr", dir_ / "sub" / ".." / "new.exr"));
+  EXPECT_FALSE(namesSameFile(dir_ / "tile.exr", dir_ / "other.exr"));
+}
+
+TEST_F(ImageIo, ANameTooLongForItsTemporaryIsRefusedBeforeTheWork) {
+  EXPECT_EQ(outputPathError(dir_ / (std::string(225, 'a') + ".exr")), "accepted");
+  EXPECT_NE(outputPathError(dir_ / (std::string(226, 'a') + ".exr")).find("the file name is 230 bytes, more than 229"),
+            std::string::npos);
+}
+
+TEST_F(ImageIo, TemporariesOfAKilledWriterAreRemovedByTheNextWrite) {
+  // pid_max is at most 2^22, so no process has this pid; this process's is alive.
+  const fs::path orphan = dir_ / "out.exr.tmp-999999999-17";
+  const fs::path live = dir_ / ("out.exr.tmp-" + std::to_string(getpid()) + "-17");
+  const fs::path otherOutput = dir_ / "other.exr.tmp-999999999-17";
+  for (const fs::path& file : {orphan, live, otherOutput}) std::ofstream(file) << "partial";
+  writeAllOrNothing({exrFile(dir_ / "out.exr", Image(2, 2))});
+  EXPECT_FALSE(fs::exists(orphan));
+  EXPECT_TRUE(fs::exists(live)) << "a running writer's temporary is its own";
+  EXPECT_TRUE(fs::exists(otherOutput)) << "only the destinations written are swept";
+}
+
+TEST_F(ImageIo, AFullDiskIsNamedAsSuch) {
+  try {
+    writeBytes("/dev/full", std::vector<std::uint8_t>(4096, 1), "preview.png");
+    FAIL() << "writing to /dev/full succeeded";
+  } catch (const OutputError& e) {
+    EXPECT_STREQ(e.what(), "preview.png: cannot write: No space left on device");
+  }
 }
 
 TEST(ImageSize, ImpossibleSizesAreRejected) {

@@ -1,0 +1,42 @@
+// Paths (docs/rendering.md, "Paths"): a camera ray's path state as the
+// kernels pack and unpack it (compute/layout/raycast_layout.h's PathState).
+// Needs rules/shading/brdf.h.
+#ifndef FACET_RAYCAST_PATH_STATE_GLSL
+#define FACET_RAYCAST_PATH_STATE_GLSL
+
+// The vertex a path continues from: normals face v.
+struct PathVertex {
+  vec3 position;
+  vec3 n;
+  vec3 ng;
+  vec3 v;
+  BrdfParams params;
+  vec3 specular_scale;
+};
+
+PathState pack_path_state(vec3 throughput, bool alive, PathVertex x) {
+  BrdfParams p = x.params;
+  return PathState(throughput.x, throughput.y, throughput.z, alive ? 1u : 0u, x.position.x, x.position.y,
+                   x.position.z, x.n.x, x.n.y, x.n.z, x.ng.x, x.ng.y, x.ng.z, x.v.x, x.v.y, x.v.z, p.d_model,
+                   p.g_model, p.f_model, p.alpha, p.f0.x, p.f0.y, p.f0.z, p.eta.x, p.eta.y, p.eta.z, p.k.x, p.k.y,
+                   p.k.z, p.diffuse.x, p.diffuse.y, p.diffuse.z, x.specular_scale.x, x.specular_scale.y,
+                   x.specular_scale.z);
+}
+
+vec3 path_throughput(PathState s) { return vec3(s.throughputR, s.throughputG, s.throughputB); }
+
+PathVertex path_vertex(PathState s) {
+  BrdfParams p;
+  p.d_model = s.dModel;
+  p.g_model = s.gModel;
+  p.f_model = s.fModel;
+  p.alpha = s.alpha;
+  p.f0 = vec3(s.f0R, s.f0G, s.f0B);
+  p.eta = vec3(s.etaR, s.etaG, s.etaB);
+  p.k = vec3(s.kR, s.kG, s.kB);
+  p.diffuse = vec3(s.diffuseR, s.diffuseG, s.diffuseB);
+  return PathVertex(vec3(s.positionX, s.positionY, s.positionZ), vec3(s.nX, s.nY, s.nZ), vec3(s.ngX, s.ngY, s.ngZ),
+                    vec3(s.vX, s.vY, s.vZ), p, vec3(s.specularR, s.specularG, s.specularB));
+}
+
+#endif

@@ -1,0 +1,31 @@
+// Prefilter-cache files (engine/ibl/prefilter_cache_format.h): any bytes,
+// read as a whole file under a key and as the payload of an environment or
+// of a DFG table, give nothing or a value, and a value is then judged by the
+// fit rule: never a crash, never an allocation the bytes do not back. The
+// seeds are payloads, which the format's checksum would keep a mutated
+// whole file from reaching.
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "engine/ibl/prefilter_cache_format.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  namespace format = facet::ibl::cache_format;
+  const std::vector<char> bytes(data, data + size);
+  const std::string key = "facet fuzz key";
+  facet::ibl::PrefilterSettings settings;
+  settings.levels = 2;
+  settings.dfgSize = 2;
+  const facet::ibl::ModelPairs models{{0, 4}, {1, 6}};
+
+  if (const auto payload = format::unseal(bytes, key)) format::environmentFromPayload(*payload);
+  if (const auto env = format::environmentFromPayload(bytes)) format::environmentFits(*env, models, settings);
+  if (const auto table = format::tableFromPayload(bytes)) format::tableFits(*table, 0, 4, settings);
+  // Whatever a payload holds, sealing it and reading it back gives it again.
+  const auto back = format::unseal(format::seal(key, bytes), key);
+  if (!back || *back != bytes) std::abort();
+  return 0;
+}
