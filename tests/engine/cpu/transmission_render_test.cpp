@@ -17,7 +17,7 @@
 #include "materials/material.h"
 #include "scenes/scene_geometry.h"
 #include "tests/support/cages.h"
-#include "tests/support/uv_sphere.h"
+#include "tests/support/inside_sphere.h"
 
 namespace facet {
 namespace {
@@ -85,9 +85,9 @@ scene::ControlCage slab(double depth) {
 
 TEST(TransmissionRender, GlassBallInAWhiteFurnaceRendersTheEnvironment) {
   const materials::Material glass = build(glassSpec(1.5));
-  const glm::dvec3 direct = renderMean(underWhite(glass, testing::uvSphere(32, 64), 0, 32, 35));
+  const glm::dvec3 direct = renderMean(underWhite(glass, testing::uvSphereCage(32, 64), 0, 32, 35));
   const auto start = std::chrono::steady_clock::now();
-  const glm::dvec3 paths = renderMean(underWhite(glass, testing::uvSphere(32, 64), 32, 32, 35));
+  const glm::dvec3 paths = renderMean(underWhite(glass, testing::uvSphereCage(32, 64), 32, 32, 35));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("glass ball, white furnace: bounces 0 mean %.5f, bounces 32 mean %.5f %.5f %.5f (%.2f s)\n", direct.x,
               paths.x, paths.y, paths.z, seconds);
@@ -129,8 +129,8 @@ TEST(TransmissionRender, TransparentPresetsLookThrough) {
     spec.preset = preset;
     spec.roughness = 0.0;
     const materials::Material material = build(spec);
-    const glm::dvec3 direct = renderMean(underWhite(material, testing::uvSphere(16, 32), 0, 16, 35));
-    const glm::dvec3 paths = renderMean(underWhite(material, testing::uvSphere(16, 32), 24, 16, 35));
+    const glm::dvec3 direct = renderMean(underWhite(material, testing::uvSphereCage(16, 32), 0, 16, 35));
+    const glm::dvec3 paths = renderMean(underWhite(material, testing::uvSphereCage(16, 32), 24, 16, 35));
     std::printf("%-18s bounces 0: %.4f, bounces 24: %.4f %.4f %.4f\n", preset, direct.x, paths.x, paths.y, paths.z);
     EXPECT_LT(direct.x, 0.35) << preset;
     if (std::string(preset) == "glass-high-ruby") {  // ruby: all but red absorbed
@@ -146,7 +146,7 @@ TEST(TransmissionRender, TransparentPresetsLookThrough) {
 
 TEST(TransmissionRender, TheGpuRefusesTransmissiveMaterials) {
   try {
-    render(underWhite(build(glassSpec(1.5)), testing::uvSphere(8, 16), 0, 8, 35), Backend::Gpu);
+    render(underWhite(build(glassSpec(1.5)), testing::uvSphereCage(8, 16), 0, 8, 35), Backend::Gpu);
     FAIL() << "the GPU rendered glass";
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()),
