@@ -26,9 +26,13 @@ class Stopwatch {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
-// Transmission renders on the CPU reference only for now (docs/rendering.md,
-// "Transmission and absorption").
+// Transmission and lobe limits render on the CPU reference only for now
+// (docs/rendering.md, "Transmission and absorption").
 void refuseTransmissionOnGpu(const scene::Scene& scene) {
+  if (scene::limitsLobes(scene.render))
+    throw std::invalid_argument(
+        "render.diffuse_bounces, glossy_bounces, transmission_bounces: limits per lobe kind render on the CPU "
+        "reference only for now (--backend cpu)");
   for (const scene::Object& object : scene.objects) {
     const materials::Material& material = scene.materials[std::size_t(object.material)];
     if (materials::isTransmissive(material))

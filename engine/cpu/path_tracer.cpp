@@ -9,7 +9,9 @@ namespace facet::cpu {
 namespace m = rules::f64;
 
 glm::dvec3 tracePath(const PathScene& scene, const PathVertex& first, const PathSampleKey& key, int bounces,
-                     std::vector<BounceRays>& rays) {
+                     std::vector<BounceRays>& rays, const LobeLimits& limits) {
+  const int limit[3] = {limits.diffuse, limits.glossy, limits.transmission};
+  int taken[3] = {0, 0, 0};
   glm::dvec3 radiance = first.radiance;
   glm::dvec3 throughput(1.0);
   PathVertex vertex = first;
@@ -24,12 +26,14 @@ glm::dvec3 tracePath(const PathScene& scene, const PathVertex& first, const Path
     const glm::dvec2 u = m::path_continuation_u(key.pixel, key.sample, key.samples, key.seed, vertexIndex);
     glm::dvec3 direction;
     bool transmitted = false;
+    int lobe = m::PATH_LOBE_DIFFUSE;
     if (vertex.transmissive) {
       const m::TransmissiveContinuation next =
           m::continue_path_transmissive(vertex.params, vertex.transmission, vertex.n, vertex.ng, vertex.v, u,
                                         m::path_interface_u(key.pixel, key.sample, key.samples, key.seed, vertexIndex));
       direction = next.direction;
       transmitted = next.transmitted;
+      lobe = next.lobe;
       throughput *= next.weight;
       if (transmitted && !vertex.transmission.thin_walled)
         sigma = vertex.outside ? vertex.transmission.sigma : glm::dvec3(0.0);
@@ -37,8 +41,11 @@ glm::dvec3 tracePath(const PathScene& scene, const PathVertex& first, const Path
       const m::PathContinuation next =
           m::continue_path(vertex.params, vertex.n, vertex.ng, vertex.v, vertex.specularScale, u);
       direction = next.direction;
+      lobe = m::opaque_continuation_lobe(vertex.params, u);
       throughput *= next.weight;
     }
+    if (!m::path_lobe_allowed(taken[lobe], limit[lobe])) break;
+    ++taken[lobe];
     if (throughput == glm::dvec3(0.0)) break;
 
     BounceRays& counts = rays[std::size_t(bounce)];

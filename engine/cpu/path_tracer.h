@@ -68,10 +68,17 @@ struct PathSampleKey {
   std::uint32_t seed = 0;     // the environment's seed
 };
 
+// Continuations of each lobe kind a path may take (PATH_LOBE_*); -1: no limit of its own.
+struct LobeLimits {
+  int diffuse = -1;
+  int glossy = -1;
+  int transmission = -1;
+};
+
 // L of the path whose first vertex is `first` (shaded with the scene's
 // seed), with at most `bounces` continuations; `rays` (bounces + 1 entries)
 // counts each bounce's continuation and shadow rays.
 glm::dvec3 tracePath(const PathScene& scene, const PathVertex& first, const PathSampleKey& key, int bounces,
-                     std::vector<BounceRays>& rays);
+                     std::vector<BounceRays>& rays, const LobeLimits& limits = {});
 
 }  // namespace facet::cpu

@@ -352,6 +352,8 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
   std::atomic<int> nextRow{window.y0}, finishedRows{0};
   std::atomic<std::uint64_t> primaryRays{0}, shadowRays{0};
   const int bounces = scene.render.bounces;
+  const LobeLimits lobeLimits{scene.render.diffuseBounces, scene.render.glossyBounces,
+                              scene.render.transmissionBounces};
   std::vector<BounceRays> raysPerBounce(bounces > 0 ? std::size_t(bounces) + 1 : 0);
   std::mutex progressMutex;
   auto worker = [&] {
@@ -386,7 +388,7 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
           const PathVertex first = reference.shadeVertex(*hit, direction, pixelId, sample, reference.environmentSeed(),
                                                          bounceRays[0].shadowRays);
           radiance += tracePath(reference, first, {pixelId, sample, raysPerPixel, reference.environmentSeed()}, bounces,
-                                bounceRays);
+                                bounceRays, lobeLimits);
         }
         const double samples = double(rules::f64::shaded_sample_count(strata));
         image.beauty[pixel] = glm::vec4(glm::vec3(radiance / samples), float(coverage / samples));

@@ -41,7 +41,14 @@ struct TransmissiveContinuation {
   vec3 direction;
   vec3 weight;       // zero where the path ends
   bool transmitted;  // through the surface: the path changes medium (unless thin-walled)
+  int lobe;          // PATH_LOBE_*, for the path's limits per lobe kind
 };
+
+// The lobe kind of continue_path's continuation for u: the specular lobe's
+// share of u.x is glossy (sample_brdf_lobes).
+FACET_FN int opaque_continuation_lobe(BrdfParams p, vec2 u) {
+  return u.x < specular_lobe_probability(p) ? PATH_LOBE_GLOSSY : PATH_LOBE_DIFFUSE;
+}
 
 // p as transmissive_brdf_params gives it (p.eta.x the interface's eta); u as
 // continue_path's, u_interface picks reflection or transmission
@@ -53,6 +60,7 @@ FACET_FN TransmissiveContinuation continue_path_transmissive(BrdfParams p, Trans
   c.direction = vec3(real(0));
   c.weight = vec3(real(0));
   c.transmitted = false;
+  c.lobe = PATH_LOBE_DIFFUSE;
   real p_diffuse = transmissive_diffuse_probability(p, t);
   bool diffuse = u.x < p_diffuse;
   vec2 v_u = diffuse ? vec2(min(u.x / p_diffuse, BELOW_ONE), u.y)
@@ -61,6 +69,7 @@ FACET_FN TransmissiveContinuation continue_path_transmissive(BrdfParams p, Trans
     DielectricSample s = sample_dielectric(p.alpha, p.eta.x, t.transmission, t.thin_walled, n, ng, v, v_u, u_interface);
     c.direction = s.direction;
     c.transmitted = s.transmitted;
+    c.lobe = s.transmitted ? PATH_LOBE_TRANSMISSION : PATH_LOBE_GLOSSY;
     if (s.weight <= real(0)) return c;
     if (s.transmitted || p_diffuse <= real(0)) {
       // No other lobe reaches this direction: the weight is the dielectric's alone.

@@ -155,5 +155,40 @@ TEST(TransmissionRender, TheGpuRefusesTransmissiveMaterials) {
   }
 }
 
+// Limits per lobe kind (render.diffuse_bounces, glossy_bounces,
+// transmission_bounces): a path ends at the continuation that would exceed
+// its kind's limit, whatever the bounces allow.
+TEST(LobeLimits, ADiffuseLimitEndsPathsAsFewerBouncesWould) {
+  scene::Scene limited = testing::insideDiffuseSphere(0.5, 24, 24, 4);
+  limited.render.diffuseBounces = 2;
+  limited.render.glossyBounces = 0;  // the Lambertian sphere has no specular lobe to take
+  const Image a = cpu::renderReference(limited, scene::buildGeometry(limited));
+  const scene::Scene two = testing::insideDiffuseSphere(0.5, 2, 24, 4);
+  const Image b = cpu::renderReference(two, scene::buildGeometry(two));
+  for (std::size_t p = 0; p < a.pixelCount(); ++p) ASSERT_EQ(a.beauty[p], b.beauty[p]) << p;
+}
+
+TEST(LobeLimits, AGlassBallNeedsTwoTransmissions) {
+  const materials::Material glass = build(glassSpec(1.5));
+  double mean[3];
+  for (int limit : {0, 1, 2}) {
+    scene::Scene s = underWhite(glass, testing::uvSphereCage(16, 32), 16, 16, 35);
+    s.render.transmissionBounces = limit;
+    mean[limit] = renderMean(s).x;
+  }
+  std::printf("glass ball, transmission bounces 0, 1, 2: %.4f %.4f %.4f\n", mean[0], mean[1], mean[2]);
+  EXPECT_EQ(mean[0], mean[1]);  // in but never out: nothing more reaches the camera
+  EXPECT_LT(mean[1], 0.2);
+  EXPECT_GT(mean[2], 0.9);
+  scene::Scene s = underWhite(glass, testing::uvSphereCage(8, 16), 4, 8, 35);
+  s.render.transmissionBounces = 2;
+  try {
+    render(s, Backend::Gpu);
+    FAIL() << "the GPU limited lobes";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("limits per lobe kind render on the CPU reference only"), std::string::npos);
+  }
+}
+
 }  // namespace
 }  // namespace facet

@@ -159,7 +159,9 @@ TEST(Dielectric, RoughInterfaceLosesOnlyWhatSingleScatteringMisses) {
       const Energy e = interfaceEnergy(alpha, eta, 1.0, false, 0.7, 300);
       std::printf("alpha %.1f eta %.3f: R + T = %.5f\n", alpha, eta, e.reflected + e.transmitted);
       EXPECT_LE(e.reflected + e.transmitted, 1.0 + 1e-3);
-      if (eta > 1) EXPECT_GT(e.reflected + e.transmitted, alpha < 0.2 ? 0.99 : 0.9);
+      if (eta > 1) {
+        EXPECT_GT(e.reflected + e.transmitted, alpha < 0.2 ? 0.99 : 0.9);
+      }
     }
 }
 
