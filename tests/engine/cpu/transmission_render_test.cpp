@@ -93,6 +93,13 @@ TEST(TransmissionRender, GlassBallInAWhiteFurnaceRendersTheEnvironment) {
               paths.x, paths.y, paths.z, seconds);
   EXPECT_LT(direct.x, 0.2);  // reflection alone
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(paths[c], 1.0, 0.01);
+  // A rough ball loses what single scattering misses at each crossing, and no more.
+  materials::MaterialSpec rough = glassSpec(1.5);
+  rough.alpha = 0.1;
+  const glm::dvec3 roughMean = renderMean(underWhite(build(rough), testing::uvSphereCage(32, 64), 32, 32, 35));
+  std::printf("rough glass ball (alpha 0.1): %.5f\n", roughMean.x);
+  EXPECT_LE(roughMean.x, 1.0 + 0.01);
+  EXPECT_GT(roughMean.x, 0.9);
 }
 
 TEST(TransmissionRender, ThinAndThickSlabsOfOneGlassTransmitBeerLambert) {
