@@ -21,11 +21,10 @@
 namespace facet::scene {
 namespace {
 
-using nlohmann::json;
 using detail::Field;
 using detail::readEnvironment;
 using detail::readRender;
-
+using nlohmann::json;
 
 Camera readCamera(const Field& f) {
   f.object({"eye", "target", "up", "fov"});
@@ -88,10 +87,9 @@ Texture readTexture(const Field& f, const std::filesystem::path& sceneFile, bool
   const Field image = detailed ? f["image"] : f;
   TextureSampler sampler;
   if (detailed && f.has("wrap"))
-    sampler.wrapS = sampler.wrapT =
-        f["wrap"].choice<std::uint32_t>({{"repeat", rules::f64::FACET_WRAP_REPEAT},
-                                         {"mirror", rules::f64::FACET_WRAP_MIRRORED_REPEAT},
-                                         {"clamp", rules::f64::FACET_WRAP_CLAMP_TO_EDGE}});
+    sampler.wrapS = sampler.wrapT = f["wrap"].choice<std::uint32_t>({{"repeat", rules::f64::FACET_WRAP_REPEAT},
+                                                                     {"mirror", rules::f64::FACET_WRAP_MIRRORED_REPEAT},
+                                                                     {"clamp", rules::f64::FACET_WRAP_CLAMP_TO_EDGE}});
   if (detailed && f.has("filter") && f["filter"].choice<bool>({{"linear", false}, {"nearest", true}})) {
     sampler.magFilter = sampler.minFilter = rules::f64::FACET_FILTER_NEAREST;
     sampler.mipMode = rules::f64::FACET_MIP_NEAREST;
