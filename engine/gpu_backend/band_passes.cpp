@@ -178,7 +178,7 @@ BandCounts traceBand(gpu::Device& d, const Kernels& k, const BindingTable& table
     }
     if (bounce == bounces) finish(bounceEncoder);
     const layout::RenderCounters c = submit(bounceEncoder);
-    counts.bounceMilliseconds.push_back(clock.read(Pass::Continue, Pass::BounceGather));
+    clock.read(Pass::Continue, Pass::BounceGather);
     counts.bounces.push_back({c.pathRays, c.pathHits, c.shadowRays});
     alive = c.pathHits;
     if (!add(c)) break;

@@ -44,9 +44,8 @@ struct GpuBounceRays {
 struct BandCounts {
   std::uint64_t shadowRays = 0;
   std::uint64_t newtonFallbacks = 0;
-  std::uint32_t neededFallbacks = 0;       // the longest fallback list of any bounce
-  std::vector<GpuBounceRays> bounces;      // with paths: bounce 0 (camera rays) to the last
-  std::vector<double> bounceMilliseconds;  // with paths: GPU time of bounce 1 ... (continuation on)
+  std::uint32_t neededFallbacks = 0;   // the longest fallback list of any bounce
+  std::vector<GpuBounceRays> bounces;  // with paths: bounce 0 (camera rays) to the last
 };
 
 // Renders the band whose `frame` is written: its `rays` camera rays and, with

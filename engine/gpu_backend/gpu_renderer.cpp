@@ -150,14 +150,11 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
       result.shadowRays += counts.shadowRays;
       result.newtonFallbacks += counts.newtonFallbacks;
       result.raysPerBounce.resize(counts.bounces.size());
-      result.bounceMilliseconds.resize(counts.bounceMilliseconds.size());
       for (std::size_t b = 0; b < counts.bounces.size(); ++b) {
         result.raysPerBounce[b].rays += counts.bounces[b].rays;
         result.raysPerBounce[b].hits += counts.bounces[b].hits;
         result.raysPerBounce[b].shadowRays += counts.bounces[b].shadowRays;
       }
-      for (std::size_t b = 0; b < counts.bounceMilliseconds.size(); ++b)
-        result.bounceMilliseconds[b] += counts.bounceMilliseconds[b];
       first += count;
       finished += count;
       if (progress) progress(double(finished) / double(pixels));

@@ -39,9 +39,8 @@ struct GpuRenderResult {
   std::uint64_t newtonFallbacks = 0;  // exact cells whose domain was subdivided
   std::uint64_t gpuBytes = 0;         // scene arrays and one band's ray buffers
   // Paths (bounces above 0): bounce 0's camera rays to the last bounce's
-  // continuation rays, and the GPU time of bounces 1 ... (continuation on).
+  // continuation rays.
   std::vector<GpuBounceRays> raysPerBounce;
-  std::vector<double> bounceMilliseconds;
 };
 
 class GpuRenderer {

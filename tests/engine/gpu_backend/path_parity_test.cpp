@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <vector>
@@ -147,41 +146,6 @@ TEST_F(GpuPaths, ACropTracesTheWholeRendersPaths) {
     for (int x = window.x0; x < window.x1; ++x)
       ASSERT_EQ(crop.beauty[crop.index(x - window.x0, y - window.y0)], whole.beauty[whole.index(x, y)])
           << x << ", " << y;
-}
-
-// A measurement, not a check (run with --gtest_also_run_disabled_tests):
-// the scene file $FACET_PATHS_SCENE (its own bounces), on the GPU and the
-// CPU, both methods: GPU time per bounce, rays per second, the mean's
-// difference.
-TEST_F(GpuPaths, DISABLED_MeasureAScene) {
-  const char* file = std::getenv("FACET_PATHS_SCENE");
-  ASSERT_NE(file, nullptr) << "set FACET_PATHS_SCENE to a scene file";
-  for (auto method : {scene::IntersectionMethod::Exact, scene::IntersectionMethod::Tessellated}) {
-    scene::Scene scene = scene::loadScene(file);
-    scene.render.method = method;
-    const scene::SceneGeometry geometry = scene::buildGeometry(scene);
-    const Image reference = cpu::renderReference(scene, geometry);
-    gpu_backend::GpuRenderer renderer(device_);
-    renderer.render(scene, geometry);  // compiles the pipelines
-    const gpu_backend::GpuRenderResult gpu = renderer.render(scene, geometry);
-    std::printf("%s\n", method == scene::IntersectionMethod::Exact ? "exact" : "tessellated");
-    double cameraMs = 0;
-    for (const StageTime& t : gpu.stageMilliseconds)
-      if (t.stage >= Stage::Intersect && t.stage <= Stage::Gather) cameraMs += t.milliseconds;
-    std::printf("  bounce 0: %llu camera rays, %.2f ms, %.3f Mrays/s\n",
-                (unsigned long long)gpu.raysPerBounce.at(0).rays, cameraMs,
-                double(gpu.raysPerBounce[0].rays) / cameraMs * 1e-3);
-    for (std::size_t b = 0; b < gpu.bounceMilliseconds.size(); ++b)
-      std::printf("  bounce %zu: %llu continuation rays, %.2f ms, %.3f Mrays/s\n", b + 1,
-                  (unsigned long long)gpu.raysPerBounce.at(b + 1).rays, gpu.bounceMilliseconds[b],
-                  double(gpu.raysPerBounce[b + 1].rays) / gpu.bounceMilliseconds[b] * 1e-3);
-    for (const StageTime& t : gpu.stageMilliseconds)
-      std::printf("  %-18s %8.2f ms\n", std::string(stageName(t.stage)).c_str(), t.milliseconds);
-    const double cpuMean = meanRadiance(reference).mean, gpuMean = meanRadiance(gpu.image).mean;
-    const std::vector<double> errors = relativeErrors(reference, gpu.image);
-    std::printf("  mean radiance GPU %.6f CPU %.6f, relative difference %.2e; per pixel median %.2e, 98th %.2e\n",
-                gpuMean, cpuMean, gpuMean / cpuMean - 1, errors[errors.size() / 2], errors[errors.size() * 98 / 100]);
-  }
 }
 
 }  // namespace
