@@ -25,6 +25,11 @@ materials::Material toEngineMaterial(const v0::Material& material, const std::st
   spec.k = engineVector(material.k);
   spec.diffuse = engineVector(material.diffuse);
   spec.energyCompensation = material.energyCompensation;
+  spec.transmission = material.transmission;
+  spec.thinWalled = material.thinWalled;
+  spec.thickness = material.thickness;
+  spec.attenuationColor = engineVector(material.attenuationColor);
+  spec.attenuationDistance = material.attenuationDistance;
   return materials::buildMaterial(spec, [&](std::string_view field) { return where + "." + std::string(field); });
 }
 

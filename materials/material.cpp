@@ -41,11 +41,76 @@ std::string formatNumber(double x) {
 
 std::string formatVector(glm::dvec3 v) { return formatNumber(v.x) + "," + formatNumber(v.y) + "," + formatNumber(v.z); }
 
+// The transmission fields of `spec` (or its preset) into `m`, whose
+// transmission factor and Fresnel are already resolved.
+template <class Fail>
+void checkTransmission(const MaterialSpec& spec, const Preset* preset, Material& m, const Fail& fail) {
+  const bool transmissive = isTransmissive(m);
+  auto transmissiveOnly = [&](std::string_view field, bool given) {
+    if (given && !transmissive) fail(field, "is only used by a transmissive material (transmission > 0)");
+  };
+  transmissiveOnly("thin_walled", spec.thinWalled.has_value());
+  transmissiveOnly("attenuation_color", spec.attenuationColor.has_value());
+  transmissiveOnly("attenuation_distance", spec.attenuationDistance.has_value());
+  transmissiveOnly("thickness", spec.thickness.has_value());
+  if (!transmissive) return;
+  const std::string_view indexField = spec.ior ? "ior" : spec.f0 ? "f0" : "preset";
+  if (m.fresnel != rules::f64::F_DIELECTRIC)
+    fail("fresnel", "a transmissive material (transmission > 0) takes fresnel 'dielectric', not '" +
+                        std::string(modelName(kFresnelTerms, m.fresnel)) + "'");
+  if (m.distribution != rules::f64::D_GGX)
+    fail("distribution", "a transmissive material samples GGX's visible normals: must be 'ggx'");
+  if (m.geometry != rules::f64::G_SMITH_GGX_CORRELATED)
+    fail("geometry",
+         "a transmissive material's BTDF uses Smith's height-correlated GGX: must be "
+         "'smith-ggx-correlated'");
+  if (!(m.eta.x == m.eta.y && m.eta.x == m.eta.z))
+    fail(indexField, "a transmissive material has one index of refraction (no dispersion), got " + formatVector(m.eta));
+  if (!(m.eta.x >= 1.0))
+    fail(indexField, "a transmissive material's index of refraction (inside over outside) must be >= 1, got " +
+                         formatNumber(m.eta.x));
+  if (m.energyCompensation) fail("energy_compensation", "is not defined for a transmissive material");
+  m.thinWalled = spec.thinWalled.value_or(false);
+  if (preset) m.attenuationColor = preset->attenuationColor, m.attenuationDistance = preset->attenuationDistance;
+  if (spec.attenuationColor) {
+    for (int i = 0; i < 3; ++i)
+      if (!((*spec.attenuationColor)[i] >= 0.0 && (*spec.attenuationColor)[i] <= 1.0))
+        fail("attenuation_color", "every component must be in [0, 1], got " + formatVector(*spec.attenuationColor));
+    m.attenuationColor = *spec.attenuationColor;
+  }
+  if (spec.attenuationDistance) {
+    if (!(*spec.attenuationDistance > 0.0))  // also rejects NaN
+      fail("attenuation_distance",
+           "must be > 0 (leave it out for no absorption), got " + formatNumber(*spec.attenuationDistance));
+    m.attenuationDistance = *spec.attenuationDistance;
+  }
+  if (spec.thickness) {
+    if (!m.thinWalled) fail("thickness", "is only used by a thin-walled material (thin_walled true)");
+    if (!(*spec.thickness >= 0.0 && std::isfinite(*spec.thickness)))
+      fail("thickness", "must be finite and >= 0, got " + formatNumber(*spec.thickness));
+    m.thickness = *spec.thickness;
+  }
+}
+
 }  // namespace
 
-rules::f64::BrdfParams toParams64(const Material& material) { return toParams<rules::f64::BrdfParams, glm::dvec3>(material); }
+rules::f64::TransmissionParams transmissionParams64(const Material& material) {
+  rules::f64::TransmissionParams t;
+  t.transmission = material.transmission;
+  t.ior = material.eta.x;
+  t.thin_walled = material.thinWalled;
+  t.sigma = rules::f64::absorption_coefficient(material.attenuationColor, material.attenuationDistance);
+  t.thickness = material.thickness;
+  return t;
+}
 
-rules::f32::BrdfParams toParams32(const Material& material) { return toParams<rules::f32::BrdfParams, glm::vec3>(material); }
+rules::f64::BrdfParams toParams64(const Material& material) {
+  return toParams<rules::f64::BrdfParams, glm::dvec3>(material);
+}
+
+rules::f32::BrdfParams toParams32(const Material& material) {
+  return toParams<rules::f32::BrdfParams, glm::vec3>(material);
+}
 
 Material buildMaterial(const MaterialSpec& spec,
                        const std::function<std::string(std::string_view field)>& describeField) {
@@ -90,9 +155,15 @@ Material buildMaterial(const MaterialSpec& spec,
     }
   };
   bool hasFresnelParameter = spec.f0 || spec.ior || spec.eta || spec.k || preset;
+  if (spec.transmission) checkRange("transmission", *spec.transmission, 0.0, 1.0);
+  m.transmission = spec.transmission.value_or(preset ? preset->transmission : 0.0);
+  const bool transmissive = isTransmissive(m);
+  const int defaultFresnel = transmissive          ? rules::f64::F_DIELECTRIC
+                             : hasFresnelParameter ? rules::f64::F_SCHLICK
+                                                   : rules::f64::F_NONE;
   m.distribution = parse(kDistributions, "distribution", spec.distribution, rules::f64::D_GGX);
   m.geometry = parse(kGeometryTerms, "geometry", spec.geometry, rules::f64::G_SMITH_GGX_CORRELATED);
-  m.fresnel = parse(kFresnelTerms, "fresnel", spec.fresnel, hasFresnelParameter ? rules::f64::F_SCHLICK : rules::f64::F_NONE);
+  m.fresnel = parse(kFresnelTerms, "fresnel", spec.fresnel, defaultFresnel);
 
   if (spec.alpha && spec.roughness) fail("alpha", "give alpha or roughness, not both");
   if (!spec.alpha && !spec.roughness) fail("alpha", "required (or roughness = sqrt(alpha))");
@@ -116,7 +187,8 @@ Material buildMaterial(const MaterialSpec& spec,
     if (given && !used) fail(field, "is only used by fresnel " + std::string(users) + ", not '" + fresnelName + "'");
   };
   onlyFor("f0", spec.f0.has_value(),
-          m.fresnel == rules::f64::F_SCHLICK || m.fresnel == rules::f64::F_DIELECTRIC || m.fresnel == rules::f64::F_BLENDER_METALLIC,
+          m.fresnel == rules::f64::F_SCHLICK || m.fresnel == rules::f64::F_DIELECTRIC ||
+              m.fresnel == rules::f64::F_BLENDER_METALLIC,
           "'schlick', 'dielectric' or 'blender-metallic'");
   onlyFor("ior", spec.ior.has_value(), m.fresnel == rules::f64::F_DIELECTRIC, "'dielectric'");
   onlyFor("eta", spec.eta.has_value(), m.fresnel == rules::f64::F_CONDUCTOR, "'conductor'");
@@ -151,6 +223,7 @@ Material buildMaterial(const MaterialSpec& spec,
     m.diffuse = *spec.diffuse;
   }
   m.energyCompensation = spec.energyCompensation.value_or(false);
+  checkTransmission(spec, preset, m, fail);
   return m;
 }
 
@@ -179,9 +252,24 @@ MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view s
     return glm::dvec3(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
   };
 
-  static const char* const kKeys[] = {
-      "name", "preset", "distribution", "geometry",           "fresnel", "alpha", "roughness", "f0", "ior",
-      "eta",  "k",      "diffuse",      "energy_compensation"};
+  static const char* const kKeys[] = {"name",
+                                      "preset",
+                                      "distribution",
+                                      "geometry",
+                                      "fresnel",
+                                      "alpha",
+                                      "roughness",
+                                      "f0",
+                                      "ior",
+                                      "eta",
+                                      "k",
+                                      "diffuse",
+                                      "energy_compensation",
+                                      "transmission",
+                                      "thin_walled",
+                                      "attenuation_color",
+                                      "attenuation_distance",
+                                      "thickness"};
   if (const std::optional<std::string> key = findUnknownKey(json, kKeys)) fail(*key, unknownFieldRule(kKeys));
 
   MaterialSpec spec;
@@ -201,6 +289,14 @@ MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view s
     if (!json["energy_compensation"].is_boolean()) fail("energy_compensation", "expected true or false");
     spec.energyCompensation = json["energy_compensation"].get<bool>();
   }
+  spec.transmission = number("transmission");
+  if (json.contains("thin_walled")) {
+    if (!json["thin_walled"].is_boolean()) fail("thin_walled", "expected true or false");
+    spec.thinWalled = json["thin_walled"].get<bool>();
+  }
+  spec.attenuationColor = color("attenuation_color");
+  spec.attenuationDistance = number("attenuation_distance");
+  spec.thickness = number("thickness");
   return spec;
 }
 
@@ -229,6 +325,14 @@ nlohmann::json toJson(const Material& m) {
   };
   if (!m.name.empty()) json["name"] = m.name;
   if (m.energyCompensation) json["energy_compensation"] = true;
+  if (isTransmissive(m)) {
+    json["transmission"] = m.transmission;
+    if (m.thinWalled) json["thin_walled"] = true, json["thickness"] = m.thickness;
+    if (std::isfinite(m.attenuationDistance)) {
+      json["attenuation_color"] = array(m.attenuationColor);
+      json["attenuation_distance"] = m.attenuationDistance;
+    }
+  }
   switch (m.fresnel) {
     case rules::f64::F_SCHLICK:
     case rules::f64::F_BLENDER_METALLIC:

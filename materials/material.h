@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -55,7 +56,23 @@ struct Material {
   // "Energy compensation"); off keeps the course's single-scattering model.
   bool energyCompensation = false;
   std::optional<MaterialTextures> textures;  // set when the material reads any texture
+  // Transmission (docs/shading.md, "Transmission"): glTF's transmission
+  // factor replaces that share of the diffuse base by a rough dielectric
+  // BTDF of index eta.x; inside, light keeps attenuationColor of itself over
+  // attenuationDistance (Beer-Lambert). A thin wall transmits without
+  // bending and absorbs over `thickness` instead.
+  double transmission = 0.0;
+  bool thinWalled = false;
+  glm::dvec3 attenuationColor{1.0};
+  double attenuationDistance = std::numeric_limits<double>::infinity();
+  double thickness = 0.0;
 };
+
+// Whether a material transmits any light.
+inline bool isTransmissive(const Material& material) { return material.transmission > 0.0; }
+
+// Its transmission as the shared rules take it (rules/shading/transmissive_continuation.h).
+rules::f64::TransmissionParams transmissionParams64(const Material& material);
 
 rules::f64::BrdfParams toParams64(const Material& material);
 rules::f32::BrdfParams toParams32(const Material& material);
@@ -76,6 +93,11 @@ struct MaterialSpec {
   std::optional<glm::dvec3> k;
   std::optional<glm::dvec3> diffuse;
   std::optional<bool> energyCompensation;
+  std::optional<double> transmission;
+  std::optional<bool> thinWalled;
+  std::optional<glm::dvec3> attenuationColor;
+  std::optional<double> attenuationDistance;
+  std::optional<double> thickness;
 };
 
 // Validates and resolves a spec. Throws std::invalid_argument whose message

@@ -5,6 +5,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <limits>
 #include <span>
 #include <string_view>
 
@@ -16,6 +17,11 @@ struct Preset {
   bool metal;              // metals have no diffuse term
   glm::dvec3 f0_linear;    // F(0) linear, as printed
   glm::dvec3 f0_srgb;      // F(0) sRGB, as printed (for checking only)
+  // Not the course's: the transparent insulators transmit (docs/shading.md,
+  // "Transmission"), ruby absorbing all but red over attenuationDistance.
+  double transmission = 0.0;
+  glm::dvec3 attenuationColor{1.0};
+  double attenuationDistance = std::numeric_limits<double>::infinity();
 };
 
 std::span<const Preset> presets();

@@ -190,15 +190,24 @@ PYBIND11_MODULE(facet, m) {
   py::class_<facet::Material>(m, "Material", "A material as scene files write it (docs/shading.md)")
       .def(py::init([](const std::string& name, OptText preset, OptText d, OptText g, OptText f, OptReal alpha,
                        OptReal roughness, OptVec f0, OptVec ior, OptVec eta, OptVec k, OptVec diffuse,
-                       bool energyCompensation) {
-             return facet::Material{
+                       bool energyCompensation, OptReal transmission, std::optional<bool> thinWalled, OptReal thickness,
+                       OptVec attenuationColor, OptReal attenuationDistance) {
+             facet::Material material{
                  name, preset, d, g, f, alpha, roughness, f0, ior, eta, k, diffuse, energyCompensation};
+             material.transmission = transmission;
+             material.thinWalled = thinWalled;
+             material.thickness = thickness;
+             material.attenuationColor = attenuationColor;
+             material.attenuationDistance = attenuationDistance;
+             return material;
            }),
            py::kw_only(), py::arg("name") = "", py::arg("preset") = py::none(), py::arg("d") = py::none(),
            py::arg("g") = py::none(), py::arg("f") = py::none(), py::arg("alpha") = py::none(),
            py::arg("roughness") = py::none(), py::arg("f0") = py::none(), py::arg("ior") = py::none(),
            py::arg("eta") = py::none(), py::arg("k") = py::none(), py::arg("diffuse") = py::none(),
-           py::arg("energy_compensation") = false)
+           py::arg("energy_compensation") = false, py::arg("transmission") = py::none(),
+           py::arg("thin_walled") = py::none(), py::arg("thickness") = py::none(),
+           py::arg("attenuation_color") = py::none(), py::arg("attenuation_distance") = py::none())
       .def_readwrite("name", &facet::Material::name)
       .def_readwrite("preset", &facet::Material::preset)
       .def_readwrite("d", &facet::Material::distribution)
@@ -211,7 +220,12 @@ PYBIND11_MODULE(facet, m) {
       .def_readwrite("eta", &facet::Material::eta)
       .def_readwrite("k", &facet::Material::k)
       .def_readwrite("diffuse", &facet::Material::diffuse)
-      .def_readwrite("energy_compensation", &facet::Material::energyCompensation);
+      .def_readwrite("energy_compensation", &facet::Material::energyCompensation)
+      .def_readwrite("transmission", &facet::Material::transmission)
+      .def_readwrite("thin_walled", &facet::Material::thinWalled)
+      .def_readwrite("thickness", &facet::Material::thickness)
+      .def_readwrite("attenuation_color", &facet::Material::attenuationColor)
+      .def_readwrite("attenuation_distance", &facet::Material::attenuationDistance);
 
   py::class_<facet::Cage>(m, "Cage", "A Catmull-Clark control cage in world space, 0-based indices")
       .def(py::init([](const Doubles& positions,

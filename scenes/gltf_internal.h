@@ -74,6 +74,12 @@ class TextureTable {
 materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index, const GltfReader& reader,
                                TextureTable& textures);
 
+// gltf_transmission.cpp: KHR_materials_ior, KHR_materials_transmission and
+// KHR_materials_volume of `gltf` (field `material`) into `m`, whose base
+// colour factor and metallic factor are `base` and `metallic`.
+void applyTransmission(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
+                       const glm::dvec3& base, double metallic, materials::Material& m);
+
 // gltf_meshes.cpp: adds the primitives of one mesh instance as one welded
 // cage, with its NORMALs per face corner when every primitive has them
 // (shading normals of the mesh as authored), and likewise its TEXCOORD_0 as a

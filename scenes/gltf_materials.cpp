@@ -156,6 +156,7 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
   m.diffuse = base * (1.0 - metallic);
   m.f0 = glm::mix(glm::dvec3(0.04), base, metallic);
   m.alpha = roughness * roughness;
+  applyTransmission(gltf, material, reader, base, metallic, m);
   for (double c : gltf.emissiveFactor)
     if (!(c >= 0.0 && c <= 1.0))
       reader.fail(material + ".emissiveFactor", "every component must be in [0, 1], is " + formatNumber(c));

@@ -73,6 +73,11 @@ struct RenderSettings {
   int height = 512;
   int samplesPerPixel = 1;  // a square number: stratified sqrt x sqrt
   int bounces = 0;          // continuations per camera sample's path; 0: direct light only
+  // Continuations of each lobe kind a path may take besides `bounces`
+  // (rules/sampling/path_samples.h); -1: no limit of its own. CPU only.
+  int diffuseBounces = -1;
+  int glossyBounces = -1;
+  int transmissionBounces = -1;
   IntersectionMethod method = IntersectionMethod::Exact;
   // Screen-space tolerance, in pixels, that chooses refinement and dicing
   // levels (see chooseRefinement).
@@ -105,6 +110,11 @@ struct Environment {
   // with different seeds are statistically independent.
   std::uint32_t seed = 0;
 };
+
+// Whether any lobe kind has a limit of its own.
+inline bool limitsLobes(const RenderSettings& r) {
+  return r.diffuseBounces >= 0 || r.glossyBounces >= 0 || r.transmissionBounces >= 0;
+}
 
 // Whether paths of `bounces` count the environment once (kBouncesNeedOcclusionRule).
 inline bool pathsCountEnvironmentOnce(int bounces, const std::optional<Environment>& environment) {

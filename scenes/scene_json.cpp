@@ -9,10 +9,10 @@
 #include <memory>
 #include <set>
 
-#include "materials/strict_json.h"
 #include "scenes/camera_keys.h"
 #include "scenes/environment_map.h"
 #include "scenes/input_error.h"
+#include "scenes/json_field.h"
 #include "scenes/obj_cage.h"
 #include "scenes/scene_file.h"
 #include "scenes/texture.h"
@@ -21,89 +21,10 @@
 namespace facet::scene {
 namespace {
 
+using detail::Field;
+using detail::readEnvironment;
+using detail::readRender;
 using nlohmann::json;
-
-// A value in the document and the path that names it in error messages.
-class Field {
- public:
-  Field(const json& value, std::string path, const std::string& source)
-      : value_(value), path_(std::move(path)), source_(source) {}
-
-  // The document itself has no path: it is named as such.
-  [[noreturn]] void fail(const std::string& rule) const {
-    throw InputError(source_, 0, path_.empty() ? "the document" : path_, rule);
-  }
-
-  const json& value() const { return value_; }
-  const std::string& path() const { return path_; }
-  bool has(const char* key) const { return value_.contains(key); }
-
-  Field operator[](const char* key) const { return {value_.at(key), child(key), source_}; }
-  Field operator[](std::size_t i) const { return {value_.at(i), path_ + "[" + std::to_string(i) + "]", source_}; }
-
-  // Only `keys` may appear (materials/strict_json.h).
-  const Field& object(std::initializer_list<const char*> keys) const {
-    if (!value_.is_object()) fail("expected an object");
-    const std::span<const char* const> known(keys.begin(), keys.size());
-    if (const std::optional<std::string> key = materials::findUnknownKey(value_, known))
-      (*this)[key->c_str()].fail(materials::unknownFieldRule(known));
-    return *this;
-  }
-
-  double number(double lo = -HUGE_VAL, double hi = HUGE_VAL) const {
-    if (!value_.is_number()) fail("expected a number");
-    double x = value_.get<double>();
-    if (!std::isfinite(x)) fail("must be finite");
-    if (const std::optional<std::string> rule = rangeRule(x, lo, hi)) fail(*rule);
-    return x;
-  }
-
-  int integer(int lo, int hi) const {
-    double x = number(lo, hi);
-    if (x != std::floor(x)) fail("expected a whole number");
-    return int(x);
-  }
-
-  bool boolean() const {
-    if (!value_.is_boolean()) fail("expected true or false");
-    return value_.get<bool>();
-  }
-
-  std::string string() const {
-    if (!value_.is_string()) fail("expected a string");
-    return value_.get<std::string>();
-  }
-
-  glm::dvec3 vec3() const {
-    if (!value_.is_array() || value_.size() != 3) fail("expected an array of 3 numbers");
-    return {(*this)[std::size_t(0)].number(), (*this)[1].number(), (*this)[2].number()};
-  }
-
-  // One of `options`, by name; anything else is an error listing them.
-  template <class T>
-  T choice(std::initializer_list<std::pair<const char*, T>> options) const {
-    const std::string name = string();
-    std::string list;
-    for (const auto& [key, value] : options) {
-      if (name == key) return value;
-      list += (list.empty() ? "" : ", ") + std::string(key);
-    }
-    fail("unknown value '" + name + "' (expected one of: " + list + ")");
-  }
-
-  glm::dvec3 direction() const {
-    glm::dvec3 d = vec3();
-    if (glm::length(d) < 1e-12) fail("a direction must not be the zero vector");
-    return glm::normalize(d);
-  }
-
- private:
-  std::string child(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
-
-  const json& value_;
-  std::string path_;
-  const std::string& source_;
-};
 
 Camera readCamera(const Field& f) {
   f.object({"eye", "target", "up", "fov"});
@@ -166,10 +87,9 @@ Texture readTexture(const Field& f, const std::filesystem::path& sceneFile, bool
   const Field image = detailed ? f["image"] : f;
   TextureSampler sampler;
   if (detailed && f.has("wrap"))
-    sampler.wrapS = sampler.wrapT =
-        f["wrap"].choice<std::uint32_t>({{"repeat", rules::f64::FACET_WRAP_REPEAT},
-                                         {"mirror", rules::f64::FACET_WRAP_MIRRORED_REPEAT},
-                                         {"clamp", rules::f64::FACET_WRAP_CLAMP_TO_EDGE}});
+    sampler.wrapS = sampler.wrapT = f["wrap"].choice<std::uint32_t>({{"repeat", rules::f64::FACET_WRAP_REPEAT},
+                                                                     {"mirror", rules::f64::FACET_WRAP_MIRRORED_REPEAT},
+                                                                     {"clamp", rules::f64::FACET_WRAP_CLAMP_TO_EDGE}});
   if (detailed && f.has("filter") && f["filter"].choice<bool>({{"linear", false}, {"nearest", true}})) {
     sampler.magFilter = sampler.minFilter = rules::f64::FACET_FILTER_NEAREST;
     sampler.mipMode = rules::f64::FACET_MIP_NEAREST;
@@ -309,49 +229,6 @@ void readSubdivision(const Field& f, Object& object) {
   if (f.has("end_caps"))
     object.endCaps =
         f["end_caps"].choice<EndCapBasis>({{"gregory", EndCapBasis::Gregory}, {"bspline", EndCapBasis::BSpline}});
-}
-
-void readRender(const Field& f, RenderSettings& r) {
-  f.object({"width", "height", "spp", "bounces", "method", "tess_level", "pixel_tolerance"});
-  if (f.has("width")) r.width = f["width"].integer(1, 16384);
-  if (f.has("height")) r.height = f["height"].integer(1, 16384);
-  if (f.has("spp")) {
-    r.samplesPerPixel = f["spp"].integer(1, 4096);
-    if (!isSquare(r.samplesPerPixel)) f["spp"].fail(kSamplesPerPixelRule);
-  }
-  if (f.has("bounces")) r.bounces = f["bounces"].integer(0, kMaxBounces);
-  if (f.has("method"))
-    r.method = f["method"].choice<IntersectionMethod>(
-        {{"exact", IntersectionMethod::Exact}, {"tess", IntersectionMethod::Tessellated}});
-  if (f.has("tess_level")) r.tessellationRate = f["tess_level"].integer(1, 256);
-  if (f.has("pixel_tolerance")) r.pixelTolerance = f["pixel_tolerance"].number(1e-3, 1e3);
-}
-
-Environment readEnvironment(const Field& f, const std::filesystem::path& sceneFile) {
-  f.object({"file", "color", "intensity", "rotation", "method", "samples", "occlusion"});
-  if (f.has("file") == f.has("color")) f.fail("give exactly one of file (an .exr or .hdr map) and color");
-  Environment environment;
-  if (f.has("file")) {
-    const Field file = f["file"];
-    try {
-      environment.map =
-          std::make_shared<const EnvironmentMap>(loadEnvironmentMap(sceneFile.parent_path() / file.string()));
-    } catch (const InputError& e) {
-      file.fail(e.what());
-    }
-  } else {
-    const glm::dvec3 color = f["color"].vec3();
-    if (hasNegativeComponent(color)) f["color"].fail(kNegativeColorRule);
-    environment.map = std::make_shared<const EnvironmentMap>(constantEnvironment(color));
-  }
-  if (f.has("intensity")) environment.intensity = f["intensity"].number(0.0);
-  if (f.has("rotation")) environment.rotationDegrees = f["rotation"].number();
-  if (f.has("method"))
-    environment.method = f["method"].choice<IblMethod>(
-        {{"sampled", IblMethod::Sampled}, {"prefiltered", IblMethod::Prefiltered}, {"filtered", IblMethod::Filtered}});
-  if (f.has("samples")) environment.samples = f["samples"].integer(1, 16384);
-  if (f.has("occlusion")) environment.occlusion = f["occlusion"].boolean();
-  return environment;
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
@@ -26,6 +27,11 @@ void addPresetsCommand(CLI::App& app) {
                               {"f0_srgb_printed", rgb(p.f0_srgb)},
                               {"f0_srgb", rgb(linearToSrgb(p.f0_linear))}};
       if (!p.metal) entry["ior"] = materials::iorFromF0(p.f0_linear.x);
+      if (p.transmission > 0) entry["transmission"] = p.transmission;
+      if (std::isfinite(p.attenuationDistance)) {
+        entry["attenuation_color"] = rgb(p.attenuationColor);
+        entry["attenuation_distance"] = p.attenuationDistance;
+      }
       list.push_back(entry);
     }
     if (*json) {
@@ -40,6 +46,7 @@ void addPresetsCommand(CLI::App& app) {
                   p.metal ? "metal" : "insul", p.f0_linear.x, p.f0_linear.y, p.f0_linear.z, p.f0_srgb.x, p.f0_srgb.y,
                   p.f0_srgb.z, srgb.x, srgb.y, srgb.z);
       if (!p.metal) std::printf("  %.3f", materials::iorFromF0(p.f0_linear.x));
+      if (p.transmission > 0) std::printf("  transparent%s", std::isfinite(p.attenuationDistance) ? ", absorbing" : "");
       std::printf("\n");
     }
   });

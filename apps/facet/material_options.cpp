@@ -86,6 +86,9 @@ materials::Material resolveMaterial(const MaterialOptions& o) {
   }
   materials::MaterialSpec spec;
   spec.preset = o.preset;
+  // These commands evaluate the reflection BRDF alone: a transparent preset
+  // is its course's opaque insulator here (docs/shading.md, "Transmission").
+  spec.transmission = 0.0;
   spec.distribution = o.d;
   spec.geometry = o.g;
   spec.fresnel = o.f;

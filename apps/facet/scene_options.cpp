@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <tuple>
 #include <stdexcept>
 
 #include "scenes/scene_file.h"
@@ -83,6 +84,9 @@ void applySceneOverrides(const SceneOverrides& o, scene::Scene& scene) {
     scene.render.samplesPerPixel = *o.spp;
   }
   if (o.bounces) scene.render.bounces = *o.bounces;
+  if (o.diffuseBounces) scene.render.diffuseBounces = *o.diffuseBounces;
+  if (o.glossyBounces) scene.render.glossyBounces = *o.glossyBounces;
+  if (o.transmissionBounces) scene.render.transmissionBounces = *o.transmissionBounces;
   applyEnvironmentOverrides(o, scene);
   if (!scene::pathsCountEnvironmentOnce(scene.render.bounces, scene.environment))
     throw std::invalid_argument("bounces " + std::to_string(scene.render.bounces) + " (--bounces or the scene's " +
@@ -92,7 +96,9 @@ void applySceneOverrides(const SceneOverrides& o, scene::Scene& scene) {
 
 void applyEnergyCompensation(const std::string& onOrOff, scene::Scene& scene) {
   if (onOrOff.empty()) return;
-  for (materials::Material& material : scene.materials) material.energyCompensation = onOrOff == "on";
+  // Transmissive materials have no compensation (docs/shading.md, "Transmission").
+  for (materials::Material& material : scene.materials)
+    if (!materials::isTransmissive(material)) material.energyCompensation = onOrOff == "on";
 }
 
 void addEnergyCompensationOption(CLI::App& command, std::string& onOrOff) {
@@ -201,13 +207,24 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& o) {
                   "Continuations of each camera sample's path (0: direct light only; above 0: --backend cpu, "
                   "--ibl sampled or filtered with --occlusion on)")
       ->check(CLI::Range(0, scene::kMaxBounces));
+  for (auto [flag, kind, value] : {std::tuple{"--diffuse-bounces", "diffuse", &o.diffuseBounces},
+                                   std::tuple{"--glossy-bounces", "glossy", &o.glossyBounces},
+                                   std::tuple{"--transmission-bounces", "transmission", &o.transmissionBounces}})
+    command
+        .add_option(flag, *value,
+                    std::string("Continuations of the ") + kind +
+                        " lobes a path may take besides --bounces (default: no limit of their own; Cycles': 4, 4, "
+                        "12 for diffuse, glossy, transmission; --backend cpu)")
+        ->check(CLI::Range(0, scene::kMaxBounces));
   command.add_option("--env", o.environment, "Environment map (.exr or .hdr, equirectangular 2:1) lighting the scene")
       ->check(CLI::ExistingFile);
   command.add_option("--env-intensity", o.environmentIntensity, "Environment radiance scale")
       ->check(CLI::Range(0.0, 1e30));
   command.add_option("--env-rotation", o.environmentRotation, "Environment rotation about +y, in degrees");
-  command.add_option("--ibl", o.ibl, "Image-based lighting: Monte Carlo with MIS, the prefiltered split sum, or BRDF samples read "
-                     "from the map's mip chain")
+  command
+      .add_option("--ibl", o.ibl,
+                  "Image-based lighting: Monte Carlo with MIS, the prefiltered split sum, or BRDF samples read "
+                  "from the map's mip chain")
       ->check(CLI::IsMember({"sampled", "prefiltered", "filtered"}));
   command
       .add_option("--ibl-samples", o.iblSamples,

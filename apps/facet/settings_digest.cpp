@@ -20,6 +20,8 @@ std::string settingsDigest(const scene::Scene& scene, const std::string& backend
   text << r.width << ' ' << r.height << ' ' << r.samplesPerPixel << ' ' << int(r.method) << ' ' << r.pixelTolerance
        << ' ' << r.tessellationRate.value_or(-1) << ' ' << r.exactTolerance.value_or(-1) << '\n';
   if (r.bounces > 0) text << "bounces " << r.bounces << '\n';  // only above 0: a render without paths keeps its digest
+  if (scene::limitsLobes(r))
+    text << "lobes " << r.diffuseBounces << ' ' << r.glossyBounces << ' ' << r.transmissionBounces << '\n';
   const scene::Camera& c = scene.camera;
   for (const glm::dvec3& v : {c.eye, c.target, c.up}) text << v.x << ' ' << v.y << ' ' << v.z << ' ';
   text << c.verticalFovDegrees << '\n';
@@ -44,6 +46,9 @@ std::string renderSettingsText(const scene::Scene& scene, const std::string& bac
        << " method=" << (r.method == scene::IntersectionMethod::Exact ? "exact" : "tess")
        << " pixelTolerance=" << r.pixelTolerance << " tessellationRate=" << orAuto(r.tessellationRate);
   if (r.bounces > 0) text << " bounces=" << r.bounces;
+  if (scene::limitsLobes(r))
+    text << " diffuseBounces=" << r.diffuseBounces << " glossyBounces=" << r.glossyBounces
+         << " transmissionBounces=" << r.transmissionBounces;
   if (const auto& e = scene.environment) {
     const char* methods[] = {"sampled", "prefiltered", "filtered"};  // in IblMethod's order
     text << " ibl=" << methods[int(e->method)] << " iblSamples=" << e->samples

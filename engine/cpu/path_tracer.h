@@ -5,7 +5,10 @@
 // environment by the scene's IBL method with its shadow rays, emission), and
 // each continuation drawn from the whole BRDF at its vertex, T = f |cos| / pdf.
 // A continuation that misses adds nothing: D at the vertex it left already
-// counted the environment, shadowed.
+// counted the environment, shadowed. Except through a transmissive material
+// ("Transmission and absorption"): D counts its reflection lobes only, so a
+// continuation that left through the surface and misses adds the
+// environment's radiance, and a segment inside takes Beer-Lambert's factor.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -27,6 +30,9 @@ struct PathVertex {
   glm::dvec3 position{0.0};
   glm::dvec3 n{0.0}, ng{0.0};  // shading and geometric normals, facing v
   glm::dvec3 v{0.0};           // towards where the path came from
+  bool transmissive = false;   // continues by continue_path_transmissive, with `transmission`
+  rules::f64::TransmissionParams transmission{};
+  bool outside = true;  // v on the side the outward geometric normal points to
 };
 
 // The rays of one bounce: bounce 0 is the camera rays and the shadow rays of
@@ -47,6 +53,8 @@ class PathScene {
                                                  std::uint32_t seed, std::uint64_t& shadowRays) const = 0;
   // The offset and t_min of rays that leave a surface (shadow_ray_offset).
   virtual double leavingOffset() const = 0;
+  // The environment's radiance from `direction` (0 without one).
+  virtual glm::dvec3 escapedRadiance(const glm::dvec3& direction) const = 0;
 
  protected:
   ~PathScene() = default;
@@ -60,10 +68,17 @@ struct PathSampleKey {
   std::uint32_t seed = 0;     // the environment's seed
 };
 
+// Continuations of each lobe kind a path may take (PATH_LOBE_*); -1: no limit of its own.
+struct LobeLimits {
+  int diffuse = -1;
+  int glossy = -1;
+  int transmission = -1;
+};
+
 // L of the path whose first vertex is `first` (shaded with the scene's
 // seed), with at most `bounces` continuations; `rays` (bounces + 1 entries)
 // counts each bounce's continuation and shadow rays.
 glm::dvec3 tracePath(const PathScene& scene, const PathVertex& first, const PathSampleKey& key, int bounces,
-                     std::vector<BounceRays>& rays);
+                     std::vector<BounceRays>& rays, const LobeLimits& limits = {});
 
 }  // namespace facet::cpu

@@ -55,7 +55,11 @@ class ReferenceScene final : public PathScene {
             std::make_unique<TessellatedIntersector>(object.surface, object.bvh, object.refinement.tessellationRate));
       else
         intersectors_.push_back(std::make_unique<ExactIntersector>(object.surface, object.bvh, exactSettings));
-      params_.push_back(materials::toParams64(scene.materials[std::size_t(scene.objects[i].material)]));
+      const materials::Material& material = scene.materials[std::size_t(scene.objects[i].material)];
+      params_.push_back(materials::toParams64(material));
+      transmission_.push_back(materials::isTransmissive(material)
+                                  ? std::optional(materials::transmissionParams64(material))
+                                  : std::nullopt);
     }
   }
 
@@ -86,7 +90,8 @@ class ReferenceScene final : public PathScene {
                          std::uint32_t seed, std::uint64_t& shadowRays) const {
     const glm::dvec3 v = -direction;
     glm::dvec3 n = hit.surface.shadingNormal, ng = hit.surface.geometricNormal;
-    if (glm::dot(ng, v) < 0) n = -n, ng = -ng;
+    const bool outside = glm::dot(ng, v) >= 0;
+    if (!outside) n = -n, ng = -ng;
     m::BrdfParams params = params_[std::size_t(hit.object)];
     const int material = scene_.objects[std::size_t(hit.object)].material;
     double occlusion = 1.0;
@@ -98,6 +103,8 @@ class ReferenceScene final : public PathScene {
       occlusion = surface.occlusion;
       radiance = surface.emission;
     }
+    const std::optional<m::TransmissionParams>& transmission = transmission_[std::size_t(hit.object)];
+    if (transmission) params = m::transmissive_brdf_params(params, *transmission, outside);
     const glm::dvec3 specularScale = ibl::specularScale(compensation_, material, params, glm::dot(n, v));
     if (environment_) {
       glm::dvec3 environment(0.0);
@@ -122,7 +129,16 @@ class ReferenceScene final : public PathScene {
       if (occluded(hit.surface.position, ng, incidence.direction, incidence.distance, shadowRays)) continue;
       radiance += m::punctual_radiance(params, n, incidence.direction, v, incidence.color, specularScale);
     }
-    return {radiance, params, specularScale, hit.surface.position, n, ng, v};
+    return {radiance,
+            params,
+            specularScale,
+            hit.surface.position,
+            n,
+            ng,
+            v,
+            transmission.has_value(),
+            transmission.value_or(m::TransmissionParams{}),
+            outside};
   }
 
   std::optional<PathVertex> shadeNearest(const Ray& ray, std::uint32_t pixel, std::uint32_t sample, std::uint32_t seed,
@@ -133,6 +149,8 @@ class ReferenceScene final : public PathScene {
   }
 
   double leavingOffset() const override { return shadowOffset_; }
+
+  glm::dvec3 escapedRadiance(const glm::dvec3& direction) const override { return background(direction); }
 
   void writeAovs(Image& image, std::size_t pixel, const SceneHit& hit, const glm::dvec3& direction) const {
     glm::dvec3 n = hit.surface.shadingNormal, ng = hit.surface.geometricNormal;
@@ -297,6 +315,7 @@ class ReferenceScene final : public PathScene {
   std::vector<int> patchOffset_, faceOffset_;
   std::vector<std::unique_ptr<Intersector>> intersectors_;  // parallel to the scene's objects
   std::vector<rules::f64::BrdfParams> params_;
+  std::vector<std::optional<rules::f64::TransmissionParams>> transmission_;  // transmissive materials only
 };
 
 }  // namespace
@@ -333,6 +352,8 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
   std::atomic<int> nextRow{window.y0}, finishedRows{0};
   std::atomic<std::uint64_t> primaryRays{0}, shadowRays{0};
   const int bounces = scene.render.bounces;
+  const LobeLimits lobeLimits{scene.render.diffuseBounces, scene.render.glossyBounces,
+                              scene.render.transmissionBounces};
   std::vector<BounceRays> raysPerBounce(bounces > 0 ? std::size_t(bounces) + 1 : 0);
   std::mutex progressMutex;
   auto worker = [&] {
@@ -367,7 +388,7 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
           const PathVertex first = reference.shadeVertex(*hit, direction, pixelId, sample, reference.environmentSeed(),
                                                          bounceRays[0].shadowRays);
           radiance += tracePath(reference, first, {pixelId, sample, raysPerPixel, reference.environmentSeed()}, bounces,
-                                bounceRays);
+                                bounceRays, lobeLimits);
         }
         const double samples = double(rules::f64::shaded_sample_count(strata));
         image.beauty[pixel] = glm::vec4(glm::vec3(radiance / samples), float(coverage / samples));

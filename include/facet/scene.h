@@ -32,6 +32,13 @@ struct Material {
   std::optional<Vec3> k;
   std::optional<Vec3> diffuse;
   bool energyCompensation = false;  // multiple-scattering compensation of the specular lobe
+  // Transmission (docs/shading.md, "Transmission"); the transparent presets
+  // set transmission 1, and 0 makes them opaque.
+  std::optional<double> transmission;  // glTF's factor, 0..1
+  std::optional<bool> thinWalled;
+  std::optional<double> thickness;  // thin-walled: the wall's, for absorption
+  std::optional<Vec3> attenuationColor;
+  std::optional<double> attenuationDistance;  // > 0; absent: no absorption
 };
 
 // A Catmull-Clark control cage in world space; indices are 0-based and each

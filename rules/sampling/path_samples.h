@@ -41,3 +41,21 @@ FACET_FN real path_survival_probability(vec3 throughput, uint bounce) {
   if (bounce < PATH_FIRST_ROULETTE_BOUNCE) return real(1);
   return min(real(1), max(throughput.x, max(throughput.y, throughput.z)));
 }
+
+// The lobe kinds a path counts its continuations by, each against a limit of
+// its own besides the bounces (render.diffuse_bounces, glossy_bounces,
+// transmission_bounces; Cycles' defaults are 4, 4 and 12). A limit below 0
+// is none: the bounces alone end the path.
+const int PATH_LOBE_DIFFUSE = 0;
+const int PATH_LOBE_GLOSSY = 1;
+const int PATH_LOBE_TRANSMISSION = 2;
+
+// Whether a path that has taken `taken` continuations of a lobe kind may take one more.
+FACET_FN bool path_lobe_allowed(int taken, int limit) { return limit < 0 || taken < limit; }
+
+// The number that picks reflection or transmission at a dielectric interface
+// of vertex `vertex` (rules/shading/transmissive_continuation.h): the other
+// coordinate of roulette's group.
+FACET_FN real path_interface_u(uint pixel, uint sample_index, uint samples, uint seed, uint vertex) {
+  return scrambled_point(pixel, PATH_CONTINUATION_SAMPLE, path_vertex_seed(seed, vertex), 1u, sample_index, samples).y;
+}

@@ -5,6 +5,7 @@
 #include <facet/facet.h>
 
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -101,6 +102,55 @@ TEST(ApiRender, ParityComparesPaths) {
   const facet::ParityReport report = renderer.parity(cubeOnSlab(facet::IblMethod::Sampled), onCpu(1));
   EXPECT_GT(report.covered, 0u);
   EXPECT_FALSE(report.summary.empty());
+}
+
+// A transparent preset transmits through the API as in a scene file; its
+// transmission fields are checked alike, and the GPU refuses it.
+TEST(ApiRender, TransparentPresetsTransmitOnTheCpuOnly) {
+  auto cubeOf = [](const facet::Material& material) {
+    facet::SceneDescription description;
+    description.materials = {material};
+    description.objects = {{"cube", box({-1, -1, -1}, {1, 1, 1}), 0, false}};
+    description.camera =
+        facet::Camera{{3, -2.5, 4}, {0, 0, 0}, {0, 1, 0}, 50};  // reflecting the ground, seeing the sky
+    facet::Environment environment;
+    environment.file = std::string(FACET_ENVIRONMENTS_DIR) + "/courtyard_256x128.hdr";
+    environment.method = facet::IblMethod::Sampled;
+    environment.samples = 2;
+    description.environment = environment;
+    description.width = description.height = 16;
+    return facet::buildScene(description);
+  };
+  facet::Material water;
+  water.preset = "water";
+  water.roughness = 0.0;
+  facet::Material opaque = water;
+  opaque.transmission = 0.0;
+  facet::Renderer renderer;
+  // Continuations through the cube add the environment behind it, which
+  // the opaque cube (convex: its continuations find nothing) cannot.
+  const facet::RenderResult through = renderer.render(cubeOf(water), onCpu(4));
+  const facet::RenderResult reflectedOnly = renderer.render(cubeOf(water), onCpu(0));
+  const std::vector<float>& after = through.image.aov("beauty").values;
+  const std::vector<float>& before = reflectedOnly.image.aov("beauty").values;
+  int brighter = 0;
+  for (std::size_t i = 0; i < after.size(); i += 4) brighter += after[i] > before[i] + 0.05f;
+  EXPECT_GT(brighter, 20);  // of the cube's ~65 pixels
+  EXPECT_EQ(sumOfBeauty(renderer.render(cubeOf(opaque), onCpu(4))),
+            sumOfBeauty(renderer.render(cubeOf(opaque), onCpu(0))));
+  facet::RenderSettings gpu;
+  gpu.backend = facet::Backend::Gpu;
+  EXPECT_NE(errorOf(renderer, cubeOf(water), gpu).find("transmissive materials render on the CPU reference only"),
+            std::string::npos);
+  facet::Material absorbing = water;
+  absorbing.attenuationDistance = -1.0;
+  try {
+    cubeOf(absorbing);
+    FAIL() << "a negative attenuation distance was accepted";
+  } catch (const facet::Error& e) {
+    EXPECT_EQ(e.kind(), facet::ErrorKind::BadInput);
+    EXPECT_NE(std::string(e.what()).find("attenuation_distance: must be > 0"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

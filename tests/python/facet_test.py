@@ -126,6 +126,18 @@ class Render(unittest.TestCase):
         for backend, beauty in zip(backends, results):
             np.testing.assert_array_equal(beauty, alone[backend], err_msg=backend)
 
+    def test_transmission_fields_are_the_scene_files(self):
+        material = facet.Material(preset="glass-high-ruby", roughness=0.0, thin_walled=False,
+                                  attenuation_color=(0.9, 0.1, 0.1), attenuation_distance=2.0)
+        self.assertEqual(material.attenuation_distance, 2.0)
+        self.assertEqual(material.transmission, None)  # the preset's: 1
+        scene = facet.Scene([facet.Object(cube(sharp_edge=False), name="cube")], materials=[material], size=(8, 8))
+        with self.assertRaisesRegex(Exception, "transmissive materials render on the CPU reference only"):
+            self.renderer.render(scene, backend="gpu")
+        with self.assertRaisesRegex(Exception, "attenuation_distance: must be > 0"):
+            facet.Scene([facet.Object(cube(sharp_edge=False), name="cube")],
+                        materials=[facet.Material(preset="water", roughness=0.0, attenuation_distance=0.0)])
+
     def test_energy_compensation_brightens_a_rough_metal_on_both_backends(self):
         def scene(compensated):
             material = facet.Material(preset="gold", roughness=0.9, energy_compensation=compensated)

@@ -83,6 +83,8 @@ TEST_F(SceneFiles, ErrorsNameTheFileTheFieldAndTheRule) {
               AllOf(HasSubstr("render.spp"), HasSubstr("square")));
   EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj"}], "render": {"bounces": 65}})"),
               AllOf(HasSubstr("render.bounces"), HasSubstr("[0, 64]")));
+  EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj"}], "render": {"glossy_bounces": -1}})"),
+              AllOf(HasSubstr("render.glossy_bounces"), HasSubstr("[0, 64]")));
   EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj"}], "render": {"bounces": 2},
                           "environment": {"color": [1, 1, 1], "method": "sampled", "occlusion": false}})"),
               AllOf(HasSubstr("scene.json"), HasSubstr("render.bounces"), HasSubstr("occlusion on")));
@@ -99,6 +101,12 @@ TEST_F(SceneFiles, ErrorsNameTheFileTheFieldAndTheRule) {
 
 TEST_F(SceneFiles, RenderBouncesDefaultToNone) {
   EXPECT_EQ(loadScene(write("direct.json", R"({"objects": [{"mesh": "ball.obj"}]})")).render.bounces, 0);
+  const RenderSettings limits = loadScene(write("lobes.json", R"({"objects": [{"mesh": "ball.obj"}],
+      "render": {"diffuse_bounces": 4, "transmission_bounces": 12}})"))
+                                    .render;
+  EXPECT_EQ(limits.diffuseBounces, 4);
+  EXPECT_EQ(limits.glossyBounces, -1);  // no limit of its own
+  EXPECT_EQ(limits.transmissionBounces, 12);
   EXPECT_EQ(loadScene(write("paths.json", R"({"objects": [{"mesh": "ball.obj"}], "render": {"bounces": 3},
       "environment": {"color": [1, 1, 1], "method": "sampled"}})"))
                 .render.bounces,

@@ -1,0 +1,21 @@
+// Beer-Lambert absorption inside a transmissive material
+// (docs/shading.md, "Transmission"). Needs rules/math.h.
+
+// glTF's KHR_materials_volume: light that travels attenuation_distance inside
+// keeps attenuation_color of itself, so sigma = -ln(c) / d per channel; an
+// infinite distance (or c = 1) absorbs nothing. A channel of c = 0 is taken
+// at 1e-30, an absorption no render resolves from total.
+FACET_FN vec3 absorption_coefficient(vec3 attenuation_color, real attenuation_distance) {
+  vec3 c = max(attenuation_color, vec3(real(1.0e-30)));
+  return -log(c) / attenuation_distance;
+}
+
+// exp(-sigma d) per channel; a channel with sigma = 0 transmits everything
+// over any distance, infinite included.
+FACET_FN vec3 beer_lambert(vec3 sigma, real distance) {
+  vec3 t;
+  t.x = sigma.x > real(0) ? exp(-sigma.x * distance) : real(1);
+  t.y = sigma.y > real(0) ? exp(-sigma.y * distance) : real(1);
+  t.z = sigma.z > real(0) ? exp(-sigma.z * distance) : real(1);
+  return t;
+}

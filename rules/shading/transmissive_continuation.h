@@ -1,0 +1,91 @@
+// Where a path goes on from a vertex of a transmissive material, and what it
+// carries there (docs/rendering.md, "Transmission and absorption"): the
+// material is f = f_r + (1 - transmission) c_diff / pi + transmission f_t,
+// its dielectric lobes (rules/shading/dielectric.h) and its diffuse lobe
+// chosen by their weight. continue_path (path_continuation.h) stays the rule
+// of opaque materials. Needs dielectric.h, absorption.h and lights.h.
+
+// What a material adds to BrdfParams to transmit (glTF's
+// KHR_materials_transmission, KHR_materials_volume, KHR_materials_ior).
+struct TransmissionParams {
+  real transmission;  // the share of the diffuse base replaced by transmission, 0..1
+  real ior;           // of the inside: the side the outward geometric normal points away from
+  bool thin_walled;   // transmission without bending, through a wall of `thickness`
+  vec3 sigma;         // absorption coefficient inside (absorption_coefficient)
+  real thickness;     // thin-walled: the wall's thickness, for its absorption
+};
+
+// The BRDF of the reflection side that D(x) evaluates at a vertex seen from
+// v `outside` or not: exact Fresnel of the interface's eta (total internal
+// reflection inside), the diffuse base scaled by 1 - transmission.
+FACET_FN BrdfParams transmissive_brdf_params(BrdfParams p, TransmissionParams t, bool outside) {
+  p.f_model = F_DIELECTRIC;
+  real eta = t.thin_walled ? t.ior : interface_eta(t.ior, outside);
+  p.eta = vec3(eta, eta, eta);
+  p.diffuse = p.diffuse * (real(1) - t.transmission);
+  return p;
+}
+
+// Probability of the diffuse lobe: its albedo against the dielectric lobes'
+// energy at normal incidence, within [0.1, 0.9] when both are present.
+FACET_FN real transmissive_diffuse_probability(BrdfParams p, TransmissionParams t) {
+  real diffuse = luminance(p.diffuse);
+  if (diffuse <= real(0)) return real(0);
+  InterfaceSplit split = interface_split(p.eta.x, real(1), t.transmission);
+  real dielectric = split.reflect + split.transmit;
+  if (dielectric <= real(0)) return real(1);
+  return clamp(diffuse / (diffuse + dielectric), real(0.1), real(0.9));
+}
+
+struct TransmissiveContinuation {
+  vec3 direction;
+  vec3 weight;       // zero where the path ends
+  bool transmitted;  // through the surface: the path changes medium (unless thin-walled)
+  int lobe;          // PATH_LOBE_*, for the path's limits per lobe kind
+};
+
+// The lobe kind of continue_path's continuation for u: the specular lobe's
+// share of u.x is glossy (sample_brdf_lobes).
+FACET_FN int opaque_continuation_lobe(BrdfParams p, vec2 u) {
+  return u.x < specular_lobe_probability(p) ? PATH_LOBE_GLOSSY : PATH_LOBE_DIFFUSE;
+}
+
+// p as transmissive_brdf_params gives it (p.eta.x the interface's eta); u as
+// continue_path's, u_interface picks reflection or transmission
+// (path_interface_u). A thin wall's transmission carries its Beer-Lambert
+// factor over thickness / cos, cos inside the wall.
+FACET_FN TransmissiveContinuation continue_path_transmissive(BrdfParams p, TransmissionParams t, vec3 n, vec3 ng,
+                                                             vec3 v, vec2 u, real u_interface) {
+  TransmissiveContinuation c;
+  c.direction = vec3(real(0));
+  c.weight = vec3(real(0));
+  c.transmitted = false;
+  c.lobe = PATH_LOBE_DIFFUSE;
+  real p_diffuse = transmissive_diffuse_probability(p, t);
+  bool diffuse = u.x < p_diffuse;
+  vec2 v_u = diffuse ? vec2(min(u.x / p_diffuse, BELOW_ONE), u.y)
+                     : vec2(min((u.x - p_diffuse) / (real(1) - p_diffuse), BELOW_ONE), u.y);
+  if (!diffuse) {
+    DielectricSample s = sample_dielectric(p.alpha, p.eta.x, t.transmission, t.thin_walled, n, ng, v, v_u, u_interface);
+    c.direction = s.direction;
+    c.transmitted = s.transmitted;
+    c.lobe = s.transmitted ? PATH_LOBE_TRANSMISSION : PATH_LOBE_GLOSSY;
+    if (s.weight <= real(0)) return c;
+    if (s.transmitted || p_diffuse <= real(0)) {
+      // No other lobe reaches this direction: the weight is the dielectric's alone.
+      c.weight = vec3(s.weight / (real(1) - p_diffuse));
+      if (s.transmitted && t.thin_walled)
+        c.weight *= beer_lambert(t.sigma, t.thickness / max(s.cos_inside, COS_EPSILON));
+      return c;
+    }
+  } else {
+    c.direction = sample_direction(SAMPLE_COSINE, p, n, v, v_u);
+    if (!above_surface(n, ng, c.direction)) return c;
+  }
+  // The reflection side is reached by both lobes: f |n.l| over their mixed density.
+  real pdf = p_diffuse * direction_pdf(SAMPLE_COSINE, p, n, c.direction, v) +
+             (real(1) - p_diffuse) * dielectric_pdf(p.alpha, p.eta.x, t.transmission, n, c.direction, v);
+  if (!(pdf > real(0))) return c;
+  c.weight = brdf_evaluate(p, n, c.direction, v) * (dot(n, c.direction) / pdf);
+  return c;
+}

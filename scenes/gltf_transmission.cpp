@@ -1,0 +1,82 @@
+// glTF's KHR_materials_transmission, KHR_materials_volume and
+// KHR_materials_ior as facet's transmissive materials (docs/scene-format.md).
+#include <glm/common.hpp>
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include "scenes/gltf_internal.h"
+#include "scenes/value_rules.h"
+
+namespace facet::scene::detail {
+namespace {
+
+// Member `key` of extension object `value`, a finite number; `fallback` when absent.
+double member(const tinygltf::Value& value, const char* key, double fallback, const std::string& where,
+              const GltfReader& reader) {
+  if (!value.Has(key)) return fallback;
+  const tinygltf::Value& x = value.Get(key);
+  if (!x.IsNumber() || !std::isfinite(x.GetNumberAsDouble())) reader.fail(where + "." + key, "must be a finite number");
+  return x.GetNumberAsDouble();
+}
+
+const tinygltf::Value* extension(const tinygltf::Material& gltf, const char* name) {
+  const auto found = gltf.extensions.find(name);
+  return found == gltf.extensions.end() ? nullptr : &found->second;
+}
+
+}  // namespace
+
+void applyTransmission(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
+                       const glm::dvec3& base, double metallic, materials::Material& m) {
+  const std::string at = material + ".extensions.";
+  double ior = 1.5;
+  if (const tinygltf::Value* e = extension(gltf, "KHR_materials_ior")) {
+    ior = member(*e, "ior", 1.5, at + "KHR_materials_ior", reader);
+    if (!(ior >= 1.0)) reader.fail(at + "KHR_materials_ior.ior", "must be >= 1, is " + formatNumber(ior));
+    // The dielectric's F(0) from its index, in place of 0.04 (= index 1.5).
+    m.f0 = glm::mix(glm::dvec3(std::pow((ior - 1) / (ior + 1), 2.0)), base, metallic);
+  }
+  const tinygltf::Value* t = extension(gltf, "KHR_materials_transmission");
+  if (!t) return;
+  const std::string where = at + "KHR_materials_transmission";
+  if (t->Has("transmissionTexture"))
+    reader.fail(where + ".transmissionTexture", "is not read: give transmissionFactor alone");
+  m.transmission = member(*t, "transmissionFactor", 0.0, where, reader);
+  if (const std::optional<std::string> rule = rangeRule(m.transmission, 0.0, 1.0))
+    reader.fail(where + ".transmissionFactor", *rule);
+  if (!materials::isTransmissive(m)) return;
+  if (metallic != 0.0)
+    reader.fail(material + ".pbrMetallicRoughness.metallicFactor",
+                "a transmissive material (KHR_materials_transmission) must be a dielectric here: metallicFactor 0, "
+                "is " +
+                    formatNumber(metallic));
+  m.fresnel = rules::f64::F_DIELECTRIC;
+  m.eta = glm::dvec3(ior);
+  m.thinWalled = true;  // glTF: without a volume, the surface is thin-walled
+  const tinygltf::Value* v = extension(gltf, "KHR_materials_volume");
+  if (!v) return;
+  const std::string volume = at + "KHR_materials_volume";
+  // thicknessTexture only helps a rasterizer guess the path inside; facet traces it.
+  const double thickness = member(*v, "thicknessFactor", 0.0, volume, reader);
+  if (!(thickness >= 0.0)) reader.fail(volume + ".thicknessFactor", "must be >= 0, is " + formatNumber(thickness));
+  m.thinWalled = thickness == 0.0;
+  m.attenuationDistance = member(*v, "attenuationDistance", std::numeric_limits<double>::infinity(), volume, reader);
+  if (v->Has("attenuationDistance") && !(m.attenuationDistance > 0.0))
+    reader.fail(volume + ".attenuationDistance", "must be > 0, is " + formatNumber(m.attenuationDistance));
+  if (v->Has("attenuationColor")) {
+    const tinygltf::Value& c = v->Get("attenuationColor");
+    if (!c.IsArray() || c.ArrayLen() != 3) reader.fail(volume + ".attenuationColor", "must be an array of 3 numbers");
+    for (int i = 0; i < 3; ++i) {
+      const tinygltf::Value& x = c.Get(i);
+      const double value = x.IsNumber() ? x.GetNumberAsDouble() : -1.0;
+      if (!(value >= 0.0 && value <= 1.0))
+        reader.fail(volume + ".attenuationColor", "every component must be a number in [0, 1]");
+      m.attenuationColor[i] = value;
+    }
+  }
+}
+
+}  // namespace facet::scene::detail

@@ -1,0 +1,201 @@
+// Transmission and absorption on the CPU reference's paths (docs/rendering.md,
+// "Transmission and absorption"): a glass ball in a uniform white
+// environment renders the environment (the furnace), a thin and a thick slab
+// of the same absorbing glass transmit exp(-sigma d), the transparent
+// presets look through, and the GPU refuses what it cannot render.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include "engine/cpu/reference_renderer.h"
+#include "engine/renderer.h"
+#include "materials/material.h"
+#include "scenes/scene_geometry.h"
+#include "tests/support/cages.h"
+#include "tests/support/inside_sphere.h"
+
+namespace facet {
+namespace {
+
+materials::Material build(materials::MaterialSpec spec) {
+  return materials::buildMaterial(spec, [](std::string_view field) { return std::string(field); });
+}
+
+materials::MaterialSpec glassSpec(double ior) {
+  materials::MaterialSpec spec;
+  spec.name = "glass";
+  spec.alpha = 0.0;
+  spec.ior = glm::dvec3(ior);
+  spec.transmission = 1.0;
+  return spec;
+}
+
+// `cage` as authored, seen from +z, under a uniform white environment.
+scene::Scene underWhite(const materials::Material& material, scene::ControlCage cage, int bounces, int size,
+                        double fovDegrees) {
+  scene::Scene s;
+  s.materials.push_back(material);
+  scene::Object object;
+  object.name = "glass";
+  object.cage = std::move(cage);
+  object.subdivision = scene::Subdivision::None;
+  s.objects.push_back(std::move(object));
+  s.camera.eye = {0.0, 0.0, 4.0};
+  s.camera.verticalFovDegrees = fovDegrees;
+  s.render.width = s.render.height = size;
+  s.render.samplesPerPixel = 16;
+  s.render.method = scene::IntersectionMethod::Tessellated;
+  s.render.bounces = bounces;
+  s.environment.emplace();
+  s.environment->map = std::make_shared<const scene::EnvironmentMap>(scene::constantEnvironment(glm::dvec3(1.0)));
+  s.environment->method = scene::IblMethod::Sampled;
+  s.environment->samples = 4;
+  return s;
+}
+
+// Mean RGB over the pixels every camera sample of which hit.
+glm::dvec3 coveredMean(const Image& image) {
+  glm::dvec3 sum(0.0);
+  int count = 0;
+  for (const glm::vec4& pixel : image.beauty)
+    if (pixel.a == 1.0f) sum += glm::dvec3(pixel), ++count;
+  EXPECT_GT(count, 0);
+  return sum / double(std::max(count, 1));
+}
+
+glm::dvec3 renderMean(const scene::Scene& scene) {
+  return coveredMean(cpu::renderReference(scene, scene::buildGeometry(scene)));
+}
+
+// A box |x|, |y| <= 3, |z| <= depth / 2, its faces wound outward.
+scene::ControlCage slab(double depth) {
+  scene::ControlCage cage;
+  cage.source = "slab";
+  for (int i = 0; i < 8; ++i)
+    cage.positions.push_back({i & 1 ? 3.0 : -3.0, i & 2 ? 3.0 : -3.0, i & 4 ? depth / 2 : -depth / 2});
+  cage.faceVertexCounts = {4, 4, 4, 4, 4, 4};
+  cage.faceVertexIndices = {0, 2, 3, 1, 4, 5, 7, 6, 0, 4, 6, 2, 1, 3, 7, 5, 0, 1, 5, 4, 2, 6, 7, 3};
+  return cage;
+}
+
+TEST(TransmissionRender, GlassBallInAWhiteFurnaceRendersTheEnvironment) {
+  const materials::Material glass = build(glassSpec(1.5));
+  const glm::dvec3 direct = renderMean(underWhite(glass, testing::uvSphereCage(32, 64), 0, 32, 35));
+  const auto start = std::chrono::steady_clock::now();
+  const glm::dvec3 paths = renderMean(underWhite(glass, testing::uvSphereCage(32, 64), 32, 32, 35));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("glass ball, white furnace: bounces 0 mean %.5f, bounces 32 mean %.5f %.5f %.5f (%.2f s)\n", direct.x,
+              paths.x, paths.y, paths.z, seconds);
+  EXPECT_LT(direct.x, 0.2);  // reflection alone
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(paths[c], 1.0, 0.01);
+  // A rough ball loses what single scattering misses at each crossing, and no more.
+  materials::MaterialSpec rough = glassSpec(1.5);
+  rough.alpha = 0.1;
+  const glm::dvec3 roughMean = renderMean(underWhite(build(rough), testing::uvSphereCage(32, 64), 32, 32, 35));
+  std::printf("rough glass ball (alpha 0.1): %.5f\n", roughMean.x);
+  EXPECT_LE(roughMean.x, 1.0 + 0.01);
+  EXPECT_GT(roughMean.x, 0.9);
+}
+
+TEST(TransmissionRender, ThinAndThickSlabsOfOneGlassTransmitBeerLambert) {
+  const double depth = 0.25;
+  for (double ior : {1.0, 1.5}) {
+    materials::MaterialSpec spec = glassSpec(ior);
+    spec.attenuationColor = glm::dvec3(0.5, 0.25, 1.0);
+    spec.attenuationDistance = depth;  // exp(-sigma d) = the colour
+    const glm::dvec3 thick = renderMean(underWhite(build(spec), slab(depth), 12, 16, 4));
+    spec.thinWalled = true;
+    spec.thickness = depth;
+    const glm::dvec3 thin = renderMean(underWhite(
+        build(spec), scene::testing::singleFace({{-3, -3, 0}, {3, -3, 0}, {3, 3, 0}, {-3, 3, 0}}), 12, 16, 4));
+    const double f = rules::f64::fresnel_dielectric(ior, 1.0);
+    for (int c = 0; c < 3; ++c) {
+      const double tau = (*spec.attenuationColor)[c];
+      // Under a uniform environment a pixel is 1 less what the glass absorbs:
+      // the thick slab's two interfaces reflect back and forth (Airy's sum),
+      // the thin wall is one interface of transmittance (1 - F) tau.
+      const double denominator = 1 - f * f * tau * tau;
+      const double thickExpected = f + (1 - f) * (1 - f) * (f * tau * tau + tau) / denominator;
+      const double thinExpected = f + (1 - f) * tau;
+      std::printf("ior %.1f channel %d: tau %.3f, thick %.5f (expected %.5f), thin %.5f (expected %.5f)\n", ior, c, tau,
+                  thick[c], thickExpected, thin[c], thinExpected);
+      EXPECT_NEAR(thick[c], thickExpected, ior == 1.0 ? 2e-3 : 1e-2) << ior << " " << c;
+      EXPECT_NEAR(thin[c], thinExpected, ior == 1.0 ? 2e-3 : 1e-2) << ior << " " << c;
+    }
+  }
+}
+
+TEST(TransmissionRender, TransparentPresetsLookThrough) {
+  for (const char* preset : {"water", "plastic-glass-low", "glass-high-ruby", "diamond"}) {
+    materials::MaterialSpec spec;
+    spec.preset = preset;
+    spec.roughness = 0.0;
+    const materials::Material material = build(spec);
+    const glm::dvec3 direct = renderMean(underWhite(material, testing::uvSphereCage(16, 32), 0, 16, 35));
+    const glm::dvec3 paths = renderMean(underWhite(material, testing::uvSphereCage(16, 32), 24, 16, 35));
+    std::printf("%-18s bounces 0: %.4f, bounces 24: %.4f %.4f %.4f\n", preset, direct.x, paths.x, paths.y, paths.z);
+    EXPECT_LT(direct.x, 0.35) << preset;
+    if (std::string(preset) == "glass-high-ruby") {  // ruby: all but red absorbed
+      EXPECT_GT(paths.x, 0.7);
+      EXPECT_LT(paths.y, 0.3 * paths.x);
+      EXPECT_LT(paths.z, 0.3 * paths.x);
+    } else {
+      EXPECT_GT(paths.x, 0.9) << preset;
+      EXPECT_EQ(paths.x, paths.y) << preset;
+    }
+  }
+}
+
+TEST(TransmissionRender, TheGpuRefusesTransmissiveMaterials) {
+  try {
+    render(underWhite(build(glassSpec(1.5)), testing::uvSphereCage(8, 16), 0, 8, 35), Backend::Gpu);
+    FAIL() << "the GPU rendered glass";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "material 'glass' of object 'glass': transmissive materials render on the CPU reference only for now "
+              "(--backend cpu)");
+  }
+}
+
+// Limits per lobe kind (render.diffuse_bounces, glossy_bounces,
+// transmission_bounces): a path ends at the continuation that would exceed
+// its kind's limit, whatever the bounces allow.
+TEST(LobeLimits, ADiffuseLimitEndsPathsAsFewerBouncesWould) {
+  scene::Scene limited = testing::insideDiffuseSphere(0.5, 24, 24, 4);
+  limited.render.diffuseBounces = 2;
+  limited.render.glossyBounces = 0;  // the Lambertian sphere has no specular lobe to take
+  const Image a = cpu::renderReference(limited, scene::buildGeometry(limited));
+  const scene::Scene two = testing::insideDiffuseSphere(0.5, 2, 24, 4);
+  const Image b = cpu::renderReference(two, scene::buildGeometry(two));
+  for (std::size_t p = 0; p < a.pixelCount(); ++p) ASSERT_EQ(a.beauty[p], b.beauty[p]) << p;
+}
+
+TEST(LobeLimits, AGlassBallNeedsTwoTransmissions) {
+  const materials::Material glass = build(glassSpec(1.5));
+  double mean[3];
+  for (int limit : {0, 1, 2}) {
+    scene::Scene s = underWhite(glass, testing::uvSphereCage(16, 32), 16, 16, 35);
+    s.render.transmissionBounces = limit;
+    mean[limit] = renderMean(s).x;
+  }
+  std::printf("glass ball, transmission bounces 0, 1, 2: %.4f %.4f %.4f\n", mean[0], mean[1], mean[2]);
+  EXPECT_EQ(mean[0], mean[1]);  // in but never out: nothing more reaches the camera
+  EXPECT_LT(mean[1], 0.2);
+  EXPECT_GT(mean[2], 0.9);
+  scene::Scene s = underWhite(glass, testing::uvSphereCage(8, 16), 4, 8, 35);
+  s.render.transmissionBounces = 2;
+  try {
+    render(s, Backend::Gpu);
+    FAIL() << "the GPU limited lobes";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("limits per lobe kind render on the CPU reference only"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace facet
