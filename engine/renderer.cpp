@@ -26,17 +26,6 @@ class Stopwatch {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
-// Transmission renders on the CPU reference only for now (docs/rendering.md,
-// "Transmission and absorption").
-void refuseTransmissionOnGpu(const scene::Scene& scene) {
-  for (const scene::Object& object : scene.objects) {
-    const materials::Material& material = scene.materials[std::size_t(object.material)];
-    if (materials::isTransmissive(material))
-      throw std::invalid_argument("material '" + material.name + "' of object '" + object.name +
-                                  "': transmissive materials render on the CPU reference only for now (--backend cpu)");
-  }
-}
-
 }  // namespace
 
 gpu::InstanceDescriptor gpuInstanceFromEnvironment() {
@@ -102,7 +91,6 @@ RenderReport Renderer::render(const scene::Scene& scene, Backend backend, const 
     throw std::invalid_argument("crop " + report.window.text() + ": must be a non-empty rectangle inside the " +
                                 std::to_string(scene.render.width) + "x" + std::to_string(scene.render.height) +
                                 " image");
-  if (backend == Backend::Gpu) refuseTransmissionOnGpu(scene);
   Stopwatch clock;
   scene::SceneGeometry geometry = scene::buildGeometry(scene);
   report.stages.push_back({Stage::RefineBvh, clock.lap()});
