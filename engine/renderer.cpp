@@ -26,19 +26,13 @@ class Stopwatch {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
-// Transmission and lobe limits render on the CPU reference only for now
-// (docs/rendering.md, "Transmission and absorption").
-void refuseTransmissionOnGpu(const scene::Scene& scene) {
+// Limits per lobe kind render on the CPU reference only for now
+// (docs/rendering.md, "Limits per lobe kind").
+void refuseLobeLimitsOnGpu(const scene::Scene& scene) {
   if (scene::limitsLobes(scene.render))
     throw std::invalid_argument(
         "render.diffuse_bounces, glossy_bounces, transmission_bounces: limits per lobe kind render on the CPU "
         "reference only for now (--backend cpu)");
-  for (const scene::Object& object : scene.objects) {
-    const materials::Material& material = scene.materials[std::size_t(object.material)];
-    if (materials::isTransmissive(material))
-      throw std::invalid_argument("material '" + material.name + "' of object '" + object.name +
-                                  "': transmissive materials render on the CPU reference only for now (--backend cpu)");
-  }
 }
 
 }  // namespace
@@ -100,13 +94,13 @@ RenderReport render(const scene::Scene& scene, Backend backend, const std::funct
 
 RenderReport Renderer::render(const scene::Scene& scene, Backend backend, const std::function<void(double)>& progress,
                               const RenderOptions& options) {
+  if (backend == Backend::Gpu) refuseLobeLimitsOnGpu(scene);
   RenderReport report;
   report.window = options.crop.value_or(PixelRect::whole(scene.render.width, scene.render.height));
   if (report.window.empty() || !report.window.inside(scene.render.width, scene.render.height))
     throw std::invalid_argument("crop " + report.window.text() + ": must be a non-empty rectangle inside the " +
                                 std::to_string(scene.render.width) + "x" + std::to_string(scene.render.height) +
                                 " image");
-  if (backend == Backend::Gpu) refuseTransmissionOnGpu(scene);
   Stopwatch clock;
   scene::SceneGeometry geometry = scene::buildGeometry(scene);
   report.stages.push_back({Stage::RefineBvh, clock.lap()});

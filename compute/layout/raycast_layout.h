@@ -119,7 +119,23 @@ struct PathState {
   float specularR;
   float specularG;
   float specularB;
+  // Transmission (docs/rendering.md, "Transmission and absorption"): the
+  // vertex's material, FACET_PATH_* flags, and the absorption coefficient of
+  // the medium the path travels in (0 in air).
+  uint material;
+  uint flags;
+  float sigmaR;
+  float sigmaG;
+  float sigmaB;
 };
+
+// PathState.flags: the vertex continues by continue_path_transmissive; v lies
+// on the side its outward geometric normal points to; the continuation that
+// left the previous vertex went through its surface (a miss then sees the
+// environment, which D at that vertex did not count).
+const uint FACET_PATH_TRANSMISSIVE = 1u;
+const uint FACET_PATH_OUTSIDE = 2u;
+const uint FACET_PATH_TRANSMITTED = 4u;
 
 // An exact cell that Newton did not settle, deferred to the fallback pass
 // (compute/raycast/finish/fallback.comp): the ray (camera or shadow ray index) and
@@ -224,6 +240,16 @@ struct MaterialRecord {
   TextureSlotRecord occlusionTexture;
   TextureSlotRecord emissiveTexture;
   uint compensationTable;  // energy compensation's table (by D and G), or FACET_NO_COMPENSATION
+  // rules/shading/transmissive_continuation.h's TransmissionParams, used
+  // where `transmissive` is 1.
+  uint transmissive;
+  float transmission;
+  float ior;
+  uint thinWalled;
+  float sigmaR;
+  float sigmaG;
+  float sigmaB;
+  float thickness;
 };
 
 // What the camera-side kernels need, one uniform block (std140 agrees: all

@@ -24,6 +24,14 @@ double sharedModel(const scene::Scene& scene, int materials::Material::*model) {
   return shared;
 }
 
+// Whether some object's material transmits: only then do the kernels take
+// TRANSMISSION = 1, so that other scenes run exactly the kernels they did.
+bool transmits(const scene::Scene& scene) {
+  for (const scene::Object& object : scene.objects)
+    if (materials::isTransmissive(scene.materials[std::size_t(object.material)])) return true;
+  return false;
+}
+
 double environmentMethod(const scene::Scene& scene) {
   if (!scene.environment) return 0;
   switch (scene.environment->method) {
@@ -59,17 +67,18 @@ constexpr RayPasses kBouncePasses{Pass::BounceIntersect,       Pass::BounceCompa
 Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::EnvironmentLighting* lighting,
                 const ibl::CompensationTables& compensation, bool tessellated) {
   const std::vector<gpu::ConstantEntry> method{{"METHOD", tessellated ? 1.0 : 0.0}};
-  const std::vector<gpu::ConstantEntry> surface{
-      {"LIGHT_COUNT", double(scene.lights.size())},
-      {"ENVIRONMENT", environmentMethod(scene)},
-      {"OCCLUSION", scene.environment && scene.environment->occlusion ? 1.0 : 0.0},
-      {"ENVIRONMENT_SAMPLES", lighting && lighting->environmentSamples ? 1.0 : 0.0},
-      {"D_MODEL", sharedModel(scene, &materials::Material::distribution)},
-      {"G_MODEL", sharedModel(scene, &materials::Material::geometry)},
-      {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)},
-      {"TEXTURES", scene.textures.empty() ? 0.0 : 1.0},
-      {"EMISSION", double(emissionSlots(scene))},
-      {"COMPENSATION", compensation.tables.empty() ? 0.0 : 1.0}};
+  std::vector<gpu::ConstantEntry> surface{{"LIGHT_COUNT", double(scene.lights.size())},
+                                          {"ENVIRONMENT", environmentMethod(scene)},
+                                          {"OCCLUSION", scene.environment && scene.environment->occlusion ? 1.0 : 0.0},
+                                          {"ENVIRONMENT_SAMPLES", lighting && lighting->environmentSamples ? 1.0 : 0.0},
+                                          {"D_MODEL", sharedModel(scene, &materials::Material::distribution)},
+                                          {"G_MODEL", sharedModel(scene, &materials::Material::geometry)},
+                                          {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)},
+                                          {"TEXTURES", scene.textures.empty() ? 0.0 : 1.0},
+                                          {"EMISSION", double(emissionSlots(scene))},
+                                          {"COMPENSATION", compensation.tables.empty() ? 0.0 : 1.0}};
+  const bool transmission = transmits(scene);
+  if (transmission) surface.push_back({"TRANSMISSION", 1});
   Kernels k{&pipelines.get("intersect", method), &pipelines.get("surface", surface),
             &pipelines.get("dispatch_args", {}), &pipelines.get("shadow", method),
             &pipelines.get("gather", {}),        &pipelines.get("resolve", {})};
@@ -84,9 +93,11 @@ Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::
     std::vector<gpu::ConstantEntry> pathIntersect = method;
     pathIntersect.push_back({"PATHS", 1});
     k.pathSurface = &pipelines.get("surface", pathSurface);
-    k.continuePaths = &pipelines.get("continue_paths", {});
+    std::vector<gpu::ConstantEntry> continuation, pathGather{{"PATHS", 1}};
+    if (transmission) continuation.push_back({"TRANSMISSION", 1}), pathGather.push_back({"TRANSMISSION", 1});
+    k.continuePaths = &pipelines.get("continue_paths", continuation);
     k.pathIntersect = &pipelines.get("intersect", pathIntersect);
-    k.pathGather = &pipelines.get("gather", {{"PATHS", 1}});
+    k.pathGather = &pipelines.get("gather", pathGather);
     if (!tessellated) k.pathFallbacks = &pipelines.get("fallback", {{"SHADOW", 0}, {"PATHS", 1}});
   }
   return k;

@@ -70,6 +70,17 @@ std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
     const int table = compensation.tableOfMaterial[i];
     r.compensationTable =
         table == ibl::CompensationTables::kNone ? layout::FACET_NO_COMPENSATION : std::uint32_t(table);
+    if (materials::isTransmissive(scene.materials[i])) {
+      // From the CPU reference's double parameters, so that both read one sigma.
+      const rules::f64::TransmissionParams transmission = materials::transmissionParams64(scene.materials[i]);
+      r.transmissive = 1u;
+      r.transmission = float(transmission.transmission);
+      r.ior = float(transmission.ior);
+      r.thinWalled = transmission.thin_walled ? 1u : 0u;
+      r.sigmaR = float(transmission.sigma.x), r.sigmaG = float(transmission.sigma.y);
+      r.sigmaB = float(transmission.sigma.z);
+      r.thickness = float(transmission.thickness);
+    }
     records.push_back(r);
   }
   return records;

@@ -6,7 +6,9 @@
 // PATHS = 1 (docs/rendering.md, "Paths"): per continuation ray of the
 // compacted list that hit (dispatched indirectly), D at the vertex it hit,
 // in its path's slots, times the path's throughput, added to the camera
-// ray's radiance.
+// ray's radiance. TRANSMISSION = 1 (docs/rendering.md, "Transmission and
+// absorption"): a continuation ray that went through its last surface and
+// missed adds what the surface kernel wrote in its slots, the environment.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -14,6 +16,7 @@
 #include "compute/raycast/common/workgroup.glsl"
 
 layout(constant_id = 0) const int PATHS = 0;
+layout(constant_id = 1) const int TRANSMISSION = 0;
 
 layout(set = 0, binding = 0, std140) uniform FrameBlock { FrameParams frame; };
 layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
@@ -33,8 +36,11 @@ vec3 slot_radiance(uint ray) {
 void main() {
   uint index = invocation_index();
   if (PATHS == 1) {
-    if (index >= counters.pathRays || hits[index].patchIndex == FACET_NO_HIT) return;
+    if (index >= counters.pathRays) return;
     uint path = pathRays[index].path;
+    if (hits[index].patchIndex == FACET_NO_HIT &&
+        (TRANSMISSION == 0 || (pathStates[path].flags & FACET_PATH_TRANSMITTED) == 0u))
+      return;
     PathState state = pathStates[path];
     vec3 throughput = vec3(state.throughputR, state.throughputG, state.throughputB);
     rayRadiance[path].xyz += throughput * slot_radiance(path);

@@ -7,6 +7,12 @@
 // path that goes on multiplies its throughput by the continuation's weight
 // and appends its ray to the compacted list (counters.pathRays); one that
 // ends is marked so.
+// TRANSMISSION (docs/rendering.md, "Transmission and absorption"): 1 when
+// some material transmits; a vertex of one continues by
+// continue_path_transmissive with path_interface_u, its ray leaves below the
+// surface where it goes through, and a path that enters a medium (not a thin
+// wall) takes its sigma, one that leaves it sigma 0, as the CPU reference's
+// tracePath does.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -27,9 +33,15 @@
 #include "rules/sampling/path_samples.h"
 #include "rules/shading/lobe_sampling.h"
 #include "rules/shading/path_continuation.h"
+#include "rules/shading/dielectric.h"
+#include "rules/shading/absorption.h"
+#include "rules/shading/transmissive_continuation.h"
+
+layout(constant_id = 0) const int TRANSMISSION = 0;
 
 layout(set = 0, binding = 0, std140) uniform FrameBlock { FrameParams frame; };
 layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters; };
+layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord materials[]; };
 layout(set = 0, binding = 32, std430) buffer PathStates { PathState pathStates[]; };
 layout(set = 0, binding = 33, std430) writeonly buffer PathRays { PathRayRecord pathRays[]; };
 
@@ -53,8 +65,25 @@ void main() {
   }
   vec2 u = path_continuation_u(pixel, sample_index, frame.raysPerPixel, frame.pathSeed, vertex);
   PathVertex x = path_vertex(state);
-  PathContinuation next = continue_path(x.params, x.n, x.ng, x.v, x.specular_scale, u);
-  throughput *= next.weight;
+  PathMedium medium = path_medium(state);
+  vec3 direction, weight;
+  bool transmitted = false;
+  if (TRANSMISSION == 1 && (medium.flags & FACET_PATH_TRANSMISSIVE) != 0u) {
+    TransmissionParams t = transmission_params(materials[medium.material]);
+    TransmissiveContinuation next =
+        continue_path_transmissive(x.params, t, x.n, x.ng, x.v, u,
+                                   path_interface_u(pixel, sample_index, frame.raysPerPixel, frame.pathSeed, vertex));
+    direction = next.direction;
+    weight = next.weight;
+    transmitted = next.transmitted;
+    if (transmitted && !t.thin_walled)
+      medium.sigma = (medium.flags & FACET_PATH_OUTSIDE) != 0u ? t.sigma : vec3(0.0);
+  } else {
+    PathContinuation next = continue_path(x.params, x.n, x.ng, x.v, x.specular_scale, u);
+    direction = next.direction;
+    weight = next.weight;
+  }
+  throughput *= weight;
   if (throughput == vec3(0.0)) {
     pathStates[path].alive = 0u;
     return;
@@ -62,9 +91,15 @@ void main() {
   pathStates[path].throughputR = throughput.x;
   pathStates[path].throughputG = throughput.y;
   pathStates[path].throughputB = throughput.z;
-  vec3 origin = shadow_ray_origin(x.position, x.ng, frame.shadowOffset);
-  pathRays[atomicAdd(counters.pathRays, 1u)] =
-      PathRayRecord(RayRecord(origin.x, origin.y, origin.z, frame.shadowOffset, next.direction.x, next.direction.y,
-                              next.direction.z, INFINITE_DISTANCE),
-                    path);
+  if (TRANSMISSION == 1) {
+    pathStates[path].flags = transmitted ? medium.flags | FACET_PATH_TRANSMITTED : medium.flags;
+    pathStates[path].sigmaR = medium.sigma.x;
+    pathStates[path].sigmaG = medium.sigma.y;
+    pathStates[path].sigmaB = medium.sigma.z;
+  }
+  vec3 origin = shadow_ray_origin(x.position, transmitted ? -x.ng : x.ng, frame.shadowOffset);
+  pathRays[atomicAdd(counters.pathRays, 1u)] = PathRayRecord(
+      RayRecord(origin.x, origin.y, origin.z, frame.shadowOffset, direction.x, direction.y, direction.z,
+                INFINITE_DISTANCE),
+      path);
 }

@@ -1,6 +1,6 @@
 // Paths (docs/rendering.md, "Paths"): a camera ray's path state as the
 // kernels pack and unpack it (compute/layout/raycast_layout.h's PathState).
-// Needs rules/shading/brdf.h.
+// Needs rules/shading/brdf.h and transmissive_continuation.h.
 #ifndef FACET_RAYCAST_PATH_STATE_GLSL
 #define FACET_RAYCAST_PATH_STATE_GLSL
 
@@ -14,16 +14,37 @@ struct PathVertex {
   vec3 specular_scale;
 };
 
-PathState pack_path_state(vec3 throughput, bool alive, PathVertex x) {
+// What a path carries for transmission (PathState's last members).
+struct PathMedium {
+  uint material;
+  uint flags;  // FACET_PATH_*
+  vec3 sigma;  // of the medium the path travels in
+};
+
+PathState pack_path_state(vec3 throughput, bool alive, PathVertex x, PathMedium medium) {
   BrdfParams p = x.params;
   return PathState(throughput.x, throughput.y, throughput.z, alive ? 1u : 0u, x.position.x, x.position.y,
                    x.position.z, x.n.x, x.n.y, x.n.z, x.ng.x, x.ng.y, x.ng.z, x.v.x, x.v.y, x.v.z, p.d_model,
                    p.g_model, p.f_model, p.alpha, p.f0.x, p.f0.y, p.f0.z, p.eta.x, p.eta.y, p.eta.z, p.k.x, p.k.y,
                    p.k.z, p.diffuse.x, p.diffuse.y, p.diffuse.z, x.specular_scale.x, x.specular_scale.y,
-                   x.specular_scale.z);
+                   x.specular_scale.z, medium.material, medium.flags, medium.sigma.x, medium.sigma.y,
+                   medium.sigma.z);
 }
 
 vec3 path_throughput(PathState s) { return vec3(s.throughputR, s.throughputG, s.throughputB); }
+
+PathMedium path_medium(PathState s) { return PathMedium(s.material, s.flags, vec3(s.sigmaR, s.sigmaG, s.sigmaB)); }
+
+// A material record's transmission as the shared rules take it.
+TransmissionParams transmission_params(MaterialRecord m) {
+  TransmissionParams t;
+  t.transmission = m.transmission;
+  t.ior = m.ior;
+  t.thin_walled = m.thinWalled != 0u;
+  t.sigma = vec3(m.sigmaR, m.sigmaG, m.sigmaB);
+  t.thickness = m.thickness;
+  return t;
+}
 
 PathVertex path_vertex(PathState s) {
   BrdfParams p;

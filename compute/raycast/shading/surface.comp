@@ -25,6 +25,12 @@
 // continuation rays instead (dispatched indirectly), each shading the vertex
 // it hits into its camera ray's slots, with the environment pairs of that
 // vertex's seed, and moving its path on to that vertex (a miss ends it).
+// TRANSMISSION (docs/rendering.md, "Transmission and absorption"): 1 when
+// some material transmits; D at a vertex of one takes
+// transmissive_brdf_params by the side v lies on, a continuation ray's path
+// takes Beer-Lambert's factor over the segment it travelled, and one that
+// went through its last surface and misses sees the environment in the
+// environment's slot (gather adds it).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -46,12 +52,16 @@
 #include "rules/environment/spherical_harmonics.h"
 #include "rules/sampling/random.h"
 #include "rules/sampling/scrambled_net.h"
+#include "rules/sampling/path_samples.h"
 #include "rules/shading/lights.h"
 #include "rules/environment/sampled_environment.h"
 #include "rules/environment/prefilter.h"
 #include "rules/environment/filtered_environment.h"
 #include "rules/texture/texture_sampling.h"
 #include "rules/shading/textured_material.h"
+#include "rules/shading/dielectric.h"
+#include "rules/shading/absorption.h"
+#include "rules/shading/transmissive_continuation.h"
 
 layout(constant_id = 1) const int LIGHT_COUNT = 1;
 layout(constant_id = 2) const int D_MODEL = -1;
@@ -64,6 +74,7 @@ layout(constant_id = 8) const int TEXTURES = 0;
 layout(constant_id = 9) const int EMISSION = 0;
 layout(constant_id = 10) const int COMPENSATION = 0;
 layout(constant_id = 11) const int PATHS = 0;
+layout(constant_id = 12) const int TRANSMISSION = 0;
 
 layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
 layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord materials[]; };
@@ -232,7 +243,18 @@ void main() {
   vec3 direction = ray.direction;
 
   if (PATHS == 1 && hit.patchIndex == FACET_NO_HIT) pathStates[camera].alive = 0u;
-  if (continuation && hit.patchIndex == FACET_NO_HIT) return;  // adds nothing: D at the vertex it left counted it
+  if (continuation && hit.patchIndex == FACET_NO_HIT) {
+    // D at the vertex it left counted the environment, shadowed, over its
+    // reflection lobes; its transmission lobe leads here only.
+    if (TRANSMISSION == 1 && (pathStates[camera].flags & FACET_PATH_TRANSMITTED) != 0u) {
+      for (uint slot = 0u; slot < frame.slotsPerRay; ++slot) write_unshadowed(firstSlot + slot, vec3(0.0));
+      if (ENVIRONMENT != 0)
+        write_unshadowed(firstSlot + uint(LIGHT_COUNT),
+                         beer_lambert(path_medium(pathStates[camera]).sigma, INFINITE_DISTANCE) *
+                             environment_radiance(direction));
+    }
+    return;
+  }
   if (PATHS == 1 && hit.patchIndex != FACET_NO_HIT) atomicAdd(counters.pathHits, 1u);
   if (hit.patchIndex == FACET_NO_HIT) {
     if (centre) aovs[pixel] = PixelAovs(INFINITE_DISTANCE, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, FACET_NO_HIT,
@@ -255,7 +277,8 @@ void main() {
   vec3 position = onMicroTriangle ? origin + hit.t * direction : evaluate_patch(c, hit.s, hit.tParam).position;
   vec3 ng = onMicroTriangle ? triangleNormal : limit;
   // Two-sided: both normals face the eye.
-  if (dot(ng, direction) > 0.0) {
+  bool outside = !(dot(ng, direction) > 0.0);
+  if (!outside) {
     n = -n;
     ng = -ng;
   }
@@ -278,6 +301,7 @@ void main() {
     occlusion = surface.occlusion;
     emission = surface.emission;
   }
+  if (TRANSMISSION == 1 && m.transmissive == 1u) params = transmissive_brdf_params(params, transmission_params(m), outside);
   vec3 v = -direction;
   vec3 specular_scale = material_specular_scale(m.compensationTable, params, dot(n, v));
   for (int l = 0; l < LIGHT_COUNT; ++l) {
@@ -302,6 +326,15 @@ void main() {
   if (EMISSION == 1) write_unshadowed(firstSlot + frame.slotsPerRay - 1u, shaded ? emission : vec3(0.0));
   if (PATHS == 1) {
     vec3 throughput = continuation ? path_throughput(pathStates[camera]) : vec3(1.0);
-    pathStates[camera] = pack_path_state(throughput, shaded, PathVertex(position, n, ng, v, params, specular_scale));
+    PathMedium medium = PathMedium(range.material, 0u, vec3(0.0));
+    if (TRANSMISSION == 1) {
+      if (continuation) {
+        medium.sigma = path_medium(pathStates[camera]).sigma;
+        throughput *= beer_lambert(medium.sigma, length(position - origin));
+      }
+      medium.flags = (m.transmissive == 1u ? FACET_PATH_TRANSMISSIVE : 0u) | (outside ? FACET_PATH_OUTSIDE : 0u);
+    }
+    pathStates[camera] =
+        pack_path_state(throughput, shaded, PathVertex(position, n, ng, v, params, specular_scale), medium);
   }
 }

@@ -1,8 +1,9 @@
 // Transmission and absorption on the CPU reference's paths (docs/rendering.md,
 // "Transmission and absorption"): a glass ball in a uniform white
 // environment renders the environment (the furnace), a thin and a thick slab
-// of the same absorbing glass transmit exp(-sigma d), the transparent
-// presets look through, and the GPU refuses what it cannot render.
+// of the same absorbing glass transmit exp(-sigma d), and the transparent
+// presets look through (the GPU's side: tests/engine/gpu_backend/
+// transmission_parity_test.cpp).
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -17,56 +18,17 @@
 #include "materials/material.h"
 #include "scenes/scene_geometry.h"
 #include "tests/support/cages.h"
+#include "tests/support/glass_scenes.h"
 #include "tests/support/inside_sphere.h"
 
 namespace facet {
 namespace {
 
-materials::Material build(materials::MaterialSpec spec) {
-  return materials::buildMaterial(spec, [](std::string_view field) { return std::string(field); });
-}
+using testing::coveredMean;
+using testing::glassSpec;
+using testing::underWhite;
 
-materials::MaterialSpec glassSpec(double ior) {
-  materials::MaterialSpec spec;
-  spec.name = "glass";
-  spec.alpha = 0.0;
-  spec.ior = glm::dvec3(ior);
-  spec.transmission = 1.0;
-  return spec;
-}
-
-// `cage` as authored, seen from +z, under a uniform white environment.
-scene::Scene underWhite(const materials::Material& material, scene::ControlCage cage, int bounces, int size,
-                        double fovDegrees) {
-  scene::Scene s;
-  s.materials.push_back(material);
-  scene::Object object;
-  object.name = "glass";
-  object.cage = std::move(cage);
-  object.subdivision = scene::Subdivision::None;
-  s.objects.push_back(std::move(object));
-  s.camera.eye = {0.0, 0.0, 4.0};
-  s.camera.verticalFovDegrees = fovDegrees;
-  s.render.width = s.render.height = size;
-  s.render.samplesPerPixel = 16;
-  s.render.method = scene::IntersectionMethod::Tessellated;
-  s.render.bounces = bounces;
-  s.environment.emplace();
-  s.environment->map = std::make_shared<const scene::EnvironmentMap>(scene::constantEnvironment(glm::dvec3(1.0)));
-  s.environment->method = scene::IblMethod::Sampled;
-  s.environment->samples = 4;
-  return s;
-}
-
-// Mean RGB over the pixels every camera sample of which hit.
-glm::dvec3 coveredMean(const Image& image) {
-  glm::dvec3 sum(0.0);
-  int count = 0;
-  for (const glm::vec4& pixel : image.beauty)
-    if (pixel.a == 1.0f) sum += glm::dvec3(pixel), ++count;
-  EXPECT_GT(count, 0);
-  return sum / double(std::max(count, 1));
-}
+materials::Material build(const materials::MaterialSpec& spec) { return testing::buildTestMaterial(spec); }
 
 glm::dvec3 renderMean(const scene::Scene& scene) {
   return coveredMean(cpu::renderReference(scene, scene::buildGeometry(scene)));
@@ -148,17 +110,6 @@ TEST(TransmissionRender, TransparentPresetsLookThrough) {
       EXPECT_GT(paths.x, 0.9) << preset;
       EXPECT_EQ(paths.x, paths.y) << preset;
     }
-  }
-}
-
-TEST(TransmissionRender, TheGpuRefusesTransmissiveMaterials) {
-  try {
-    render(underWhite(build(glassSpec(1.5)), testing::uvSphereCage(8, 16), 0, 8, 35), Backend::Gpu);
-    FAIL() << "the GPU rendered glass";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "material 'glass' of object 'glass': transmissive materials render on the CPU reference only for now "
-              "(--backend cpu)");
   }
 }
 

@@ -13,7 +13,6 @@
 #include <memory>
 #include <vector>
 
-#include "analysis/parity.h"
 #include "engine/cpu/reference_renderer.h"
 #include "engine/gpu_backend/gpu_renderer.h"
 #include "scenes/environment_map.h"
@@ -22,6 +21,7 @@
 #include "tests/support/gpu_device.h"
 #include "tests/support/relative_errors.h"
 #include "tests/support/inside_sphere.h"
+#include "tests/support/path_parity.h"
 
 namespace facet {
 namespace {
@@ -32,13 +32,7 @@ using testing::geometricSum;
 using testing::insideDiffuseSphere;
 using testing::meanRadiance;
 
-class GpuPaths : public gpu::testing::GpuTest {
- protected:
-  gpu_backend::GpuRenderResult render(const scene::Scene& scene) {
-    gpu_backend::GpuRenderer renderer(device_);
-    return renderer.render(scene, scene::buildGeometry(scene));
-  }
-};
+using GpuPaths = testing::GpuRenderTest;
 
 TEST_F(GpuPaths, InsideADiffuseSphereEachBounceAddsTheAlbedoTimesTheLast) {
   const double albedo = 0.5;
@@ -88,50 +82,16 @@ scene::Scene previewWithPaths(scene::IntersectionMethod method, int bounces) {
 class GpuPathParity : public GpuPaths, public ::testing::WithParamInterface<scene::IntersectionMethod> {};
 
 TEST_P(GpuPathParity, TracesTheCpuReferencesPaths) {
-  const scene::Scene scene = previewWithPaths(GetParam(), 3);
-  const scene::SceneGeometry geometry = scene::buildGeometry(scene);
-  cpu::ReferenceStatistics cpuRays;
-  const Image reference = cpu::renderReference(scene, geometry, &cpuRays);
-  gpu_backend::GpuRenderer renderer(device_);
-  const gpu_backend::GpuRenderResult gpu = renderer.render(scene, geometry);
-
-  // The same paths: every bounce's rays, hits and shadow rays, up to the few
-  // that float and double send apart (a hit at a silhouette, a roulette
-  // number against a throughput).
-  ASSERT_EQ(gpu.raysPerBounce.size(), cpuRays.raysPerBounce.size());
-  for (std::size_t b = 0; b < gpu.raysPerBounce.size(); ++b) {
-    const cpu::BounceRays& c = cpuRays.raysPerBounce[b];
-    const gpu_backend::GpuBounceRays& g = gpu.raysPerBounce[b];
-    std::printf("bounce %zu: rays %llu / %llu, hits %llu / %llu, shadow %llu / %llu (GPU / CPU)\n", b,
-                (unsigned long long)g.rays, (unsigned long long)c.rays, (unsigned long long)g.hits,
-                (unsigned long long)c.hits, (unsigned long long)g.shadowRays, (unsigned long long)c.shadowRays);
-    EXPECT_NEAR(double(g.rays), double(c.rays), 0.01 * double(c.rays) + 2) << "bounce " << b;
-    EXPECT_NEAR(double(g.hits), double(c.hits), 0.01 * double(c.hits) + 2) << "bounce " << b;
-    EXPECT_NEAR(double(g.shadowRays), double(c.shadowRays), 0.01 * double(c.shadowRays) + 4) << "bounce " << b;
-  }
-  EXPECT_GT(cpuRays.raysPerBounce.at(1).hits, 20u);  // the objects light each other
-
-  // Per pixel, as tests/engine/gpu_backend/ibl_parity_test.cpp holds the
-  // sampled environment (whose float and double numbers part now and then):
-  // the paths add the pixels where a continuation's hit or a roulette number
+  const testing::PathRenders r = testing::renderBoth(device_, previewWithPaths(GetParam(), 3));
+  EXPECT_GT(r.cpuRays.raysPerBounce.at(1).hits, 20u);  // the objects light each other
+  // The paths add the pixels where a continuation's hit or a roulette number
   // parts, each at most its share of the pixel's samples.
-  const std::vector<double> errors = relativeErrors(reference, gpu.image);
-  const double median = errors[errors.size() / 2], p98 = errors[errors.size() * 98 / 100], worst = errors.back();
-  std::printf("relative error median %.2e, 98th percentile %.2e, max %.2e\n", median, p98, worst);
-  EXPECT_LT(median, 1e-4);
-  EXPECT_LT(p98, 5e-3);
-  EXPECT_LT(worst, 0.5);
-  EXPECT_EQ(analysis::compareImages(reference, gpu.image).coverageMismatchesInterior, 0u);
-  const double cpuMean = meanRadiance(reference).mean, gpuMean = meanRadiance(gpu.image).mean;
-  std::printf("mean radiance: GPU %.6f, CPU %.6f, relative difference %.2e\n", gpuMean, cpuMean, gpuMean / cpuMean - 1);
-  EXPECT_NEAR(gpuMean, cpuMean, 2e-3 * cpuMean);
+  testing::expectPathParity(r, {.median = 1e-4, .p98 = 5e-3, .worst = 0.5});
 }
 
 INSTANTIATE_TEST_SUITE_P(BothMethods, GpuPathParity,
                          ::testing::Values(scene::IntersectionMethod::Exact, scene::IntersectionMethod::Tessellated),
-                         [](const ::testing::TestParamInfo<scene::IntersectionMethod>& info) {
-                           return info.param == scene::IntersectionMethod::Exact ? "exact" : "tessellated";
-                         });
+                         testing::methodName);
 
 // A crop's paths draw the numbers of the full image's pixels, so its pixels
 // are the whole render's, bit for bit.

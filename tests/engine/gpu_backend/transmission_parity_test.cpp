@@ -1,0 +1,85 @@
+// Transmission and absorption on the GPU's paths (docs/rendering.md,
+// "Transmission and absorption"): a clear glass ball in a uniform white
+// environment renders the environment (the furnace), and glass, ruby and a
+// thin absorbing wall trace the CPU reference's paths, ray for ray per
+// bounce and per pixel; the public renderer no longer refuses them.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "engine/gpu_backend/gpu_renderer.h"
+#include "engine/renderer.h"
+#include "scenes/environment_map.h"
+#include "scenes/scene_geometry.h"
+#include "tests/support/cages.h"
+#include "tests/support/glass_scenes.h"
+#include "tests/support/gpu_device.h"
+#include "tests/support/path_parity.h"
+
+namespace facet {
+namespace {
+
+using testing::buildTestMaterial;
+using testing::coveredMean;
+using testing::glassSpec;
+using testing::underWhite;
+
+using GpuTransmission = testing::GpuRenderTest;
+
+TEST_F(GpuTransmission, GlassBallInAWhiteFurnaceRendersTheEnvironment) {
+  const materials::Material glass = buildTestMaterial(glassSpec(1.5));
+  scene::Scene scene = underWhite(glass, testing::uvSphereCage(12, 24), 0, 12, 35);
+  scene.render.samplesPerPixel = 4;
+  const glm::dvec3 direct = coveredMean(render(scene).image);
+  scene.render.bounces = 16;
+  const glm::dvec3 paths = coveredMean(render(scene).image);
+  std::printf("glass ball, white furnace: bounces 0 mean %.5f, bounces 16 mean %.5f %.5f %.5f\n", direct.x, paths.x,
+              paths.y, paths.z);
+  EXPECT_LT(direct.x, 0.2);  // reflection alone
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(paths[c], 1.0, 0.02);
+}
+
+TEST_F(GpuTransmission, GlassAndRubyTraceTheCpuReferencesPaths) {
+  const auto courtyard = std::make_shared<const scene::EnvironmentMap>(
+      scene::loadEnvironmentMap(std::filesystem::path(FACET_ENVIRONMENTS_DIR) / "courtyard_256x128.hdr"));
+  for (auto method : {scene::IntersectionMethod::Exact, scene::IntersectionMethod::Tessellated}) {
+    SCOPED_TRACE(method == scene::IntersectionMethod::Exact ? "exact" : "tessellated");
+    scene::Scene scene = testing::glassAndRubyOnGround(courtyard, 4, 40, 24);
+    scene.render.method = method;
+    const testing::PathRenders r = testing::renderBoth(device_, scene);
+    EXPECT_GT(r.cpuRays.raysPerBounce.at(2).hits, 100u);  // paths go through the balls
+    // A path whose float and double parted (a hit at a silhouette, a Fresnel
+    // choice against its number) moves its pixel by its share of the
+    // pixel's samples, which through glass may see the sun: a few such
+    // pixels, the others agree to float's precision.
+    testing::expectPathParity(r, {.median = 1e-4, .p98 = 2e-3, .parted = 5});
+  }
+}
+
+// A thin wall bends nothing and absorbs over its thickness: its
+// continuation carries the Beer-Lambert factor itself, and the path's
+// medium stays air.
+TEST_F(GpuTransmission, AThinAbsorbingWallTracesTheCpuReferencesPaths) {
+  materials::MaterialSpec spec = glassSpec(1.5);
+  spec.alpha = 0.2;
+  spec.thinWalled = true;
+  spec.thickness = 0.5;
+  spec.attenuationColor = glm::dvec3(0.9, 0.4, 0.2);
+  spec.attenuationDistance = 1.0;
+  scene::Scene scene = underWhite(
+      buildTestMaterial(spec), scene::testing::singleFace({{-3, -3, 0}, {3, -3, 0}, {3, 3, 0}, {-3, 3, 0}}), 3, 12, 20);
+  scene.render.samplesPerPixel = 4;
+  testing::expectPathParity(testing::renderBoth(device_, scene),
+                            {.median = 1e-5, .p98 = 1e-5, .parted = 0, .mean = 1e-5});
+}
+
+TEST_F(GpuTransmission, TheRendererRendersTransmissiveMaterialsOnTheGpu) {
+  scene::Scene scene = underWhite(buildTestMaterial(glassSpec(1.5)), testing::uvSphereCage(8, 16), 2, 8, 35);
+  scene.render.samplesPerPixel = 1;
+  EXPECT_NO_THROW(facet::render(scene, Backend::Gpu));
+}
+
+}  // namespace
+}  // namespace facet
