@@ -10,8 +10,8 @@
 #include "engine/gpu_backend/render_buffers.h"
 #include "engine/gpu_backend/shading_records.h"
 #include "engine/gpu_backend/stage_clock.h"
+#include "ceiling_kernels/spirv.h"
 #include "engine/ibl/compensation_tables.h"
-#include "incoherent_kernels/spirv.h"
 #include "rules/rules.h"
 
 namespace facet::benchmarks::incoherent {
@@ -74,7 +74,7 @@ FacetRays::FacetRays(gpu::Device& device, const scene::Scene& scene, const scene
   s.d.queue().waitIdle();
 
   s.intersect = &s.pipelines.get("intersect", {{"METHOD", 1.0}, {"PATHS", 1}});
-  s.countedModule = s.d.createShaderModule({"facet_counted", facet::incoherent_spirv::facet_counted});
+  s.countedModule = s.d.createShaderModule({"facet_counted", facet::ceiling_spirv::facet_counted});
   s.counted = s.d.createComputePipeline({"facet_counted", nullptr, &s.countedModule, "main", {{"METHOD", 1.0}}});
 }
 

@@ -26,7 +26,7 @@ class FacetRays {
   // Uploads the list; trace() and work() then run over it.
   void setRays(const std::vector<Ray>& rays);
   Traced trace();
-  // The benchmark's counted copy of the traversal (facet_counted.comp).
+  // The benchmark's counted copy of the traversal (ceiling/facet_counted.comp).
   Work work();
 
  private:
