@@ -4,6 +4,12 @@
 // geometry (when found at build time) at equal depth error.
 //
 //   raycast_bench [--quick] [--csv out.csv] [--adapter NAME]
+//   raycast_bench --incoherent [--quick] [--cage OBJ]... [--size N] [--repeats N] [--csv out.csv]
+//                 [--adapter NAME]
+//
+// --incoherent: secondary (continuation) rays against the ceiling kernel and
+// Embree on the same rays (incoherent/incoherent_bench.h, issue 24); --quick
+// there is the cube at 64².
 //
 // Every scene is a bare cage framed by sceneFromCage (default camera, default
 // key light, default refinement choice). Depth errors are those of
@@ -16,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "benchmarks/incoherent/incoherent_bench.h"
 #include "benchmarks/raycast_measure.h"
 #include "benchmarks/raycast_report.h"
 #include "benchmarks/uniform_refinement.h"
@@ -32,22 +39,51 @@ using raycast::NamedCage;
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool quick = false;
+  bool quick = false, incoherent = false;
+  int size = 512, repeats = 11;
   std::string csvPath, adapter;
+  std::vector<std::string> cages;  // --incoherent: OBJ cages relative to the source tree
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--quick") {
       quick = true;
+    } else if (a == "--incoherent") {
+      incoherent = true;
+    } else if (a == "--cage" && i + 1 < argc) {
+      cages.push_back(argv[++i]);
+    } else if (a == "--size" && i + 1 < argc) {
+      size = std::stoi(argv[++i]);
+    } else if (a == "--repeats" && i + 1 < argc) {
+      repeats = std::stoi(argv[++i]);
     } else if (a == "--csv" && i + 1 < argc) {
       csvPath = argv[++i];
     } else if (a == "--adapter" && i + 1 < argc) {
       adapter = argv[++i];
     } else {
-      std::fprintf(stderr, "usage: raycast_bench [--quick] [--csv out.csv] [--adapter NAME]\n");
+      std::fprintf(
+          stderr,
+          "usage: raycast_bench [--quick] [--csv out.csv] [--adapter NAME]\n"
+          "       raycast_bench --incoherent [--quick] [--cage OBJ]... [--size N] [--repeats N] [--csv out.csv] "
+          "[--adapter NAME]\n");
       return a == "--help" || a == "-h" ? 0 : 2;
     }
   }
   try {
+    if (incoherent) {
+      facet::benchmarks::incoherent::Options options;
+      options.cages = !cages.empty() ? cages
+                      : quick        ? std::vector<std::string>{"scenes/cages/cube.obj"}
+                                     : std::vector<std::string>{"scenes/cages/newell_teacup.obj",
+                                                                "scenes/cages/chess_pawn.obj", "scenes/cages/suzanne.obj"};
+      options.size = quick ? 64 : size;
+      options.repeats = quick ? 3 : repeats;
+      options.threads = raycast::kThreads;
+      options.adapter = adapter;
+      options.csvPath = csvPath;
+      if (facet::benchmarks::incoherent::runIncoherent(options)) return 0;
+      std::fprintf(stderr, "raycast_bench: over 5%% of the rays' hits differ between contestants (see the table)\n");
+      return 1;
+    }
     const std::filesystem::path root = FACET_SOURCE_DIR;
     facet::Renderer renderer(adapter);
     std::vector<NamedCage> cages;

@@ -37,6 +37,14 @@ const uint EMPTY = FACET_BVH4_EMPTY;
 const int STACK = 64;  // 3 per level; the builder checks the depth
 const float INF = INFINITE_DISTANCE;
 
+// With CEILING_COUNT (ray_list.glsl's counted variant): what trace() did.
+#ifdef CEILING_COUNT
+uint ceilingNodes = 0u, ceilingLeaves = 0u, ceilingTriangles = 0u;
+#define CEILING_COUNTED(counter) ++counter
+#else
+#define CEILING_COUNTED(counter)
+#endif
+
 uint pixel_count() { return uint(frame.screen.x) * uint(frame.screen.y); }
 
 // rules/camera/camera.h's pinhole, pixel centres.
@@ -76,8 +84,10 @@ uint trace(vec3 o, vec3 d, inout float tMax, bool anyHit) {
   while (true) {
     bool next = false;
     if ((ref & LEAF) != 0u) {
+      CEILING_COUNTED(ceilingLeaves);
       uint first = ref & 0x07ffffffu, last = first + ((ref >> 27) & 15u);
       for (uint i = first; i <= last; ++i) {
+        CEILING_COUNTED(ceilingTriangles);
         float t = intersect_triangle(i, o, d, tMax);
         if (t < tMax) {
           tMax = t;
@@ -87,6 +97,7 @@ uint trace(vec3 o, vec3 d, inout float tMax, bool anyHit) {
       }
     } else {
       uvec4 r;
+      CEILING_COUNTED(ceilingNodes);
       vec4 t = child_entries(ref, o, inv, 0.0, tMax, r);
       if (!anyHit) sort_children(t, r);
       for (int c = 3; c > 0; --c) {
