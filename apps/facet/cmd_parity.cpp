@@ -53,12 +53,13 @@ bool seededEstimate(const scene::Scene& scene) {
 }
 
 ParityCase judgeScene(const std::string& file, const ParityCommandOptions& o,
-                      const std::vector<gpu::AdapterInfo>& adapters,
+                      const analysis::ParityTolerances& tolerances, const std::vector<gpu::AdapterInfo>& adapters,
                       std::vector<std::unique_ptr<Renderer>>& renderers) {
   scene::Scene scene = scene::loadScene(file);
   applySceneOverrides(o.sceneOverrides, scene);
-  // Per adapter: its first render, the reference's, and the sums of the pairs.
-  checkImagesFitInMemory(scene, 1 + 4 * int(adapters.size()),
+  // The reference's render; per adapter its render, the first pair, the
+  // pairs' sums (about an image and a half) and the two mean images.
+  checkImagesFitInMemory(scene, 1 + 6 * int(adapters.size()),
                          o.sceneOverrides.size.empty() ? file + ": image size" : "--size");
   const bool statistical = seededEstimate(scene) && o.renders > 1;
   const int renders = statistical ? o.renders : 1;
@@ -91,7 +92,6 @@ ParityCase judgeScene(const std::string& file, const ParityCommandOptions& o,
     out.referenceMilliseconds += cpu.totalMilliseconds();
     for (std::size_t a = 0; a < adapters.size(); ++a) pairs[a].add(cpu.image, gpuImages[a]);
   }
-  const analysis::ParityTolerances tolerances = chosenTolerances(o.flags);
   for (std::size_t a = 0; a < adapters.size(); ++a)
     out.runs[a].report = analysis::compareImages(pairs[a].referenceMean(), pairs[a].candidateMean(), tolerances,
                                                  statistical ? &pairs[a] : nullptr);
@@ -99,14 +99,14 @@ ParityCase judgeScene(const std::string& file, const ParityCommandOptions& o,
 }
 
 void runParity(const ParityCommandOptions& o) {
-  chosenTolerances(o.flags);  // a malformed --tolerance before any work
+  const analysis::ParityTolerances tolerances = chosenTolerances(o.flags);  // a malformed one before any work
   const std::vector<gpu::AdapterInfo> adapters = chosenAdapters(o.adapter);
   checkParityOutputs(o.flags, o.scenes.size() * adapters.size());
   std::vector<std::unique_ptr<Renderer>> renderers;
   // Adapters are named by their full name: a substring of itself.
   for (const gpu::AdapterInfo& info : adapters) renderers.push_back(std::make_unique<Renderer>(info.name));
   std::vector<ParityCase> cases;
-  for (const std::string& scene : o.scenes) cases.push_back(judgeScene(scene, o, adapters, renderers));
+  for (const std::string& scene : o.scenes) cases.push_back(judgeScene(scene, o, tolerances, adapters, renderers));
   reportParity(o.flags, cases, "parity");
 }
 
