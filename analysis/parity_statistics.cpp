@@ -54,16 +54,13 @@ void PairedRenders::add(const Image& reference, const Image& candidate) {
   if (count_ == 0) {
     firstReference_ = reference;
     firstCandidate_ = candidate;
-    for (auto* sums :
-         {&sumReference_, &sumCandidate_, &squaresReference_, &squaresCandidate_, &sumDifference_, &squaresDifference_})
+    for (auto* sums : {&sumReference_, &sumCandidate_, &sumDifference_, &squaresDifference_})
       sums->assign(pixels, glm::dvec3(0));
   }
   for (std::size_t p = 0; p < pixels; ++p) {
     const glm::dvec3 a = rgb(reference.beauty[p]), b = rgb(candidate.beauty[p]), d = b - a;
     sumReference_[p] += a;
-    squaresReference_[p] += a * a;
     sumCandidate_[p] += b;
-    squaresCandidate_[p] += b * b;
     sumDifference_[p] += d;
     squaresDifference_[p] += d * d;
   }
@@ -91,12 +88,6 @@ glm::dvec3 sampleVariance(const glm::dvec3& sum, const glm::dvec3& squares, int 
 }
 }  // namespace
 
-glm::dvec3 PairedRenders::referenceVariance(std::size_t p) const {
-  return sampleVariance(sumReference_[p], squaresReference_[p], count_);
-}
-glm::dvec3 PairedRenders::candidateVariance(std::size_t p) const {
-  return sampleVariance(sumCandidate_[p], squaresCandidate_[p], count_);
-}
 glm::dvec3 PairedRenders::meanDifferenceVariance(std::size_t p) const {
   return sampleVariance(sumDifference_[p], squaresDifference_[p], count_) / double(count_);
 }

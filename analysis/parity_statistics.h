@@ -30,18 +30,15 @@ class PairedRenders {
   // The first pair's images with the mean beauty of every pair.
   Image referenceMean() const;
   Image candidateMean() const;
-  // Per channel: each backend's sample variance of one render, and the
-  // variance of the mean difference (the paired test's squared standard error).
-  glm::dvec3 referenceVariance(std::size_t pixel) const;
-  glm::dvec3 candidateVariance(std::size_t pixel) const;
+  // Per channel, the variance of the mean difference: the paired test's
+  // squared standard error.
   glm::dvec3 meanDifferenceVariance(std::size_t pixel) const;
 
  private:
   Image mean(const Image& first, const std::vector<glm::dvec3>& sum) const;
   int count_ = 0;
   Image firstReference_, firstCandidate_;
-  std::vector<glm::dvec3> sumReference_, sumCandidate_, squaresReference_, squaresCandidate_, sumDifference_,
-      squaresDifference_;
+  std::vector<glm::dvec3> sumReference_, sumCandidate_, sumDifference_, squaresDifference_;
 };
 
 // Two-sided p-value of Student's t with `dof` degrees of freedom; a t of

@@ -61,9 +61,9 @@ analysis::ParityTolerances chosenTolerances(const ParityFlags& flags) {
                                      : aov == "beauty" ? &t.beauty
                                                        : nullptr;
     if (!tolerance) throw std::invalid_argument("--tolerance '" + text + "': " + kToleranceRule);
-    tolerance->absolute = absolute;
+    // Beauty's default absolute part is derived from the image; a given one is in radiance units.
+    (aov == "beauty" ? t.beautyAbsolute.emplace() : tolerance->absolute) = absolute;
     tolerance->relative = relative;
-    if (aov == "beauty") t.beautyAbsolute = absolute;
   }
   return t;
 }
