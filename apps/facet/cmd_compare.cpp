@@ -4,6 +4,8 @@
 // says which pixels are covered.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cstdint>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -23,13 +25,24 @@ struct CompareOptions {
   ParityFlags flags;
 };
 
-// An unreadable file is bad input, not an internal error.
+// An unreadable file is bad input, not an internal error; so is an EXR
+// without the ids layer, whose pixels would all read as missed and be
+// judged "insufficient coverage" when the surface is plainly there.
 Image readInput(const std::string& path) {
+  Image image;
   try {
-    return readExr(path);
+    image = readExr(path);
   } catch (const std::runtime_error& e) {
     throw std::invalid_argument(e.what());
   }
+  const bool anyCovered =
+      std::any_of(image.patchId.begin(), image.patchId.end(), [](std::uint32_t id) { return id != Image::kNoId; });
+  const bool anyHit = std::any_of(image.beauty.begin(), image.beauty.end(), [](const glm::vec4& b) { return b.a > 0; });
+  if (!anyCovered && anyHit)
+    throw std::invalid_argument(path +
+                                ": has no ids layer (patchId), which says which pixels are covered: render it with "
+                                "--aovs all (or a list with ids)");
+  return image;
 }
 
 void runCompare(const CompareOptions& o) {

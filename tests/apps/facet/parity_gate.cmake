@@ -74,7 +74,13 @@ facet_cli_failure(compare_sizes_differ 1 "^facet: error: .*golden_small.exr: 8x6
                   "" "" ${facet} compare ${work}/golden_plain.exr ${work}/golden_small.exr)
 facet_cli_failure(compare_not_an_exr 1 "^facet: error: .*bad_scene.json: cannot read EXR" "" ""
                   ${facet} compare ${work}/bad_scene.json ${work}/golden_plain.exr)
+add_test(NAME cli.compare_render_beauty_only
+         COMMAND ${facet} render ${gold} -o ${work}/golden_beauty.exr --size 16x12 --backend cpu --aovs beauty)
+set_tests_properties(cli.compare_render_beauty_only PROPERTIES LABELS cli FIXTURES_SETUP golden_images)
+facet_cli_failure(compare_without_ids 1 "^facet: error: .*golden_beauty.exr: has no ids layer \\(patchId\\)" "" ""
+                  ${facet} compare ${work}/golden_plain.exr ${work}/golden_beauty.exr)
 set_tests_properties(cli.compare_equal cli.compare_biased cli.compare_sizes_differ cli.compare_not_an_exr
+                     cli.compare_without_ids
                      PROPERTIES LABELS cli FIXTURES_REQUIRED golden_images)
 
 # Every adapter present, each against one CPU reference.
