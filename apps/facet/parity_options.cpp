@@ -98,10 +98,16 @@ void reportParity(const ParityFlags& flags, const std::vector<ParityCase>& cases
   if (flags.json) {
     std::printf("%s\n", parityJson(cases).dump(2).c_str());
   } else {
-    for (const ParityCase& c : cases)
+    for (const ParityCase& c : cases) {
+      // The line a CI log needs to tell two runs' settings apart.
+      if (c.settings.contains("digest"))
+        std::printf("%s: settings %s, %d render(s) per backend (digest %s)\n", c.scene.c_str(),
+                    c.settings["text"].get<std::string>().c_str(), c.settings["rendersPerBackend"].get<int>(),
+                    c.settings["digest"].get<std::string>().c_str());
       for (const ParityRun& run : c.runs)
         std::printf("%s (reference: %s)\n%s", runName(c, run).c_str(), c.reference.c_str(),
                     analysis::describe(run.report).c_str());
+    }
     for (const OutputFile& output : outputs) std::printf("wrote %s\n", output.path.c_str());
   }
   const std::string failed = failedRuns(cases);
