@@ -110,8 +110,13 @@ ParityReport Renderer::parity(const Scene& input, const RenderSettings& settings
     const analysis::ParityReport r = analysis::compareImages(cpu.image, gpu.image);
     ParityReport out{r.width,        r.height, r.covered, r.coverageMismatches,
                      r.coveragePass, {},       r.pass,    analysis::describe(r)};
-    for (const analysis::AovParity& a : r.aovs)
-      out.aovs.push_back({a.name, a.maxRelative, a.meanRelative, a.tolerance, a.shareOver, a.pass});
+    // The public struct keeps one number per tolerance (docs/api.md: its layout is
+    // the ABI): the relative part, or the absolute one where there is none
+    // (normals); the summary states both and the pass rule.
+    for (const analysis::AovParity& a : r.aovs) {
+      const double tolerance = !a.gated ? 0 : a.tolerance.relative > 0 ? a.tolerance.relative : a.tolerance.absolute;
+      out.aovs.push_back({a.name, a.maxRelative, a.meanRelative, tolerance, a.shareOver, a.pass});
+    }
     return out;
   });
 }

@@ -1,118 +1,131 @@
-// facet parity: render a scene on both backends and compare them AOV by AOV
-// (analysis/parity.h); exits with kCheckFailed above tolerance.
+// facet parity: render scenes on the GPU (one adapter, or every one) and the
+// CPU reference and judge them AOV by AOV (analysis/parity.h,
+// docs/parity.md); exits with kCheckFailed when any run does not pass.
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include <cstdio>
 #include <memory>
-#include <optional>
-#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "analysis/parity.h"
+#include "analysis/parity_statistics.h"
 #include "commands.h"
-#include "engine/image/image_io.h"
 #include "engine/renderer.h"
-#include "exit_codes.h"
+#include "parity_options.h"
+#include "parity_output.h"
 #include "scene_options.h"
 #include "scenes/scene_file.h"
+#include "settings_digest.h"
 
 namespace facet::cli {
 namespace {
 
-using analysis::AovParity;
-using analysis::ParityReport;
-
-struct ParityOptions {
-  std::string scene;
-  std::string size;
-  std::string method;
-  std::string subdivision;
-  std::string energyCompensation;
-  std::optional<int> bounces;
-  std::string heatmap;
+struct ParityCommandOptions {
+  std::vector<std::string> scenes;
+  SceneOverrides sceneOverrides;
+  ParityFlags flags;
   std::string adapter;
-  bool json = false;
+  int renders = 16;
 };
 
-nlohmann::json toJson(const ParityReport& report, const RenderReport& cpu, const RenderReport& gpu) {
-  nlohmann::json aovs = nlohmann::json::array();
-  for (const AovParity& a : report.aovs)
-    aovs.push_back({{"name", a.name},
-                    {"relative", a.unit},
-                    {"maxAbsolute", a.maxAbsolute},
-                    {"meanAbsolute", a.meanAbsolute},
-                    {"maxRelative", a.maxRelative},
-                    {"meanRelative", a.meanRelative},
-                    {"tolerance", a.tolerance},
-                    {"overSilhouette", a.overSilhouette},
-                    {"overInterior", a.overInterior},
-                    {"shareOver", a.shareOver},
-                    {"pass", a.pass}});
-  auto milliseconds = [](const RenderReport& r) {
-    nlohmann::json stages = nlohmann::json::object();
-    for (const StageTime& s : r.stages) stages[std::string(stageName(s.stage))] = s.milliseconds;
-    return stages;
-  };
-  return {{"width", report.width},
-          {"height", report.height},
-          {"pixels", report.pixels},
-          {"coveredOnBoth", report.covered},
-          {"silhouettePixels", report.silhouettePixels},
-          {"coverage",
-           {{"mismatches", report.coverageMismatches},
-            {"mismatchesOffSilhouette", report.coverageMismatchesInterior},
-            {"pass", report.coveragePass}}},
-          {"aovs", aovs},
-          {"cpu", {{"device", cpu.device}, {"milliseconds", milliseconds(cpu)}}},
-          {"gpu", {{"device", gpu.device}, {"milliseconds", milliseconds(gpu)}}},
-          {"pass", report.pass}};
+// The adapters to judge, each checked before any render: one by name (or
+// FACET_ADAPTER, or the default), or every one present for "all".
+std::vector<gpu::AdapterInfo> chosenAdapters(const std::string& adapter) {
+  const gpu::Instance instance = gpu::Instance::create(gpuInstanceFromEnvironment());
+  if (adapter != "all") return {instance.requestAdapter(gpuAdapterFromEnvironment(adapter)).info()};
+  std::vector<gpu::AdapterInfo> adapters = instance.enumerateAdapters();
+  if (adapters.empty()) throw gpu::Error("--adapter all: no Vulkan adapter found");
+  return adapters;
 }
 
-void runParity(const ParityOptions& o) {
-  if (!o.heatmap.empty()) checkOutputPath("--heatmap", o.heatmap);
-  scene::Scene scene = scene::loadScene(o.scene);
-  if (!o.size.empty()) applyImageSize(o.size, scene);
-  if (!o.method.empty()) applyMethod(o.method, scene);
-  if (!o.subdivision.empty()) scene::overrideSubdivision(scene, o.subdivision, "--subdivision");
-  applyEnergyCompensation(o.energyCompensation, scene);
-  if (o.bounces) scene.render.bounces = *o.bounces;
-  // Both backends' images, and the heat map's when one is asked for.
-  checkImagesFitInMemory(scene, o.heatmap.empty() ? 2 : 3, o.size.empty() ? o.scene + ": image size" : "--size");
-  const RenderReport cpu = render(scene, Backend::Cpu);
-  const RenderReport gpu = render(scene, Backend::Gpu, {}, o.adapter);
-  const ParityReport report = analysis::compareImages(cpu.image, gpu.image);
-  if (!o.heatmap.empty()) analysis::writeHeatmap(o.heatmap, report);
-  if (o.json) {
-    std::printf("%s\n", toJson(report, cpu, gpu).dump(2).c_str());
-  } else {
-    std::printf("%s: %s intersection; CPU: %s; GPU: %s\n", o.scene.c_str(),
-                scene.render.method == scene::IntersectionMethod::Exact ? "exact" : "tessellated", cpu.device.c_str(),
-                gpu.device.c_str());
-    std::printf("%s", analysis::describe(report).c_str());
-    if (!o.heatmap.empty()) std::printf("wrote %s\n", o.heatmap.c_str());
+nlohmann::json adapterJson(const gpu::AdapterInfo& info) {
+  return {{"driver", info.driver},
+          {"driverInfo", info.driverInfo},
+          {"apiVersion", info.apiVersion},
+          {"type", gpu::toString(info.type)}};
+}
+
+// Whether the beauty is a Monte Carlo estimate whose random numbers the
+// environment's seed chooses: sampled or filtered lighting, and paths.
+bool seededEstimate(const scene::Scene& scene) {
+  return scene.environment && (scene.environment->method != scene::IblMethod::Prefiltered || scene.render.bounces > 0);
+}
+
+ParityCase judgeScene(const std::string& file, const ParityCommandOptions& o,
+                      const analysis::ParityTolerances& tolerances, const std::vector<gpu::AdapterInfo>& adapters,
+                      std::vector<std::unique_ptr<Renderer>>& renderers) {
+  scene::Scene scene = scene::loadScene(file);
+  applySceneOverrides(o.sceneOverrides, scene);
+  // The reference's render; per adapter its render, the first pair, the
+  // pairs' sums (about an image and a half) and the two mean images.
+  checkImagesFitInMemory(scene, 1 + 6 * int(adapters.size()),
+                         o.sceneOverrides.size.empty() ? file + ": image size" : "--size");
+  const bool statistical = seededEstimate(scene) && o.renders > 1;
+  const int renders = statistical ? o.renders : 1;
+  const std::uint32_t firstSeed = scene.environment ? scene.environment->seed : 0u;
+
+  ParityCase out;
+  out.scene = file;
+  out.settings = {{"digest", settingsDigest(scene, "parity")},
+                  {"text", renderSettingsText(scene, "parity")},
+                  {"rendersPerBackend", renders},
+                  {"seeds", statistical ? nlohmann::json::array({firstSeed, firstSeed + std::uint32_t(renders - 1)})
+                                        : nlohmann::json::array({firstSeed})}};
+  std::vector<analysis::PairedRenders> pairs(adapters.size());
+  for (std::size_t a = 0; a < adapters.size(); ++a) out.runs.push_back({adapters[a].name, adapterJson(adapters[a])});
+  // Render i of every backend draws the same random numbers (seed i), so
+  // that their difference is the backends' and not the estimators' noise.
+  // The GPU first: it refuses what it cannot render (a scene beyond float's
+  // range) before the CPU spends a render on it.
+  for (int i = 0; i < renders; ++i) {
+    if (scene.environment) scene.environment->seed = firstSeed + std::uint32_t(i);
+    std::vector<Image> gpuImages;
+    for (std::size_t a = 0; a < adapters.size(); ++a) {
+      RenderReport gpu = renderers[a]->render(scene, Backend::Gpu);
+      out.runs[a].milliseconds += gpu.totalMilliseconds();
+      out.runs[a].adapterInfo["device"] = gpu.device;
+      gpuImages.push_back(std::move(gpu.image));
+    }
+    const RenderReport cpu = renderers.front()->render(scene, Backend::Cpu);
+    out.reference = cpu.device;
+    out.referenceMilliseconds += cpu.totalMilliseconds();
+    for (std::size_t a = 0; a < adapters.size(); ++a) pairs[a].add(cpu.image, gpuImages[a]);
   }
-  if (!report.pass) throw CheckFailed("parity: " + o.scene + " is out of tolerance");
+  for (std::size_t a = 0; a < adapters.size(); ++a)
+    out.runs[a].report = analysis::compareImages(pairs[a].referenceMean(), pairs[a].candidateMean(), tolerances,
+                                                 statistical ? &pairs[a] : nullptr);
+  return out;
+}
+
+void runParity(const ParityCommandOptions& o) {
+  const analysis::ParityTolerances tolerances = chosenTolerances(o.flags);  // a malformed one before any work
+  const std::vector<gpu::AdapterInfo> adapters = chosenAdapters(o.adapter);
+  checkParityOutputs(o.flags, o.scenes.size() * adapters.size());
+  std::vector<std::unique_ptr<Renderer>> renderers;
+  // Adapters are named by their full name: a substring of itself.
+  for (const gpu::AdapterInfo& info : adapters) renderers.push_back(std::make_unique<Renderer>(info.name));
+  std::vector<ParityCase> cases;
+  for (const std::string& scene : o.scenes) cases.push_back(judgeScene(scene, o, tolerances, adapters, renderers));
+  reportParity(o.flags, cases, "parity");
 }
 
 }  // namespace
 
 void addParityCommand(CLI::App& app) {
-  auto o = std::make_shared<ParityOptions>();
-  auto* c = app.add_subcommand("parity", "Render a scene on the GPU and the CPU reference and compare every AOV");
-  c->add_option("scene", o->scene, "Scene file (.json, .obj cage or glTF)")->required()->check(CLI::ExistingFile);
-  c->add_option("--size", o->size, "Image size WIDTHxHEIGHT");
-  c->add_option("--method", o->method, "Ray casting: exact limit surface, or tessellated")
-      ->check(CLI::IsMember({"exact", "tess"}));
-  c->add_option(
-      "--subdivision", o->subdivision,
-      "Subdivision of every object, whatever the file chose: catmull-clark, or none (the polygons as authored)");
-  addEnergyCompensationOption(*c, o->energyCompensation);
-  c->add_option("--bounces", o->bounces, "Continuations of each camera sample's path")
-      ->check(CLI::Range(0, scene::kMaxBounces));
-  c->add_option("--heatmap", o->heatmap, "Write the per-pixel error (in units of tolerance) as a PNG");
-  c->add_option("--adapter", o->adapter, "GPU adapter: a substring of its name");
-  c->add_flag("--json", o->json, "Machine-readable report");
+  auto o = std::make_shared<ParityCommandOptions>();
+  auto* c = app.add_subcommand("parity", "Render scenes on the GPU and the CPU reference and judge every AOV");
+  c->add_option("scenes", o->scenes, "Scene files (.json, .obj cage or glTF)")->required()->check(CLI::ExistingFile);
+  addSceneOverrideOptions(*c, o->sceneOverrides);
+  addParityFlags(*c, o->flags);
+  c->add_option("--adapter", o->adapter,
+                "GPU adapter: a substring of its name, or 'all' for every adapter present against one CPU reference "
+                "(default: FACET_ADAPTER or the first)");
+  c->add_option("--renders", o->renders,
+                "Sampled or filtered lighting and paths: renders per backend, seeds apart, for the paired t-test "
+                "(1: one render each, judged by tolerance alone)")
+      ->check(CLI::Range(1, 1024))
+      ->capture_default_str();
   c->callback([o] { runParity(*o); });
 }
 

@@ -16,6 +16,7 @@ void addPresetsCommand(CLI::App& app);
 void addPlotCommand(CLI::App& app);
 void addBrdfPrecisionCommand(CLI::App& app);
 void addParityCommand(CLI::App& app);
+void addCompareCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 void addIblChartCommand(CLI::App& app);
 

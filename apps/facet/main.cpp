@@ -57,6 +57,7 @@ int main(int argc, char** argv) {
   addPlotCommand(app);
   addBrdfPrecisionCommand(app);
   addParityCommand(app);
+  addCompareCommand(app);
   addIblChartCommand(app);
   addBenchCommand(app);
   requireNumbers(app);

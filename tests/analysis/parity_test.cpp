@@ -91,6 +91,84 @@ TEST(Parity, CoverageDifferingOnOneSilhouettePixelPasses) {
   EXPECT_EQ(report.coverageMismatches, 1u);
 }
 
+// The 1e-11-scaled cage: nothing covered is nothing judged, never a pass.
+TEST(Parity, AnEmptyImageIsInsufficientCoverageNotAPass) {
+  const ParityReport report = compareImages(Image(20, 20), Image(20, 20));
+  EXPECT_EQ(report.verdict, Verdict::InsufficientCoverage);
+  EXPECT_FALSE(report.pass);
+  EXPECT_NE(describe(report).find("parity: INSUFFICIENT COVERAGE: 0 pixels covered on both"), std::string::npos);
+  ParityTolerances none;
+  none.minCoverage = 0;  // even with no stated minimum
+  EXPECT_EQ(compareImages(Image(20, 20), Image(20, 20), none).verdict, Verdict::InsufficientCoverage);
+}
+
+// A candidate that renders nothing where the reference has a surface is
+// wrong, not unjudged.
+TEST(Parity, NothingCoveredAgainstASurfaceIsAFailure) {
+  const ParityReport report = compareImages(square(), Image(20, 20));
+  EXPECT_EQ(report.verdict, Verdict::Fail);
+  EXPECT_FALSE(report.coveragePass);
+}
+
+TEST(Parity, FewerCoveredPixelsThanTheMinimumIsInsufficientCoverage) {
+  ParityTolerances tolerances;
+  tolerances.minCoverage = 101;
+  EXPECT_EQ(compareImages(square(), square(), tolerances).verdict, Verdict::InsufficientCoverage);
+  tolerances.minCoverage = 100;
+  EXPECT_EQ(compareImages(square(), square(), tolerances).verdict, Verdict::Pass);
+}
+
+// Two pixels over, where the rule allows one: black pixels off by 3e-5
+// pass on the absolute floor (1e-4 of the brightest channel, 0.5), 1e-4 fails.
+TEST(Parity, BeautyHasAnAbsoluteFloor) {
+  Image reference = square(), candidate = square();
+  for (int x : {8, 9}) {
+    reference.beauty[reference.index(x, 8)] = {0, 0, 0, 1};
+    candidate.beauty[candidate.index(x, 8)] = {3e-5f, 0, 0, 1};
+  }
+  const ParityReport report = compareImages(reference, candidate);
+  EXPECT_TRUE(report.pass) << describe(report);
+  EXPECT_NEAR(aov(report, "beauty").tolerance.absolute, 5e-5, 1e-12);
+  for (int x : {8, 9}) candidate.beauty[candidate.index(x, 8)].r = 1e-4f;
+  EXPECT_FALSE(compareImages(reference, candidate).pass);
+  ParityTolerances looser;
+  looser.beautyAbsolute = 2e-4;  // --tolerance beauty=2e-4,1e-3
+  EXPECT_TRUE(compareImages(reference, candidate, looser).pass);
+}
+
+// |d| <= abs + rel |ref|: depth 10 with abs 1e-3 and rel 1e-4 allows 2e-3.
+TEST(Parity, ToleranceIsAnAbsoluteFloorPlusARelativePart) {
+  Image candidate = square();
+  candidate.depth[candidate.index(10, 10)] = 10.0019f;
+  ParityTolerances tolerances;
+  tolerances.depth = {1e-3, 1e-4, 1, true};
+  EXPECT_TRUE(compareImages(square(), candidate, tolerances).pass);
+  candidate.depth[candidate.index(10, 10)] = 10.0021f;
+  const ParityReport report = compareImages(square(), candidate, tolerances);
+  EXPECT_FALSE(report.pass);
+  const WorstPixel& worst = aov(report, "depth").worst.front();
+  EXPECT_EQ(worst.x, 10);
+  EXPECT_EQ(worst.y, 10);
+  EXPECT_NEAR(worst.error, 2.1e-3 / 2e-3, 1e-3);
+  EXPECT_EQ(passRule(aov(report, "depth")), "|d| <= 1.0e-03 + 1.0e-04 |ref| on 100% of interior pixels");
+}
+
+TEST(Parity, ReportedAovsAreNotGatedAndHaveNoVerdict) {
+  Image candidate = square();
+  candidate.beauty[candidate.index(10, 10)].a = 0.5f;
+  candidate.uv[candidate.index(10, 10)] = {0.5f, 0.5f};
+  const ParityReport report = compareImages(square(), candidate);
+  EXPECT_TRUE(report.pass);
+  for (const char* name : {"alpha", "uv"}) {
+    const AovParity& a = aov(report, name);
+    EXPECT_FALSE(a.gated);
+    EXPECT_EQ(passRule(a), "not gated");
+    EXPECT_GT(a.maxAbsolute, 0);
+    EXPECT_EQ(a.worst.front().x, 10);
+  }
+  EXPECT_TRUE(aov(report, "beauty").gated);
+}
+
 TEST(Parity, DifferentSizesAreAnError) { EXPECT_THROW(compareImages(Image(2, 2), Image(3, 2)), std::invalid_argument); }
 
 }  // namespace
