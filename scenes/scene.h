@@ -60,7 +60,7 @@ inline bool isSquare(int n) {
 }
 inline constexpr const char* kSamplesPerPixelRule = "samples per pixel must be a square number (an n x n grid)";
 
-// Paths (docs/rendering.md, "Paths on the CPU reference"): a continuation that
+// Paths (docs/rendering.md, "Paths"): a continuation that
 // misses adds nothing because the vertex it left counted the environment with
 // its shadow rays, so paths need them.
 inline constexpr int kMaxBounces = 64;

@@ -1,5 +1,5 @@
-// Paths on the CPU reference (docs/rendering.md, "Paths on the CPU
-// reference"): per camera sample that hits,
+// Paths on the CPU reference (docs/rendering.md, "Paths"): per camera
+// sample that hits,
 //   L = D(x1) + T1 D(x2) + T1 T2 D(x3) + ...,
 // D(x) the per-hit estimator of direct light at x (punctual lights, the
 // environment by the scene's IBL method with its shadow rays, emission), and

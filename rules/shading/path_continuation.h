@@ -1,5 +1,5 @@
 // Where a path goes on from a shaded vertex, and what it carries there
-// (docs/rendering.md, "Paths on the CPU reference"): a direction drawn from
+// (docs/rendering.md, "Paths"): a direction drawn from
 // the whole material with sample_brdf_lobes, and the weight
 // f(l, v) (n.l) / pdf(l) that multiplies the path's throughput. Both
 // backends continue their paths with this one rule, so that they trace the
