@@ -29,7 +29,7 @@ glm::dvec3 finite(const Vec3& v, const std::string& field) {
 
 glm::dvec3 color(const Vec3& v, const std::string& field) {
   const glm::dvec3 c = finite(v, field);
-  if (scene::hasNegativeComponent(c)) fail(field, scene::kNegativeColorRule);
+  if (const auto rule = scene::radianceRule(c)) fail(field, *rule);
   return c;
 }
 
@@ -111,6 +111,8 @@ scene::Environment engineEnvironment(const Environment& environment) {
     fail("environment.file", e.what());
   }
   out.intensity = inRange(environment.intensity, 0, HUGE_VAL, "environment.intensity");
+  if (const auto rule = scene::radianceRule(glm::dvec3(out.intensity * out.map->largestRadiance())))
+    fail("environment.intensity", "the brightest texel times the intensity " + *rule);
   out.rotationDegrees = inRange(environment.rotationDegrees, -HUGE_VAL, HUGE_VAL, "environment.rotationDegrees");
   out.method = environment.method == IblMethod::Sampled ? scene::IblMethod::Sampled : scene::IblMethod::Prefiltered;
   out.samples = int(inRange(environment.samples, 1, 16384, "environment.samples"));

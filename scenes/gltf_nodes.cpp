@@ -40,6 +40,7 @@ Light toLight(const tinygltf::Light& gltf, int index, const glm::dmat4& world, c
   if (hasNegativeComponent(color)) reader.fail(field + ".color", kNegativeColorRule);
   if (gltf.intensity < 0) reader.fail(where, "light intensity must not be negative");
   light.color = color * gltf.intensity / std::numbers::pi;
+  if (const auto rule = radianceRule(light.color)) reader.fail(field, "color times intensity / pi " + *rule);
   light.position = glm::dvec3(world[3]);
   if (gltf.type == "directional") {
     light.type = LightType::Directional;

@@ -48,7 +48,7 @@ Light readLight(const Field& f) {
       {{"directional", LightType::Directional}, {"point", LightType::Point}, {"spot", LightType::Spot}});
   if (f.has("color")) {
     light.color = f["color"].vec3();
-    if (hasNegativeComponent(light.color)) f["color"].fail(kNegativeColorRule);
+    if (const auto rule = radianceRule(light.color)) f["color"].fail(*rule);
   }
   const bool positioned = light.type != LightType::Directional;
   const bool aimed = light.type != LightType::Point;

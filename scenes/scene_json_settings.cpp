@@ -43,10 +43,14 @@ Environment readEnvironment(const Field& f, const std::filesystem::path& sceneFi
     }
   } else {
     const glm::dvec3 color = f["color"].vec3();
-    if (hasNegativeComponent(color)) f["color"].fail(kNegativeColorRule);
+    if (const auto rule = radianceRule(color)) f["color"].fail(*rule);
     environment.map = std::make_shared<const EnvironmentMap>(constantEnvironment(color));
   }
-  if (f.has("intensity")) environment.intensity = f["intensity"].number(0.0);
+  if (f.has("intensity")) {
+    environment.intensity = f["intensity"].number(0.0);
+    if (const auto rule = radianceRule(glm::dvec3(environment.intensity * environment.map->largestRadiance())))
+      f["intensity"].fail("the brightest texel times the intensity " + *rule);
+  }
   if (f.has("rotation")) environment.rotationDegrees = f["rotation"].number();
   if (f.has("method"))
     environment.method = f["method"].choice<IblMethod>(

@@ -21,6 +21,15 @@ std::optional<std::string> rangeRule(double x, double lo, double hi);
 
 bool hasNegativeComponent(const glm::dvec3& v);
 
+// The largest radiance (per channel) a light, an emission or an environment
+// may have: the renderers sum and filter light in float on the GPU, and a
+// sum of such values stays finite (docs/reliability.md, "Limits").
+inline constexpr double kMaxRadiance = 1e30;
+
+// A light's or an environment's colour: "must not be negative", or "must be
+// at most 1e30 per channel, is x" (NaN included); nothing when it is fine.
+std::optional<std::string> radianceRule(const glm::dvec3& color);
+
 // Shortest decimal text of `x`: no trailing zeros, "inf" and "-inf".
 std::string formatNumber(double x);
 

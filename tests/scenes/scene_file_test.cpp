@@ -307,6 +307,16 @@ TEST_F(SceneFiles, EnvironmentErrorsNameTheField) {
               AllOf(HasSubstr("environment.file"), HasSubstr("expected a string")));
   EXPECT_THAT(errorOfEnvironment(R"({"color": [1, -1, 1]})"),
               AllOf(HasSubstr("environment.color"), HasSubstr("must not be negative")));
+  // Light is summed in float on the GPU: radiance beyond 1e30 would make Inf pixels on either backend.
+  EXPECT_THAT(
+      errorOfEnvironment(R"({"color": [1e300, 1, 1]})"),
+      AllOf(HasSubstr("environment.color"), HasSubstr("must be at most 1e30 per channel"), HasSubstr("1e+300")));
+  EXPECT_THAT(errorOfEnvironment(R"({"color": [1, 1, 1], "intensity": 1e31})"),
+              AllOf(HasSubstr("environment.intensity"), HasSubstr("the brightest texel times the intensity")));
+  EXPECT_THAT(
+      errorOf(
+          R"({"objects": [{"mesh": "ball.obj"}], "lights": [{"type": "directional", "direction": [0, -1, 0], "color": [1, 1e300, 1]}]})"),
+      AllOf(HasSubstr("lights[0].color"), HasSubstr("must be at most 1e30 per channel")));
   EXPECT_THAT(errorOfEnvironment(R"({"color": [1, 1]})"),
               AllOf(HasSubstr("environment.color"), HasSubstr("expected an array of 3 numbers")));
   EXPECT_THAT(errorOfEnvironment(R"({"color": [1, 1, 1], "intensity": -0.5})"),
