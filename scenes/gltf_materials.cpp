@@ -65,8 +65,8 @@ TextureSampler toSampler(const tinygltf::Sampler& gltf, const std::string& where
 materials::TextureSlot TextureTable::slot(const tinygltf::ExtensionMap& extensions, int index, int texCoord,
                                           TextureEncoding encoding, const std::string& where) {
   materials::TextureSlot slot;
-  if (index < 0) return slot;
-  if (std::size_t(index) >= model_.textures.size())
+  if (index == -1) return slot;  // tinygltf's "no texture"; any other negative index is the file's error
+  if (index < 0 || std::size_t(index) >= model_.textures.size())
     reader_.fail(where + ".index", "texture index " + std::to_string(index) + " out of range (the file has " +
                                        std::to_string(model_.textures.size()) + " textures)");
   if (auto found = extensions.find("KHR_texture_transform"); found != extensions.end()) {

@@ -113,6 +113,12 @@ TEST_F(GltfTextures, ABadTextureIndexIsNamed) {
                                               HasSubstr("texture index 7 out of range (the file has 2 textures)"))));
 }
 
+TEST_F(GltfTextures, ANegativeTextureIndexIsNamedNotIgnored) {
+  const auto file = facet::testing::writeTexturedQuad(dir_, "negative", parts({{"normalTexture", {{"index", -3}}}}));
+  EXPECT_THAT([&] { loadScene(file); }, ThrowsMessage<InputError>(AllOf(HasSubstr("materials[0].normalTexture.index"),
+                                                                        HasSubstr("texture index -3 out of range"))));
+}
+
 TEST_F(GltfTextures, AnImageOfAnUnknownFormatIsRefused) {
   std::ofstream(dir_ / "base.png") << "GIF89a, not a PNG";
   const auto file = facet::testing::writeTexturedQuad(dir_, "format", parts());
