@@ -285,10 +285,12 @@ Scene loadJsonScene(const std::filesystem::path& path) {
       if (known != materialIndex.end()) {
         object.material = known->second;
       } else {
-        // A preset name stands for that preset with default roughness.
+        // A preset name stands for that preset at the default material's roughness.
         object.material = int(scene.materials.size());
         scene.materials.push_back(
-            readMaterial(Field(json{{"preset", name}}, o["material"].path(), source), path, scene.textures));
+            readMaterial(Field(json{{"preset", name}, {"roughness", std::sqrt(defaultMaterial().alpha)}},
+                               o["material"].path(), source),
+                         path, scene.textures));
         materialIndex[name] = object.material;
       }
     } else {

@@ -53,6 +53,13 @@ TEST_F(SceneFiles, ThePreviewSceneHasEveryPreset) {
   for (const Object& o : scene.objects) EXPECT_EQ(scene.materials[std::size_t(o.material)].name, o.name);
 }
 
+TEST_F(SceneFiles, APresetNameAsAnObjectsMaterialIsThatPresetAtTheDefaultRoughness) {
+  const Scene scene = loadScene(write("preset.json", R"({"objects": [{"mesh": "ball.obj", "material": "gold"}]})"));
+  const materials::Material& gold = scene.materials.at(std::size_t(scene.objects.at(0).material));
+  EXPECT_DOUBLE_EQ(gold.alpha, defaultMaterial().alpha);
+  EXPECT_GT(gold.f0.r, 0.9);  // the gold preset's F(0), not the default material's 0.04
+}
+
 TEST_F(SceneFiles, TransformsMoveTheCageAndMirrorsKeepNormalsOutward) {
   Scene plain = loadScene(write("a.json", R"({"objects": [{"mesh": "ball.obj"}]})"));
   Scene moved = loadScene(write("b.json", R"({"objects": [{"mesh": "ball.obj",
