@@ -10,6 +10,7 @@
 #include <set>
 
 #include "scenes/camera_keys.h"
+#include "scenes/camera_rules.h"
 #include "scenes/environment_map.h"
 #include "scenes/input_error.h"
 #include "scenes/json_field.h"
@@ -33,9 +34,7 @@ Camera readCamera(const Field& f) {
   if (f.has("target")) c.target = f["target"].vec3();
   if (f.has("up")) c.up = f["up"].direction();
   if (f.has("fov")) c.verticalFovDegrees = f["fov"].number(kMinFovDegrees, kMaxFovDegrees);
-  if (glm::length(c.target - c.eye) < 1e-12) f.fail("eye and target must differ");
-  if (glm::length(glm::cross(glm::normalize(c.target - c.eye), c.up)) < 1e-9)
-    f.fail("up must not be parallel to the view direction");
+  if (const char* problem = cameraProblem(c)) f.fail(problem);
   return c;
 }
 

@@ -14,6 +14,7 @@
 #include <tuple>
 #include <stdexcept>
 
+#include "scenes/camera_rules.h"
 #include "scenes/scene_file.h"
 
 namespace facet::cli {
@@ -69,12 +70,8 @@ void applySceneOverrides(const SceneOverrides& o, scene::Scene& scene) {
   if (!o.target.empty()) scene.camera.target = vector3(o.target);
   if (!o.up.empty()) scene.camera.up = vector3(o.up);
   if (o.fov) scene.camera.verticalFovDegrees = *o.fov;
-  const glm::dvec3 view = scene.camera.target - scene.camera.eye;
-  if (glm::length(view) == 0) throw std::invalid_argument("--eye and --target must differ");
-  if (!std::isfinite(glm::length(view)))
-    throw std::invalid_argument("--eye and --target: their distance overflows a double; bring them closer");
-  if (glm::length(glm::cross(view, scene.camera.up)) <= 1e-12 * glm::length(view) * glm::length(scene.camera.up))
-    throw std::invalid_argument("--up must not be zero or parallel to the view direction");
+  if (const char* problem = scene::cameraProblem(scene.camera))
+    throw std::invalid_argument("--eye, --target, --up: the camera cannot render: " + std::string(problem));
   if (!o.subdivision.empty()) scene::overrideSubdivision(scene, o.subdivision, "--subdivision");
   if (!o.method.empty()) applyMethod(o.method, scene);
   if (o.tessLevel) scene.render.tessellationRate = *o.tessLevel;
