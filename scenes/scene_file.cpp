@@ -89,10 +89,7 @@ Light defaultKeyLight(const Camera& camera) {
 }
 
 void addDefaultLighting(Scene& scene) {
-  if (scene.environment)
-    scene.lights.push_back(defaultKeyLight(scene.camera));
-  else
-    scene.environment = studioEnvironment();
+  if (!scene.environment) scene.environment = studioEnvironment();
 }
 
 Aabb cageBounds(const Scene& scene) {

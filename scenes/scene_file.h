@@ -46,9 +46,9 @@ Camera frameBounds(const Aabb& bounds, double verticalFovDegrees = 40.0);
 // A white directional key light (c_light = 1) from above the camera's left shoulder.
 Light defaultKeyLight(const Camera& camera);
 
-// The lighting of a scene that names no lights: the default key light
-// beside the scene's environment, or the default studio environment
-// (studio_environment.h) where it has none.
+// The lighting of a scene that names no lights: its environment alone, the
+// light it names (a key light beside it would be light nobody asked for);
+// the default studio environment (studio_environment.h) where it has none.
 void addDefaultLighting(Scene& scene);
 
 // World-space box of every object's control points (which enclose the limit surface).
