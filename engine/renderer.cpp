@@ -26,15 +26,6 @@ class Stopwatch {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
-// Limits per lobe kind render on the CPU reference only for now
-// (docs/rendering.md, "Limits per lobe kind").
-void refuseLobeLimitsOnGpu(const scene::Scene& scene) {
-  if (scene::limitsLobes(scene.render))
-    throw std::invalid_argument(
-        "render.diffuse_bounces, glossy_bounces, transmission_bounces: limits per lobe kind render on the CPU "
-        "reference only for now (--backend cpu)");
-}
-
 }  // namespace
 
 gpu::InstanceDescriptor gpuInstanceFromEnvironment() {
@@ -94,7 +85,6 @@ RenderReport render(const scene::Scene& scene, Backend backend, const std::funct
 
 RenderReport Renderer::render(const scene::Scene& scene, Backend backend, const std::function<void(double)>& progress,
                               const RenderOptions& options) {
-  if (backend == Backend::Gpu) refuseLobeLimitsOnGpu(scene);
   RenderReport report;
   report.window = options.crop.value_or(PixelRect::whole(scene.render.width, scene.render.height));
   if (report.window.empty() || !report.window.inside(scene.render.width, scene.render.height))

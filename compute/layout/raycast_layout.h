@@ -127,6 +127,12 @@ struct PathState {
   float sigmaR;
   float sigmaG;
   float sigmaB;
+  // Limits per lobe kind (docs/rendering.md, "Limits per lobe kind"): the
+  // continuations of each kind (PATH_LOBE_*) the path has taken, counted
+  // only where the scene sets a limit (LOBE_LIMITS).
+  uint diffuseTaken;
+  uint glossyTaken;
+  uint transmissionTaken;
 };
 
 // PathState.flags: the vertex continues by continue_path_transmissive; v lies
@@ -305,6 +311,12 @@ struct FrameParams {
   // (environmentSeed is then that of the vertex they hit).
   uint pathVertex;
   uint pathSeed;
+  // Limits per lobe kind: the continuations of each kind a path may take
+  // (render.diffuse_bounces, glossy_bounces, transmission_bounces); below 0,
+  // none. Read only by kernels specialized with LOBE_LIMITS = 1.
+  int diffuseBounces;
+  int glossyBounces;
+  int transmissionBounces;
 };
 
 // The AOVs of one pixel (beauty is written separately, as a vec4).

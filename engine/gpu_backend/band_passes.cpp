@@ -90,11 +90,16 @@ Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::
   if (scene.render.bounces > 0) {
     std::vector<gpu::ConstantEntry> pathSurface = surface;
     pathSurface.push_back({"PATHS", 1});
+    // Limits per lobe kind: only a scene that sets one counts its paths'
+    // lobes, so that other scenes run exactly the kernels they did.
+    const bool limits = scene::limitsLobes(scene.render);
+    if (limits) pathSurface.push_back({"LOBE_LIMITS", 1});
     std::vector<gpu::ConstantEntry> pathIntersect = method;
     pathIntersect.push_back({"PATHS", 1});
     k.pathSurface = &pipelines.get("surface", pathSurface);
     std::vector<gpu::ConstantEntry> continuation, pathGather{{"PATHS", 1}};
     if (transmission) continuation.push_back({"TRANSMISSION", 1}), pathGather.push_back({"TRANSMISSION", 1});
+    if (limits) continuation.push_back({"LOBE_LIMITS", 1});
     k.continuePaths = &pipelines.get("continue_paths", continuation);
     k.pathIntersect = &pipelines.get("intersect", pathIntersect);
     k.pathGather = &pipelines.get("gather", pathGather);

@@ -89,6 +89,9 @@ gpu_layout::FrameParams frameParams(const scene::Scene& scene, const scene::Scen
   f.tolerance = float(tolerance);
   f.minimumPiece = float(std::max(4 * tolerance, 1e-6 * diagonal));
   f.shadowOffset = float(rules::f64::shadow_ray_offset(diagonal, tolerance));
+  f.diffuseBounces = scene.render.diffuseBounces;
+  f.glossyBounces = scene.render.glossyBounces;
+  f.transmissionBounces = scene.render.transmissionBounces;
   return f;
 }
 

@@ -124,8 +124,11 @@ BandBuffers allocateBands(gpu::Device& d, std::uint64_t bandPixels, std::uint64_
   b.shadowFallbacks = storage(d, "shadow ray fallbacks", fallbackBytes);
   b.frame = d.createBuffer({"frame", sizeof(layout::FrameParams), BufferUsage::Uniform | BufferUsage::CopyDst});
   b.hits = storage(d, "camera hits", bandRays * sizeof(layout::HitRecord));
-  b.shadowRays = storage(d, "shadow rays", bandRays * slots * sizeof(layout::ShadowRayRecord));
-  b.contributions = storage(d, "light contributions", bandRays * slots * 16);
+  // A scene without lights, environment or emission has no slots, but each
+  // binding still holds one record: such a ray's slots buffers are unused.
+  const std::uint64_t slotRecords = bandRays * std::max(1u, slots);
+  b.shadowRays = storage(d, "shadow rays", slotRecords * sizeof(layout::ShadowRayRecord));
+  b.contributions = storage(d, "light contributions", slotRecords * 16);
   b.aovs = storage(d, "AOVs", bandPixels * sizeof(layout::PixelAovs), BufferUsage::CopySrc);
   b.rayRadiance = storage(d, "camera ray radiance", bandRays * 16);
   b.beauty = storage(d, "beauty", bandPixels * 16, BufferUsage::CopySrc);

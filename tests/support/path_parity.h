@@ -93,4 +93,15 @@ inline void expectPathParity(const PathRenders& r, const PathParityBounds& bound
   EXPECT_NEAR(gpuMean, cpuMean, bounds.mean * cpuMean);
 }
 
+// Every bounce's rays exactly as the CPU reference's, for scenes where no
+// path's float and double part: each path ends on the GPU where it ends on
+// the CPU.
+inline void expectSameRaysPerBounce(const PathRenders& r) {
+  ASSERT_EQ(r.gpu.raysPerBounce.size(), r.cpuRays.raysPerBounce.size());
+  for (std::size_t b = 0; b < r.gpu.raysPerBounce.size(); ++b) {
+    EXPECT_EQ(r.gpu.raysPerBounce[b].rays, r.cpuRays.raysPerBounce[b].rays) << "bounce " << b;
+    EXPECT_EQ(r.gpu.raysPerBounce[b].hits, r.cpuRays.raysPerBounce[b].hits) << "bounce " << b;
+  }
+}
+
 }  // namespace facet::testing

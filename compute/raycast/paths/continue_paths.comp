@@ -13,6 +13,10 @@
 // surface where it goes through, and a path that enters a medium (not a thin
 // wall) takes its sigma, one that leaves it sigma 0, as the CPU reference's
 // tracePath does.
+// LOBE_LIMITS (docs/rendering.md, "Limits per lobe kind"): 1 when the scene
+// sets a limit; the path counts its continuations per lobe kind and ends at
+// one that path_lobe_allowed refuses, checked where tracePath checks it
+// (after roulette and the continuation, before the zero throughput).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -38,6 +42,7 @@
 #include "rules/shading/transmissive_continuation.h"
 
 layout(constant_id = 0) const int TRANSMISSION = 0;
+layout(constant_id = 1) const int LOBE_LIMITS = 0;
 
 layout(set = 0, binding = 0, std140) uniform FrameBlock { FrameParams frame; };
 layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters; };
@@ -68,6 +73,7 @@ void main() {
   PathMedium medium = path_medium(state);
   vec3 direction, weight;
   bool transmitted = false;
+  int lobe = PATH_LOBE_DIFFUSE;
   if (TRANSMISSION == 1 && (medium.flags & FACET_PATH_TRANSMISSIVE) != 0u) {
     TransmissionParams t = transmission_params(materials[medium.material]);
     TransmissiveContinuation next =
@@ -76,14 +82,28 @@ void main() {
     direction = next.direction;
     weight = next.weight;
     transmitted = next.transmitted;
+    lobe = next.lobe;
     if (transmitted && !t.thin_walled)
       medium.sigma = (medium.flags & FACET_PATH_OUTSIDE) != 0u ? t.sigma : vec3(0.0);
   } else {
     PathContinuation next = continue_path(x.params, x.n, x.ng, x.v, x.specular_scale, u);
     direction = next.direction;
     weight = next.weight;
+    if (LOBE_LIMITS == 1) lobe = opaque_continuation_lobe(x.params, u);
   }
   throughput *= weight;
+  if (LOBE_LIMITS == 1) {
+    uvec3 taken = path_lobes_taken(state);
+    ivec3 limits = ivec3(frame.diffuseBounces, frame.glossyBounces, frame.transmissionBounces);
+    if (!path_lobe_allowed(int(taken[lobe]), limits[lobe])) {
+      pathStates[path].alive = 0u;
+      return;
+    }
+    taken[lobe] += 1u;
+    pathStates[path].diffuseTaken = taken.x;
+    pathStates[path].glossyTaken = taken.y;
+    pathStates[path].transmissionTaken = taken.z;
+  }
   if (throughput == vec3(0.0)) {
     pathStates[path].alive = 0u;
     return;

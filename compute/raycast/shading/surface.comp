@@ -31,6 +31,8 @@
 // takes Beer-Lambert's factor over the segment it travelled, and one that
 // went through its last surface and misses sees the environment in the
 // environment's slot (gather adds it).
+// LOBE_LIMITS (docs/rendering.md, "Limits per lobe kind"): 1 when the scene
+// sets one; a continuation ray's path keeps its counts per lobe kind.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -75,6 +77,7 @@ layout(constant_id = 9) const int EMISSION = 0;
 layout(constant_id = 10) const int COMPENSATION = 0;
 layout(constant_id = 11) const int PATHS = 0;
 layout(constant_id = 12) const int TRANSMISSION = 0;
+layout(constant_id = 13) const int LOBE_LIMITS = 0;
 
 layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
 layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord materials[]; };
@@ -334,7 +337,10 @@ void main() {
       }
       medium.flags = (m.transmissive == 1u ? FACET_PATH_TRANSMISSIVE : 0u) | (outside ? FACET_PATH_OUTSIDE : 0u);
     }
+    // Limits per lobe kind: the counts travel with the path (the camera ray's
+    // vertex has taken none); without limits they stay 0, unread.
+    uvec3 taken = LOBE_LIMITS == 1 && continuation ? path_lobes_taken(pathStates[camera]) : uvec3(0u);
     pathStates[camera] =
-        pack_path_state(throughput, shaded, PathVertex(position, n, ng, v, params, specular_scale), medium);
+        pack_path_state(throughput, shaded, PathVertex(position, n, ng, v, params, specular_scale), medium, taken);
   }
 }

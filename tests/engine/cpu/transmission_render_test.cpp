@@ -14,7 +14,6 @@
 #include <utility>
 
 #include "engine/cpu/reference_renderer.h"
-#include "engine/renderer.h"
 #include "materials/material.h"
 #include "scenes/scene_geometry.h"
 #include "tests/support/cages.h"
@@ -138,14 +137,6 @@ TEST(LobeLimits, AGlassBallNeedsTwoTransmissions) {
   EXPECT_EQ(mean[0], mean[1]);  // in but never out: nothing more reaches the camera
   EXPECT_LT(mean[1], 0.2);
   EXPECT_GT(mean[2], 0.9);
-  scene::Scene s = underWhite(glass, testing::uvSphereCage(8, 16), 4, 8, 35);
-  s.render.transmissionBounces = 2;
-  try {
-    render(s, Backend::Gpu);
-    FAIL() << "the GPU limited lobes";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("limits per lobe kind render on the CPU reference only"), std::string::npos);
-  }
 }
 
 }  // namespace

@@ -107,14 +107,16 @@ INSTANTIATE_TEST_SUITE_P(Supersampled, GpuParity,
                          caseName);
 
 // The GPU's image of `scene` against the CPU reference's, which must show
-// something (a blank frame would compare equal).
-void expectParity(gpu::Device& device, const scene::Scene& scene) {
+// something (a blank frame would compare equal); returns the GPU's.
+Image expectParity(gpu::Device& device, const scene::Scene& scene) {
   const scene::SceneGeometry geometry = scene::buildGeometry(scene);
   const Image reference = cpu::renderReference(scene, geometry);
   gpu_backend::GpuRenderer renderer(device);
-  const ParityReport parity = compareImages(reference, renderer.render(scene, geometry).image);
+  Image gpu = renderer.render(scene, geometry).image;
+  const ParityReport parity = compareImages(reference, gpu);
   EXPECT_TRUE(parity.pass) << describe(parity);
   EXPECT_GT(parity.covered, 50u);
+  return gpu;
 }
 
 // Precise anywhere: the GPU works relative to the eye, so a scene far from
@@ -285,6 +287,26 @@ TEST_F(GpuRendererTest, TheLargestDicingRateMatchesTheCpuReference) {
   scene.render.tessellationRate = 256;
   scene.objects.at(0).isolationLevel = 1;
   expectParity(device_, scene);
+}
+
+// A scene without lights, environment or emission has no slots per camera
+// ray: it renders black with the CPU reference's coverage and AOVs, paths
+// too (its buffers of slots once were too small to bind).
+TEST_F(GpuRendererTest, ASceneWithoutLightRendersAsTheCpuReferenceDoes) {
+  scene::Scene scene = scene::loadScene(std::filesystem::path(FACET_EXAMPLES_DIR) / "superball.obj");
+  scene.lights.clear();
+  scene.environment.reset();
+  scene.render.width = 16;
+  scene.render.height = 16;
+  for (auto method : {scene::IntersectionMethod::Exact, scene::IntersectionMethod::Tessellated})
+    for (int bounces : {0, 2}) {
+      SCOPED_TRACE(std::string(method == scene::IntersectionMethod::Exact ? "exact" : "tessellated") + ", bounces " +
+                   std::to_string(bounces));
+      scene.render.method = method;
+      scene.render.bounces = bounces;
+      const Image gpu = expectParity(device_, scene);
+      for (std::size_t p = 0; p < gpu.pixelCount(); ++p) ASSERT_EQ(glm::vec3(gpu.beauty[p]), glm::vec3(0.0f)) << p;
+    }
 }
 
 TEST_F(GpuRendererTest, ReportsGpuTimePerStage) {

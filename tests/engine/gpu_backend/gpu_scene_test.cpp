@@ -276,6 +276,7 @@ TEST(GpuLayout, GlslLayoutOfTheSharedHeadersIsTheCppLayout) {
   EXPECT_EQ(layout.stride("ShadowRayRecord"), sizeof(ShadowRayRecord));
   EXPECT_EQ(layout.stride("HitRecord"), sizeof(HitRecord));
   EXPECT_EQ(layout.stride("FallbackRecord"), sizeof(FallbackRecord));
+  EXPECT_EQ(layout.stride("PathState"), sizeof(PathState));
 #define FACET_EXPECT_MEMBER(type, member) \
   EXPECT_EQ(layout.offset(#type, #member), offsetof(type, member)) << #type "." #member
   FACET_EXPECT_MEMBER(PatchRecord, kind);
@@ -302,6 +303,8 @@ TEST(GpuLayout, GlslLayoutOfTheSharedHeadersIsTheCppLayout) {
   FACET_EXPECT_MEMBER(FrameParams, tolerance);
   FACET_EXPECT_MEMBER(FrameParams, dfgSize);
   FACET_EXPECT_MEMBER(FrameParams, compensationSize);
+  FACET_EXPECT_MEMBER(FrameParams, transmissionBounces);
+  FACET_EXPECT_MEMBER(PathState, transmissionTaken);
 #undef FACET_EXPECT_MEMBER
 }
 

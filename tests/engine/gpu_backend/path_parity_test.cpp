@@ -1,7 +1,7 @@
 // Paths on the GPU (docs/rendering.md, "Paths") against what is known
 // exactly, the interreflection inside a closed diffuse sphere, and against
 // the CPU reference, which traces the same paths in double: per pixel, and
-// ray for ray per bounce.
+// ray for ray per bounce, with limits per lobe kind too.
 #include <gtest/gtest.h>
 
 #include <glm/common.hpp>
@@ -59,6 +59,23 @@ TEST_F(GpuPaths, RussianRouletteKeepsTheMean) {
   const double expected = albedo * geometricSum(albedo, bounces + 1);
   std::printf("roulette: mean %.5f +- %.5f, without roulette %.5f\n", mean.mean, mean.standardError, expected);
   EXPECT_NEAR(mean.mean, expected, 4 * mean.standardError + 0.01 * expected);
+}
+
+// Limits per lobe kind (docs/rendering.md, "Limits per lobe kind"): a path
+// ends where the CPU reference ends it, at the continuation that would
+// exceed its kind's limit. Inside the closed sphere every path takes two
+// diffuse continuations and no third, after roulette has drawn its number.
+TEST_F(GpuPaths, ADiffuseLimitEndsPathsWhereTheCpuReferenceEndsThem) {
+  scene::Scene limited = insideDiffuseSphere(0.5, 6, 16, 4);
+  limited.render.diffuseBounces = 2;
+  const testing::PathRenders r = testing::renderBoth(device_, limited);
+  testing::expectSameRaysPerBounce(r);
+  EXPECT_EQ(r.gpu.raysPerBounce.at(2).rays, r.gpu.raysPerBounce[1].rays);
+  EXPECT_EQ(r.gpu.raysPerBounce.at(3).rays, 0u);
+  testing::expectPathParity(r, {.median = 1e-5, .p98 = 1e-5, .worst = 1e-4, .parted = 0, .mean = 1e-5});
+  // The limit ends the paths as two bounces would.
+  const Image two = render(insideDiffuseSphere(0.5, 2, 16, 4)).image;
+  for (std::size_t p = 0; p < two.pixelCount(); ++p) ASSERT_EQ(r.gpu.image.beauty[p], two.beauty[p]) << p;
 }
 
 // The preview's objects, close enough to light each other, under the

@@ -2,12 +2,14 @@
 // "Transmission and absorption"): a clear glass ball in a uniform white
 // environment renders the environment (the furnace), and glass, ruby and a
 // thin absorbing wall trace the CPU reference's paths, ray for ray per
-// bounce and per pixel; the public renderer no longer refuses them.
+// bounce and per pixel, a limit on transmissions too; the public renderer
+// no longer refuses them.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <string>
 
 #include "engine/gpu_backend/gpu_renderer.h"
 #include "engine/renderer.h"
@@ -79,6 +81,30 @@ TEST_F(GpuTransmission, TheRendererRendersTransmissiveMaterialsOnTheGpu) {
   scene::Scene scene = underWhite(buildTestMaterial(glassSpec(1.5)), testing::uvSphereCage(8, 16), 2, 8, 35);
   scene.render.samplesPerPixel = 1;
   EXPECT_NO_THROW(facet::render(scene, Backend::Gpu));
+  scene.render.transmissionBounces = 2;  // limits per lobe kind too
+  EXPECT_NO_THROW(facet::render(scene, Backend::Gpu));
+}
+
+// Limits per lobe kind (docs/rendering.md, "Limits per lobe kind"): the
+// environment seen through a glass ball takes two transmissions, in and
+// out; with one the paths end inside it, where the CPU reference ends them.
+TEST_F(GpuTransmission, ATransmissionLimitEndsPathsWhereTheCpuReferenceEndsThem) {
+  const materials::Material glass = buildTestMaterial(glassSpec(1.5));
+  for (int limit : {1, 2}) {
+    SCOPED_TRACE("transmission bounces " + std::to_string(limit));
+    scene::Scene scene = underWhite(glass, testing::uvSphereCage(12, 24), 8, 12, 35);
+    scene.render.samplesPerPixel = 4;
+    scene.render.transmissionBounces = limit;
+    const testing::PathRenders r = testing::renderBoth(device_, scene);
+    const double mean = coveredMean(r.gpu.image).x;
+    std::printf("transmission bounces %d: covered mean %.5f\n", limit, mean);
+    if (limit == 1)
+      EXPECT_LT(mean, 0.2);  // reflection alone
+    else
+      EXPECT_GT(mean, 0.9);
+    testing::expectSameRaysPerBounce(r);
+    testing::expectPathParity(r, {.median = 1e-5, .p98 = 1e-4, .worst = 1e-3, .parted = 0, .mean = 1e-5});
+  }
 }
 
 }  // namespace

@@ -14,6 +14,7 @@ layout(std430, binding = 3) buffer Counters { RenderCounters counters; };
 layout(std430, binding = 4) readonly buffer Hits { HitRecord hits[]; };
 layout(std140, binding = 5) uniform FrameBlock { FrameParams frame; };
 layout(std430, binding = 6) readonly buffer Fallbacks { FallbackRecord fallbacks[]; };
+layout(std430, binding = 7) readonly buffer PathStates { PathState pathStates[]; };
 
 // The members the test checks are read, so glslang keeps (and lays out) them.
 void main() {
@@ -25,7 +26,7 @@ void main() {
                              p.kind + p.firstPoint + uint(p.faceU0) + p.sourcePatch + p.transitionMask + p.firstNormal + p.firstTexcoord + o.firstPatch + frame.rootNode +
                              o.rate + o.firstQuadtreeNode + o.firstEdgeMidpoint + uint(r.ray.tMax) + r.slot +
                              hits[0].patchIndex + frame.patchCount + uint(frame.tolerance) + frame.dfgSize + frame.compensationSize +
-                             FACET_BVH4_TEXELS;
+                             pathStates[0].transmissionTaken + uint(frame.transmissionBounces) + FACET_BVH4_TEXELS;
   counters.shadowX = 0u;
   counters.cameraFallbackX = 0u;
   counters.shadowFallbackZ = 0u;
