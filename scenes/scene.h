@@ -74,7 +74,7 @@ struct RenderSettings {
   int samplesPerPixel = 1;  // a square number: stratified sqrt x sqrt
   int bounces = 0;          // continuations per camera sample's path; 0: direct light only
   // Continuations of each lobe kind a path may take besides `bounces`
-  // (rules/sampling/path_samples.h); -1: no limit of its own. CPU only.
+  // (rules/sampling/path_samples.h); -1: no limit of its own.
   int diffuseBounces = -1;
   int glossyBounces = -1;
   int transmissionBounces = -1;

@@ -201,8 +201,8 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& o) {
   command.add_option("--spp", o.spp, "Samples per pixel (a square number)")->check(CLI::Range(1, 4096));
   command
       .add_option("--bounces", o.bounces,
-                  "Continuations of each camera sample's path (0: direct light only; above 0: --backend cpu, "
-                  "--ibl sampled or filtered with --occlusion on)")
+                  "Continuations of each camera sample's path (0: direct light only; above 0: --ibl sampled or "
+                  "filtered with --occlusion on)")
       ->check(CLI::Range(0, scene::kMaxBounces));
   for (auto [flag, kind, value] : {std::tuple{"--diffuse-bounces", "diffuse", &o.diffuseBounces},
                                    std::tuple{"--glossy-bounces", "glossy", &o.glossyBounces},
@@ -211,7 +211,7 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& o) {
         .add_option(flag, *value,
                     std::string("Continuations of the ") + kind +
                         " lobes a path may take besides --bounces (default: no limit of their own; Cycles': 4, 4, "
-                        "12 for diffuse, glossy, transmission; --backend cpu)")
+                        "12 for diffuse, glossy, transmission)")
         ->check(CLI::Range(0, scene::kMaxBounces));
   command.add_option("--env", o.environment, "Environment map (.exr or .hdr, equirectangular 2:1) lighting the scene")
       ->check(CLI::ExistingFile);

@@ -22,7 +22,7 @@ struct SceneOverrides {
   std::optional<int> tessLevel;
   std::optional<int> spp;
   std::optional<int> bounces;
-  std::optional<int> diffuseBounces, glossyBounces, transmissionBounces;  // per lobe kind, CPU only
+  std::optional<int> diffuseBounces, glossyBounces, transmissionBounces;  // per lobe kind
   std::string subdivision;
   std::string environment;
   std::optional<double> environmentIntensity;
