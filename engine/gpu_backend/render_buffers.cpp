@@ -1,6 +1,7 @@
 #include "engine/gpu_backend/render_buffers.h"
 
 #include <algorithm>
+#include <initializer_list>
 #include <string>
 #include <utility>
 
@@ -30,17 +31,25 @@ gpu::Buffer storage(gpu::Device& device, const char* label, std::uint64_t bytes,
   return device.createBuffer({label, bufferBytes(bytes), BufferUsage::Storage | extra});
 }
 
+// Each array a kernel reads through one texel buffer must fit the device's
+// limit on its elements; `advice` says how to make it smaller.
+void checkTexelBuffers(gpu::Device& d, std::initializer_list<std::pair<const char*, std::uint64_t>> arrays,
+                       const char* advice) {
+  const std::uint64_t maxTexels = d.limits().maxTexelBufferElements;
+  for (const auto& [name, texels] : arrays)
+    if (texels > maxTexels)
+      throw gpu::Error(std::string(name) + " need " + std::to_string(texels) + " texels in one texel buffer; " +
+                       d.adapterInfo().name + " addresses at most " + std::to_string(maxTexels) + ": " + advice);
+}
+
 }  // namespace
 
 GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed) {
-  const std::uint64_t maxTexels = d.limits().maxTexelBufferElements;
-  for (const auto& [name, texels] :
-       {std::pair{"BVH nodes", packed.nodeCount * layout::FACET_BVH4_TEXELS},
-        std::pair{"grid vertices", packed.gridVertices}, std::pair{"cell bounds", packed.cellBounds}})
-    if (texels > maxTexels)
-      throw gpu::Error(std::string("the micro-grid's ") + name + " need " + std::to_string(texels) + " texels; " +
-                       d.adapterInfo().name + " addresses at most " + std::to_string(maxTexels) +
-                       " in one texel buffer: lower the dicing rate (--tess-level)");
+  checkTexelBuffers(d,
+                    {{"the micro-grid's BVH nodes", packed.nodeCount * layout::FACET_BVH4_TEXELS},
+                     {"the micro-grid's grid vertices", packed.gridVertices},
+                     {"the micro-grid's cell bounds", packed.cellBounds}},
+                    "lower the dicing rate (--tess-level)");
   const BufferUsage in = BufferUsage::Storage, texel = BufferUsage::Texel;
   // Written by the dicing kernels, read by the tracing ones.
   const BufferUsage diced = BufferUsage::Texel | BufferUsage::StorageTexel;
@@ -68,15 +77,12 @@ GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed) {
 ShadingBuffers uploadShading(gpu::Device& d, const scene::Scene& scene, const ibl::EnvironmentLighting* lighting,
                              const EnvironmentData& environment, const ibl::CompensationTables& compensation,
                              const std::vector<glm::vec4>& compensationTexels, const glm::dvec3& origin) {
-  const std::uint64_t maxTexels = d.limits().maxTexelBufferElements;
   const TextureData textures = textureData(scene.textures);
-  for (const auto& [name, texels] : {std::pair{"the environment map", environment.texels.size()},
-                                     std::pair{"the environment's tables", environment.tables.size()},
-                                     std::pair{"the textures", textures.texels.size()}})
-    if (texels > maxTexels)
-      throw gpu::Error(name + std::string(" needs ") + std::to_string(texels) + " texels in one texel buffer; " +
-                       d.adapterInfo().name + " addresses at most " + std::to_string(maxTexels) +
-                       ": use a smaller map");
+  checkTexelBuffers(d,
+                    {{"the environment map", environment.texels.size()},
+                     {"the environment's tables", environment.tables.size()},
+                     {"the textures", textures.texels.size()}},
+                    "use a smaller map");
   const BufferUsage in = BufferUsage::Storage, texel = BufferUsage::Texel;
   ShadingBuffers b;
   b.materials = upload(d, "materials", materialRecords(scene, lighting, compensation), in);

@@ -63,6 +63,18 @@ bool namesSameFile(const std::filesystem::path& a, const std::filesystem::path& 
   return std::filesystem::absolute(a).lexically_normal() == std::filesystem::absolute(b).lexically_normal();
 }
 
+void removeLeftoversOfEndedProcesses(const std::filesystem::path& folder, const std::string& prefix) {
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    char* end = nullptr;
+    const long pid = std::strtol(name.c_str() + prefix.size(), &end, 10);
+    if ((*end != '\0' && *end != '-') || pid <= 0) continue;
+    if (::kill(pid_t(pid), 0) != 0 && errno == ESRCH) std::filesystem::remove_all(entry.path(), error);
+  }
+}
+
 namespace {
 
 std::string temporaryPrefix(const std::filesystem::path& destination) {
@@ -73,19 +85,8 @@ std::string temporaryPrefix(const std::filesystem::path& destination) {
 // between writing and renaming): removed, so a killed run leaves nothing
 // behind once the next one starts.
 void removeOrphanedTemporaries(const std::filesystem::path& destination) {
-  const std::filesystem::path folder = destination.has_parent_path() ? destination.parent_path() : ".";
-  const std::string prefix = temporaryPrefix(destination);
-  std::error_code error;
-  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
-    const std::string name = entry.path().filename().string();
-    if (name.rfind(prefix, 0) != 0) continue;
-    const std::size_t dash = name.find('-', prefix.size());
-    if (dash == std::string::npos) continue;
-    char* end = nullptr;
-    const long pid = std::strtol(name.c_str() + prefix.size(), &end, 10);
-    if (end != name.c_str() + dash || pid <= 0) continue;
-    if (::kill(pid_t(pid), 0) != 0 && errno == ESRCH) std::filesystem::remove(entry.path(), error);
-  }
+  removeLeftoversOfEndedProcesses(destination.has_parent_path() ? destination.parent_path() : ".",
+                                  temporaryPrefix(destination));
 }
 
 }  // namespace

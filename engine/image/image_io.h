@@ -69,6 +69,10 @@ class SignalsHeld {
   sigset_t previous_;
 };
 
+// Removes what ended processes left in `folder`: the entries named
+// `<prefix><pid>` or `<prefix><pid>-...` whose process no longer runs.
+void removeLeftoversOfEndedProcesses(const std::filesystem::path& folder, const std::string& prefix);
+
 // Writes `bytes` to `file`; a failure is an OutputError naming
 // `destination` and the system's reason ("No space left on device").
 void writeBytes(const std::filesystem::path& file, const std::vector<std::uint8_t>& bytes,

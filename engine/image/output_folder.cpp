@@ -1,10 +1,7 @@
 #include "engine/image/output_folder.h"
 
-#include <signal.h>
 #include <unistd.h>
 
-#include <cerrno>
-#include <cstdlib>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -19,19 +16,6 @@ namespace {
 
 const std::string kStagingPrefix = ".facet-staging-";
 
-// Staging folders whose run no longer exists (killed before it published).
-void removeOrphanedStaging(const fs::path& destination) {
-  std::error_code error;
-  for (const auto& entry : fs::directory_iterator(destination, error)) {
-    const std::string name = entry.path().filename().string();
-    if (name.rfind(kStagingPrefix, 0) != 0) continue;
-    char* end = nullptr;
-    const long pid = std::strtol(name.c_str() + kStagingPrefix.size(), &end, 10);
-    if (*end != '\0' || pid <= 0) continue;
-    if (::kill(pid_t(pid), 0) != 0 && errno == ESRCH) fs::remove_all(entry.path(), error);
-  }
-}
-
 }  // namespace
 
 StagedOutputFolder::StagedOutputFolder(const fs::path& destination) : destination_(destination) {
@@ -40,7 +24,7 @@ StagedOutputFolder::StagedOutputFolder(const fs::path& destination) : destinatio
   if (!fs::is_directory(destination_))
     throw OutputError(destination_.string() + ": cannot make the output folder" +
                       (error ? ": " + error.message() : std::string()));
-  removeOrphanedStaging(destination_);
+  removeLeftoversOfEndedProcesses(destination_, kStagingPrefix);  // staging of killed runs
   staging_ = destination_ / (kStagingPrefix + std::to_string(::getpid()));
   fs::remove_all(staging_, error);
   if (!fs::create_directory(staging_, error))
