@@ -60,6 +60,7 @@ std::string_view glbJson(std::string_view file) {
 // from a pointer it does not bound: every such view must lie inside its
 // buffer before tinygltf sees the file. Malformed JSON is left to tinygltf.
 void checkImageViews(std::string_view json, const std::string& source) {
+  if (json.find("\"images\"") == std::string_view::npos) return;  // no second parse for files without images
   const nlohmann::json gltf = nlohmann::json::parse(json, nullptr, false);
   if (!gltf.is_object() || !gltf.contains("images") || !gltf["images"].is_array()) return;
   const auto list = [&](const char* name) {
