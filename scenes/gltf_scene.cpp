@@ -1,5 +1,5 @@
 // glTF 2.0 scenes through tinygltf; the mapping to facet's scene is
-// docs/scene-format.md, "glTF 2.0".
+// docs/gltf.md.
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
