@@ -8,6 +8,7 @@
 #include "api/errors.h"
 #include "api/scene_data.h"
 #include "engine/renderer.h"
+#include "scenes/memory_budget.h"
 #include "facet/version.h"
 #include "scenes/input_error.h"
 
@@ -90,8 +91,10 @@ Renderer::~Renderer() = default;
 RenderResult Renderer::render(const Scene& input, const RenderSettings& settings) {
   return api::translateErrors([&] {
     const std::scoped_lock oneAtATime(state_->rendering);
-    const RenderReport report = state_->engine.render(
-        withSettings(input, settings), settings.backend == Backend::Cpu ? facet::Backend::Cpu : facet::Backend::Gpu);
+    const scene::Scene s = withSettings(input, settings);
+    scene::checkImagesFitInMemory(s, 1, "render settings: width x height");
+    const RenderReport report =
+        state_->engine.render(s, settings.backend == Backend::Cpu ? facet::Backend::Cpu : facet::Backend::Gpu);
     RenderResult result{publicImage(report.image), report.device, report.totalMilliseconds(), {}};
     for (const cpu::BounceRays& rays : report.raysPerBounce)
       result.raysPerBounce.push_back({rays.rays, rays.hits, rays.shadowRays});
@@ -103,6 +106,7 @@ ParityReport Renderer::parity(const Scene& input, const RenderSettings& settings
   return api::translateErrors([&] {
     const std::scoped_lock oneAtATime(state_->rendering);
     const scene::Scene s = withSettings(input, settings);
+    scene::checkImagesFitInMemory(s, 2, "render settings: width x height");
     // The GPU first: it refuses what it cannot render (a scene beyond float's range) before the CPU spends a
     // render on it.
     const RenderReport gpu = state_->engine.render(s, facet::Backend::Gpu);

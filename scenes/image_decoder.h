@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace facet::scene {
@@ -15,8 +16,11 @@ struct DecodedImage {
 };
 
 // Reads 8- and 16-bit PNG and baseline or progressive JPEG. Throws
-// InputError naming `file` when it cannot be read or decoded, or is larger
-// than `maxSize` texels on a side.
+// InputError naming the file (or `source`) when it cannot be read or
+// decoded, is larger than `maxSize` texels on a side, or its texture would
+// not fit in memory (scenes/memory_budget.h): the last two are checked from
+// the image's header, before any texel is decoded.
 DecodedImage decodeImage(const std::filesystem::path& file, int maxSize);
+DecodedImage decodeImage(const std::string& encoded, const std::string& source, int maxSize);
 
 }  // namespace facet::scene

@@ -15,6 +15,7 @@
 #include "parity_options.h"
 #include "parity_output.h"
 #include "scene_options.h"
+#include "scenes/memory_budget.h"
 #include "scenes/scene_file.h"
 #include "settings_digest.h"
 
@@ -59,8 +60,8 @@ ParityCase judgeScene(const std::string& file, const ParityCommandOptions& o,
   applySceneOverrides(o.sceneOverrides, scene);
   // The reference's render; per adapter its render, the first pair, the
   // pairs' sums (about an image and a half) and the two mean images.
-  checkImagesFitInMemory(scene, 1 + 6 * int(adapters.size()),
-                         o.sceneOverrides.size.empty() ? file + ": image size" : "--size");
+  scene::checkImagesFitInMemory(scene, 1 + 6 * int(adapters.size()),
+                                o.sceneOverrides.size.empty() ? file + ": image size" : "--size");
   const bool statistical = seededEstimate(scene) && o.renders > 1;
   const int renders = statistical ? o.renders : 1;
   const std::uint32_t firstSeed = scene.environment ? scene.environment->seed : 0u;

@@ -22,6 +22,7 @@
 #include "progress_log.h"
 #include "render_summary.h"
 #include "scene_options.h"
+#include "scenes/memory_budget.h"
 #include "scenes/scene_file.h"
 
 namespace facet::cli {
@@ -112,7 +113,7 @@ void runRender(const RenderCommandOptions& o) {
   applySceneOverrides(o.scene_overrides, scene);
   const int width = scene.render.width, height = scene.render.height;
   const std::optional<PixelRect> crop = chosenCrop(o.farm, width, height);
-  checkImagesFitInMemory(scene, 1, o.scene_overrides.size.empty() ? o.scene + ": image size" : "--size", crop);
+  scene::checkImagesFitInMemory(scene, 1, o.scene_overrides.size.empty() ? o.scene + ": image size" : "--size", crop);
   if (scene.environment && scene.environment->map->clampedTexels > 0)
     std::fprintf(stderr, "warning: %s: %zu texels were negative, NaN or Inf and are set to 0\n",
                  scene.environment->map->source.c_str(), scene.environment->map->clampedTexels);

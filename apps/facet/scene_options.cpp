@@ -2,14 +2,10 @@
 
 #include <glm/geometric.hpp>
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <cinttypes>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <memory>
 #include <tuple>
 #include <stdexcept>
@@ -104,70 +100,6 @@ void addEnergyCompensationOption(CLI::App& command, std::string& onOrOff) {
                   "Multiple-scattering compensation of every material's specular lobe (default: each material's "
                   "energy_compensation, off)")
       ->check(CLI::IsMember({"on", "off"}));
-}
-
-namespace {
-
-// Every plane of an Image; the GPU backend works in bands of bounded size
-// and the CPU backend writes straight into the image, so the image dominates.
-constexpr std::uint64_t kImageBytesPerPixel =
-    sizeof(glm::vec4) + sizeof(float) + 3 * sizeof(glm::vec3) + 2 * sizeof(std::uint32_t) + sizeof(glm::vec2);
-// What the PNG preview or the parity heat map adds per pixel, and a bound on
-// the GPU backend's band buffers (kBandBytes in engine/gpu_backend/gpu_renderer.cpp).
-constexpr std::uint64_t kWorkingBytesPerPixel = 8;
-constexpr std::uint64_t kGpuBandBytes = std::uint64_t(64) << 20;
-
-std::uint64_t cgroupMemoryLimit() {
-  std::uint64_t limit = 0;
-  if (std::FILE* file = std::fopen("/sys/fs/cgroup/memory.max", "r")) {
-    if (std::fscanf(file, "%" SCNu64, &limit) != 1) limit = 0;  // "max": no limit
-    std::fclose(file);
-  }
-  return limit;
-}
-
-struct MemoryLimit {
-  std::uint64_t bytes;
-  const char* source;
-};
-
-// FACET_MEMORY_LIMIT (MiB) when set; else three quarters of the memory this
-// process may use (physical memory, or the container's limit when lower),
-// the rest being the system's and the scene's.
-MemoryLimit imageMemoryLimit() {
-  if (const char* text = std::getenv("FACET_MEMORY_LIMIT")) {
-    char* end = nullptr;
-    const unsigned long long mebibytes = std::strtoull(text, &end, 10);
-    if (end == text || *end != 0 || mebibytes == 0 || mebibytes > (std::uint64_t(1) << 40))
-      throw std::invalid_argument(std::string("FACET_MEMORY_LIMIT '") + text + "': expected a whole number of MiB");
-    return {std::uint64_t(mebibytes) << 20, "FACET_MEMORY_LIMIT"};
-  }
-  std::uint64_t memory = std::uint64_t(sysconf(_SC_PHYS_PAGES)) * std::uint64_t(sysconf(_SC_PAGE_SIZE));
-  if (const std::uint64_t cgroup = cgroupMemoryLimit(); cgroup > 0) memory = std::min(memory, cgroup);
-  return {memory / 4 * 3, "3/4 of this machine's memory"};
-}
-
-std::string gigabytes(std::uint64_t bytes) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f GB", double(bytes) * 1e-9);
-  return text;
-}
-
-}  // namespace
-
-void checkImagesFitInMemory(const scene::Scene& scene, int images, const std::string& sizeSource,
-                            const std::optional<PixelRect>& crop) {
-  const std::uint64_t pixels =
-      crop ? crop->pixelCount() : std::uint64_t(scene.render.width) * std::uint64_t(scene.render.height);
-  const std::uint64_t needed =
-      pixels * (std::uint64_t(images) * kImageBytesPerPixel + kWorkingBytesPerPixel) + kGpuBandBytes;
-  const MemoryLimit limit = imageMemoryLimit();
-  if (needed > limit.bytes)
-    throw std::invalid_argument(sizeSource + " " + std::to_string(scene.render.width) + "x" +
-                                std::to_string(scene.render.height) + (crop ? ", crop " + crop->text() : "") +
-                                ": the render needs about " + gigabytes(needed) + " of memory and the limit is " +
-                                gigabytes(limit.bytes) + " (" + limit.source + "); give a smaller --size" +
-                                (crop ? " or more --tile tiles" : " or render it as --tile tiles"));
 }
 
 std::string describeEnvironment(const scene::Environment& e) {

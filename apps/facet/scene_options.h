@@ -48,12 +48,6 @@ void applyEnergyCompensation(const std::string& onOrOff, scene::Scene& scene);
 void applyImageSize(const std::string& size, scene::Scene& scene);
 void applyMethod(const std::string& method, scene::Scene& scene);
 
-// Throws std::invalid_argument unless `images` images of the scene's size,
-// or of the crop of it that is rendered, fit in memory
-// (docs/reliability.md#limits); `sizeSource` names where the size came from.
-void checkImagesFitInMemory(const scene::Scene& scene, int images, const std::string& sizeSource,
-                            const std::optional<PixelRect>& crop = {});
-
 // One line for people: the map, its size and the lighting method.
 std::string describeEnvironment(const scene::Environment& environment);
 

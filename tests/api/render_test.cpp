@@ -4,6 +4,7 @@
 
 #include <facet/facet.h>
 
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -150,6 +151,20 @@ TEST(ApiRender, TransparentPresetsTransmitOnBothBackends) {
     EXPECT_EQ(e.kind(), facet::ErrorKind::BadInput);
     EXPECT_NE(std::string(e.what()).find("attenuation_distance: must be > 0"), std::string::npos) << e.what();
   }
+}
+
+// The API holds a render to the memory limit the CLI holds it to
+// (scenes/memory_budget.h), before anything is allocated for it.
+TEST(ApiRender, ARenderOverTheMemoryLimitIsRefusedAsOnTheCommandLine) {
+  ASSERT_EQ(setenv("FACET_MEMORY_LIMIT", "64", 1), 0);
+  facet::Renderer renderer;
+  facet::RenderSettings large = onCpu(0);
+  large.width = large.height = 2048;
+  const std::string error = errorOf(renderer, cubeOnSlab(facet::IblMethod::Sampled), large);
+  unsetenv("FACET_MEMORY_LIMIT");
+  EXPECT_NE(error.find("the render needs about 0.4 GB of memory and the limit is 0.1 GB (FACET_MEMORY_LIMIT)"),
+            std::string::npos)
+      << error;
 }
 
 }  // namespace
