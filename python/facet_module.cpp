@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -161,9 +162,33 @@ py::dict brdfDict(const facet::Material& material, const py::object& l, const py
                   py::arg("G") = ownedArray(std::move(G), shape));
 }
 
+// The ints of integer array `typed`, refusing a value outside int's range
+// rather than wrapping it.
 template <class T>
-std::vector<T> integers(const py::array_t<T, py::array::c_style | py::array::forcecast>& a) {
-  return std::vector<T>(a.data(), a.data() + a.size());
+std::vector<int> checkedInts(const py::array_t<T, py::array::c_style | py::array::forcecast>& typed, const char* name) {
+  std::vector<int> out;
+  out.reserve(std::size_t(typed.size()));
+  for (py::ssize_t i = 0; i < typed.size(); ++i) {
+    const T value = typed.data()[i];
+    if (!std::in_range<int>(value))
+      throw facet::Error(facet::ErrorKind::BadInput, std::string(name) + "[" + std::to_string(i) + "]: " +
+                                                         std::to_string(value) + " is out of range for an index");
+    out.push_back(int(value));
+  }
+  return out;
+}
+
+// The ints of an index array: any integer dtype (a list of ints included).
+// Floats and bools are refused, not truncated.
+std::vector<int> indexArray(const py::handle& values, const char* name) {
+  const py::array array = py::array::ensure(values);
+  if (!array) throw facet::Error(facet::ErrorKind::BadInput, std::string(name) + ": expected an array of integers");
+  if (array.size() == 0) return {};
+  const char kind = array.dtype().kind();
+  if (kind == 'u') return checkedInts<std::uint64_t>(array, name);
+  if (kind == 'i') return checkedInts<std::int64_t>(array, name);
+  throw facet::Error(facet::ErrorKind::BadInput, std::string(name) + ": expected integers, got an array of dtype " +
+                                                     py::str(array.dtype()).cast<std::string>());
 }
 
 }  // namespace
@@ -228,11 +253,12 @@ PYBIND11_MODULE(facet, m) {
       .def_readwrite("attenuation_distance", &facet::Material::attenuationDistance);
 
   py::class_<facet::Cage>(m, "Cage", "A Catmull-Clark control cage in world space, 0-based indices")
-      .def(py::init([](const Doubles& positions,
-                       const py::array_t<int, py::array::c_style | py::array::forcecast>& counts,
-                       const py::array_t<int, py::array::c_style | py::array::forcecast>& indices,
+      .def(py::init([](const Doubles& positions, const py::object& counts, const py::object& indices,
                        const std::vector<std::tuple<int, int, double>>& creases) {
-             facet::Cage cage{vectors(directions(positions, "positions")), integers(counts), integers(indices), {}};
+             facet::Cage cage{vectors(directions(positions, "positions")),
+                              indexArray(counts, "face_vertex_counts"),
+                              indexArray(indices, "face_vertex_indices"),
+                              {}};
              for (const auto& [v0, v1, sharpness] : creases) cage.creases.push_back({v0, v1, sharpness});
              return cage;
            }),

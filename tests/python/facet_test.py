@@ -227,6 +227,21 @@ class Scenes(unittest.TestCase):
         with self.assertRaisesRegex(facet.Error, "environment.file"):
             facet.Scene([facet.Object(cube())], environment=facet.Environment(WORK / "missing.exr"))
 
+    def test_index_arrays_are_integers_within_range_never_wrapped_or_truncated(self):
+        corners = np.array([[i & 1, i >> 1 & 1, i >> 2 & 1] for i in range(8)], dtype=float)
+        quads = [0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4, 2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5]
+        for dtype in (np.int8, np.int64, np.uint16, np.uint64):
+            cage = facet.Cage(corners, np.array([4] * 6, dtype=dtype), np.array(quads, dtype=dtype))
+            facet.Scene([facet.Object(cage)])  # a valid closed cube, whatever the index type
+        with self.assertRaisesRegex(facet.Error, r"face_vertex_indices\[1\]: 4294967296 is out of range for an index"):
+            facet.Cage(corners, [4], np.array([0, 2**32, 2, 3], dtype=np.int64))
+        with self.assertRaisesRegex(facet.Error, r"face_vertex_counts\[0\]: 18446744073709551615 is out of range"):
+            facet.Cage(corners, np.array([2**64 - 1], dtype=np.uint64), [0, 1, 2, 3])
+        with self.assertRaisesRegex(facet.Error, "face_vertex_indices: expected integers, got an array of dtype float64"):
+            facet.Cage(corners, [4], [0, 1, 2.5, 3])
+        with self.assertRaisesRegex(facet.Error, "face_vertex_counts: expected integers, got an array of dtype bool"):
+            facet.Cage(corners, [True], [0, 1, 2, 3])
+
 
 class Brdf(unittest.TestCase):
     def test_brdf_is_the_command_lines_at_every_direction(self):
