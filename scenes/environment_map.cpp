@@ -90,7 +90,9 @@ void zeroBadTexels(EnvironmentMap& map) {
 
 EnvironmentMap readExr(const fs::path& file) {
   const std::string source = file.string();
-  checkExrHeaders(file, [&](std::int64_t width, std::int64_t height) { checkSize(source, width, height); });
+  checkExrHeaders(file, [&](const std::string& window, std::int64_t width, std::int64_t height) {
+    if (window == "dataWindow") checkSize(source, width, height);
+  });
   try {
     Imf::InputFile in(source.c_str());
     const Imath::Box2i window = in.header().dataWindow();

@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "scenes/input_error.h"
+#include "scenes/input_file.h"
 
 namespace facet::scene {
 
@@ -15,12 +16,30 @@ namespace {
 
 // The attribute types whose OpenEXR reader reads a fixed layout, whatever
 // size the file declares: their declared size must be that layout's.
-const std::map<std::string_view, std::uint32_t> kFixedSizes = {
-    {"box2i", 16},  {"box2f", 16},   {"chromaticities", 32}, {"compression", 1}, {"deepImageState", 1},
-    {"double", 8},  {"envmap", 1},   {"float", 4},           {"int", 4},         {"keycode", 28},
-    {"lineOrder", 1}, {"m33d", 72},  {"m33f", 36},           {"m44d", 128},      {"m44f", 64},
-    {"rational", 8}, {"tiledesc", 9}, {"timecode", 8},       {"v2d", 16},        {"v2f", 8},
-    {"v2i", 8},     {"v3d", 24},     {"v3f", 12},            {"v3i", 12}};
+const std::map<std::string_view, std::uint32_t> kFixedSizes = {{"box2i", 16},
+                                                               {"box2f", 16},
+                                                               {"chromaticities", 32},
+                                                               {"compression", 1},
+                                                               {"deepImageState", 1},
+                                                               {"double", 8},
+                                                               {"envmap", 1},
+                                                               {"float", 4},
+                                                               {"int", 4},
+                                                               {"keycode", 28},
+                                                               {"lineOrder", 1},
+                                                               {"m33d", 72},
+                                                               {"m33f", 36},
+                                                               {"m44d", 128},
+                                                               {"m44f", 64},
+                                                               {"rational", 8},
+                                                               {"tiledesc", 9},
+                                                               {"timecode", 8},
+                                                               {"v2d", 16},
+                                                               {"v2f", 8},
+                                                               {"v2i", 8},
+                                                               {"v3d", 24},
+                                                               {"v3f", 12},
+                                                               {"v3i", 12}};
 
 std::uint32_t le32(std::string_view bytes, std::size_t at) {
   std::uint32_t value = 0;
@@ -30,13 +49,12 @@ std::uint32_t le32(std::string_view bytes, std::size_t at) {
 
 }  // namespace
 
-void checkExrHeaders(const std::filesystem::path& file,
-                     const std::function<void(std::int64_t width, std::int64_t height)>& checkSize) {
+void checkExrHeaders(const std::filesystem::path& file, const WindowCheck& checkSize) {
   const std::string source = file.string();
   std::ifstream in(file, std::ios::binary);
   std::error_code error;
   const std::uintmax_t fileSize = std::filesystem::file_size(file, error);
-  if (!in || error) throw InputError(source, 0, "cannot open the environment map", "check the permissions");
+  if (!in || error) throw InputError(source, 0, "cannot open the OpenEXR file", "check the permissions");
   // Headers are read from the first 16 MiB: past it, what a header could
   // still claim is at most 128 times the file.
   std::string bytes(std::size_t(std::min<std::uintmax_t>(fileSize, 16u << 20)), '\0');
@@ -67,8 +85,8 @@ void checkExrHeaders(const std::filesystem::path& file,
         throw fail(what + ", where its type has " + std::to_string(fixed->second));
       if (size > bytes.size() - at) return;
       const std::string_view value(bytes.data() + at, size);
-      if (type == "box2i" && name == "dataWindow")
-        checkSize(std::int64_t(std::int32_t(le32(value, 8))) - std::int32_t(le32(value, 0)) + 1,
+      if (type == "box2i" && (name == "dataWindow" || name == "displayWindow"))
+        checkSize(name, std::int64_t(std::int32_t(le32(value, 8))) - std::int32_t(le32(value, 0)) + 1,
                   std::int64_t(std::int32_t(le32(value, 12))) - std::int32_t(le32(value, 4)) + 1);
       // OpenEXR reads a channel list up to its empty name, and a preview as
       // width x height RGBA bytes: both must end where the size says.
@@ -93,6 +111,16 @@ void checkExrHeaders(const std::filesystem::path& file,
     }
     more = multipart && at < bytes.size() && bytes[at] != '\0';
   }
+}
+
+void checkTileFile(const std::filesystem::path& file) {
+  checkInputFile(file, "the tile");
+  checkExrHeaders(file, [&](const std::string& window, std::int64_t width, std::int64_t height) {
+    if (width < 1 || height < 1 || width > 16384 || height > 16384)
+      throw InputError(
+          file.string(), 0, window,
+          "must be 1..16384 texels on each side, is " + std::to_string(width) + " x " + std::to_string(height));
+  });
 }
 
 }  // namespace facet::scene

@@ -7,14 +7,22 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <string>
 
 namespace facet::scene {
 
 // Walks every header as OpenEXR reads it (OpenEXR file layout, "Header
 // Attributes") and throws InputError naming the file when an attribute
-// claims more bytes than the file holds or than its type has. Each data
-// window found is handed to `checkSize` (width, height) first.
-void checkExrHeaders(const std::filesystem::path& file,
-                     const std::function<void(std::int64_t width, std::int64_t height)>& checkSize);
+// claims more bytes than the file holds or than its type has. Each data and
+// display window found is handed to `checkSize` ("dataWindow" or
+// "displayWindow", width, height) first.
+using WindowCheck = std::function<void(const std::string& window, std::int64_t width, std::int64_t height)>;
+void checkExrHeaders(const std::filesystem::path& file, const WindowCheck& checkSize);
+
+// A tile `facet merge` reads: a regular file (scenes/input_file.h) whose
+// headers pass checkExrHeaders with each window 1..16384 texels on a side,
+// the image size limit, so that no header makes the merge allocate more
+// than the image it claims to be part of could need.
+void checkTileFile(const std::filesystem::path& file);
 
 }  // namespace facet::scene

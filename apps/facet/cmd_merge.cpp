@@ -11,6 +11,7 @@
 #include "engine/image/image_io.h"
 #include "engine/image/tile_merge.h"
 #include "preview_options.h"
+#include "scenes/exr_header.h"
 
 namespace facet::cli {
 namespace {
@@ -37,6 +38,7 @@ void runMerge(const MergeOptions& o) {
     if (!o.png.empty() && namesSameFile(tile, o.png))
       throw OutputError("--png '" + o.png + "': names the input tile '" + tile + "'");
   }
+  for (const std::string& tile : o.tiles) scene::checkTileFile(tile);
   mergeTiles({o.tiles.begin(), o.tiles.end()}, {o.exr, o.png, preview});
   if (!o.quiet)
     std::printf("merged %zu tiles into %s%s%s\n", o.tiles.size(), o.exr.c_str(), o.png.empty() ? "" : " and ",

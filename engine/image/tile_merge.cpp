@@ -153,6 +153,19 @@ void previewBand(const std::vector<Plane>& planes, int width, int rows, PreviewE
   }
 }
 
+// Rows `first`..`last` of `tile` into `frame`. A tile whose header is sound
+// can still hold pixel data that does not decode (truncated, corrupt): that
+// is the tile's fault, named as such, though only reading it finds it.
+void readRows(Tile& tile, const Imf::FrameBuffer& frame, int first, int last) {
+  try {
+    tile.file->setFrameBuffer(frame);
+    tile.file->readPixels(first, last);
+  } catch (const std::exception& e) {
+    throw std::invalid_argument(tile.path.string() + ": pixel data: cannot read rows " + std::to_string(first) + ".." +
+                                std::to_string(last) + ": " + e.what());
+  }
+}
+
 }  // namespace
 
 void mergeTiles(const std::vector<std::filesystem::path>& paths, const MergeOutputs& outputs) {
@@ -184,14 +197,15 @@ void mergeTiles(const std::vector<std::filesystem::path>& paths, const MergeOutp
                        for (Tile& tile : tiles) {
                          const int from = std::max(y0, tile.window.y0), to = std::min(y1, tile.window.y1);
                          if (from >= to) continue;
-                         tile.file->setFrameBuffer(frame);
-                         tile.file->readPixels(from, to - 1);
+                         readRows(tile, frame, from, to - 1);
                        }
                        out.setFrameBuffer(frame);
                        out.writePixels(y1 - y0);
                        if (png) previewBand(planes, width, y1 - y0, &encoder);
                      }
                      encoder.finish();
+                   } catch (const std::invalid_argument&) {
+                     throw;  // a tile's fault, not the output's
                    } catch (const std::exception& e) {
                      throw OutputError(outputs.exr.string() + ": cannot merge the tiles: " + e.what());
                    }

@@ -20,7 +20,9 @@ struct MergeOutputs {
 // std::invalid_argument "<tile>: <what>: <rule>" otherwise, before anything
 // is written. Then streams the tiles into the outputs a band of rows at a
 // time, so memory grows with the width, not the image (the PNG preview
-// holds its 8-bit pixels); outputs are written all or nothing.
+// holds its 8-bit pixels); outputs are written all or nothing. Pixel data
+// that does not decode is found only then, and is the tile's
+// std::invalid_argument too, with no output left.
 void mergeTiles(const std::vector<std::filesystem::path>& tiles, const MergeOutputs& outputs);
 
 }  // namespace facet
