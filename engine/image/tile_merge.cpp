@@ -7,6 +7,7 @@
 #include <ImfOutputFile.h>
 #include <ImfStringAttribute.h>
 #include <half.h>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -49,8 +50,30 @@ std::string digestOf(const Tile& tile) {
   return digest->value();
 }
 
+// Every tile stays open while the bands stream (OpenEXR reads each from its
+// own file), so the process must be allowed a file per tile, and a few for
+// the outputs and the driver: the soft limit is raised up to the hard one
+// when it is lower, and a merge past the hard limit is refused before any
+// tile is opened, rather than blamed on whichever tile came last.
+void allowOpenFiles(std::size_t tiles) {
+  constexpr rlim_t kSpareFiles = 16;
+  rlimit files{};
+  if (getrlimit(RLIMIT_NOFILE, &files) != 0) return;
+  const rlim_t needed = rlim_t(tiles) + kSpareFiles;
+  if (files.rlim_cur != RLIM_INFINITY && files.rlim_cur < needed) {
+    files.rlim_cur = files.rlim_max == RLIM_INFINITY ? needed : std::min(needed, files.rlim_max);
+    setrlimit(RLIMIT_NOFILE, &files);
+    getrlimit(RLIMIT_NOFILE, &files);
+  }
+  if (files.rlim_cur != RLIM_INFINITY && files.rlim_cur < needed)
+    throw std::invalid_argument("merge: " + std::to_string(tiles) + " tiles are read at once and need " +
+                                std::to_string(needed) + " open files; this process may open " +
+                                std::to_string(files.rlim_cur) + " (ulimit -n); render fewer, larger tiles");
+}
+
 std::vector<Tile> openTiles(const std::vector<std::filesystem::path>& paths) {
   if (paths.empty()) throw std::invalid_argument("merge: no tiles given");
+  allowOpenFiles(paths.size());
   std::vector<Tile> tiles;
   for (const std::filesystem::path& path : paths) {
     Tile tile{path, nullptr, {}};
