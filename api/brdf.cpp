@@ -23,8 +23,7 @@ glm::dvec3 unit(const Vec3& v, const char* name) {
 }
 
 BrdfValue evaluate(const rules::f64::BrdfParams& params, const Vec3& l, const Vec3& v) {
-  const rules::f64::BrdfTerms t =
-      rules::f64::brdf_terms(params, glm::dvec3(0, 0, 1), unit(l, "l"), unit(v, "v"));
+  const rules::f64::BrdfTerms t = rules::f64::brdf_terms(params, glm::dvec3(0, 0, 1), unit(l, "l"), unit(v, "v"));
   return {publicVector(t.value), publicVector(t.specular), publicVector(t.diffuse), publicVector(t.F), t.D, t.G};
 }
 

@@ -1,11 +1,12 @@
-// Rendering and parity through the engine's Renderer, and the engine's Image
-// as named AOV planes.
+// Rendering and parity through the engine's Renderer.
 #include "facet/render.h"
 
 #include <mutex>
 
 #include "analysis/parity.h"
 #include "api/errors.h"
+#include "api/image_planes.h"
+#include "api/render_settings.h"
 #include "api/scene_data.h"
 #include "engine/renderer.h"
 #include "scenes/memory_budget.h"
@@ -13,64 +14,6 @@
 #include "scenes/input_error.h"
 
 namespace facet::v0 {
-namespace {
-
-template <int N, class Plane>
-Aov aov(const Plane& plane) {
-  Aov out;
-  out.channels = N;
-  out.values.resize(plane.size() * N);
-  for (std::size_t i = 0; i < plane.size(); ++i)
-    for (int c = 0; c < N; ++c) out.values[i * N + std::size_t(c)] = plane[i][c];
-  return out;
-}
-
-Image publicImage(const facet::Image& image) {
-  Image out;
-  out.width = image.width;
-  out.height = image.height;
-  out.aovs["beauty"] = aov<4>(image.beauty);
-  out.aovs["depth"] = Aov{1, image.depth};
-  out.aovs["position"] = aov<3>(image.position);
-  out.aovs["geometric_normal"] = aov<3>(image.geometricNormal);
-  out.aovs["shading_normal"] = aov<3>(image.shadingNormal);
-  out.aovs["uv"] = aov<2>(image.uv);
-  out.aovs["texcoord"] = aov<2>(image.texcoord);
-  out.ids["patch_id"] = image.patchId;
-  out.ids["face_id"] = image.faceId;
-  return out;
-}
-
-void require(bool valid, const std::string& field, const std::string& rule) {
-  if (!valid) throw scene::InputError("render settings", 0, field, rule);
-}
-
-scene::Scene withSettings(const Scene& input, const RenderSettings& s) {
-  scene::Scene out = input.data().scene;
-  if (s.width) require(*s.width >= 1 && *s.width <= 16384, "width", "must be in [1, 16384]");
-  if (s.height) require(*s.height >= 1 && *s.height <= 16384, "height", "must be in [1, 16384]");
-  if (s.samplesPerPixel)
-    require(*s.samplesPerPixel >= 1 && *s.samplesPerPixel <= 4096 && scene::isSquare(*s.samplesPerPixel),
-            "samplesPerPixel", std::string("must be in [1, 4096]; ") + scene::kSamplesPerPixelRule);
-  if (s.tessellationRate)
-    require(*s.tessellationRate >= 1 && *s.tessellationRate <= 256, "tessellationRate", "must be in [1, 256]");
-  if (s.bounces)
-    require(*s.bounces >= 0 && *s.bounces <= scene::kMaxBounces, "bounces",
-            "must be in [0, " + std::to_string(scene::kMaxBounces) + "]");
-  out.render.width = s.width.value_or(out.render.width);
-  out.render.height = s.height.value_or(out.render.height);
-  out.render.samplesPerPixel = s.samplesPerPixel.value_or(out.render.samplesPerPixel);
-  if (s.method)
-    out.render.method =
-        *s.method == Method::Exact ? scene::IntersectionMethod::Exact : scene::IntersectionMethod::Tessellated;
-  if (s.tessellationRate) out.render.tessellationRate = s.tessellationRate;
-  out.render.bounces = s.bounces.value_or(out.render.bounces);
-  require(scene::pathsCountEnvironmentOnce(out.render.bounces, out.environment), "bounces",
-          scene::kBouncesNeedOcclusionRule);
-  return out;
-}
-
-}  // namespace
 
 const Aov& Image::aov(const std::string& name) const {
   const auto found = aovs.find(name);

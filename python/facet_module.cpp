@@ -89,11 +89,37 @@ facet::RenderSettings settingsOf(std::optional<std::pair<int, int>> size, const 
   return s;
 }
 
-py::dict renderDict(facet::Renderer& renderer, const py::object& sceneOrPath, const facet::RenderSettings& settings) {
+// What `facet render` writes, named as its flags are: -o (exr), --png,
+// --aovs, --half, --exposure, --tonemap, --background, --alpha.
+struct Outputs {
+  std::optional<std::string> exr, png;
+  std::string aovs = "all";
+  bool half = false;
+  double exposure = 0;
+  std::string tonemap = "pbr-neutral";
+  std::optional<facet::Vec3> background;
+  bool alpha = false;
+};
+
+void writeOutputs(const Outputs& o, const facet::RenderResult& result, const facet::Scene& scene,
+                  const facet::RenderSettings& settings) {
+  if (o.exr) facet::writeExr(*o.exr, result, scene, settings, {o.aovs, o.half});
+  if (!o.png) return;
+  const facet::ToneCurve curve = choice<facet::ToneCurve>(o.tonemap, "tonemap",
+                                                          {{"pbr-neutral", facet::ToneCurve::PbrNeutral},
+                                                           {"aces", facet::ToneCurve::Aces},
+                                                           {"clamp", facet::ToneCurve::Clamp}});
+  facet::writePng(*o.png, result.image, {o.exposure, curve, o.background, o.alpha});
+}
+
+py::dict renderDict(facet::Renderer& renderer, const py::object& sceneOrPath, const facet::RenderSettings& settings,
+                    const Outputs& outputs) {
   const facet::Scene scene = sceneOf(sceneOrPath);
   facet::RenderResult result = [&] {
     py::gil_scoped_release unlocked;
-    return renderer.render(scene, settings);
+    facet::RenderResult rendered = renderer.render(scene, settings);
+    writeOutputs(outputs, rendered, scene, settings);
+    return rendered;
   }();
   py::dict out = imageDict(std::move(result.image));
   // As `facet render --json` reports it: only paths of bounces above 0 have it.
@@ -331,12 +357,17 @@ PYBIND11_MODULE(facet, m) {
           "render",
           [](facet::Renderer& r, const py::object& scene, std::optional<std::pair<int, int>> size,
              const std::string& backend, OptText method, std::optional<int> spp, std::optional<int> tessLevel,
-             std::optional<int> bounces) {
-            return renderDict(r, scene, settingsOf(size, backend, method, spp, tessLevel, bounces));
+             std::optional<int> bounces, OptText exr, OptText png, const std::string& aovs, bool half, double exposure,
+             const std::string& tonemap, OptVec background, bool alpha) {
+            return renderDict(r, scene, settingsOf(size, backend, method, spp, tessLevel, bounces),
+                              {exr, png, aovs, half, exposure, tonemap, background, alpha});
           },
           py::arg("scene"), py::kw_only(), py::arg("size") = py::none(), py::arg("backend") = "gpu",
           py::arg("method") = py::none(), py::arg("spp") = py::none(), py::arg("tess_level") = py::none(),
-          py::arg("bounces") = py::none())
+          py::arg("bounces") = py::none(), py::arg("exr") = py::none(), py::arg("png") = py::none(),
+          py::arg("aovs") = "all", py::arg("half") = false, py::arg("exposure") = 0.0,
+          py::arg("tonemap") = "pbr-neutral", py::arg("background") = py::none(), py::arg("alpha") = false,
+          "As facet.render, with this renderer's device and kernels kept between calls")
       .def(
           "parity",
           [](facet::Renderer& r, const py::object& scene, std::optional<std::pair<int, int>> size, OptText method) {
@@ -347,15 +378,21 @@ PYBIND11_MODULE(facet, m) {
   m.def(
       "render",
       [](const py::object& scene, std::optional<std::pair<int, int>> size, const std::string& backend, OptText method,
-         std::optional<int> spp, std::optional<int> tessLevel, std::optional<int> bounces, const std::string& adapter) {
+         std::optional<int> spp, std::optional<int> tessLevel, std::optional<int> bounces, const std::string& adapter,
+         OptText exr, OptText png, const std::string& aovs, bool half, double exposure, const std::string& tonemap,
+         OptVec background, bool alpha) {
         facet::Renderer renderer(adapter);
-        return renderDict(renderer, scene, settingsOf(size, backend, method, spp, tessLevel, bounces));
+        return renderDict(renderer, scene, settingsOf(size, backend, method, spp, tessLevel, bounces),
+                          {exr, png, aovs, half, exposure, tonemap, background, alpha});
       },
       py::arg("scene"), py::kw_only(), py::arg("size") = py::none(), py::arg("backend") = "gpu",
       py::arg("method") = py::none(), py::arg("spp") = py::none(), py::arg("tess_level") = py::none(),
-      py::arg("bounces") = py::none(), py::arg("adapter") = "",
+      py::arg("bounces") = py::none(), py::arg("adapter") = "", py::arg("exr") = py::none(),
+      py::arg("png") = py::none(), py::arg("aovs") = "all", py::arg("half") = false, py::arg("exposure") = 0.0,
+      py::arg("tonemap") = "pbr-neutral", py::arg("background") = py::none(), py::arg("alpha") = false,
       "Renders a Scene or a scene file; returns {aov name: numpy array (height, width[, channels])}, with "
-      "rays_per_bounce when bounces > 0");
+      "rays_per_bounce when bounces > 0. exr and png write the files facet render writes (-o, --png), with its "
+      "--aovs, --half, --exposure, --tonemap, --background and --alpha");
   m.def(
       "parity",
       [](const py::object& scene, std::optional<std::pair<int, int>> size, OptText method, const std::string& adapter) {

@@ -11,13 +11,13 @@
 #include "analysis/parity.h"
 #include "analysis/parity_statistics.h"
 #include "commands.h"
+#include "engine/render_record.h"
 #include "engine/renderer.h"
 #include "parity_options.h"
 #include "parity_output.h"
 #include "scene_options.h"
 #include "scenes/memory_budget.h"
 #include "scenes/scene_file.h"
-#include "settings_digest.h"
 
 namespace facet::cli {
 namespace {
@@ -68,8 +68,8 @@ ParityCase judgeScene(const std::string& file, const ParityCommandOptions& o,
 
   ParityCase out;
   out.scene = file;
-  out.settings = {{"digest", settingsDigest(scene, "parity")},
-                  {"text", renderSettingsText(scene, "parity")},
+  out.settings = {{"digest", facet::settingsDigest(scene, "parity")},
+                  {"text", facet::renderSettingsText(scene, "parity")},
                   {"rendersPerBackend", renders},
                   {"seeds", statistical ? nlohmann::json::array({firstSeed, firstSeed + std::uint32_t(renders - 1)})
                                         : nlohmann::json::array({firstSeed})}};

@@ -22,15 +22,17 @@ void addPreviewOptions(CLI::App& command, PreviewFlags& flags) {
 
 PreviewOptions chosenPreview(const PreviewFlags& flags) {
   PreviewOptions options;
+  if (!validExposure(flags.exposure))
+    throw std::invalid_argument("--exposure '" + std::to_string(flags.exposure) + "': " + kExposureRule);
   options.exposure = flags.exposure;
   const std::optional<ToneCurve> curve = toneCurveNamed(flags.tonemap);
   if (!curve) throw std::invalid_argument("--tonemap '" + flags.tonemap + "': expected one of: " + kToneCurveNames);
   options.curve = *curve;
   if (!flags.background.empty()) {
     const glm::dvec3 colour(flags.background[0], flags.background[1], flags.background[2]);
-    if (!std::isfinite(colour.r + colour.g + colour.b) || colour.r < 0 || colour.g < 0 || colour.b < 0)
+    if (!validBackground(colour))
       throw std::invalid_argument("--background '" + CLI::detail::join(flags.background, ",") +
-                                  "': expected three finite, non-negative linear values R,G,B");
+                                  "': " + kBackgroundRule);
     options.background = glm::vec3(colour);
   }
   options.straightAlpha = flags.alpha;

@@ -13,6 +13,7 @@
 #include <glm/vec4.hpp>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -20,6 +21,15 @@
 #include "engine/image/tonemap.h"
 
 namespace facet {
+
+// The rules of a preview's options, for the command line and the APIs alike.
+// 2^64 times the largest radiance a render keeps (1e30) is still a float.
+inline constexpr const char* kExposureRule = "expected a finite number of stops in [-64, 64]";
+inline constexpr const char* kBackgroundRule = "expected three finite, non-negative linear values R,G,B";
+inline bool validExposure(double stops) { return stops >= -64.0 && stops <= 64.0; }
+inline bool validBackground(const glm::dvec3& c) {
+  return std::isfinite(c.r + c.g + c.b) && c.r >= 0 && c.g >= 0 && c.b >= 0;
+}
 
 struct PreviewOptions {
   float exposure = 0.0f;  // stops: the radiance is scaled by 2^exposure before the tone curve

@@ -8,6 +8,7 @@
 #include "facet/brdf.h"
 #include "facet/error.h"
 #include "facet/image.h"
+#include "facet/output.h"
 #include "facet/render.h"
 #include "facet/scene.h"
 #include "facet/version.h"

@@ -83,6 +83,21 @@ class Render(unittest.TestCase):
         self.assertGreater(covered.sum(), 100)
         self.assertTrue(np.isinf(image["depth"][~covered]).all())
 
+    def test_the_files_it_writes_are_the_command_lines_byte_for_byte(self):
+        scene = EXAMPLES / "gold_cube.gltf"
+        flags = {"exposure": 1.5, "tonemap": "aces", "background": (0.2, 0.3, 0.4), "aovs": "beauty,depth"}
+        run = cli("render", scene, "-o", WORK / "cli.exr", "--png", WORK / "cli.png", "--size", "24x16",
+                  "--backend", "cpu", "--exposure", "1.5", "--tonemap", "aces", "--background", "0.2,0.3,0.4",
+                  "--aovs", "beauty,depth")
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.renderer.render(str(scene), size=(24, 16), backend="cpu", exr=str(WORK / "api.exr"),
+                             png=str(WORK / "api.png"), **flags)
+        for kind in ("exr", "png"):
+            self.assertEqual((WORK / f"api.{kind}").read_bytes(), (WORK / f"cli.{kind}").read_bytes(), kind)
+        with self.assertRaisesRegex(facet.Error, "tonemap 'filmic': expected one of: pbr-neutral, aces, clamp"):
+            self.renderer.render(str(scene), size=(8, 8), backend="cpu", png=str(WORK / "bad.png"), tonemap="filmic")
+        self.assertFalse((WORK / "bad.png").exists())
+
     def test_a_cage_built_in_python_renders_on_the_gpu_as_on_the_cpu(self):
         scene = facet.Scene([facet.Object(cube(), name="cube")],
                             materials=[facet.Material(preset="gold", roughness=0.4)],

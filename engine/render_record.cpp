@@ -1,4 +1,6 @@
-#include "settings_digest.h"
+#include "engine/render_record.h"
+
+#include <facet/version.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -7,7 +9,30 @@
 #include <iterator>
 #include <sstream>
 
-namespace facet::cli {
+#include "engine/camera/camera.h"
+
+namespace facet {
+namespace {
+
+ExrCamera exrCamera(const scene::Camera& camera, int width, int height) {
+  const rules::f64::CameraFrame f = camera::cameraFrame(camera, width, height);
+  return {f.eye, f.right, f.up, f.forward, f.tanHalfFovY, f.aspect};
+}
+
+ExrNames exrNames(const scene::Scene& scene) {
+  ExrNames names;
+  std::uint32_t faces = 0;
+  for (const scene::Object& o : scene.objects) {
+    names.objects.push_back(o.name);
+    names.firstFace.push_back(faces);
+    names.materialOf.push_back(std::uint32_t(o.material));
+    faces += std::uint32_t(o.cage.faceCount());
+  }
+  for (const materials::Material& m : scene.materials) names.materials.push_back(m.name);
+  return names;
+}
+
+}  // namespace
 
 std::string settingsDigest(const scene::Scene& scene, const std::string& backend) {
   std::ostringstream text;
@@ -61,4 +86,16 @@ std::string renderSettingsText(const scene::Scene& scene, const std::string& bac
   return text.str();
 }
 
-}  // namespace facet::cli
+ExrOptions describedExr(const scene::Scene& scene, const std::string& backend, const PixelRect& window,
+                        const ExrLayers& layers, bool halfBeauty) {
+  const int width = scene.render.width, height = scene.render.height;
+  ExrOptions exr;
+  exr.placement = ExrPlacement{window, width, height, settingsDigest(scene, backend)};
+  exr.metadata = {exrCamera(scene.camera, width, height), "facet " FACET_VERSION_STRING,
+                  renderSettingsText(scene, backend), exrNames(scene)};
+  exr.layers = layers;
+  exr.halfBeauty = halfBeauty;
+  return exr;
+}
+
+}  // namespace facet

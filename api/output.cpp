@@ -1,0 +1,54 @@
+// The CLI's writers behind the public API: the same EXR description
+// (engine/render_record.h) and the same preview (engine/image/preview.h).
+#include "facet/output.h"
+
+#include <string>
+
+#include "api/errors.h"
+#include "api/image_planes.h"
+#include "api/render_settings.h"
+#include "engine/image/exr_file.h"
+#include "engine/image/image_io.h"
+#include "engine/render_record.h"
+
+namespace facet::v0 {
+
+void writeExr(const std::string& path, const RenderResult& result, const Scene& scene, const RenderSettings& settings,
+              const ExrSettings& exr) {
+  api::translateErrors([&] {
+    checkOutputPath("path", path);
+    checkOutputExtension("path", path, ".exr");
+    const facet::Image image = engineImage(result.image);
+    const scene::Scene rendered = withSettings(scene, settings);
+    if (image.width != rendered.render.width || image.height != rendered.render.height)
+      throw Error(ErrorKind::BadInput, "image: " + std::to_string(image.width) + " x " + std::to_string(image.height) +
+                                           " is not the " + std::to_string(rendered.render.width) + " x " +
+                                           std::to_string(rendered.render.height) + " the scene and settings render");
+    const std::string backend = settings.backend == Backend::Cpu ? "cpu" : "gpu";
+    facet::writeExr(path, image,
+                    describedExr(rendered, backend, {0, 0, image.width, image.height},
+                                 parseExrLayers(exr.layers, "layers"), exr.halfBeauty));
+  });
+}
+
+void writePng(const std::string& path, const Image& image, const PngSettings& png) {
+  api::translateErrors([&] {
+    checkOutputPath("path", path);
+    checkOutputExtension("path", path, ".png");
+    if (!validExposure(png.exposure)) throw Error(ErrorKind::BadInput, std::string("exposure: ") + kExposureRule);
+    PreviewOptions preview;
+    preview.exposure = float(png.exposure);
+    preview.curve = png.toneCurve == ToneCurve::Aces    ? facet::ToneCurve::Aces
+                    : png.toneCurve == ToneCurve::Clamp ? facet::ToneCurve::Clamp
+                                                        : facet::ToneCurve::PbrNeutral;
+    if (png.background) {
+      const glm::dvec3 colour(png.background->x, png.background->y, png.background->z);
+      if (!validBackground(colour)) throw Error(ErrorKind::BadInput, std::string("background: ") + kBackgroundRule);
+      preview.background = glm::vec3(colour);
+    }
+    preview.straightAlpha = png.straightAlpha;
+    writeAllOrNothing({pngFile(path, engineImage(image), preview)});
+  });
+}
+
+}  // namespace facet::v0

@@ -1,0 +1,42 @@
+#include "api/render_settings.h"
+
+#include <string>
+
+#include "api/scene_data.h"
+#include "scenes/input_error.h"
+
+namespace facet::v0 {
+namespace {
+
+void require(bool valid, const std::string& field, const std::string& rule) {
+  if (!valid) throw scene::InputError("render settings", 0, field, rule);
+}
+
+}  // namespace
+
+scene::Scene withSettings(const Scene& input, const RenderSettings& s) {
+  scene::Scene out = input.data().scene;
+  if (s.width) require(*s.width >= 1 && *s.width <= 16384, "width", "must be in [1, 16384]");
+  if (s.height) require(*s.height >= 1 && *s.height <= 16384, "height", "must be in [1, 16384]");
+  if (s.samplesPerPixel)
+    require(*s.samplesPerPixel >= 1 && *s.samplesPerPixel <= 4096 && scene::isSquare(*s.samplesPerPixel),
+            "samplesPerPixel", std::string("must be in [1, 4096]; ") + scene::kSamplesPerPixelRule);
+  if (s.tessellationRate)
+    require(*s.tessellationRate >= 1 && *s.tessellationRate <= 256, "tessellationRate", "must be in [1, 256]");
+  if (s.bounces)
+    require(*s.bounces >= 0 && *s.bounces <= scene::kMaxBounces, "bounces",
+            "must be in [0, " + std::to_string(scene::kMaxBounces) + "]");
+  out.render.width = s.width.value_or(out.render.width);
+  out.render.height = s.height.value_or(out.render.height);
+  out.render.samplesPerPixel = s.samplesPerPixel.value_or(out.render.samplesPerPixel);
+  if (s.method)
+    out.render.method =
+        *s.method == Method::Exact ? scene::IntersectionMethod::Exact : scene::IntersectionMethod::Tessellated;
+  if (s.tessellationRate) out.render.tessellationRate = s.tessellationRate;
+  out.render.bounces = s.bounces.value_or(out.render.bounces);
+  require(scene::pathsCountEnvironmentOnce(out.render.bounces, out.environment), "bounces",
+          scene::kBouncesNeedOcclusionRule);
+  return out;
+}
+
+}  // namespace facet::v0

@@ -1,0 +1,98 @@
+// writeExr and writePng (api/output.cpp) write what `facet render` writes:
+// the same scene and settings give the same EXR and PNG, byte for byte, and
+// bad images and settings are refused with nothing written.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <facet/facet.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string bytesOf(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+class ApiOutput : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    folder_ = fs::temp_directory_path() / ("facet_api_output_" + std::to_string(::getpid()));
+    fs::create_directories(folder_);
+  }
+  void TearDown() override { fs::remove_all(folder_); }
+  fs::path folder_;
+};
+
+const std::string kScene = std::string(FACET_EXAMPLES_DIR) + "/gold_cube.gltf";
+
+facet::RenderSettings smallOnCpu() {
+  facet::RenderSettings settings;
+  settings.backend = facet::Backend::Cpu;
+  settings.width = 24;
+  settings.height = 16;
+  return settings;
+}
+
+TEST_F(ApiOutput, TheApiWritesTheCommandLinesBytes) {
+  const fs::path cliExr = folder_ / "cli.exr", cliPng = folder_ / "cli.png";
+  const std::string command = std::string(FACET_BINARY) + " render " + kScene + " -o " + cliExr.string() + " --png " +
+                              cliPng.string() + " --size 24x16 --backend cpu --exposure 1 --tonemap aces --quiet";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+
+  const facet::Scene scene = facet::loadScene(kScene);
+  facet::Renderer renderer;
+  const facet::RenderResult result = renderer.render(scene, smallOnCpu());
+  const fs::path apiExr = folder_ / "api.exr", apiPng = folder_ / "api.png";
+  facet::writeExr(apiExr.string(), result, scene, smallOnCpu());
+  facet::PngSettings png;
+  png.exposure = 1;
+  png.toneCurve = facet::ToneCurve::Aces;
+  facet::writePng(apiPng.string(), result.image, png);
+
+  EXPECT_FALSE(bytesOf(cliExr).empty());
+  EXPECT_EQ(bytesOf(apiExr), bytesOf(cliExr)) << "the EXRs differ";
+  EXPECT_EQ(bytesOf(apiPng), bytesOf(cliPng)) << "the PNGs differ";
+}
+
+TEST_F(ApiOutput, BadImagesAndSettingsAreRefusedWithNothingWritten) {
+  const facet::Scene scene = facet::loadScene(kScene);
+  facet::Renderer renderer;
+  facet::RenderResult result = renderer.render(scene, smallOnCpu());
+  const auto refused = [&](auto write, facet::ErrorKind kind, const std::string& expected) {
+    try {
+      write();
+      ADD_FAILURE() << "nothing refused; expected " << expected;
+    } catch (const facet::Error& e) {
+      EXPECT_EQ(e.kind(), kind) << e.what();
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+    EXPECT_TRUE(fs::is_empty(folder_)) << "a file was written";
+  };
+  const std::string exr = (folder_ / "out.exr").string(), png = (folder_ / "out.png").string();
+  refused([&] { facet::writeExr(png, result, scene, smallOnCpu()); }, facet::ErrorKind::OutputFailed, ".exr");
+  refused([&] { facet::writeExr(exr, result, scene, {}); }, facet::ErrorKind::BadInput,
+          "24 x 16 is not the 512 x 512 the scene and settings render");
+  facet::PngSettings dark;
+  dark.exposure = std::nan("");
+  refused([&] { facet::writePng(png, result.image, dark); }, facet::ErrorKind::BadInput, "exposure: expected a finite");
+  facet::PngSettings negative;
+  negative.background = facet::Vec3{0.1, -1, 0};
+  refused([&] { facet::writePng(png, result.image, negative); }, facet::ErrorKind::BadInput, "background");
+  result.image.aovs["depth"].values.pop_back();
+  refused([&] { facet::writePng(png, result.image); }, facet::ErrorKind::BadInput,
+          "AOV 'depth': must hold 24 x 16 x 1 values, has 383 in 1 channels");
+  result.image.aovs["depth"].values.push_back(0);
+  result.image.aovs.erase("uv");
+  refused([&] { facet::writeExr(exr, result, scene, smallOnCpu()); }, facet::ErrorKind::BadInput, "no AOV named 'uv'");
+}
+
+}  // namespace
