@@ -252,8 +252,8 @@ PYBIND11_MODULE(facet, m) {
              material.attenuationDistance = attenuationDistance;
              return material;
            }),
-           py::kw_only(), py::arg("name") = "", py::arg("preset") = py::none(), py::arg("d") = py::none(),
-           py::arg("g") = py::none(), py::arg("f") = py::none(), py::arg("alpha") = py::none(),
+           py::kw_only(), py::arg("name") = "", py::arg("preset") = py::none(), py::arg("distribution") = py::none(),
+           py::arg("geometry") = py::none(), py::arg("fresnel") = py::none(), py::arg("alpha") = py::none(),
            py::arg("roughness") = py::none(), py::arg("f0") = py::none(), py::arg("ior") = py::none(),
            py::arg("eta") = py::none(), py::arg("k") = py::none(), py::arg("diffuse") = py::none(),
            py::arg("energy_compensation") = false, py::arg("transmission") = py::none(),
@@ -261,9 +261,9 @@ PYBIND11_MODULE(facet, m) {
            py::arg("attenuation_color") = py::none(), py::arg("attenuation_distance") = py::none())
       .def_readwrite("name", &facet::Material::name)
       .def_readwrite("preset", &facet::Material::preset)
-      .def_readwrite("d", &facet::Material::distribution)
-      .def_readwrite("g", &facet::Material::geometry)
-      .def_readwrite("f", &facet::Material::fresnel)
+      .def_readwrite("distribution", &facet::Material::distribution)
+      .def_readwrite("geometry", &facet::Material::geometry)
+      .def_readwrite("fresnel", &facet::Material::fresnel)
       .def_readwrite("alpha", &facet::Material::alpha)
       .def_readwrite("roughness", &facet::Material::roughness)
       .def_readwrite("f0", &facet::Material::f0)
@@ -291,7 +291,7 @@ PYBIND11_MODULE(facet, m) {
            py::arg("positions"), py::arg("face_vertex_counts"), py::arg("face_vertex_indices"),
            py::arg("creases") = std::vector<std::tuple<int, int, double>>{});
 
-  py::class_<facet::Object>(m, "Object")
+  py::class_<facet::Object>(m, "Object", "A cage with the index of its material in the scene's materials")
       .def(py::init([](facet::Cage cage, int material, const std::string& name, bool subdivided) {
              return facet::Object{name, std::move(cage), material, subdivided};
            }),
@@ -309,7 +309,7 @@ PYBIND11_MODULE(facet, m) {
            py::arg("position") = Vec3{0, 0, 0}, py::arg("direction") = Vec3{0, -1, 0}, py::arg("inner_cone") = 30.0,
            py::arg("outer_cone") = 45.0);
 
-  py::class_<facet::Camera>(m, "Camera")
+  py::class_<facet::Camera>(m, "Camera", "A pinhole camera; fov is vertical, in degrees")
       .def(py::init([](Vec3 eye, Vec3 target, Vec3 up, double fov) {
              return facet::Camera{eye, target, up, fov};
            }),
@@ -342,11 +342,13 @@ PYBIND11_MODULE(facet, m) {
            py::arg("objects"), py::kw_only(), py::arg("materials") = std::vector<facet::Material>{},
            py::arg("lights") = std::vector<facet::Light>{}, py::arg("camera") = py::none(),
            py::arg("environment") = py::none(), py::arg("size") = std::pair<int, int>{512, 512})
-      .def_property_readonly("size",
-                             [](const facet::Scene& s) {
-                               return std::pair<int, int>{s.width(), s.height()};
-                             })
-      .def_property_readonly("object_count", &facet::Scene::objectCount);
+      .def_property_readonly(
+          "size",
+          [](const facet::Scene& s) {
+            return std::pair<int, int>{s.width(), s.height()};
+          },
+          "The image size (width, height) it renders at")
+      .def_property_readonly("object_count", &facet::Scene::objectCount, "How many objects it holds");
   m.def(
       "load_scene", [](const py::object& path) { return sceneOf(path); }, py::arg("path"),
       "A .json scene, an .obj cage or a .gltf/.glb file");
@@ -373,7 +375,8 @@ PYBIND11_MODULE(facet, m) {
           [](facet::Renderer& r, const py::object& scene, std::optional<std::pair<int, int>> size, OptText method) {
             return parityDict(r, scene, settingsOf(size, "gpu", method, std::nullopt, std::nullopt, std::nullopt));
           },
-          py::arg("scene"), py::kw_only(), py::arg("size") = py::none(), py::arg("method") = py::none());
+          py::arg("scene"), py::kw_only(), py::arg("size") = py::none(), py::arg("method") = py::none(),
+          "As facet.parity, with this renderer's device and kernels");
 
   m.def(
       "render",
@@ -410,8 +413,8 @@ PYBIND11_MODULE(facet, m) {
             material.value_or(facet::Material{"", preset, d, g, f, alpha, roughness, f0, ior, eta, k, diffuse});
         return brdfDict(chosen, l, v);
       },
-      py::arg("l"), py::arg("v"), py::kw_only(), py::arg("material") = py::none(), py::arg("d") = py::none(),
-      py::arg("g") = py::none(), py::arg("f") = py::none(), py::arg("preset") = py::none(),
+      py::arg("l"), py::arg("v"), py::kw_only(), py::arg("material") = py::none(), py::arg("distribution") = py::none(),
+      py::arg("geometry") = py::none(), py::arg("fresnel") = py::none(), py::arg("preset") = py::none(),
       py::arg("alpha") = py::none(), py::arg("roughness") = py::none(), py::arg("f0") = py::none(),
       py::arg("ior") = py::none(), py::arg("eta") = py::none(), py::arg("k") = py::none(),
       py::arg("diffuse") = py::none(),

@@ -260,8 +260,8 @@ class Scenes(unittest.TestCase):
 
 class Brdf(unittest.TestCase):
     def test_brdf_is_the_command_lines_at_every_direction(self):
-        material = dict(d="ggx", g="smith-ggx-correlated", f="schlick", alpha=0.3, f0=(0.9, 0.6, 0.3),
-                        diffuse=(0.1, 0.2, 0.3))
+        material = dict(distribution="ggx", geometry="smith-ggx-correlated", fresnel="schlick", alpha=0.3,
+                        f0=(0.9, 0.6, 0.3), diffuse=(0.1, 0.2, 0.3))
         cases = [(45, 45, 180), (10, 70, 90), (80, 5, 0), (30, 60, 135)]
 
         def direction(theta, phi):

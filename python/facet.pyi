@@ -1,0 +1,97 @@
+# Type stubs of the `facet` module (python/facet_module.cpp), installed beside
+# it; tests/python/stub_test.py holds every signature here to the module's.
+from os import PathLike
+from typing import Optional, Union
+
+import numpy
+import numpy.typing
+
+Vec3 = tuple[float, float, float]
+SceneOrPath = Union["Scene", str, PathLike[str]]
+
+__version__: str
+
+class Error(ValueError):
+    exit_code: int
+
+class Material:
+    name: str
+    preset: Optional[str]
+    distribution: Optional[str]
+    geometry: Optional[str]
+    fresnel: Optional[str]
+    alpha: Optional[float]
+    roughness: Optional[float]
+    f0: Optional[Vec3]
+    ior: Optional[Vec3]
+    eta: Optional[Vec3]
+    k: Optional[Vec3]
+    diffuse: Optional[Vec3]
+    energy_compensation: bool
+    transmission: Optional[float]
+    thin_walled: Optional[bool]
+    thickness: Optional[float]
+    attenuation_color: Optional[Vec3]
+    attenuation_distance: Optional[float]
+    def __init__(self, *, name: str = "", preset: Optional[str] = None, distribution: Optional[str] = None,
+                 geometry: Optional[str] = None, fresnel: Optional[str] = None, alpha: Optional[float] = None,
+                 roughness: Optional[float] = None, f0: Optional[Vec3] = None, ior: Optional[Vec3] = None,
+                 eta: Optional[Vec3] = None, k: Optional[Vec3] = None, diffuse: Optional[Vec3] = None,
+                 energy_compensation: bool = False, transmission: Optional[float] = None,
+                 thin_walled: Optional[bool] = None, thickness: Optional[float] = None,
+                 attenuation_color: Optional[Vec3] = None, attenuation_distance: Optional[float] = None) -> None: ...
+
+class Cage:
+    def __init__(self, positions: numpy.typing.ArrayLike, face_vertex_counts: numpy.typing.ArrayLike,
+                 face_vertex_indices: numpy.typing.ArrayLike, creases: list[tuple[int, int, float]] = []) -> None: ...
+
+class Object:
+    def __init__(self, cage: Cage, *, material: int = 0, name: str = "", subdivided: bool = True) -> None: ...
+
+class Light:
+    def __init__(self, type: str = "directional", *, color: Vec3 = (1.0, 1.0, 1.0), position: Vec3 = (0.0, 0.0, 0.0),
+                 direction: Vec3 = (0.0, -1.0, 0.0), inner_cone: float = 30.0, outer_cone: float = 45.0) -> None: ...
+
+class Camera:
+    def __init__(self, *, eye: Vec3 = (0.0, 0.0, 5.0), target: Vec3 = (0.0, 0.0, 0.0), up: Vec3 = (0.0, 1.0, 0.0),
+                 fov: float = 40.0) -> None: ...
+
+class Environment:
+    def __init__(self, file: Union[str, PathLike[str]], *, intensity: float = 1.0, rotation: float = 0.0,
+                 method: str = "prefiltered", samples: int = 16, occlusion: bool = True) -> None: ...
+
+class Scene:
+    def __init__(self, objects: list[Object], *, materials: list[Material] = [], lights: list[Light] = [],
+                 camera: Optional[Camera] = None, environment: Optional[Environment] = None,
+                 size: tuple[int, int] = (512, 512)) -> None: ...
+    @property
+    def size(self) -> tuple[int, int]: ...
+    @property
+    def object_count(self) -> int: ...
+
+def load_scene(path: Union[str, PathLike[str]]) -> Scene: ...
+
+class Renderer:
+    def __init__(self, adapter: str = "") -> None: ...
+    def render(self, scene: SceneOrPath, *, size: Optional[tuple[int, int]] = None, backend: str = "gpu",
+               method: Optional[str] = None, spp: Optional[int] = None, tess_level: Optional[int] = None,
+               bounces: Optional[int] = None, exr: Optional[str] = None, png: Optional[str] = None,
+               aovs: str = "all", half: bool = False, exposure: float = 0.0, tonemap: str = "pbr-neutral",
+               background: Optional[Vec3] = None, alpha: bool = False) -> dict: ...
+    def parity(self, scene: SceneOrPath, *, size: Optional[tuple[int, int]] = None,
+               method: Optional[str] = None) -> dict: ...
+
+def render(scene: SceneOrPath, *, size: Optional[tuple[int, int]] = None, backend: str = "gpu",
+           method: Optional[str] = None, spp: Optional[int] = None, tess_level: Optional[int] = None,
+           bounces: Optional[int] = None, adapter: str = "", exr: Optional[str] = None, png: Optional[str] = None,
+           aovs: str = "all", half: bool = False, exposure: float = 0.0, tonemap: str = "pbr-neutral",
+           background: Optional[Vec3] = None, alpha: bool = False) -> dict: ...
+
+def parity(scene: SceneOrPath, *, size: Optional[tuple[int, int]] = None, method: Optional[str] = None,
+           adapter: str = "") -> dict: ...
+
+def brdf(l: numpy.typing.ArrayLike, v: numpy.typing.ArrayLike, *, material: Optional[Material] = None,
+         distribution: Optional[str] = None, geometry: Optional[str] = None, fresnel: Optional[str] = None,
+         preset: Optional[str] = None, alpha: Optional[float] = None, roughness: Optional[float] = None,
+         f0: Optional[Vec3] = None, ior: Optional[Vec3] = None, eta: Optional[Vec3] = None,
+         k: Optional[Vec3] = None, diffuse: Optional[Vec3] = None) -> dict[str, numpy.ndarray]: ...
