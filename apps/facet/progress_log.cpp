@@ -16,17 +16,23 @@ void ProgressLog::operator()(double done) {
     std::fprintf(stderr, "\r%s %3d%%", label_.c_str(), int(done * 100));
     return;
   }
-  const int tenths = int(done * 10);
-  if (tenths <= tenthsShown_) return;
-  tenthsShown_ = tenths;
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const auto now = std::chrono::steady_clock::now();
+  if (done >= 1 || done <= 0 || now - logged_ < kLogInterval) return;
+  logged_ = now;
+  const double elapsed = std::chrono::duration<double>(now - start_).count();
   // The rate so far, held for the rest.
-  std::fprintf(stderr, "%s %3d%%, %.1f s elapsed, about %.1f s left\n", label_.c_str(), tenths * 10, elapsed,
+  std::fprintf(stderr, "%s %3d%%, %.1f s elapsed, about %.1f s left\n", label_.c_str(), int(done * 100), elapsed,
                elapsed * (1 - done) / done);
 }
 
 void ProgressLog::finish() {
-  if (!quiet_ && terminal_) std::fprintf(stderr, "\r%*s\r", int(label_.size()) + 5, "");
+  if (quiet_) return;
+  if (terminal_) {
+    std::fprintf(stderr, "\r%*s\r", int(label_.size()) + 5, "");
+    return;
+  }
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  std::fprintf(stderr, "%s 100%%, %.1f s elapsed\n", label_.c_str(), elapsed);
 }
 
 }  // namespace facet::cli
