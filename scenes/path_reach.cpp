@@ -31,8 +31,8 @@ struct SurfaceSamples {
 SurfaceSamples takeSamples(const SubdivisionSurface& surface) {
   // A bilinear patch (polygons as authored) needs its corners only: n . P is
   // bilinear in (u, v), so its largest value over the patch is at a corner,
-  // and a twisted patch is a saddle whose corners' planes each leave an
-  // opposite corner above.
+  // and a twisted patch is a saddle: the plane at one of two opposite
+  // corners leaves the other above it.
   const int n = surface.statistics().subdivision == Subdivision::None ? 1 : kConvexitySamplesPerPatchEdge;
   SurfaceSamples s;
   s.perPatch = (n + 1) * (n + 1);

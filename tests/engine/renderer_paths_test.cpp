@@ -16,6 +16,7 @@
 #include "scenes/scene_geometry.h"
 #include "scenes/obj_cage.h"
 #include "tests/support/blob_scene.h"
+#include "tests/support/cages.h"
 #include "tests/support/environment_maps.h"
 #include "tests/support/inside_sphere.h"
 
@@ -36,26 +37,6 @@ scene::Scene underSky(scene::ControlCage cage, int bounces) {
 }
 
 scene::ControlCage cubeCage() { return scene::loadObjCage(std::filesystem::path(FACET_CAGE_DIR) / "cube.obj"); }
-
-// A torus of radii 1 and 0.4 about +y, 12 x 8 quads.
-scene::ControlCage torusCage() {
-  scene::ControlCage cage;
-  cage.source = "torus";
-  const int around = 12, across = 8;
-  for (int i = 0; i < around; ++i)
-    for (int j = 0; j < across; ++j) {
-      const double phi = 2 * glm::pi<double>() * i / around, theta = 2 * glm::pi<double>() * j / across;
-      const double r = 1.0 + 0.4 * std::cos(theta);
-      cage.positions.push_back({r * std::cos(phi), 0.4 * std::sin(theta), r * std::sin(phi)});
-    }
-  auto at = [&](int a, int b) { return (a % around) * across + b % across; };
-  for (int i = 0; i < around; ++i)
-    for (int j = 0; j < across; ++j) {
-      cage.faceVertexCounts.push_back(4);
-      for (int v : {at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j)}) cage.faceVertexIndices.push_back(v);
-    }
-  return cage;
-}
 
 void expectSameImage(const Image& a, const Image& b) {
   ASSERT_EQ(a.pixelCount(), b.pixelCount());
@@ -105,7 +86,7 @@ TEST(RendererPathsPremise, TheCubesContinuationsAllMiss) {
 }
 
 TEST_P(RendererPaths, AConcaveObjectStillBounces) {
-  scene::Scene s = underSky(torusCage(), 2);
+  scene::Scene s = underSky(scene::testing::torusCage(12, 8, 1.0, 0.4), 2);
   s.camera.eye = {0.0, 2.5, 3.0};
   s.camera.target = {0.0, 0.0, 0.0};
   const RenderReport report = renderer().render(s, GetParam());

@@ -15,33 +15,15 @@
 #include "scenes/path_reach.h"
 #include "scenes/scene_geometry.h"
 #include "tests/support/blob_scene.h"
+#include "tests/support/cages.h"
 #include "tests/support/inside_sphere.h"
 
 namespace facet::scene {
 namespace {
 
-// A torus of radii 1 and 0.35 about +y: `around` x `across` quads.
-ControlCage torusCage(int around, int across) {
-  ControlCage cage;
-  cage.source = "torus";
-  for (int i = 0; i < around; ++i)
-    for (int j = 0; j < across; ++j) {
-      const double phi = 2 * glm::pi<double>() * i / around, theta = 2 * glm::pi<double>() * j / across;
-      const double r = 1.0 + 0.35 * std::cos(theta);
-      cage.positions.push_back({r * std::cos(phi), 0.35 * std::sin(theta), r * std::sin(phi)});
-    }
-  for (int i = 0; i < around; ++i)
-    for (int j = 0; j < across; ++j) {
-      auto at = [&](int a, int b) { return (a % around) * across + b % across; };
-      cage.faceVertexCounts.push_back(4);
-      for (int v : {at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j)}) cage.faceVertexIndices.push_back(v);
-    }
-  return cage;
-}
-
 Scene lone(ControlCage cage, Subdivision subdivision = Subdivision::CatmullClark) {
   Scene s;
-  s.materials.push_back(testing::lambertian(0.5));
+  s.materials.push_back(facet::testing::lambertian(0.5));
   Object object;
   object.name = cage.source;
   object.cage = std::move(cage);
@@ -74,18 +56,19 @@ TEST(PathReach, TheCubeCagesLimitSurfaceIsConvex) {
 }
 
 TEST(PathReach, AUvSphereAsAuthoredIsConvex) {
-  EXPECT_TRUE(decide(lone(testing::uvSphereCage(32, 64), Subdivision::None), "uv sphere as authored").has_value());
+  EXPECT_TRUE(
+      decide(lone(facet::testing::uvSphereCage(32, 64), Subdivision::None), "uv sphere as authored").has_value());
 }
 
 TEST(PathReach, FromInsideAConvexSphereContinuationsHit) {
-  Scene s = lone(testing::uvSphereCage(32, 64), Subdivision::None);
+  Scene s = lone(facet::testing::uvSphereCage(32, 64), Subdivision::None);
   s.camera.eye = {0.0, 0.0, 0.0};
   s.camera.target = {0.0, 0.0, -1.0};
   EXPECT_FALSE(decide(s, "uv sphere, eye inside").has_value());
 }
 
 TEST(PathReach, ATorusBounces) {
-  const Scene s = lone(torusCage(12, 8));
+  const Scene s = lone(testing::torusCage(12, 8, 1.0, 0.35));
   EXPECT_TRUE(closesIntoSphere(s.objects.front().cage) == false);  // genus 1
   EXPECT_FALSE(decide(s, "torus").has_value());
   // Its limit surface is concave, whatever its topology says.
@@ -140,7 +123,7 @@ TEST(PathReach, ThePreviewsSuperballAndCreasedBox) {
   std::printf("superball: %s; creased box: %s\n", ballConvex ? "none cast" : "traced",
               boxConvex ? "none cast" : "traced");
   EXPECT_TRUE(ballConvex);
-  // Beside its semi-sharp vertical edge the creased box's limit is a saddle.
+  // Where its semi-sharp crease stops halfway along an edge, the creased box's limit is a saddle.
   EXPECT_FALSE(boxConvex);
 }
 
