@@ -8,6 +8,7 @@
 
 #include "engine/cpu/reference_renderer.h"
 #include "engine/gpu_backend/gpu_renderer.h"
+#include "scenes/path_reach.h"
 #include "scenes/scene_geometry.h"
 
 namespace facet {
@@ -93,15 +94,25 @@ RenderReport Renderer::render(const scene::Scene& scene, Backend backend, const 
                                 " image");
   Stopwatch clock;
   scene::SceneGeometry geometry = scene::buildGeometry(scene);
+  // Decided once, here, so that both backends render the same scene.
+  std::optional<scene::Scene> withoutPaths;
+  if (scene::pathsCountEnvironmentOnce(scene.render.bounces, scene.environment))
+    if (std::optional<std::string> why = scene::whyNoPathContinues(scene, geometry)) {
+      withoutPaths = scene;
+      withoutPaths->render.bounces = 0;
+      report.pathsNote = "paths: none cast: " + *why;
+    }
+  const scene::Scene& rendered = withoutPaths ? *withoutPaths : scene;
   report.stages.push_back({Stage::RefineBvh, clock.lap()});
   report.patches = geometry.patchCount();
   report.geometrySummary = scene::describe(scene, geometry);
+  if (!report.pathsNote.empty()) report.geometrySummary += "\n" + report.pathsNote;
   switch (backend) {
     case Backend::Cpu: {
       cpu::ReferenceStatistics statistics;
-      report.image = cpu::renderReference(scene, geometry, &statistics, progress, options.crop, options.threads);
+      report.image = cpu::renderReference(rendered, geometry, &statistics, progress, options.crop, options.threads);
       const double milliseconds = clock.lap();
-      if (scene.environment) report.stages.push_back({Stage::Environment, statistics.environmentMilliseconds});
+      if (rendered.environment) report.stages.push_back({Stage::Environment, statistics.environmentMilliseconds});
       report.stages.push_back({Stage::TraceShade, milliseconds - statistics.environmentMilliseconds});
       report.device =
           "CPU reference, double precision, " + std::to_string(cpu::resolveThreadCount(options.threads)) + " threads";
@@ -112,7 +123,7 @@ RenderReport Renderer::render(const scene::Scene& scene, Backend backend, const 
     }
     case Backend::Gpu: {
       GpuContext& context = gpuContext();
-      gpu_backend::GpuRenderResult result = context.renderer->render(scene, geometry, progress, options.crop);
+      gpu_backend::GpuRenderResult result = context.renderer->render(rendered, geometry, progress, options.crop);
       report.image = std::move(result.image);
       report.stages.insert(report.stages.end(), result.stageMilliseconds.begin(), result.stageMilliseconds.end());
       report.device = context.device.adapterInfo().name + " (GPU, float)";

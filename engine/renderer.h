@@ -32,6 +32,9 @@ struct RenderReport {
   PixelRect window;             // where `image` lies in the full image
   std::string device;           // what ran the render
   std::string geometrySummary;  // refinement, patch counts and memory per object
+  // Why the scene's bounces cast no paths (scenes/path_reach.h), rendered as
+  // with 0 bounces; empty where paths were traced or none were asked for.
+  std::string pathsNote;
   int patches = 0;
   std::vector<StageTime> stages;
   std::uint64_t primaryRays = 0;

@@ -4,7 +4,10 @@
 
 #include "scenes/obj_cage.h"
 
+#include <glm/gtc/constants.hpp>
 #include <glm/vec3.hpp>
+
+#include <cmath>
 
 #include <string>
 #include <vector>
@@ -29,6 +32,25 @@ inline ControlCage singleFace(std::vector<glm::dvec3> positions) {
   cage.faceVertexCounts = {int(positions.size())};
   for (int i = 0; i < int(positions.size()); ++i) cage.faceVertexIndices.push_back(i);
   cage.positions = std::move(positions);
+  return cage;
+}
+
+// A torus about +y of radii `major` and `minor`: `around` x `across` quads.
+inline ControlCage torusCage(int around, int across, double major, double minor) {
+  ControlCage cage;
+  cage.source = "torus";
+  for (int i = 0; i < around; ++i)
+    for (int j = 0; j < across; ++j) {
+      const double phi = 2 * glm::pi<double>() * i / around, theta = 2 * glm::pi<double>() * j / across;
+      const double r = major + minor * std::cos(theta);
+      cage.positions.push_back({r * std::cos(phi), minor * std::sin(theta), r * std::sin(phi)});
+    }
+  auto at = [&](int a, int b) { return (a % around) * across + b % across; };
+  for (int i = 0; i < around; ++i)
+    for (int j = 0; j < across; ++j) {
+      cage.faceVertexCounts.push_back(4);
+      for (int v : {at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j)}) cage.faceVertexIndices.push_back(v);
+    }
   return cage;
 }
 

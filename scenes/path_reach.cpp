@@ -1,0 +1,158 @@
+#include "scenes/path_reach.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+#include <unordered_map>
+#include <vector>
+
+#include "materials/material.h"
+
+namespace facet::scene {
+namespace {
+
+std::uint64_t edgeKey(int from, int to) { return (std::uint64_t(std::uint32_t(from)) << 32) | std::uint32_t(to); }
+
+int findRoot(std::vector<int>& parent, int i) {
+  while (parent[std::size_t(i)] != i) i = parent[std::size_t(i)] = parent[std::size_t(parent[std::size_t(i)])];
+  return i;
+}
+
+// The limit points of every patch on an (n + 1)^2 grid, with their outward
+// unit normals (zero where the derivatives give none).
+struct SurfaceSamples {
+  std::vector<glm::dvec3> positions, normals;
+  int perPatch = 0;
+};
+
+SurfaceSamples takeSamples(const SubdivisionSurface& surface) {
+  // A bilinear patch (polygons as authored) needs its corners only: n . P is
+  // bilinear in (u, v), so its largest value over the patch is at a corner,
+  // and a twisted patch is a saddle: the plane at one of two opposite
+  // corners leaves the other above it.
+  const int n = surface.statistics().subdivision == Subdivision::None ? 1 : kConvexitySamplesPerPatchEdge;
+  SurfaceSamples s;
+  s.perPatch = (n + 1) * (n + 1);
+  for (int p = 0; p < surface.patchCount(); ++p) {
+    const PatchDomain& d = surface.patch(p).domain;
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) {
+        const LimitPoint point = surface.evaluatePatch(p, d.u0 + d.size * i / n, d.v0 + d.size * j / n);
+        const glm::dvec3 normal = glm::cross(point.du, point.dv);
+        const double length = glm::length(normal);
+        s.positions.push_back(point.position);
+        // A degenerate corner (a pole, a collapsed edge) has no tangent plane of its own to check.
+        s.normals.push_back(length > 1e-10 * glm::length(point.du) * glm::length(point.dv) ? normal / length
+                                                                                           : glm::dvec3(0.0));
+      }
+  }
+  // OpenSubdiv's normal follows the faces' winding; outward is where the
+  // samples lie ahead of their centroid.
+  const glm::dvec3 centroid =
+      std::accumulate(s.positions.begin(), s.positions.end(), glm::dvec3(0.0)) / double(s.positions.size());
+  double outward = 0;
+  for (std::size_t i = 0; i < s.positions.size(); ++i) outward += glm::dot(s.normals[i], s.positions[i] - centroid);
+  if (outward < 0)
+    for (glm::dvec3& normal : s.normals) normal = -normal;
+  return s;
+}
+
+// The largest n . (y - x) over the samples y of every patch whose box may
+// rise more than `floor` above the plane through x, and at least `floor`.
+double heightAbovePlane(const SurfaceSamples& s, const PatchBvh& bvh, const glm::dvec3& x, const glm::dvec3& n,
+                        double floor) {
+  const std::vector<PatchBvh::Node>& nodes = bvh.nodes();
+  const double base = glm::dot(n, x);
+  double highest = floor;
+  std::vector<int> stack = {0};
+  while (!stack.empty()) {
+    const int index = stack.back();
+    stack.pop_back();
+    const PatchBvh::Node& node = nodes[std::size_t(index)];
+    const glm::dvec3 half = 0.5 * (node.bounds.hi - node.bounds.lo);
+    if (glm::dot(n, node.bounds.centre()) + glm::dot(glm::abs(n), half) - base <= highest) continue;
+    if (!node.leaf()) {
+      stack.push_back(node.next);
+      stack.push_back(index + 1);
+      continue;
+    }
+    for (int slot = node.next; slot < node.next + node.patchCount; ++slot) {
+      const std::size_t first = std::size_t(bvh.leafPatches()[std::size_t(slot)]) * std::size_t(s.perPatch);
+      for (std::size_t j = first; j < first + std::size_t(s.perPatch); ++j)
+        highest = std::max(highest, glm::dot(n, s.positions[j]) - base);
+    }
+  }
+  return highest;
+}
+
+}  // namespace
+
+bool closesIntoSphere(const ControlCage& cage) {
+  if (!cage.holes.empty() || cage.faceCount() == 0) return false;
+  std::unordered_map<std::uint64_t, int> faceOfEdge;
+  std::vector<char> used(cage.positions.size(), 0);
+  std::size_t first = 0;
+  for (int f = 0; f < cage.faceCount(); ++f) {
+    const int count = cage.faceVertexCounts[std::size_t(f)];
+    const auto begin = cage.faceVertexIndices.begin() + std::ptrdiff_t(first);
+    std::vector<int> corners(begin, begin + count);
+    std::sort(corners.begin(), corners.end());
+    if (std::adjacent_find(corners.begin(), corners.end()) != corners.end()) return false;
+    for (int k = 0; k < count; ++k) {
+      const int a = cage.faceVertexIndices[first + std::size_t(k)];
+      const int b = cage.faceVertexIndices[first + std::size_t((k + 1) % count)];
+      used[std::size_t(a)] = 1;
+      if (!faceOfEdge.emplace(edgeKey(a, b), f).second) return false;
+    }
+    first += std::size_t(count);
+  }
+  std::vector<int> parent(std::size_t(cage.faceCount()));
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto& [key, face] : faceOfEdge) {
+    const auto twin = faceOfEdge.find((key << 32) | (key >> 32));
+    if (twin == faceOfEdge.end()) return false;
+    parent[std::size_t(findRoot(parent, face))] = findRoot(parent, twin->second);
+  }
+  for (int f = 0; f < cage.faceCount(); ++f)
+    if (findRoot(parent, f) != findRoot(parent, 0)) return false;
+  const auto vertices = std::ptrdiff_t(std::count(used.begin(), used.end(), 1));
+  const auto edges = std::ptrdiff_t(faceOfEdge.size() / 2);
+  return vertices - edges + cage.faceCount() == 2;
+}
+
+ConvexityCheck checkConvexity(const SubdivisionSurface& surface, const PatchBvh& bvh, const glm::dvec3& eye,
+                              double stopAbove) {
+  const SurfaceSamples s = takeSamples(surface);
+  const double diagonal = surface.bounds().diagonal();
+  ConvexityCheck check;
+  check.samples = s.positions.size();
+  check.eyeClearance = -std::numeric_limits<double>::infinity();
+  double excess = 0;  // every sample lies on its own plane
+  for (std::size_t i = 0; i < s.positions.size(); ++i) {
+    if (s.normals[i] == glm::dvec3(0.0)) continue;
+    check.eyeClearance = std::max(check.eyeClearance, glm::dot(s.normals[i], eye - s.positions[i]) / diagonal);
+    excess = heightAbovePlane(s, bvh, s.positions[i], s.normals[i], excess);
+    if (excess / diagonal > stopAbove) break;
+  }
+  check.excess = excess / diagonal;
+  return check;
+}
+
+std::optional<std::string> whyNoPathContinues(const Scene& scene, const SceneGeometry& geometry) {
+  // The tessellation's own dents (a grid's diagonals, the fans at level
+  // transitions) are not checked: it traces.
+  if (scene.render.bounces == 0 || scene.objects.size() != 1 || scene.render.method != IntersectionMethod::Exact)
+    return std::nullopt;
+  const Object& object = scene.objects.front();
+  if (materials::isTransmissive(scene.materials.at(std::size_t(object.material))) || !closesIntoSphere(object.cage))
+    return std::nullopt;
+  const ObjectGeometry& g = geometry.objects.front();
+  const ConvexityCheck check = checkConvexity(g.surface, g.bvh, scene.camera.eye, kConvexTolerance);
+  if (check.excess > kConvexTolerance || check.eyeClearance <= kConvexTolerance) return std::nullopt;
+  return "one convex closed object, seen from outside; no continuation can hit";
+}
+
+}  // namespace facet::scene

@@ -1,0 +1,58 @@
+// Whether a path's continuation can meet any surface of a scene at all
+// (docs/rendering.md, "Scenes whose paths cannot continue"). A continuation
+// that misses adds nothing, so where none can hit, tracing paths cannot
+// change the image: the front-end then renders with 0 bounces on both
+// backends, and the image is byte-identical to `--bounces 0`.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include "scenes/scene.h"
+#include "scenes/scene_geometry.h"
+
+namespace facet::scene {
+
+// Whether the cage's faces close into one oriented surface with a sphere's
+// topology: no holes, no face repeating a vertex, every directed edge once
+// and its reverse once (so every edge borders two faces, oriented alike),
+// the faces connected through their edges, and V - E + F = 2 (which, with
+// the faces connected, also excludes pinched vertices).
+bool closesIntoSphere(const ControlCage& cage);
+
+// Limit points per patch edge at which a Catmull-Clark surface's convexity
+// is checked: a grid of (n + 1)^2 points over every patch (a bilinear one
+// needs its corners only).
+inline constexpr int kConvexitySamplesPerPatchEdge = 8;
+
+// How far a sampled surface is from convex, and where an eye stands, both in
+// diagonals of the surface's bounding box.
+struct ConvexityCheck {
+  // The largest height of a sample above the tangent plane of another
+  // (outward, OpenSubdiv's limit normal): 0 for the samples of a convex
+  // surface; the first value above `stopAbove` when the check stopped early.
+  double excess = 0.0;
+  // The largest height of the eye above a sample's tangent plane: above
+  // the excess, the eye is outside.
+  double eyeClearance = 0.0;
+  std::size_t samples = 0;
+};
+
+ConvexityCheck checkConvexity(const SubdivisionSurface& surface, const PatchBvh& bvh, const glm::dvec3& eye,
+                              double stopAbove = std::numeric_limits<double>::infinity());
+
+// The excess, in diagonals, below which a surface counts as convex: a tenth
+// of the leaving offset (SHADOW_OFFSET_IN_DIAGONALS of rules/shading/lights.h),
+// so that no ray starting that far above a tangent plane can come back down
+// to the surface.
+inline constexpr double kConvexTolerance = 1e-7;
+
+// Why no continuation of `scene`'s paths can hit anything, for the render
+// report; none where one may (or where the scene has no paths).
+std::optional<std::string> whyNoPathContinues(const Scene& scene, const SceneGeometry& geometry);
+
+}  // namespace facet::scene
