@@ -80,13 +80,14 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
 void applyTransmission(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
                        const glm::dvec3& base, double metallic, materials::Material& m);
 
-// gltf_meshes.cpp: adds the primitives of one mesh instance as one welded
-// cage, with its NORMALs per face corner when every primitive has them
-// (shading normals of the mesh as authored), and likewise its TEXCOORD_0 as a
-// face-varying channel: one value per welded vertex and coordinate, so
-// corners that share both stay joined and the rest form seams.
-ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const GltfReader& reader,
-                   const std::string& where);
+// gltf_meshes.cpp: adds `primitives` (indices into the mesh's, which share
+// one material) of one mesh instance as one welded cage, with their NORMALs
+// per face corner when every one has them (shading normals of the mesh as
+// authored), and likewise their TEXCOORD_0 as a face-varying channel: one
+// value per welded vertex and coordinate, so corners that share both stay
+// joined and the rest form seams.
+ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& primitives, const glm::dmat4& world,
+                   const GltfReader& reader, const std::string& where);
 
 // gltf_nodes.cpp
 glm::dmat4 localTransform(const tinygltf::Node& node);

@@ -88,6 +88,35 @@ void checkImageViews(std::string_view json, const std::string& source) {
   }
 }
 
+// The primitives of `mesh` by the scene material they use, in the order each
+// material first appears: every group becomes one object, so each primitive
+// keeps its own material while those sharing one weld into one cage.
+std::vector<std::pair<int, std::vector<std::size_t>>> materialGroups(const tinygltf::Mesh& mesh,
+                                                                     int defaultMaterialIndex,
+                                                                     const detail::GltfReader& reader,
+                                                                     const std::string& where) {
+  std::vector<std::pair<int, std::vector<std::size_t>>> groups;
+  for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+    const int material = mesh.primitives[p].material;
+    if (material < -1 || material >= defaultMaterialIndex)
+      reader.fail(where + ".primitives[" + std::to_string(p) + "].material",
+                  "material index " + std::to_string(material) + " out of range (the file has " +
+                      std::to_string(defaultMaterialIndex) + " materials)");
+    const int index = material >= 0 ? material : defaultMaterialIndex;
+    auto group = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == index; });
+    if (group == groups.end()) group = groups.insert(groups.end(), {index, {}});
+    group->second.push_back(p);
+  }
+  return groups;
+}
+
+// The name of a mesh instance's object `k`: the mesh's name, then name.1, name.2, ...
+std::string objectName(const std::string& mesh, std::size_t k) {
+  std::string name = mesh;
+  if (k > 0) name.append(".").append(std::to_string(k));
+  return name;
+}
+
 }  // namespace
 
 Scene loadGltfScene(const std::filesystem::path& path) {
@@ -133,20 +162,17 @@ Scene loadGltfScene(const std::filesystem::path& path) {
       if (std::size_t(node.mesh) >= model.meshes.size()) reader.fail(where, "mesh index out of range");
       const tinygltf::Mesh& mesh = model.meshes[std::size_t(node.mesh)];
       const std::string meshWhere = "meshes[" + std::to_string(node.mesh) + "]";
-      for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
-        const int material = mesh.primitives[p].material;
-        if (material < -1 || material >= defaultMaterialIndex)
-          reader.fail(meshWhere + ".primitives[" + std::to_string(p) + "].material",
-                      "material index " + std::to_string(material) + " out of range (the file has " +
-                          std::to_string(defaultMaterialIndex) + " materials)");
+      const std::size_t firstObject = scene.objects.size();
+      for (const auto& [material, primitives] : materialGroups(mesh, defaultMaterialIndex, reader, meshWhere)) {
+        Object object;
+        object.name = objectName(mesh.name.empty() ? where : mesh.name, scene.objects.size() - firstObject);
+        object.cage = detail::toCage(mesh, primitives, world, reader, meshWhere);
+        if (object.cage.faceCount() == 0) continue;  // only triangles without area
+        object.subdivision = Subdivision::None;
+        object.material = material;
+        scene.objects.push_back(std::move(object));
       }
-      Object object;
-      object.name = mesh.name.empty() ? where : mesh.name;
-      object.cage = detail::toCage(mesh, world, reader, meshWhere);
-      object.subdivision = Subdivision::None;
-      const int material = mesh.primitives.empty() ? -1 : mesh.primitives.front().material;
-      object.material = material >= 0 ? material : defaultMaterialIndex;
-      scene.objects.push_back(std::move(object));
+      if (scene.objects.size() == firstObject) reader.fail(meshWhere, "has no faces");
     }
     if (node.camera >= 0 && !camera) {
       if (std::size_t(node.camera) >= model.cameras.size()) reader.fail(where, "camera index out of range");
