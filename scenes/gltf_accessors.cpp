@@ -29,6 +29,7 @@ std::vector<double> GltfReader::read(int accessorIndex, const std::string& where
                                                    a.componentType) == format.componentTypes.end())
     fail(where, accessor + " must be " + format.name + ", is componentType " + std::to_string(a.componentType) +
                     " with " + std::to_string(components) + " components");
+  if (a.sparse.isSparse) fail(where, accessor + " is sparse, and sparse accessors are not read");
   if (a.bufferView < 0 || std::size_t(a.bufferView) >= model_.bufferViews.size())
     fail(where, "accessor has no buffer view (sparse accessors are not supported)");
   const tinygltf::BufferView& view = model_.bufferViews[std::size_t(a.bufferView)];

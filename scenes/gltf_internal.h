@@ -35,6 +35,13 @@ class GltfReader {
   [[noreturn]] void fail(const std::string& where, const std::string& rule) const {
     throw InputError(source_, 0, where, rule);
   }
+  // Notes that facet renders field `where` otherwise than the file says, as
+  // `what` tells; the same `what` again counts as one line naming the first
+  // field (gltf_extensions.cpp).
+  void warn(const std::string& where, const std::string& what) const;
+  // One line per distinct warning: "FILE: FIELD: what", "FILE: FIELD (and N
+  // more): what" when repeated.
+  std::vector<std::string> warnings() const;
 
   // The elements of an accessor as doubles (components × count), checked
   // against `format` and against the bounds of its buffer; normalized
@@ -44,8 +51,14 @@ class GltfReader {
  private:
   static double component(const unsigned char* p, int type);
 
+  struct Warning {
+    std::string where, what;
+    int repeats = 0;
+  };
+
   const tinygltf::Model& model_;
   std::string source_;
+  mutable std::vector<Warning> warnings_;  // noted while the const reader reads the file
 };
 
 // The scene's textures, converted from the glTF file's as materials use
@@ -88,6 +101,17 @@ void applyTransmission(const tinygltf::Material& gltf, const std::string& materi
 // joined and the rest form seams.
 ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& primitives, const glm::dmat4& world,
                    const GltfReader& reader, const std::string& where);
+
+// gltf_extensions.cpp: refuses a file whose extensionsRequired names an
+// extension facet does not implement (glTF 2.0, 3.12), and warns of each
+// used one it ignores and of the core features it does not render as written.
+void checkExtensions(const tinygltf::Model& model, const GltfReader& reader);
+void warnOfIgnoredFeatures(const tinygltf::Model& model, const GltfReader& reader);
+
+// Whether the faces of `cages` together have an edge that only one of them
+// uses (edges compared by their ends' positions, so that a mesh instance
+// split by material counts as the one surface it is).
+bool hasBoundary(const std::vector<const ControlCage*>& cages);
 
 // gltf_nodes.cpp
 glm::dmat4 localTransform(const tinygltf::Node& node);

@@ -117,6 +117,21 @@ std::string objectName(const std::string& mesh, std::size_t k) {
   return name;
 }
 
+// glTF culls the back faces of a material that is not doubleSided (the
+// default); facet renders both, which shows only where the surface is open.
+void warnOfOneSidedOpenMesh(const tinygltf::Model& model, const Scene& scene, std::size_t firstObject,
+                            const detail::GltfReader& reader) {
+  std::vector<const ControlCage*> cages;
+  for (std::size_t o = firstObject; o < scene.objects.size(); ++o) cages.push_back(&scene.objects[o].cage);
+  if (!detail::hasBoundary(cages)) return;
+  for (std::size_t o = firstObject; o < scene.objects.size(); ++o) {
+    const std::size_t material = std::size_t(scene.objects[o].material);
+    if (material < model.materials.size() && !model.materials[material].doubleSided)
+      reader.warn("materials[" + std::to_string(material) + "].doubleSided",
+                  "false is not read; the back faces of its open meshes render too");
+  }
+}
+
 }  // namespace
 
 Scene loadGltfScene(const std::filesystem::path& path) {
@@ -140,6 +155,13 @@ Scene loadGltfScene(const std::filesystem::path& path) {
           : loader.LoadASCIIFromString(&model, &error, &warning, file.data(), unsigned(file.size()), baseDir);
   if (!ok) throw InputError(source, 0, "cannot load glTF", error.empty() ? "unknown tinygltf error" : error);
   const detail::GltfReader reader(model, source);
+  detail::checkExtensions(model, reader);
+  for (std::size_t start = 0; start < warning.size();) {  // tinygltf's, one per line
+    const std::size_t end = std::min(warning.find('\n', start), warning.size());
+    if (end > start) reader.warn("tinygltf", warning.substr(start, end - start));
+    start = end + 1;
+  }
+  detail::warnOfIgnoredFeatures(model, reader);
 
   Scene scene;
   scene.source = path;
@@ -173,11 +195,17 @@ Scene loadGltfScene(const std::filesystem::path& path) {
         scene.objects.push_back(std::move(object));
       }
       if (scene.objects.size() == firstObject) reader.fail(meshWhere, "has no faces");
+      warnOfOneSidedOpenMesh(model, scene, firstObject, reader);
     }
     if (node.camera >= 0 && !camera) {
       if (std::size_t(node.camera) >= model.cameras.size()) reader.fail(where, "camera index out of range");
       const tinygltf::Camera& c = model.cameras[std::size_t(node.camera)];
-      if (c.type == "perspective") camera = detail::toCamera(c, node.camera, world, reader, where);
+      if (c.type == "perspective")
+        camera = detail::toCamera(c, node.camera, world, reader, where);
+      else
+        reader.warn(where + ".camera",
+                    "only perspective cameras are read; the view is the first perspective "
+                    "camera's, or one framing the scene");
     }
     if (auto light = node.extensions.find("KHR_lights_punctual");
         light != node.extensions.end() && light->second.Has("light")) {
@@ -191,6 +219,7 @@ Scene loadGltfScene(const std::filesystem::path& path) {
   if (scene.objects.empty()) throw InputError(source, 0, "no meshes", "the glTF scene has no node with a mesh");
   scene.camera = camera ? *camera : frameBounds(cageBounds(scene));
   if (scene.lights.empty()) addDefaultLighting(scene);
+  scene.warnings = reader.warnings();
   return scene;
 }
 

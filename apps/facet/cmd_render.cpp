@@ -22,6 +22,7 @@
 #include "progress_log.h"
 #include "render_summary.h"
 #include "scene_options.h"
+#include "scene_warnings.h"
 #include "scenes/scene_file.h"
 
 namespace facet::cli {
@@ -109,6 +110,7 @@ void runRender(const RenderCommandOptions& o) {
   for (const RenderJob& job : jobs) checkOutputs(job, o);
   chosenExrLayers(o.exrFlags);
   scene::Scene scene = scene::loadScene(o.scene);
+  printSceneWarnings(scene);
   applySceneOverrides(o.scene_overrides, scene);
   const int width = scene.render.width, height = scene.render.height;
   const std::optional<PixelRect> crop = chosenCrop(o.farm, width, height);
