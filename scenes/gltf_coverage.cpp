@@ -13,7 +13,7 @@ namespace {
 
 // The extensions facet implements; the one list the loader and its messages read.
 constexpr std::string_view kImplemented[] = {
-    "KHR_lights_punctual",  "KHR_materials_ior",     "KHR_materials_transmission",
+    "KHR_lights_punctual",  "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_transmission",
     "KHR_materials_volume", "KHR_texture_transform",
 };
 
@@ -26,7 +26,6 @@ constexpr Fallback kFallbacks[] = {
     {"KHR_materials_clearcoat", "the base without its clear coat"},
     {"KHR_materials_diffuse_transmission", "the base, opaque"},
     {"KHR_materials_dispersion", "one index of refraction for every wavelength"},
-    {"KHR_materials_emissive_strength", "emissiveFactor alone, at most 1"},
     {"KHR_materials_iridescence", "the base without its thin film"},
     {"KHR_materials_pbrSpecularGlossiness", "the material's metallic-roughness parameters"},
     {"KHR_materials_sheen", "the base without its sheen"},

@@ -87,6 +87,13 @@ class TextureTable {
 materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index, const GltfReader& reader,
                                TextureTable& textures);
 
+// gltf_transmission.cpp: member `key` of extension object `value` at field
+// `where`, a finite number; `fallback` when absent.
+double member(const tinygltf::Value& value, const char* key, double fallback, const std::string& where,
+              const GltfReader& reader);
+// Extension `name` of a material; null when it has none.
+const tinygltf::Value* extension(const tinygltf::Material& gltf, const char* name);
+
 // gltf_transmission.cpp: KHR_materials_ior, KHR_materials_transmission and
 // KHR_materials_volume of `gltf` (field `material`) into `m`, whose base
 // colour factor and metallic factor are `base` and `metallic`.

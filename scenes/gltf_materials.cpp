@@ -162,6 +162,15 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
       reader.fail(material + ".emissiveFactor", "every component must be in [0, 1], is " + formatNumber(c));
   if (gltf.emissiveFactor.size() == 3)
     m.emission = {gltf.emissiveFactor[0], gltf.emissiveFactor[1], gltf.emissiveFactor[2]};
+  // KHR_materials_emissive_strength: the one way past the factor's cap of 1.
+  if (const tinygltf::Value* e = extension(gltf, "KHR_materials_emissive_strength")) {
+    const std::string at = material + ".extensions.KHR_materials_emissive_strength";
+    const double strength = member(*e, "emissiveStrength", 1.0, at, reader);
+    if (!(strength >= 0.0)) reader.fail(at + ".emissiveStrength", "must be >= 0, is " + formatNumber(strength));
+    m.emission *= strength;
+    if (const std::optional<std::string> rule = radianceRule(m.emission))
+      reader.fail(at + ".emissiveStrength", "emissiveFactor times emissiveStrength " + *rule);
+  }
 
   materials::MaterialTextures t;
   t.baseColor = base;

@@ -11,9 +11,7 @@
 #include "scenes/value_rules.h"
 
 namespace facet::scene::detail {
-namespace {
 
-// Member `key` of extension object `value`, a finite number; `fallback` when absent.
 double member(const tinygltf::Value& value, const char* key, double fallback, const std::string& where,
               const GltfReader& reader) {
   if (!value.Has(key)) return fallback;
@@ -26,8 +24,6 @@ const tinygltf::Value* extension(const tinygltf::Material& gltf, const char* nam
   const auto found = gltf.extensions.find(name);
   return found == gltf.extensions.end() ? nullptr : &found->second;
 }
-
-}  // namespace
 
 void applyTransmission(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
                        const glm::dvec3& base, double metallic, materials::Material& m) {
