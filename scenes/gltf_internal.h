@@ -68,9 +68,12 @@ class TextureTable {
   TextureTable(const tinygltf::Model& model, const GltfReader& reader, std::vector<Texture>& textures)
       : model_(model), reader_(reader), textures_(textures) {}
 
-  // The slot of the texture info at field `where`: texture `index` with its extensions.
+  // The slot of the texture info at field `where`: texture `index` with its
+  // extensions. One on a coordinate set other than TEXCOORD_0 is an error,
+  // or, where `withoutIt` says how the surface renders without the slot (one
+  // that only refines the look), no slot and a warning.
   materials::TextureSlot slot(const tinygltf::ExtensionMap& extensions, int index, int texCoord,
-                              TextureEncoding encoding, const std::string& where);
+                              TextureEncoding encoding, const std::string& where, const char* withoutIt = nullptr);
 
  private:
   double number(const tinygltf::Value& value, const std::string& where) const;

@@ -115,6 +115,33 @@ TEST_F(GltfCoverage, SparseAccessorsAreRefused) {
       ThrowsMessage<InputError>(HasSubstr("POSITION: accessors[0] is sparse, and sparse accessors are not read")));
 }
 
+TEST_F(GltfCoverage, AnOcclusionMapOnASecondCoordinateSetIsDroppedWithAWarning) {
+  ASSERT_TRUE(facet::testing::writePng(dir_ / "grey.png", 4, 4,
+                                       facet::testing::checkerTexels(4, 2, {90, 90, 90, 255}, {200, 200, 200, 255})));
+  const nlohmann::json images = {{"images", {{{"uri", "grey.png"}}}}, {"textures", {{{"source", 0}}}}};
+  const Scene scene = load("occlusion", {{"occlusionTexture", {{"index", 0}, {"texCoord", 1}}}}, images);
+  EXPECT_FALSE(scene.materials.at(0).textures.has_value());  // the material reads no texture
+  EXPECT_THAT(scene.warnings, ElementsAre(HasSubstr("materials[0].occlusionTexture.texCoord: only TEXCOORD_0 is "
+                                                    "read, so this slot on TEXCOORD_1 is dropped: the environment")));
+  // KHR_texture_transform's texCoord overrides the slot's; the base colour still reads TEXCOORD_0.
+  const nlohmann::json onSet1 = {{"KHR_texture_transform", {{"texCoord", 1}}}};
+  const Scene both = load("both",
+                          {{"occlusionTexture", {{"index", 0}, {"extensions", onSet1}}},
+                           {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}},
+                          images);
+  ASSERT_TRUE(both.materials.at(0).textures.has_value());
+  EXPECT_GE(both.materials[0].textures->baseColorTexture.texture, 0);
+  EXPECT_EQ(both.materials[0].textures->occlusionTexture.texture, -1);
+  EXPECT_EQ(both.warnings.size(), 1u);
+  // Any other slot on TEXCOORD_1 would render wrong: the file is refused.
+  EXPECT_THAT(
+      [&] {
+        load("base", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 1}}}}}}, images);
+      },
+      ThrowsMessage<InputError>(HasSubstr(
+          "materials[0].pbrMetallicRoughness.baseColorTexture.texCoord: only TEXCOORD_0 is read, not TEXCOORD_1")));
+}
+
 TEST_F(GltfCoverage, AClosedMeshOfAOneSidedMaterialIsNoWarning) {
   // A bipyramid of one material, doubleSided false by default: culling would hide nothing.
   EXPECT_THAT(loadScene(std::string(FACET_TEST_DATA_DIR) + "/faceted_gem.gltf").warnings, IsEmpty());
