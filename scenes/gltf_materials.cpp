@@ -203,6 +203,11 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
   for (const materials::TextureSlot* s :
        {&t.baseColorTexture, &t.metallicRoughnessTexture, &t.normalTexture, &t.occlusionTexture, &t.emissiveTexture})
     if (s->texture >= 0) m.textures = t;
+  // The textured rule derives F(0) per hit from the base colour and metallic alone.
+  for (const char* name : {"KHR_materials_ior", "KHR_materials_specular"})
+    if (m.textures && !materials::isTransmissive(m) && extension(gltf, name))
+      reader.warn(material + ".extensions." + name,
+                  "is not applied to a material that reads textures: its dielectric F(0) is 0.04");
   return m;
 }
 
