@@ -44,12 +44,18 @@ class GltfReader {
   std::vector<std::string> warnings() const;
 
   // The elements of an accessor as doubles (components × count), checked
-  // against `format` and against the bounds of its buffer; normalized
-  // integers of a format that allows them map to [0, 1] (glTF 2.0, 3.11).
+  // against `format` and against the bounds of its buffer, with its sparse
+  // substitution applied; normalized integers of a format that allows them
+  // map to [0, 1] (glTF 2.0, 3.11).
   std::vector<double> read(int accessorIndex, const std::string& where, const ElementFormat& format) const;
 
  private:
   static double component(const unsigned char* p, int type);
+  // The first of `count` elements of `elementBytes` at `byteOffset` in buffer
+  // view `viewIndex`, and their stride, once they are checked to lie inside it.
+  std::pair<const unsigned char*, std::size_t> elements(int viewIndex, std::size_t byteOffset, std::size_t count,
+                                                        std::size_t elementBytes, const std::string& where,
+                                                        const std::string& accessor) const;
 
   struct Warning {
     std::string where, what;

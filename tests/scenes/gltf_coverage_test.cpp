@@ -106,13 +106,34 @@ TEST_F(GltfCoverage, LightRangesAndOrthographicCamerasAreWarnings) {
                                      "as 1/d^2")));
 }
 
-TEST_F(GltfCoverage, SparseAccessorsAreRefused) {
+TEST_F(GltfCoverage, SparseAccessorsSubstituteTheirValues) {
+  // Vertex 3 (the index at byte 10 of the index view) takes vertex 0's position
+  // (the first of the position view): the upper left triangle loses its area.
   nlohmann::json parts = {{"accessors", facet::testing::texturedQuadAccessors()}};
-  parts["accessors"][0]["sparse"] = {
-      {"count", 1}, {"indices", {{"bufferView", 2}, {"componentType", 5123}}}, {"values", {{"bufferView", 0}}}};
-  EXPECT_THAT(
-      [&] { load("sparse", nlohmann::json::object(), parts); },
-      ThrowsMessage<InputError>(HasSubstr("POSITION: accessors[0] is sparse, and sparse accessors are not read")));
+  parts["accessors"][0]["sparse"] = {{"count", 1},
+                                     {"indices", {{"bufferView", 2}, {"byteOffset", 10}, {"componentType", 5123}}},
+                                     {"values", {{"bufferView", 0}}}};
+  const Scene scene = load("sparse", nlohmann::json::object(), parts);
+  ASSERT_EQ(scene.objects.size(), 1u);
+  EXPECT_EQ(scene.objects[0].cage.faceCount(), 1);
+  EXPECT_EQ(scene.objects[0].cage.vertexCount(), 3);
+  EXPECT_THAT(load("dense", nlohmann::json::object()).objects.at(0).cage.faceCount(), 2);
+  // Without a buffer view the values are zeros before the substitution:
+  // TEXCOORD_0 (0, 0) but at vertex 3, which takes the first of the view's (0, 1).
+  nlohmann::json zeros = {{"accessors", facet::testing::texturedQuadAccessors()}};
+  zeros["accessors"][1].erase("bufferView");
+  zeros["accessors"][1]["sparse"] = parts["accessors"][0]["sparse"];
+  zeros["accessors"][1]["sparse"]["values"] = {{"bufferView", 1}};
+  const ControlCage cage = load("zeros", nlohmann::json::object(), zeros).objects.at(0).cage;
+  EXPECT_THAT(cage.texcoords,  // one per vertex
+              UnorderedElementsAre(glm::dvec2(0.0), glm::dvec2(0.0), glm::dvec2(0.0), glm::dvec2(0.0, 1.0)));
+  zeros["accessors"][1]["count"] = 1 << 30;
+  EXPECT_THAT([&] { load("huge", nlohmann::json::object(), zeros); },
+              ThrowsMessage<InputError>(HasSubstr("accessors[1] has no buffer view, and such an accessor may have")));
+  // An index past the accessor's count (a float's bits read as an integer) is an error.
+  parts["accessors"][0]["sparse"]["indices"] = {{"bufferView", 0}, {"byteOffset", 0}, {"componentType", 5125}};
+  EXPECT_THAT([&] { load("bad", nlohmann::json::object(), parts); },
+              ThrowsMessage<InputError>(HasSubstr("POSITION: accessors[0].sparse.indices: index ")));
 }
 
 TEST_F(GltfCoverage, AnOcclusionMapOnASecondCoordinateSetIsDroppedWithAWarning) {
