@@ -103,9 +103,10 @@ double member(const tinygltf::Value& value, const char* key, double fallback, co
 // Extension `name` of a material; null when it has none.
 const tinygltf::Value* extension(const tinygltf::Material& gltf, const char* name);
 
-// gltf_transmission.cpp: KHR_materials_ior, KHR_materials_transmission and
-// KHR_materials_volume of `gltf` (field `material`) into `m`, whose base
-// colour factor and metallic factor are `base` and `metallic`.
+// gltf_transmission.cpp: KHR_materials_ior, KHR_materials_specular,
+// KHR_materials_transmission and KHR_materials_volume of `gltf` (field
+// `material`) into `m`, whose base colour factor and metallic factor are
+// `base` and `metallic`.
 void applyTransmission(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
                        const glm::dvec3& base, double metallic, materials::Material& m);
 

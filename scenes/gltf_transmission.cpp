@@ -1,5 +1,6 @@
-// glTF's KHR_materials_transmission, KHR_materials_volume and
-// KHR_materials_ior as facet's transmissive materials (docs/scene-format.md).
+// glTF's KHR_materials_ior and KHR_materials_specular as a dielectric's F(0),
+// and KHR_materials_transmission and KHR_materials_volume as facet's
+// transmissive materials (docs/gltf.md).
 #include <glm/common.hpp>
 
 #include <cmath>
