@@ -35,17 +35,36 @@ class GltfReader {
   [[noreturn]] void fail(const std::string& where, const std::string& rule) const {
     throw InputError(source_, 0, where, rule);
   }
+  // Notes that facet renders field `where` otherwise than the file says, as
+  // `what` tells; the same `what` again counts as one line naming the first
+  // field (gltf_extensions.cpp).
+  void warn(const std::string& where, const std::string& what) const;
+  // One line per distinct warning: "FILE: FIELD: what", "FILE: FIELD (and N
+  // more): what" when repeated.
+  std::vector<std::string> warnings() const;
 
   // The elements of an accessor as doubles (components × count), checked
-  // against `format` and against the bounds of its buffer; normalized
-  // integers of a format that allows them map to [0, 1] (glTF 2.0, 3.11).
+  // against `format` and against the bounds of its buffer, with its sparse
+  // substitution applied; normalized integers of a format that allows them
+  // map to [0, 1] (glTF 2.0, 3.11).
   std::vector<double> read(int accessorIndex, const std::string& where, const ElementFormat& format) const;
 
  private:
   static double component(const unsigned char* p, int type);
+  // The first of `count` elements of `elementBytes` at `byteOffset` in buffer
+  // view `viewIndex`, and their stride, once they are checked to lie inside it.
+  std::pair<const unsigned char*, std::size_t> elements(int viewIndex, std::size_t byteOffset, std::size_t count,
+                                                        std::size_t elementBytes, const std::string& where,
+                                                        const std::string& accessor) const;
+
+  struct Warning {
+    std::string where, what;
+    int repeats = 0;
+  };
 
   const tinygltf::Model& model_;
   std::string source_;
+  mutable std::vector<Warning> warnings_;  // noted while the const reader reads the file
 };
 
 // The scene's textures, converted from the glTF file's as materials use
@@ -55,9 +74,12 @@ class TextureTable {
   TextureTable(const tinygltf::Model& model, const GltfReader& reader, std::vector<Texture>& textures)
       : model_(model), reader_(reader), textures_(textures) {}
 
-  // The slot of the texture info at field `where`: texture `index` with its extensions.
+  // The slot of the texture info at field `where`: texture `index` with its
+  // extensions. One on a coordinate set other than TEXCOORD_0 is an error,
+  // or, where `withoutIt` says how the surface renders without the slot (one
+  // that only refines the look), no slot and a warning.
   materials::TextureSlot slot(const tinygltf::ExtensionMap& extensions, int index, int texCoord,
-                              TextureEncoding encoding, const std::string& where);
+                              TextureEncoding encoding, const std::string& where, const char* withoutIt = nullptr);
 
  private:
   double number(const tinygltf::Value& value, const std::string& where) const;
@@ -74,19 +96,39 @@ class TextureTable {
 materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index, const GltfReader& reader,
                                TextureTable& textures);
 
-// gltf_transmission.cpp: KHR_materials_ior, KHR_materials_transmission and
-// KHR_materials_volume of `gltf` (field `material`) into `m`, whose base
-// colour factor and metallic factor are `base` and `metallic`.
+// gltf_transmission.cpp: member `key` of extension object `value` at field
+// `where`, a finite number; `fallback` when absent.
+double member(const tinygltf::Value& value, const char* key, double fallback, const std::string& where,
+              const GltfReader& reader);
+// Extension `name` of a material; null when it has none.
+const tinygltf::Value* extension(const tinygltf::Material& gltf, const char* name);
+
+// gltf_transmission.cpp: KHR_materials_ior, KHR_materials_specular,
+// KHR_materials_transmission and KHR_materials_volume of `gltf` (field
+// `material`) into `m`, whose base colour factor and metallic factor are
+// `base` and `metallic`.
 void applyTransmission(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
                        const glm::dvec3& base, double metallic, materials::Material& m);
 
-// gltf_meshes.cpp: adds the primitives of one mesh instance as one welded
-// cage, with its NORMALs per face corner when every primitive has them
-// (shading normals of the mesh as authored), and likewise its TEXCOORD_0 as a
-// face-varying channel: one value per welded vertex and coordinate, so
-// corners that share both stay joined and the rest form seams.
-ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const GltfReader& reader,
-                   const std::string& where);
+// gltf_meshes.cpp: adds `primitives` (indices into the mesh's, which share
+// one material) of one mesh instance as one welded cage, with their NORMALs
+// per face corner when every one has them (shading normals of the mesh as
+// authored), and likewise their TEXCOORD_0 as a face-varying channel: one
+// value per welded vertex and coordinate, so corners that share both stay
+// joined and the rest form seams.
+ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& primitives, const glm::dmat4& world,
+                   const GltfReader& reader, const std::string& where);
+
+// gltf_extensions.cpp: refuses a file whose extensionsRequired names an
+// extension facet does not implement (glTF 2.0, 3.12), and warns of each
+// used one it ignores and of the core features it does not render as written.
+void checkExtensions(const tinygltf::Model& model, const GltfReader& reader);
+void warnOfIgnoredFeatures(const tinygltf::Model& model, const GltfReader& reader);
+
+// Whether the faces of `cages` together have an edge that only one of them
+// uses (edges compared by their ends' positions, so that a mesh instance
+// split by material counts as the one surface it is).
+bool hasBoundary(const std::vector<const ControlCage*>& cages);
 
 // gltf_nodes.cpp
 glm::dmat4 localTransform(const tinygltf::Node& node);

@@ -63,7 +63,7 @@ TextureSampler toSampler(const tinygltf::Sampler& gltf, const std::string& where
 }  // namespace
 
 materials::TextureSlot TextureTable::slot(const tinygltf::ExtensionMap& extensions, int index, int texCoord,
-                                          TextureEncoding encoding, const std::string& where) {
+                                          TextureEncoding encoding, const std::string& where, const char* withoutIt) {
   materials::TextureSlot slot;
   if (index == -1) return slot;  // tinygltf's "no texture"; any other negative index is the file's error
   if (index < 0 || std::size_t(index) >= model_.textures.size())
@@ -77,8 +77,13 @@ materials::TextureSlot TextureTable::slot(const tinygltf::ExtensionMap& extensio
     if (transform.Has("rotation")) slot.rotation = number(transform.Get("rotation"), at + ".rotation");
     if (transform.Has("texCoord")) texCoord = int(number(transform.Get("texCoord"), at + ".texCoord"));
   }
-  if (texCoord != 0)
+  if (texCoord != 0 && !withoutIt)
     reader_.fail(where + ".texCoord", "only TEXCOORD_0 is read, not TEXCOORD_" + std::to_string(texCoord));
+  if (texCoord != 0) {
+    reader_.warn(where + ".texCoord", "only TEXCOORD_0 is read, so this slot on TEXCOORD_" + std::to_string(texCoord) +
+                                          " is dropped: " + withoutIt);
+    return {};
+  }
   auto [cached, fresh] = cache_.try_emplace({index, encoding}, int(textures_.size()));
   if (fresh) textures_.push_back(convert(index, encoding));
   slot.texture = cached->second;
@@ -162,6 +167,15 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
       reader.fail(material + ".emissiveFactor", "every component must be in [0, 1], is " + formatNumber(c));
   if (gltf.emissiveFactor.size() == 3)
     m.emission = {gltf.emissiveFactor[0], gltf.emissiveFactor[1], gltf.emissiveFactor[2]};
+  // KHR_materials_emissive_strength: the one way past the factor's cap of 1.
+  if (const tinygltf::Value* e = extension(gltf, "KHR_materials_emissive_strength")) {
+    const std::string at = material + ".extensions.KHR_materials_emissive_strength";
+    const double strength = member(*e, "emissiveStrength", 1.0, at, reader);
+    if (!(strength >= 0.0)) reader.fail(at + ".emissiveStrength", "must be >= 0, is " + formatNumber(strength));
+    m.emission *= strength;
+    if (const std::optional<std::string> rule = radianceRule(m.emission))
+      reader.fail(at + ".emissiveStrength", "emissiveFactor times emissiveStrength " + *rule);
+  }
 
   materials::MaterialTextures t;
   t.baseColor = base;
@@ -178,8 +192,8 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
       textures.slot(n.extensions, n.index, n.texCoord, TextureEncoding::Linear, material + ".normalTexture");
   t.normalScale = n.scale;
   const auto& o = gltf.occlusionTexture;
-  t.occlusionTexture =
-      textures.slot(o.extensions, o.index, o.texCoord, TextureEncoding::Linear, material + ".occlusionTexture");
+  t.occlusionTexture = textures.slot(o.extensions, o.index, o.texCoord, TextureEncoding::Linear,
+                                     material + ".occlusionTexture", "the environment lights the surface unoccluded");
   if (const std::optional<std::string> rule = rangeRule(o.strength, 0.0, 1.0))
     reader.fail(material + ".occlusionTexture.strength", *rule);
   t.occlusionStrength = o.strength;
@@ -189,6 +203,11 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
   for (const materials::TextureSlot* s :
        {&t.baseColorTexture, &t.metallicRoughnessTexture, &t.normalTexture, &t.occlusionTexture, &t.emissiveTexture})
     if (s->texture >= 0) m.textures = t;
+  // The textured rule derives F(0) per hit from the base colour and metallic alone.
+  for (const char* name : {"KHR_materials_ior", "KHR_materials_specular"})
+    if (m.textures && !materials::isTransmissive(m) && extension(gltf, name))
+      reader.warn(material + ".extensions." + name,
+                  "is not applied to a material that reads textures: its dielectric F(0) is 0.04");
   return m;
 }
 

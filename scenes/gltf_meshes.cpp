@@ -58,33 +58,26 @@ std::size_t triangleCount(int mode, std::size_t vertices, const GltfReader& read
 
 }  // namespace
 
-ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const GltfReader& reader,
-                   const std::string& where) {
+ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& primitives, const glm::dmat4& world,
+                   const GltfReader& reader, const std::string& where) {
   ControlCage cage;
   cage.source = where;
   std::map<std::tuple<double, double, double>, int> welded;
   std::map<std::tuple<int, double, double>, int> texcoordValues;
-  const bool normals = std::all_of(mesh.primitives.begin(), mesh.primitives.end(),
-                                   [](const tinygltf::Primitive& p) { return p.attributes.count("NORMAL") != 0; });
-  const bool texcoords = std::all_of(mesh.primitives.begin(), mesh.primitives.end(), [](const tinygltf::Primitive& p) {
-    return p.attributes.count("TEXCOORD_0") != 0;
-  });
+  const auto everyPrimitiveHas = [&](const char* attribute) {
+    return std::all_of(primitives.begin(), primitives.end(),
+                       [&](std::size_t p) { return mesh.primitives[p].attributes.count(attribute) != 0; });
+  };
+  const bool normals = everyPrimitiveHas("NORMAL");
+  const bool texcoords = everyPrimitiveHas("TEXCOORD_0");
   const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(world)));
-  for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+  for (std::size_t p : primitives) {
     const tinygltf::Primitive& primitive = mesh.primitives[p];
     const std::string at = where + ".primitives[" + std::to_string(p) + "]";
     auto position = primitive.attributes.find("POSITION");
     if (position == primitive.attributes.end()) reader.fail(at, "has no POSITION attribute");
     const std::vector<double> xyz = reader.read(position->second, at + ".POSITION", kFloatVec3);
-    std::vector<int> remap(xyz.size() / 3);
-    for (std::size_t v = 0; v < remap.size(); ++v) {
-      const glm::dvec3 p3 = glm::dvec3(world * glm::dvec4(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2], 1.0));
-      if (!std::isfinite(p3.x) || !std::isfinite(p3.y) || !std::isfinite(p3.z))
-        reader.fail(at, "POSITION " + std::to_string(v) + " is not finite");
-      auto [it, inserted] = welded.try_emplace({p3.x, p3.y, p3.z}, cage.vertexCount());
-      if (inserted) cage.positions.push_back(p3);
-      remap[v] = it->second;
-    }
+    std::vector<int> remap(xyz.size() / 3, -1);
     std::vector<glm::dvec3> vertexNormals;
     if (normals) {
       const std::vector<double> n = reader.read(primitive.attributes.at("NORMAL"), at + ".NORMAL", kFloatVec3);
@@ -110,15 +103,27 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
     } else {
       for (std::size_t v = 0; v < remap.size(); ++v) indices.push_back(double(v));
     }
+    for (double index : indices)
+      if (index >= double(remap.size())) reader.fail(at, "index " + formatNumber(index) + " is out of range");
+    // Primitives of other materials often share the POSITION accessor: the
+    // cage takes only the vertices the indices use, in the accessor's order.
+    for (double index : indices) remap[std::size_t(index)] = 0;
+    for (std::size_t v = 0; v < remap.size(); ++v) {
+      const glm::dvec3 p3 = glm::dvec3(world * glm::dvec4(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2], 1.0));
+      if (!std::isfinite(p3.x) || !std::isfinite(p3.y) || !std::isfinite(p3.z))
+        reader.fail(at, "POSITION " + std::to_string(v) + " is not finite");
+      if (remap[v] < 0) continue;
+      auto [it, inserted] = welded.try_emplace({p3.x, p3.y, p3.z}, cage.vertexCount());
+      if (inserted) cage.positions.push_back(p3);
+      remap[v] = it->second;
+    }
     const std::size_t triangles = triangleCount(primitive.mode, indices.size(), reader, at);
     for (std::size_t t = 0; t < triangles; ++t) {
       int corners[3];
       std::size_t vertices[3];
       const std::array<std::size_t, 3> slots = triangleCorners(primitive.mode, t);
       for (int c = 0; c < 3; ++c) {
-        const double index = indices[slots[std::size_t(c)]];
-        if (index >= double(remap.size())) reader.fail(at, "index " + formatNumber(index) + " is out of range");
-        vertices[c] = std::size_t(index);
+        vertices[c] = std::size_t(indices[slots[std::size_t(c)]]);
         corners[c] = remap[vertices[c]];
       }
       // A triangle with two corners at one position (strips join through
@@ -136,7 +141,6 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
       }
     }
   }
-  if (cage.faceCount() == 0) reader.fail(where, "has no faces");
   if (glm::determinant(glm::dmat3(world)) < 0) {
     for (std::size_t f = 0; f < cage.faceVertexIndices.size(); f += 3) {
       std::swap(cage.faceVertexIndices[f + 1], cage.faceVertexIndices[f + 2]);
@@ -145,6 +149,23 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const glm::dmat4& world, const Gl
     }
   }
   return cage;
+}
+
+bool hasBoundary(const std::vector<const ControlCage*>& cages) {
+  using Point = std::tuple<double, double, double>;
+  std::map<std::pair<Point, Point>, int> edges;
+  for (const ControlCage* cage : cages)
+    for (std::size_t f = 0, first = 0; f < cage->faceVertexCounts.size();
+         first += std::size_t(cage->faceVertexCounts[f++]))
+      for (std::size_t c = 0; c < std::size_t(cage->faceVertexCounts[f]); ++c) {
+        const auto point = [&](std::size_t corner) {
+          const glm::dvec3& p = cage->positions[std::size_t(cage->faceVertexIndices[first + corner])];
+          return Point{p.x, p.y, p.z};
+        };
+        const Point a = point(c), b = point((c + 1) % std::size_t(cage->faceVertexCounts[f]));
+        ++edges[std::minmax(a, b)];
+      }
+  return std::any_of(edges.begin(), edges.end(), [](const auto& edge) { return edge.second == 1; });
 }
 
 }  // namespace facet::scene::detail

@@ -42,6 +42,8 @@ Light toLight(const tinygltf::Light& gltf, int index, const glm::dmat4& world, c
   light.color = color * gltf.intensity / std::numbers::pi;
   if (const auto rule = radianceRule(light.color)) reader.fail(field, "color times intensity / pi " + *rule);
   light.position = glm::dvec3(world[3]);
+  if (gltf.range > 0.0)
+    reader.warn(field + ".range", "is not read; the light falls off as 1/d^2 at any distance, as without a range");
   if (gltf.type == "directional") {
     light.type = LightType::Directional;
   } else if (gltf.type == "point") {

@@ -88,6 +88,50 @@ void checkImageViews(std::string_view json, const std::string& source) {
   }
 }
 
+// The primitives of `mesh` by the scene material they use, in the order each
+// material first appears: every group becomes one object, so each primitive
+// keeps its own material while those sharing one weld into one cage.
+std::vector<std::pair<int, std::vector<std::size_t>>> materialGroups(const tinygltf::Mesh& mesh,
+                                                                     int defaultMaterialIndex,
+                                                                     const detail::GltfReader& reader,
+                                                                     const std::string& where) {
+  std::vector<std::pair<int, std::vector<std::size_t>>> groups;
+  for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+    const int material = mesh.primitives[p].material;
+    if (material < -1 || material >= defaultMaterialIndex)
+      reader.fail(where + ".primitives[" + std::to_string(p) + "].material",
+                  "material index " + std::to_string(material) + " out of range (the file has " +
+                      std::to_string(defaultMaterialIndex) + " materials)");
+    const int index = material >= 0 ? material : defaultMaterialIndex;
+    auto group = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == index; });
+    if (group == groups.end()) group = groups.insert(groups.end(), {index, {}});
+    group->second.push_back(p);
+  }
+  return groups;
+}
+
+// The name of a mesh instance's object `k`: the mesh's name, then name.1, name.2, ...
+std::string objectName(const std::string& mesh, std::size_t k) {
+  std::string name = mesh;
+  if (k > 0) name.append(".").append(std::to_string(k));
+  return name;
+}
+
+// glTF culls the back faces of a material that is not doubleSided (the
+// default); facet renders both, which shows only where the surface is open.
+void warnOfOneSidedOpenMesh(const tinygltf::Model& model, const Scene& scene, std::size_t firstObject,
+                            const detail::GltfReader& reader) {
+  std::vector<const ControlCage*> cages;
+  for (std::size_t o = firstObject; o < scene.objects.size(); ++o) cages.push_back(&scene.objects[o].cage);
+  if (!detail::hasBoundary(cages)) return;
+  for (std::size_t o = firstObject; o < scene.objects.size(); ++o) {
+    const std::size_t material = std::size_t(scene.objects[o].material);
+    if (material < model.materials.size() && !model.materials[material].doubleSided)
+      reader.warn("materials[" + std::to_string(material) + "].doubleSided",
+                  "false is not read; the back faces of its open meshes render too");
+  }
+}
+
 }  // namespace
 
 Scene loadGltfScene(const std::filesystem::path& path) {
@@ -111,6 +155,13 @@ Scene loadGltfScene(const std::filesystem::path& path) {
           : loader.LoadASCIIFromString(&model, &error, &warning, file.data(), unsigned(file.size()), baseDir);
   if (!ok) throw InputError(source, 0, "cannot load glTF", error.empty() ? "unknown tinygltf error" : error);
   const detail::GltfReader reader(model, source);
+  detail::checkExtensions(model, reader);
+  for (std::size_t start = 0; start < warning.size();) {  // tinygltf's, one per line
+    const std::size_t end = std::min(warning.find('\n', start), warning.size());
+    if (end > start) reader.warn("tinygltf", warning.substr(start, end - start));
+    start = end + 1;
+  }
+  detail::warnOfIgnoredFeatures(model, reader);
 
   Scene scene;
   scene.source = path;
@@ -133,25 +184,28 @@ Scene loadGltfScene(const std::filesystem::path& path) {
       if (std::size_t(node.mesh) >= model.meshes.size()) reader.fail(where, "mesh index out of range");
       const tinygltf::Mesh& mesh = model.meshes[std::size_t(node.mesh)];
       const std::string meshWhere = "meshes[" + std::to_string(node.mesh) + "]";
-      for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
-        const int material = mesh.primitives[p].material;
-        if (material < -1 || material >= defaultMaterialIndex)
-          reader.fail(meshWhere + ".primitives[" + std::to_string(p) + "].material",
-                      "material index " + std::to_string(material) + " out of range (the file has " +
-                          std::to_string(defaultMaterialIndex) + " materials)");
+      const std::size_t firstObject = scene.objects.size();
+      for (const auto& [material, primitives] : materialGroups(mesh, defaultMaterialIndex, reader, meshWhere)) {
+        Object object;
+        object.name = objectName(mesh.name.empty() ? where : mesh.name, scene.objects.size() - firstObject);
+        object.cage = detail::toCage(mesh, primitives, world, reader, meshWhere);
+        if (object.cage.faceCount() == 0) continue;  // only triangles without area
+        object.subdivision = Subdivision::None;
+        object.material = material;
+        scene.objects.push_back(std::move(object));
       }
-      Object object;
-      object.name = mesh.name.empty() ? where : mesh.name;
-      object.cage = detail::toCage(mesh, world, reader, meshWhere);
-      object.subdivision = Subdivision::None;
-      const int material = mesh.primitives.empty() ? -1 : mesh.primitives.front().material;
-      object.material = material >= 0 ? material : defaultMaterialIndex;
-      scene.objects.push_back(std::move(object));
+      if (scene.objects.size() == firstObject) reader.fail(meshWhere, "has no faces");
+      warnOfOneSidedOpenMesh(model, scene, firstObject, reader);
     }
     if (node.camera >= 0 && !camera) {
       if (std::size_t(node.camera) >= model.cameras.size()) reader.fail(where, "camera index out of range");
       const tinygltf::Camera& c = model.cameras[std::size_t(node.camera)];
-      if (c.type == "perspective") camera = detail::toCamera(c, node.camera, world, reader, where);
+      if (c.type == "perspective")
+        camera = detail::toCamera(c, node.camera, world, reader, where);
+      else
+        reader.warn(where + ".camera",
+                    "only perspective cameras are read; the view is the first perspective "
+                    "camera's, or one framing the scene");
     }
     if (auto light = node.extensions.find("KHR_lights_punctual");
         light != node.extensions.end() && light->second.Has("light")) {
@@ -165,6 +219,7 @@ Scene loadGltfScene(const std::filesystem::path& path) {
   if (scene.objects.empty()) throw InputError(source, 0, "no meshes", "the glTF scene has no node with a mesh");
   scene.camera = camera ? *camera : frameBounds(cageBounds(scene));
   if (scene.lights.empty()) addDefaultLighting(scene);
+  scene.warnings = reader.warnings();
   return scene;
 }
 

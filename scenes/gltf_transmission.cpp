@@ -1,5 +1,6 @@
-// glTF's KHR_materials_transmission, KHR_materials_volume and
-// KHR_materials_ior as facet's transmissive materials (docs/scene-format.md).
+// glTF's KHR_materials_ior and KHR_materials_specular as a dielectric's F(0),
+// and KHR_materials_transmission and KHR_materials_volume as facet's
+// transmissive materials (docs/gltf.md).
 #include <glm/common.hpp>
 
 #include <cmath>
@@ -11,9 +12,7 @@
 #include "scenes/value_rules.h"
 
 namespace facet::scene::detail {
-namespace {
 
-// Member `key` of extension object `value`, a finite number; `fallback` when absent.
 double member(const tinygltf::Value& value, const char* key, double fallback, const std::string& where,
               const GltfReader& reader) {
   if (!value.Has(key)) return fallback;
@@ -27,18 +26,48 @@ const tinygltf::Value* extension(const tinygltf::Material& gltf, const char* nam
   return found == gltf.extensions.end() ? nullptr : &found->second;
 }
 
+namespace {
+
+// KHR_materials_specular: min(F(0) of the index × specularColorFactor, 1) ×
+// specularFactor, the specification's dielectric_f0. Its F(90) would be
+// specularFactor; facet's Schlick F keeps 1 (a warning below 1).
+glm::dvec3 specularF0(const tinygltf::Value& e, const std::string& at, const GltfReader& reader, glm::dvec3 f0) {
+  const double factor = member(e, "specularFactor", 1.0, at, reader);
+  if (const std::optional<std::string> rule = rangeRule(factor, 0.0, 1.0)) reader.fail(at + ".specularFactor", *rule);
+  glm::dvec3 colour(1.0);
+  if (e.Has("specularColorFactor")) {
+    const tinygltf::Value& c = e.Get("specularColorFactor");
+    if (!c.IsArray() || c.ArrayLen() != 3) reader.fail(at + ".specularColorFactor", "must be an array of 3 numbers");
+    for (int i = 0; i < 3; ++i) {
+      const tinygltf::Value& x = c.Get(i);
+      colour[i] = x.IsNumber() ? x.GetNumberAsDouble() : -1.0;
+      if (!(colour[i] >= 0.0) || !std::isfinite(colour[i]))
+        reader.fail(at + ".specularColorFactor", "every component must be a finite number >= 0");
+    }
+  }
+  if (factor < 1.0)
+    reader.warn(at + ".specularFactor", "below 1 scales F(0) only; F(90) stays 1 (facet's Schlick F has no F(90))");
+  for (const char* slot : {"specularTexture", "specularColorTexture"})
+    if (e.Has(slot)) reader.warn(at + "." + slot, "is not read; the factors apply alone");
+  return glm::min(f0 * colour, glm::dvec3(1.0)) * factor;
+}
+
 }  // namespace
 
 void applyTransmission(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
                        const glm::dvec3& base, double metallic, materials::Material& m) {
   const std::string at = material + ".extensions.";
   double ior = 1.5;
-  if (const tinygltf::Value* e = extension(gltf, "KHR_materials_ior")) {
-    ior = member(*e, "ior", 1.5, at + "KHR_materials_ior", reader);
+  const tinygltf::Value* iorExtension = extension(gltf, "KHR_materials_ior");
+  if (iorExtension) {
+    ior = member(*iorExtension, "ior", 1.5, at + "KHR_materials_ior", reader);
     if (!(ior >= 1.0)) reader.fail(at + "KHR_materials_ior.ior", "must be >= 1, is " + formatNumber(ior));
-    // The dielectric's F(0) from its index, in place of 0.04 (= index 1.5).
-    m.f0 = glm::mix(glm::dvec3(std::pow((ior - 1) / (ior + 1), 2.0)), base, metallic);
   }
+  // The dielectric's F(0) from its index, in place of 0.04 (= index 1.5).
+  glm::dvec3 dielectricF0(std::pow((ior - 1) / (ior + 1), 2.0));
+  const tinygltf::Value* specular = extension(gltf, "KHR_materials_specular");
+  if (specular) dielectricF0 = specularF0(*specular, at + "KHR_materials_specular", reader, dielectricF0);
+  if (iorExtension || specular) m.f0 = glm::mix(dielectricF0, base, metallic);
   const tinygltf::Value* t = extension(gltf, "KHR_materials_transmission");
   if (!t) return;
   const std::string where = at + "KHR_materials_transmission";
@@ -48,6 +77,9 @@ void applyTransmission(const tinygltf::Material& gltf, const std::string& materi
   if (const std::optional<std::string> rule = rangeRule(m.transmission, 0.0, 1.0))
     reader.fail(where + ".transmissionFactor", *rule);
   if (!materials::isTransmissive(m)) return;
+  if (specular)
+    reader.warn(at + "KHR_materials_specular",
+                "is not applied to a transmissive material: its Fresnel is the dielectric's of its index");
   if (metallic != 0.0)
     reader.fail(material + ".pbrMetallicRoughness.metallicFactor",
                 "a transmissive material (KHR_materials_transmission) must be a dielectric here: metallicFactor 0, "

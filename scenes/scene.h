@@ -143,6 +143,9 @@ struct Scene {
   std::vector<Light> lights;
   std::optional<Environment> environment;
   RenderSettings render;
+  // What the file says that facet renders otherwise, one line each ("FILE:
+  // FIELD: what facet does instead"); the command line prints them.
+  std::vector<std::string> warnings;
 };
 
 }  // namespace facet::scene

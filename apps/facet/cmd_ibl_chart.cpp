@@ -16,6 +16,7 @@
 #include "data_folder.h"
 #include "material_options.h"
 #include "scene_options.h"
+#include "scene_warnings.h"
 #include "scenes/scene_file.h"
 
 namespace facet::cli {
@@ -70,6 +71,7 @@ void runIblChart(ChartOptions o) {
   settings.alphas = parseAlphas(o.alphas);
   settings.sampleCounts = sampleCounts(o.maxSamples);
   settings.base = scene::loadScene(o.scene);
+  printSceneWarnings(settings.base);
   applyImageSize(o.size, settings.base);
   applyMethod("tess", settings.base);
   StagedOutputFolder folder(o.output);

@@ -18,6 +18,7 @@
 #include "scene_options.h"
 #include "scenes/memory_budget.h"
 #include "scenes/scene_file.h"
+#include "scene_warnings.h"
 
 namespace facet::cli {
 namespace {
@@ -57,6 +58,7 @@ ParityCase judgeScene(const std::string& file, const ParityCommandOptions& o,
                       const analysis::ParityTolerances& tolerances, const std::vector<gpu::AdapterInfo>& adapters,
                       std::vector<std::unique_ptr<Renderer>>& renderers) {
   scene::Scene scene = scene::loadScene(file);
+  printSceneWarnings(scene);
   applySceneOverrides(o.sceneOverrides, scene);
   // The reference's render; per adapter its render, the first pair, the
   // pairs' sums (about an image and a half) and the two mean images.

@@ -23,6 +23,7 @@
 #include "render_summary.h"
 #include "scene_options.h"
 #include "scenes/memory_budget.h"
+#include "scene_warnings.h"
 #include "scenes/scene_file.h"
 
 namespace facet::cli {
@@ -110,6 +111,7 @@ void runRender(const RenderCommandOptions& o) {
   for (const RenderJob& job : jobs) checkOutputs(job, o);
   chosenExrLayers(o.exrFlags);
   scene::Scene scene = scene::loadScene(o.scene);
+  printSceneWarnings(scene);
   applySceneOverrides(o.scene_overrides, scene);
   const int width = scene.render.width, height = scene.render.height;
   const std::optional<PixelRect> crop = chosenCrop(o.farm, width, height);

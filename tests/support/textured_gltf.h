@@ -32,6 +32,19 @@ inline bool writePng(const std::filesystem::path& file, int width, int height, c
   return stbi_write_png(file.c_str(), width, height, 4, texels.data(), width * 4) != 0;
 }
 
+// The accessors of writeTexturedQuad's file: POSITION, TEXCOORD_0 and the
+// six indices of its two triangles (lower right, then upper left).
+inline nlohmann::json texturedQuadAccessors() {
+  return {{{"bufferView", 0},
+           {"componentType", 5126},
+           {"type", "VEC3"},
+           {"count", 4},
+           {"min", {-1, -1, 0}},
+           {"max", {1, 1, 0}}},
+          {{"bufferView", 1}, {"componentType", 5126}, {"type", "VEC2"}, {"count", 4}},
+          {{"bufferView", 2}, {"componentType", 5123}, {"type", "SCALAR"}, {"count", 6}}};
+}
+
 // A glTF file of one quad from (-1, -1, 0) to (1, 1, 0) facing +z, its
 // TEXCOORD_0 (0, 0) at the top-left corner (-1, 1) and (1, 1) at (1, -1), in
 // material 0; `parts` adds its members ("materials", "textures", ...) to
@@ -52,15 +65,7 @@ inline std::filesystem::path writeTexturedQuad(const std::filesystem::path& dir,
       {"nodes", {{{"mesh", 0}}}},
       {"meshes",
        {{{"primitives", {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}}}, {"indices", 2}, {"material", 0}}}}}}},
-      {"accessors",
-       {{{"bufferView", 0},
-         {"componentType", 5126},
-         {"type", "VEC3"},
-         {"count", 4},
-         {"min", {-1, -1, 0}},
-         {"max", {1, 1, 0}}},
-        {{"bufferView", 1}, {"componentType", 5126}, {"type", "VEC2"}, {"count", 4}},
-        {{"bufferView", 2}, {"componentType", 5123}, {"type", "SCALAR"}, {"count", 6}}}},
+      {"accessors", texturedQuadAccessors()},
       {"bufferViews",
        {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", sizeof positions}},
         {{"buffer", 0}, {"byteOffset", sizeof positions}, {"byteLength", sizeof uvs}},

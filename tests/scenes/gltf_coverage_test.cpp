@@ -1,0 +1,188 @@
+// What facet does not render as a glTF file says is never dropped silently:
+// a required extension it lacks refuses the file, and everything else it
+// ignores is a warning on the scene naming the field.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+#include "scenes/input_error.h"
+#include "scenes/scene_file.h"
+#include "tests/support/temp_dir.h"
+#include "tests/support/textured_gltf.h"
+
+namespace facet::scene {
+namespace {
+
+using ::testing::AllOf;
+using ::testing::Contains;
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+using ::testing::IsEmpty;
+using ::testing::ThrowsMessage;
+using ::testing::UnorderedElementsAre;
+
+class GltfCoverage : public facet::testing::TempDirTest {
+ protected:
+  // The textured quad with one double-sided material of `material`'s members
+  // added, and `parts` added to the file's.
+  Scene load(const std::string& name, const nlohmann::json& material, nlohmann::json parts = nlohmann::json::object()) {
+    nlohmann::json m = {{"doubleSided", true}};
+    m.update(material);
+    parts["materials"] = {m};
+    return loadScene(facet::testing::writeTexturedQuad(dir_, name, parts));
+  }
+};
+
+TEST_F(GltfCoverage, AFileOfWhatFacetReadsHasNoWarnings) {
+  const Scene scene = load("plain", {{"extensions", {{"KHR_materials_ior", {{"ior", 1.4}}}}}},
+                           {{"extensionsUsed", {"KHR_materials_ior"}}, {"extensionsRequired", {"KHR_materials_ior"}}});
+  EXPECT_THAT(scene.warnings, IsEmpty());
+}
+
+TEST_F(GltfCoverage, ARequiredExtensionFacetLacksRefusesTheFile) {
+  EXPECT_THAT(
+      [&] {
+        load("unlit", {{"extensions", {{"KHR_materials_unlit", nlohmann::json::object()}}}},
+             {{"extensionsUsed", {"KHR_materials_unlit"}}, {"extensionsRequired", {"KHR_materials_unlit"}}});
+      },
+      ThrowsMessage<InputError>(AllOf(
+          HasSubstr("unlit.gltf: extensionsRequired: extension KHR_materials_unlit is "
+                    "not supported"),
+          HasSubstr("facet implements KHR_lights_punctual, KHR_materials_emissive_strength, KHR_materials_ior"))));
+}
+
+TEST_F(GltfCoverage, EachIgnoredExtensionIsOneWarning) {
+  const nlohmann::json clearcoat = {{"clearcoatFactor", 1.0}};
+  const Scene scene = load("used", {{"extensions", {{"KHR_materials_clearcoat", clearcoat}}}},
+                           {{"extensionsUsed", {"KHR_materials_clearcoat", "EXT_made_up"}}});
+  EXPECT_THAT(scene.warnings,
+              ElementsAre(AllOf(HasSubstr("used.gltf: extensionsUsed: extension KHR_materials_clearcoat is not read"),
+                                HasSubstr("without its clear coat")),
+                          HasSubstr("extensionsUsed: extension EXT_made_up is not read; facet renders the file as if "
+                                    "it were absent")));
+  // An extension the file uses without listing it is found where it is.
+  const Scene unlisted = load("unlisted", {{"extensions", {{"KHR_materials_sheen", nlohmann::json::object()}}}});
+  EXPECT_THAT(unlisted.warnings, ElementsAre(HasSubstr("materials[0].extensions.KHR_materials_sheen: extension "
+                                                       "KHR_materials_sheen is not read")));
+}
+
+TEST_F(GltfCoverage, IgnoredCoreFeaturesAreWarnings) {
+  nlohmann::json parts = {
+      {"animations", {{{"channels", nlohmann::json::array()}, {"samplers", nlohmann::json::array()}}}}};
+  parts["meshes"] = {
+      {{"primitives",
+        {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}, {"COLOR_0", 0}}}, {"indices", 2}, {"material", 0}}}}}};
+  const Scene mask = load("mask", {{"alphaMode", "MASK"}}, parts);
+  EXPECT_THAT(
+      mask.warnings,
+      ElementsAre(HasSubstr("mask.gltf: meshes[0].primitives[0].attributes.COLOR_0: vertex colours are not read"),
+                  HasSubstr("animations: animations are not read"),
+                  HasSubstr("materials[0].alphaMode: MASK is not read; the surface renders opaque")));
+  EXPECT_THAT(load("blend", {{"alphaMode", "BLEND"}}).warnings,
+              ElementsAre(HasSubstr("materials[0].alphaMode: BLEND is not read")));
+  // The quad is open: its back faces would show where glTF culls them.
+  EXPECT_THAT(load("single", {{"doubleSided", false}}).warnings,
+              ElementsAre(HasSubstr("materials[0].doubleSided: false is not read; the back faces of its open meshes "
+                                    "render too")));
+}
+
+TEST_F(GltfCoverage, LightRangesAndOrthographicCamerasAreWarnings) {
+  nlohmann::json parts = {
+      {"extensionsUsed", {"KHR_lights_punctual"}},
+      {"extensions", {{"KHR_lights_punctual", {{"lights", {{{"type", "point"}, {"range", 10.0}}}}}}}},
+      {"cameras",
+       {{{"type", "orthographic"}, {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0.1}, {"zfar", 9}}}}}},
+      {"nodes",
+       {{{"mesh", 0}},
+        {{"camera", 0}, {"translation", {0, 0, 3}}},
+        {{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}, {"translation", {0, 0, 2}}}}},
+      {"scenes", {{{"nodes", {0, 1, 2}}}}}};
+  EXPECT_THAT(
+      load("range", nlohmann::json::object(), parts).warnings,
+      UnorderedElementsAre(HasSubstr("nodes[1].camera: only perspective cameras are read"),
+                           HasSubstr("extensions.KHR_lights_punctual.lights[0].range: is not read; the light falls off "
+                                     "as 1/d^2")));
+}
+
+TEST_F(GltfCoverage, SparseAccessorsSubstituteTheirValues) {
+  // Vertex 3 (the index at byte 10 of the index view) takes vertex 0's position
+  // (the first of the position view): the upper left triangle loses its area.
+  nlohmann::json parts = {{"accessors", facet::testing::texturedQuadAccessors()}};
+  parts["accessors"][0]["sparse"] = {{"count", 1},
+                                     {"indices", {{"bufferView", 2}, {"byteOffset", 10}, {"componentType", 5123}}},
+                                     {"values", {{"bufferView", 0}}}};
+  const Scene scene = load("sparse", nlohmann::json::object(), parts);
+  ASSERT_EQ(scene.objects.size(), 1u);
+  EXPECT_EQ(scene.objects[0].cage.faceCount(), 1);
+  EXPECT_EQ(scene.objects[0].cage.vertexCount(), 3);
+  EXPECT_THAT(load("dense", nlohmann::json::object()).objects.at(0).cage.faceCount(), 2);
+  // Without a buffer view the values are zeros before the substitution:
+  // TEXCOORD_0 (0, 0) but at vertex 3, which takes the first of the view's (0, 1).
+  nlohmann::json zeros = {{"accessors", facet::testing::texturedQuadAccessors()}};
+  zeros["accessors"][1].erase("bufferView");
+  zeros["accessors"][1]["sparse"] = parts["accessors"][0]["sparse"];
+  zeros["accessors"][1]["sparse"]["values"] = {{"bufferView", 1}};
+  const ControlCage cage = load("zeros", nlohmann::json::object(), zeros).objects.at(0).cage;
+  EXPECT_THAT(cage.texcoords,  // one per vertex
+              UnorderedElementsAre(glm::dvec2(0.0), glm::dvec2(0.0), glm::dvec2(0.0), glm::dvec2(0.0, 1.0)));
+  zeros["accessors"][1]["count"] = 1 << 30;
+  EXPECT_THAT([&] { load("huge", nlohmann::json::object(), zeros); },
+              ThrowsMessage<InputError>(HasSubstr("accessors[1] has no buffer view, and such an accessor may have")));
+  // An index past the accessor's count (a float's bits read as an integer) is an error.
+  parts["accessors"][0]["sparse"]["indices"] = {{"bufferView", 0}, {"byteOffset", 0}, {"componentType", 5125}};
+  EXPECT_THAT([&] { load("bad", nlohmann::json::object(), parts); },
+              ThrowsMessage<InputError>(HasSubstr("POSITION: accessors[0].sparse.indices: index ")));
+}
+
+TEST_F(GltfCoverage, AnOcclusionMapOnASecondCoordinateSetIsDroppedWithAWarning) {
+  ASSERT_TRUE(facet::testing::writePng(dir_ / "grey.png", 4, 4,
+                                       facet::testing::checkerTexels(4, 2, {90, 90, 90, 255}, {200, 200, 200, 255})));
+  const nlohmann::json images = {{"images", {{{"uri", "grey.png"}}}}, {"textures", {{{"source", 0}}}}};
+  const Scene scene = load("occlusion", {{"occlusionTexture", {{"index", 0}, {"texCoord", 1}}}}, images);
+  EXPECT_FALSE(scene.materials.at(0).textures.has_value());  // the material reads no texture
+  EXPECT_THAT(scene.warnings, ElementsAre(HasSubstr("materials[0].occlusionTexture.texCoord: only TEXCOORD_0 is "
+                                                    "read, so this slot on TEXCOORD_1 is dropped: the environment")));
+  // KHR_texture_transform's texCoord overrides the slot's; the base colour still reads TEXCOORD_0.
+  const nlohmann::json onSet1 = {{"KHR_texture_transform", {{"texCoord", 1}}}};
+  const Scene both = load("both",
+                          {{"occlusionTexture", {{"index", 0}, {"extensions", onSet1}}},
+                           {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}},
+                          images);
+  ASSERT_TRUE(both.materials.at(0).textures.has_value());
+  EXPECT_GE(both.materials[0].textures->baseColorTexture.texture, 0);
+  EXPECT_EQ(both.materials[0].textures->occlusionTexture.texture, -1);
+  EXPECT_EQ(both.warnings.size(), 1u);
+  // Any other slot on TEXCOORD_1 would render wrong: the file is refused.
+  EXPECT_THAT(
+      [&] {
+        load("base", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 1}}}}}}, images);
+      },
+      ThrowsMessage<InputError>(HasSubstr(
+          "materials[0].pbrMetallicRoughness.baseColorTexture.texCoord: only TEXCOORD_0 is read, not TEXCOORD_1")));
+}
+
+TEST_F(GltfCoverage, AClosedMeshOfAOneSidedMaterialIsNoWarning) {
+  // A bipyramid of one material, doubleSided false by default: culling would hide nothing.
+  EXPECT_THAT(loadScene(std::string(FACET_TEST_DATA_DIR) + "/faceted_gem.gltf").warnings, IsEmpty());
+}
+
+TEST_F(GltfCoverage, RepeatedWarningsAreOneLine) {
+  nlohmann::json parts;
+  parts["meshes"] = {{{"primitives",
+                       {{{"attributes", {{"POSITION", 0}, {"COLOR_0", 0}}}, {"indices", 2}},
+                        {{"attributes", {{"POSITION", 0}, {"COLOR_0", 0}}}, {"indices", 2}},
+                        {{"attributes", {{"POSITION", 0}, {"COLOR_0", 0}}}, {"indices", 2}}}}}};
+  EXPECT_THAT(load("colours", nlohmann::json::object(), parts).warnings,
+              ElementsAre(HasSubstr("meshes[0].primitives[0].attributes.COLOR_0 (and 2 more): vertex colours")));
+}
+
+TEST_F(GltfCoverage, TinygltfWarningsArePassedOn) {
+  // tinygltf warns of an image it cannot open; no texture uses this one.
+  const Scene scene = load("image", nlohmann::json::object(), {{"images", {{{"uri", "missing.png"}}}}});
+  EXPECT_THAT(scene.warnings, Contains(AllOf(HasSubstr("image.gltf: tinygltf: "), HasSubstr("image[0]"))));
+}
+
+}  // namespace
+}  // namespace facet::scene

@@ -1,0 +1,114 @@
+// glTF material extensions facet reads beyond those of transmission
+// (gltf_transmission_test.cpp): KHR_materials_emissive_strength and
+// KHR_materials_specular.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+#include "engine/cpu/reference_renderer.h"
+#include "scenes/input_error.h"
+#include "scenes/scene_file.h"
+#include "scenes/scene_geometry.h"
+#include "tests/support/temp_dir.h"
+#include "tests/support/textured_gltf.h"
+
+namespace facet::scene {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+using ::testing::IsEmpty;
+using ::testing::ThrowsMessage;
+
+class GltfMaterialExtensions : public facet::testing::TempDirTest {
+ protected:
+  // The textured quad of one black dielectric, double-sided, with `members` added.
+  std::filesystem::path write(const std::string& name, const nlohmann::json& members) {
+    nlohmann::json m = {{"doubleSided", true},
+                        {"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 1}}, {"metallicFactor", 0.0}}}};
+    m.update(members);
+    return facet::testing::writeTexturedQuad(dir_, name, {{"materials", {m}}});
+  }
+  static nlohmann::json strength(double s) { return {{"KHR_materials_emissive_strength", {{"emissiveStrength", s}}}}; }
+};
+
+TEST_F(GltfMaterialExtensions, EmissiveStrengthScalesTheFactorPastOne) {
+  const Scene scene = loadScene(write("strong", {{"emissiveFactor", {1.0, 0.5, 0.25}}, {"extensions", strength(4.0)}}));
+  EXPECT_EQ(scene.materials.at(0).emission, glm::dvec3(4.0, 2.0, 1.0));
+  EXPECT_THAT(scene.warnings, IsEmpty());
+  // Without the extension the factor is the emission.
+  EXPECT_EQ(loadScene(write("plain", {{"emissiveFactor", {1.0, 0.5, 0.25}}})).materials.at(0).emission,
+            glm::dvec3(1.0, 0.5, 0.25));
+}
+
+TEST_F(GltfMaterialExtensions, AStrongEmitterRendersBrighterThanWhite) {
+  Scene scene = loadScene(write("render", {{"emissiveFactor", {1.0, 1.0, 1.0}}, {"extensions", strength(5.0)}}));
+  scene.render.width = scene.render.height = 8;
+  scene.camera = {{0.0, 0.0, 3.0}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 20.0};
+  const Image image = cpu::renderReference(scene, buildGeometry(scene));
+  const glm::vec4 centre = image.beauty[std::size_t(4 * 8 + 4)];
+  // 5 emitted, plus what the black dielectric's 4% reflects of the studio environment.
+  EXPECT_GE(centre.g, 5.0f);
+  EXPECT_LT(centre.g, 5.5f);
+}
+
+TEST_F(GltfMaterialExtensions, EmissiveStrengthIsHeldToTheRulesOfRadiance) {
+  const auto fails = [&](const std::string& name, double s, const std::string& message) {
+    const std::filesystem::path file = write(name, {{"emissiveFactor", {1.0, 1.0, 1.0}}, {"extensions", strength(s)}});
+    EXPECT_THAT([&] { loadScene(file); }, ThrowsMessage<InputError>(HasSubstr(message))) << name;
+  };
+  fails("negative", -1.0,
+        "materials[0].extensions.KHR_materials_emissive_strength.emissiveStrength: must be >= 0, is -1");
+  fails("huge", 1e31,
+        "materials[0].extensions.KHR_materials_emissive_strength.emissiveStrength: emissiveFactor times "
+        "emissiveStrength must be at most 1e30");
+}
+
+// The specification's dielectric_f0 = min(F(0) of the index x specularColorFactor, 1) x specularFactor.
+TEST_F(GltfMaterialExtensions, SpecularScalesAndTintsTheDielectricsF0) {
+  const auto f0 = [&](const std::string& name, const nlohmann::json& extensions, double metallic = 0.0) {
+    nlohmann::json members = {{"extensions", extensions}};
+    members["pbrMetallicRoughness"] = {{"baseColorFactor", {0.5, 0.5, 0.5, 1}}, {"metallicFactor", metallic}};
+    return loadScene(write(name, members)).materials.at(0).f0;
+  };
+  const nlohmann::json tint = {{"specularColorFactor", {2.0, 1.0, 0.5}}};
+  const glm::dvec3 tinted = f0("tint", {{"KHR_materials_specular", tint}});
+  EXPECT_NEAR(tinted.r, 0.08, 1e-15);
+  EXPECT_NEAR(tinted.g, 0.04, 1e-15);
+  EXPECT_NEAR(tinted.b, 0.02, 1e-15);
+  // ior 3: F(0) 0.25, x 5 capped at 1, then x specularFactor.
+  const nlohmann::json strong = {{"specularColorFactor", {5.0, 1.0, 1.0}}, {"specularFactor", 0.5}};
+  const glm::dvec3 capped = f0("capped", {{"KHR_materials_ior", {{"ior", 3.0}}}, {"KHR_materials_specular", strong}});
+  EXPECT_NEAR(capped.r, 0.5, 1e-15);
+  EXPECT_NEAR(capped.g, 0.125, 1e-15);
+  // A metal's F(0) is its base colour whatever the dielectric's.
+  EXPECT_EQ(f0("metal", {{"KHR_materials_specular", tint}}, 1.0), glm::dvec3(0.5));
+}
+
+TEST_F(GltfMaterialExtensions, WhatSpecularCannotDoIsAWarning) {
+  const nlohmann::json half = {
+      {"KHR_materials_specular", {{"specularFactor", 0.5}, {"specularTexture", {{"index", 0}}}}}};
+  EXPECT_THAT(loadScene(write("half", {{"extensions", half}})).warnings,
+              ElementsAre(HasSubstr("KHR_materials_specular.specularFactor: below 1 scales F(0) only; F(90) stays 1"),
+                          HasSubstr("KHR_materials_specular.specularTexture: is not read; the factors apply alone")));
+  nlohmann::json glass = {{"KHR_materials_specular", {{"specularFactor", 1.0}}},
+                          {"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}};
+  EXPECT_THAT(loadScene(write("glass", {{"extensions", glass}})).warnings,
+              ElementsAre(HasSubstr("materials[0].extensions.KHR_materials_specular: is not applied to a transmissive "
+                                    "material")));
+}
+
+TEST_F(GltfMaterialExtensions, SpecularFactorsAreChecked) {
+  const auto fails = [&](const std::string& name, const nlohmann::json& specular, const std::string& message) {
+    const std::filesystem::path file = write(name, {{"extensions", {{"KHR_materials_specular", specular}}}});
+    EXPECT_THAT([&] { loadScene(file); }, ThrowsMessage<InputError>(HasSubstr(message))) << name;
+  };
+  fails("factor", {{"specularFactor", 2.0}}, "KHR_materials_specular.specularFactor: must be in [0, 1], is 2");
+  fails("colour", {{"specularColorFactor", {1.0, -1.0, 1.0}}},
+        "KHR_materials_specular.specularColorFactor: every component must be a finite number >= 0");
+}
+
+}  // namespace
+}  // namespace facet::scene
