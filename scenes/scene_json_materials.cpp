@@ -103,7 +103,7 @@ materials::Material plainMaterial(const Field& f, const json& plain, materials::
       return where.empty() ? std::string(field) : where + "." + std::string(field);
     });
   } catch (const std::invalid_argument& e) {
-    // "<field>: <rule>", told apart for the --set that may have set the field.
+    // "<field>: <rule>" split, so that an error in a field --set gave names the override.
     const std::string text = e.what();
     const std::size_t colon = text.find(": ");
     throw InputError(f.source(), 0, text.substr(0, colon), colon == std::string::npos ? "" : text.substr(colon + 2));
