@@ -107,12 +107,16 @@ materials::Material resolveMaterial(const MaterialOptions& o) {
 }
 
 void addSceneEditOptions(CLI::App& command, SceneEdits& edits) {
-  command.add_option("--material", edits.materials,
-                     "A material on the model's objects: a material file (.json) or a preset (see `facet presets`); "
-                     "OBJECT=FILE|PRESET for the objects of that name (repeatable)");
-  command.add_option("--set", edits.sets,
-                     "PATH=VALUE: a field of the scene by its JSON path, e.g. render.spp=16, camera.fov=40, "
-                     "materials.gold.roughness=0.2, objects[0].material=silver (repeatable)");
+  command
+      .add_option("--material", edits.materials,
+                  "A material on the model's objects: a material file (.json) or a preset (see `facet presets`); "
+                  "OBJECT=FILE|PRESET for the objects of that name (repeatable)")
+      ->allow_extra_args(false);
+  command
+      .add_option("--set", edits.sets,
+                  "PATH=VALUE: a field of the scene by its JSON path, e.g. render.spp=16, camera.fov=40, "
+                  "materials.gold.roughness=0.2, objects[0].material=silver (repeatable)")
+      ->allow_extra_args(false);
 }
 
 scene::Scene loadEditedScene(const std::string& path, const SceneEdits& edits) {

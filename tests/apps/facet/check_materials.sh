@@ -22,7 +22,8 @@ neutral() { awk -v r="$(mean "$1" 0 ${2:-})" -v b="$(mean "$1" 2 ${2:-})" 'BEGIN
 
 "$facet" render "$ball" "${common[@]}" -o default.png
 neutral default.png || fail "the default grey plastic is not neutral"
-"$facet" render "$ball" "${common[@]}" -o gold.png --material gold
+# Before the model: each --material takes one value, not the model too.
+"$facet" render --material gold "$ball" "${common[@]}" -o gold.png
 warmer gold.png 0 2 0.05 || fail "--material gold: the ball is not gold (R $(mean gold.png 0), B $(mean gold.png 2))"
 "$facet" render "$ball" "${common[@]}" -o plastic.png --material "$library/red_plastic.json"
 warmer plastic.png 0 1 0.05 || fail "--material red_plastic.json: the ball is not red"
@@ -52,7 +53,7 @@ warmer two_both.png 0 2 0.05 16x32+0+0 || fail "--material gold: the left ball i
 neutral two_both.png 16x32+16+0 || fail "--material right=silver: the right ball is not silver"
 
 # --set on a bare model's render settings, seen in --json.
-"$facet" render "$ball" --size 8x8 --backend cpu -o spp.exr --json --set render.spp=4 --set camera.fov=30 >spp.json
+"$facet" render --set render.spp=4 --set camera.fov=30 "$ball" --size 8x8 --backend cpu -o spp.exr --json >spp.json
 python3 -c 'import json, sys; s = json.load(open(sys.argv[1])); assert s["spp"] == 4, s' spp.json ||
   fail "--set render.spp=4 is not the render's spp"
 
