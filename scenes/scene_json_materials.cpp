@@ -9,6 +9,7 @@
 #include <fstream>
 #include <span>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "scenes/input_error.h"
@@ -136,8 +137,10 @@ json materialFile(const Field& reference, const std::filesystem::path& relativeT
   const std::string name = reference.string();
   if (!namesMaterialFile(name)) reference.fail("a material file's name ends in .json");
   const std::filesystem::path file = relativeTo.parent_path() / name;
-  if (!std::filesystem::is_regular_file(file)) reference.fail("no such file: " + file.string());
-  const std::filesystem::path key = std::filesystem::weakly_canonical(file);
+  std::error_code error;  // a name the system refuses (too long, say) is a missing file too
+  if (!std::filesystem::is_regular_file(file, error)) reference.fail("no such file: " + file.string());
+  std::filesystem::path key = std::filesystem::weakly_canonical(file, error);
+  if (error) key = file;
   if (find(chain, key) != chain.end()) {
     std::string cycle;
     for (auto at = find(chain, key); at != chain.end(); ++at) cycle += at->filename().string() + " -> ";
