@@ -14,8 +14,8 @@
 #include <span>
 #include <string>
 #include <string_view>
-#include <vector>
 #include <utility>
+#include <vector>
 
 #include "materials/strict_json.h"
 #include "scenes/input_error.h"

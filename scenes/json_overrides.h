@@ -1,6 +1,6 @@
 // `--set PATH=VALUE`: one field of a scene's JSON replaced before the scene
 // is validated, so an override obeys exactly the rules the file does
-// (docs/scene-format.md, "Overrides").
+// (docs/scene-format.md, "The command line: --material and --set").
 #pragma once
 
 #include <nlohmann/json_fwd.hpp>

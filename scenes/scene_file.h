@@ -11,7 +11,7 @@
 //
 // `overrides` (--set, json_overrides.h) change a .json scene's document
 // before it is read; a .obj or glTF model takes them for its render, camera
-// and environment only (docs/scene-format.md, "Overrides").
+// and environment only (docs/scene-format.md, "The command line: --material and --set").
 #pragma once
 
 #include <filesystem>

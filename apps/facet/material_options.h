@@ -38,7 +38,8 @@ void addSceneEditOptions(CLI::App& command, SceneEdits& edits);
 
 // The scene at `path` with the --set overrides read into it and the
 // --material materials on its objects (docs/scene-format.md, "Material
-// files" and "Overrides"); throws naming the flag, or the file and field.
+// files" and "The command line: --material and --set"); throws naming the
+// flag, or the file and field.
 scene::Scene loadEditedScene(const std::string& path, const SceneEdits& edits);
 
 // A finite number from a flag's text; throws naming the flag.
