@@ -13,10 +13,13 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
+#include <vector>
 
 #include "materials/strict_json.h"
 #include "scenes/input_error.h"
+#include "scenes/json_overrides.h"
 #include "scenes/scene.h"
 #include "scenes/value_rules.h"
 
@@ -37,6 +40,7 @@ class Field {
 
   const json& value() const { return value_; }
   const std::string& path() const { return path_; }
+  const std::string& source() const { return source_; }
   bool has(const char* key) const { return value_.contains(key); }
 
   Field operator[](const char* key) const { return {value_.at(key), child(key), source_}; }
@@ -108,7 +112,25 @@ class Field {
 
 // The "render" object into `r`.
 void readRender(const Field& f, RenderSettings& r);
-// The "environment" object, its map read relative to `sceneFile`.
-Environment readEnvironment(const Field& f, const std::filesystem::path& sceneFile);
+// The "camera" object over `start`: the fields it gives replace start's.
+Camera readCamera(const Field& f, Camera start);
+// The "environment" object, its map read relative to `sceneFile`; with
+// `start`, an object that names neither file nor color keeps start's map
+// and the fields it gives replace start's.
+Environment readEnvironment(const Field& f, const std::filesystem::path& sceneFile,
+                            const std::optional<Environment>& start = std::nullopt);
+
+// A string that ends in .json (any case) names a material file; any other
+// names a material of the scene or a preset.
+bool namesMaterialFile(std::string_view text);
+// A material entry (scene_json_materials.cpp): an object of material
+// fields, which may "extends" a material file, or a material file's name,
+// read relative to `relativeTo`, the file the entry is written in; its
+// textures are appended to `textures`.
+materials::Material readMaterial(const Field& f, const std::filesystem::path& relativeTo,
+                                 std::vector<Texture>& textures);
+// Every material entry that names a file and that an override reaches into
+// becomes {"extends": FILE}, so that the override sets a field over the file's.
+void expandMaterialFiles(json& document, std::span<const JsonOverride> overrides);
 
 }  // namespace facet::scene::detail

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <numbers>
+#include <set>
 #include <stdexcept>
 
 #include "scenes/input_error.h"
@@ -15,14 +16,18 @@
 
 namespace facet::scene {
 
-Scene loadScene(const std::filesystem::path& path) {
+Scene loadScene(const std::filesystem::path& path, std::span<const JsonOverride> overrides) {
   checkInputFile(path, "the scene");
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
-  if (extension == ".json") return loadJsonScene(path);
-  if (extension == ".obj") return sceneFromCage(loadObjCage(path));
-  if (extension == ".gltf" || extension == ".glb") return loadGltfScene(path);
+  if (extension == ".json") return loadJsonScene(path, overrides);
+  const bool cage = extension == ".obj", gltf = extension == ".gltf" || extension == ".glb";
+  if (cage || gltf) {
+    Scene scene = cage ? sceneFromCage(loadObjCage(path)) : loadGltfScene(path);
+    applyModelOverrides(scene, path, overrides);
+    return scene;
+  }
   throw InputError(path.string(), 0, "unknown scene format",
                    "expected a .json scene, an .obj control cage, or a .gltf / .glb file");
 }
@@ -38,6 +43,21 @@ Scene sceneFromCage(ControlCage cage) {
   scene.camera = frameBounds(cageBounds(scene));
   addDefaultLighting(scene);
   return scene;
+}
+
+void assignMaterial(Scene& scene, const std::string& objectName, materials::Material material) {
+  const int index = int(scene.materials.size());
+  bool found = false;
+  for (Object& object : scene.objects)
+    if (objectName.empty() || object.name == objectName) object.material = index, found = true;
+  if (!found) {
+    std::set<std::string> names;
+    for (const Object& object : scene.objects) names.insert(object.name);
+    std::string list;
+    for (const std::string& name : names) list += (list.empty() ? "'" : ", '") + name + "'";
+    throw std::invalid_argument("no object is called '" + objectName + "' (the objects: " + list + ")");
+  }
+  scene.materials.push_back(std::move(material));
 }
 
 std::optional<Subdivision> subdivisionNamed(std::string_view name) {

@@ -8,22 +8,45 @@
 // A scene without a camera is framed from the default direction; one without
 // lights gets the default lighting (addDefaultLighting). Errors throw
 // InputError naming the file, the line or field, and the rule.
+//
+// `overrides` (--set, json_overrides.h) change a .json scene's document
+// before it is read; a .obj or glTF model takes them for its render, camera
+// and environment only (docs/scene-format.md, "The command line: --material and --set").
 #pragma once
 
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "scenes/json_overrides.h"
 #include "scenes/scene.h"
 
 namespace facet::scene {
 
-Scene loadScene(const std::filesystem::path& path);
+Scene loadScene(const std::filesystem::path& path, std::span<const JsonOverride> overrides = {});
 
-Scene loadJsonScene(const std::filesystem::path& path);
+Scene loadJsonScene(const std::filesystem::path& path, std::span<const JsonOverride> overrides = {});
 Scene loadGltfScene(const std::filesystem::path& path);
 Scene sceneFromCage(ControlCage cage);
+
+// The render, camera and environment fields of `overrides` over a model
+// that is not a JSON scene, read as a scene file's; paths relative to
+// `modelFile`. Any other field throws std::invalid_argument naming --set.
+void applyModelOverrides(Scene& scene, const std::filesystem::path& modelFile, std::span<const JsonOverride> overrides);
+
+// A material as `facet render --material` names it: a material file (a name
+// ending in .json, relative to the working folder) or a preset at the
+// default material's roughness. The textures a file reads are appended to
+// `textures`. Errors name the file and field, or --material.
+materials::Material loadMaterialReference(const std::string& reference, std::vector<Texture>& textures);
+
+// `material` on every object called `objectName`, or on every object when
+// it is empty; throws std::invalid_argument listing the objects' names
+// when no object has that name.
+void assignMaterial(Scene& scene, const std::string& objectName, materials::Material material);
 
 // Subdivision as scene files and the command line spell it, nothing for any
 // other name; kSubdivisionNames lists the spellings for error messages.

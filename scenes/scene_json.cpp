@@ -14,6 +14,7 @@
 #include "scenes/environment_map.h"
 #include "scenes/input_error.h"
 #include "scenes/json_field.h"
+#include "scenes/json_overrides.h"
 #include "scenes/obj_cage.h"
 #include "scenes/scene_file.h"
 #include "scenes/texture.h"
@@ -22,21 +23,14 @@
 namespace facet::scene {
 namespace {
 
+using detail::expandMaterialFiles;
 using detail::Field;
+using detail::namesMaterialFile;
+using detail::readCamera;
 using detail::readEnvironment;
+using detail::readMaterial;
 using detail::readRender;
 using nlohmann::json;
-
-Camera readCamera(const Field& f) {
-  f.object({"eye", "target", "up", "fov"});
-  Camera c;
-  if (f.has("eye")) c.eye = f["eye"].vec3();
-  if (f.has("target")) c.target = f["target"].vec3();
-  if (f.has("up")) c.up = f["up"].direction();
-  if (f.has("fov")) c.verticalFovDegrees = f["fov"].number(kMinFovDegrees, kMaxFovDegrees);
-  if (const char* problem = cameraProblem(c)) f.fail(problem);
-  return c;
-}
 
 Light readLight(const Field& f) {
   f.object({"type", "color", "position", "direction", "inner_cone", "outer_cone"});
@@ -71,99 +65,6 @@ Light readLight(const Field& f) {
     if (light.innerConeDegrees > light.outerConeDegrees) f.fail("inner_cone must not exceed outer_cone");
   }
   return light;
-}
-
-// A texture field: an image file relative to the scene file, or an object
-// of the image and its sampling.
-Texture readTexture(const Field& f, const std::filesystem::path& sceneFile, bool roughness) {
-  const bool detailed = f.value().is_object();
-  if (detailed) {
-    f.object({"image", "wrap", "filter"});
-    if (!f.has("image")) f.fail("a texture needs an image (a PNG or JPEG file, relative to the scene file)");
-  } else if (!f.value().is_string()) {
-    f.fail("expected an image file name or an object with image, wrap and filter");
-  }
-  const Field image = detailed ? f["image"] : f;
-  TextureSampler sampler;
-  if (detailed && f.has("wrap"))
-    sampler.wrapS = sampler.wrapT = f["wrap"].choice<std::uint32_t>({{"repeat", rules::f64::FACET_WRAP_REPEAT},
-                                                                     {"mirror", rules::f64::FACET_WRAP_MIRRORED_REPEAT},
-                                                                     {"clamp", rules::f64::FACET_WRAP_CLAMP_TO_EDGE}});
-  if (detailed && f.has("filter") && f["filter"].choice<bool>({{"linear", false}, {"nearest", true}})) {
-    sampler.magFilter = sampler.minFilter = rules::f64::FACET_FILTER_NEAREST;
-    sampler.mipMode = rules::f64::FACET_MIP_NEAREST;
-  }
-  const std::filesystem::path file = sceneFile.parent_path() / image.string();
-  if (!std::filesystem::is_regular_file(file)) image.fail("no such file: " + file.string());
-  try {
-    return roughness ? loadRoughnessTexture(file, sampler) : loadColorTexture(file, sampler);
-  } catch (const InputError& e) {
-    image.fail(e.what());
-  }
-}
-
-// A material's texture fields, carried by glTF's metallic-roughness mapping
-// that both backends evaluate (docs/scene-format.md): metallic 0 gives
-// c_diff = base colour and F(0) = 0.04, metallic 1 gives F(0) = base colour
-// and no c_diff. A colour factor the user left out is 1 under its texture.
-void readMaterialTextures(const Field& f, const materials::MaterialSpec& spec, materials::Material& m,
-                          const std::filesystem::path& sceneFile, std::vector<Texture>& textures) {
-  const bool diffuseMap = f.has("diffuse_texture"), f0Map = f.has("f0_texture"),
-             roughnessMap = f.has("roughness_texture");
-  if (!diffuseMap && !f0Map && !roughnessMap) return;
-  namespace m64 = rules::f64;
-  const bool readsF0 = m.fresnel == m64::F_SCHLICK || m.fresnel == m64::F_BLENDER_METALLIC;
-  if (f0Map && !readsF0) f["f0_texture"].fail("needs a fresnel that reads f0 (schlick or blender-metallic)");
-  const bool dielectric = !f0Map && (!readsF0 || m.f0 == glm::dvec3(0.04));
-  const bool metal = !diffuseMap && m.diffuse == glm::dvec3(0.0);
-  if (diffuseMap && !dielectric)
-    f["diffuse_texture"].fail(f0Map ? "cannot be combined with f0_texture"
-                                    : "needs f0 0.04 (textures follow glTF's metallic-roughness model)");
-  if (f0Map && !metal)
-    f["f0_texture"].fail(diffuseMap ? "cannot be combined with diffuse_texture"
-                                    : "needs diffuse 0 (textures follow glTF's metallic-roughness model)");
-  if (!dielectric && !metal)
-    f["roughness_texture"].fail("needs diffuse 0 or f0 0.04 (textures follow glTF's metallic-roughness model)");
-
-  materials::MaterialTextures t;
-  t.metallic = dielectric ? 0.0 : 1.0;
-  const bool f0Given = spec.f0 || spec.preset;
-  t.baseColor = dielectric ? (diffuseMap && !spec.diffuse ? glm::dvec3(1.0) : m.diffuse)
-                           : (f0Map && !f0Given ? glm::dvec3(1.0) : m.f0);
-  t.roughness = std::sqrt(m.alpha);
-  auto slot = [&](const char* key, bool roughness) {
-    materials::TextureSlot s;
-    s.texture = int(textures.size());
-    textures.push_back(readTexture(f[key], sceneFile, roughness));
-    return s;
-  };
-  if (diffuseMap) t.baseColorTexture = slot("diffuse_texture", false);
-  if (f0Map) t.baseColorTexture = slot("f0_texture", false);
-  if (roughnessMap) t.metallicRoughnessTexture = slot("roughness_texture", true);
-  m.textures = t;
-}
-
-materials::Material readMaterial(const Field& f, const std::filesystem::path& sceneFile,
-                                 std::vector<Texture>& textures) {
-  const std::string source = sceneFile.string();
-  const std::string& where = f.path();
-  json plain = f.value();
-  if (plain.is_object()) {
-    for (const char* key : {"diffuse_texture", "f0_texture", "roughness_texture"}) plain.erase(key);
-    // A roughness texture alone gives the roughness, as read.
-    if (f.has("roughness_texture") && !plain.contains("roughness") && !plain.contains("alpha"))
-      plain["roughness"] = 1.0;
-  }
-  materials::MaterialSpec spec;
-  materials::Material m;
-  try {
-    spec = materials::materialSpecFromJson(plain, where);
-    m = materials::buildMaterial(spec, [&](std::string_view field) { return where + "." + std::string(field); });
-  } catch (const std::invalid_argument& e) {
-    throw InputError(source, 0, "invalid material", e.what());
-  }
-  if (plain.is_object()) readMaterialTextures(f, spec, m, sceneFile, textures);
-  return m;
 }
 
 glm::dmat4 readTransform(const Field& f) {
@@ -230,18 +131,8 @@ void readSubdivision(const Field& f, Object& object) {
         f["end_caps"].choice<EndCapBasis>({{"gregory", EndCapBasis::Gregory}, {"bspline", EndCapBasis::BSpline}});
 }
 
-}  // namespace
-
-Scene loadJsonScene(const std::filesystem::path& path) {
+Scene sceneFromDocument(const json& document, const std::filesystem::path& path) {
   const std::string source = path.string();
-  std::ifstream in(path);
-  if (!in) throw InputError(source, 0, "cannot open the scene file", "check the path and permissions");
-  json document;
-  try {
-    document = json::parse(in);
-  } catch (const json::exception& e) {  // syntax errors, and numbers beyond double's range
-    throw InputError(source, 0, "not valid JSON", e.what());
-  }
   const Field root(document, "", source);
   root.object({"camera", "camera_keys", "materials", "objects", "lights", "render", "environment"});
 
@@ -252,6 +143,8 @@ Scene loadJsonScene(const std::filesystem::path& path) {
     const Field materials = root["materials"];
     if (!materials.value().is_object()) materials.fail("expected an object of named materials");
     for (const auto& item : materials.value().items()) {
+      if (namesMaterialFile(item.key()))
+        materials[item.key().c_str()].fail("a material's name must not end in .json, which names a material file");
       materials::Material m =
           readMaterial(Field(item.value(), "materials." + item.key(), source), path, scene.textures);
       m.name = item.key();
@@ -278,7 +171,7 @@ Scene loadJsonScene(const std::filesystem::path& path) {
     if (!o.has("material")) {
       object.material = int(scene.materials.size());
       scene.materials.push_back(defaultMaterial());
-    } else if (o["material"].value().is_string()) {
+    } else if (o["material"].value().is_string() && !namesMaterialFile(o["material"].string())) {
       const std::string name = o["material"].string();
       auto known = materialIndex.find(name);
       if (known != materialIndex.end()) {
@@ -305,11 +198,11 @@ Scene loadJsonScene(const std::filesystem::path& path) {
   if (root.has("environment")) scene.environment = readEnvironment(root["environment"], path);
   if (!pathsCountEnvironmentOnce(scene.render.bounces, scene.environment))
     root["render"]["bounces"].fail(kBouncesNeedOcclusionRule);
-  scene.camera = root.has("camera") ? readCamera(root["camera"]) : frameBounds(cageBounds(scene));
+  scene.camera = root.has("camera") ? readCamera(root["camera"], Camera{}) : frameBounds(cageBounds(scene));
   if (root.has("camera_keys"))
     scene.cameraKeys =
         readCameraKeys(document["camera_keys"], scene.camera, source, [&](const json& camera, const std::string& at) {
-          return readCamera({camera, at, source});
+          return readCamera({camera, at, source}, Camera{});
         });
   if (root.has("lights")) {
     const Field lights = root["lights"];
@@ -319,6 +212,32 @@ Scene loadJsonScene(const std::filesystem::path& path) {
     addDefaultLighting(scene);
   }
   return scene;
+}
+
+}  // namespace
+
+Scene loadJsonScene(const std::filesystem::path& path, std::span<const JsonOverride> overrides) {
+  const std::string source = path.string();
+  std::ifstream in(path);
+  if (!in) throw InputError(source, 0, "cannot open the scene file", "check the path and permissions");
+  json document;
+  try {
+    document = json::parse(in);
+  } catch (const json::exception& e) {  // syntax errors, and numbers beyond double's range
+    throw InputError(source, 0, "not valid JSON", e.what());
+  }
+  expandMaterialFiles(document, overrides);
+  for (const JsonOverride& o : overrides) applyJsonOverride(document, o);
+  try {
+    return sceneFromDocument(document, path);
+  } catch (const InputError& e) {
+    // A field an override set is named with the override.
+    for (const JsonOverride& o : overrides)
+      if (e.source() == source && overrideConcerns(o, e.rule()))
+        throw InputError(source, 0, e.rule() + " (--set " + o.text() + ")",
+                         std::string(e.what()).substr(source.size() + e.rule().size() + 4));
+    throw;
+  }
 }
 
 }  // namespace facet::scene

@@ -1,10 +1,16 @@
 // The "render" and "environment" objects of facet's JSON scenes
 // (docs/scene-format.md).
 #include <memory>
+#include <span>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
+#include "scenes/camera_rules.h"
 #include "scenes/environment_map.h"
 #include "scenes/json_field.h"
+#include "scenes/json_overrides.h"
+#include "scenes/scene_file.h"
 
 namespace facet::scene::detail {
 
@@ -29,10 +35,22 @@ void readRender(const Field& f, RenderSettings& r) {
   if (f.has("pixel_tolerance")) r.pixelTolerance = f["pixel_tolerance"].number(1e-3, 1e3);
 }
 
-Environment readEnvironment(const Field& f, const std::filesystem::path& sceneFile) {
+Camera readCamera(const Field& f, Camera c) {
+  f.object({"eye", "target", "up", "fov"});
+  if (f.has("eye")) c.eye = f["eye"].vec3();
+  if (f.has("target")) c.target = f["target"].vec3();
+  if (f.has("up")) c.up = f["up"].direction();
+  if (f.has("fov")) c.verticalFovDegrees = f["fov"].number(kMinFovDegrees, kMaxFovDegrees);
+  if (const char* problem = cameraProblem(c)) f.fail(problem);
+  return c;
+}
+
+Environment readEnvironment(const Field& f, const std::filesystem::path& sceneFile,
+                            const std::optional<Environment>& start) {
   f.object({"file", "color", "intensity", "rotation", "method", "samples", "occlusion"});
-  if (f.has("file") == f.has("color")) f.fail("give exactly one of file (an .exr or .hdr map) and color");
-  Environment environment;
+  if (f.has("file") && f.has("color")) f.fail("give exactly one of file (an .exr or .hdr map) and color");
+  if (!f.has("file") && !f.has("color") && !start) f.fail("give exactly one of file (an .exr or .hdr map) and color");
+  Environment environment = start.value_or(Environment{});
   if (f.has("file")) {
     const Field file = f["file"];
     try {
@@ -41,7 +59,7 @@ Environment readEnvironment(const Field& f, const std::filesystem::path& sceneFi
     } catch (const InputError& e) {
       file.fail(e.what());
     }
-  } else {
+  } else if (f.has("color")) {
     const glm::dvec3 color = f["color"].vec3();
     if (const auto rule = radianceRule(color)) f["color"].fail(*rule);
     environment.map = std::make_shared<const EnvironmentMap>(constantEnvironment(color));
@@ -61,3 +79,31 @@ Environment readEnvironment(const Field& f, const std::filesystem::path& sceneFi
 }
 
 }  // namespace facet::scene::detail
+
+namespace facet::scene {
+
+void applyModelOverrides(Scene& scene, const std::filesystem::path& modelFile,
+                         std::span<const JsonOverride> overrides) {
+  if (overrides.empty()) return;
+  detail::json document = detail::json::object();
+  for (const JsonOverride& o : overrides) {
+    const std::string top = o.path.substr(0, o.path.find_first_of(".["));
+    if (top != "render" && top != "camera" && top != "environment")
+      throw std::invalid_argument("--set " + o.text() + ": a " + modelFile.extension().string() +
+                                  " model takes --set for render, camera and environment fields only; give its "
+                                  "objects' materials with --material");
+    applyJsonOverride(document, o);
+  }
+  const std::string source = "--set";
+  const detail::Field root(document, "", source);
+  if (root.has("render")) detail::readRender(root["render"], scene.render);
+  if (root.has("camera")) scene.camera = detail::readCamera(root["camera"], scene.camera);
+  if (root.has("environment")) {
+    const detail::Field environment = root["environment"];
+    if (!scene.environment && environment.value().is_object() && !environment.has("file") && !environment.has("color"))
+      environment.fail("the model has no environment (it has lights): give environment.file or environment.color");
+    scene.environment = detail::readEnvironment(environment, modelFile, scene.environment);
+  }
+}
+
+}  // namespace facet::scene

@@ -18,6 +18,7 @@
 #include "engine/renderer.h"
 #include "exr_options.h"
 #include "farm_options.h"
+#include "material_options.h"
 #include "preview_options.h"
 #include "progress_log.h"
 #include "render_summary.h"
@@ -38,6 +39,7 @@ struct RenderCommandOptions {
   std::string pngFlag = "--png";  // the flag that named the PNG
   PreviewFlags preview;
   SceneOverrides scene_overrides;
+  SceneEdits edits;
   FarmOptions farm;
   std::string backend = "gpu";
   std::string adapter;
@@ -110,7 +112,7 @@ void runRender(const RenderCommandOptions& o) {
   const std::vector<RenderJob> jobs = renderJobs(o);
   for (const RenderJob& job : jobs) checkOutputs(job, o);
   chosenExrLayers(o.exrFlags);
-  scene::Scene scene = scene::loadScene(o.scene);
+  scene::Scene scene = loadEditedScene(o.scene, o.edits);
   printSceneWarnings(scene);
   applySceneOverrides(o.scene_overrides, scene);
   const int width = scene.render.width, height = scene.render.height;
@@ -168,6 +170,7 @@ void addRenderCommand(CLI::App& app) {
                     "An .exr with the beauty and the --aovs layers, or a .png preview ('#' for the frame number)");
   c->add_option("--png", o->png, "An 8-bit sRGB preview, beside -o's EXR or alone");
   addPreviewOptions(*c, o->preview);
+  addSceneEditOptions(*c, o->edits);
   addSceneOverrideOptions(*c, o->scene_overrides);
   addFarmOptions(*c, o->farm);
   addExrOptions(*c, o->exrFlags);

@@ -1,11 +1,15 @@
 #include "material_options.h"
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
 #include "materials/models.h"
+#include "scenes/json_overrides.h"
+#include "scenes/scene_file.h"
 
 namespace facet::cli {
 
@@ -100,6 +104,51 @@ materials::Material resolveMaterial(const MaterialOptions& o) {
   if (o.k) spec.k = parseColor("--k", *o.k);
   if (o.diffuse) spec.diffuse = parseColor("--diffuse", *o.diffuse);
   return materials::buildMaterial(spec, flagFor);
+}
+
+void addSceneEditOptions(CLI::App& command, SceneEdits& edits) {
+  command
+      .add_option("--material", edits.materials,
+                  "A material on the model's objects: a material file (.json) or a preset (see `facet presets`); "
+                  "OBJECT=FILE|PRESET for the objects of that name (repeatable)")
+      ->allow_extra_args(false);
+  command
+      .add_option("--set", edits.sets,
+                  "PATH=VALUE: a field of the scene by its JSON path, e.g. render.spp=16, camera.fov=40, "
+                  "materials.gold.roughness=0.2, objects[0].material=silver (repeatable)")
+      ->allow_extra_args(false);
+}
+
+scene::Scene loadEditedScene(const std::string& path, const SceneEdits& edits) {
+  std::vector<scene::JsonOverride> overrides;
+  for (const std::string& assignment : edits.sets) overrides.push_back(scene::parseJsonOverride(assignment));
+  // Every object's material first, then the named objects', whatever the order given.
+  std::vector<std::pair<std::string, std::string>> assignments;  // object (empty: every one), reference
+  std::set<std::string> named;
+  for (const std::string& value : edits.materials) {
+    const std::size_t equals = value.find('=');
+    std::string object = equals == std::string::npos ? "" : value.substr(0, equals);
+    std::string reference = equals == std::string::npos ? value : value.substr(equals + 1);
+    if (reference.empty() || (equals != std::string::npos && object.empty()))
+      throw std::invalid_argument("--material '" + value + "': expected FILE, PRESET, OBJECT=FILE or OBJECT=PRESET");
+    if (!named.insert(object).second)
+      throw std::invalid_argument("--material '" + value + "': " +
+                                  (object.empty() ? std::string("a material for every object is given twice")
+                                                  : "object '" + object + "' is given a material twice"));
+    assignments.emplace_back(std::move(object), std::move(reference));
+  }
+  std::stable_partition(assignments.begin(), assignments.end(), [](const auto& a) { return a.first.empty(); });
+
+  scene::Scene scene = scene::loadScene(path, overrides);
+  for (const auto& [object, reference] : assignments) {
+    materials::Material material = scene::loadMaterialReference(reference, scene.textures);
+    try {
+      scene::assignMaterial(scene, object, std::move(material));
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("--material '" + object + "=" + reference + "': " + std::string(e.what()));
+    }
+  }
+  return scene;
 }
 
 }  // namespace facet::cli

@@ -1,14 +1,17 @@
 // Command-line flags that describe a material (shared by brdf, albedo and
 // plot): --d --g --f --f0 --ior --eta --k --alpha --roughness --diffuse
-// --preset, or --material FILE.json.
+// --preset, or --material FILE.json; and render's flags that change a
+// model's materials and fields: --material [OBJECT=]FILE|PRESET, --set.
 #pragma once
 
 #include <CLI/CLI.hpp>
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "materials/material.h"
+#include "scenes/scene.h"
 
 namespace facet::cli {
 
@@ -24,6 +27,20 @@ CLI::App* addMaterialCommand(CLI::App& parent, const std::string& name, const st
 // Validated material; throws std::invalid_argument naming the flag (or the
 // file and field) and the rule.
 materials::Material resolveMaterial(const MaterialOptions& options);
+
+// facet render's --material and --set, each repeatable.
+struct SceneEdits {
+  std::vector<std::string> materials;  // [OBJECT=]FILE|PRESET
+  std::vector<std::string> sets;       // PATH=VALUE
+};
+
+void addSceneEditOptions(CLI::App& command, SceneEdits& edits);
+
+// The scene at `path` with the --set overrides read into it and the
+// --material materials on its objects (docs/scene-format.md, "Material
+// files" and "The command line: --material and --set"); throws naming the
+// flag, or the file and field.
+scene::Scene loadEditedScene(const std::string& path, const SceneEdits& edits);
 
 // A finite number from a flag's text; throws naming the flag.
 double parseNumber(const std::string& flag, const std::string& text);
