@@ -5,8 +5,9 @@
 // Gregory alternates): the convex-hull property makes that conservative. The
 // tree is built top-down with a binned surface-area heuristic and stored
 // depth-first, in double, at most kMaxDepth levels below the root: where the
-// SAH would go deeper, a node is halved at its median instead. The CPU reference traverses it as it is; the GPU
-// backend collapses it to four wide (engine/gpu_backend/gpu_scene.h).
+// SAH would go deeper, a node is halved at its median instead. The CPU
+// reference traverses it as it is; the GPU backend collapses it to four wide
+// (engine/gpu_backend/top_levels.h).
 
 #include "scenes/bezier_patch.h"
 
