@@ -31,6 +31,13 @@ class Builder {
   }
 
  private:
+  // Levels below a node of `count` patches when every split halves it.
+  int balancedLevels(int count) const {
+    int levels = 0;
+    for (long long capacity = maxLeaf_; capacity < count; capacity *= 2) ++levels;
+    return levels;
+  }
+
   // Returns the index of the node it appended (children follow depth-first).
   int buildNode(int begin, int end, int depth) {
     *maxDepth_ = std::max(*maxDepth_, depth);
@@ -50,8 +57,11 @@ class Builder {
       return index;
     }
     int mid = splitBySah(begin, end, centroids);
-    // All centroids coincide: any halving is as good as another.
-    if (mid < 0) mid = begin + count / 2;
+    // The SAH split stands while both sides could still end as halving
+    // subtrees within the depth bound; else (and where all centroids
+    // coincide) the median halves the node, one level off what is left.
+    const int larger = mid < 0 ? count : std::max(mid - begin, end - mid);
+    if (mid < 0 || depth + 1 + balancedLevels(larger) > PatchBvh::kMaxDepth) mid = splitAtMedian(begin, end, centroids);
     buildNode(begin, mid, depth + 1);
     const int second = buildNode(mid, end, depth + 1);
     (*nodes_)[index].next = second;
@@ -103,6 +113,16 @@ class Builder {
       return binOf(item.centroid[bestAxis], centroids.lo[bestAxis], extent) < bestBin;
     });
     return static_cast<int>(middle - items_.begin());
+  }
+
+  // The middle of the items by centroid along their widest axis.
+  int splitAtMedian(int begin, int end, const Aabb& centroids) {
+    const glm::dvec3 extent = centroids.hi - centroids.lo;
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+    const int mid = begin + (end - begin) / 2;
+    std::nth_element(items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
+                     [axis](const BuildItem& a, const BuildItem& b) { return a.centroid[axis] < b.centroid[axis]; });
+    return mid;
   }
 
   static int binOf(double value, double lo, double extent) {

@@ -4,8 +4,10 @@
 // Each patch is bounded by the box of its Bézier control points (plus the
 // Gregory alternates): the convex-hull property makes that conservative. The
 // tree is built top-down with a binned surface-area heuristic and stored
-// depth-first, in double. The CPU reference traverses it as it is; the GPU
-// backend collapses it to four wide (engine/gpu_backend/gpu_scene.h).
+// depth-first, in double, at most kMaxDepth levels below the root: where the
+// SAH would go deeper, a node is halved at its median instead. The CPU
+// reference traverses it as it is; the GPU backend collapses it to four wide
+// (engine/gpu_backend/top_levels.h).
 
 #include "scenes/bezier_patch.h"
 
@@ -35,6 +37,10 @@ class PatchBvh {
     int patchCount = 0;  // 0 for interior nodes
     bool leaf() const { return patchCount > 0; }
   };
+
+  // Deep enough for halving subtrees over any int count of patches, so the
+  // bound never needs leaves larger than maxLeafPatches.
+  static constexpr int kMaxDepth = 48;
 
   static PatchBvh build(const SubdivisionSurface& surface, int maxLeafPatches = 4);
 

@@ -11,30 +11,29 @@ const uint FACET_PATCH_GREGORY = 1u;
 const uint FACET_PATCH_POINTS_BEZIER = 16u;
 const uint FACET_PATCH_POINTS_GREGORY = 20u;
 
-// One limit-surface patch, 56 bytes, in the order of its object's patch
-// BVH leaves. Patch-local (s, t) in [0,1]^2 is face parameter
+// What shading reads of a limit-surface patch, once per hit: 32 bytes,
+// FACET_PATCH_RECORD_TEXELS uvec4 texels of the patch record texel buffer
+// (floats as their bits), in the order of its object's patch BVH leaves. A
+// texel buffer is bounded by maxTexelBufferElements, not by the far smaller
+// maxStorageBufferBindingSize (docs/reliability.md, "Limits").
+// Patch-local (s, t) in [0,1]^2 is face parameter
 // (u, v) = (faceU0 + s * faceSize, faceV0 + t * faceSize) on ptex face
-// `ptexFace`; hits report face, (u, v) and `sourcePatch`.
-// Its points are texels firstPoint ... firstPoint + pointCount - 1 of the
-// patch point texel buffer: 16 Bézier points row-major (index 4*j + i, i
-// along s), then for Gregory patches the alternates of slots 5, 6, 10, 9.
+// `ptexFace`; hits report face, (u, v) and `sourcePatch`. The patch's kind
+// and first point are in its header (below): its points are texels
+// firstPoint ... firstPoint + 15 (Bézier) or + 19 (Gregory) of the patch
+// point texel buffer: 16 Bézier points row-major (index 4*j + i, i along
+// s), then for Gregory patches the alternates of slots 5, 6, 10, 9.
 struct PatchRecord {
-  uint kind;        // FACET_PATCH_BEZIER or FACET_PATCH_GREGORY
-  uint firstPoint;  // absolute texel index
-  uint ptexFace;
-  uint coarseFace;  // the cage face the ptex face belongs to
+  uint sourcePatch;    // OpenSubdiv patch index: the patch id in hits and AOVs
+  uint coarseFace;     // the cage face the ptex face belongs to
+  uint firstNormal;    // a mesh as authored with normals: 4 texels of authored normals, else FACET_NO_NORMALS
+  uint firstTexcoord;  // a cage with texture coordinates: its first texcoord texel, else FACET_NO_TEXCOORDS
   float faceU0;
   float faceV0;
-  float faceSize;       // a power of two: exact in float
-  uint sourcePatch;     // OpenSubdiv patch index: the patch id in hits and AOVs
-  uint boundaryMask;    // OpenSubdiv edge bits (1 v=0, 2 u=1, 4 v=1, 8 u=0), already folded into the points
-  uint depth;           // refinement level of the patch
-  uint pointCount;      // FACET_PATCH_POINTS_BEZIER or FACET_PATCH_POINTS_GREGORY
-  uint transitionMask;  // same edge bits: the neighbour across is one level
-                        // deeper, so crack-free dicing splits that edge twice as finely
-  uint firstNormal;     // a mesh as authored with normals: 4 texels of authored normals, else FACET_NO_NORMALS
-  uint firstTexcoord;   // a cage with texture coordinates: its first texcoord texel, else FACET_NO_TEXCOORDS
+  float faceSize;  // a power of two: exact in float
+  uint ptexFace;
 };
+const uint FACET_PATCH_RECORD_TEXELS = 2u;
 
 const uint FACET_NO_NORMALS = 0xFFFFFFFFu;
 

@@ -35,8 +35,11 @@ const uint FACET_BVH4_CELL = 0x80000000u;
 // cell) crosses the cell's surface at most once.
 const uint FACET_CELL_TEXELS = 4u;
 
-// Longest path of references from an object's root to a cell: the private
-// traversal stack holds at most 3 per level below the root.
-const uint FACET_BVH4_MAX_DEPTH = 16u;
+// Longest path of nodes from the root to a cell: the private traversal
+// stack holds at most 3 per level below the root. The top levels are built
+// within it (engine/gpu_backend/top_levels.h), and 17 holds every scene whose
+// nodes a cell reference addresses (docs/rendering.md, "The depth of the top
+// levels").
+const uint FACET_BVH4_MAX_DEPTH = 17u;
 
 #endif

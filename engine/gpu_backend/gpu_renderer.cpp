@@ -80,8 +80,15 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   };
 
-  // Stage: the environment's tables or prefiltered maps (wall clock).
+  // The packed geometry first, checked against the device's limits before
+  // anything else takes time (its wall clock counts to the top levels).
   auto start = std::chrono::steady_clock::now();
+  const GpuScene packed = packScene(scene, geometry, origin, rootTolerance(scene, geometry), tessellated);
+  checkGeometryLimits(packed, d.limits(), d.adapterInfo().name);
+  const double packMilliseconds = wallClock(start);
+
+  // Stage: the environment's tables or prefiltered maps (wall clock).
+  start = std::chrono::steady_clock::now();
   std::optional<ibl::EnvironmentLighting> lighting;
   if (scene.environment) {
     lighting = prepareEnvironment(d, scene);
@@ -91,7 +98,6 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   // Stage: the BVH's top levels and the patches, packed and uploaded unless
   // the last render diced the same geometry (wall clock).
   start = std::chrono::steady_clock::now();
-  const GpuScene packed = packScene(scene, geometry, origin, rootTolerance(scene, geometry), tessellated);
   layout::FrameParams frame = frameParams(scene, geometry, strata, packed);
   frame.slotsPerRay =
       std::uint32_t(scene.lights.size()) + environmentSlots(lighting ? &*lighting : nullptr) + emissionSlots(scene);
@@ -104,7 +110,7 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   const GeometryBuffers& geometryBuffers = diced_->buffers;
   const ShadingBuffers shadingBuffers = uploadShading(d, scene, lighting ? &*lighting : nullptr, environment,
                                                       compensation, compensationTexelData, origin);
-  result.stageMilliseconds.push_back({Stage::TopLevels, wallClock(start)});
+  result.stageMilliseconds.push_back({Stage::TopLevels, packMilliseconds + wallClock(start)});
 
   const int width = scene.render.width;
   const PixelRect window = crop.value_or(PixelRect::whole(width, scene.render.height));

@@ -24,6 +24,7 @@ namespace facet::gpu_backend {
 struct GpuScene {
   std::vector<Texel> topNodes;  // nodes 0 .. topNodes.size() / FACET_BVH4_TEXELS - 1 of the node buffer
   std::uint32_t rootNode = 0;
+  int depth = 0;  // the longest path of nodes from the root to a cell (top_levels.h)
   // The top nodes, children before parents: the order in which their boxes
   // are refitted to the diced cells (compute/raycast/dicing/refit_top_levels.comp).
   std::vector<std::uint32_t> refitOrder;
@@ -31,7 +32,7 @@ struct GpuScene {
   std::vector<gpu_layout::PatchRecord> patches;
   std::vector<Texel> headers;  // FACET_HEADER_TEXELS per patch
   std::vector<glm::vec4> points;
-  std::vector<glm::vec4> normals;  // authored, 4 per patch that has them
+  std::vector<glm::vec4> normals;    // authored, 4 per patch that has them
   std::vector<glm::vec4> texcoords;  // FACET_TEXCOORD_TEXELS per patch of a cage that has them
   std::vector<gpu_layout::ObjectRange> objects;
   std::uint64_t blocks = 0;         // 2 x 2 cell blocks, one dicing invocation each

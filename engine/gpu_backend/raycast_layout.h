@@ -22,9 +22,9 @@ using rules::f32::uint;
 }  // namespace facet::gpu_layout
 
 // The layout GLSL sees: 4-byte members, no padding.
-static_assert(sizeof(facet::gpu_layout::PatchRecord) == 56);
+static_assert(sizeof(facet::gpu_layout::PatchRecord) == 16 * facet::gpu_layout::FACET_PATCH_RECORD_TEXELS);
 static_assert(offsetof(facet::gpu_layout::PatchRecord, faceU0) == 16);
-static_assert(offsetof(facet::gpu_layout::PatchRecord, transitionMask) == 44);
+static_assert(offsetof(facet::gpu_layout::PatchRecord, ptexFace) == 28);
 static_assert(sizeof(facet::gpu_layout::ObjectRange) == 52);
 static_assert(sizeof(facet::gpu_layout::RayRecord) == 32);
 static_assert(sizeof(facet::gpu_layout::ShadowRayRecord) == 36);

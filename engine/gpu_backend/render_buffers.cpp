@@ -33,23 +33,55 @@ gpu::Buffer storage(gpu::Device& device, const char* label, std::uint64_t bytes,
 
 // Each array a kernel reads through one texel buffer must fit the device's
 // limit on its elements; `advice` says how to make it smaller.
-void checkTexelBuffers(gpu::Device& d, std::initializer_list<std::pair<const char*, std::uint64_t>> arrays,
-                       const char* advice) {
-  const std::uint64_t maxTexels = d.limits().maxTexelBufferElements;
-  for (const auto& [name, texels] : arrays)
-    if (texels > maxTexels)
+void checkTexelBuffers(const gpu::Limits& limits, const std::string& adapter,
+                       std::initializer_list<std::pair<const char*, std::uint64_t>> arrays, const char* advice) {
+  for (const auto& [name, texels] : arrays) {
+    if (texels > limits.maxTexelBufferElements)
       throw gpu::Error(std::string(name) + " need " + std::to_string(texels) + " texels in one texel buffer; " +
-                       d.adapterInfo().name + " addresses at most " + std::to_string(maxTexels) + ": " + advice);
+                       adapter + " addresses at most " + std::to_string(limits.maxTexelBufferElements) + ": " + advice);
+    if (texels * 16 > limits.maxBufferSize)
+      throw gpu::Error(std::string(name) + " need " + std::to_string(texels * 16) + " bytes in one buffer; " + adapter +
+                       "'s maxBufferSize is " + std::to_string(limits.maxBufferSize) + ": " + advice);
+  }
+}
+
+// The same for arrays read as storage buffers, bounded by
+// maxStorageBufferBindingSize.
+void checkStorageBuffers(const gpu::Limits& limits, const std::string& adapter,
+                         std::initializer_list<std::pair<const char*, std::uint64_t>> arrays, const char* advice) {
+  const std::uint64_t maxBytes = std::min(limits.maxStorageBufferBindingSize, limits.maxBufferSize);
+  for (const auto& [name, bytes] : arrays)
+    if (bytes > maxBytes)
+      throw gpu::Error(std::string(name) + " need " + std::to_string(bytes) + " bytes in one storage buffer; " +
+                       adapter + " binds at most " + std::to_string(maxBytes) + ": " + advice);
 }
 
 }  // namespace
 
-GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed) {
-  checkTexelBuffers(d,
+void checkGeometryLimits(const GpuScene& packed, const gpu::Limits& limits, const std::string& adapter) {
+  checkTexelBuffers(limits, adapter,
                     {{"the micro-grid's BVH nodes", packed.nodeCount * layout::FACET_BVH4_TEXELS},
                      {"the micro-grid's grid vertices", packed.gridVertices},
+                     {"the micro-grid's edge midpoints", packed.edgeMidpoints},
                      {"the micro-grid's cell bounds", packed.cellBounds}},
                     "lower the dicing rate (--tess-level)");
+  const char* fewerPatches =
+      "the scene has too many patches for this device: lower the objects' isolation, or render it with the CPU "
+      "reference (--backend cpu)";
+  checkTexelBuffers(limits, adapter,
+                    {{"the patch records", packed.patches.size() * layout::FACET_PATCH_RECORD_TEXELS},
+                     {"the patch headers", packed.headers.size()},
+                     {"the patch points", packed.points.size()},
+                     {"the authored normals", packed.normals.size()},
+                     {"the texture coordinates", packed.texcoords.size()}},
+                    fewerPatches);
+  checkStorageBuffers(limits, adapter,
+                      {{"the object ranges", packed.objects.size() * sizeof(layout::ObjectRange)},
+                       {"the refit order", packed.refitOrder.size() * sizeof(std::uint32_t)}},
+                      fewerPatches);
+}
+
+GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed) {
   const BufferUsage in = BufferUsage::Storage, texel = BufferUsage::Texel;
   // Written by the dicing kernels, read by the tracing ones.
   const BufferUsage diced = BufferUsage::Texel | BufferUsage::StorageTexel;
@@ -58,7 +90,7 @@ GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed) {
                             diced | BufferUsage::CopyDst});
   if (!packed.topNodes.empty())
     d.queue().writeBuffer(b.nodes, 0, packed.topNodes.data(), packed.topNodes.size() * sizeof(Texel));
-  b.patches = upload(d, "patch records", packed.patches, in);
+  b.patches = upload(d, "patch records", packed.patches, texel);
   b.headers = upload(d, "patch headers", packed.headers, texel);
   b.points = upload(d, "patch points", packed.points, texel);
   b.normals = upload(d, "authored normals", packed.normals, texel);
@@ -78,7 +110,7 @@ ShadingBuffers uploadShading(gpu::Device& d, const scene::Scene& scene, const ib
                              const EnvironmentData& environment, const ibl::CompensationTables& compensation,
                              const std::vector<glm::vec4>& compensationTexels, const glm::dvec3& origin) {
   const TextureData textures = textureData(scene.textures);
-  checkTexelBuffers(d,
+  checkTexelBuffers(d.limits(), d.adapterInfo().name,
                     {{"the environment map", environment.texels.size()},
                      {"the environment's tables", environment.tables.size()},
                      {"the textures", textures.texels.size()}},

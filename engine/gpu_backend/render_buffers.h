@@ -8,6 +8,7 @@
 #include <glm/vec4.hpp>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "engine/gpu/gpu.h"
@@ -40,6 +41,12 @@ struct BandBuffers {
   gpu::Buffer aovsHost, beautyHost, countersHost;
   std::uint64_t bytes = 0;
 };
+
+// Every array of the packed geometry against the device's limits (texel
+// buffer elements, storage binding and buffer sizes), before anything is
+// allocated or diced: a gpu::Error names the array, what it needs, the limit
+// and what to do. GpuRenderer::render checks right after packing.
+void checkGeometryLimits(const GpuScene& packed, const gpu::Limits& limits, const std::string& adapter);
 
 GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed);
 

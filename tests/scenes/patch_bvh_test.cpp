@@ -1,6 +1,7 @@
 #include "scenes/patch_bvh.h"
 #include "scenes/subdivision_surface.h"
 #include "tests/support/cages.h"
+#include "tests/support/degenerate_cages.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -82,6 +83,41 @@ TEST_P(BvhOfEachCage, EveryPatchLiesInOneLeafWithinItsAncestors) {
 }
 
 INSTANTIATE_TEST_SUITE_P(TortureCages, BvhOfEachCage, ::testing::ValuesIn(tortureCageNames()));
+
+class DegenerateBvh : public ::testing::TestWithParam<testing::Degenerate> {};
+
+// Inputs on which the SAH alone peels off a few patches per level: the build
+// stays within kMaxDepth (halving at the median where the SAH would go
+// deeper), keeps every patch in one leaf of at most four, and its recorded
+// depth is the tree's.
+TEST_P(DegenerateBvh, StaysWithinItsDepthBound) {
+  for (int quads : {1, 5, 3000}) {
+    const SubdivisionSurface surface = testing::degenerateSurface(GetParam(), quads);
+    ASSERT_EQ(surface.patchCount(), quads);
+    const PatchBvh bvh = PatchBvh::build(surface);
+    const auto& nodes = bvh.nodes();
+    std::vector<int> seen(std::size_t(quads), 0), depth(nodes.size(), 0);
+    int deepest = 0;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      deepest = std::max(deepest, depth[i]);
+      if (nodes[i].leaf()) {
+        EXPECT_LE(nodes[i].patchCount, 4);
+        for (int k = 0; k < nodes[i].patchCount; ++k)
+          ++seen[std::size_t(bvh.leafPatches()[std::size_t(nodes[i].next + k)])];
+      } else {
+        depth[i + 1] = depth[std::size_t(nodes[i].next)] = depth[i] + 1;
+      }
+    }
+    for (int count : seen) EXPECT_EQ(count, 1);
+    EXPECT_EQ(bvh.statistics().maxDepth, deepest);
+    EXPECT_LE(deepest, PatchBvh::kMaxDepth) << quads << " quads";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Inputs, DegenerateBvh,
+                         ::testing::Values(testing::Degenerate::AlongALine, testing::Degenerate::AllInOnePoint,
+                                           testing::Degenerate::GeometricSizes, testing::Degenerate::NestedSizes),
+                         [](const auto& info) { return testing::degenerateName(info.param); });
 
 }  // namespace
 }  // namespace facet::scene

@@ -269,8 +269,9 @@ void main() {
 
   vec3 origin = ray.origin;
   ObjectRange range = objects[hit.object];
-  PatchRecord record = patches[hit.patchIndex];
-  ControlPoints c = load_control_points(record.firstPoint, record.kind);
+  PatchRecord record = load_patch_record(hit.patchIndex);
+  uvec4 header = texelFetch(patchHeaders, int(hit.patchIndex * FACET_HEADER_TEXELS));
+  ControlPoints c = load_control_points(header[FACET_HEADER_FIRST_POINT], header[FACET_HEADER_KIND]);
   vec3 limit = limit_normal(c, hit.s, hit.tParam);
   vec3 n = shading_normal(record, hit.s, hit.tParam, limit);
   // A hit on a micro-triangle (the tessellated finish reports its normal)

@@ -27,14 +27,18 @@ namespace {
 
 namespace layout = gpu_layout;
 
+// A torture cage by name, or a test mesh by its file name.
 scene::Scene cageScene(const std::string& name, const glm::dvec3& offset = glm::dvec3(0.0)) {
-  scene::Scene scene = scene::loadScene(std::filesystem::path(FACET_CAGE_DIR) / (name + ".obj"));
+  const std::filesystem::path file = name.ends_with(".obj") ? std::filesystem::path(FACET_TEST_DATA_DIR) / name
+                                                            : std::filesystem::path(FACET_CAGE_DIR) / (name + ".obj");
+  scene::Scene scene = scene::loadScene(file);
   facet::testing::translateScene(scene, offset);
   return scene;
 }
 
 float boxValue(const GpuScene& packed, std::size_t node, int texel, int slot) {
-  return std::bit_cast<float>(packed.topNodes[node * layout::FACET_BVH4_TEXELS + std::size_t(texel)][std::size_t(slot)]);
+  return std::bit_cast<float>(
+      packed.topNodes[node * layout::FACET_BVH4_TEXELS + std::size_t(texel)][std::size_t(slot)]);
 }
 
 class PackedCage : public ::testing::TestWithParam<std::string> {};
@@ -84,6 +88,7 @@ TEST_P(PackedCage, TopLevelsReachEveryPatchOnceThroughEnclosingBoxes) {
     }
   }
   for (int count : reached) EXPECT_EQ(count, 1);
+  EXPECT_EQ(deepest + int(range.quadtreeLevels), packed.depth);
   EXPECT_LE(std::uint32_t(deepest) + range.quadtreeLevels, layout::FACET_BVH4_MAX_DEPTH);
   // Four wide: about a third of the binary tree's depth... at most its depth.
   EXPECT_LE(deepest, bvh.statistics().maxDepth + 1);
@@ -98,7 +103,8 @@ TEST_P(PackedCage, RebasedPointsEvaluateToTheLimitSurfaceFarFromTheOrigin) {
   const glm::dvec3 origin = scene.camera.eye;
   const GpuScene packed = packScene(scene, geometry, origin, 0.0, true);
   ASSERT_EQ(packed.patches.size(), std::size_t(surface.patchCount()));
-  EXPECT_EQ(packed.gridVertices, packed.patches.size() * std::size_t((packed.objects[0].rate + 1) * (packed.objects[0].rate + 1)));
+  EXPECT_EQ(packed.gridVertices,
+            packed.patches.size() * std::size_t((packed.objects[0].rate + 1) * (packed.objects[0].rate + 1)));
   std::mt19937 random(13);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   double worst = 0.0;
@@ -108,9 +114,13 @@ TEST_P(PackedCage, RebasedPointsEvaluateToTheLimitSurfaceFarFromTheOrigin) {
     const layout::PatchRecord& record = packed.patches[slot];
     const Texel& first = packed.headers[layout::FACET_HEADER_TEXELS * slot];
     const Texel& second = packed.headers[layout::FACET_HEADER_TEXELS * slot + 1];
-    EXPECT_EQ(first[layout::FACET_HEADER_FIRST_POINT], record.firstPoint);
-    EXPECT_EQ(first[layout::FACET_HEADER_KIND], record.kind);
-    EXPECT_EQ(first[layout::FACET_HEADER_TRANSITION_MASK], record.transitionMask);
+    const scene::PatchInfo& info = surface.patch(int(record.sourcePatch));
+    EXPECT_EQ(first[layout::FACET_HEADER_KIND], surface.bezierPatch(int(record.sourcePatch)).gregory
+                                                    ? layout::FACET_PATCH_GREGORY
+                                                    : layout::FACET_PATCH_BEZIER);
+    EXPECT_EQ(first[layout::FACET_HEADER_TRANSITION_MASK], info.transitionMask);
+    EXPECT_EQ(record.ptexFace, std::uint32_t(info.ptexFace));
+    EXPECT_EQ(record.coarseFace, std::uint32_t(info.coarseFace));
     EXPECT_EQ(first[layout::FACET_HEADER_RATE], range.rate);
     EXPECT_EQ(second[layout::FACET_HEADER_FIRST_CELL], range.firstCell + slot * range.rate * range.rate);
     EXPECT_EQ(second[layout::FACET_HEADER_FIRST_GRID_VERTEX],
@@ -118,11 +128,12 @@ TEST_P(PackedCage, RebasedPointsEvaluateToTheLimitSurfaceFarFromTheOrigin) {
     EXPECT_EQ(second[layout::FACET_HEADER_FIRST_EDGE_MIDPOINT], range.firstEdgeMidpoint + slot * 4 * range.rate);
     EXPECT_EQ(second[layout::FACET_HEADER_OBJECT], 0u);
     scene::BezierPatch fromGpu;
-    fromGpu.gregory = record.kind == layout::FACET_PATCH_GREGORY;
+    fromGpu.gregory = first[layout::FACET_HEADER_KIND] == layout::FACET_PATCH_GREGORY;
+    const std::uint32_t firstPoint = first[layout::FACET_HEADER_FIRST_POINT];
     auto read = [&](std::uint32_t index) { return glm::dvec3(glm::vec3(packed.points[index])); };
-    for (std::uint32_t k = 0; k < 16; ++k) fromGpu.points[k] = read(record.firstPoint + k);
+    for (std::uint32_t k = 0; k < 16; ++k) fromGpu.points[k] = read(firstPoint + k);
     if (fromGpu.gregory)
-      for (std::uint32_t k = 0; k < 4; ++k) fromGpu.alternates[k] = read(record.firstPoint + 16 + k);
+      for (std::uint32_t k = 0; k < 4; ++k) fromGpu.alternates[k] = read(firstPoint + 16 + k);
     for (int sample = 0; sample < 4; ++sample) {
       const double s = unit(random), t = unit(random);
       const glm::dvec3 osd = surface
@@ -132,8 +143,8 @@ TEST_P(PackedCage, RebasedPointsEvaluateToTheLimitSurfaceFarFromTheOrigin) {
       worst = std::max(worst, glm::length(scene::evaluateBezierPatch(fromGpu, s, t).position + origin - osd));
     }
   }
-  const double sceneSize = glm::length(surface.bounds().hi - surface.bounds().lo) +
-                           glm::length(surface.bounds().centre() - origin);
+  const double sceneSize =
+      glm::length(surface.bounds().hi - surface.bounds().lo) + glm::length(surface.bounds().centre() - origin);
   EXPECT_LE(worst, 1e-6 * sceneSize) << GetParam();
 }
 
@@ -170,7 +181,8 @@ TEST(PackedScene, OneRootReachesEveryPatchOfEveryObjectOnce) {
 
 INSTANTIATE_TEST_SUITE_P(TortureCages, PackedCage,
                          ::testing::Values("cube", "valence_3_to_10", "pole24", "boundary_hole", "creased_box",
-                                           "ngon_prism", "thin_slab", "nearly_flat", "suzanne"));
+                                           "ngon_prism", "thin_slab", "nearly_flat", "suzanne", "catmark_bishop.obj"),
+                         [](const auto& info) { return info.param.substr(0, info.param.find('.')); });
 
 // The shared headers compiled as GLSL at build time (shaders/gpu_layout.comp):
 // the member offsets and array strides glslang chose for the std430 buffers
@@ -279,13 +291,14 @@ TEST(GpuLayout, GlslLayoutOfTheSharedHeadersIsTheCppLayout) {
   EXPECT_EQ(layout.stride("PathState"), sizeof(PathState));
 #define FACET_EXPECT_MEMBER(type, member) \
   EXPECT_EQ(layout.offset(#type, #member), offsetof(type, member)) << #type "." #member
-  FACET_EXPECT_MEMBER(PatchRecord, kind);
-  FACET_EXPECT_MEMBER(PatchRecord, firstPoint);
-  FACET_EXPECT_MEMBER(PatchRecord, faceU0);
   FACET_EXPECT_MEMBER(PatchRecord, sourcePatch);
-  FACET_EXPECT_MEMBER(PatchRecord, transitionMask);
+  FACET_EXPECT_MEMBER(PatchRecord, coarseFace);
   FACET_EXPECT_MEMBER(PatchRecord, firstNormal);
   FACET_EXPECT_MEMBER(PatchRecord, firstTexcoord);
+  FACET_EXPECT_MEMBER(PatchRecord, faceU0);
+  FACET_EXPECT_MEMBER(PatchRecord, faceV0);
+  FACET_EXPECT_MEMBER(PatchRecord, faceSize);
+  FACET_EXPECT_MEMBER(PatchRecord, ptexFace);
   FACET_EXPECT_MEMBER(ObjectRange, firstPatch);
   FACET_EXPECT_MEMBER(FrameParams, rootNode);
   FACET_EXPECT_MEMBER(ObjectRange, rate);

@@ -23,7 +23,8 @@ void main() {
   ShadowRayRecord r = shadowRays[0];
   FallbackRecord f = fallbacks[0];
   counters.cameraFallbacks = f.ray + f.cell + uint(f.t) + f.patchIndex + uint(f.tParam) + frame.fallbackCapacity +
-                             p.kind + p.firstPoint + uint(p.faceU0) + p.sourcePatch + p.transitionMask + p.firstNormal + p.firstTexcoord + o.firstPatch + frame.rootNode +
+                             p.sourcePatch + p.coarseFace + p.firstNormal + p.firstTexcoord + uint(p.faceU0) +
+                             uint(p.faceV0) + uint(p.faceSize) + p.ptexFace + o.firstPatch + frame.rootNode +
                              o.rate + o.firstQuadtreeNode + o.firstEdgeMidpoint + uint(r.ray.tMax) + r.slot +
                              hits[0].patchIndex + frame.patchCount + uint(frame.tolerance) + frame.dfgSize + frame.compensationSize +
                              pathStates[0].transmissionTaken + uint(frame.transmissionBounces) + FACET_BVH4_TEXELS;
