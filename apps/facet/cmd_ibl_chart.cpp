@@ -71,7 +71,7 @@ void runIblChart(ChartOptions o) {
   settings.alphas = parseAlphas(o.alphas);
   settings.sampleCounts = sampleCounts(o.maxSamples);
   settings.base = scene::loadScene(o.scene);
-  printSceneWarnings(settings.base);
+  printWarnings(sceneWarnings(settings.base), false);
   applyImageSize(o.size, settings.base);
   applyMethod("tess", settings.base);
   StagedOutputFolder folder(o.output);

@@ -58,7 +58,7 @@ ParityCase judgeScene(const std::string& file, const ParityCommandOptions& o,
                       const analysis::ParityTolerances& tolerances, const std::vector<gpu::AdapterInfo>& adapters,
                       std::vector<std::unique_ptr<Renderer>>& renderers) {
   scene::Scene scene = scene::loadScene(file);
-  printSceneWarnings(scene);
+  printWarnings(sceneWarnings(scene), false);
   applySceneOverrides(o.sceneOverrides, scene);
   // The reference's render; per adapter its render, the first pair, the
   // pairs' sums (about an image and a half) and the two mean images.

@@ -113,14 +113,12 @@ void runRender(const RenderCommandOptions& o) {
   for (const RenderJob& job : jobs) checkOutputs(job, o);
   chosenExrLayers(o.exrFlags);
   scene::Scene scene = loadEditedScene(o.scene, o.edits);
-  printSceneWarnings(scene);
   applySceneOverrides(o.scene_overrides, scene);
   const int width = scene.render.width, height = scene.render.height;
   const std::optional<PixelRect> crop = chosenCrop(o.farm, width, height);
   scene::checkImagesFitInMemory(scene, 1, o.scene_overrides.size.empty() ? o.scene + ": image size" : "--size", crop);
-  if (scene.environment && scene.environment->map->clampedTexels > 0)
-    std::fprintf(stderr, "warning: %s: %zu texels were negative, NaN or Inf and are set to 0\n",
-                 scene.environment->map->source.c_str(), scene.environment->map->clampedTexels);
+  const std::vector<std::string> warnings = sceneWarnings(scene);
+  printWarnings(warnings, o.farm.quiet || o.farm.json);
   const Backend backend = o.backend == "cpu" ? Backend::Cpu : Backend::Gpu;
   const unsigned threads = chosenThreads(o.farm);
   if (backend == Backend::Gpu) limitLavapipeThreads(threads);
@@ -134,6 +132,7 @@ void runRender(const RenderCommandOptions& o) {
                             {"height", height},
                             {"spp", scene.render.samplesPerPixel},
                             {"lighting", lightingName(scene)},
+                            {"warnings", warnings},
                             {"renders", nlohmann::json::array()}};
   for (const RenderJob& job : jobs) {
     scene.camera = job.frame ? frameCamera(still, scene.cameraKeys, o.farm, *job.frame) : still;

@@ -93,6 +93,7 @@ nlohmann::json renderJson(const RenderReport& report, const RenderJob& job, doub
                            {"rays_per_second", raysPerSecond(report)},
                            {"gpu_bytes", report.gpuBytes},
                            {"outputs", outputPaths(job)}};
+  if (!report.pathsNote.empty()) render["paths"] = report.pathsNote;
   if (report.raysPerBounce.empty()) return render;
   nlohmann::json bounces = nlohmann::json::array();
   for (const cpu::BounceRays& rays : report.raysPerBounce)

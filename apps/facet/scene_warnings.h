@@ -1,13 +1,18 @@
-// A scene's warnings (scenes/scene.h) on stderr, whatever --quiet says: they
-// tell that the render differs from what the file says, as the
-// environment's clamped texels do.
+// What a render does differently from what its files say (scenes/scene.h's
+// warnings, and an environment's clamped texels), once each: on stderr
+// unless --quiet or --json, and kept in --json's "warnings".
 #pragma once
+
+#include <string>
+#include <vector>
 
 #include "scenes/scene.h"
 
 namespace facet::cli {
 
-// One line "facet: warning: ..." per warning.
-void printSceneWarnings(const scene::Scene& scene);
+std::vector<std::string> sceneWarnings(const scene::Scene& scene);
+
+// One line "facet: warning: ..." per warning, unless `quiet`.
+void printWarnings(const std::vector<std::string>& warnings, bool quiet);
 
 }  // namespace facet::cli
