@@ -30,7 +30,7 @@ class GltfCoverage : public facet::testing::TempDirTest {
   Scene load(const std::string& name, const nlohmann::json& material, nlohmann::json parts = nlohmann::json::object()) {
     nlohmann::json m = {{"doubleSided", true}};
     m.update(material);
-    parts["materials"] = {m};
+    parts["materials"] = nlohmann::json::array({m});
     return loadScene(facet::testing::writeTexturedQuad(dir_, name, parts));
   }
 };
