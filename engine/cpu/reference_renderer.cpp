@@ -368,7 +368,7 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
         glm::dvec3 radiance(0.0);
         double coverage = 0;
         for (std::uint32_t sample = 0; sample < raysPerPixel; ++sample) {
-          const glm::dvec2 offset = rules::f64::sample_offset(pixelId, sample, strata);
+          const glm::dvec2 offset = rules::f64::sample_offset(pixelId, sample, strata, reference.environmentSeed());
           const glm::dvec3 direction =
               rules::f64::camera_ray_direction(frame, x + offset.x, y + offset.y, width, height);
           ++primary;

@@ -13,7 +13,9 @@
 
 Ray camera_ray(uint index) {
   uint pixel = frame.firstPixel + index / frame.raysPerPixel, sampleIndex = index % frame.raysPerPixel;
-  vec2 offset = sample_offset(pixel, sampleIndex, frame.strata);
+  // Camera rays are cast only while the frame holds the scene's own seed
+  // (band_passes.cpp gives each bounce a vertex seed after them).
+  vec2 offset = sample_offset(pixel, sampleIndex, frame.strata, frame.environmentSeed);
   uint width = uint(frame.width);
   CameraFrame camera;
   camera.eye = vec3(0.0);

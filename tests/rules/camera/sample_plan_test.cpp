@@ -12,15 +12,16 @@
 namespace facet::rules::f64 {
 namespace {
 
-std::vector<glm::dvec2> shadedOffsets(uint pixel, uint strata) {
+std::vector<glm::dvec2> shadedOffsets(uint pixel, uint strata, uint seed = 0) {
   std::vector<glm::dvec2> offsets;
   for (uint s = first_shaded_sample(strata); s < rays_per_pixel(strata); ++s)
-    offsets.push_back(sample_offset(pixel, s, strata));
+    offsets.push_back(sample_offset(pixel, s, strata, seed));
   return offsets;
 }
 
 TEST(SamplePlan, SampleZeroPassesThroughThePixelCentre) {
-  for (uint pixel : {0u, 7u, 123456u}) EXPECT_EQ(sample_offset(pixel, 0, 4), glm::dvec2(0.5));
+  for (uint pixel : {0u, 7u, 123456u})
+    for (uint seed : {0u, 1u, 77u}) EXPECT_EQ(sample_offset(pixel, 0, 4, seed), glm::dvec2(0.5));
 }
 
 // 16 samples: one in every elementary box of area 1/16 (2^a x 2^b, a + b = 4).
@@ -54,6 +55,20 @@ TEST(SamplePlan, PixelsDrawDifferentPoints) {
   const std::vector<glm::dvec2> first = shadedOffsets(1000, 2);
   for (uint other : {1001u, 1000u + 640u})
     for (std::size_t i = 0; i < first.size(); ++i) EXPECT_NE(first[i], shadedOffsets(other, 2)[i]) << other;
+}
+
+// Each seed scrambles its own net, still one sample in every box of 1/16.
+TEST(SamplePlan, EachSeedDrawsANetOfItsOwn) {
+  const std::vector<glm::dvec2> first = shadedOffsets(1000, 4, 0);
+  for (uint seed : {1u, 2u, 1000u}) {
+    const std::vector<glm::dvec2> other = shadedOffsets(1000, 4, seed);
+    std::set<std::pair<int, int>> boxes;
+    for (std::size_t i = 0; i < first.size(); ++i) {
+      EXPECT_NE(first[i], other[i]) << "seed " << seed;
+      boxes.insert({int(other[i].x * 4), int(other[i].y * 4)});
+    }
+    EXPECT_EQ(boxes.size(), 16u) << "seed " << seed;
+  }
 }
 
 }  // namespace
