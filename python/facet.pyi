@@ -54,7 +54,7 @@ def load_cage(path: Union[str, PathLike[str]]) -> Cage: ...
 class Object:
     def __init__(self, cage: Cage, *, material: int = 0, name: str = "", subdivided: bool = True) -> None: ...
 
-# Light, Camera and Environment are values: their fields are read-only.
+# Light, Camera and Environment are values: their fields are read-only; replace() gives a changed copy.
 class Light:
     type: str
     color: Vec3
@@ -64,6 +64,9 @@ class Light:
     outer_cone: float
     def __init__(self, type: str = "directional", *, color: Vec3 = (1.0, 1.0, 1.0), position: Vec3 = (0.0, 0.0, 0.0),
                  direction: Vec3 = (0.0, -1.0, 0.0), inner_cone: float = 30.0, outer_cone: float = 45.0) -> None: ...
+    def replace(self, *, type: Optional[str] = None, color: Optional[Vec3] = None, position: Optional[Vec3] = None,
+                direction: Optional[Vec3] = None, inner_cone: Optional[float] = None,
+                outer_cone: Optional[float] = None) -> Light: ...
 
 class Camera:
     eye: Vec3
@@ -72,6 +75,8 @@ class Camera:
     fov: float
     def __init__(self, *, eye: Vec3 = (0.0, 0.0, 5.0), target: Vec3 = (0.0, 0.0, 0.0), up: Vec3 = (0.0, 1.0, 0.0),
                  fov: float = 40.0) -> None: ...
+    def replace(self, *, eye: Optional[Vec3] = None, target: Optional[Vec3] = None, up: Optional[Vec3] = None,
+                fov: Optional[float] = None) -> Camera: ...
 
 class Environment:
     file: str
@@ -82,6 +87,9 @@ class Environment:
     occlusion: bool
     def __init__(self, file: Union[str, PathLike[str]], *, intensity: float = 1.0, rotation: float = 0.0,
                  method: str = "prefiltered", samples: int = 16, occlusion: bool = True) -> None: ...
+    def replace(self, *, file: Optional[Union[str, PathLike[str]]] = None, intensity: Optional[float] = None,
+                rotation: Optional[float] = None, method: Optional[str] = None, samples: Optional[int] = None,
+                occlusion: Optional[bool] = None) -> Environment: ...
 
 class SceneObject:
     @property

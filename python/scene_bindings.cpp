@@ -171,7 +171,8 @@ void bindScenes(py::module_& m) {
            py::arg("cage"), py::kw_only(), py::arg("material") = 0, py::arg("name") = "", py::arg("subdivided") = true);
 
   // Lights, cameras and environments are values: their fields are read-only,
-  // so that changing a copy a scene handed out cannot look like changing the scene.
+  // so that changing a copy a scene handed out cannot look like changing the
+  // scene; replace() makes the changed copy to assign back.
   py::class_<facet::Light>(m, "Light", "A punctual light, with a scene file's lights[] fields; color is c_light")
       .def(py::init([](const std::string& type, Vec3 color, Vec3 position, Vec3 direction, double inner, double outer) {
              return facet::Light{lightType(type), color, position, direction, inner, outer};
@@ -185,7 +186,22 @@ void bindScenes(py::module_& m) {
       .def_readonly("position", &facet::Light::position, "point and spot lights")
       .def_readonly("direction", &facet::Light::direction, "the way the light travels: directional and spot lights")
       .def_readonly("inner_cone", &facet::Light::innerConeDegrees, "spot: half-angle in degrees of full light")
-      .def_readonly("outer_cone", &facet::Light::outerConeDegrees, "spot: half-angle in degrees beyond which none");
+      .def_readonly("outer_cone", &facet::Light::outerConeDegrees, "spot: half-angle in degrees beyond which none")
+      .def(
+          "replace",
+          [](facet::Light l, OptText type, OptVec color, OptVec position, OptVec direction, OptReal inner,
+             OptReal outer) {
+            if (type) l.type = lightType(*type);
+            l.color = color.value_or(l.color);
+            l.position = position.value_or(l.position);
+            l.direction = direction.value_or(l.direction);
+            l.innerConeDegrees = inner.value_or(l.innerConeDegrees);
+            l.outerConeDegrees = outer.value_or(l.outerConeDegrees);
+            return l;
+          },
+          py::kw_only(), py::arg("type") = py::none(), py::arg("color") = py::none(), py::arg("position") = py::none(),
+          py::arg("direction") = py::none(), py::arg("inner_cone") = py::none(), py::arg("outer_cone") = py::none(),
+          "A copy with the fields given changed");
 
   py::class_<facet::Camera>(m, "Camera", "A pinhole camera, with a scene file's camera fields; fov is vertical")
       .def(py::init([](Vec3 eye, Vec3 target, Vec3 up, double fov) {
@@ -196,7 +212,15 @@ void bindScenes(py::module_& m) {
       .def_readonly("eye", &facet::Camera::eye, "Where the camera is")
       .def_readonly("target", &facet::Camera::target, "What it looks at")
       .def_readonly("up", &facet::Camera::up, "Which way is up in the image")
-      .def_readonly("fov", &facet::Camera::verticalFovDegrees, "Vertical field of view in degrees, (0, 179]");
+      .def_readonly("fov", &facet::Camera::verticalFovDegrees, "Vertical field of view in degrees, (0, 179]")
+      .def(
+          "replace",
+          [](facet::Camera c, OptVec eye, OptVec target, OptVec up, OptReal fov) {
+            return facet::Camera{eye.value_or(c.eye), target.value_or(c.target), up.value_or(c.up),
+                                 fov.value_or(c.verticalFovDegrees)};
+          },
+          py::kw_only(), py::arg("eye") = py::none(), py::arg("target") = py::none(), py::arg("up") = py::none(),
+          py::arg("fov") = py::none(), "A copy with the fields given changed");
 
   py::class_<facet::Environment>(m, "Environment",
                                  "An equirectangular .exr or .hdr map, with a scene file's environment fields")
@@ -214,7 +238,22 @@ void bindScenes(py::module_& m) {
           "method", [](const facet::Environment& e) { return iblMethodName(e.method); },
           "The lighting method: sampled, prefiltered or filtered")
       .def_readonly("samples", &facet::Environment::samples, "sampled, filtered: pairs per camera sample")
-      .def_readonly("occlusion", &facet::Environment::occlusion, "sampled, filtered: shadow rays on");
+      .def_readonly("occlusion", &facet::Environment::occlusion, "sampled, filtered: shadow rays on")
+      .def(
+          "replace",
+          [](facet::Environment e, const py::object& file, OptReal intensity, OptReal rotation, OptText method,
+             std::optional<int> samples, std::optional<bool> occlusion) {
+            if (!file.is_none()) e.file = fspath(file);
+            e.intensity = intensity.value_or(e.intensity);
+            e.rotationDegrees = rotation.value_or(e.rotationDegrees);
+            if (method) e.method = iblMethod(*method);
+            e.samples = samples.value_or(e.samples);
+            e.occlusion = occlusion.value_or(e.occlusion);
+            return e;
+          },
+          py::kw_only(), py::arg("file") = py::none(), py::arg("intensity") = py::none(),
+          py::arg("rotation") = py::none(), py::arg("method") = py::none(), py::arg("samples") = py::none(),
+          py::arg("occlusion") = py::none(), "A copy with the fields given changed");
 
   py::class_<SceneObject>(m, "SceneObject", "One object of a Scene, as scene.objects lists them")
       .def_property_readonly(

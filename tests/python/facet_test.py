@@ -392,6 +392,12 @@ class ChangedScenes(unittest.TestCase):
         self.assertEqual(scene.lights, [])
         with self.assertRaises(AttributeError):
             scene.camera.fov = 20
+        scene.camera = scene.camera.replace(fov=20)
+        self.assertEqual(scene.camera.fov, 20)
+        self.assertEqual(scene.environment.replace(method="sampled", samples=2).method, "sampled")
+        self.assertEqual(facet.Light("spot").replace(outer_cone=60).outer_cone, 60)
+        with self.assertRaisesRegex(facet.Error, "method 'cheap': expected one of: prefiltered, sampled, filtered"):
+            scene.environment.replace(method="cheap")
 
     def test_a_loaded_cage_builds_the_scene_its_file_loads_as(self):
         cage = facet.load_cage(self.CUBE)
