@@ -1,7 +1,6 @@
 // Scenes from files through the engine's loaders, and from code through the
-// same rules the JSON loader applies, each error naming the field.
-#include <glm/geometric.hpp>
-
+// same rules the JSON loader applies (its own readers for the camera, lights
+// and environment), each error naming the field.
 #include <cmath>
 #include <string>
 
@@ -9,7 +8,6 @@
 #include "api/material.h"
 #include "api/scene_data.h"
 #include "scenes/input_error.h"
-#include "scenes/camera_rules.h"
 #include "scenes/scene_file.h"
 #include "scenes/value_rules.h"
 
@@ -25,18 +23,6 @@ constexpr const char* kSource = "scene";  // what errors name for a scene built 
 glm::dvec3 finite(const Vec3& v, const std::string& field) {
   if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) fail(field, "must be finite");
   return {v.x, v.y, v.z};
-}
-
-glm::dvec3 color(const Vec3& v, const std::string& field) {
-  const glm::dvec3 c = finite(v, field);
-  if (const auto rule = scene::radianceRule(c)) fail(field, *rule);
-  return c;
-}
-
-glm::dvec3 direction(const Vec3& v, const std::string& field) {
-  const glm::dvec3 d = finite(v, field);
-  if (glm::length(d) < 1e-12) fail(field, "a direction must not be the zero vector");
-  return glm::normalize(d);
 }
 
 double inRange(double x, double lo, double hi, const std::string& field) {
@@ -79,47 +65,6 @@ scene::ControlCage engineCage(const Cage& cage, const std::string& where) {
   return out;
 }
 
-scene::Light engineLight(const Light& light, const std::string& where) {
-  scene::Light out;
-  out.type = light.type == LightType::Point  ? scene::LightType::Point
-             : light.type == LightType::Spot ? scene::LightType::Spot
-                                             : scene::LightType::Directional;
-  out.color = color(light.color, where + ".color");
-  out.position = finite(light.position, where + ".position");
-  out.direction = direction(light.direction, where + ".direction");
-  out.outerConeDegrees = inRange(light.outerConeDegrees, 0, scene::kMaxSpotConeDegrees, where + ".outerConeDegrees");
-  out.innerConeDegrees = inRange(light.innerConeDegrees, 0, out.outerConeDegrees, where + ".innerConeDegrees");
-  return out;
-}
-
-scene::Camera engineCamera(const Camera& camera) {
-  scene::Camera out;
-  out.eye = finite(camera.eye, "camera.eye");
-  out.target = finite(camera.target, "camera.target");
-  out.up = direction(camera.up, "camera.up");
-  out.verticalFovDegrees =
-      inRange(camera.verticalFovDegrees, scene::kMinFovDegrees, scene::kMaxFovDegrees, "camera.verticalFovDegrees");
-  if (const char* problem = scene::cameraProblem(out)) fail("camera", problem);
-  return out;
-}
-
-scene::Environment engineEnvironment(const Environment& environment) {
-  scene::Environment out;
-  try {
-    out.map = std::make_shared<const scene::EnvironmentMap>(scene::loadEnvironmentMap(environment.file));
-  } catch (const scene::InputError& e) {
-    fail("environment.file", e.what());
-  }
-  out.intensity = inRange(environment.intensity, 0, HUGE_VAL, "environment.intensity");
-  if (const auto rule = scene::radianceRule(glm::dvec3(out.intensity * out.map->largestRadiance())))
-    fail("environment.intensity", "the brightest texel times the intensity " + *rule);
-  out.rotationDegrees = inRange(environment.rotationDegrees, -HUGE_VAL, HUGE_VAL, "environment.rotationDegrees");
-  out.method = environment.method == IblMethod::Sampled ? scene::IblMethod::Sampled : scene::IblMethod::Prefiltered;
-  out.samples = int(inRange(environment.samples, 1, 16384, "environment.samples"));
-  out.occlusion = environment.occlusion;
-  return out;
-}
-
 scene::Scene engineScene(const SceneDescription& d) {
   scene::Scene s;
   s.source = kSource;
@@ -137,17 +82,28 @@ scene::Scene engineScene(const SceneDescription& d) {
     object.subdivision = o.subdivided ? scene::Subdivision::CatmullClark : scene::Subdivision::None;
     s.objects.push_back(std::move(object));
   }
-  s.camera = d.camera ? engineCamera(*d.camera) : scene::frameBounds(scene::cageBounds(s));
-  for (std::size_t i = 0; i < d.lights.size(); ++i)
-    s.lights.push_back(engineLight(d.lights[i], "lights[" + std::to_string(i) + "]"));
-  if (d.environment) s.environment = engineEnvironment(*d.environment);
-  if (s.lights.empty()) scene::addDefaultLighting(s);
+  s.camera = scene::frameBounds(scene::cageBounds(s));
   s.render.width = int(inRange(d.width, 1, 16384, "width"));
   s.render.height = int(inRange(d.height, 1, 16384, "height"));
   return s;
 }
 
 Scene wrap(scene::Scene s) { return Scene(std::make_shared<const detail::SceneData>(detail::SceneData{std::move(s)})); }
+
+// Camera, lights and environment go through the scene's own setters, which
+// read them as a scene file's blocks.
+Scene described(const SceneDescription& d) {
+  Scene scene = wrap(engineScene(d));
+  if (d.camera) scene.setCamera(*d.camera);
+  scene.setLights(d.lights);
+  scene.setEnvironment(d.environment);
+  if (d.lights.empty()) {
+    scene::Scene s = scene.data().scene;
+    scene::addDefaultLighting(s);
+    scene = wrap(std::move(s));
+  }
+  return scene;
+}
 
 }  // namespace
 
@@ -164,7 +120,7 @@ Scene loadScene(const std::string& path) {
 }
 
 Scene buildScene(const SceneDescription& description) {
-  return api::translateErrors([&] { return wrap(engineScene(description)); });
+  return api::translateErrors([&] { return described(description); });
 }
 
 }  // namespace facet::v0

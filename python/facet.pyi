@@ -42,25 +42,68 @@ class Material:
                  attenuation_color: Optional[Vec3] = None, attenuation_distance: Optional[float] = None) -> None: ...
 
 class Cage:
+    positions: numpy.ndarray  # read-only, (n, 3)
+    face_vertex_counts: list[int]  # read-only
+    face_vertex_indices: list[int]  # read-only
+    creases: list[tuple[int, int, float]]  # read-only
     def __init__(self, positions: numpy.typing.ArrayLike, face_vertex_counts: numpy.typing.ArrayLike,
                  face_vertex_indices: numpy.typing.ArrayLike, creases: list[tuple[int, int, float]] = []) -> None: ...
+
+def load_cage(path: Union[str, PathLike[str]]) -> Cage: ...
 
 class Object:
     def __init__(self, cage: Cage, *, material: int = 0, name: str = "", subdivided: bool = True) -> None: ...
 
+# Light, Camera and Environment are values: their fields are read-only; replace() gives a changed copy.
 class Light:
+    type: str
+    color: Vec3
+    position: Vec3
+    direction: Vec3
+    inner_cone: float
+    outer_cone: float
     def __init__(self, type: str = "directional", *, color: Vec3 = (1.0, 1.0, 1.0), position: Vec3 = (0.0, 0.0, 0.0),
                  direction: Vec3 = (0.0, -1.0, 0.0), inner_cone: float = 30.0, outer_cone: float = 45.0) -> None: ...
+    def replace(self, *, type: Optional[str] = None, color: Optional[Vec3] = None, position: Optional[Vec3] = None,
+                direction: Optional[Vec3] = None, inner_cone: Optional[float] = None,
+                outer_cone: Optional[float] = None) -> Light: ...
 
 class Camera:
+    eye: Vec3
+    target: Vec3
+    up: Vec3
+    fov: float
     def __init__(self, *, eye: Vec3 = (0.0, 0.0, 5.0), target: Vec3 = (0.0, 0.0, 0.0), up: Vec3 = (0.0, 1.0, 0.0),
                  fov: float = 40.0) -> None: ...
+    def replace(self, *, eye: Optional[Vec3] = None, target: Optional[Vec3] = None, up: Optional[Vec3] = None,
+                fov: Optional[float] = None) -> Camera: ...
 
 class Environment:
+    file: str
+    intensity: float
+    rotation: float
+    method: str  # sampled, prefiltered or filtered
+    samples: int
+    occlusion: bool
     def __init__(self, file: Union[str, PathLike[str]], *, intensity: float = 1.0, rotation: float = 0.0,
                  method: str = "prefiltered", samples: int = 16, occlusion: bool = True) -> None: ...
+    def replace(self, *, file: Optional[Union[str, PathLike[str]]] = None, intensity: Optional[float] = None,
+                rotation: Optional[float] = None, method: Optional[str] = None, samples: Optional[int] = None,
+                occlusion: Optional[bool] = None) -> Environment: ...
+
+class SceneObject:
+    @property
+    def name(self) -> str: ...
+    # Its material's name; a Material, a preset name or a material file (.json) changes it.
+    @property
+    def material(self) -> str: ...
+    @material.setter
+    def material(self, value: Union[Material, str, PathLike[str]]) -> None: ...
 
 class Scene:
+    camera: Camera
+    environment: Optional[Environment]
+    lights: list[Light]
     def __init__(self, objects: list[Object], *, materials: list[Material] = [], lights: list[Light] = [],
                  camera: Optional[Camera] = None, environment: Optional[Environment] = None,
                  size: tuple[int, int] = (512, 512)) -> None: ...
@@ -68,6 +111,10 @@ class Scene:
     def size(self) -> tuple[int, int]: ...
     @property
     def object_count(self) -> int: ...
+    @property
+    def objects(self) -> list[SceneObject]: ...
+    @property
+    def warnings(self) -> list[str]: ...
 
 def load_scene(path: Union[str, PathLike[str]]) -> Scene: ...
 

@@ -48,6 +48,20 @@ materials::Material loadMaterialReference(const std::string& reference, std::vec
 // when no object has that name.
 void assignMaterial(Scene& scene, const std::string& objectName, materials::Material material);
 
+// Blocks of a scene file read from JSON values by the file's rules, each
+// error naming the field as the file does and `source` in place of the file:
+// the API's scene edits go through them, so that an edit obeys exactly what
+// a file does. Files they name are relative to the working folder.
+Camera readCameraBlock(const nlohmann::json& camera, const std::string& source);
+std::vector<Light> readLightsBlock(const nlohmann::json& lights, const std::string& source);
+// A block that names neither file nor color keeps `start`'s map.
+Environment readEnvironmentBlock(const nlohmann::json& environment, const std::string& source,
+                                 const std::optional<Environment>& start);
+// objects[object].material: a preset name, a material file (.json) or the
+// fields of a material; the textures it reads are appended to `textures`.
+materials::Material readObjectMaterial(const nlohmann::json& material, int object, const std::string& source,
+                                       std::vector<Texture>& textures);
+
 // Subdivision as scene files and the command line spell it, nothing for any
 // other name; kSubdivisionNames lists the spellings for error messages.
 std::optional<Subdivision> subdivisionNamed(std::string_view name);

@@ -67,6 +67,23 @@ Light readLight(const Field& f) {
   return light;
 }
 
+std::vector<Light> readLights(const Field& f) {
+  if (!f.value().is_array()) f.fail("expected an array");
+  std::vector<Light> lights;
+  for (std::size_t i = 0; i < f.value().size(); ++i) lights.push_back(readLight(f[i]));
+  return lights;
+}
+
+// An object's material that is none of the scene's named ones: a preset name
+// (that preset at the default material's roughness), a material file, or
+// the fields of a material.
+materials::Material objectMaterial(const Field& f, const std::filesystem::path& relativeTo,
+                                   std::vector<Texture>& textures) {
+  if (!f.value().is_string() || namesMaterialFile(f.string())) return readMaterial(f, relativeTo, textures);
+  const json preset = {{"preset", f.string()}, {"roughness", std::sqrt(defaultMaterial().alpha)}};
+  return readMaterial(Field(preset, f.path(), f.source()), relativeTo, textures);
+}
+
 glm::dmat4 readTransform(const Field& f) {
   f.object({"translate", "rotate", "scale", "matrix"});
   if (f.has("matrix")) {
@@ -177,17 +194,13 @@ Scene sceneFromDocument(const json& document, const std::filesystem::path& path)
       if (known != materialIndex.end()) {
         object.material = known->second;
       } else {
-        // A preset name stands for that preset at the default material's roughness.
         object.material = int(scene.materials.size());
-        scene.materials.push_back(
-            readMaterial(Field(json{{"preset", name}, {"roughness", std::sqrt(defaultMaterial().alpha)}},
-                               o["material"].path(), source),
-                         path, scene.textures));
+        scene.materials.push_back(objectMaterial(o["material"], path, scene.textures));
         materialIndex[name] = object.material;
       }
     } else {
       object.material = int(scene.materials.size());
-      scene.materials.push_back(readMaterial(o["material"], path, scene.textures));
+      scene.materials.push_back(objectMaterial(o["material"], path, scene.textures));
     }
 
     if (o.has("subdivision")) readSubdivision(o["subdivision"], object);
@@ -205,9 +218,7 @@ Scene sceneFromDocument(const json& document, const std::filesystem::path& path)
           return readCamera({camera, at, source}, Camera{});
         });
   if (root.has("lights")) {
-    const Field lights = root["lights"];
-    if (!lights.value().is_array()) lights.fail("expected an array");
-    for (std::size_t i = 0; i < lights.value().size(); ++i) scene.lights.push_back(readLight(lights[i]));
+    scene.lights = readLights(root["lights"]);
   } else {
     addDefaultLighting(scene);
   }
@@ -238,6 +249,25 @@ Scene loadJsonScene(const std::filesystem::path& path, std::span<const JsonOverr
                          std::string(e.what()).substr(source.size() + e.rule().size() + 4));
     throw;
   }
+}
+
+Camera readCameraBlock(const nlohmann::json& camera, const std::string& source) {
+  return readCamera(Field(camera, "camera", source), Camera{});
+}
+
+std::vector<Light> readLightsBlock(const nlohmann::json& lights, const std::string& source) {
+  return readLights(Field(lights, "lights", source));
+}
+
+Environment readEnvironmentBlock(const nlohmann::json& environment, const std::string& source,
+                                 const std::optional<Environment>& start) {
+  return readEnvironment(Field(environment, "environment", source), std::filesystem::current_path() / "", start);
+}
+
+materials::Material readObjectMaterial(const nlohmann::json& material, int object, const std::string& source,
+                                       std::vector<Texture>& textures) {
+  const Field f(material, "objects[" + std::to_string(object) + "].material", source);
+  return objectMaterial(f, std::filesystem::current_path() / "", textures);
 }
 
 }  // namespace facet::scene

@@ -13,11 +13,11 @@
 #include "commands.h"
 #include "engine/render_record.h"
 #include "engine/renderer.h"
+#include "material_options.h"
 #include "parity_options.h"
 #include "parity_output.h"
 #include "scene_options.h"
 #include "scenes/memory_budget.h"
-#include "scenes/scene_file.h"
 #include "scene_warnings.h"
 
 namespace facet::cli {
@@ -25,6 +25,7 @@ namespace {
 
 struct ParityCommandOptions {
   std::vector<std::string> scenes;
+  SceneEdits edits;  // on every scene, as facet render takes them
   SceneOverrides sceneOverrides;
   ParityFlags flags;
   std::string adapter;
@@ -57,7 +58,7 @@ bool seededEstimate(const scene::Scene& scene) {
 ParityCase judgeScene(const std::string& file, const ParityCommandOptions& o,
                       const analysis::ParityTolerances& tolerances, const std::vector<gpu::AdapterInfo>& adapters,
                       std::vector<std::unique_ptr<Renderer>>& renderers) {
-  scene::Scene scene = scene::loadScene(file);
+  scene::Scene scene = loadEditedScene(file, o.edits);
   printWarnings(sceneWarnings(scene), false);
   applySceneOverrides(o.sceneOverrides, scene);
   // The reference's render; per adapter its render, the first pair, the
@@ -119,6 +120,7 @@ void addParityCommand(CLI::App& app) {
   auto o = std::make_shared<ParityCommandOptions>();
   auto* c = app.add_subcommand("parity", "Render scenes on the GPU and the CPU reference and judge every AOV");
   c->add_option("scenes", o->scenes, "Scene files (.json, .obj cage or glTF)")->required()->check(CLI::ExistingFile);
+  addSceneEditOptions(*c, o->edits);
   addSceneOverrideOptions(*c, o->sceneOverrides);
   addParityFlags(*c, o->flags);
   c->add_option("--adapter", o->adapter,

@@ -1,5 +1,7 @@
 // Scenes: loaded from a file (.json, .obj cage, .gltf/.glb) or described in
-// code as plain data, then validated once into an immutable Scene.
+// code as plain data, validated into a Scene whose materials, camera,
+// environment and lights can then be changed, each change validated by the
+// scene file's rules.
 #pragma once
 
 #include <memory>
@@ -79,9 +81,11 @@ struct Camera {
   double verticalFovDegrees = 40;
 };
 
-enum class IblMethod { Sampled, Prefiltered };
+enum class IblMethod { Sampled, Prefiltered, Filtered };
 struct Environment {
-  std::string file;  // .exr or .hdr, equirectangular
+  // .exr or .hdr, equirectangular; a loaded scene's may also be the default
+  // studio map's name, or empty for a uniform colour.
+  std::string file;
   double intensity = 1;
   double rotationDegrees = 0;
   IblMethod method = IblMethod::Prefiltered;
@@ -104,7 +108,11 @@ namespace detail {
 struct SceneData;
 }
 
-// A validated scene, cheap to copy (its data is shared and never changes).
+// A validated scene, cheap to copy: copies share its data until one of them
+// is changed. A change is validated as the scene file's field of that name
+// (camera.fov, lights[0].inner_cone, objects[1].material, ...) and throws
+// Error (BadInput) with that field's rule, the scene unchanged; the next
+// render renders what it now holds. `object` counts from 0 in file order.
 class Scene {
  public:
   // From loadScene or buildScene; throws Error (BadInput) on no data.
@@ -113,10 +121,33 @@ class Scene {
   int width() const;
   int height() const;
   int objectCount() const;
+  // What the file says that facet renders otherwise ("FILE: FIELD: what
+  // facet does instead"), as `facet render` prints them.
+  std::vector<std::string> warnings() const;
+
+  std::string objectName(int object) const;
+  // The material's name: its key in the file's materials, a preset's or
+  // material file's name, or empty for one written inline.
+  std::string materialName(int object) const;
+  void setMaterial(int object, const Material& material);
+  // A preset name or a material file (.json, relative to the working
+  // folder), as a scene file's objects[].material names them.
+  void setMaterial(int object, const std::string& reference);
+
+  Camera camera() const;
+  void setCamera(const Camera& camera);
+  // The file is read again only when it differs from the current one's.
+  std::optional<Environment> environment() const;
+  void setEnvironment(const std::optional<Environment>& environment);
+  std::vector<Light> lights() const;
+  void setLights(const std::vector<Light>& lights);
 
  private:
   std::shared_ptr<const detail::SceneData> data_;
 };
+
+// An OpenSubdiv-style .obj control cage, read as a scene file's mesh is.
+Cage loadCage(const std::string& path);
 
 // Both throw Error (BadInput) naming the file or the field and the rule.
 Scene loadScene(const std::string& path);

@@ -311,3 +311,104 @@ class Brdf(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class ChangedScenes(unittest.TestCase):
+    """A loaded scene changed by attribute renders as the scene file that says the same."""
+
+    CUBE = EXAMPLES.parent / "cages" / "cube.obj"
+    COURTYARD = EXAMPLES.parent / "environments" / "courtyard_256x128.hdr"
+
+    @classmethod
+    def setUpClass(cls):
+        WORK.mkdir(parents=True, exist_ok=True)
+        cls.renderer = facet.Renderer()
+
+    def render(self, scene):
+        return self.renderer.render(scene, size=(24, 24), backend="cpu")
+
+    def mean_covered(self, image):
+        covered = image["beauty"][..., 3] > 0
+        self.assertGreater(covered.mean(), 1 / 8)
+        return image["beauty"][covered, :3].mean(axis=0)
+
+    def scene_file(self, name, document):
+        path = WORK / name
+        path.write_text(json.dumps(document))
+        return path
+
+    def test_a_red_diffuse_material_turns_the_object_red(self):
+        scene = facet.load_scene(self.CUBE)
+        grey = self.mean_covered(self.render(scene))
+        self.assertAlmostEqual(grey[0] / grey[1], 1.0, delta=0.05)
+        scene.objects[0].material = facet.Material(diffuse=(0.8, 0.05, 0.05), f0=(0.04, 0.04, 0.04), roughness=0.6)
+        red = self.mean_covered(self.render(scene))
+        self.assertGreater(red[0], 2 * red[1])
+        scene.objects[0].material = "gold"
+        self.assertEqual(scene.objects[0].material, "gold")
+        gold = self.mean_covered(self.render(scene))
+        self.assertGreater(gold[0], gold[2] + 0.05)
+
+    def test_a_changed_scene_renders_as_the_scene_file_that_says_the_same(self):
+        scene = facet.load_scene(self.CUBE)
+        scene.camera = facet.Camera(eye=(2.5, 2, 3), target=(0, 0.1, 0), fov=35)
+        scene.lights = [facet.Light("directional", direction=(-1, -2, -1), color=(2, 1.8, 1.6)),
+                        facet.Light("point", position=(0, 3, 2), color=(6, 6, 6))]
+        scene.environment = facet.Environment(self.COURTYARD, intensity=0.5, rotation=30, method="filtered",
+                                              samples=4)
+        scene.objects[0].material = "copper"
+        document = {
+            "camera": {"eye": [2.5, 2, 3], "target": [0, 0.1, 0], "up": [0, 1, 0], "fov": 35},
+            "objects": [{"mesh": str(self.CUBE), "material": "copper"}],
+            "lights": [{"type": "directional", "direction": [-1, -2, -1], "color": [2, 1.8, 1.6]},
+                       {"type": "point", "position": [0, 3, 2], "color": [6, 6, 6]}],
+            "environment": {"file": str(self.COURTYARD), "intensity": 0.5, "rotation": 30, "method": "filtered",
+                            "samples": 4},
+        }
+        edited = self.render(scene)
+        from_file = self.render(facet.load_scene(self.scene_file("changed.json", document)))
+        self.assertEqual(edited.keys(), from_file.keys())
+        for name in edited:
+            np.testing.assert_array_equal(edited[name], from_file[name], err_msg=name)
+        self.assertEqual(scene.camera.fov, 35)
+        self.assertEqual(scene.environment.method, "filtered")
+        self.assertEqual([light.type for light in scene.lights], ["directional", "point"])
+
+    def test_a_refused_change_gives_the_files_error_and_changes_nothing(self):
+        scene = facet.load_scene(self.CUBE)
+        fov = scene.camera.fov
+        bad = self.scene_file("bad_fov.json", {"camera": {"fov": 500}, "objects": [{"mesh": str(self.CUBE)}]})
+        from_file = cli_error("render", bad, "-o", WORK / "bad.exr").removeprefix(f"{bad}: ")
+        with self.assertRaises(facet.Error) as raised:
+            scene.camera = facet.Camera(fov=500)
+        self.assertEqual(str(raised.exception), "scene: " + from_file)
+        self.assertEqual(scene.camera.fov, fov)
+        with self.assertRaisesRegex(facet.Error, r"^scene: objects\[0\]\.material\.preset: unknown preset 'golld'"):
+            scene.objects[0].material = "golld"
+        with self.assertRaisesRegex(facet.Error, r"^scene: lights\[0\]\.outer_cone: must be in \[0, "):
+            scene.lights = [facet.Light("spot", outer_cone=200)]
+        with self.assertRaisesRegex(facet.Error, r"^scene: environment\.file: "):
+            scene.environment = facet.Environment(WORK / "no_such_map.exr")
+        self.assertEqual(scene.lights, [])
+        with self.assertRaises(AttributeError):
+            scene.camera.fov = 20
+        scene.camera = scene.camera.replace(fov=20)
+        self.assertEqual(scene.camera.fov, 20)
+        self.assertEqual(scene.environment.replace(method="sampled", samples=2).method, "sampled")
+        self.assertEqual(facet.Light("spot").replace(outer_cone=60).outer_cone, 60)
+        with self.assertRaisesRegex(facet.Error, "method 'cheap': expected one of: prefiltered, sampled, filtered"):
+            scene.environment.replace(method="cheap")
+
+    def test_a_loaded_cage_builds_the_scene_its_file_loads_as(self):
+        cage = facet.load_cage(self.CUBE)
+        self.assertEqual(cage.positions.shape, (8, 3))
+        self.assertEqual(len(cage.face_vertex_counts), 6)
+        built = self.render(facet.Scene([facet.Object(cage)]))
+        loaded = self.render(facet.load_scene(self.CUBE))
+        np.testing.assert_array_equal(built["beauty"], loaded["beauty"])
+
+    def test_a_loaded_scene_states_its_warnings(self):
+        gltf = pathlib.Path(__file__).resolve().parents[1] / "scenes" / "data" / "ignored_features.gltf"
+        warnings = facet.load_scene(gltf).warnings
+        self.assertTrue(any("vertex colours are not read" in w for w in warnings), warnings)
+        self.assertEqual(facet.load_scene(self.CUBE).warnings, [])

@@ -1,0 +1,309 @@
+// The module's scene types: what a scene is made of, loaded scenes that can
+// be changed and rendered again, named as the JSON scene format names them
+// (docs/scene-format.md).
+#include <cstdint>
+#include <optional>
+#include <tuple>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "python/bindings.h"
+
+namespace facet_python {
+namespace {
+
+// The ints of integer array `typed`, refusing a value outside int's range
+// rather than wrapping it.
+template <class T>
+std::vector<int> checkedInts(const py::array_t<T, py::array::c_style | py::array::forcecast>& typed, const char* name) {
+  std::vector<int> out;
+  out.reserve(std::size_t(typed.size()));
+  for (py::ssize_t i = 0; i < typed.size(); ++i) {
+    const T value = typed.data()[i];
+    if (!std::in_range<int>(value))
+      throw facet::Error(facet::ErrorKind::BadInput, std::string(name) + "[" + std::to_string(i) + "]: " +
+                                                         std::to_string(value) + " is out of range for an index");
+    out.push_back(int(value));
+  }
+  return out;
+}
+
+// The ints of an index array: any integer dtype (a list of ints included).
+// Floats and bools are refused, not truncated.
+std::vector<int> indexArray(const py::handle& values, const char* name) {
+  const py::array array = py::array::ensure(values);
+  if (!array) throw facet::Error(facet::ErrorKind::BadInput, std::string(name) + ": expected an array of integers");
+  if (array.size() == 0) return {};
+  const char kind = array.dtype().kind();
+  if (kind == 'u') return checkedInts<std::uint64_t>(array, name);
+  if (kind == 'i') return checkedInts<std::int64_t>(array, name);
+  throw facet::Error(facet::ErrorKind::BadInput, std::string(name) + ": expected integers, got an array of dtype " +
+                                                     py::str(array.dtype()).cast<std::string>());
+}
+
+std::string fspath(const py::object& path) {
+  return py::module_::import("os").attr("fspath")(path).cast<std::string>();
+}
+
+facet::LightType lightType(const std::string& name) {
+  return choice<facet::LightType>(name, "type",
+                                  {{"directional", facet::LightType::Directional},
+                                   {"point", facet::LightType::Point},
+                                   {"spot", facet::LightType::Spot}});
+}
+
+const char* lightTypeName(facet::LightType type) {
+  return type == facet::LightType::Point ? "point" : type == facet::LightType::Spot ? "spot" : "directional";
+}
+
+facet::IblMethod iblMethod(const std::string& name) {
+  return choice<facet::IblMethod>(name, "method",
+                                  {{"prefiltered", facet::IblMethod::Prefiltered},
+                                   {"sampled", facet::IblMethod::Sampled},
+                                   {"filtered", facet::IblMethod::Filtered}});
+}
+
+const char* iblMethodName(facet::IblMethod method) {
+  return method == facet::IblMethod::Sampled    ? "sampled"
+         : method == facet::IblMethod::Filtered ? "filtered"
+                                                : "prefiltered";
+}
+
+// An object of a Python Scene: changing its material changes that Scene.
+struct SceneObject {
+  py::object owner;  // the facet.Scene
+  int index = 0;
+  facet::Scene& scene() const { return owner.cast<facet::Scene&>(); }
+};
+
+}  // namespace
+
+facet::Scene sceneOf(const py::object& sceneOrPath) {
+  if (py::isinstance<facet::Scene>(sceneOrPath)) return sceneOrPath.cast<facet::Scene>();
+  return facet::loadScene(fspath(sceneOrPath));
+}
+
+void bindScenes(py::module_& m) {
+  py::class_<facet::Material>(m, "Material", "A material as scene files write it (docs/shading.md)")
+      .def(py::init([](const std::string& name, OptText preset, OptText d, OptText g, OptText f, OptReal alpha,
+                       OptReal roughness, OptVec f0, OptVec ior, OptVec eta, OptVec k, OptVec diffuse,
+                       bool energyCompensation, OptReal transmission, std::optional<bool> thinWalled, OptReal thickness,
+                       OptVec attenuationColor, OptReal attenuationDistance) {
+             facet::Material material{
+                 name, preset, d, g, f, alpha, roughness, f0, ior, eta, k, diffuse, energyCompensation};
+             material.transmission = transmission;
+             material.thinWalled = thinWalled;
+             material.thickness = thickness;
+             material.attenuationColor = attenuationColor;
+             material.attenuationDistance = attenuationDistance;
+             return material;
+           }),
+           py::kw_only(), py::arg("name") = "", py::arg("preset") = py::none(), py::arg("distribution") = py::none(),
+           py::arg("geometry") = py::none(), py::arg("fresnel") = py::none(), py::arg("alpha") = py::none(),
+           py::arg("roughness") = py::none(), py::arg("f0") = py::none(), py::arg("ior") = py::none(),
+           py::arg("eta") = py::none(), py::arg("k") = py::none(), py::arg("diffuse") = py::none(),
+           py::arg("energy_compensation") = false, py::arg("transmission") = py::none(),
+           py::arg("thin_walled") = py::none(), py::arg("thickness") = py::none(),
+           py::arg("attenuation_color") = py::none(), py::arg("attenuation_distance") = py::none())
+      .def_readwrite("name", &facet::Material::name)
+      .def_readwrite("preset", &facet::Material::preset)
+      .def_readwrite("distribution", &facet::Material::distribution)
+      .def_readwrite("geometry", &facet::Material::geometry)
+      .def_readwrite("fresnel", &facet::Material::fresnel)
+      .def_readwrite("alpha", &facet::Material::alpha)
+      .def_readwrite("roughness", &facet::Material::roughness)
+      .def_readwrite("f0", &facet::Material::f0)
+      .def_readwrite("ior", &facet::Material::ior)
+      .def_readwrite("eta", &facet::Material::eta)
+      .def_readwrite("k", &facet::Material::k)
+      .def_readwrite("diffuse", &facet::Material::diffuse)
+      .def_readwrite("energy_compensation", &facet::Material::energyCompensation)
+      .def_readwrite("transmission", &facet::Material::transmission)
+      .def_readwrite("thin_walled", &facet::Material::thinWalled)
+      .def_readwrite("thickness", &facet::Material::thickness)
+      .def_readwrite("attenuation_color", &facet::Material::attenuationColor)
+      .def_readwrite("attenuation_distance", &facet::Material::attenuationDistance);
+
+  py::class_<facet::Cage>(m, "Cage", "A Catmull-Clark control cage in world space, 0-based indices")
+      .def(py::init([](const Doubles& positions, const py::object& counts, const py::object& indices,
+                       const std::vector<std::tuple<int, int, double>>& creases) {
+             facet::Cage cage{vectors(directions(positions, "positions")),
+                              indexArray(counts, "face_vertex_counts"),
+                              indexArray(indices, "face_vertex_indices"),
+                              {}};
+             for (const auto& [v0, v1, sharpness] : creases) cage.creases.push_back({v0, v1, sharpness});
+             return cage;
+           }),
+           py::arg("positions"), py::arg("face_vertex_counts"), py::arg("face_vertex_indices"),
+           py::arg("creases") = std::vector<std::tuple<int, int, double>>{})
+      .def_property_readonly(
+          "positions",
+          [](const facet::Cage& c) {
+            std::vector<double> flat;
+            for (const Vec3& p : c.positions) flat.insert(flat.end(), {p.x, p.y, p.z});
+            return ownedArray(std::move(flat), {py::ssize_t(c.positions.size()), 3});
+          },
+          "The control points, an (n, 3) array")
+      .def_property_readonly(
+          "face_vertex_counts", [](const facet::Cage& c) { return std::vector<int>(c.faceVertexCounts); },
+          "How many vertices each face has")
+      .def_property_readonly(
+          "face_vertex_indices", [](const facet::Cage& c) { return std::vector<int>(c.faceVertexIndices); },
+          "Each face's vertices in turn, counter-clockwise seen from outside")
+      .def_property_readonly(
+          "creases",
+          [](const facet::Cage& c) {
+            std::vector<std::tuple<int, int, double>> out;
+            for (const facet::Crease& e : c.creases) out.emplace_back(e.v0, e.v1, e.sharpness);
+            return out;
+          },
+          "(v0, v1, sharpness) of each creased edge; sharpness >= 10 is infinitely sharp");
+  m.def(
+      "load_cage", [](const py::object& path) { return facet::loadCage(fspath(path)); }, py::arg("path"),
+      "An OpenSubdiv-style .obj control cage, read as a scene file's mesh is; a cage with texture coordinates, "
+      "corners, holes or subdivision tags is refused (load it with load_scene)");
+
+  py::class_<facet::Object>(m, "Object", "A cage with the index of its material in the scene's materials")
+      .def(py::init([](facet::Cage cage, int material, const std::string& name, bool subdivided) {
+             return facet::Object{name, std::move(cage), material, subdivided};
+           }),
+           py::arg("cage"), py::kw_only(), py::arg("material") = 0, py::arg("name") = "", py::arg("subdivided") = true);
+
+  // Lights, cameras and environments are values: their fields are read-only,
+  // so that changing a copy a scene handed out cannot look like changing the
+  // scene; replace() makes the changed copy to assign back.
+  py::class_<facet::Light>(m, "Light", "A punctual light, with a scene file's lights[] fields; color is c_light")
+      .def(py::init([](const std::string& type, Vec3 color, Vec3 position, Vec3 direction, double inner, double outer) {
+             return facet::Light{lightType(type), color, position, direction, inner, outer};
+           }),
+           py::arg("type") = "directional", py::kw_only(), py::arg("color") = Vec3{1, 1, 1},
+           py::arg("position") = Vec3{0, 0, 0}, py::arg("direction") = Vec3{0, -1, 0}, py::arg("inner_cone") = 30.0,
+           py::arg("outer_cone") = 45.0)
+      .def_property_readonly(
+          "type", [](const facet::Light& l) { return lightTypeName(l.type); }, "directional, point or spot")
+      .def_readonly("color", &facet::Light::color, "c_light")
+      .def_readonly("position", &facet::Light::position, "point and spot lights")
+      .def_readonly("direction", &facet::Light::direction, "the way the light travels: directional and spot lights")
+      .def_readonly("inner_cone", &facet::Light::innerConeDegrees, "spot: half-angle in degrees of full light")
+      .def_readonly("outer_cone", &facet::Light::outerConeDegrees, "spot: half-angle in degrees beyond which none")
+      .def(
+          "replace",
+          [](facet::Light l, OptText type, OptVec color, OptVec position, OptVec direction, OptReal inner,
+             OptReal outer) {
+            if (type) l.type = lightType(*type);
+            l.color = color.value_or(l.color);
+            l.position = position.value_or(l.position);
+            l.direction = direction.value_or(l.direction);
+            l.innerConeDegrees = inner.value_or(l.innerConeDegrees);
+            l.outerConeDegrees = outer.value_or(l.outerConeDegrees);
+            return l;
+          },
+          py::kw_only(), py::arg("type") = py::none(), py::arg("color") = py::none(), py::arg("position") = py::none(),
+          py::arg("direction") = py::none(), py::arg("inner_cone") = py::none(), py::arg("outer_cone") = py::none(),
+          "A copy with the fields given changed");
+
+  py::class_<facet::Camera>(m, "Camera", "A pinhole camera, with a scene file's camera fields; fov is vertical")
+      .def(py::init([](Vec3 eye, Vec3 target, Vec3 up, double fov) {
+             return facet::Camera{eye, target, up, fov};
+           }),
+           py::kw_only(), py::arg("eye") = Vec3{0, 0, 5}, py::arg("target") = Vec3{0, 0, 0},
+           py::arg("up") = Vec3{0, 1, 0}, py::arg("fov") = 40.0)
+      .def_readonly("eye", &facet::Camera::eye, "Where the camera is")
+      .def_readonly("target", &facet::Camera::target, "What it looks at")
+      .def_readonly("up", &facet::Camera::up, "Which way is up in the image")
+      .def_readonly("fov", &facet::Camera::verticalFovDegrees, "Vertical field of view in degrees, (0, 179]")
+      .def(
+          "replace",
+          [](facet::Camera c, OptVec eye, OptVec target, OptVec up, OptReal fov) {
+            return facet::Camera{eye.value_or(c.eye), target.value_or(c.target), up.value_or(c.up),
+                                 fov.value_or(c.verticalFovDegrees)};
+          },
+          py::kw_only(), py::arg("eye") = py::none(), py::arg("target") = py::none(), py::arg("up") = py::none(),
+          py::arg("fov") = py::none(), "A copy with the fields given changed");
+
+  py::class_<facet::Environment>(m, "Environment",
+                                 "An equirectangular .exr or .hdr map, with a scene file's environment fields")
+      .def(py::init([](const py::object& file, double intensity, double rotation, const std::string& method,
+                       int samples, bool occlusion) {
+             return facet::Environment{fspath(file), intensity, rotation, iblMethod(method), samples, occlusion};
+           }),
+           py::arg("file"), py::kw_only(), py::arg("intensity") = 1.0, py::arg("rotation") = 0.0,
+           py::arg("method") = "prefiltered", py::arg("samples") = 16, py::arg("occlusion") = true)
+      .def_readonly("file", &facet::Environment::file,
+                    "The map (a loaded scene's may be the default studio map's name, or empty for a uniform colour)")
+      .def_readonly("intensity", &facet::Environment::intensity, "What the map is scaled by")
+      .def_readonly("rotation", &facet::Environment::rotationDegrees, "Degrees about +y")
+      .def_property_readonly(
+          "method", [](const facet::Environment& e) { return iblMethodName(e.method); },
+          "The lighting method: sampled, prefiltered or filtered")
+      .def_readonly("samples", &facet::Environment::samples, "sampled, filtered: pairs per camera sample")
+      .def_readonly("occlusion", &facet::Environment::occlusion, "sampled, filtered: shadow rays on")
+      .def(
+          "replace",
+          [](facet::Environment e, const py::object& file, OptReal intensity, OptReal rotation, OptText method,
+             std::optional<int> samples, std::optional<bool> occlusion) {
+            if (!file.is_none()) e.file = fspath(file);
+            e.intensity = intensity.value_or(e.intensity);
+            e.rotationDegrees = rotation.value_or(e.rotationDegrees);
+            if (method) e.method = iblMethod(*method);
+            e.samples = samples.value_or(e.samples);
+            e.occlusion = occlusion.value_or(e.occlusion);
+            return e;
+          },
+          py::kw_only(), py::arg("file") = py::none(), py::arg("intensity") = py::none(),
+          py::arg("rotation") = py::none(), py::arg("method") = py::none(), py::arg("samples") = py::none(),
+          py::arg("occlusion") = py::none(), "A copy with the fields given changed");
+
+  py::class_<SceneObject>(m, "SceneObject", "One object of a Scene, as scene.objects lists them")
+      .def_property_readonly(
+          "name", [](const SceneObject& o) { return o.scene().objectName(o.index); }, "Its name")
+      .def_property(
+          "material", [](const SceneObject& o) { return o.scene().materialName(o.index); },
+          [](SceneObject& o, const py::object& material) {
+            if (py::isinstance<py::str>(material) || py::hasattr(material, "__fspath__"))
+              o.scene().setMaterial(o.index, fspath(material));
+            else
+              o.scene().setMaterial(o.index, material.cast<facet::Material>());
+          },
+          "Its material's name; assign a Material, a preset name or a material file (.json) to change it");
+
+  py::class_<facet::Scene>(m, "Scene",
+                           "A validated scene, built here or loaded with facet.load_scene; its objects' materials, "
+                           "camera, environment and lights can be changed, and the next render renders the change")
+      .def(py::init([](std::vector<facet::Object> objects, std::vector<facet::Material> materials,
+                       std::vector<facet::Light> lights, std::optional<facet::Camera> camera,
+                       std::optional<facet::Environment> environment, std::pair<int, int> size) {
+             return facet::buildScene({camera, std::move(materials), std::move(objects), std::move(lights), environment,
+                                       size.first, size.second});
+           }),
+           py::arg("objects"), py::kw_only(), py::arg("materials") = std::vector<facet::Material>{},
+           py::arg("lights") = std::vector<facet::Light>{}, py::arg("camera") = py::none(),
+           py::arg("environment") = py::none(), py::arg("size") = std::pair<int, int>{512, 512})
+      .def_property_readonly(
+          "size",
+          [](const facet::Scene& s) {
+            return std::pair<int, int>{s.width(), s.height()};
+          },
+          "The image size (width, height) it renders at")
+      .def_property_readonly("object_count", &facet::Scene::objectCount, "How many objects it holds")
+      .def_property_readonly(
+          "objects",
+          [](const py::object& self) {
+            std::vector<SceneObject> out;
+            for (int i = 0; i < self.cast<const facet::Scene&>().objectCount(); ++i) out.push_back({self, i});
+            return out;
+          },
+          "Its objects, in file order")
+      .def_property("camera", &facet::Scene::camera, &facet::Scene::setCamera, "The camera (assign a Camera)")
+      .def_property("environment", &facet::Scene::environment, &facet::Scene::setEnvironment,
+                    "The environment, or None (assign an Environment or None)")
+      .def_property("lights", &facet::Scene::lights, &facet::Scene::setLights, "The lights (assign a list of Light)")
+      .def_property_readonly("warnings", &facet::Scene::warnings,
+                             "What the file says that facet renders otherwise, one line each");
+  m.def(
+      "load_scene", [](const py::object& path) { return sceneOf(path); }, py::arg("path"),
+      "A .json scene, an .obj cage or a .gltf/.glb file");
+}
+
+}  // namespace facet_python
