@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <exception>
@@ -91,6 +92,14 @@ void checkImageViews(const nlohmann::json& gltf, const std::string& source) {
   }
 }
 
+// A number of a texture coordinate scale within kMaxTextureScale
+// (scenes/texture.h); what is not a number is left to the material's reader.
+void checkTextureScale(const nlohmann::json& value, const std::string& where, const std::string& source) {
+  if (value.is_number() && !(std::abs(value.get<double>()) <= kMaxTextureScale))
+    throw InputError(source, 0, where,
+                     "must be within -1e6 to 1e6 (the GPU computes texture coordinates in float), is " + value.dump());
+}
+
 // tinygltf reads a texture info's `index` and `texCoord` into an int, wrapping
 // values past its range and taking a fraction for absent (glTF 2.0, 5.22:
 // both are integers, at least 0), so they are checked as written. `extras`
@@ -110,6 +119,10 @@ void checkTextureInfos(const nlohmann::json& value, const std::string& where, co
                        std::string("must be a whole number from 0 to 2147483647 (") +
                            (key == "index" ? "a texture's index" : "the n of the TEXCOORD_n it reads") + "), is " +
                            member.dump());
+    if (key == "KHR_texture_transform" && member.contains("scale") && member["scale"].is_array())
+      for (std::size_t i = 0; i < member["scale"].size(); ++i)
+        checkTextureScale(member["scale"][i], at + ".scale[" + std::to_string(i) + "]", source);
+    if (key == "normalTexture" && member.contains("scale")) checkTextureScale(member["scale"], at + ".scale", source);
     if (key != "extras") checkTextureInfos(member, at, source);
   }
 }

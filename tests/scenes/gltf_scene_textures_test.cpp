@@ -322,6 +322,32 @@ TEST_F(GltfTextures, AnUnknownWrapModeIsNamed) {
               ThrowsMessage<InputError>(AllOf(HasSubstr("samplers[0].wrapS"), HasSubstr("unknown wrap mode 1234"))));
 }
 
+// Past 1e6 the GPU's float texture coordinates part from the CPU's double
+// (a normal scale of 1e20 overflows the normal map's frame in float).
+TEST_F(GltfTextures, ATextureScaleBeyondAMillionIsRefused) {
+  const auto transform = [](const nlohmann::json& scale) {
+    return nlohmann::json{{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"scale", scale}}}}}};
+  };
+  for (const double scale : {1e30, -1e7, 1e300}) {
+    const auto file =
+        facet::testing::writeTexturedQuad(dir_, "scale", parts({{"emissiveTexture", transform({1.0, scale})}}));
+    EXPECT_THAT([&] { loadScene(file); },
+                ThrowsMessage<InputError>(HasSubstr(
+                    "scale.gltf: materials[0].emissiveTexture.extensions.KHR_texture_transform.scale[1]: must be "
+                    "within -1e6 to 1e6 (the GPU computes texture coordinates in float), is " +
+                    nlohmann::json(scale).dump())));
+    const auto normal =
+        facet::testing::writeTexturedQuad(dir_, "normal", parts({{"normalTexture", {{"index", 1}, {"scale", scale}}}}));
+    EXPECT_THAT([&] { loadScene(normal); },
+                ThrowsMessage<InputError>(HasSubstr("normal.gltf: materials[0].normalTexture.scale: must be within")));
+  }
+  const Scene bound = loadScene(facet::testing::writeTexturedQuad(
+      dir_, "bound",
+      parts({{"emissiveTexture", transform({1e6, -1e6})}, {"normalTexture", {{"index", 1}, {"scale", -1e6}}}})));
+  EXPECT_EQ(bound.materials.at(0).textures->emissiveTexture.scale, glm::dvec2(1e6, -1e6));
+  EXPECT_EQ(bound.materials.at(0).textures->normalScale, -1e6);
+}
+
 TEST_F(GltfTextures, ABadTransformIsNamed) {
   const auto file = facet::testing::writeTexturedQuad(
       dir_, "transform",
