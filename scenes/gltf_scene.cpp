@@ -19,6 +19,7 @@
 #include "scenes/image_decoder.h"
 #include "scenes/input_error.h"
 #include "scenes/input_file.h"
+#include "scenes/memory_budget.h"
 #include "scenes/scene_file.h"
 
 namespace facet::scene {
@@ -146,6 +147,7 @@ void checkBeforeParsing(std::string_view json, const std::string& source) {
 struct ExternalReads {
   std::string source;
   std::exception_ptr refusal;
+  std::uint64_t heldBytes = 0;  // what the images decoded so far keep, and their textures
 
   bool refuse(std::string* error) {
     if (!refusal) refusal = std::current_exception();
@@ -183,7 +185,7 @@ bool decodeGltfImage(tinygltf::Image* image, const int index, std::string* error
     const std::string field =
         "images[" + std::to_string(index) + "]" + (image->uri.empty() ? "" : " '" + image->uri + "'");
     const DecodedSamples decoded =
-        decodeSamples({bytes, std::size_t(std::max(size, 0))}, reads.source, field, kMaxTextureSize);
+        decodeSamples({bytes, std::size_t(std::max(size, 0))}, reads.source, field, kMaxTextureSize, reads.heldBytes);
     image->width = decoded.width;
     image->height = decoded.height;
     image->component = decoded.components;
@@ -191,6 +193,7 @@ bool decodeGltfImage(tinygltf::Image* image, const int index, std::string* error
     image->pixel_type =
         decoded.bytesPerSample == 2 ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
     image->image.assign(decoded.samples.get(), decoded.samples.get() + decoded.byteCount());
+    reads.heldBytes += textureHeldBytes(decoded.width, decoded.height, decoded.components, decoded.bytesPerSample);
     return true;
   } catch (...) {
     return reads.refuse(error);

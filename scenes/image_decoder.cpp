@@ -23,7 +23,7 @@
 namespace facet::scene {
 
 DecodedSamples decodeSamples(std::span<const unsigned char> encoded, const std::string& source,
-                             const std::string& field, int maxSize) {
+                             const std::string& field, int maxSize, std::uint64_t heldBytes) {
   if (encoded.size() > std::size_t(INT_MAX))
     throw InputError(source, 0, field, "cannot decode the image: an encoded image must be under 2 GiB");
   const auto* bytes = reinterpret_cast<const stbi_uc*>(encoded.data());
@@ -37,7 +37,7 @@ DecodedSamples decodeSamples(std::span<const unsigned char> encoded, const std::
                      "an image must be at most " + std::to_string(maxSize) + " x " + std::to_string(maxSize) +
                          ", it is " + std::to_string(image.width) + " x " + std::to_string(image.height));
   image.bytesPerSample = stbi_is_16_bit_from_memory(bytes, length) ? 2 : 1;
-  checkTextureFitsInMemory(source, field, image.width, image.height, image.components, image.bytesPerSample);
+  checkTextureFitsInMemory(source, field, image.width, image.height, image.components, image.bytesPerSample, heldBytes);
   int w = 0, h = 0, n = 0;
   void* samples = image.bytesPerSample == 2 ? static_cast<void*>(stbi_load_16_from_memory(bytes, length, &w, &h, &n, 0))
                                             : static_cast<void*>(stbi_load_from_memory(bytes, length, &w, &h, &n, 0));

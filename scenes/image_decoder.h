@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <span>
@@ -35,10 +36,11 @@ struct DecodedSamples {
 // Reads 8- and 16-bit PNG and baseline or progressive JPEG. Throws
 // InputError naming `source` and `field` when the bytes cannot be decoded,
 // the image is larger than `maxSize` texels on a side, or its texture would
-// not fit in memory (scenes/memory_budget.h): the last two are checked from
-// the image's header, before any texel is decoded.
+// not fit in memory beside the `heldBytes` earlier images keep
+// (scenes/memory_budget.h): the last two are checked from the image's
+// header, before any texel is decoded.
 DecodedSamples decodeSamples(std::span<const unsigned char> encoded, const std::string& source,
-                             const std::string& field, int maxSize);
+                             const std::string& field, int maxSize, std::uint64_t heldBytes = 0);
 
 // The image file `file` (a regular file, scenes/input_file.h), decoded as
 // decodeSamples decodes, with its channels normalized.

@@ -208,6 +208,26 @@ TEST_F(GltfTextures, AnImageBombIsRefusedFromItsHeaderNamingTheImageAndTheEstima
                         HasSubstr(" GB of memory to build and the limit is 0.1 GB (FACET_MEMORY_LIMIT)"))));
 }
 
+// A file's images are decoded one after another and all kept: each is held
+// to the limit with what the ones before it keep (its samples and its
+// texture's levels, 26 MB for 1024 x 1024 RGBA beside a 42 MB build).
+TEST_F(GltfTextures, TheImagesOfAFileCountTogether) {
+  for (const char* name : {"first.png", "second.png"})
+    ASSERT_TRUE(
+        facet::testing::writePng(dir_ / name, 1024, 1024, std::vector<Rgba8>(1024 * 1024, Rgba8{9, 99, 199, 255})));
+  nlohmann::json p = parts();
+  p["images"] = {{{"uri", "first.png"}}, {{"uri", "second.png"}}};
+  const auto file = facet::testing::writeTexturedQuad(dir_, "two", p);
+  {
+    const MemoryLimitOf roomy("80");  // 84 MB: both
+    EXPECT_EQ(loadScene(file).textures.size(), 2u);
+  }
+  const MemoryLimitOf limit("50");  // 52 MB: either alone, not both
+  EXPECT_THAT([&] { loadScene(file); },
+              ThrowsMessage<InputError>(AllOf(HasSubstr("two.gltf: images[1] 'second.png': a 1024 x 1024 texture"),
+                                              HasSubstr("the images before it keep"))));
+}
+
 // Makes image `index` of writeTexturedQuad's `file` the PNG `png`, held in a
 // buffer view of a second buffer (the quad's views are 0 to 2).
 void putImageInABufferView(const std::filesystem::path& file, int index, const std::string& png) {
