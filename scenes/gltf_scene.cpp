@@ -102,8 +102,8 @@ void checkTextureScale(const nlohmann::json& value, const std::string& where, co
 }
 
 // tinygltf reads a texture info's `index` and `texCoord` into an int, wrapping
-// values past its range and taking a fraction for absent (glTF 2.0, 5.22:
-// both are integers, at least 0), so they are checked as written. `extras`
+// values past its range and reading a fraction as if it were absent (glTF
+// 2.0, 5.22: both are integers, at least 0), so they are checked as written. `extras`
 // are the author's own and hold no texture infos.
 void checkTextureInfos(const nlohmann::json& value, const std::string& where, const std::string& source) {
   if (value.is_array())
