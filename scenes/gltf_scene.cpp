@@ -4,15 +4,22 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <climits>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 #include <fstream>
 #include <iterator>
 #include <optional>
 #include <string_view>
+#include <system_error>
 
 #include "scenes/gltf_internal.h"
+#include "scenes/image_decoder.h"
 #include "scenes/input_error.h"
+#include "scenes/input_file.h"
+#include "scenes/memory_budget.h"
 #include "scenes/scene_file.h"
 
 namespace facet::scene {
@@ -58,11 +65,9 @@ std::string_view glbJson(std::string_view file) {
 
 // An image stored in a buffer view is decoded by tinygltf while it parses,
 // from a pointer it does not bound: every such view must lie inside its
-// buffer before tinygltf sees the file. Malformed JSON is left to tinygltf.
-void checkImageViews(std::string_view json, const std::string& source) {
-  if (json.find("\"images\"") == std::string_view::npos) return;  // no second parse for files without images
-  const nlohmann::json gltf = nlohmann::json::parse(json, nullptr, false);
-  if (!gltf.is_object() || !gltf.contains("images") || !gltf["images"].is_array()) return;
+// buffer before tinygltf sees the file.
+void checkImageViews(const nlohmann::json& gltf, const std::string& source) {
+  if (!gltf.contains("images") || !gltf["images"].is_array()) return;
   const auto list = [&](const char* name) {
     return gltf.contains(name) && gltf[name].is_array() ? gltf[name] : nlohmann::json::array();
   };
@@ -85,6 +90,113 @@ void checkImageViews(std::string_view json, const std::string& source) {
     const double end = number(v, "byteOffset") + number(v, "byteLength");
     if (!(end <= number(buffers[std::size_t(buffer)], "byteLength")))
       throw InputError(source, 0, where, "its view ends past the end of its buffer");
+  }
+}
+
+// A number of a texture coordinate scale within kMaxTextureScale
+// (scenes/texture.h); what is not a number is left to the material's reader.
+void checkTextureScale(const nlohmann::json& value, const std::string& where, const std::string& source) {
+  if (value.is_number() && !(std::abs(value.get<double>()) <= kMaxTextureScale))
+    throw InputError(source, 0, where,
+                     "must be within -1e6 to 1e6 (the GPU computes texture coordinates in float), is " + value.dump());
+}
+
+// tinygltf reads a texture info's `index` and `texCoord` into an int, wrapping
+// values past its range and reading a fraction as if it were absent (glTF
+// 2.0, 5.22: both are integers, at least 0), so they are checked as written. `extras`
+// are the author's own and hold no texture infos.
+void checkTextureInfos(const nlohmann::json& value, const std::string& where, const std::string& source) {
+  if (value.is_array())
+    for (std::size_t i = 0; i < value.size(); ++i)
+      checkTextureInfos(value[i], where + "[" + std::to_string(i) + "]", source);
+  if (!value.is_object()) return;
+  for (const auto& [key, member] : value.items()) {
+    const std::string at = where + "." + key;
+    const bool whole = member.is_number_unsigned() ? member.get<std::uint64_t>() <= std::uint64_t(INT_MAX)
+                                                   : member.is_number_integer() && member.get<std::int64_t>() >= 0 &&
+                                                         member.get<std::int64_t>() <= INT_MAX;
+    if ((key == "index" || key == "texCoord") && !whole)
+      throw InputError(source, 0, at,
+                       std::string("must be a whole number from 0 to 2147483647 (") +
+                           (key == "index" ? "a texture's index" : "the n of the TEXCOORD_n it reads") + "), is " +
+                           member.dump());
+    if (key == "KHR_texture_transform" && member.contains("scale") && member["scale"].is_array())
+      for (std::size_t i = 0; i < member["scale"].size(); ++i)
+        checkTextureScale(member["scale"][i], at + ".scale[" + std::to_string(i) + "]", source);
+    if (key == "normalTexture" && member.contains("scale")) checkTextureScale(member["scale"], at + ".scale", source);
+    if (key != "extras") checkTextureInfos(member, at, source);
+  }
+}
+
+// The parts of the file that tinygltf would read unsafely or misread, checked
+// on the JSON as written. Malformed JSON is left to tinygltf.
+void checkBeforeParsing(std::string_view json, const std::string& source) {
+  if (json.find("\"images\"") == std::string_view::npos && json.find("\"materials\"") == std::string_view::npos)
+    return;  // no second parse for files without either
+  const nlohmann::json gltf = nlohmann::json::parse(json, nullptr, false);
+  if (!gltf.is_object()) return;
+  checkImageViews(gltf, source);
+  if (gltf.contains("materials")) checkTextureInfos(gltf["materials"], "materials", source);
+}
+
+// What tinygltf reads besides the file itself goes through facet's own checks:
+// every file it names (images and buffers) must be a regular file, and every
+// image is decoded by facet's decoder, its header checked against the size
+// and memory limits before a texel is decoded. tinygltf's callbacks cannot
+// throw through it, so the first refusal is kept and thrown once it returns.
+struct ExternalReads {
+  std::string source;
+  std::exception_ptr refusal;
+  std::uint64_t heldBytes = 0;  // what the images decoded so far keep, and their textures
+
+  bool refuse(std::string* error) {
+    if (!refusal) refusal = std::current_exception();
+    if (error) error->append("refused by facet\n");
+    return false;
+  }
+};
+
+// A path names an existing file by stat alone: tinygltf's own test opens it,
+// and opening a FIFO blocks until a writer comes.
+bool fileExists(const std::string& path, void*) {
+  std::error_code error;
+  return std::filesystem::exists(path, error);
+}
+
+std::string sameFilePath(const std::string& path, void*) { return path; }
+
+bool readWholeFile(std::vector<unsigned char>* out, std::string* error, const std::string& path, void* user) {
+  auto& reads = *static_cast<ExternalReads*>(user);
+  try {
+    checkInputFile(path, "a file that " + reads.source + " names");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path, 0, "cannot open a file that " + reads.source + " names", "the file cannot be read");
+    out->assign(std::istreambuf_iterator<char>(in), {});
+    return true;
+  } catch (...) {
+    return reads.refuse(error);
+  }
+}
+
+bool decodeGltfImage(tinygltf::Image* image, const int index, std::string* error, std::string*, int, int,
+                     const unsigned char* bytes, int size, void* user) {
+  auto& reads = *static_cast<ExternalReads*>(user);
+  try {
+    const std::string field =
+        "images[" + std::to_string(index) + "]" + (image->uri.empty() ? "" : " '" + image->uri + "'");
+    const DecodedSamples decoded =
+        decodeSamples({bytes, std::size_t(std::max(size, 0))}, reads.source, field, kMaxTextureSize, reads.heldBytes);
+    image->width = decoded.width;
+    image->height = decoded.height;
+    image->component = decoded.components;
+    image->bits = 8 * decoded.bytesPerSample;
+    image->pixel_type =
+        decoded.bytesPerSample == 2 ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    image->image.assign(decoded.samples.get(), decoded.samples.get() + decoded.byteCount());
+    reads.heldBytes += textureHeldBytes(decoded.width, decoded.height, decoded.components, decoded.bytesPerSample);
+    return true;
+  } catch (...) {
+    return reads.refuse(error);
   }
 }
 
@@ -143,9 +255,12 @@ Scene loadGltfScene(const std::filesystem::path& path) {
   if (jsonNesting(binary ? glbJson(file) : file, kMaxJsonNesting) > kMaxJsonNesting)
     throw InputError(source, 0, "JSON nesting",
                      "arrays and objects nest deeper than " + std::to_string(kMaxJsonNesting) + " levels");
-  checkImageViews(binary ? glbJson(file) : file, source);
+  checkBeforeParsing(binary ? glbJson(file) : file, source);
   tinygltf::Model model;
   tinygltf::TinyGLTF loader;
+  ExternalReads reads{source, nullptr};
+  loader.SetFsCallbacks({&fileExists, &sameFilePath, &readWholeFile, nullptr, &reads});
+  loader.SetImageLoader(&decodeGltfImage, &reads);
   std::string error, warning;
   const std::string baseDir = path.parent_path().string();
   const bool ok =
@@ -153,6 +268,7 @@ Scene loadGltfScene(const std::filesystem::path& path) {
           ? loader.LoadBinaryFromMemory(&model, &error, &warning, reinterpret_cast<const unsigned char*>(file.data()),
                                         unsigned(file.size()), baseDir)
           : loader.LoadASCIIFromString(&model, &error, &warning, file.data(), unsigned(file.size()), baseDir);
+  if (reads.refusal) std::rethrow_exception(reads.refusal);
   if (!ok) throw InputError(source, 0, "cannot load glTF", error.empty() ? "unknown tinygltf error" : error);
   const detail::GltfReader reader(model, source);
   detail::checkExtensions(model, reader);

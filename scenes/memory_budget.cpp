@@ -67,21 +67,27 @@ std::string gigabytes(std::uint64_t bytes) {
 }
 
 std::uint64_t textureBuildBytes(int width, int height, int components, int bytesPerSample) {
+  const std::uint64_t samples = std::uint64_t(width) * std::uint64_t(height) * std::uint64_t(components);
+  return textureHeldBytes(width, height, components, bytesPerSample) + samples * sizeof(float);
+}
+
+std::uint64_t textureHeldBytes(int width, int height, int components, int bytesPerSample) {
   const std::uint64_t texels = std::uint64_t(width) * std::uint64_t(height);
-  const std::uint64_t samples = texels * std::uint64_t(components);
   const std::uint64_t levels = texels * 4 * sizeof(float) * 4 / 3;
-  return samples * std::uint64_t(bytesPerSample) + samples * sizeof(float) + levels;
+  return texels * std::uint64_t(components) * std::uint64_t(bytesPerSample) + levels;
 }
 
 void checkTextureFitsInMemory(const std::string& source, const std::string& field, int width, int height,
-                              int components, int bytesPerSample) {
+                              int components, int bytesPerSample, std::uint64_t heldBytes) {
   const std::uint64_t needed = textureBuildBytes(width, height, components, bytesPerSample);
   const MemoryLimit limit = memoryLimit();
-  if (needed > limit.bytes)
+  if (needed + heldBytes > limit.bytes)
     throw InputError(source, 0, field,
                      "a " + std::to_string(width) + " x " + std::to_string(height) + " texture needs about " +
-                         gigabytes(needed) + " of memory to build and the limit is " + gigabytes(limit.bytes) + " (" +
-                         limit.source + "); scale the image down");
+                         gigabytes(needed) + " of memory to build" +
+                         (heldBytes > 0 ? ", the images before it keep " + gigabytes(heldBytes) + "," : "") +
+                         " and the limit is " + gigabytes(limit.bytes) + " (" + limit.source + "); scale the image" +
+                         (heldBytes > 0 ? "s" : "") + " down");
 }
 
 void checkImagesFitInMemory(const Scene& scene, int images, const std::string& sizeSource,

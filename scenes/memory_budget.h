@@ -32,10 +32,15 @@ std::string gigabytes(std::uint64_t bytes);
 // their float copy, and the RGBA float levels (4/3 of level 0), together.
 std::uint64_t textureBuildBytes(int width, int height, int components, int bytesPerSample);
 
-// Throws InputError naming `source` and `field` when textureBuildBytes
-// exceeds memoryLimit(): checked from the image's header, before decoding.
+// What a built texture and its decoded samples keep once the build is done:
+// the samples, and the RGBA float levels.
+std::uint64_t textureHeldBytes(int width, int height, int components, int bytesPerSample);
+
+// Throws InputError naming `source` and `field` when textureBuildBytes, with
+// the `heldBytes` that earlier images of the same file keep, exceeds
+// memoryLimit(): checked from the image's header, before decoding.
 void checkTextureFitsInMemory(const std::string& source, const std::string& field, int width, int height,
-                              int components, int bytesPerSample);
+                              int components, int bytesPerSample, std::uint64_t heldBytes = 0);
 
 // Throws std::invalid_argument unless `images` images of the scene's size,
 // or of the crop of it that is rendered, fit in memoryLimit();

@@ -47,6 +47,15 @@ enum class TextureEncoding { Linear, Srgb };
 // The largest side of a texture image, whichever file names it.
 inline constexpr int kMaxTextureSize = 16384;
 
+// The largest magnitude of a texture coordinate scale (KHR_texture_transform's
+// scale, glTF's normalTexture.scale). The GPU computes in float and multiplies
+// two scaled partials (the level of detail, the normal map's frame): past
+// about 1e19, the square root of float's range, that overflows and the
+// backends part. Within 1e6 it stays far
+// inside float's range, and a coordinate a million repeats long still keeps
+// a few bits of its position within one repeat.
+inline constexpr double kMaxTextureScale = 1e6;
+
 // A texture from width x height texels of `components` channels (1 grey, 2
 // grey and alpha, 3 RGB, 4 RGBA), each normalized to [0, 1]; builds the
 // chain with a 2 x 2 box filter of the linear values.

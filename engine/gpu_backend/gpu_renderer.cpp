@@ -31,8 +31,8 @@ namespace {
 namespace layout = gpu_layout;
 
 // Bands of pixels keep one band's buffers within this, so a frame's GPU
-// arrays stay near it whatever its size (and each binding far below
-// lavapipe's 128 MiB).
+// arrays stay near it whatever its size (and each binding within the
+// device's limit: bandPixelCount).
 constexpr std::uint64_t kBandBytes = std::uint64_t(48) << 20;
 
 ibl::EnvironmentLighting prepareEnvironment(gpu::Device& d, const scene::Scene& scene) {
@@ -115,13 +115,9 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   const int width = scene.render.width;
   const PixelRect window = crop.value_or(PixelRect::whole(width, scene.render.height));
   const std::uint64_t pixels = window.pixelCount();
-  const std::uint64_t slotBytes = sizeof(layout::ShadowRayRecord) + 16;
-  // Paths add a path state and a continuation ray record per camera ray.
   const int bounces = scene.render.bounces;
-  const std::uint64_t pathBytes = bounces > 0 ? sizeof(layout::PathState) + sizeof(layout::PathRayRecord) : 0;
-  const std::uint64_t rayBytes = sizeof(layout::HitRecord) + 16 + frame.slotsPerRay * slotBytes + pathBytes;
-  const std::uint64_t pixelBytes = frame.raysPerPixel * rayBytes + sizeof(layout::PixelAovs) + 16;
-  const std::uint64_t bandPixels = std::min<std::uint64_t>(pixels, std::max<std::uint64_t>(1, kBandBytes / pixelBytes));
+  const std::uint64_t bandPixels = bandPixelCount({frame.raysPerPixel, frame.slotsPerRay, bounces > 0}, pixels,
+                                                  kBandBytes, d.limits(), d.adapterInfo().name, bandAdvice(scene));
   // Fallbacks are rare (cells Newton leaves undecided); a band whose lists
   // overflow is rendered again with room for all.
   frame.fallbackCapacity = tessellated ? 0 : std::uint32_t(bandPixels * frame.raysPerPixel / 16 + 1024);

@@ -81,6 +81,48 @@ void checkGeometryLimits(const GpuScene& packed, const gpu::Limits& limits, cons
                       fewerPatches);
 }
 
+std::uint64_t bandPixelCount(const BandShape& shape, std::uint64_t pixels, std::uint64_t budget,
+                             const gpu::Limits& limits, const std::string& adapter, const std::string& advice) {
+  const std::uint64_t rays = shape.raysPerPixel, slots = std::max(1u, shape.slotsPerRay);
+  const std::uint64_t pathBytes = sizeof(layout::PathState) + sizeof(layout::PathRayRecord);
+  // Each storage buffer of allocateBands by what one pixel puts in it.
+  struct PerPixel {
+    const char* name;
+    std::uint64_t bytes;
+  };
+  const PerPixel buffers[] = {{"shadow rays", rays * slots * sizeof(layout::ShadowRayRecord)},
+                              {"light contributions", rays * slots * 16},
+                              {"camera hits", rays * sizeof(layout::HitRecord)},
+                              {"path states", shape.paths ? rays * sizeof(layout::PathState) : 0},
+                              {"continuation rays", shape.paths ? rays * sizeof(layout::PathRayRecord) : 0},
+                              {"camera ray radiance", rays * 16},
+                              {"AOVs", sizeof(layout::PixelAovs)},
+                              {"beauty", 16}};
+  const std::uint64_t fallbackBytes = 2 * (rays / 16 + 1) * sizeof(layout::FallbackRecord);
+  std::uint64_t pixelBytes = fallbackBytes + (shape.paths ? rays * pathBytes : 0);
+  for (const PerPixel& buffer : buffers) pixelBytes += buffer.bytes;
+  const std::uint64_t maxBinding = std::min(limits.maxStorageBufferBindingSize, limits.maxBufferSize);
+  std::uint64_t band = std::min(pixels, std::max<std::uint64_t>(1, budget / pixelBytes));
+  for (const PerPixel& buffer : buffers) {
+    if (buffer.bytes == 0) continue;
+    if (buffer.bytes > maxBinding)
+      throw gpu::Error(std::string("one pixel's ") + buffer.name + " need " + std::to_string(buffer.bytes) +
+                       " bytes in one storage buffer (" + std::to_string(rays) + " camera rays, " +
+                       std::to_string(slots) + " shadow-ray slots each); " + adapter + " binds at most " +
+                       std::to_string(maxBinding) + ": " + advice);
+    band = std::min(band, maxBinding / buffer.bytes);
+  }
+  return band;
+}
+
+std::string bandAdvice(const scene::Scene& scene) {
+  std::string settings = "samples per pixel (--spp, " + std::to_string(scene.render.samplesPerPixel) + ")";
+  if (scene.environment)
+    settings += ", the environment's samples (--ibl-samples, " + std::to_string(scene.environment->samples) + ")";
+  if (!scene.lights.empty()) settings += ", the lights (" + std::to_string(scene.lights.size()) + ")";
+  return "lower the " + settings + ", or render with the CPU reference (--backend cpu)";
+}
+
 GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed) {
   const BufferUsage in = BufferUsage::Storage, texel = BufferUsage::Texel;
   // Written by the dicing kernels, read by the tracing ones.

@@ -59,6 +59,28 @@ ShadingBuffers uploadShading(gpu::Device& d, const scene::Scene& scene, const ib
 // rates), the method and the tolerance are the same.
 std::uint64_t geometryKey(const GpuScene& packed, bool tessellated, float tolerance);
 
+// What each pixel of a band holds: its camera rays (the centre ray and the
+// samples), each with its shadow-ray slots, and with paths a path state and a
+// continuation ray per camera ray.
+struct BandShape {
+  std::uint64_t raysPerPixel = 1;
+  std::uint32_t slotsPerRay = 0;
+  bool paths = false;
+};
+
+// The pixels of one band: as many as keep the band's buffers (allocateBands,
+// with fallback lists of one record per 16 rays) within `budget` bytes
+// together and each of its storage buffers within the device's
+// maxStorageBufferBindingSize and maxBufferSize; at least 1, at most
+// `pixels`. Throws gpu::Error when one pixel alone overflows a buffer: the
+// message names the buffer, its need and the limit, then `advice`.
+std::uint64_t bandPixelCount(const BandShape& shape, std::uint64_t pixels, std::uint64_t budget,
+                             const gpu::Limits& limits, const std::string& adapter, const std::string& advice);
+
+// The settings that make a pixel's rays and slots, as bandPixelCount's advice:
+// the samples per pixel, the environment's samples, the lights.
+std::string bandAdvice(const scene::Scene& scene);
+
 // With `paths`, the path states and the continuation rays' list too.
 BandBuffers allocateBands(gpu::Device& d, std::uint64_t bandPixels, std::uint64_t bandRays, std::uint32_t slots,
                           std::uint32_t fallbackCapacity, bool paths);

@@ -1,7 +1,9 @@
 // The up-front check of a packed scene against a device's limits
 // (engine/gpu_backend/render_buffers.h, checkGeometryLimits), with limits
 // lowered to just below what the scene needs: the error names the array,
-// its need, the limit and what to do, and a limit that holds passes.
+// its need, the limit and what to do, and a limit that holds passes. And the
+// band's size (bandPixelCount) against lowered binding limits: bands get
+// smaller, and only a pixel too large for one binding is an error.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -95,6 +97,67 @@ TEST_P(GeometryLimits, PatchRecordsAreNotBoundByTheStorageBindingLimit) {
 
 INSTANTIATE_TEST_SUITE_P(Methods, GeometryLimits, ::testing::Values(false, true),
                          [](const auto& info) { return info.param ? "tess" : "exact"; });
+
+constexpr std::uint64_t kBudget = std::uint64_t(48) << 20;
+
+std::string bandError(const BandShape& shape, const gpu::Limits& limits) {
+  try {
+    bandPixelCount(shape, 1 << 16, kBudget, limits, "test adapter", "the advice");
+  } catch (const gpu::Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(BandPixels, ShrinkSoThatEveryBindingFitsTheDevice) {
+  // The sampled environment's many slots: 17 camera rays of 64 slots each.
+  const BandShape shape{17, 64, true};
+  const std::uint64_t shadowBytes = 17 * 64 * sizeof(layout::ShadowRayRecord);  // the largest per pixel
+  const std::uint64_t roomyBand = bandPixelCount(shape, 1 << 16, kBudget, roomy(), "a", "");
+  for (const std::uint64_t binding : {std::uint64_t(1) << 20, shadowBytes * 3 + 1, shadowBytes}) {
+    gpu::Limits limits = roomy();
+    limits.maxStorageBufferBindingSize = binding;
+    const std::uint64_t band = bandPixelCount(shape, 1 << 16, kBudget, limits, "a", "");
+    EXPECT_EQ(band, binding / shadowBytes) << binding;  // the most whose shadow rays fit one binding
+    EXPECT_LT(band, roomyBand);
+    gpu::Limits smallBuffers = roomy();
+    smallBuffers.maxBufferSize = binding;  // the same bound from the buffer size
+    EXPECT_EQ(bandPixelCount(shape, 1 << 16, kBudget, smallBuffers, "a", ""), band);
+  }
+  // The budget bounds the band where the device does not, and the image bounds it too.
+  EXPECT_LE(roomyBand * (shadowBytes + 17 * 64 * 16), kBudget);
+  EXPECT_GT(roomyBand, 100u);
+  EXPECT_EQ(bandPixelCount(shape, 7, kBudget, roomy(), "a", ""), 7u);
+}
+
+TEST(BandPixels, APixelThatFitsNoBindingNamesItsRaysTheLimitAndTheSettings) {
+  // --spp 1024 (1025 camera rays) with a sampled environment of 4096 samples
+  // and one light: 8193 slots per ray, 302 MB of shadow rays in one pixel.
+  const BandShape shape{1025, 8193, false};
+  const std::string error = bandError(shape, roomy());
+  EXPECT_NE(error.find("one pixel's shadow rays need " + std::to_string(1025ull * 8193 * 36) + " bytes"),
+            std::string::npos)
+      << error;
+  EXPECT_NE(error.find("1025 camera rays, 8193 shadow-ray slots each"), std::string::npos) << error;
+  EXPECT_NE(error.find("test adapter binds at most " + std::to_string(std::uint64_t(1) << 27) + ": the advice"),
+            std::string::npos)
+      << error;
+  // One pixel exactly at the limit still renders, alone.
+  gpu::Limits exact = roomy();
+  exact.maxStorageBufferBindingSize = 1025ull * 8193 * 36;
+  EXPECT_EQ(bandError(shape, exact), "");
+}
+
+TEST(BandPixels, TheAdviceNamesTheSettingsThatMakeTheSlots) {
+  scene::Scene scene = scene::loadScene(std::filesystem::path(FACET_CAGE_DIR) / "suzanne.obj");
+  scene.render.samplesPerPixel = 1024;
+  scene.environment = scene::Environment{};
+  scene.environment->samples = 4096;
+  const std::string advice = bandAdvice(scene);
+  EXPECT_NE(advice.find("--spp, 1024"), std::string::npos) << advice;
+  EXPECT_NE(advice.find("--ibl-samples, 4096"), std::string::npos) << advice;
+  EXPECT_NE(advice.find("--backend cpu"), std::string::npos) << advice;
+}
 
 }  // namespace
 }  // namespace facet::gpu_backend
