@@ -1,14 +1,12 @@
 #include "engine/adaptive_render.h"
 
-#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <string>
-
-#include "rules/rules.h"
 
 namespace facet {
 namespace {
@@ -52,18 +50,18 @@ const char* toString(AdaptiveStop stop) {
   return "?";
 }
 
-scene::Camera shiftedCamera(const scene::Camera& camera, int width, int height, double dx, double dy) {
-  // The direction through image point (w/2 + dx, h/2 + dy) of
-  // rules/camera/camera.h's pinhole becomes the new forward.
-  const glm::dvec3 toTarget = camera.target - camera.eye;
-  const glm::dvec3 forward = glm::normalize(toTarget);
-  const glm::dvec3 right = glm::normalize(glm::cross(forward, camera.up));
-  const glm::dvec3 up = glm::cross(right, forward);
-  const double tanHalf = std::tan(glm::radians(camera.verticalFovDegrees) / 2.0);
-  const double sx = 2.0 * dx / width * tanHalf * double(width) / double(height), sy = -2.0 * dy / height * tanHalf;
-  scene::Camera shifted = camera;
-  shifted.target = camera.eye + glm::length(toTarget) * glm::normalize(forward + sx * right + sy * up);
-  return shifted;
+RoundFrame roundFrame(const scene::Scene& scene, int round) {
+  RoundFrame frame{scene, round % 64, round / 64};
+  frame.scene.render.width += 2 * frame.dx;
+  frame.scene.render.height += 2 * frame.dy;
+  // tan(fov'/2) / H' = tan(fov/2) / H: rules/camera/camera.h then gives
+  // pixel (x + dx, y + dy) of the larger image the ray of pixel (x, y).
+  const double tanHalf = std::tan(glm::radians(scene.camera.verticalFovDegrees) / 2.0);
+  frame.scene.camera.verticalFovDegrees =
+      glm::degrees(2.0 * std::atan(tanHalf * frame.scene.render.height / scene.render.height));
+  if (double(frame.scene.render.width) * frame.scene.render.height > 4294967295.0)
+    throw std::invalid_argument("adaptive round " + std::to_string(round) + ": the image has too many pixels");
+  return frame;
 }
 
 AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Backend backend,
@@ -73,7 +71,6 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
   const int width = scene.render.width, height = scene.render.height;
   scene::Scene round = scene;
   round.render.samplesPerPixel = settings.roundSpp;
-  const double strata = std::sqrt(double(settings.roundSpp));
   SampleRounds rounds(width, height, settings.tileSize);
   const TileGrid& grid = rounds.grid();
   AdaptiveReport report;
@@ -84,17 +81,16 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
 
   while (!active.empty()) {
     // Each round is an independent randomization of the same estimator:
-    // its lighting by its seed, its camera samples by a shift uniform over
-    // one stratum of its net, so the rounds' spread is an unbiased estimate
-    // of their variance (L'Ecuyer & Lemieux 2002). The first is unshifted:
-    // its centre samples give the AOVs.
-    const auto r = std::uint32_t(report.rounds);
-    const double dx = r == 0 ? 0.0 : (rules::f64::sample_uniform(r, 0x5eedu, 0u) - 0.5) / strata;
-    const double dy = r == 0 ? 0.0 : (rules::f64::sample_uniform(r, 0x5eedu, 1u) - 0.5) / strata;
-    round.camera = shiftedCamera(scene.camera, width, height, dx, dy);
-    if (round.environment) round.environment->seed = scene.environment->seed + r;
+    // its pixels' indices, which key the camera's scrambled nets and the
+    // lighting's random numbers (rules/camera/camera_samples.h,
+    // rules/sampling/random.h), and its seed are its own, so the rounds'
+    // spread is an unbiased estimate of their variance (L'Ecuyer & Lemieux
+    // 2002). The first is the scene itself: its centre samples give the AOVs.
+    RoundFrame frame = roundFrame(round, report.rounds);
+    if (frame.scene.environment) frame.scene.environment->seed = scene.environment->seed + std::uint32_t(report.rounds);
     const PixelRect window = boundsOf(grid, active);
-    RenderReport rendered = renderer.render(round, backend, {}, {window, threads});
+    const PixelRect crop{window.x0 + frame.dx, window.y0 + frame.dy, window.x1 + frame.dx, window.y1 + frame.dy};
+    RenderReport rendered = renderer.render(frame.scene, backend, {}, {crop, threads});
     rounds.add(rendered.image, window, active);
     report.samples += std::uint64_t(settings.roundSpp) * window.pixelCount();
     if (report.rounds++ == 0) report.first = std::move(rendered);

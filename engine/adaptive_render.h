@@ -2,7 +2,7 @@
 // with its own random numbers, until every tile's estimated noise is below
 // a threshold or a sample or time cap is reached (docs/preview-stage.md,
 // "Adaptive sampling"). The kernels are the renderer's own; only which
-// pixels each round renders and with which seed and sub-pixel shift changes.
+// pixels each round renders, and the random numbers they draw, changes.
 #pragma once
 
 #include <cstdint>
@@ -52,8 +52,16 @@ struct AdaptiveReport {
 AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Backend backend,
                               const AdaptiveSettings& settings, unsigned threads = 0);
 
-// The camera turned about its eye so that the image moves by (dx, dy)
-// pixels: the rounds' shift of their samples within the pixel.
-scene::Camera shiftedCamera(const scene::Camera& camera, int width, int height, double dx, double dy);
+// Round `round`'s scene and where its pixels lie: the image inside a larger
+// one, (a, b) = (round % 64, round / 64) pixels wider on the left and
+// right, taller above and below, its field of view widened to keep the
+// pixels' size, so that every pixel sees what it saw but has another index
+// in the full image, and with it other random numbers (docs/preview-stage.md,
+// "Adaptive sampling"). Round 0 is the scene itself.
+struct RoundFrame {
+  scene::Scene scene;
+  int dx = 0, dy = 0;  // the image's pixel (x, y) is the round's (x + dx, y + dy)
+};
+RoundFrame roundFrame(const scene::Scene& scene, int round);
 
 }  // namespace facet

@@ -6,11 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <memory>
 
+#include "engine/camera/camera.h"
 #include "scenes/studio_environment.h"
 #include "tests/support/blob_scene.h"
 
@@ -95,27 +95,52 @@ TEST(AdaptiveRender, RefusesSettingsOutsideTheRules) {
   EXPECT_THROW(renderAdaptive(renderer, s, Backend::Cpu, noTime), std::invalid_argument);
 }
 
-// Where the old target lands in the shifted camera's image, by the pinhole
-// of rules/camera/camera.h.
-glm::dvec2 targetPixel(const scene::Camera& old, const scene::Camera& c, int w, int h) {
-  const glm::dvec3 f = glm::normalize(c.target - c.eye), r = glm::normalize(glm::cross(f, c.up)), u = glm::cross(r, f);
-  const glm::dvec3 d = old.target - c.eye;
-  const double t = std::tan(glm::radians(c.verticalFovDegrees) / 2);
-  const double sx = glm::dot(d, r) / glm::dot(d, f), sy = glm::dot(d, u) / glm::dot(d, f);
-  return {(sx / (t * w / h) + 1) * w / 2, (1 - sy / t) * h / 2};
+TEST(AdaptiveRender, EachRoundsPixelsSeeWhatTheImagesPixelsSee) {
+  scene::Scene s = studioBlob(scene::IblMethod::Sampled, 1);
+  s.render.width = 48;
+  s.render.height = 20;
+  s.camera.verticalFovDegrees = 35;
+  const rules::f64::CameraFrame image = camera::cameraFrame(s.camera, 48, 20);
+  for (int round : {0, 1, 63, 70, 300}) {
+    const RoundFrame r = roundFrame(s, round);
+    EXPECT_EQ(r.dx, round % 64);
+    EXPECT_EQ(r.dy, round / 64);
+    const int w = r.scene.render.width, h = r.scene.render.height;
+    EXPECT_EQ(w, 48 + 2 * r.dx);
+    EXPECT_EQ(h, 20 + 2 * r.dy);
+    const rules::f64::CameraFrame larger = camera::cameraFrame(r.scene.camera, w, h);
+    for (const glm::dvec2 p : {glm::dvec2(0.25, 0.5), glm::dvec2(47.9, 19.1), glm::dvec2(13.5, 2.75)}) {
+      const glm::dvec3 expected = rules::f64::camera_ray_direction(image, p.x, p.y, 48, 20);
+      const glm::dvec3 seen = rules::f64::camera_ray_direction(larger, p.x + r.dx, p.y + r.dy, w, h);
+      EXPECT_LT(glm::length(seen - expected), 1e-12) << "round " << round << " at " << p.x << "," << p.y;
+    }
+  }
 }
 
-TEST(AdaptiveRender, AShiftedCameraMovesTheImageByTheShift) {
-  scene::Camera c;
-  c.eye = {1, 2, 5};
-  c.target = {0, 0.5, 0};
-  const glm::dvec2 centre = targetPixel(c, shiftedCamera(c, 64, 32, 0, 0), 64, 32);
-  EXPECT_NEAR(centre.x, 32, 1e-9);
-  EXPECT_NEAR(centre.y, 16, 1e-9);
-  const glm::dvec2 moved = targetPixel(c, shiftedCamera(c, 64, 32, 0.4, -0.3), 64, 32);
-  // A turn moves the image by the shift to first order in it.
-  EXPECT_NEAR(moved.x, 32 - 0.4, 5e-3) << "the scene moves against the camera";
-  EXPECT_NEAR(moved.y, 16 + 0.3, 5e-3);
+TEST(AdaptiveRender, RoundsDrawIndependentSamples) {
+  // Two rounds of the same pixels at the same spp differ (other random
+  // numbers) but agree on average (the same estimator).
+  Renderer renderer;
+  scene::Scene s = studioBlob(scene::IblMethod::Sampled, 1);
+  s.render.samplesPerPixel = 4;
+  const PixelRect window{8, 8, 24, 24};
+  const RoundFrame second = roundFrame(s, 5);
+  const Image a = renderer.render(s, Backend::Cpu, {}, {window}).image;
+  const Image b =
+      renderer
+          .render(
+              second.scene, Backend::Cpu, {},
+              {PixelRect{window.x0 + second.dx, window.y0 + second.dy, window.x1 + second.dx, window.y1 + second.dy}})
+          .image;
+  double meanA = 0, meanB = 0, differ = 0;
+  for (std::size_t i = 0; i < a.beauty.size(); ++i) {
+    meanA += luminance(a.beauty[i]) / double(a.beauty.size());
+    meanB += luminance(b.beauty[i]) / double(a.beauty.size());
+    differ += a.beauty[i] != b.beauty[i] ? 1.0 : 0.0;
+    EXPECT_EQ(a.beauty[i].a > 0, b.beauty[i].a > 0) << "the same surface at pixel " << i;
+  }
+  EXPECT_GT(differ, 0.5 * double(a.beauty.size())) << "most pixels drew other samples";
+  EXPECT_NEAR(meanA, meanB, 0.05 * meanA);
 }
 
 }  // namespace

@@ -35,8 +35,8 @@ PY
 
 # A noisier estimator of the same picture takes more samples.
 samples() { /usr/bin/python3 -c 'import json,sys; print(sum(r["samples"] for r in json.load(open(sys.argv[1]))["renders"]))' "$1"; }
-"$facet" preview gold "${common[@]}" --noise-threshold 0.03 --json -o smooth.png >smooth.json
-"$facet" preview gold "${common[@]}" --noise-threshold 0.03 --ibl sampled --json -o noisy.png >noisy.json
+"$facet" preview gold "${common[@]}" --noise-threshold 0.02 --json -o smooth.png >smooth.json
+"$facet" preview gold "${common[@]}" --noise-threshold 0.02 --ibl sampled --json -o noisy.png >noisy.json
 [ "$(samples noisy.json)" -gt "$(samples smooth.json)" ] ||
   fail "sampled lighting took $(samples noisy.json) samples, prefiltered $(samples smooth.json)"
 
