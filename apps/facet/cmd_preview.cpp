@@ -14,6 +14,7 @@
 #include <memory>
 #include <random>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "analysis/movie.h"
@@ -26,6 +27,7 @@
 #include "material_options.h"
 #include "preview_stage_options.h"
 #include "scene_options.h"
+#include "scenes/input_error.h"
 #include "scenes/memory_budget.h"
 #include "scenes/scene_file.h"
 #include "scenes/studio_environment.h"
@@ -74,11 +76,22 @@ scene::Scene previewModel(const PreviewStageFlags& f) {
   return scene;
 }
 
-scene::Scene withMaterial(const scene::Scene& model, const std::string& reference) {
+// The model with `reference` on every object; the material's name (a file's
+// without its folder and .json, or the preset's) labels its cell.
+std::pair<scene::Scene, std::string> withMaterial(const scene::Scene& model, const std::string& reference) {
   scene::Scene scene = model;
-  materials::Material material = scene::loadMaterialReference(reference, scene.textures);
+  materials::Material material;
+  try {
+    material = scene::loadMaterialReference(reference, scene.textures);
+  } catch (const scene::InputError& e) {
+    // A preset's errors name render's flag; here the material is positional.
+    const std::string message = e.what(), flag = "--material: ";
+    if (message.rfind(flag, 0) != 0) throw;
+    throw std::invalid_argument("material '" + reference + "': " + message.substr(flag.size()));
+  }
+  std::string label = material.name;
   scene::assignMaterial(scene, "", std::move(material));
-  return scene;
+  return {std::move(scene), std::move(label)};
 }
 
 nlohmann::json renderJson(const std::string& label, int frame, const AdaptiveReport& r, double threshold) {
@@ -124,12 +137,11 @@ void runPreview(const PreviewStageFlags& f) {
   const auto start = std::chrono::steady_clock::now();
   const scene::Scene model = previewModel(f);
   std::vector<scene::Scene> scenes;
+  std::vector<std::string> labels;
   for (const std::string& reference : f.materials) {
-    try {
-      scenes.push_back(withMaterial(model, reference));
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument("material '" + reference + "': " + e.what());
-    }
+    auto [scene, label] = withMaterial(model, reference);
+    scenes.push_back(std::move(scene));
+    labels.push_back(std::move(label));
   }
   const int width = model.render.width, height = model.render.height;
   const ContactSheetLayout layout = contactSheetLayout(int(scenes.size()), width, height, f.columns);
@@ -146,10 +158,9 @@ void runPreview(const PreviewStageFlags& f) {
       scene::Scene scene = scenes[i];
       if (f.turntable) scene.camera = camera::turntableCamera(model.camera, frame, *f.turntable);
       const AdaptiveReport report = renderAdaptive(renderer, scene, backend, settings);
-      const std::string label = materialLabel(f.materials[i]);
-      cells.push_back({previewPixels(report.image.beauty, width, height, look), label});
+      cells.push_back({previewPixels(report.image.beauty, width, height, look), labels[i]});
       summary["adapter"] = report.first.device;
-      summary["renders"].push_back(renderJson(label, frame, report, settings.noiseThreshold));
+      summary["renders"].push_back(renderJson(labels[i], frame, report, settings.noiseThreshold));
       if (!f.quiet && !f.json) printRender(summary["renders"].back(), bool(f.turntable));
     }
     const std::vector<std::uint8_t> sheet = composeContactSheet(layout, cells);

@@ -1,6 +1,5 @@
 #include "preview_stage_options.h"
 
-#include <filesystem>
 #include <sstream>
 #include <stdexcept>
 
@@ -68,11 +67,6 @@ void checkPreviewStageFlags(const PreviewStageFlags& f) {
   } else if (f.output.empty()) {
     throw std::invalid_argument("give -o sheet.png, or --turntable N --movie out.mp4|out.gif");
   }
-}
-
-std::string materialLabel(const std::string& reference) {
-  const std::filesystem::path path(reference);
-  return path.extension() == ".json" ? path.stem().string() : reference;
 }
 
 }  // namespace facet::cli

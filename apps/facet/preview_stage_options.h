@@ -41,8 +41,4 @@ void addPreviewStageOptions(CLI::App& command, PreviewStageFlags& flags);
 AdaptiveSettings chosenAdaptiveSettings(const PreviewStageFlags& flags);
 void checkPreviewStageFlags(const PreviewStageFlags& flags);
 
-// A cell's label: a material file's name without its folder and .json, or
-// the preset's name.
-std::string materialLabel(const std::string& reference);
-
 }  // namespace facet::cli

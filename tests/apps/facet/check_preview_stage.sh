@@ -63,6 +63,7 @@ bad "--max-spp '4': expected a whole number" --max-spp 4
 bad "--time-limit '-1': expected a number of seconds" --time-limit -1
 bad "--time-limit" --time-limit nan
 bad "--movie 'turn.mov': the extension chooses the format" --turntable 2 --movie turn.mov
+bad "material 'nosuch': preset: unknown preset 'nosuch'" nosuch
 
 # No ffmpeg on PATH: one line naming it and how to install it, exit code 2, nothing written.
 set +e
