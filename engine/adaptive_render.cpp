@@ -120,6 +120,9 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
     throw std::logic_error("the first adaptive round must cover the whole image");
   report.image.beauty = rounds.beauty();
   report.maxError = *std::max_element(report.errors.begin(), report.errors.end());
+  for (int t = 0; t < grid.count(); ++t)
+    report.sppMean += double(report.tileSpp[std::size_t(t)]) * double(grid.tile(t).pixelCount());
+  report.sppMean /= double(grid.width) * double(grid.height);
   report.seconds = secondsSince(start);
   return report;
 }

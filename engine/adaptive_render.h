@@ -40,7 +40,8 @@ struct AdaptiveReport {
   RenderReport first;  // the first round's report: device, stages, geometry
   AdaptiveStop stop = AdaptiveStop::Converged;
   int rounds = 0;              // renders made
-  std::uint64_t samples = 0;   // camera samples shaded, summed over pixels
+  std::uint64_t samples = 0;   // camera samples rendered, finished tiles inside a round's crop too
+  double sppMean = 0;          // camera samples per pixel kept, over the image
   std::vector<double> errors;  // per tile, when it stopped
   std::vector<int> tileSpp;    // per tile: camera samples per pixel taken
   double maxError = 0;         // the largest of `errors`

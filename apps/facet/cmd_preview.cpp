@@ -96,19 +96,12 @@ std::pair<scene::Scene, std::string> withMaterial(const scene::Scene& model, con
 
 nlohmann::json renderJson(const std::string& label, int frame, const AdaptiveReport& r, double threshold) {
   const auto [least, most] = std::minmax_element(r.tileSpp.begin(), r.tileSpp.end());
-  const double pixels = double(r.image.pixelCount());
-  return {{"material", label},
-          {"frame", frame},
-          {"rounds", r.rounds},
-          {"samples", r.samples},
-          {"spp_mean", double(r.samples) / pixels},
-          {"spp_min", *least},
-          {"spp_max", *most},
-          {"max_tile_error", r.maxError},
-          {"tile_errors", r.errors},
-          {"noise_threshold", threshold},
-          {"stop", toString(r.stop)},
-          {"milliseconds", r.seconds * 1000.0}};
+  return {{"material", label},        {"frame", frame},
+          {"rounds", r.rounds},       {"samples", r.samples},
+          {"spp_mean", r.sppMean},    {"spp_min", *least},
+          {"spp_max", *most},         {"max_tile_error", r.maxError},
+          {"tile_errors", r.errors},  {"noise_threshold", threshold},
+          {"stop", toString(r.stop)}, {"milliseconds", r.seconds * 1000.0}};
 }
 
 void printRender(const nlohmann::json& r, bool turntable) {

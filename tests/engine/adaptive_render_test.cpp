@@ -53,6 +53,7 @@ TEST(AdaptiveRender, StopsWithEveryTileBelowTheThreshold) {
   std::uint64_t samples = 0;
   for (int spp : r.tileSpp) samples += std::uint64_t(spp) * 64;
   EXPECT_LE(samples, r.samples) << "rounds render the active tiles' bounds";
+  EXPECT_DOUBLE_EQ(r.sppMean, double(samples) / (32.0 * 32.0));
 }
 
 TEST(AdaptiveRender, ANoisierEstimatorTakesMoreSamples) {
