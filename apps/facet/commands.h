@@ -9,6 +9,7 @@ namespace facet::cli {
 
 void addInfoCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
+void addPreviewCommand(CLI::App& app);
 void addMergeCommand(CLI::App& app);
 void addBrdfCommand(CLI::App& app);
 void addAlbedoCommand(CLI::App& app);

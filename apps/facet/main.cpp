@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   addInfoCommand(app);
   addRenderCommand(app);
+  addPreviewCommand(app);
   addMergeCommand(app);
   addBrdfCommand(app);
   addAlbedoCommand(app);

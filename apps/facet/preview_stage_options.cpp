@@ -1,0 +1,72 @@
+#include "preview_stage_options.h"
+
+#include <sstream>
+#include <stdexcept>
+
+#include "analysis/movie.h"
+
+namespace facet::cli {
+namespace {
+
+std::string text(double value) {
+  std::ostringstream s;
+  s << value;
+  return s.str();
+}
+
+}  // namespace
+
+void addPreviewStageOptions(CLI::App& c, PreviewStageFlags& f) {
+  c.add_option("materials", f.materials, "Material files (.json) or presets (see `facet presets`), one cell each")
+      ->required();
+  c.add_option("--model", f.model, "The model every material is put on (default: the default scene's superball)")
+      ->check(CLI::ExistingFile);
+  c.add_option("-o,--output", f.output, "The contact sheet, a .png");
+  c.add_option("--size", f.size, "Each cell's image size WIDTHxHEIGHT (default 256x256)");
+  c.add_option("--columns", f.columns, "Cells per row (default: a grid about as wide as tall)")
+      ->check(CLI::Range(1, 64));
+  c.add_option("--ibl", f.ibl, "How the studio environment lights the model (default: prefiltered)")
+      ->check(CLI::IsMember({"sampled", "prefiltered", "filtered"}));
+  c.add_option("--noise-threshold", f.noiseThreshold,
+               "Stop a tile once its relative standard error is below this (default 0.02)");
+  c.add_option("--max-spp", f.maxSpp, "At most this many camera samples per pixel (default 256)");
+  c.add_option("--time-limit", f.timeLimit, "Seconds per image after which no round starts (default 60)");
+  c.add_option("--turntable", f.turntable, "Frames of a full orbit of the camera about its target, for --movie")
+      ->check(CLI::Range(2, 3600));
+  c.add_option("--movie", f.movie, "The turntable as an .mp4 or a .gif, made by ffmpeg (found on PATH)");
+  c.add_option("--fps", f.fps, "The movie's frames per second (default 24)")->check(CLI::Range(1.0, 120.0));
+  addPreviewOptions(c, f.preview);
+  c.add_option("--backend", f.backend, "Renderer backend: the GPU kernels or the CPU reference")
+      ->check(CLI::IsMember({"gpu", "cpu"}));
+  c.add_option("--adapter", f.adapter, "GPU adapter: a substring of its name (default: FACET_ADAPTER or the first)");
+  c.add_flag("--quiet", f.quiet, "No summary lines");
+  c.add_flag("--json", f.json, "The summary as JSON on stdout");
+}
+
+AdaptiveSettings chosenAdaptiveSettings(const PreviewStageFlags& f) {
+  if (!validNoiseThreshold(f.noiseThreshold))
+    throw std::invalid_argument("--noise-threshold '" + text(f.noiseThreshold) + "': " + kNoiseThresholdRule);
+  if (!validMaxSpp(f.maxSpp)) throw std::invalid_argument("--max-spp '" + text(double(f.maxSpp)) + "': " + kMaxSppRule);
+  if (!validTimeLimit(f.timeLimit))
+    throw std::invalid_argument("--time-limit '" + text(f.timeLimit) + "': " + kTimeLimitRule);
+  AdaptiveSettings settings;
+  settings.noiseThreshold = f.noiseThreshold;
+  settings.maxSpp = int(f.maxSpp);
+  settings.timeLimitSeconds = f.timeLimit;
+  return settings;
+}
+
+void checkPreviewStageFlags(const PreviewStageFlags& f) {
+  if (f.movie.empty() && f.turntable) throw std::invalid_argument("--turntable: give --movie out.mp4 or out.gif");
+  if (!f.movie.empty()) {
+    if (!f.turntable) throw std::invalid_argument("--movie '" + f.movie + "': give --turntable N, its frames");
+    if (!analysis::movieFormat(f.movie))
+      throw std::invalid_argument("--movie '" + f.movie + "': the extension chooses the format: expected .mp4 or .gif");
+    if (!f.output.empty())
+      throw std::invalid_argument("-o '" + f.output + "': --movie writes the movie alone; give one or the other");
+  } else if (f.output.empty()) {
+    throw std::invalid_argument("give -o sheet.png, or --turntable N --movie out.mp4|out.gif");
+  }
+}
+
+}  // namespace facet::cli

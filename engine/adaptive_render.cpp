@@ -1,0 +1,130 @@
+#include "engine/adaptive_render.h"
+
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace facet {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+void checkSettings(const AdaptiveSettings& s) {
+  if (!validNoiseThreshold(s.noiseThreshold))
+    throw std::invalid_argument("noise threshold " + std::to_string(s.noiseThreshold) + ": " + kNoiseThresholdRule);
+  if (!validMaxSpp(s.maxSpp)) throw std::invalid_argument("max spp " + std::to_string(s.maxSpp) + ": " + kMaxSppRule);
+  if (!validTimeLimit(s.timeLimitSeconds))
+    throw std::invalid_argument("time limit " + std::to_string(s.timeLimitSeconds) + ": " + kTimeLimitRule);
+  if (s.roundSpp < 1 || !scene::isSquare(s.roundSpp) || s.minRounds < 2 || s.tileSize < 1)
+    throw std::invalid_argument("adaptive rounds need a square spp, two rounds or more and a positive tile size");
+}
+
+// The smallest rectangle holding every tile listed.
+PixelRect boundsOf(const TileGrid& grid, const std::vector<int>& tiles) {
+  PixelRect bounds = grid.tile(tiles.front());
+  for (int t : tiles) {
+    const PixelRect r = grid.tile(t);
+    bounds = {std::min(bounds.x0, r.x0), std::min(bounds.y0, r.y0), std::max(bounds.x1, r.x1),
+              std::max(bounds.y1, r.y1)};
+  }
+  return bounds;
+}
+
+}  // namespace
+
+const char* toString(AdaptiveStop stop) {
+  switch (stop) {
+    case AdaptiveStop::Converged:
+      return "converged";
+    case AdaptiveStop::SampleCap:
+      return "sample cap";
+    case AdaptiveStop::TimeCap:
+      return "time limit";
+  }
+  return "?";
+}
+
+RoundFrame roundFrame(const scene::Scene& scene, int round) {
+  RoundFrame frame{scene, round % 64, round / 64};
+  frame.scene.render.width += 2 * frame.dx;
+  frame.scene.render.height += 2 * frame.dy;
+  // tan(fov'/2) / H' = tan(fov/2) / H: rules/camera/camera.h then gives
+  // pixel (x + dx, y + dy) of the larger image the ray of pixel (x, y).
+  const double tanHalf = std::tan(glm::radians(scene.camera.verticalFovDegrees) / 2.0);
+  frame.scene.camera.verticalFovDegrees =
+      glm::degrees(2.0 * std::atan(tanHalf * frame.scene.render.height / scene.render.height));
+  if (double(frame.scene.render.width) * frame.scene.render.height > 4294967295.0)
+    throw std::invalid_argument("adaptive round " + std::to_string(round) + ": the image has too many pixels");
+  return frame;
+}
+
+AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Backend backend,
+                              const AdaptiveSettings& settings, unsigned threads) {
+  checkSettings(settings);
+  const Clock::time_point start = Clock::now();
+  const int width = scene.render.width, height = scene.render.height;
+  scene::Scene round = scene;
+  round.render.samplesPerPixel = settings.roundSpp;
+  SampleRounds rounds(width, height, settings.tileSize);
+  const TileGrid& grid = rounds.grid();
+  AdaptiveReport report;
+  report.tileSpp.assign(std::size_t(grid.count()), 0);
+  report.errors.assign(std::size_t(grid.count()), 0.0);
+  std::vector<int> active(std::size_t(grid.count()));
+  for (int t = 0; t < grid.count(); ++t) active[std::size_t(t)] = t;
+
+  while (!active.empty()) {
+    // Each round is an independent randomization of the same estimator:
+    // its pixels' indices, which key the camera's scrambled nets and the
+    // lighting's random numbers (rules/camera/camera_samples.h,
+    // rules/sampling/random.h), and its seed are its own, so the rounds'
+    // spread is an unbiased estimate of their variance (L'Ecuyer & Lemieux
+    // 2002). The first is the scene itself: its centre samples give the AOVs.
+    RoundFrame frame = roundFrame(round, report.rounds);
+    if (frame.scene.environment) frame.scene.environment->seed = scene.environment->seed + std::uint32_t(report.rounds);
+    const PixelRect window = boundsOf(grid, active);
+    const PixelRect crop{window.x0 + frame.dx, window.y0 + frame.dy, window.x1 + frame.dx, window.y1 + frame.dy};
+    RenderReport rendered = renderer.render(frame.scene, backend, {}, {crop, threads});
+    rounds.add(rendered.image, window, active);
+    report.samples += std::uint64_t(settings.roundSpp) * window.pixelCount();
+    if (report.rounds++ == 0) report.first = std::move(rendered);
+
+    std::vector<int> next;
+    bool capped = false;
+    for (int t : active) {
+      report.tileSpp[std::size_t(t)] += settings.roundSpp;
+      const double error = rounds.error(t);
+      report.errors[std::size_t(t)] = error;
+      if (rounds.rounds(t) >= settings.minRounds && error <= settings.noiseThreshold) continue;
+      if (report.tileSpp[std::size_t(t)] + settings.roundSpp > settings.maxSpp) {
+        capped = true;
+        continue;
+      }
+      next.push_back(t);
+    }
+    if (capped) report.stop = AdaptiveStop::SampleCap;
+    active = std::move(next);
+    if (!active.empty() && secondsSince(start) >= settings.timeLimitSeconds) {
+      report.stop = AdaptiveStop::TimeCap;
+      break;
+    }
+  }
+  report.image = std::move(report.first.image);
+  if (report.image.width != width || report.image.height != height)
+    throw std::logic_error("the first adaptive round must cover the whole image");
+  report.image.beauty = rounds.beauty();
+  report.maxError = *std::max_element(report.errors.begin(), report.errors.end());
+  for (int t = 0; t < grid.count(); ++t)
+    report.sppMean += double(report.tileSpp[std::size_t(t)]) * double(grid.tile(t).pixelCount());
+  report.sppMean /= double(grid.width) * double(grid.height);
+  report.seconds = secondsSince(start);
+  return report;
+}
+
+}  // namespace facet

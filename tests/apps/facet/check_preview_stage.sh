@@ -1,0 +1,129 @@
+#!/bin/bash
+# facet preview end to end, on the CPU backend at 32x32 per cell:
+#   - the contact sheet's size, and each render's reported tile errors below
+#     the threshold unless it says a cap stopped it;
+#   - a noisier lighting method takes more samples than a smoother one;
+#   - one error line for each bad adaptive flag;
+#   - --movie: without ffmpeg on PATH, one error naming it and exit code 2,
+#     nothing written; with a fake ffmpeg that records its arguments, the
+#     frames in order, a quoted name written as given; a failing ffmpeg
+#     leaves no movie.
+#   check_preview_stage.sh FACET REPOSITORY WORK_FOLDER
+set -euo pipefail
+facet=$1 repo=$2 work=$3
+rm -rf "$work" && mkdir -p "$work" && cd "$work"
+fail() { echo "check_preview_stage: FAILED: $*" >&2; exit 1; }
+library=$repo/scenes/examples/materials
+common=(--size 32x32 --backend cpu --time-limit 600)
+
+# The sheet: two cells side by side, labelled; every render's verdict checked.
+"$facet" preview gold "$library/red_plastic.json" "${common[@]}" --noise-threshold 0.03 --json -o sheet.png >sheet.json
+/usr/bin/python3 - sheet.json sheet.png <<'PY' || fail "the sheet's report or size"
+import json, struct, sys
+report = json.load(open(sys.argv[1]))
+png = open(sys.argv[2], "rb").read()
+width, height = struct.unpack(">II", png[16:24])
+assert (width, height) == (report["width"], report["height"]), (width, height)
+assert width > 2 * 32 and height > 32, "two 32x32 cells and their label strips"
+assert [r["material"] for r in report["renders"]] == ["gold", "red_plastic"]
+for r in report["renders"]:
+    assert r["stop"] in ("converged", "sample cap", "time limit"), r["stop"]
+    if r["stop"] == "converged":
+        assert max(r["tile_errors"]) <= r["noise_threshold"], r
+    assert r["spp_max"] <= 256
+PY
+
+# A noisier estimator of the same picture takes more samples.
+samples() { /usr/bin/python3 -c 'import json,sys; print(sum(r["samples"] for r in json.load(open(sys.argv[1]))["renders"]))' "$1"; }
+"$facet" preview gold "${common[@]}" --noise-threshold 0.02 --json -o smooth.png >smooth.json
+"$facet" preview gold "${common[@]}" --noise-threshold 0.02 --ibl sampled --json -o noisy.png >noisy.json
+[ "$(samples noisy.json)" -gt "$(samples smooth.json)" ] ||
+  fail "sampled lighting took $(samples noisy.json) samples, prefiltered $(samples smooth.json)"
+
+# A cap that stops it is said.
+"$facet" preview gold "${common[@]}" --ibl sampled --noise-threshold 0.0001 --max-spp 8 -o capped.png >capped.txt
+grep -q "sample cap" capped.txt || fail "a render stopped by --max-spp does not say so: $(cat capped.txt)"
+
+# Bad values: one line each, exit code 1, no sheet.
+bad() {
+  local expected=$1
+  shift
+  set +e
+  "$facet" preview gold --size 32x32 --backend cpu -o bad.png "$@" >out.txt 2>err.txt
+  local code=$?
+  set -e
+  [ "$code" = 1 ] || fail "$*: exit code $code"
+  [ "$(wc -l <err.txt)" = 1 ] || fail "$*: not one line: $(cat err.txt)"
+  grep -q "^facet: error: $expected" err.txt || fail "$*: $(cat err.txt)"
+  [ ! -e bad.png ] || fail "$*: a sheet was written"
+}
+bad "--noise-threshold '0': expected a number in (0, 1]" --noise-threshold 0
+bad "--noise-threshold '2': expected a number in (0, 1]" --noise-threshold 2
+bad "--max-spp '4': expected a whole number" --max-spp 4
+bad "--time-limit '-1': expected a number of seconds" --time-limit -1
+bad "--time-limit" --time-limit nan
+bad "--movie 'turn.mov': the extension chooses the format" --turntable 2 --movie turn.mov
+bad "material 'nosuch': preset: unknown preset 'nosuch'" nosuch
+
+# No ffmpeg on PATH: one line naming it and how to install it, exit code 2, nothing written.
+set +e
+PATH=/nonexistent "$facet" preview gold "${common[@]:0:4}" --turntable 2 --movie turn.mp4 >out.txt 2>err.txt
+code=$?
+set -e
+[ "$code" = 2 ] || fail "no ffmpeg: exit code $code: $(cat err.txt)"
+[ "$(wc -l <err.txt)" = 1 ] || fail "no ffmpeg: not one line: $(cat err.txt)"
+grep -q "^facet: error: --movie 'turn.mp4': ffmpeg is not on PATH; install it (Debian: apt-get install ffmpeg)$" err.txt ||
+  fail "no ffmpeg: $(cat err.txt)"
+[ ! -e turn.mp4 ] || fail "no ffmpeg: a movie was written"
+
+# A fake ffmpeg: records its arguments, copies the frames in the order its
+# pattern numbers them, writes its output; `fail` as $FAKE_FFMPEG fails.
+mkdir -p bin recorded
+cat >bin/ffmpeg <<'SH'
+#!/bin/bash
+printf '%s\n' "$@" >"$RECORD/args.txt"
+pattern= frames= previous=
+for a in "$@"; do
+  [ "$previous" = -i ] && pattern=$a
+  [ "$previous" = -frames:v ] && frames=$a
+  previous=$a
+done
+for ((i = 0; i < frames; i++)); do cp "$(printf "$pattern" "$i")" "$RECORD/$i.png" || exit 9; done
+echo "movie of $frames frames" >"$a"
+[ "${FAKE_FFMPEG:-}" != fail ] || exit 3
+SH
+chmod +x bin/ffmpeg
+export RECORD=$work/recorded
+movie="it's \"quoted\" \$(touch injected).gif"
+PATH=$work/bin:$PATH "$facet" preview gold "${common[@]}" --turntable 4 --movie "$movie" --quiet
+[ -f "$movie" ] || fail "the fake ffmpeg's movie is not at the name given"
+[ ! -e injected ] || fail "a file name ran a command"
+grep -qx -- "-frames:v" recorded/args.txt || fail "no -frames:v in $(cat recorded/args.txt)"
+[ "$(ls recorded/*.png | wc -l)" = 4 ] || fail "ffmpeg was handed $(ls recorded/*.png | wc -l) frames, not 4"
+# Frame k handed over is frame k: each recorded sheet's cell is nearest to
+# `facet render --turntable 4 --frame k` of the same ball and material.
+for k in 0 1 2 3; do
+  "$facet" render "$repo/scenes/examples/superball.obj" --material gold --size 32x32 --backend cpu --spp 64 \
+    --turntable 4 --frame "$k" -o "turn_$k.png" --quiet
+done
+/usr/bin/python3 - <<'PY' || fail "the frames reached ffmpeg out of order"
+import OpenImageIO as oiio, numpy as np
+def pixels(path):
+    return oiio.ImageInput.open(path).read_image(format="float")[..., :3]
+rendered = [pixels(f"turn_{k}.png") for k in range(4)]
+for i in range(4):
+    cell = pixels(f"recorded/{i}.png")[2:34, 2:34]  # the first cell, inside its gap
+    differences = [float(np.abs(cell - r).mean()) for r in rendered]
+    assert int(np.argmin(differences)) == i, (i, differences)
+PY
+# ffmpeg fails: one error line, exit code 2, no movie and no temporary left.
+set +e
+FAKE_FFMPEG=fail PATH=$work/bin:$PATH "$facet" preview gold "${common[@]}" --turntable 2 --movie failed.mp4 \
+  --quiet >out.txt 2>err.txt
+code=$?
+set -e
+[ "$code" = 2 ] || fail "a failing ffmpeg: exit code $code: $(cat err.txt)"
+grep -q "^facet: error: --movie 'failed.mp4': .*ffmpeg exited with status 3$" err.txt || fail "$(cat err.txt)"
+[ ! -e failed.mp4 ] || fail "a failing ffmpeg left a movie"
+! ls failed.mp4.tmp-* >/dev/null 2>&1 || fail "a failing ffmpeg left a temporary"
+echo "check_preview_stage: ok"
