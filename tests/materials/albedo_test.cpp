@@ -11,7 +11,7 @@ namespace facet::materials {
 namespace {
 
 rules::f64::BrdfParams bare(int d, int g, double alpha) {
-  rules::f64::BrdfParams p;
+  rules::f64::BrdfParams p{};
   p.d_model = d;
   p.g_model = g;
   p.f_model = rules::f64::F_NONE;

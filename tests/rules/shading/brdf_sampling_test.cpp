@@ -20,7 +20,7 @@ const double kAlphas[] = {0.1, 0.5, 1.0};
 const double kIncidenceDegrees[] = {15, 45, 80};
 
 rules::f64::BrdfParams params(int d, double alpha) {
-  rules::f64::BrdfParams p;
+  rules::f64::BrdfParams p{};
   p.d_model = d;
   p.g_model = rules::f64::G_SMITH_GGX;
   p.f_model = rules::f64::F_NONE;
@@ -46,7 +46,8 @@ std::vector<Case> cases() {
     for (double alpha : kAlphas)
       for (double incidence : kIncidenceDegrees) all.push_back({rules::f64::SAMPLE_D, d.id, alpha, incidence});
   for (double alpha : kAlphas)
-    for (double incidence : kIncidenceDegrees) all.push_back({rules::f64::SAMPLE_GGX_VISIBLE, rules::f64::D_GGX, alpha, incidence});
+    for (double incidence : kIncidenceDegrees)
+      all.push_back({rules::f64::SAMPLE_GGX_VISIBLE, rules::f64::D_GGX, alpha, incidence});
   // The cosine sampler depends on neither alpha nor v: one case.
   all.push_back({rules::f64::SAMPLE_COSINE, rules::f64::D_GGX, 1.0, 45});
   return all;
@@ -187,7 +188,9 @@ TEST(Sampling, PdfIsTheJacobianOfTheSamplingMap) {
     for (double u1 : {0.1, 0.3, 0.5, 0.7, 0.9}) {
       for (double u2 : {0.05, 0.35, 0.6, 0.85}) {
         const double h = 1e-6;
-        auto at = [&](double a, double b) { return rules::f64::sample_direction(c.technique, p, n, v, glm::dvec2(a, b)); };
+        auto at = [&](double a, double b) {
+          return rules::f64::sample_direction(c.technique, p, n, v, glm::dvec2(a, b));
+        };
         if (glm::length(at(u1, u2) + v) < 0.1) continue;
         glm::dvec3 d1 = (at(u1 + h, u2) - at(u1 - h, u2)) / (2 * h);
         glm::dvec3 d2 = (at(u1, u2 + h) - at(u1, u2 - h)) / (2 * h);
