@@ -308,12 +308,13 @@ class ReferenceScene final : public PathScene {
     const ibl::PrefilteredEnvironment& prefiltered = environment_->prefiltered;
     const double nv = glm::dot(n, v);
     if (nv <= m::COS_EPSILON) return glm::dvec3(0.0);  // nothing to look up (the lobe may not even exist)
-    const glm::dvec3 lobe = m::split_sum_direction(m::anisotropic_bent_normal(params, n, v), v, params.alpha);
+    const double alpha = m::isotropic_equivalent_alpha(params);
+    const glm::dvec3 lobe = m::split_sum_direction(m::anisotropic_bent_normal(params, n, v), v, alpha);
     return environment_->environment->intensity *
-           m::split_sum(params, nv, ibl::prefilteredRadiance(prefiltered, toMap(lobe), params.alpha),
-                        ibl::dfgLookup(prefiltered.dfg[std::size_t(environment_->dfgTable[std::size_t(material)])], nv,
-                                       params.alpha),
-                        ibl::irradianceOverPi(prefiltered, toMap(n)), specularScale);
+           m::split_sum(
+               params, nv, ibl::prefilteredRadiance(prefiltered, toMap(lobe), alpha),
+               ibl::dfgLookup(prefiltered.dfg[std::size_t(environment_->dfgTable[std::size_t(material)])], nv, alpha),
+               ibl::irradianceOverPi(prefiltered, toMap(n)), specularScale);
   }
 
   const scene::Scene& scene_;

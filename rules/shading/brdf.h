@@ -21,6 +21,17 @@ struct BrdfParams {
   vec3 tangent;
 };
 
+// The isotropic alpha that stands for p's lobe where a table is indexed by
+// one roughness (the split sum's levels and DFG, energy compensation): alpha
+// itself, or for an anisotropic lobe the mean of alpha_t and alpha_b, whose
+// isotropic albedo is the closest simple match (docs/shading.md,
+// "Anisotropy").
+FACET_FN real isotropic_equivalent_alpha(BrdfParams p) {
+  if (p.anisotropy == real(0)) return p.alpha;
+  vec2 a = anisotropic_alpha(effective_alpha(p.alpha), p.anisotropy);
+  return real(0.5) * (a.x + a.y);
+}
+
 // Every factor of one evaluation; all zero under the horizon policy.
 struct BrdfTerms {
   vec3 value;  // specular + diffuse

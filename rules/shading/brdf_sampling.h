@@ -136,16 +136,15 @@ FACET_FN real direction_pdf(int technique, BrdfParams p, vec3 n, vec3 l, vec3 v)
 }
 
 // The normal the split sum reads an anisotropic lobe about (docs/shading.md,
-// "Anisotropy"): n bent towards v's component across the tangent, the
-// rougher direction, by glTF-Sample-Viewer's factor for
-// KHR_materials_anisotropy (after McAuley & Sloan 2015, Filament):
-// mix(bent, n, (1 - strength (1 - sqrt(alpha)))^4). n where isotropic.
+// "Anisotropy"): n bent towards v's component across b, the smoother
+// direction, by strength x clamp(5 sqrt(alpha)) (Filament's bent reflection
+// vector, after McAuley & Sloan 2015). n where isotropic.
 FACET_FN vec3 anisotropic_bent_normal(BrdfParams p, vec3 n, vec3 v) {
   if (p.anisotropy == real(0)) return n;
   Frame f = tangent_frame(n, p.tangent);
-  vec3 across = cross(cross(f.t, v), f.t);
-  real bend = sqr(sqr(real(1) - p.anisotropy * (real(1) - sqrt(effective_alpha(p.alpha)))));
-  vec3 bent = across * (real(1) - bend) + n * bend;
+  vec3 across = cross(cross(f.b, v), f.b);
+  real bend = p.anisotropy * clamp(real(5) * sqrt(effective_alpha(p.alpha)), real(0), real(1));
+  vec3 bent = n * (real(1) - bend) + across * bend;
   real length2 = dot(bent, bent);
   return length2 > real(0) ? bent * inversesqrt(length2) : n;
 }

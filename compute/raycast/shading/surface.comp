@@ -187,9 +187,10 @@ void shade_environment(uint first, uint pixel, uint sample_index, uint material,
       write_unshadowed(first, vec3(0.0));
       return;
     }
-    vec3 lobe = split_sum_direction(anisotropic_bent_normal(params, n, v), v, params.alpha);
-    vec3 radiance = split_sum(params, nv, prefiltered_radiance(to_map(lobe), params.alpha),
-                              dfg_lookup(materials[material].dfgTable, nv, params.alpha),
+    float alpha = isotropic_equivalent_alpha(params);
+    vec3 lobe = split_sum_direction(anisotropic_bent_normal(params, n, v), v, alpha);
+    vec3 radiance = split_sum(params, nv, prefiltered_radiance(to_map(lobe), alpha),
+                              dfg_lookup(materials[material].dfgTable, nv, alpha),
                               irradiance_over_pi(to_map(n)), specular_scale);
     write_unshadowed(first, occlusion * frame.environmentIntensity * radiance);
     return;
