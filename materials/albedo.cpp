@@ -53,6 +53,40 @@ double azimuthCosineBound(double cos_v, double sin_v, glm::dvec3 m) {
   return numerator / denominator;
 }
 
+// Diffuse: the cosine map, under which the Lambert integrand is constant.
+glm::dvec3 diffuseIntegral(const rules::f64::BrdfParams& params, const glm::dvec3& v, const QuadratureRule& rule) {
+  const glm::dvec3 n(0, 0, 1);
+  glm::dvec3 sum(0.0);
+  for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
+    for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
+      glm::dvec2 u(rule.nodes[i], rule.nodes[j]);
+      glm::dvec3 l = rules::f64::sample_direction(rules::f64::SAMPLE_COSINE, params, n, v, u);
+      double pdf = rules::f64::direction_pdf(rules::f64::SAMPLE_COSINE, params, n, l, v);
+      if (pdf > 0)
+        sum += rule.weights[i] * rule.weights[j] * rules::f64::brdf_terms(params, n, l, v).diffuse * (l.z / pdf);
+    }
+  }
+  return sum;
+}
+
+// The anisotropic lobe has no symmetry about v's plane: f (n.l) / pdf over
+// the whole unit square of its own sampler (for GGX's visible normals G2 /
+// G1(v) times F, smooth but for the horizon's kink).
+glm::dvec3 anisotropicSpecular(const rules::f64::BrdfParams& specular, const glm::dvec3& v,
+                               const QuadratureRule& rule) {
+  const glm::dvec3 n(0, 0, 1);
+  const int technique = rules::f64::specular_technique(specular);
+  glm::dvec3 sum(0.0);
+  for (std::size_t i = 0; i < rule.nodes.size(); ++i)
+    for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
+      glm::dvec3 l = rules::f64::sample_direction(technique, specular, n, v, {rule.nodes[i], rule.nodes[j]});
+      double pdf = rules::f64::direction_pdf(technique, specular, n, l, v);
+      if (pdf > 0)
+        sum += rule.weights[i] * rule.weights[j] * rules::f64::brdf_evaluate(specular, n, l, v) * (l.z / pdf);
+    }
+  return sum;
+}
+
 Integrals integrate(const rules::f64::BrdfParams& params, double mu, int nodes) {
   const glm::dvec3 n(0, 0, 1);
   const double sin_v = std::sqrt(std::max(0.0, 1 - mu * mu));
@@ -63,6 +97,7 @@ Integrals integrate(const rules::f64::BrdfParams& params, double mu, int nodes) 
   const QuadratureRule rule = gaussLegendre01(nodes);
   Integrals sum;
   if (mu <= rules::f64::COS_EPSILON) return sum;
+  if (params.anisotropy != 0.0) return {anisotropicSpecular(specular, v, rule), diffuseIntegral(params, v, rule)};
 
   // Each integrand is f (n.l) / pdf at l(u): the same functions the renderer
   // uses, so the quadrature checks them and copies nothing. Specular: u1 ->
@@ -105,16 +140,7 @@ Integrals integrate(const rules::f64::BrdfParams& params, double mu, int nodes) 
     }
   }
 
-  // Diffuse: the cosine map, under which the Lambert integrand is constant.
-  for (int i = 0; i < nodes; ++i) {
-    for (int j = 0; j < nodes; ++j) {
-      glm::dvec2 u(rule.nodes[i], rule.nodes[j]);
-      glm::dvec3 l = rules::f64::sample_direction(rules::f64::SAMPLE_COSINE, params, n, v, u);
-      double pdf = rules::f64::direction_pdf(rules::f64::SAMPLE_COSINE, params, n, l, v);
-      if (pdf > 0)
-        sum.diffuse += rule.weights[i] * rule.weights[j] * rules::f64::brdf_terms(params, n, l, v).diffuse * (l.z / pdf);
-    }
-  }
+  sum.diffuse = diffuseIntegral(params, v, rule);
   return sum;
 }
 

@@ -26,6 +26,11 @@ Params toParams(const Material& m) {
   p.eta = Vec3(m.eta);
   p.k = Vec3(m.k);
   p.diffuse = Vec3(m.diffuse);
+  // The tangent in the frame n = z (what facet brdf evaluates in); the
+  // renderers replace it by the surface's tangent field, rotated alike.
+  using Real = decltype(p.alpha);
+  p.anisotropy = static_cast<Real>(m.anisotropy);
+  p.tangent = Vec3(std::cos(m.anisotropyRotation), std::sin(m.anisotropyRotation), 0.0);
   return p;
 }
 
@@ -90,6 +95,27 @@ void checkTransmission(const MaterialSpec& spec, const Preset* preset, Material&
       fail("thickness", "must be finite and >= 0, got " + formatNumber(*spec.thickness));
     m.thickness = *spec.thickness;
   }
+}
+
+// The anisotropy fields of `spec` into `m`, whose models and transmission are
+// already resolved.
+template <class Fail>
+void checkAnisotropy(const MaterialSpec& spec, Material& m, const Fail& fail) {
+  if (spec.anisotropy) {
+    if (!(*spec.anisotropy >= 0.0 && *spec.anisotropy <= 1.0))  // also rejects NaN
+      fail("anisotropy", "must be in [0, 1], got " + formatNumber(*spec.anisotropy));
+    m.anisotropy = *spec.anisotropy;
+  }
+  if (spec.anisotropyRotation) {
+    if (!std::isfinite(*spec.anisotropyRotation))
+      fail("anisotropy_rotation", "must be a finite angle in radians, got " + formatNumber(*spec.anisotropyRotation));
+    if (!spec.anisotropy) fail("anisotropy_rotation", "is only used with anisotropy (give anisotropy too)");
+    m.anisotropyRotation = *spec.anisotropyRotation;
+  }
+  if (m.anisotropy == 0.0) return;
+  if (m.distribution == rules::f64::D_BLINN_PHONG)
+    fail("anisotropy", "needs distribution 'ggx' or 'beckmann' (Blinn-Phong has no anisotropic form here)");
+  if (isTransmissive(m)) fail("anisotropy", "is not defined for a transmissive material (transmission > 0)");
 }
 
 }  // namespace
@@ -224,6 +250,7 @@ Material buildMaterial(const MaterialSpec& spec,
   }
   m.energyCompensation = spec.energyCompensation.value_or(false);
   checkTransmission(spec, preset, m, fail);
+  checkAnisotropy(spec, m, fail);
   return m;
 }
 
@@ -269,7 +296,9 @@ MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view s
                                       "thin_walled",
                                       "attenuation_color",
                                       "attenuation_distance",
-                                      "thickness"};
+                                      "thickness",
+                                      "anisotropy",
+                                      "anisotropy_rotation"};
   if (const std::optional<std::string> key = findUnknownKey(json, kKeys)) fail(*key, unknownFieldRule(kKeys));
 
   MaterialSpec spec;
@@ -297,6 +326,8 @@ MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view s
   spec.attenuationColor = color("attenuation_color");
   spec.attenuationDistance = number("attenuation_distance");
   spec.thickness = number("thickness");
+  spec.anisotropy = number("anisotropy");
+  spec.anisotropyRotation = number("anisotropy_rotation");
   return spec;
 }
 
@@ -325,6 +356,7 @@ nlohmann::json toJson(const Material& m) {
   };
   if (!m.name.empty()) json["name"] = m.name;
   if (m.energyCompensation) json["energy_compensation"] = true;
+  if (m.anisotropy > 0.0) json["anisotropy"] = m.anisotropy, json["anisotropy_rotation"] = m.anisotropyRotation;
   if (isTransmissive(m)) {
     json["transmission"] = m.transmission;
     if (m.thinWalled) json["thin_walled"] = true, json["thickness"] = m.thickness;

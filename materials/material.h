@@ -66,6 +66,11 @@ struct Material {
   glm::dvec3 attenuationColor{1.0};
   double attenuationDistance = std::numeric_limits<double>::infinity();
   double thickness = 0.0;
+  // Anisotropy (docs/shading.md, "Anisotropy"): KHR_materials_anisotropy's
+  // strength in [0, 1] (alpha along the tangent = mix(alpha, 1, strength^2))
+  // and the tangent's rotation about the normal, radians.
+  double anisotropy = 0.0;
+  double anisotropyRotation = 0.0;
 };
 
 // Whether a material transmits any light.
@@ -98,6 +103,8 @@ struct MaterialSpec {
   std::optional<glm::dvec3> attenuationColor;
   std::optional<double> attenuationDistance;
   std::optional<double> thickness;
+  std::optional<double> anisotropy;
+  std::optional<double> anisotropyRotation;
 };
 
 // Validates and resolves a spec. Throws std::invalid_argument whose message

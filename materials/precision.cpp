@@ -95,7 +95,7 @@ PrecisionReport precisionSweep() {
   const glm::dmat3 frame(glm::rotate(glm::dmat4(1.0), 0.7, glm::normalize(glm::dvec3(1, 2, 3))));
   const std::vector<double> cos_grid = cosines();
 
-  rules::f64::BrdfParams p64;
+  rules::f64::BrdfParams p64{};
   p64.f0 = glm::dvec3(1.00, 0.71, 0.29);   // gold, as printed in the course
   p64.eta = glm::dvec3(0.18, 0.42, 1.37);  // gold-like complex index: eta
   p64.k = glm::dvec3(3.42, 2.35, 1.77);    // and extinction k
@@ -111,7 +111,7 @@ PrecisionReport precisionSweep() {
         p64.eta = f.id == rules::f64::F_DIELECTRIC ? glm::dvec3(1.5) : glm::dvec3(0.18, 0.42, 1.37);
         for (double alpha : kAlphas) {
           p64.alpha = alpha;
-          rules::f32::BrdfParams p32;
+          rules::f32::BrdfParams p32{};
           p32.d_model = p64.d_model;
           p32.g_model = p64.g_model;
           p32.f_model = p64.f_model;
@@ -133,7 +133,8 @@ PrecisionReport precisionSweep() {
                 glm::vec3 f32v = rules::f32::brdf_evaluate(p32, n32, l32, v32);
                 glm::dvec3 f64v = rules::f64::brdf_evaluate(p64, n64, l64, v64);
                 bool ok32 = finite(f32v), ok64 = finite(f64v);
-                for (int technique : {rules::f64::SAMPLE_COSINE, rules::f64::SAMPLE_D, rules::f64::SAMPLE_GGX_VISIBLE}) {
+                for (int technique :
+                     {rules::f64::SAMPLE_COSINE, rules::f64::SAMPLE_D, rules::f64::SAMPLE_GGX_VISIBLE}) {
                   ok32 = ok32 && std::isfinite(rules::f32::direction_pdf(technique, p32, n32, l32, v32));
                   ok64 = ok64 && std::isfinite(rules::f64::direction_pdf(technique, p64, n64, l64, v64));
                 }

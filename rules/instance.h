@@ -35,6 +35,7 @@
 #include "rules/camera/camera_samples.h"
 #include "rules/surface/authored_normal.h"
 #include "rules/surface/limit_normal.h"
+#include "rules/surface/tangent.h"
 #include "rules/grid/config.h"
 #include "rules/grid/workgroup_grid.h"
 #undef FACET_REAL

@@ -34,6 +34,7 @@ std::string flagFor(std::string_view field) {
   if (field == "distribution") return "--d";
   if (field == "geometry") return "--g";
   if (field == "fresnel") return "--f";
+  if (field == "anisotropy_rotation") return "--anisotropy-rotation";
   return "--" + std::string(field);
 }
 
@@ -69,6 +70,10 @@ void addMaterialOptions(CLI::App& command, MaterialOptions& o) {
   command.add_option("--alpha", o.alpha, "microfacet alpha in [0, 1] (alpha = roughness^2)");
   command.add_option("--roughness", o.roughness, "perceptual roughness in [0, 1], instead of --alpha");
   command.add_option("--diffuse", o.diffuse, "Lambert c_diff: x or r,g,b (default 0)");
+  command.add_option("--anisotropy", o.anisotropy,
+                     "anisotropy strength in [0, 1]: alpha along the tangent (the x axis) = mix(alpha, 1, s^2)");
+  command.add_option("--anisotropy-rotation", o.anisotropyRotation,
+                     "the tangent's rotation about the normal from the x axis, radians");
   command.add_option("--preset", o.preset, "F(0) from a preset (see `facet presets`)");
   command.add_option("--material", o.material_file, "JSON material file instead of the flags above");
 }
@@ -84,7 +89,8 @@ CLI::App* addMaterialCommand(CLI::App& parent, const std::string& name, const st
 
 materials::Material resolveMaterial(const MaterialOptions& o) {
   if (o.material_file) {
-    if (o.d || o.g || o.f || o.f0 || o.ior || o.eta || o.k || o.alpha || o.roughness || o.diffuse || o.preset)
+    if (o.d || o.g || o.f || o.f0 || o.ior || o.eta || o.k || o.alpha || o.roughness || o.diffuse || o.preset ||
+        o.anisotropy || o.anisotropyRotation)
       throw std::invalid_argument("--material: cannot be combined with material flags");
     return materials::loadMaterial(*o.material_file);
   }
@@ -103,6 +109,8 @@ materials::Material resolveMaterial(const MaterialOptions& o) {
   if (o.eta) spec.eta = parseColor("--eta", *o.eta);
   if (o.k) spec.k = parseColor("--k", *o.k);
   if (o.diffuse) spec.diffuse = parseColor("--diffuse", *o.diffuse);
+  if (o.anisotropy) spec.anisotropy = parseNumber("--anisotropy", *o.anisotropy);
+  if (o.anisotropyRotation) spec.anisotropyRotation = parseNumber("--anisotropy-rotation", *o.anisotropyRotation);
   return materials::buildMaterial(spec, flagFor);
 }
 

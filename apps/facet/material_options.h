@@ -1,6 +1,6 @@
 // Command-line flags that describe a material (shared by brdf, albedo and
 // plot): --d --g --f --f0 --ior --eta --k --alpha --roughness --diffuse
-// --preset, or --material FILE.json; and render's flags that change a
+// --anisotropy --anisotropy-rotation --preset, or --material FILE.json; and render's flags that change a
 // model's materials and fields: --material [OBJECT=]FILE|PRESET, --set.
 #pragma once
 
@@ -17,6 +17,7 @@ namespace facet::cli {
 
 struct MaterialOptions {
   std::optional<std::string> d, g, f, f0, ior, eta, k, alpha, roughness, diffuse, preset;
+  std::optional<std::string> anisotropy, anisotropyRotation;
   std::optional<std::string> material_file;
 };
 

@@ -133,6 +133,12 @@ struct PathState {
   uint diffuseTaken;
   uint glossyTaken;
   uint transmissionTaken;
+  // Anisotropy (docs/shading.md, "Anisotropy"): BrdfParams' strength and
+  // tangent at the vertex.
+  float anisotropy;
+  float tangentX;
+  float tangentY;
+  float tangentZ;
 };
 
 // PathState.flags: the vertex continues by continue_path_transmissive; v lies
@@ -256,6 +262,11 @@ struct MaterialRecord {
   float sigmaG;
   float sigmaB;
   float thickness;
+  // Anisotropy (docs/shading.md, "Anisotropy"): the strength, and the
+  // tangent's rotation about the normal as cos and sin.
+  float anisotropy;
+  float anisotropyCos;
+  float anisotropySin;
 };
 
 // What the camera-side kernels need, one uniform block (std140 agrees: all
@@ -282,15 +293,15 @@ struct FrameParams {
   uint strata;        // samples per pixel = strata^2
   uint raysPerPixel;  // 1 when strata == 1, else the centre ray plus strata^2
   uint objectCount;
-  uint rootNode;            // of the scene's BVH
-  uint cellBlockCount;      // dicing: 2 x 2 blocks of cells in all
-  uint gridVertexCount;     // tessellated dicing: grid vertices, then edge midpoints
+  uint rootNode;         // of the scene's BVH
+  uint cellBlockCount;   // dicing: 2 x 2 blocks of cells in all
+  uint gridVertexCount;  // tessellated dicing: grid vertices, then edge midpoints
   uint edgeMidpointCount;
   uint patchCount;
-  float tolerance;     // exact method: largest ray-to-surface distance of a root
-  float minimumPiece;  // exact method: pieces are not split below this size
-  float shadowOffset;  // shadow_ray_offset (rules/shading/lights.h)
-  uint slotsPerRay;    // shadow-ray slots per camera ray: one per light, then the environment's
+  float tolerance;        // exact method: largest ray-to-surface distance of a root
+  float minimumPiece;     // exact method: pieces are not split below this size
+  float shadowOffset;     // shadow_ray_offset (rules/shading/lights.h)
+  uint slotsPerRay;       // shadow-ray slots per camera ray: one per light, then the environment's
   uint fallbackCapacity;  // records in each fallback list
   // The environment (compute/raycast/shading/environment.glsl); offsets count
   // texels of the environment tables (the map's texels have their own).

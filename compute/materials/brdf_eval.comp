@@ -48,6 +48,7 @@ layout(set = 0, binding = 2, std140) uniform Parameters {
   vec4 eta;
   vec4 k;
   vec4 diffuse;
+  vec4 tangent_anisotropy;  // xyz the tangent, w the anisotropy
   uint count;
 } parameters;
 
@@ -63,6 +64,8 @@ void main() {
   p.eta = parameters.eta.xyz;
   p.k = parameters.k.xyz;
   p.diffuse = parameters.diffuse.xyz;
+  p.anisotropy = parameters.tangent_anisotropy.w;
+  p.tangent = parameters.tangent_anisotropy.xyz;
   vec3 n = cases[i].n.xyz;
   vec3 l = cases[i].l.xyz;
   vec3 v = cases[i].v.xyz;

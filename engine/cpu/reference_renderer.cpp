@@ -105,6 +105,7 @@ class ReferenceScene final : public PathScene {
     }
     const std::optional<m::TransmissionParams>& transmission = transmission_[std::size_t(hit.object)];
     if (transmission) params = m::transmissive_brdf_params(params, *transmission, outside);
+    if (params.anisotropy != 0.0) params.tangent = tangent(hit, material, n);
     const glm::dvec3 specularScale = ibl::specularScale(compensation_, material, params, glm::dot(n, v));
     if (environment_) {
       glm::dvec3 environment(0.0);
@@ -173,6 +174,15 @@ class ReferenceScene final : public PathScene {
   }
 
  private:
+  // The anisotropic lobe's tangent at `hit` about the shading normal n
+  // (rules/surface/tangent.h): the patch's dP/du, as the GPU's dP/ds.
+  glm::dvec3 tangent(const SceneHit& hit, int material, const glm::dvec3& n) const {
+    const scene::LimitPoint p = geometry_.objects[std::size_t(hit.object)].surface.evaluatePatch(
+        hit.surface.patch, hit.surface.u, hit.surface.v);
+    const double rotation = scene_.materials[std::size_t(material)].anisotropyRotation;
+    return m::surface_tangent(n, p.du, p.dv, std::cos(rotation), std::sin(rotation));
+  }
+
   // A textured material at `hit`, seen along `direction`, with the normals
   // n and ng facing the eye and emission factor `emission`
   // (rules/shading/textured_material.h).
@@ -298,12 +308,13 @@ class ReferenceScene final : public PathScene {
     const ibl::PrefilteredEnvironment& prefiltered = environment_->prefiltered;
     const double nv = glm::dot(n, v);
     if (nv <= m::COS_EPSILON) return glm::dvec3(0.0);  // nothing to look up (the lobe may not even exist)
-    const glm::dvec3 lobe = m::split_sum_direction(n, v, params.alpha);
+    const double alpha = m::isotropic_equivalent_alpha(params);
+    const glm::dvec3 lobe = m::split_sum_direction(m::anisotropic_bent_normal(params, n, v), v, alpha);
     return environment_->environment->intensity *
-           m::split_sum(params, nv, ibl::prefilteredRadiance(prefiltered, toMap(lobe), params.alpha),
-                        ibl::dfgLookup(prefiltered.dfg[std::size_t(environment_->dfgTable[std::size_t(material)])], nv,
-                                       params.alpha),
-                        ibl::irradianceOverPi(prefiltered, toMap(n)), specularScale);
+           m::split_sum(
+               params, nv, ibl::prefilteredRadiance(prefiltered, toMap(lobe), alpha),
+               ibl::dfgLookup(prefiltered.dfg[std::size_t(environment_->dfgTable[std::size_t(material)])], nv, alpha),
+               ibl::irradianceOverPi(prefiltered, toMap(n)), specularScale);
   }
 
   const scene::Scene& scene_;

@@ -79,6 +79,9 @@ Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::
                                           {"COMPENSATION", compensation.tables.empty() ? 0.0 : 1.0}};
   const bool transmission = transmits(scene);
   if (transmission) surface.push_back({"TRANSMISSION", 1});
+  if (std::any_of(scene.materials.begin(), scene.materials.end(),
+                  [](const materials::Material& m) { return m.anisotropy > 0.0; }))
+    surface.push_back({"ANISOTROPY", 1});
   Kernels k{&pipelines.get("intersect", method), &pipelines.get("surface", surface),
             &pipelines.get("dispatch_args", {}), &pipelines.get("shadow", method),
             &pipelines.get("gather", {}),        &pipelines.get("resolve", {})};

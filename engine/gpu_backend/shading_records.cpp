@@ -81,6 +81,9 @@ std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
       r.sigmaB = float(transmission.sigma.z);
       r.thickness = float(transmission.thickness);
     }
+    r.anisotropy = p.anisotropy;
+    r.anisotropyCos = float(std::cos(scene.materials[i].anisotropyRotation));
+    r.anisotropySin = float(std::sin(scene.materials[i].anisotropyRotation));
     records.push_back(r);
   }
   return records;

@@ -29,7 +29,8 @@ glm::dvec3 specularScale(const CompensationTables& tables, int material, const r
                          double nv) {
   const int table = tables.tableOfMaterial[std::size_t(material)];
   if (table == CompensationTables::kNone) return glm::dvec3(1.0);
-  return rules::f64::specular_compensation(params, dfgLookup(tables.tables[std::size_t(table)], nv, params.alpha));
+  return rules::f64::specular_compensation(
+      params, dfgLookup(tables.tables[std::size_t(table)], nv, rules::f64::isotropic_equivalent_alpha(params)));
 }
 
 }  // namespace facet::ibl

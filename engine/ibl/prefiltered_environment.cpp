@@ -258,8 +258,8 @@ glm::dvec2 dfgLookupOnDemand(int distribution, int geometry, double nv, double a
 }
 
 glm::dvec3 energyCompensationOnDemand(const m::BrdfParams& params, double nv, const PrefilterSettings& settings) {
-  return m::specular_compensation(params,
-                                  dfgLookupOnDemand(params.d_model, params.g_model, nv, params.alpha, settings));
+  return m::specular_compensation(
+      params, dfgLookupOnDemand(params.d_model, params.g_model, nv, m::isotropic_equivalent_alpha(params), settings));
 }
 
 namespace {

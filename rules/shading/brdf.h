@@ -5,6 +5,9 @@
 // Which fields are read depends on the models: f0 for F_SCHLICK, eta for
 // F_DIELECTRIC (per channel, so dispersion is possible), eta and k for
 // F_CONDUCTOR. alpha is the microfacet alpha, not perceptual roughness.
+// anisotropy in [0, 1] is KHR_materials_anisotropy's strength: 0 is the
+// isotropic lobe (and its code path, bit for bit); above, alpha_t along
+// `tangent` (made orthogonal to n where used) is mix(alpha, 1, strength^2).
 struct BrdfParams {
   int d_model;
   int g_model;
@@ -14,7 +17,20 @@ struct BrdfParams {
   vec3 eta;
   vec3 k;
   vec3 diffuse;
+  real anisotropy;
+  vec3 tangent;
 };
+
+// The isotropic alpha that stands for p's lobe where a table is indexed by
+// one roughness (the split sum's levels and DFG, energy compensation): alpha
+// itself, or for an anisotropic lobe the mean of alpha_t and alpha_b, whose
+// isotropic albedo is the closest simple match (docs/shading.md,
+// "Anisotropy").
+FACET_FN real isotropic_equivalent_alpha(BrdfParams p) {
+  if (p.anisotropy == real(0)) return p.alpha;
+  vec2 a = anisotropic_alpha(effective_alpha(p.alpha), p.anisotropy);
+  return real(0.5) * (a.x + a.y);
+}
 
 // Every factor of one evaluation; all zero under the horizon policy.
 struct BrdfTerms {
@@ -62,8 +78,15 @@ FACET_FN BrdfTerms brdf_terms(BrdfParams p, vec3 n, vec3 l, vec3 v) {
   real vh = real(0.5) * len;
   real nh = dot(n, h);
   real alpha = effective_alpha(p.alpha);
-  t.D = microfacet_D(p.d_model, alpha, nh, sin2_between(n, h));
-  t.G = microfacet_G(p.g_model, alpha, nl, nv, nh, vh);
+  if (p.anisotropy == real(0)) {
+    t.D = microfacet_D(p.d_model, alpha, nh, sin2_between(n, h));
+    t.G = microfacet_G(p.g_model, alpha, nl, nv, nh, vh);
+  } else {
+    Frame f = tangent_frame(n, p.tangent);
+    vec2 a = anisotropic_alpha(alpha, p.anisotropy);
+    t.D = microfacet_D_anisotropic(p.d_model, a, to_local(f, h));
+    t.G = microfacet_G_anisotropic(p.g_model, a, to_local(f, l), to_local(f, v), nh, vh);
+  }
   t.F = fresnel_F(p, vh);
   t.specular = t.F * (t.D * t.G / (real(4) * nl * nv));
   t.diffuse = p.diffuse * INV_PI;

@@ -40,6 +40,8 @@ FACET_FN vec2 dfg_integrals(int d_model, int g_model, real nv, real alpha, int s
   p.eta = vec3(real(1));
   p.k = vec3(real(0));
   p.diffuse = vec3(real(0));
+  p.anisotropy = real(0);
+  p.tangent = vec3(real(1), real(0), real(0));
   vec3 n = vec3(real(0), real(0), real(1));
   vec3 v = vec3(sqrt(max(real(1) - nv * nv, real(0))), real(0), nv);
   int technique = specular_technique(p);

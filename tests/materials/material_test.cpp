@@ -192,5 +192,45 @@ TEST(MaterialTransmission, BadInputsNameTheField) {
   }
 }
 
+TEST(MaterialAnisotropy, IsotropicByDefaultReadAndRoundTrips) {
+  EXPECT_EQ(build(R"({"alpha": 0.1})").anisotropy, 0.0);
+  const Material m =
+      build(R"({"preset": "aluminum", "roughness": 0.3, "anisotropy": 0.6, "anisotropy_rotation": 0.5})");
+  EXPECT_EQ(m.anisotropy, 0.6);
+  EXPECT_EQ(m.anisotropyRotation, 0.5);
+  const Material again = build(toJson(m).dump());
+  EXPECT_EQ(again.anisotropy, 0.6);
+  EXPECT_EQ(again.anisotropyRotation, 0.5);
+  const rules::f64::BrdfParams p = toParams64(m);
+  EXPECT_EQ(p.anisotropy, 0.6);
+  EXPECT_NEAR(p.tangent.x, std::cos(0.5), 1e-15);
+  EXPECT_NEAR(p.tangent.y, std::sin(0.5), 1e-15);
+}
+
+TEST(MaterialAnisotropy, BadInputsNameTheField) {
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "anisotropy": 1.5})"),
+            "test.json: field 'anisotropy': must be in [0, 1], got 1.5");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "anisotropy": -0.2})"),
+            "test.json: field 'anisotropy': must be in [0, 1], got -0.2");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "anisotropy": "strong"})"), "test.json: field 'anisotropy': expected a number");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "anisotropy_rotation": 1})"),
+            "test.json: field 'anisotropy_rotation': is only used with anisotropy (give anisotropy too)");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "distribution": "blinn-phong", "anisotropy": 0.5})"),
+            "test.json: field 'anisotropy': needs distribution 'ggx' or 'beckmann' (Blinn-Phong has no anisotropic "
+            "form here)");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "ior": 1.5, "transmission": 1, "anisotropy": 0.5})"),
+            "test.json: field 'anisotropy': is not defined for a transmissive material (transmission > 0)");
+  MaterialSpec spec;
+  spec.alpha = 0.1;
+  for (double bad : {std::nan(""), HUGE_VAL}) {
+    spec.anisotropy = 0.5;
+    spec.anisotropyRotation = bad;
+    EXPECT_THROW(buildMaterial(spec, [](std::string_view field) { return std::string(field); }), std::invalid_argument);
+    spec.anisotropy = bad;
+    spec.anisotropyRotation.reset();
+    EXPECT_THROW(buildMaterial(spec, [](std::string_view field) { return std::string(field); }), std::invalid_argument);
+  }
+}
+
 }  // namespace
 }  // namespace facet::materials

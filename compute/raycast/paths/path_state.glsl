@@ -31,7 +31,8 @@ PathState pack_path_state(vec3 throughput, bool alive, PathVertex x, PathMedium 
                    p.g_model, p.f_model, p.alpha, p.f0.x, p.f0.y, p.f0.z, p.eta.x, p.eta.y, p.eta.z, p.k.x, p.k.y,
                    p.k.z, p.diffuse.x, p.diffuse.y, p.diffuse.z, x.specular_scale.x, x.specular_scale.y,
                    x.specular_scale.z, medium.material, medium.flags, medium.sigma.x, medium.sigma.y,
-                   medium.sigma.z, taken.x, taken.y, taken.z);
+                   medium.sigma.z, taken.x, taken.y, taken.z, p.anisotropy, p.tangent.x, p.tangent.y,
+                   p.tangent.z);
 }
 
 vec3 path_throughput(PathState s) { return vec3(s.throughputR, s.throughputG, s.throughputB); }
@@ -59,6 +60,8 @@ PathVertex path_vertex(PathState s) {
   p.eta = vec3(s.etaR, s.etaG, s.etaB);
   p.k = vec3(s.kR, s.kG, s.kB);
   p.diffuse = vec3(s.diffuseR, s.diffuseG, s.diffuseB);
+  p.anisotropy = s.anisotropy;
+  p.tangent = vec3(s.tangentX, s.tangentY, s.tangentZ);
   return PathVertex(vec3(s.positionX, s.positionY, s.positionZ), vec3(s.nX, s.nY, s.nZ), vec3(s.ngX, s.ngY, s.ngZ),
                     vec3(s.vX, s.vY, s.vZ), p, vec3(s.specularR, s.specularG, s.specularB));
 }

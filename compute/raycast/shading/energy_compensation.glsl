@@ -15,7 +15,8 @@ layout(set = 0, binding = 17) uniform samplerBuffer compensationTables;
 vec3 material_specular_scale(uint table, BrdfParams p, float nv) {
   if (COMPENSATION == 0 || table == FACET_NO_COMPENSATION) return vec3(1.0);
   int size = int(frame.compensationSize);
-  return specular_compensation(p, dfg_table_lookup(compensationTables, table * uint(size * size), size, nv, p.alpha));
+  return specular_compensation(p, dfg_table_lookup(compensationTables, table * uint(size * size), size, nv,
+                                                         isotropic_equivalent_alpha(p)));
 }
 
 #endif

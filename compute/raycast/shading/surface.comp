@@ -33,6 +33,9 @@
 // environment's slot (gather adds it).
 // LOBE_LIMITS (docs/rendering.md, "Limits per lobe kind"): 1 when the scene
 // sets one; a continuation ray's path keeps its counts per lobe kind.
+// ANISOTROPY (docs/shading.md, "Anisotropy"): 1 when some material is
+// anisotropic; its hits evaluate the tangent field, and 0 keeps every lobe
+// on the isotropic path.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -64,6 +67,7 @@
 #include "rules/shading/dielectric.h"
 #include "rules/shading/absorption.h"
 #include "rules/shading/transmissive_continuation.h"
+#include "rules/surface/tangent.h"
 
 layout(constant_id = 1) const int LIGHT_COUNT = 1;
 layout(constant_id = 2) const int D_MODEL = -1;
@@ -78,6 +82,7 @@ layout(constant_id = 10) const int COMPENSATION = 0;
 layout(constant_id = 11) const int PATHS = 0;
 layout(constant_id = 12) const int TRANSMISSION = 0;
 layout(constant_id = 13) const int LOBE_LIMITS = 0;
+layout(constant_id = 14) const int ANISOTROPY = 0;
 
 layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
 layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord materials[]; };
@@ -123,6 +128,8 @@ BrdfParams brdf_params(uint index) {
   p.eta = vec3(m.etaR, m.etaG, m.etaB);
   p.k = vec3(m.kR, m.kG, m.kB);
   p.diffuse = vec3(m.diffuseR, m.diffuseG, m.diffuseB);
+  p.anisotropy = ANISOTROPY == 1 ? m.anisotropy : 0.0;
+  p.tangent = vec3(1.0, 0.0, 0.0);  // set per hit from the tangent field where anisotropic
   return p;
 }
 
@@ -180,9 +187,10 @@ void shade_environment(uint first, uint pixel, uint sample_index, uint material,
       write_unshadowed(first, vec3(0.0));
       return;
     }
-    vec3 lobe = split_sum_direction(n, v, params.alpha);
-    vec3 radiance = split_sum(params, nv, prefiltered_radiance(to_map(lobe), params.alpha),
-                              dfg_lookup(materials[material].dfgTable, nv, params.alpha),
+    float alpha = isotropic_equivalent_alpha(params);
+    vec3 lobe = split_sum_direction(anisotropic_bent_normal(params, n, v), v, alpha);
+    vec3 radiance = split_sum(params, nv, prefiltered_radiance(to_map(lobe), alpha),
+                              dfg_lookup(materials[material].dfgTable, nv, alpha),
                               irradiance_over_pi(to_map(n)), specular_scale);
     write_unshadowed(first, occlusion * frame.environmentIntensity * radiance);
     return;
@@ -306,6 +314,10 @@ void main() {
     emission = surface.emission;
   }
   if (TRANSMISSION == 1 && m.transmissive == 1u) params = transmissive_brdf_params(params, transmission_params(m), outside);
+  if (ANISOTROPY == 1 && params.anisotropy != 0.0) {
+    PatchSample point = evaluate_patch(c, hit.s, hit.tParam);
+    params.tangent = surface_tangent(n, point.ds, point.dt, m.anisotropyCos, m.anisotropySin);
+  }
   vec3 v = -direction;
   vec3 specular_scale = material_specular_scale(m.compensationTable, params, dot(n, v));
   for (int l = 0; l < LIGHT_COUNT; ++l) {

@@ -18,10 +18,11 @@ using gpu::BufferUsage;
 
 struct Variant {
   int d, g, f;
+  double anisotropy = 0.0;
 };
 
 struct alignas(16) Parameters {
-  glm::vec4 f0Alpha, eta, k, diffuse;
+  glm::vec4 f0Alpha, eta, k, diffuse, tangentAnisotropy;
   std::uint32_t count;
 };
 
@@ -38,13 +39,15 @@ glm::dvec3 randomDirection(std::mt19937& rng, double minCos) {
 TEST_P(BrdfGpuParity, GlslFloatMatchesCppDouble) {
   const Variant variant = GetParam();
   rules::f64::BrdfParams p{variant.d,
-                    variant.g,
-                    variant.f,
-                    0.0,
-                    glm::dvec3(0.9, 0.6, 0.3),
-                    glm::dvec3(1.5, 1.6, 1.7),
-                    glm::dvec3(3.0, 2.5, 2.0),
-                    glm::dvec3(0.2, 0.3, 0.4)};
+                           variant.g,
+                           variant.f,
+                           0.0,
+                           glm::dvec3(0.9, 0.6, 0.3),
+                           glm::dvec3(1.5, 1.6, 1.7),
+                           glm::dvec3(3.0, 2.5, 2.0),
+                           glm::dvec3(0.2, 0.3, 0.4),
+                           variant.anisotropy,
+                           glm::normalize(glm::dvec3(0.8, 0.6, 0.3))};
   // Directions at least 0.01 above the horizon and alpha >= 0.05: the domain
   // where docs/shading.md's float-vs-double table stays below 1e-4.
   std::mt19937 rng(1234 + variant.d * 100 + variant.g * 10 + variant.f);
@@ -62,8 +65,12 @@ TEST_P(BrdfGpuParity, GlslFloatMatchesCppDouble) {
   // One alpha per dispatch keeps the kernel's parameters uniform.
   const double alpha = 0.05 + 0.95 * std::uniform_real_distribution<double>(0, 1)(rng);
   p.alpha = alpha;
-  Parameters parameters{glm::vec4(glm::vec3(p.f0), float(alpha)), glm::vec4(glm::vec3(p.eta), 0),
-                        glm::vec4(glm::vec3(p.k), 0), glm::vec4(glm::vec3(p.diffuse), 0), count};
+  Parameters parameters{glm::vec4(glm::vec3(p.f0), float(alpha)),
+                        glm::vec4(glm::vec3(p.eta), 0),
+                        glm::vec4(glm::vec3(p.k), 0),
+                        glm::vec4(glm::vec3(p.diffuse), 0),
+                        glm::vec4(glm::vec3(p.tangent), float(p.anisotropy)),
+                        count};
 
   gpu::Buffer caseBuffer = upload(cases);
   gpu::Buffer results = poisoned(count * 3 * sizeof(glm::vec4));
@@ -97,11 +104,21 @@ TEST_P(BrdfGpuParity, GlslFloatMatchesCppDouble) {
 std::vector<Variant> variants() {
   // Every D, G and F at least once, each with the defaults of the other two.
   std::vector<Variant> v;
-  for (const ModelName& d : kDistributions) v.push_back({d.id, rules::f64::G_SMITH_GGX_CORRELATED, rules::f64::F_SCHLICK});
+  for (const ModelName& d : kDistributions)
+    v.push_back({d.id, rules::f64::G_SMITH_GGX_CORRELATED, rules::f64::F_SCHLICK});
   for (const ModelName& g : kGeometryTerms)
     if (g.id != rules::f64::G_SMITH_GGX_CORRELATED) v.push_back({rules::f64::D_GGX, g.id, rules::f64::F_SCHLICK});
   for (const ModelName& f : kFresnelTerms)
     if (f.id != rules::f64::F_SCHLICK) v.push_back({rules::f64::D_GGX, rules::f64::G_SMITH_GGX_CORRELATED, f.id});
+  // Anisotropic lobes: both microsurfaces, separable and height-correlated
+  // Smith G, and a G without a microsurface.
+  for (const Variant a :
+       {Variant{rules::f64::D_GGX, rules::f64::G_SMITH_GGX_CORRELATED, rules::f64::F_SCHLICK, 0.8},
+        Variant{rules::f64::D_GGX, rules::f64::G_SMITH_GGX, rules::f64::F_SCHLICK, 0.5},
+        Variant{rules::f64::D_BECKMANN, rules::f64::G_SMITH_BECKMANN_CORRELATED, rules::f64::F_SCHLICK, 0.8},
+        Variant{rules::f64::D_BECKMANN, rules::f64::G_SMITH_BECKMANN, rules::f64::F_SCHLICK, 1.0},
+        Variant{rules::f64::D_GGX, rules::f64::G_KELEMEN, rules::f64::F_SCHLICK, 0.8}})
+    v.push_back(a);
   return v;
 }
 
@@ -112,7 +129,8 @@ INSTANTIATE_TEST_SUITE_P(Models, BrdfGpuParity, ::testing::ValuesIn(variants()),
     return s;
   };
   return name(kDistributions, info.param.d) + "_" + name(kGeometryTerms, info.param.g) + "_" +
-         name(kFresnelTerms, info.param.f);
+         name(kFresnelTerms, info.param.f) +
+         (info.param.anisotropy > 0 ? "_anisotropy" + std::to_string(int(info.param.anisotropy * 10)) : "");
 });
 
 }  // namespace

@@ -19,8 +19,14 @@ constexpr double kPi = std::numbers::pi;
 const double kAlphas[] = {0.1, 0.5, 1.0};
 const double kIncidenceDegrees[] = {15, 45, 80};
 
-rules::f64::BrdfParams params(int d, double alpha) {
-  rules::f64::BrdfParams p;
+// An anisotropic lobe's tangent: off the axes and off v's plane (xz), so that
+// neither the frame nor v's azimuth is special.
+const glm::dvec3 kTangent(std::cos(0.5), std::sin(0.5), 0.0);
+
+rules::f64::BrdfParams params(int d, double alpha, double anisotropy = 0.0) {
+  rules::f64::BrdfParams p{};
+  p.anisotropy = anisotropy;
+  p.tangent = kTangent;
   p.d_model = d;
   p.g_model = rules::f64::G_SMITH_GGX;
   p.f_model = rules::f64::F_NONE;
@@ -34,9 +40,11 @@ struct Case {
   int d;
   double alpha;
   double incidence_degrees;
+  double anisotropy = 0.0;
   std::string label() const {
     return std::string(modelName(kSamplingTechniques, technique)) + " d=" + std::string(modelName(kDistributions, d)) +
-           " alpha=" + std::to_string(alpha) + " incidence=" + std::to_string(incidence_degrees);
+           " alpha=" + std::to_string(alpha) + " incidence=" + std::to_string(incidence_degrees) +
+           " anisotropy=" + std::to_string(anisotropy);
   }
 };
 
@@ -46,7 +54,16 @@ std::vector<Case> cases() {
     for (double alpha : kAlphas)
       for (double incidence : kIncidenceDegrees) all.push_back({rules::f64::SAMPLE_D, d.id, alpha, incidence});
   for (double alpha : kAlphas)
-    for (double incidence : kIncidenceDegrees) all.push_back({rules::f64::SAMPLE_GGX_VISIBLE, rules::f64::D_GGX, alpha, incidence});
+    for (double incidence : kIncidenceDegrees)
+      all.push_back({rules::f64::SAMPLE_GGX_VISIBLE, rules::f64::D_GGX, alpha, incidence});
+  // Anisotropic lobes (alpha_t = 0.541, alpha_b = 0.1; alpha_t = 1, alpha_b =
+  // 0.3): D sampling of GGX and Beckmann and GGX's visible normals.
+  for (const auto [alpha, anisotropy] : {std::pair{0.1, 0.7}, std::pair{0.3, 1.0}})
+    for (double incidence : kIncidenceDegrees) {
+      all.push_back({rules::f64::SAMPLE_D, rules::f64::D_GGX, alpha, incidence, anisotropy});
+      all.push_back({rules::f64::SAMPLE_D, rules::f64::D_BECKMANN, alpha, incidence, anisotropy});
+      all.push_back({rules::f64::SAMPLE_GGX_VISIBLE, rules::f64::D_GGX, alpha, incidence, anisotropy});
+    }
   // The cosine sampler depends on neither alpha nor v: one case.
   all.push_back({rules::f64::SAMPLE_COSINE, rules::f64::D_GGX, 1.0, 45});
   return all;
@@ -82,7 +99,7 @@ FitResult chiSquareFit(const Case& c, unsigned seed) {
   const glm::dvec3 n(0, 0, 1);
   double incidence = c.incidence_degrees * kPi / 180;
   const glm::dvec3 v(std::sin(incidence), 0, std::cos(incidence));
-  rules::f64::BrdfParams p = params(c.d, c.alpha);
+  rules::f64::BrdfParams p = params(c.d, c.alpha, c.anisotropy);
   bool by_normal = c.technique != rules::f64::SAMPLE_COSINE;
   auto bin = [&](glm::dvec3 w) {
     double theta = std::acos(std::clamp(w.z, -1.0, 1.0));
@@ -157,18 +174,19 @@ TEST(Sampling, ChiSquareGoodnessOfFit) {
   // family rejects a correct sampler with probability 1%.
   std::vector<Case> all = cases();
   double threshold = 1 - std::pow(0.99, 1.0 / double(all.size()));
-  double lowest = 1;
+  double lowest = 1, lowest_anisotropic = 1;
   std::string lowest_case;
   for (size_t k = 0; k < all.size(); ++k) {
     FitResult fit = chiSquareFit(all[k], 1000 + unsigned(k));
     EXPECT_GE(fit.p_value, threshold) << all[k].label() << " chi2=" << fit.statistic << " dof=" << fit.dof;
+    if (all[k].anisotropy > 0) lowest_anisotropic = std::min(lowest_anisotropic, fit.p_value);
     if (fit.p_value < lowest) {
       lowest = fit.p_value;
       lowest_case = all[k].label();
     }
   }
-  std::printf("chi-square: %zu cases, Sidak threshold %.3g, lowest p %.3g (%s)\n", all.size(), threshold, lowest,
-              lowest_case.c_str());
+  std::printf("chi-square: %zu cases, Sidak threshold %.3g, lowest p %.3g (%s), lowest anisotropic p %.3g\n",
+              all.size(), threshold, lowest, lowest_case.c_str(), lowest_anisotropic);
 }
 
 TEST(Sampling, PdfIsTheJacobianOfTheSamplingMap) {
@@ -183,11 +201,13 @@ TEST(Sampling, PdfIsTheJacobianOfTheSamplingMap) {
   for (const Case& c : cases()) {
     double incidence = c.incidence_degrees * kPi / 180;
     const glm::dvec3 v(std::sin(incidence), 0, std::cos(incidence));
-    rules::f64::BrdfParams p = params(c.d, c.alpha);
+    rules::f64::BrdfParams p = params(c.d, c.alpha, c.anisotropy);
     for (double u1 : {0.1, 0.3, 0.5, 0.7, 0.9}) {
       for (double u2 : {0.05, 0.35, 0.6, 0.85}) {
         const double h = 1e-6;
-        auto at = [&](double a, double b) { return rules::f64::sample_direction(c.technique, p, n, v, glm::dvec2(a, b)); };
+        auto at = [&](double a, double b) {
+          return rules::f64::sample_direction(c.technique, p, n, v, glm::dvec2(a, b));
+        };
         if (glm::length(at(u1, u2) + v) < 0.1) continue;
         glm::dvec3 d1 = (at(u1 + h, u2) - at(u1 - h, u2)) / (2 * h);
         glm::dvec3 d2 = (at(u1, u2 + h) - at(u1, u2 - h)) / (2 * h);

@@ -20,7 +20,7 @@ glm::dvec3 direction(double theta_degrees, double phi_degrees) {
 }
 
 rules::f64::BrdfParams params(int d, int g, int f, double alpha) {
-  rules::f64::BrdfParams p;
+  rules::f64::BrdfParams p{};
   p.d_model = d;
   p.g_model = g;
   p.f_model = f;
@@ -91,8 +91,8 @@ TEST(Brdf, AssemblesTheMicrofacetFormula) {
   glm::dvec3 h = glm::normalize(l + v);
   double theta_h = std::acos(h.z);
   double d = textbookD(rules::f64::D_GGX, 0.3, theta_h);
-  double g =
-      1 / (1 + textbookLambda(rules::f64::D_GGX, 0.3, 40 * kPi / 180) + textbookLambda(rules::f64::D_GGX, 0.3, 25 * kPi / 180));
+  double g = 1 / (1 + textbookLambda(rules::f64::D_GGX, 0.3, 40 * kPi / 180) +
+                  textbookLambda(rules::f64::D_GGX, 0.3, 25 * kPi / 180));
   double vh = glm::dot(v, h);
   glm::dvec3 fresnel = p.f0 + (1.0 - p.f0) * std::pow(1 - vh, 5);
   glm::dvec3 expected = fresnel * d * g / (4 * l.z * v.z) + p.diffuse / kPi;
@@ -116,7 +116,7 @@ TEST(Brdf, ReciprocalForEveryCombination) {
             rules::f64::BrdfParams p = params(d.id, g.id, f.id, alpha);
             glm::dvec3 forward = rules::f64::brdf_evaluate(p, n, l, v);
             glm::dvec3 backward = rules::f64::brdf_evaluate(p, n, v, l);
-            rules::f32::BrdfParams q;
+            rules::f32::BrdfParams q{};
             q.d_model = d.id;
             q.g_model = g.id;
             q.f_model = f.id;
@@ -155,7 +155,8 @@ TEST(Brdf, AlphaIsClampedToItsDocumentedRange) {
   // very sharp lobe rather than a delta.
   glm::dvec3 n(0, 0, 1), l = direction(30, 0), v = direction(30, 180);
   rules::f64::BrdfParams zero = params(rules::f64::D_GGX, rules::f64::G_SMITH_GGX, rules::f64::F_NONE, 0.0);
-  rules::f64::BrdfParams minimum = params(rules::f64::D_GGX, rules::f64::G_SMITH_GGX, rules::f64::F_NONE, rules::f64::ALPHA_MIN);
+  rules::f64::BrdfParams minimum =
+      params(rules::f64::D_GGX, rules::f64::G_SMITH_GGX, rules::f64::F_NONE, rules::f64::ALPHA_MIN);
   EXPECT_EQ(rules::f64::brdf_evaluate(zero, n, l, v), rules::f64::brdf_evaluate(minimum, n, l, v));
   EXPECT_NEAR(rules::f64::brdf_terms(zero, n, l, v).D, 1 / (kPi * 1e-6), 1e-3);
 }

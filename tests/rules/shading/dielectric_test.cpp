@@ -191,7 +191,7 @@ TEST(Absorption, BeerLambertGivesTheAttenuationColourAtItsDistance) {
 // The whole material: diffuse mixed in adds its albedo to the reflection
 // side and leaves the transmission side as the dielectric alone gives it.
 TEST(TransmissiveContinuation, DiffuseLobeAddsItsAlbedoOnTheReflectionSide) {
-  m::BrdfParams p;
+  m::BrdfParams p{};
   p.d_model = m::D_GGX;
   p.g_model = m::G_SMITH_GGX_CORRELATED;
   p.f_model = m::F_DIELECTRIC;
