@@ -30,6 +30,8 @@ materials::Material toEngineMaterial(const v0::Material& material, const std::st
   spec.thickness = material.thickness;
   spec.attenuationColor = engineVector(material.attenuationColor);
   spec.attenuationDistance = material.attenuationDistance;
+  spec.anisotropy = material.anisotropy;
+  spec.anisotropyRotation = material.anisotropyRotation;
   return materials::buildMaterial(spec, [&](std::string_view field) { return where + "." + std::string(field); });
 }
 

@@ -33,13 +33,16 @@ class Material:
     thickness: Optional[float]
     attenuation_color: Optional[Vec3]
     attenuation_distance: Optional[float]
+    anisotropy: Optional[float]
+    anisotropy_rotation: Optional[float]
     def __init__(self, *, name: str = "", preset: Optional[str] = None, distribution: Optional[str] = None,
                  geometry: Optional[str] = None, fresnel: Optional[str] = None, alpha: Optional[float] = None,
                  roughness: Optional[float] = None, f0: Optional[Vec3] = None, ior: Optional[Vec3] = None,
                  eta: Optional[Vec3] = None, k: Optional[Vec3] = None, diffuse: Optional[Vec3] = None,
                  energy_compensation: bool = False, transmission: Optional[float] = None,
                  thin_walled: Optional[bool] = None, thickness: Optional[float] = None,
-                 attenuation_color: Optional[Vec3] = None, attenuation_distance: Optional[float] = None) -> None: ...
+                 attenuation_color: Optional[Vec3] = None, attenuation_distance: Optional[float] = None,
+                 anisotropy: Optional[float] = None, anisotropy_rotation: Optional[float] = None) -> None: ...
 
 class Cage:
     positions: numpy.ndarray  # read-only, (n, 3)

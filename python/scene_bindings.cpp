@@ -89,7 +89,8 @@ void bindScenes(py::module_& m) {
       .def(py::init([](const std::string& name, OptText preset, OptText d, OptText g, OptText f, OptReal alpha,
                        OptReal roughness, OptVec f0, OptVec ior, OptVec eta, OptVec k, OptVec diffuse,
                        bool energyCompensation, OptReal transmission, std::optional<bool> thinWalled, OptReal thickness,
-                       OptVec attenuationColor, OptReal attenuationDistance) {
+                       OptVec attenuationColor, OptReal attenuationDistance, OptReal anisotropy,
+                       OptReal anisotropyRotation) {
              facet::Material material{
                  name, preset, d, g, f, alpha, roughness, f0, ior, eta, k, diffuse, energyCompensation};
              material.transmission = transmission;
@@ -97,6 +98,8 @@ void bindScenes(py::module_& m) {
              material.thickness = thickness;
              material.attenuationColor = attenuationColor;
              material.attenuationDistance = attenuationDistance;
+             material.anisotropy = anisotropy;
+             material.anisotropyRotation = anisotropyRotation;
              return material;
            }),
            py::kw_only(), py::arg("name") = "", py::arg("preset") = py::none(), py::arg("distribution") = py::none(),
@@ -105,7 +108,8 @@ void bindScenes(py::module_& m) {
            py::arg("eta") = py::none(), py::arg("k") = py::none(), py::arg("diffuse") = py::none(),
            py::arg("energy_compensation") = false, py::arg("transmission") = py::none(),
            py::arg("thin_walled") = py::none(), py::arg("thickness") = py::none(),
-           py::arg("attenuation_color") = py::none(), py::arg("attenuation_distance") = py::none())
+           py::arg("attenuation_color") = py::none(), py::arg("attenuation_distance") = py::none(),
+           py::arg("anisotropy") = py::none(), py::arg("anisotropy_rotation") = py::none())
       .def_readwrite("name", &facet::Material::name)
       .def_readwrite("preset", &facet::Material::preset)
       .def_readwrite("distribution", &facet::Material::distribution)
@@ -123,7 +127,9 @@ void bindScenes(py::module_& m) {
       .def_readwrite("thin_walled", &facet::Material::thinWalled)
       .def_readwrite("thickness", &facet::Material::thickness)
       .def_readwrite("attenuation_color", &facet::Material::attenuationColor)
-      .def_readwrite("attenuation_distance", &facet::Material::attenuationDistance);
+      .def_readwrite("attenuation_distance", &facet::Material::attenuationDistance)
+      .def_readwrite("anisotropy", &facet::Material::anisotropy)
+      .def_readwrite("anisotropy_rotation", &facet::Material::anisotropyRotation);
 
   py::class_<facet::Cage>(m, "Cage", "A Catmull-Clark control cage in world space, 0-based indices")
       .def(py::init([](const Doubles& positions, const py::object& counts, const py::object& indices,

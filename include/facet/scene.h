@@ -41,6 +41,11 @@ struct Material {
   std::optional<double> thickness;  // thin-walled: the wall's, for absorption
   std::optional<Vec3> attenuationColor;
   std::optional<double> attenuationDistance;  // > 0; absent: no absorption
+  // Anisotropy (docs/shading.md, "Anisotropy"): strength 0..1 stretches the
+  // roughness along the tangent, turned by the rotation (radians) about the
+  // normal.
+  std::optional<double> anisotropy;
+  std::optional<double> anisotropyRotation;
 };
 
 // A Catmull-Clark control cage in world space; indices are 0-based and each

@@ -129,6 +129,19 @@ TEST(ApiSceneEdit, AChangedSceneRendersAsTheSceneFileThatSaysTheSame) {
   const std::filesystem::path presetFile =
       writeScene("preset.json", "{" + common + R"(, "objects": [{"mesh": ")" + kCube + R"(", "material": "gold"}]})");
   expectSameImage(render(edited), render(facet::loadScene(presetFile.string())));
+
+  // Anisotropy under the scene file's names.
+  facet::Material brushed;
+  brushed.preset = "aluminum";
+  brushed.roughness = 0.3;
+  brushed.anisotropy = 0.6;
+  brushed.anisotropyRotation = 0.5;
+  edited.setMaterial(0, brushed);
+  const std::filesystem::path brushedFile =
+      writeScene("brushed.json", "{" + common + R"(, "objects": [{"mesh": ")" + kCube +
+                                     R"(", "material": {"preset": "aluminum", "roughness": 0.3, "anisotropy": 0.6,
+                                             "anisotropy_rotation": 0.5}}]})");
+  expectSameImage(render(edited), render(facet::loadScene(brushedFile.string())));
 }
 
 TEST(ApiSceneEdit, AChangeIsRefusedWithTheSceneFilesRuleAndLeavesTheSceneAsItWas) {
@@ -163,6 +176,12 @@ TEST(ApiSceneEdit, AChangeIsRefusedWithTheSceneFilesRuleAndLeavesTheSceneAsItWas
   rough.roughness = 2;
   const std::string refused = errorOf([&] { scene.setMaterial(0, rough); });
   EXPECT_NE(refused.find("objects[0].material.roughness"), std::string::npos) << refused;
+  facet::Material stretched;
+  stretched.roughness = 0.3;
+  stretched.anisotropy = 1.5;
+  const std::string overStretched = errorOf([&] { scene.setMaterial(0, stretched); });
+  EXPECT_NE(overStretched.find("objects[0].material.anisotropy: must be in [0, 1]"), std::string::npos)
+      << overStretched;
 
   facet::Environment missing;
   missing.file = "no_such_map.exr";

@@ -237,6 +237,11 @@ class Scenes(unittest.TestCase):
             facet.Scene([facet.Object(cube(), material=1)])
         with self.assertRaisesRegex(facet.Error, r"materials\[0\].*alpha"):
             facet.Scene([facet.Object(cube())], materials=[facet.Material(alpha=2.0)])
+        with self.assertRaisesRegex(facet.Error, r"materials\[0\].anisotropy: must be in \[0, 1\]"):
+            facet.Scene([facet.Object(cube())], materials=[facet.Material(roughness=0.3, anisotropy=1.5)])
+        brushed = facet.Material(preset="aluminum", roughness=0.3, anisotropy=0.6, anisotropy_rotation=0.5)
+        self.assertEqual((brushed.anisotropy, brushed.anisotropy_rotation), (0.6, 0.5))
+        facet.Scene([facet.Object(cube())], materials=[brushed])  # within the rules
         with self.assertRaisesRegex(facet.Error, "camera: eye and target must differ"):
             facet.Scene([facet.Object(cube())], camera=facet.Camera(eye=(0, 0, 0)))
         with self.assertRaisesRegex(facet.Error, "environment.file"):
