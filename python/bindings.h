@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 
 #include <initializer_list>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -56,6 +57,14 @@ T choice(const std::string& name, const char* argument, std::initializer_list<st
     list += (list.empty() ? "" : ", ") + std::string(key);
   }
   throw facet::Error(facet::ErrorKind::BadInput, std::string(argument) + " '" + name + "': expected one of: " + list);
+}
+
+// The name of `chosen` among `options`, the inverse of choice().
+template <class T>
+const char* choiceName(T chosen, std::initializer_list<std::pair<const char*, T>> options) {
+  for (const auto& [key, value] : options)
+    if (value == chosen) return key;
+  throw std::logic_error("a value without a name among its options");
 }
 
 // Directions as an (..., 3) float64 array.

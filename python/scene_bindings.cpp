@@ -46,29 +46,19 @@ std::string fspath(const py::object& path) {
   return py::module_::import("os").attr("fspath")(path).cast<std::string>();
 }
 
-facet::LightType lightType(const std::string& name) {
-  return choice<facet::LightType>(name, "type",
-                                  {{"directional", facet::LightType::Directional},
-                                   {"point", facet::LightType::Point},
-                                   {"spot", facet::LightType::Spot}});
-}
+constexpr std::initializer_list<std::pair<const char*, facet::LightType>> kLightTypes = {
+    {"directional", facet::LightType::Directional},
+    {"point", facet::LightType::Point},
+    {"spot", facet::LightType::Spot}};
+constexpr std::initializer_list<std::pair<const char*, facet::IblMethod>> kIblMethods = {
+    {"prefiltered", facet::IblMethod::Prefiltered},
+    {"sampled", facet::IblMethod::Sampled},
+    {"filtered", facet::IblMethod::Filtered}};
 
-const char* lightTypeName(facet::LightType type) {
-  return type == facet::LightType::Point ? "point" : type == facet::LightType::Spot ? "spot" : "directional";
-}
-
-facet::IblMethod iblMethod(const std::string& name) {
-  return choice<facet::IblMethod>(name, "method",
-                                  {{"prefiltered", facet::IblMethod::Prefiltered},
-                                   {"sampled", facet::IblMethod::Sampled},
-                                   {"filtered", facet::IblMethod::Filtered}});
-}
-
-const char* iblMethodName(facet::IblMethod method) {
-  return method == facet::IblMethod::Sampled    ? "sampled"
-         : method == facet::IblMethod::Filtered ? "filtered"
-                                                : "prefiltered";
-}
+facet::LightType lightType(const std::string& name) { return choice(name, "type", kLightTypes); }
+const char* lightTypeName(facet::LightType type) { return choiceName(type, kLightTypes); }
+facet::IblMethod iblMethod(const std::string& name) { return choice(name, "method", kIblMethods); }
+const char* iblMethodName(facet::IblMethod method) { return choiceName(method, kIblMethods); }
 
 // An object of a Python Scene: changing its material changes that Scene.
 struct SceneObject {

@@ -146,7 +146,9 @@ TEST(Albedo, AnisotropicQuadratureMeetsTheIsotropicAtVanishingAnisotropy) {
         EXPECT_NEAR(anisotropic.albedo.x, isotropic.albedo.x, 3e-4) << "d " << d << " alpha " << alpha << " mu " << mu;
         // A rougher tangent direction reflects less at normal view.
         p.anisotropy = 0.9;
-        if (mu == 1.0) EXPECT_LT(directionalAlbedo(p, mu, 128).albedo.x, isotropic.albedo.x);
+        if (mu == 1.0) {
+          EXPECT_LT(directionalAlbedo(p, mu, 128).albedo.x, isotropic.albedo.x);
+        }
       }
 }
 

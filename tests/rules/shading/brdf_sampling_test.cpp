@@ -58,7 +58,7 @@ std::vector<Case> cases() {
       all.push_back({rules::f64::SAMPLE_GGX_VISIBLE, rules::f64::D_GGX, alpha, incidence});
   // Anisotropic lobes (alpha_t = 0.541, alpha_b = 0.1; alpha_t = 1, alpha_b =
   // 0.3): D sampling of GGX and Beckmann and GGX's visible normals.
-  for (const auto [alpha, anisotropy] : {std::pair{0.1, 0.7}, std::pair{0.3, 1.0}})
+  for (const auto& [alpha, anisotropy] : {std::pair{0.1, 0.7}, std::pair{0.3, 1.0}})
     for (double incidence : kIncidenceDegrees) {
       all.push_back({rules::f64::SAMPLE_D, rules::f64::D_GGX, alpha, incidence, anisotropy});
       all.push_back({rules::f64::SAMPLE_D, rules::f64::D_BECKMANN, alpha, incidence, anisotropy});
