@@ -21,7 +21,7 @@ std::vector<Setting> geometrySettings(const Sizes& sizes) {
 }  // namespace
 
 Sizes sizesFor(bool quick) {
-  if (quick) return {48, 24, 32, 48, 24, {"pole24"}, {1e-4}, {2, 4}, {1, 4}, 64, {1, 4, 16}};
+  if (quick) return {48, 24, 32, 32, 16, {"pole24"}, {1e-4}, {2, 4}, {1, 4}, 16, {1, 4, 16}};
   return {192,
           96,
           96,

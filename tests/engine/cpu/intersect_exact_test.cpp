@@ -98,7 +98,7 @@ TEST(ExactIntersection, GrazingAndTangentRays) {
     std::uniform_real_distribution<double> unit(0.05, 0.95);
     std::uniform_int_distribution<int> anyPatch(0, geometry.surface.patchCount() - 1);
     int tested = 0;
-    while (tested < 60) {
+    while (tested < 30) {
       const int patch = anyPatch(random);
       const scene::PatchDomain& domain = geometry.surface.patch(patch).domain;
       const double u = domain.u0 + unit(random) * domain.size, v = domain.v0 + unit(random) * domain.size;
