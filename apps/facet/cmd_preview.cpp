@@ -1,4 +1,4 @@
-// facet preview: materials on a model under the studio environment, each
+// facet preview: materials on a model under one environment, each
 // rendered by adaptive sampling and laid out as a labelled contact sheet, or
 // turned about the model as a movie (docs/preview-stage.md).
 #include <CLI/CLI.hpp>
@@ -59,7 +59,8 @@ class FrameFolder {
   fs::path path_;
 };
 
-// The model as loaded, lit by the studio environment alone, at the cell size.
+// The model as loaded, lit by the studio environment or --env alone, at the
+// cell size.
 scene::Scene previewModel(const PreviewStageFlags& f) {
   const std::string model =
       f.model.empty() ? (dataFolder() / "scenes" / "examples" / "superball.obj").string() : f.model;
@@ -67,11 +68,7 @@ scene::Scene previewModel(const PreviewStageFlags& f) {
   scene.lights.clear();
   scene.environment = scene::studioEnvironment();
   applyImageSize(f.size, scene);
-  if (!f.ibl.empty()) {
-    SceneOverrides lighting;
-    lighting.ibl = f.ibl;
-    applySceneOverrides(lighting, scene);
-  }
+  applySceneOverrides(f.lighting, scene);
   scene::checkImagesFitInMemory(scene, int(f.materials.size()) + 1, "--size");
   return scene;
 }
@@ -180,7 +177,7 @@ void runPreview(const PreviewStageFlags& f) {
 void addPreviewCommand(CLI::App& app) {
   auto flags = std::make_shared<PreviewStageFlags>();
   auto* c = app.add_subcommand("preview",
-                               "Materials on a model under the studio environment: a contact sheet or a "
+                               "Materials on a model under the studio environment or a map: a contact sheet or a "
                                "turntable movie, anti-aliased by adaptive sampling");
   addPreviewStageOptions(*c, *flags);
   c->callback([flags] { runPreview(*flags); });

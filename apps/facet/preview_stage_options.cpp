@@ -25,7 +25,8 @@ void addPreviewStageOptions(CLI::App& c, PreviewStageFlags& f) {
   c.add_option("--size", f.size, "Each cell's image size WIDTHxHEIGHT (default 256x256)");
   c.add_option("--columns", f.columns, "Cells per row (default: a grid about as wide as tall)")
       ->check(CLI::Range(1, 64));
-  c.add_option("--ibl", f.ibl, "How the studio environment lights the model (default: prefiltered)")
+  addEnvironmentOptions(c, f.lighting);
+  c.add_option("--ibl", f.lighting.ibl, "How the environment lights the model (default: prefiltered)")
       ->check(CLI::IsMember({"sampled", "prefiltered", "filtered"}));
   c.add_option("--noise-threshold", f.noiseThreshold,
                "Stop a tile once its relative standard error is below this (default 0.02)");

@@ -1,6 +1,6 @@
-// The flags of `facet preview` (docs/preview-stage.md): the model, the cells'
-// size and the sheet's columns, adaptive sampling's threshold and caps, and
-// the turntable movie.
+// The flags of `facet preview` (docs/preview-stage.md): the model, its
+// lighting, the cells' size and the sheet's columns, adaptive sampling's
+// threshold and caps, and the turntable movie.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -11,6 +11,7 @@
 
 #include "engine/adaptive_render.h"
 #include "preview_options.h"
+#include "scene_options.h"
 
 namespace facet::cli {
 
@@ -20,7 +21,7 @@ struct PreviewStageFlags {
   std::string output;                  // -o: the sheet, a .png
   std::string size = "256x256";        // of each cell
   int columns = 0;
-  std::string ibl;
+  SceneOverrides lighting;  // --env, --env-intensity, --env-rotation and --ibl
   double noiseThreshold = AdaptiveSettings{}.noiseThreshold;
   long long maxSpp = AdaptiveSettings{}.maxSpp;
   double timeLimit = AdaptiveSettings{}.timeLimitSeconds;

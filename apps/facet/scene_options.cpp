@@ -113,6 +113,14 @@ std::string describeEnvironment(const scene::Environment& e) {
   return text;
 }
 
+void addEnvironmentOptions(CLI::App& command, SceneOverrides& o) {
+  command.add_option("--env", o.environment, "Environment map (.exr or .hdr, equirectangular 2:1) lighting the scene")
+      ->check(CLI::ExistingFile);
+  command.add_option("--env-intensity", o.environmentIntensity, "Environment radiance scale")
+      ->check(CLI::Range(0.0, 1e30));
+  command.add_option("--env-rotation", o.environmentRotation, "Environment rotation about +y, in degrees");
+}
+
 void addSceneOverrideOptions(CLI::App& command, SceneOverrides& o) {
   command.add_option("--size", o.size, "Image size WIDTHxHEIGHT");
   auto triple = [&](const char* name, std::vector<double>& v, const char* help) {
@@ -145,11 +153,7 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& o) {
                         " lobes a path may take besides --bounces (default: no limit of their own; Cycles': 4, 4, "
                         "12 for diffuse, glossy, transmission)")
         ->check(CLI::Range(0, scene::kMaxBounces));
-  command.add_option("--env", o.environment, "Environment map (.exr or .hdr, equirectangular 2:1) lighting the scene")
-      ->check(CLI::ExistingFile);
-  command.add_option("--env-intensity", o.environmentIntensity, "Environment radiance scale")
-      ->check(CLI::Range(0.0, 1e30));
-  command.add_option("--env-rotation", o.environmentRotation, "Environment rotation about +y, in degrees");
+  addEnvironmentOptions(command, o);
   command
       .add_option("--ibl", o.ibl,
                   "Image-based lighting: Monte Carlo with MIS, the prefiltered split sum, or BRDF samples read "

@@ -35,6 +35,9 @@ struct SceneOverrides {
 
 void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides);
 
+// --env, --env-intensity and --env-rotation alone.
+void addEnvironmentOptions(CLI::App& command, SceneOverrides& overrides);
+
 // Command-line settings win over the scene file's; throws
 // std::invalid_argument naming the flag.
 void applySceneOverrides(const SceneOverrides& overrides, scene::Scene& scene);

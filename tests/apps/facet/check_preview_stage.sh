@@ -5,6 +5,7 @@
 #   - the contact sheet's size, and each render's reported tile errors below
 #     the threshold unless it says a cap stopped it;
 #   - a noisier lighting method takes more samples than a smoother one;
+#   - --env lights the model by the map it names;
 #   - one error line for each bad adaptive flag;
 #   - --movie: without ffmpeg on PATH, one error naming it and exit code 2,
 #     nothing written; with a fake ffmpeg that records its arguments, the
@@ -47,6 +48,22 @@ on_gpu=(--size 32x32 --backend gpu --time-limit 600)
 "$facet" preview gold "${on_gpu[@]}" --ibl sampled --noise-threshold 0.0001 --max-spp 8 -o capped.png >capped.txt
 grep -q "sample cap" capped.txt || fail "a render stopped by --max-spp does not say so: $(cat capped.txt)"
 
+# --env lights the model by a map instead of the studio: the cell is nearer
+# to `facet render --env` of the same map than to the studio's preview.
+map=$repo/scenes/environments/studio.exr
+"$facet" preview gold "${on_gpu[@]}" --max-spp 16 --env "$map" --env-rotation 90 -o mapped.png --quiet
+"$facet" preview gold "${on_gpu[@]}" --max-spp 16 -o studio.png --quiet
+"$facet" render "$repo/scenes/examples/superball.obj" --material gold --size 32x32 --spp 16 --env "$map" \
+  --env-rotation 90 -o rendered.png --quiet
+/usr/bin/python3 - <<'PY' || fail "--env does not light the preview"
+import OpenImageIO as oiio, numpy as np
+def pixels(path):
+    return oiio.ImageInput.open(path).read_image(format="float")[..., :3]
+rendered = pixels("rendered.png")
+mapped, studio = (float(np.abs(pixels(p)[2:34, 2:34] - rendered).mean()) for p in ("mapped.png", "studio.png"))
+assert mapped < 0.5 * studio, (mapped, studio)
+PY
+
 # Bad values: one line each, exit code 1, no sheet.
 bad() {
   local expected=$1
@@ -67,6 +84,7 @@ bad "--time-limit '-1': expected a number of seconds" --time-limit -1
 bad "--time-limit" --time-limit nan
 bad "--movie 'turn.mov': the extension chooses the format" --turntable 2 --movie turn.mov
 bad "material 'nosuch': preset: unknown preset 'nosuch'" nosuch
+bad "--env: File does not exist: nosuch.exr" --env nosuch.exr
 
 # No ffmpeg on PATH: one line naming it and how to install it, exit code 2, nothing written.
 set +e
