@@ -134,5 +134,22 @@ TEST_F(GltfMaterialExtensions, ClearcoatFactorsAreReadAndItsTexturesWarned) {
   EXPECT_THAT([&] { loadScene(bad); }, ThrowsMessage<InputError>(HasSubstr("KHR_materials_clearcoat.clearcoatFactor")));
 }
 
+TEST_F(GltfMaterialExtensions, AClearCoatLiesOverTheEmission) {
+  // Seen head-on, a full coat keeps 1 - F(1) = 0.96 of the emission under it
+  // (KHR_materials_clearcoat, "Emission"), and reflects its own 4%.
+  auto centre = [&](const std::string& name, const nlohmann::json& extensions) {
+    Scene scene = loadScene(write(name, {{"emissiveFactor", {1.0, 1.0, 1.0}}, {"extensions", extensions}}));
+    scene.render.width = scene.render.height = 8;
+    scene.camera = {{0.0, 0.0, 3.0}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 20.0};
+    return cpu::renderReference(scene, buildGeometry(scene)).beauty[std::size_t(4 * 8 + 4)];
+  };
+  nlohmann::json coated = strength(5.0);
+  coated["KHR_materials_clearcoat"] = {{"clearcoatFactor", 1.0}};
+  const glm::vec4 bare = centre("bare", strength(5.0)), coat = centre("coated", coated);
+  EXPECT_LT(coat.g, bare.g);
+  EXPECT_GT(coat.g, 0.96f * 5.0f);
+  EXPECT_LT(coat.g, 0.96f * 5.0f + 0.5f);
+}
+
 }  // namespace
 }  // namespace facet::scene
