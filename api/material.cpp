@@ -32,6 +32,8 @@ materials::Material toEngineMaterial(const v0::Material& material, const std::st
   spec.attenuationDistance = material.attenuationDistance;
   spec.anisotropy = material.anisotropy;
   spec.anisotropyRotation = material.anisotropyRotation;
+  spec.clearcoat = material.clearcoat;
+  spec.clearcoatRoughness = material.clearcoatRoughness;
   return materials::buildMaterial(spec, [&](std::string_view field) { return where + "." + std::string(field); });
 }
 

@@ -40,7 +40,17 @@ namespace {
 struct Integrals {
   glm::dvec3 specular{0.0};
   glm::dvec3 diffuse{0.0};
+  glm::dvec3 coat{0.0};
 };
+
+// What a clear coat lets through to the base and back (rules/shading/clearcoat.h);
+// 1 without one.
+double throughCoat(const rules::f64::BrdfParams& params, const glm::dvec3& l, const glm::dvec3& v) {
+  if (params.clearcoat == 0.0) return 1.0;
+  const glm::dvec3 nc = params.clearcoat_normal;
+  return rules::f64::coat_transmittance(params, glm::dot(nc, v)) *
+         rules::f64::coat_transmittance(params, glm::dot(nc, l));
+}
 
 // The reflection of v about m = (theta_m, phi) (phi measured from v's
 // azimuth) stays above the horizon policy, n.l = 2 (v.m)(n.m) - n.v >
@@ -63,26 +73,27 @@ glm::dvec3 diffuseIntegral(const rules::f64::BrdfParams& params, const glm::dvec
       glm::dvec3 l = rules::f64::sample_direction(rules::f64::SAMPLE_COSINE, params, n, v, u);
       double pdf = rules::f64::direction_pdf(rules::f64::SAMPLE_COSINE, params, n, l, v);
       if (pdf > 0)
-        sum += rule.weights[i] * rule.weights[j] * rules::f64::brdf_terms(params, n, l, v).diffuse * (l.z / pdf);
+        sum += rule.weights[i] * rule.weights[j] * rules::f64::brdf_terms(params, n, l, v).diffuse *
+               (throughCoat(params, l, v) * l.z / pdf);
     }
   }
   return sum;
 }
 
-// The anisotropic lobe has no symmetry about v's plane: f (n.l) / pdf over
-// the whole unit square of its own sampler (for GGX's visible normals G2 /
-// G1(v) times F, smooth but for the horizon's kink).
-glm::dvec3 anisotropicSpecular(const rules::f64::BrdfParams& specular, const glm::dvec3& v,
-                               const QuadratureRule& rule) {
-  const glm::dvec3 n(0, 0, 1);
-  const int technique = rules::f64::specular_technique(specular);
+// f (n.l) / pdf over the whole unit square of `lobe`'s own sampler about n
+// (for GGX's visible normals G2 / G1(v) times F, smooth but for the
+// horizon's kink): the anisotropic lobe, which has no symmetry about v's
+// plane, and a clear coat's lobe about its normal. f is `value(l)`.
+template <class Value>
+glm::dvec3 sampledLobe(const rules::f64::BrdfParams& lobe, const glm::dvec3& n, const glm::dvec3& v,
+                       const QuadratureRule& rule, const Value& value) {
+  const int technique = rules::f64::specular_technique(lobe);
   glm::dvec3 sum(0.0);
   for (std::size_t i = 0; i < rule.nodes.size(); ++i)
     for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
-      glm::dvec3 l = rules::f64::sample_direction(technique, specular, n, v, {rule.nodes[i], rule.nodes[j]});
-      double pdf = rules::f64::direction_pdf(technique, specular, n, l, v);
-      if (pdf > 0)
-        sum += rule.weights[i] * rule.weights[j] * rules::f64::brdf_evaluate(specular, n, l, v) * (l.z / pdf);
+      glm::dvec3 l = rules::f64::sample_direction(technique, lobe, n, v, {rule.nodes[i], rule.nodes[j]});
+      double pdf = rules::f64::direction_pdf(technique, lobe, n, l, v);
+      if (pdf > 0) sum += rule.weights[i] * rule.weights[j] * value(l) * (glm::dot(n, l) / pdf);
     }
   return sum;
 }
@@ -91,13 +102,25 @@ Integrals integrate(const rules::f64::BrdfParams& params, double mu, int nodes) 
   const glm::dvec3 n(0, 0, 1);
   const double sin_v = std::sqrt(std::max(0.0, 1 - mu * mu));
   const glm::dvec3 v(sin_v, 0, mu);
+  // The base's specular lobe alone (its share through a coat as a factor).
   rules::f64::BrdfParams specular = params;
   specular.diffuse = glm::dvec3(0);
+  specular.clearcoat = 0;
+  auto specularValue = [&](const glm::dvec3& l) {
+    return rules::f64::brdf_evaluate(specular, n, l, v) * throughCoat(params, l, v);
+  };
   const double alpha = rules::f64::effective_alpha(params.alpha);
   const QuadratureRule rule = gaussLegendre01(nodes);
   Integrals sum;
   if (mu <= rules::f64::COS_EPSILON) return sum;
-  if (params.anisotropy != 0.0) return {anisotropicSpecular(specular, v, rule), diffuseIntegral(params, v, rule)};
+  if (params.clearcoat != 0.0)
+    sum.coat = sampledLobe(rules::f64::coat_lobe_params(params), params.clearcoat_normal, v, rule,
+                           [&](const glm::dvec3& l) { return rules::f64::coat_evaluate(params, l, v); });
+  if (params.anisotropy != 0.0) {
+    sum.specular = sampledLobe(specular, n, v, rule, specularValue);
+    sum.diffuse = diffuseIntegral(params, v, rule);
+    return sum;
+  }
 
   // Each integrand is f (n.l) / pdf at l(u): the same functions the renderer
   // uses, so the quadrature checks them and copies nothing. Specular: u1 ->
@@ -135,7 +158,7 @@ Integrals integrate(const rules::f64::BrdfParams& params, double mu, int nodes) 
         glm::dvec3 l = glm::reflect(-v, m);
         double pdf = rules::f64::direction_pdf(rules::f64::SAMPLE_D, specular, n, l, v);
         double w = width * rule.weights[i] * rule.weights[j] * phi_max / std::numbers::pi;
-        if (pdf > 0) sum.specular += w * rules::f64::brdf_evaluate(specular, n, l, v) * (l.z / pdf);
+        if (pdf > 0) sum.specular += w * specularValue(l) * (l.z / pdf);
       }
     }
   }
@@ -153,8 +176,9 @@ AlbedoResult directionalAlbedo(const rules::f64::BrdfParams& params, double mu, 
   AlbedoResult result;
   result.specular = fine.specular;
   result.diffuse = fine.diffuse;
-  result.albedo = fine.specular + fine.diffuse;
-  glm::dvec3 difference = glm::abs(result.albedo - (coarse.specular + coarse.diffuse));
+  result.coat = fine.coat;
+  result.albedo = fine.specular + fine.diffuse + fine.coat;
+  glm::dvec3 difference = glm::abs(result.albedo - (coarse.specular + coarse.diffuse + coarse.coat));
   result.error_estimate = std::max({difference.x, difference.y, difference.z});
   result.nodes = nodes;
   return result;

@@ -31,6 +31,11 @@ Params toParams(const Material& m) {
   using Real = decltype(p.alpha);
   p.anisotropy = static_cast<Real>(m.anisotropy);
   p.tangent = Vec3(std::cos(m.anisotropyRotation), std::sin(m.anisotropyRotation), 0.0);
+  // The coat's normal likewise n = z; the renderers give it the surface's
+  // normal before any normal map.
+  p.clearcoat = static_cast<Real>(m.clearcoat);
+  p.clearcoat_alpha = static_cast<Real>(m.clearcoatRoughness * m.clearcoatRoughness);
+  p.clearcoat_normal = Vec3(0.0, 0.0, 1.0);
   return p;
 }
 
@@ -116,6 +121,24 @@ void checkAnisotropy(const MaterialSpec& spec, Material& m, const Fail& fail) {
   if (m.distribution == rules::f64::D_BLINN_PHONG)
     fail("anisotropy", "needs distribution 'ggx' or 'beckmann' (Blinn-Phong has no anisotropic form here)");
   if (isTransmissive(m)) fail("anisotropy", "is not defined for a transmissive material (transmission > 0)");
+}
+
+// The clear coat fields of `spec` into `m`, whose transmission is already
+// resolved.
+template <class Fail>
+void checkClearcoat(const MaterialSpec& spec, Material& m, const Fail& fail) {
+  auto unit = [&](std::string_view field, double value) {
+    if (!(value >= 0.0 && value <= 1.0))  // also rejects NaN
+      fail(field, "must be in [0, 1], got " + formatNumber(value));
+    return value;
+  };
+  if (spec.clearcoat) m.clearcoat = unit("clearcoat", *spec.clearcoat);
+  if (spec.clearcoatRoughness) {
+    m.clearcoatRoughness = unit("clearcoat_roughness", *spec.clearcoatRoughness);
+    if (!spec.clearcoat) fail("clearcoat_roughness", "is only used with clearcoat (give clearcoat too)");
+  }
+  if (m.clearcoat > 0.0 && isTransmissive(m))
+    fail("clearcoat", "is not defined for a transmissive material (transmission > 0)");
 }
 
 }  // namespace
@@ -251,6 +274,7 @@ Material buildMaterial(const MaterialSpec& spec,
   m.energyCompensation = spec.energyCompensation.value_or(false);
   checkTransmission(spec, preset, m, fail);
   checkAnisotropy(spec, m, fail);
+  checkClearcoat(spec, m, fail);
   return m;
 }
 
@@ -298,7 +322,9 @@ MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view s
                                       "attenuation_distance",
                                       "thickness",
                                       "anisotropy",
-                                      "anisotropy_rotation"};
+                                      "anisotropy_rotation",
+                                      "clearcoat",
+                                      "clearcoat_roughness"};
   if (const std::optional<std::string> key = findUnknownKey(json, kKeys)) fail(*key, unknownFieldRule(kKeys));
 
   MaterialSpec spec;
@@ -328,6 +354,8 @@ MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view s
   spec.thickness = number("thickness");
   spec.anisotropy = number("anisotropy");
   spec.anisotropyRotation = number("anisotropy_rotation");
+  spec.clearcoat = number("clearcoat");
+  spec.clearcoatRoughness = number("clearcoat_roughness");
   return spec;
 }
 
@@ -357,6 +385,7 @@ nlohmann::json toJson(const Material& m) {
   if (!m.name.empty()) json["name"] = m.name;
   if (m.energyCompensation) json["energy_compensation"] = true;
   if (m.anisotropy > 0.0) json["anisotropy"] = m.anisotropy, json["anisotropy_rotation"] = m.anisotropyRotation;
+  if (m.clearcoat > 0.0) json["clearcoat"] = m.clearcoat, json["clearcoat_roughness"] = m.clearcoatRoughness;
   if (isTransmissive(m)) {
     json["transmission"] = m.transmission;
     if (m.thinWalled) json["thin_walled"] = true, json["thickness"] = m.thickness;

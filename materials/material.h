@@ -71,6 +71,11 @@ struct Material {
   // and the tangent's rotation about the normal, radians.
   double anisotropy = 0.0;
   double anisotropyRotation = 0.0;
+  // Clear coat (docs/shading.md, "Clear coat"): KHR_materials_clearcoat's
+  // strength in [0, 1] and the coat's perceptual roughness (its alpha is the
+  // square), a GGX lobe of F(0) = 0.04 over the rest.
+  double clearcoat = 0.0;
+  double clearcoatRoughness = 0.0;
 };
 
 // Whether a material transmits any light.
@@ -105,6 +110,8 @@ struct MaterialSpec {
   std::optional<double> thickness;
   std::optional<double> anisotropy;
   std::optional<double> anisotropyRotation;
+  std::optional<double> clearcoat;
+  std::optional<double> clearcoatRoughness;
 };
 
 // Validates and resolves a spec. Throws std::invalid_argument whose message

@@ -35,6 +35,8 @@ class Material:
     attenuation_distance: Optional[float]
     anisotropy: Optional[float]
     anisotropy_rotation: Optional[float]
+    clearcoat: Optional[float]
+    clearcoat_roughness: Optional[float]
     def __init__(self, *, name: str = "", preset: Optional[str] = None, distribution: Optional[str] = None,
                  geometry: Optional[str] = None, fresnel: Optional[str] = None, alpha: Optional[float] = None,
                  roughness: Optional[float] = None, f0: Optional[Vec3] = None, ior: Optional[Vec3] = None,
@@ -42,7 +44,8 @@ class Material:
                  energy_compensation: bool = False, transmission: Optional[float] = None,
                  thin_walled: Optional[bool] = None, thickness: Optional[float] = None,
                  attenuation_color: Optional[Vec3] = None, attenuation_distance: Optional[float] = None,
-                 anisotropy: Optional[float] = None, anisotropy_rotation: Optional[float] = None) -> None: ...
+                 anisotropy: Optional[float] = None, anisotropy_rotation: Optional[float] = None,
+                 clearcoat: Optional[float] = None, clearcoat_roughness: Optional[float] = None) -> None: ...
 
 class Cage:
     positions: numpy.ndarray  # read-only, (n, 3)

@@ -80,7 +80,7 @@ void bindScenes(py::module_& m) {
                        OptReal roughness, OptVec f0, OptVec ior, OptVec eta, OptVec k, OptVec diffuse,
                        bool energyCompensation, OptReal transmission, std::optional<bool> thinWalled, OptReal thickness,
                        OptVec attenuationColor, OptReal attenuationDistance, OptReal anisotropy,
-                       OptReal anisotropyRotation) {
+                       OptReal anisotropyRotation, OptReal clearcoat, OptReal clearcoatRoughness) {
              facet::Material material{
                  name, preset, d, g, f, alpha, roughness, f0, ior, eta, k, diffuse, energyCompensation};
              material.transmission = transmission;
@@ -90,6 +90,8 @@ void bindScenes(py::module_& m) {
              material.attenuationDistance = attenuationDistance;
              material.anisotropy = anisotropy;
              material.anisotropyRotation = anisotropyRotation;
+             material.clearcoat = clearcoat;
+             material.clearcoatRoughness = clearcoatRoughness;
              return material;
            }),
            py::kw_only(), py::arg("name") = "", py::arg("preset") = py::none(), py::arg("distribution") = py::none(),
@@ -99,7 +101,8 @@ void bindScenes(py::module_& m) {
            py::arg("energy_compensation") = false, py::arg("transmission") = py::none(),
            py::arg("thin_walled") = py::none(), py::arg("thickness") = py::none(),
            py::arg("attenuation_color") = py::none(), py::arg("attenuation_distance") = py::none(),
-           py::arg("anisotropy") = py::none(), py::arg("anisotropy_rotation") = py::none())
+           py::arg("anisotropy") = py::none(), py::arg("anisotropy_rotation") = py::none(),
+           py::arg("clearcoat") = py::none(), py::arg("clearcoat_roughness") = py::none())
       .def_readwrite("name", &facet::Material::name)
       .def_readwrite("preset", &facet::Material::preset)
       .def_readwrite("distribution", &facet::Material::distribution)
@@ -119,7 +122,9 @@ void bindScenes(py::module_& m) {
       .def_readwrite("attenuation_color", &facet::Material::attenuationColor)
       .def_readwrite("attenuation_distance", &facet::Material::attenuationDistance)
       .def_readwrite("anisotropy", &facet::Material::anisotropy)
-      .def_readwrite("anisotropy_rotation", &facet::Material::anisotropyRotation);
+      .def_readwrite("anisotropy_rotation", &facet::Material::anisotropyRotation)
+      .def_readwrite("clearcoat", &facet::Material::clearcoat)
+      .def_readwrite("clearcoat_roughness", &facet::Material::clearcoatRoughness);
 
   py::class_<facet::Cage>(m, "Cage", "A Catmull-Clark control cage in world space, 0-based indices")
       .def(py::init([](const Doubles& positions, const py::object& counts, const py::object& indices,

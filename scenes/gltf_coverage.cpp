@@ -13,9 +13,9 @@ namespace {
 
 // The extensions facet implements; the one list the loader and its messages read.
 constexpr std::string_view kImplemented[] = {
-    "KHR_lights_punctual",    "KHR_materials_emissive_strength", "KHR_materials_ior",
-    "KHR_materials_specular", "KHR_materials_transmission",      "KHR_materials_volume",
-    "KHR_texture_transform",
+    "KHR_lights_punctual",  "KHR_materials_clearcoat", "KHR_materials_emissive_strength",
+    "KHR_materials_ior",    "KHR_materials_specular",  "KHR_materials_transmission",
+    "KHR_materials_volume", "KHR_texture_transform",
 };
 
 // What facet renders in place of an extension it ignores.
@@ -24,7 +24,6 @@ struct Fallback {
 };
 constexpr Fallback kFallbacks[] = {
     {"KHR_materials_anisotropy", "isotropic, at the base roughness"},
-    {"KHR_materials_clearcoat", "the base without its clear coat"},
     {"KHR_materials_diffuse_transmission", "the base, opaque"},
     {"KHR_materials_dispersion", "one index of refraction for every wavelength"},
     {"KHR_materials_iridescence", "the base without its thin film"},

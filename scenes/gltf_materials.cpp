@@ -141,6 +141,36 @@ Texture TextureTable::convert(int index, TextureEncoding encoding) const {
   return makeTexture(name, image.width, image.height, image.component, channels, encoding, sampler);
 }
 
+namespace {
+
+// KHR_materials_clearcoat's factors into `m` (docs/gltf.md, "Clear coat");
+// its textures are not read, each with a warning saying what facet renders.
+void applyClearcoat(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
+                    materials::Material& m) {
+  const tinygltf::Value* c = extension(gltf, "KHR_materials_clearcoat");
+  if (!c) return;
+  const std::string at = material + ".extensions.KHR_materials_clearcoat";
+  const double strength = member(*c, "clearcoatFactor", 0.0, at, reader);
+  const double roughness = member(*c, "clearcoatRoughnessFactor", 0.0, at, reader);
+  for (auto [field, value] :
+       {std::pair{".clearcoatFactor", strength}, std::pair{".clearcoatRoughnessFactor", roughness}})
+    if (const std::optional<std::string> rule = rangeRule(value, 0.0, 1.0)) reader.fail(at + field, *rule);
+  const std::pair<const char*, const char*> kTextures[] = {
+      {"clearcoatTexture", "is not read; the coat has clearcoatFactor everywhere"},
+      {"clearcoatRoughnessTexture", "is not read; the coat has clearcoatRoughnessFactor everywhere"},
+      {"clearcoatNormalTexture", "is not read; the coat follows the surface's normal, without a normal map"}};
+  for (auto [texture, instead] : kTextures)
+    if (c->Has(texture)) reader.warn(at + "." + texture, instead);
+  if (strength > 0.0 && materials::isTransmissive(m)) {
+    reader.warn(at, "is not applied to a transmissive material: facet renders it without its coat");
+    return;
+  }
+  m.clearcoat = strength;
+  m.clearcoatRoughness = roughness;
+}
+
+}  // namespace
+
 materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index, const GltfReader& reader,
                                TextureTable& textures) {
   const auto& pbr = gltf.pbrMetallicRoughness;
@@ -162,6 +192,7 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
   m.f0 = glm::mix(glm::dvec3(0.04), base, metallic);
   m.alpha = roughness * roughness;
   applyTransmission(gltf, material, reader, base, metallic, m);
+  applyClearcoat(gltf, material, reader, m);
   for (double c : gltf.emissiveFactor)
     if (!(c >= 0.0 && c <= 1.0))
       reader.fail(material + ".emissiveFactor", "every component must be in [0, 1], is " + formatNumber(c));

@@ -36,6 +36,9 @@ void runBrdf(const BrdfOptions& o) {
   const glm::dvec3 n(0, 0, 1), l = direction(theta_l, 0), v = direction(theta_v, phi);
   rules::f64::BrdfParams p = materials::toParams64(material);
   rules::f64::BrdfTerms t = rules::f64::brdf_terms(p, n, l, v);
+  // f is the whole material's: the base's terms below, under a clear coat
+  // where the material has one (rules/shading/clearcoat.h).
+  const glm::dvec3 f = rules::f64::brdf_evaluate(p, n, l, v);
   nlohmann::json pdf;
   for (const materials::ModelName& technique : materials::kSamplingTechniques)
     pdf[std::string(technique.name)] = rules::f64::direction_pdf(technique.id, p, n, l, v);
@@ -45,7 +48,7 @@ void runBrdf(const BrdfOptions& o) {
       {"theta_l", theta_l},
       {"theta_v", theta_v},
       {"phi", phi},
-      {"f", rgb(t.value)},
+      {"f", rgb(f)},
       {"specular", rgb(t.specular)},
       {"diffuse", rgb(t.diffuse)},
       {"D", t.D},
@@ -53,14 +56,15 @@ void runBrdf(const BrdfOptions& o) {
       {"F", rgb(t.F)},
       {"pdf", pdf},
   };
+  if (p.clearcoat > 0) out["coat"] = rgb(rules::f64::coat_evaluate(p, l, v));
   if (o.json) {
     std::printf("%s\n", out.dump(2).c_str());
     return;
   }
   std::printf("material  %s\n", out["material"].dump().c_str());
   std::printf("angles    theta_l %g, theta_v %g, phi %g degrees\n", theta_l, theta_v, phi);
-  std::printf("f         %.9g %.9g %.9g   (specular %.9g %.9g %.9g + diffuse %.9g %.9g %.9g)\n", t.value.x, t.value.y,
-              t.value.z, t.specular.x, t.specular.y, t.specular.z, t.diffuse.x, t.diffuse.y, t.diffuse.z);
+  std::printf("f         %.9g %.9g %.9g   (specular %.9g %.9g %.9g + diffuse %.9g %.9g %.9g)\n", f.x, f.y, f.z,
+              t.specular.x, t.specular.y, t.specular.z, t.diffuse.x, t.diffuse.y, t.diffuse.z);
   std::printf("D         %.9g\nG         %.9g\nF         %.9g %.9g %.9g\n", t.D, t.G, t.F.x, t.F.y, t.F.z);
   for (const materials::ModelName& technique : materials::kSamplingTechniques)
     std::printf("pdf %-12s %.9g  (%s)\n", technique.name.data(), pdf[std::string(technique.name)].get<double>(),

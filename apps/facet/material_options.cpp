@@ -35,6 +35,7 @@ std::string flagFor(std::string_view field) {
   if (field == "geometry") return "--g";
   if (field == "fresnel") return "--f";
   if (field == "anisotropy_rotation") return "--anisotropy-rotation";
+  if (field == "clearcoat_roughness") return "--clearcoat-roughness";
   return "--" + std::string(field);
 }
 
@@ -74,6 +75,8 @@ void addMaterialOptions(CLI::App& command, MaterialOptions& o) {
                      "anisotropy strength in [0, 1]: alpha along the tangent (the x axis) = mix(alpha, 1, s^2)");
   command.add_option("--anisotropy-rotation", o.anisotropyRotation,
                      "the tangent's rotation about the normal from the x axis, radians");
+  command.add_option("--clearcoat", o.clearcoat, "clear coat strength in [0, 1]: a GGX lobe of F(0) = 0.04 on top");
+  command.add_option("--clearcoat-roughness", o.clearcoatRoughness, "the clear coat's perceptual roughness in [0, 1]");
   command.add_option("--preset", o.preset, "F(0) from a preset (see `facet presets`)");
   command.add_option("--material", o.material_file, "JSON material file instead of the flags above");
 }
@@ -90,7 +93,7 @@ CLI::App* addMaterialCommand(CLI::App& parent, const std::string& name, const st
 materials::Material resolveMaterial(const MaterialOptions& o) {
   if (o.material_file) {
     if (o.d || o.g || o.f || o.f0 || o.ior || o.eta || o.k || o.alpha || o.roughness || o.diffuse || o.preset ||
-        o.anisotropy || o.anisotropyRotation)
+        o.anisotropy || o.anisotropyRotation || o.clearcoat || o.clearcoatRoughness)
       throw std::invalid_argument("--material: cannot be combined with material flags");
     return materials::loadMaterial(*o.material_file);
   }
@@ -111,6 +114,8 @@ materials::Material resolveMaterial(const MaterialOptions& o) {
   if (o.diffuse) spec.diffuse = parseColor("--diffuse", *o.diffuse);
   if (o.anisotropy) spec.anisotropy = parseNumber("--anisotropy", *o.anisotropy);
   if (o.anisotropyRotation) spec.anisotropyRotation = parseNumber("--anisotropy-rotation", *o.anisotropyRotation);
+  if (o.clearcoat) spec.clearcoat = parseNumber("--clearcoat", *o.clearcoat);
+  if (o.clearcoatRoughness) spec.clearcoatRoughness = parseNumber("--clearcoat-roughness", *o.clearcoatRoughness);
   return materials::buildMaterial(spec, flagFor);
 }
 

@@ -139,6 +139,13 @@ struct PathState {
   float tangentX;
   float tangentY;
   float tangentZ;
+  // Clear coat (docs/shading.md, "Clear coat"): BrdfParams' strength, alpha
+  // and coat normal at the vertex.
+  float clearcoat;
+  float clearcoatAlpha;
+  float clearcoatNormalX;
+  float clearcoatNormalY;
+  float clearcoatNormalZ;
 };
 
 // PathState.flags: the vertex continues by continue_path_transmissive; v lies
@@ -267,6 +274,12 @@ struct MaterialRecord {
   float anisotropy;
   float anisotropyCos;
   float anisotropySin;
+  // Clear coat (docs/shading.md, "Clear coat"): the strength, the coat's
+  // microfacet alpha, and the prefiltered environment's DFG table of its
+  // (GGX, height-correlated Smith) lobe.
+  float clearcoat;
+  float clearcoatAlpha;
+  uint coatDfgTable;
 };
 
 // What the camera-side kernels need, one uniform block (std140 agrees: all

@@ -20,6 +20,7 @@
 #include "rules/shading/microfacet.h"
 #include "rules/shading/fresnel.h"
 #include "rules/shading/brdf.h"
+#include "rules/shading/clearcoat.h"
 #include "rules/shading/brdf_sampling.h"
 
 layout(local_size_x = 64) in;
@@ -66,7 +67,10 @@ void main() {
   p.diffuse = parameters.diffuse.xyz;
   p.anisotropy = parameters.tangent_anisotropy.w;
   p.tangent = parameters.tangent_anisotropy.xyz;
+  p.clearcoat = 0.0;  // the coat is tested through the rules' C++ instantiation
+  p.clearcoat_alpha = 0.0;
   vec3 n = cases[i].n.xyz;
+  p.clearcoat_normal = n;
   vec3 l = cases[i].l.xyz;
   vec3 v = cases[i].v.xyz;
   BrdfTerms t = brdf_terms(p, n, l, v);

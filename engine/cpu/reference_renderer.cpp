@@ -93,6 +93,7 @@ class ReferenceScene final : public PathScene {
     const bool outside = glm::dot(ng, v) >= 0;
     if (!outside) n = -n, ng = -ng;
     m::BrdfParams params = params_[std::size_t(hit.object)];
+    params.clearcoat_normal = n;  // the coat's normal: no normal map applies to it
     const int material = scene_.objects[std::size_t(hit.object)].material;
     double occlusion = 1.0;
     glm::dvec3 radiance = scene_.materials[std::size_t(material)].emission;
@@ -106,6 +107,8 @@ class ReferenceScene final : public PathScene {
     const std::optional<m::TransmissionParams>& transmission = transmission_[std::size_t(hit.object)];
     if (transmission) params = m::transmissive_brdf_params(params, *transmission, outside);
     if (params.anisotropy != 0.0) params.tangent = tangent(hit, material, n);
+    // The coat lies over the emission too (KHR_materials_clearcoat).
+    if (params.clearcoat != 0.0) radiance *= m::coat_transmittance(params, glm::dot(params.clearcoat_normal, v));
     const glm::dvec3 specularScale = ibl::specularScale(compensation_, material, params, glm::dot(n, v));
     if (environment_) {
       glm::dvec3 environment(0.0);
@@ -310,11 +313,20 @@ class ReferenceScene final : public PathScene {
     if (nv <= m::COS_EPSILON) return glm::dvec3(0.0);  // nothing to look up (the lobe may not even exist)
     const double alpha = m::isotropic_equivalent_alpha(params);
     const glm::dvec3 lobe = m::split_sum_direction(m::anisotropic_bent_normal(params, n, v), v, alpha);
+    const glm::dvec3 radiance = ibl::prefilteredRadiance(prefiltered, toMap(lobe), alpha);
+    const glm::dvec2 dfg =
+        ibl::dfgLookup(prefiltered.dfg[std::size_t(environment_->dfgTable[std::size_t(material)])], nv, alpha);
+    const glm::dvec3 irradiance = ibl::irradianceOverPi(prefiltered, toMap(n));
+    if (params.clearcoat == 0.0)
+      return environment_->environment->intensity * m::split_sum(params, nv, radiance, dfg, irradiance, specularScale);
+    const glm::dvec3 nc = params.clearcoat_normal;
+    const double nvCoat = glm::dot(nc, v), alphaCoat = params.clearcoat_alpha;
+    const glm::dvec3 coatLobe = m::split_sum_direction(nc, v, alphaCoat);
     return environment_->environment->intensity *
-           m::split_sum(
-               params, nv, ibl::prefilteredRadiance(prefiltered, toMap(lobe), alpha),
-               ibl::dfgLookup(prefiltered.dfg[std::size_t(environment_->dfgTable[std::size_t(material)])], nv, alpha),
-               ibl::irradianceOverPi(prefiltered, toMap(n)), specularScale);
+           m::coated_split_sum(
+               params, nv, radiance, dfg, irradiance, specularScale, nvCoat,
+               ibl::prefilteredRadiance(prefiltered, toMap(coatLobe), alphaCoat),
+               ibl::dfgLookup(prefiltered.dfg[std::size_t(environment_->coatDfgTable)], nvCoat, alphaCoat));
   }
 
   const scene::Scene& scene_;

@@ -84,6 +84,9 @@ std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
     r.anisotropy = p.anisotropy;
     r.anisotropyCos = float(std::cos(scene.materials[i].anisotropyRotation));
     r.anisotropySin = float(std::sin(scene.materials[i].anisotropyRotation));
+    r.clearcoat = p.clearcoat;
+    r.clearcoatAlpha = p.clearcoat_alpha;
+    r.coatDfgTable = prefiltered && environment->coatDfgTable >= 0 ? std::uint32_t(environment->coatDfgTable) : 0u;
     records.push_back(r);
   }
   return records;

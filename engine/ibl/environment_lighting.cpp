@@ -36,8 +36,15 @@ EnvironmentLighting prepareEnvironmentLighting(const scene::Scene& scene, const 
       break;
     case scene::IblMethod::Prefiltered: {
       ModelPairs pairs;
-      for (const materials::Material& material : scene.materials)
+      for (const materials::Material& material : scene.materials) {
         lighting.dfgTable.push_back(modelPairIndex(pairs, material));
+        if (material.clearcoat > 0.0 && lighting.coatDfgTable < 0) {
+          materials::Material coat;  // the coat's lobe (rules/shading/clearcoat.h)
+          coat.distribution = m::D_GGX;
+          coat.geometry = m::G_SMITH_GGX_CORRELATED;
+          lighting.coatDfgTable = modelPairIndex(pairs, coat);
+        }
+      }
       lighting.prefiltered = prefilter(*environment.map, pairs);
       break;
     }

@@ -23,6 +23,7 @@ struct EnvironmentLighting {
   EnvironmentDistribution distribution;  // sampled; filtered with environmentSamples
   PrefilteredEnvironment prefiltered;    // prefiltered
   std::vector<int> dfgTable;             // per scene material: index into prefiltered.dfg
+  int coatDfgTable = -1;                 // the clear coat's (GGX, correlated Smith) table, where a material has one
   std::vector<MipLevel> mipChain;        // filtered
   bool environmentSamples = false;       // filtered: pairs add the environment technique (filtered_environment.h)
   std::vector<MipLevel> pdfChain;        // filtered with environmentSamples: the density's chain, in all 3 channels

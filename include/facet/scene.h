@@ -46,6 +46,10 @@ struct Material {
   // normal.
   std::optional<double> anisotropy;
   std::optional<double> anisotropyRotation;
+  // A clear coat over the rest (docs/shading.md, "Clear coat"): its strength
+  // in [0, 1] and perceptual roughness, KHR_materials_clearcoat's factors.
+  std::optional<double> clearcoat;
+  std::optional<double> clearcoatRoughness;
 };
 
 // A Catmull-Clark control cage in world space; indices are 0-based and each

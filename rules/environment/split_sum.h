@@ -35,3 +35,24 @@ FACET_FN vec3 split_sum(BrdfParams p, real nv, vec3 prefiltered, vec2 dfg, vec3 
   return prefiltered * (fresnel_F(p, real(1)) * dfg.x + f90 * dfg.y) * specular_scale +
          p.diffuse * irradiance_over_pi;
 }
+
+// The split sum under a clear coat (docs/shading.md, "Clear coat"): the
+// coat's lobe from the levels at its alpha read about its normal n_c
+// (prefiltered_coat) and its (GGX, correlated Smith) table at n_c.v
+// (dfg_coat), F(0) = 0.04 and F90 = 1; the base's lobes as split_sum gives
+// them, times the coat's transmittance at n_c.v on the way out and on the
+// way in: at the mirror direction, n_c.v again, for the specular lobe; for
+// the diffuse lobe the cosine-weighted mean of the coat's Fresnel,
+// F0 + (1 - F0) / 21.
+FACET_FN vec3 coated_split_sum(BrdfParams p, real nv, vec3 prefiltered, vec2 dfg, vec3 irradiance_over_pi,
+                               vec3 specular_scale, real nv_coat, vec3 prefiltered_coat, vec2 dfg_coat) {
+  BrdfParams specular_only = p;
+  specular_only.diffuse = vec3(real(0));
+  vec3 specular = split_sum(specular_only, nv, prefiltered, dfg, irradiance_over_pi, specular_scale);
+  vec3 diffuse = nv <= COS_EPSILON ? vec3(real(0)) : p.diffuse * irradiance_over_pi;
+  real out_coat = coat_transmittance(p, nv_coat);
+  real in_diffuse = real(1) - p.clearcoat * (COAT_F0 + (real(1) - COAT_F0) / real(21));
+  vec3 coat = nv_coat <= COS_EPSILON ? vec3(real(0))
+                                     : prefiltered_coat * (p.clearcoat * (COAT_F0 * dfg_coat.x + dfg_coat.y));
+  return (specular * out_coat + diffuse * in_diffuse) * out_coat + coat;
+}

@@ -1,6 +1,7 @@
-// The whole BRDF
+// The base BRDF
 //   f(l, v) = F(v.h) G(l, v, h) D(h) / (4 (n.l)(n.v)) + c_diff / pi
-// for any choice of D, G and F.
+// for any choice of D, G and F; a clear coat over it is
+// rules/shading/clearcoat.h, which has the whole material's brdf_evaluate.
 
 // Which fields are read depends on the models: f0 for F_SCHLICK, eta for
 // F_DIELECTRIC (per channel, so dispersion is possible), eta and k for
@@ -8,6 +9,10 @@
 // anisotropy in [0, 1] is KHR_materials_anisotropy's strength: 0 is the
 // isotropic lobe (and its code path, bit for bit); above, alpha_t along
 // `tangent` (made orthogonal to n where used) is mix(alpha, 1, strength^2).
+// clearcoat in [0, 1] is KHR_materials_clearcoat's strength: 0 is the bare
+// base (and its code path, bit for bit); above, a GGX lobe of microfacet
+// alpha clearcoat_alpha about clearcoat_normal (the normal before any normal
+// map) lies over the base (clearcoat.h).
 struct BrdfParams {
   int d_model;
   int g_model;
@@ -19,6 +24,9 @@ struct BrdfParams {
   vec3 diffuse;
   real anisotropy;
   vec3 tangent;
+  real clearcoat;
+  real clearcoat_alpha;
+  vec3 clearcoat_normal;
 };
 
 // The isotropic alpha that stands for p's lobe where a table is indexed by
@@ -92,14 +100,4 @@ FACET_FN BrdfTerms brdf_terms(BrdfParams p, vec3 n, vec3 l, vec3 v) {
   t.diffuse = p.diffuse * INV_PI;
   t.value = t.specular + t.diffuse;
   return t;
-}
-
-FACET_FN vec3 brdf_evaluate(BrdfParams p, vec3 n, vec3 l, vec3 v) { return brdf_terms(p, n, l, v).value; }
-
-// f(l, v) with its specular lobe scaled per channel by `specular_scale`:
-// vec3(1) is the course's single-scattering model, bit for bit; energy
-// compensation's factor (rules/shading/dfg.h) restores what it loses.
-FACET_FN vec3 brdf_evaluate_scaled(BrdfParams p, vec3 n, vec3 l, vec3 v, vec3 specular_scale) {
-  BrdfTerms t = brdf_terms(p, n, l, v);
-  return t.specular * specular_scale + t.diffuse;
 }

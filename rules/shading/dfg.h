@@ -42,7 +42,10 @@ FACET_FN vec2 dfg_integrals(int d_model, int g_model, real nv, real alpha, int s
   p.diffuse = vec3(real(0));
   p.anisotropy = real(0);
   p.tangent = vec3(real(1), real(0), real(0));
+  p.clearcoat = real(0);
+  p.clearcoat_alpha = real(0);
   vec3 n = vec3(real(0), real(0), real(1));
+  p.clearcoat_normal = n;
   vec3 v = vec3(sqrt(max(real(1) - nv * nv, real(0))), real(0), nv);
   int technique = specular_technique(p);
   vec2 sum = vec2(real(0));

@@ -1,4 +1,5 @@
-// One BRDF sample across a material's two lobes, and its density
+// One BRDF sample across a material's lobes (the base's two, and a clear
+// coat's), and its density
 // (docs/rendering.md, "Sampled"). Needs the rules of rules/shading/.
 
 FACET_FN real luminance(vec3 c) { return real(0.2126) * c.x + real(0.7152) * c.y + real(0.0722) * c.z; }
@@ -22,11 +23,29 @@ FACET_FN int specular_technique(BrdfParams p) { return p.d_model == D_GGX ? SAMP
 // [0, 1).
 const real BELOW_ONE = real(0.99999994039535522461);
 
+// Probability of choosing the coat's lobe (clearcoat.h) before the base's:
+// the coat's reflectance c F(n_c.v) against what it lets through to the
+// base's lobes at normal incidence, kept within [0.1, 0.9] when both are
+// present. 0 without a coat, which leaves the base's choice as it was.
+FACET_FN real coat_lobe_probability(BrdfParams p, vec3 v) {
+  if (p.clearcoat == real(0)) return real(0);
+  real coat = p.clearcoat * coat_fresnel(dot(p.clearcoat_normal, v));
+  real base = (real(1) - coat) * (luminance(fresnel_F(p, real(1))) + luminance(p.diffuse));
+  if (base <= real(0)) return real(1);
+  return clamp(coat / (coat + base), real(0.1), real(0.9));
+}
+
+// u with u.x, past the coat's share p_coat, stretched back to [0, 1) for the
+// base's choice.
+FACET_FN vec2 base_lobes_u(real p_coat, vec2 u) {
+  return vec2(min((u.x - p_coat) / (real(1) - p_coat), BELOW_ONE), u.y);
+}
+
 // u.x picks the lobe and, stretched back to [0, 1) over the lobe's share, is
 // also the first coordinate of the direction within it: each lobe then
 // draws a stratified subset of a stratified point set, where a separate
 // lobe dimension would hand it a random one.
-FACET_FN vec3 sample_brdf_lobes(BrdfParams p, vec3 n, vec3 v, vec2 u) {
+FACET_FN vec3 sample_base_lobes(BrdfParams p, vec3 n, vec3 v, vec2 u) {
   real p_spec = specular_lobe_probability(p);
   if (u.x < p_spec)
     return sample_direction(specular_technique(p), p, n, v, vec2(min(u.x / p_spec, BELOW_ONE), u.y));
@@ -34,10 +53,27 @@ FACET_FN vec3 sample_brdf_lobes(BrdfParams p, vec3 n, vec3 v, vec2 u) {
                           vec2(min((u.x - p_spec) / (real(1) - p_spec), BELOW_ONE), u.y));
 }
 
-FACET_FN real brdf_lobes_pdf(BrdfParams p, vec3 n, vec3 l, vec3 v) {
+FACET_FN real base_lobes_pdf(BrdfParams p, vec3 n, vec3 l, vec3 v) {
   real p_spec = specular_lobe_probability(p);
   real pdf = real(0);
   if (p_spec > real(0)) pdf += p_spec * direction_pdf(specular_technique(p), p, n, l, v);
   if (p_spec < real(1)) pdf += (real(1) - p_spec) * direction_pdf(SAMPLE_COSINE, p, n, l, v);
   return pdf;
+}
+
+// The coat's lobe takes the first share of u.x, its visible normals about n_c.
+FACET_FN vec3 sample_brdf_lobes(BrdfParams p, vec3 n, vec3 v, vec2 u) {
+  real p_coat = coat_lobe_probability(p, v);
+  if (p_coat == real(0)) return sample_base_lobes(p, n, v, u);
+  if (u.x < p_coat)
+    return sample_direction(SAMPLE_GGX_VISIBLE, coat_lobe_params(p), p.clearcoat_normal, v,
+                            vec2(min(u.x / p_coat, BELOW_ONE), u.y));
+  return sample_base_lobes(p, n, v, base_lobes_u(p_coat, u));
+}
+
+FACET_FN real brdf_lobes_pdf(BrdfParams p, vec3 n, vec3 l, vec3 v) {
+  real p_coat = coat_lobe_probability(p, v);
+  if (p_coat == real(0)) return base_lobes_pdf(p, n, l, v);
+  return p_coat * direction_pdf(SAMPLE_GGX_VISIBLE, coat_lobe_params(p), p.clearcoat_normal, l, v) +
+         (real(1) - p_coat) * base_lobes_pdf(p, n, l, v);
 }

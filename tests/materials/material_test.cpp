@@ -232,5 +232,34 @@ TEST(MaterialAnisotropy, BadInputsNameTheField) {
   }
 }
 
+TEST(MaterialClearcoat, UncoatedByDefaultReadAndRoundTrips) {
+  EXPECT_EQ(build(R"({"alpha": 0.1})").clearcoat, 0.0);
+  const Material m = build(R"({"alpha": 0.2, "diffuse": 0.5, "clearcoat": 0.8, "clearcoat_roughness": 0.3})");
+  EXPECT_EQ(m.clearcoat, 0.8);
+  EXPECT_EQ(m.clearcoatRoughness, 0.3);
+  const Material again = build(toJson(m).dump());
+  EXPECT_EQ(again.clearcoat, 0.8);
+  EXPECT_EQ(again.clearcoatRoughness, 0.3);
+  const rules::f64::BrdfParams p = toParams64(m);
+  EXPECT_EQ(p.clearcoat, 0.8);
+  EXPECT_NEAR(p.clearcoat_alpha, 0.09, 1e-15);  // alpha = roughness^2
+  EXPECT_EQ(p.clearcoat_normal, glm::dvec3(0, 0, 1));
+}
+
+TEST(MaterialClearcoat, BadInputsNameTheField) {
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "clearcoat": 1.5})"), "test.json: field 'clearcoat': must be in [0, 1], got 1.5");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "clearcoat": 1, "clearcoat_roughness": -0.2})"),
+            "test.json: field 'clearcoat_roughness': must be in [0, 1], got -0.2");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "clearcoat": "thick"})"), "test.json: field 'clearcoat': expected a number");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "clearcoat_roughness": 0.1})"),
+            "test.json: field 'clearcoat_roughness': is only used with clearcoat (give clearcoat too)");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "ior": 1.5, "transmission": 1, "clearcoat": 0.5})"),
+            "test.json: field 'clearcoat': is not defined for a transmissive material (transmission > 0)");
+  MaterialSpec spec;
+  spec.alpha = 0.1;
+  spec.clearcoat = std::nan("");
+  EXPECT_THROW(buildMaterial(spec, [](std::string_view field) { return std::string(field); }), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace facet::materials

@@ -242,6 +242,12 @@ class Scenes(unittest.TestCase):
         brushed = facet.Material(preset="aluminum", roughness=0.3, anisotropy=0.6, anisotropy_rotation=0.5)
         self.assertEqual((brushed.anisotropy, brushed.anisotropy_rotation), (0.6, 0.5))
         facet.Scene([facet.Object(cube())], materials=[brushed])  # within the rules
+        with self.assertRaisesRegex(facet.Error, r"materials\[0\].clearcoat_roughness: must be in \[0, 1\]"):
+            facet.Scene([facet.Object(cube())],
+                        materials=[facet.Material(roughness=0.3, clearcoat=1.0, clearcoat_roughness=-0.1)])
+        lacquer = facet.Material(roughness=0.5, diffuse=(0.5, 0.5, 0.5), clearcoat=0.8, clearcoat_roughness=0.05)
+        self.assertEqual((lacquer.clearcoat, lacquer.clearcoat_roughness), (0.8, 0.05))
+        facet.Scene([facet.Object(cube())], materials=[lacquer])  # within the rules
         with self.assertRaisesRegex(facet.Error, "camera: eye and target must differ"):
             facet.Scene([facet.Object(cube())], camera=facet.Camera(eye=(0, 0, 0)))
         with self.assertRaisesRegex(facet.Error, "environment.file"):

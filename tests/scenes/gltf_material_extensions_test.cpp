@@ -1,6 +1,6 @@
 // glTF material extensions facet reads beyond those of transmission
-// (gltf_transmission_test.cpp): KHR_materials_emissive_strength and
-// KHR_materials_specular.
+// (gltf_transmission_test.cpp): KHR_materials_emissive_strength,
+// KHR_materials_specular and KHR_materials_clearcoat.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -108,6 +108,47 @@ TEST_F(GltfMaterialExtensions, SpecularFactorsAreChecked) {
   fails("factor", {{"specularFactor", 2.0}}, "KHR_materials_specular.specularFactor: must be in [0, 1], is 2");
   fails("colour", {{"specularColorFactor", {1.0, -1.0, 1.0}}},
         "KHR_materials_specular.specularColorFactor: every component must be a finite number >= 0");
+}
+
+TEST_F(GltfMaterialExtensions, ClearcoatFactorsAreReadAndItsTexturesWarned) {
+  const nlohmann::json coat = {{"clearcoatFactor", 0.75}, {"clearcoatRoughnessFactor", 0.2}};
+  const Scene scene = loadScene(write("coat", {{"extensions", {{"KHR_materials_clearcoat", coat}}}}));
+  EXPECT_EQ(scene.materials.at(0).clearcoat, 0.75);
+  EXPECT_EQ(scene.materials.at(0).clearcoatRoughness, 0.2);
+  EXPECT_THAT(scene.warnings, IsEmpty());
+  // Without the extension there is no coat; each texture is one warning.
+  EXPECT_EQ(loadScene(write("bare", nlohmann::json::object())).materials.at(0).clearcoat, 0.0);
+  nlohmann::json textured = coat;
+  for (const char* slot : {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"})
+    textured[slot] = {{"index", 0}};
+  const Scene warned = loadScene(write("textured", {{"extensions", {{"KHR_materials_clearcoat", textured}}}}));
+  EXPECT_EQ(warned.materials.at(0).clearcoat, 0.75);
+  EXPECT_THAT(warned.warnings,
+              ElementsAre(HasSubstr("KHR_materials_clearcoat.clearcoatTexture: is not read; the coat has "
+                                    "clearcoatFactor everywhere"),
+                          HasSubstr("KHR_materials_clearcoat.clearcoatRoughnessTexture: is not read"),
+                          HasSubstr("KHR_materials_clearcoat.clearcoatNormalTexture: is not read; the coat follows "
+                                    "the surface's normal")));
+  const std::filesystem::path bad =
+      write("bad", {{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1.5}}}}}});
+  EXPECT_THAT([&] { loadScene(bad); }, ThrowsMessage<InputError>(HasSubstr("KHR_materials_clearcoat.clearcoatFactor")));
+}
+
+TEST_F(GltfMaterialExtensions, AClearCoatLiesOverTheEmission) {
+  // Seen head-on, a full coat keeps 1 - F(1) = 0.96 of the emission under it
+  // (KHR_materials_clearcoat, "Emission"), and reflects its own 4%.
+  auto centre = [&](const std::string& name, const nlohmann::json& extensions) {
+    Scene scene = loadScene(write(name, {{"emissiveFactor", {1.0, 1.0, 1.0}}, {"extensions", extensions}}));
+    scene.render.width = scene.render.height = 8;
+    scene.camera = {{0.0, 0.0, 3.0}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 20.0};
+    return cpu::renderReference(scene, buildGeometry(scene)).beauty[std::size_t(4 * 8 + 4)];
+  };
+  nlohmann::json coated = strength(5.0);
+  coated["KHR_materials_clearcoat"] = {{"clearcoatFactor", 1.0}};
+  const glm::vec4 bare = centre("bare", strength(5.0)), coat = centre("coated", coated);
+  EXPECT_LT(coat.g, bare.g);
+  EXPECT_GT(coat.g, 0.96f * 5.0f);
+  EXPECT_LT(coat.g, 0.96f * 5.0f + 0.5f);
 }
 
 }  // namespace

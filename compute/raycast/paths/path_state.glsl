@@ -32,7 +32,8 @@ PathState pack_path_state(vec3 throughput, bool alive, PathVertex x, PathMedium 
                    p.k.z, p.diffuse.x, p.diffuse.y, p.diffuse.z, x.specular_scale.x, x.specular_scale.y,
                    x.specular_scale.z, medium.material, medium.flags, medium.sigma.x, medium.sigma.y,
                    medium.sigma.z, taken.x, taken.y, taken.z, p.anisotropy, p.tangent.x, p.tangent.y,
-                   p.tangent.z);
+                   p.tangent.z, p.clearcoat, p.clearcoat_alpha, p.clearcoat_normal.x, p.clearcoat_normal.y,
+                   p.clearcoat_normal.z);
 }
 
 vec3 path_throughput(PathState s) { return vec3(s.throughputR, s.throughputG, s.throughputB); }
@@ -62,6 +63,9 @@ PathVertex path_vertex(PathState s) {
   p.diffuse = vec3(s.diffuseR, s.diffuseG, s.diffuseB);
   p.anisotropy = s.anisotropy;
   p.tangent = vec3(s.tangentX, s.tangentY, s.tangentZ);
+  p.clearcoat = s.clearcoat;
+  p.clearcoat_alpha = s.clearcoatAlpha;
+  p.clearcoat_normal = vec3(s.clearcoatNormalX, s.clearcoatNormalY, s.clearcoatNormalZ);
   return PathVertex(vec3(s.positionX, s.positionY, s.positionZ), vec3(s.nX, s.nY, s.nZ), vec3(s.ngX, s.ngY, s.ngZ),
                     vec3(s.vX, s.vY, s.vZ), p, vec3(s.specularR, s.specularG, s.specularB));
 }

@@ -36,6 +36,8 @@
 // ANISOTROPY (docs/shading.md, "Anisotropy"): 1 when some material is
 // anisotropic; its hits evaluate the tangent field, and 0 keeps every lobe
 // on the isotropic path.
+// CLEARCOAT (docs/shading.md, "Clear coat"): 1 when some material has a
+// clear coat; 0 keeps every material on the bare base's path.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -47,6 +49,7 @@
 #include "rules/shading/microfacet.h"
 #include "rules/shading/fresnel.h"
 #include "rules/shading/brdf.h"
+#include "rules/shading/clearcoat.h"
 #include "rules/shading/brdf_sampling.h"
 #include "rules/environment/environment_mapping.h"
 #include "rules/sampling/mis.h"
@@ -83,6 +86,7 @@ layout(constant_id = 11) const int PATHS = 0;
 layout(constant_id = 12) const int TRANSMISSION = 0;
 layout(constant_id = 13) const int LOBE_LIMITS = 0;
 layout(constant_id = 14) const int ANISOTROPY = 0;
+layout(constant_id = 15) const int CLEARCOAT = 0;
 
 layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
 layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord materials[]; };
@@ -130,6 +134,9 @@ BrdfParams brdf_params(uint index) {
   p.diffuse = vec3(m.diffuseR, m.diffuseG, m.diffuseB);
   p.anisotropy = ANISOTROPY == 1 ? m.anisotropy : 0.0;
   p.tangent = vec3(1.0, 0.0, 0.0);  // set per hit from the tangent field where anisotropic
+  p.clearcoat = CLEARCOAT == 1 ? m.clearcoat : 0.0;
+  p.clearcoat_alpha = m.clearcoatAlpha;
+  p.clearcoat_normal = vec3(0.0, 0.0, 1.0);  // set per hit: the normal before any normal map
   return p;
 }
 
@@ -189,9 +196,20 @@ void shade_environment(uint first, uint pixel, uint sample_index, uint material,
     }
     float alpha = isotropic_equivalent_alpha(params);
     vec3 lobe = split_sum_direction(anisotropic_bent_normal(params, n, v), v, alpha);
-    vec3 radiance = split_sum(params, nv, prefiltered_radiance(to_map(lobe), alpha),
-                              dfg_lookup(materials[material].dfgTable, nv, alpha),
-                              irradiance_over_pi(to_map(n)), specular_scale);
+    vec3 prefiltered = prefiltered_radiance(to_map(lobe), alpha);
+    vec2 dfg = dfg_lookup(materials[material].dfgTable, nv, alpha);
+    vec3 irradiance = irradiance_over_pi(to_map(n));
+    vec3 radiance;
+    if (CLEARCOAT == 1 && params.clearcoat != 0.0) {
+      vec3 nc = params.clearcoat_normal;
+      float nv_coat = dot(nc, v), alpha_coat = params.clearcoat_alpha;
+      vec3 coat_lobe = split_sum_direction(nc, v, alpha_coat);
+      radiance = coated_split_sum(params, nv, prefiltered, dfg, irradiance, specular_scale, nv_coat,
+                                  prefiltered_radiance(to_map(coat_lobe), alpha_coat),
+                                  dfg_lookup(materials[material].coatDfgTable, nv_coat, alpha_coat));
+    } else {
+      radiance = split_sum(params, nv, prefiltered, dfg, irradiance, specular_scale);
+    }
     write_unshadowed(first, occlusion * frame.environmentIntensity * radiance);
     return;
   }
@@ -303,6 +321,7 @@ void main() {
   }
 
   BrdfParams params = brdf_params(range.material);
+  if (CLEARCOAT == 1) params.clearcoat_normal = n;  // no normal map applies to the coat
   MaterialRecord m = materials[range.material];
   float occlusion = 1.0;
   vec3 emission = vec3(m.emissionR, m.emissionG, m.emissionB);
@@ -319,6 +338,8 @@ void main() {
     params.tangent = surface_tangent(n, point.ds, point.dt, m.anisotropyCos, m.anisotropySin);
   }
   vec3 v = -direction;
+  // The coat lies over the emission too (KHR_materials_clearcoat).
+  if (CLEARCOAT == 1 && params.clearcoat != 0.0) emission *= coat_transmittance(params, dot(params.clearcoat_normal, v));
   vec3 specular_scale = material_specular_scale(m.compensationTable, params, dot(n, v));
   for (int l = 0; l < LIGHT_COUNT; ++l) {
     LightIncidence incidence = light_incidence(punctual_light(lights[l]), position);
