@@ -149,10 +149,10 @@ class Picture {
   Picture(Renderer& renderer, Backend backend, unsigned threads, const WatchedScene& io)
       : renderer_(renderer), backend_(backend), threads_(threads), io_(io) {}
 
-  // Renders pass `pass` of `scene` and writes the picture; returns the
-  // render's wall clock and whether it diced its geometry anew.
+  // Renders pass `pass` of `scene` into the picture; returns the render's
+  // wall clock, its stages' sum and whether it diced its geometry anew.
   struct Pass {
-    double renderMilliseconds = 0, writeMilliseconds = 0;
+    double renderMilliseconds = 0, stageMilliseconds = 0, writeMilliseconds = 0;
     bool diced = false;
   };
   Pass render(const scene::Scene& scene, int pass) {
@@ -167,16 +167,21 @@ class Picture {
     RenderReport report = renderer_.render(frame.scene, backend_, {}, {crop, threads_});
     Pass timing;
     timing.renderMilliseconds = millisecondsSince(start);
+    timing.stageMilliseconds = report.totalMilliseconds();
     timing.diced = std::any_of(report.stages.begin(), report.stages.end(),
                                [](const StageTime& s) { return s.stage == Stage::DiceCells; });
     rounds_->add(report.image, {-frame.dx, 0, width + frame.dx, height}, {0});
     if (pass == 0) first_ = std::move(report.image);
+    return timing;
+  }
+
+  // Writes the picture of passes 0 to `pass`; returns its wall clock.
+  double write(const scene::Scene& scene, int pass) {
+    const Clock::time_point start = Clock::now();
     Image image = first_;
     image.beauty = rounds_->beauty();
-    start = Clock::now();
     io_.write(scene, image, pass + 1);
-    timing.writeMilliseconds = millisecondsSince(start);
-    return timing;
+    return millisecondsSince(start);
   }
 
  private:
@@ -256,30 +261,35 @@ void watchScene(Renderer& renderer, Backend backend, unsigned threads, const Wat
     const std::string what = changes == 0 ? "first picture of " + nameFiles(files) : nameFiles(changed) + " changed";
     if (!scene) say(what + ": not rendered; the outputs keep the last picture");
     const Clock::time_point pictureStart = start;
-    int pass = 0;
-    for (; scene && pass < options.passes && !signals.stopped(); ++pass) {
+    int written = 0;  // passes in the outputs
+    for (int pass = 0; scene && pass < options.passes && !signals.stopped(); ++pass) {
       Picture::Pass timing;
       try {
         timing = picture.render(*scene, pass);
+        // A refining pass of a picture whose files changed meanwhile is not worth writing.
+        if (pass > 0 && !changedFiles(stamps).empty()) break;
+        timing.writeMilliseconds = picture.write(*scene, pass);
+        written = pass + 1;
       } catch (...) {
         if (!isBadInput(std::current_exception())) throw;
         printError(std::current_exception());
         break;
       }
       if (pass == 0) {
-        char line[256];
-        std::snprintf(line, sizeof line, "%s: %dx%d, %d spp in %.0f ms (load %.0f ms, render %.0f ms%s, write %.0f ms)",
-                      what.c_str(), scene->render.width, scene->render.height, scene->render.samplesPerPixel,
-                      millisecondsSince(start), loadMilliseconds, timing.renderMilliseconds,
-                      timing.diced ? ", geometry diced" : ", geometry kept", timing.writeMilliseconds);
-        say(line);
+        char numbers[200];
+        std::snprintf(numbers, sizeof numbers,
+                      "%dx%d, %d spp in %.0f ms (load %.0f ms, render %.0f ms, its stages %.0f ms, %s, write %.0f ms)",
+                      scene->render.width, scene->render.height, scene->render.samplesPerPixel,
+                      millisecondsSince(start), loadMilliseconds, timing.renderMilliseconds, timing.stageMilliseconds,
+                      timing.diced ? "geometry diced" : "geometry kept", timing.writeMilliseconds);
+        say(what + ": " + numbers);
       }
       if (!changedFiles(stamps).empty()) break;
     }
-    if (pass > 1) {
+    if (written > 1) {
       char line[160];
-      std::snprintf(line, sizeof line, "refined to %d passes, %d spp, in %.1f s", pass,
-                    pass * scene->render.samplesPerPixel, millisecondsSince(pictureStart) / 1000.0);
+      std::snprintf(line, sizeof line, "refined to %d passes, %d spp, in %.1f s", written,
+                    written * scene->render.samplesPerPixel, millisecondsSince(pictureStart) / 1000.0);
       say(line);
     }
     if (signals.stopped() || (options.limit > 0 && changes >= options.limit)) return;
