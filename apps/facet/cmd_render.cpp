@@ -144,9 +144,9 @@ void runWatch(const RenderCommandOptions& o) {
     printWarnings(fresh, o.farm.quiet);
     return scene;
   };
-  watched.write = [&](const scene::Scene& scene, const Image& image, int passes) {
+  watched.write = [&](const scene::Scene& scene, const Image& image, int passes, int samples) {
     writeOutputs(o, job, scene, image, PixelRect::whole(image.width, image.height), preview,
-                 " watchPasses=" + std::to_string(passes));
+                 " watchPasses=" + std::to_string(passes) + " watchSpp=" + std::to_string(samples));
   };
   Renderer renderer(o.adapter);
   watchScene(renderer, backend, threads, watched, o.watch, o.farm.quiet);

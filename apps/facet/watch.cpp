@@ -140,6 +140,12 @@ void printError(const std::exception_ptr& error) {
   }
 }
 
+// At 1 spp a pixel's one sample passes through its centre
+// (rules/camera/sample_plan.h), so passes of 1 would all be alike: the
+// first pass of such a picture is a quick look, and its refining passes
+// take a net of this many samples each, their mean alone the beauty.
+constexpr int kRefiningSpp = 4;
+
 // One picture, refined pass by pass until its passes are done, a file
 // changes or a signal comes: the rounds of engine/adaptive_render.h over the
 // whole image, the beauty their mean and the AOVs the first pass's, which
@@ -157,13 +163,18 @@ class Picture {
   };
   Pass render(const scene::Scene& scene, int pass) {
     const int width = scene.render.width, height = scene.render.height;
-    if (pass == 0) rounds_.emplace(width, height, std::max(width, height));
+    const bool quickLook = scene.render.samplesPerPixel == 1;
     RoundFrame frame = roundFrame(scene, pass);
     if (frame.scene.environment) frame.scene.environment->seed = scene.environment->seed + std::uint32_t(pass);
+    if (quickLook && pass > 0) frame.scene.render.samplesPerPixel = kRefiningSpp;
+    if (pass == 0 || (quickLook && pass == 1)) {
+      rounds_.emplace(width, height, std::max(width, height));
+      samples_ = 0;
+    }
     // Whole rows of the round's larger image: a crop narrower than the image
     // is rendered a row at a time (one submission each), its rows cost less.
     const PixelRect crop{0, frame.dy, frame.scene.render.width, frame.dy + height};
-    Clock::time_point start = Clock::now();
+    const Clock::time_point start = Clock::now();
     RenderReport report = renderer_.render(frame.scene, backend_, {}, {crop, threads_});
     Pass timing;
     timing.renderMilliseconds = millisecondsSince(start);
@@ -171,18 +182,22 @@ class Picture {
     timing.diced = std::any_of(report.stages.begin(), report.stages.end(),
                                [](const StageTime& s) { return s.stage == Stage::DiceCells; });
     rounds_->add(report.image, {-frame.dx, 0, width + frame.dx, height}, {0});
+    samples_ += frame.scene.render.samplesPerPixel;
+    passes_ = pass + 1;
     if (pass == 0) first_ = std::move(report.image);
     return timing;
   }
 
-  // Writes the picture of passes 0 to `pass`; returns its wall clock.
-  double write(const scene::Scene& scene, int pass) {
+  // Writes the picture as its passes so far make it; returns its wall clock.
+  double write(const scene::Scene& scene) {
     const Clock::time_point start = Clock::now();
     Image image = first_;
     image.beauty = rounds_->beauty();
-    io_.write(scene, image, pass + 1);
+    io_.write(scene, image, passes_, samples_);
     return millisecondsSince(start);
   }
+
+  int samples() const { return samples_; }  // per pixel, in the beauty
 
  private:
   Renderer& renderer_;
@@ -190,6 +205,7 @@ class Picture {
   unsigned threads_;
   const WatchedScene& io_;
   std::optional<SampleRounds> rounds_;
+  int samples_ = 0, passes_ = 0;
   Image first_;
 };
 
@@ -202,8 +218,10 @@ void addWatchOptions(CLI::App& command, WatchOptions& options) {
   command.add_option("--watch-limit", options.limit, "With --watch: stop after this many changes (0: never)")
       ->check(CLI::Range(0, 1000000));
   command
-      .add_option("--watch-passes", options.passes,
-                  "With --watch: passes of each picture, each adding --spp samples per pixel and rewriting the outputs")
+      .add_option(
+          "--watch-passes", options.passes,
+          "With --watch: passes of each picture, each adding --spp samples per pixel (at least 4 after the first) and "
+          "rewriting the outputs")
       ->check(CLI::Range(1, 4096));
 }
 
@@ -268,7 +286,7 @@ void watchScene(Renderer& renderer, Backend backend, unsigned threads, const Wat
         timing = picture.render(*scene, pass);
         // A refining pass of a picture whose files changed meanwhile is not worth writing.
         if (pass > 0 && !changedFiles(stamps).empty()) break;
-        timing.writeMilliseconds = picture.write(*scene, pass);
+        timing.writeMilliseconds = picture.write(*scene);
         written = pass + 1;
       } catch (...) {
         if (!isBadInput(std::current_exception())) throw;
@@ -288,8 +306,8 @@ void watchScene(Renderer& renderer, Backend backend, unsigned threads, const Wat
     }
     if (written > 1) {
       char line[160];
-      std::snprintf(line, sizeof line, "refined to %d passes, %d spp, in %.1f s", written,
-                    written * scene->render.samplesPerPixel, millisecondsSince(pictureStart) / 1000.0);
+      std::snprintf(line, sizeof line, "refined to %d passes, %d spp, in %.1f s", written, picture.samples(),
+                    millisecondsSince(pictureStart) / 1000.0);
       say(line);
     }
     if (signals.stopped() || (options.limit > 0 && changes >= options.limit)) return;

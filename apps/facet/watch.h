@@ -22,7 +22,7 @@ namespace facet::cli {
 struct WatchOptions {
   bool watch = false;
   int limit = 0;    // changes to handle before it stops; 0: until SIGINT or SIGTERM
-  int passes = 16;  // passes of each picture, each adding the scene's spp
+  int passes = 16;  // passes of each picture, each adding the scene's spp (watch.cpp: at least 4 after the first)
 };
 
 void addWatchOptions(CLI::App& command, WatchOptions& options);
@@ -34,10 +34,11 @@ void checkWatchFlags(const CLI::App& command, const WatchOptions& options, const
 
 // What a watch does with its scene: loads it as `facet render` does (bad
 // input throws scene::InputError or std::invalid_argument), and writes a
-// picture of it, `passes` passes refined, to the command's outputs.
+// picture of it to the command's outputs: `passes` passes, whose beauty has
+// `samples` samples per pixel.
 struct WatchedScene {
   std::function<scene::Scene()> load;
-  std::function<void(const scene::Scene& scene, const Image& image, int passes)> write;
+  std::function<void(const scene::Scene& scene, const Image& image, int passes, int samples)> write;
 };
 
 // Renders the scene, then again on each change, until SIGINT or SIGTERM

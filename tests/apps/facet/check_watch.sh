@@ -1,7 +1,8 @@
 #!/bin/bash
 # facet render --watch end to end, on the GPU backend at 32x32:
-#   - the first picture, then a new one when the material file changes
-#     (red, then green), with the geometry kept on the device;
+#   - the first picture, refined by a second pass (4 samples a pixel: its
+#     silhouette anti-aliased), then a new one when the material file
+#     changes (red, then green), with the geometry kept on the device;
 #   - a broken material file: an error line, the process still running and
 #     the picture untouched; fixed (blue), it renders again;
 #   - SIGTERM: exit 0, the outputs complete, no temporaries;
@@ -49,13 +50,22 @@ watchdog() {
   kill -KILL $1) >/dev/null 2>&1 &
 }
 
-"$facet" render scene.json --watch --watch-passes 2 -o out.png --backend gpu >log.txt 2>err.txt &
+"$facet" render scene.json --watch --watch-passes 2 -o out.exr --png out.png --backend gpu >log.txt 2>err.txt &
 pid=$!
 watchdog $pid
 
 await '[ "$(pictures)" -ge 1 ]' 90 || fail "no first picture"
 grep -q "first picture of scene.json" log.txt || fail "the first picture's line does not name the scene"
 above out.png 0 1 || fail "the first picture is not red (R $(mean out.png 0), G $(mean out.png 1))"
+# One sample a pixel covers it or not; the refining pass's net covers the
+# silhouette's pixels in part.
+/usr/bin/python3 - <<'PY' || fail "the refined picture's silhouette is not anti-aliased"
+import OpenImageIO as oiio, numpy
+alpha = oiio.ImageBuf("out.exr").get_pixels(oiio.FLOAT)[:, :, 3]
+spec = oiio.ImageBuf("out.exr").spec()
+assert "watchPasses=2 watchSpp=4" in spec.get_string_attribute("facetRenderSettings"), spec.get_string_attribute("facetRenderSettings")
+assert ((alpha > 0.01) & (alpha < 0.99)).sum() >= 8, ((alpha > 0.01) & (alpha < 0.99)).sum()
+PY
 
 material "0.02, 0.6, 0.02"
 await '[ "$(pictures)" -ge 2 ]' 30 || fail "no picture after the material changed"
