@@ -156,10 +156,11 @@ class Picture {
       : renderer_(renderer), backend_(backend), threads_(threads), io_(io) {}
 
   // Renders pass `pass` of `scene` into the picture; returns the render's
-  // wall clock, its stages' sum and whether it diced its geometry anew.
+  // wall clock, its stages' sum and, on the GPU, whether it diced its
+  // geometry anew (the CPU reference keeps nothing between renders).
   struct Pass {
     double renderMilliseconds = 0, stageMilliseconds = 0, writeMilliseconds = 0;
-    bool diced = false;
+    std::string geometry;
   };
   Pass render(const scene::Scene& scene, int pass) {
     const int width = scene.render.width, height = scene.render.height;
@@ -179,8 +180,11 @@ class Picture {
     Pass timing;
     timing.renderMilliseconds = millisecondsSince(start);
     timing.stageMilliseconds = report.totalMilliseconds();
-    timing.diced = std::any_of(report.stages.begin(), report.stages.end(),
-                               [](const StageTime& s) { return s.stage == Stage::DiceCells; });
+    if (backend_ == Backend::Gpu)
+      timing.geometry = std::any_of(report.stages.begin(), report.stages.end(),
+                                    [](const StageTime& s) { return s.stage == Stage::DiceCells; })
+                            ? ", geometry diced"
+                            : ", geometry kept";
     rounds_->add(report.image, {-frame.dx, 0, width + frame.dx, height}, {0});
     samples_ += frame.scene.render.samplesPerPixel;
     passes_ = pass + 1;
@@ -296,10 +300,10 @@ void watchScene(Renderer& renderer, Backend backend, unsigned threads, const Wat
       if (pass == 0) {
         char numbers[200];
         std::snprintf(numbers, sizeof numbers,
-                      "%dx%d, %d spp in %.0f ms (load %.0f ms, render %.0f ms, its stages %.0f ms, %s, write %.0f ms)",
+                      "%dx%d, %d spp in %.0f ms (load %.0f ms, render %.0f ms, its stages %.0f ms%s, write %.0f ms)",
                       scene->render.width, scene->render.height, scene->render.samplesPerPixel,
                       millisecondsSince(start), loadMilliseconds, timing.renderMilliseconds, timing.stageMilliseconds,
-                      timing.diced ? "geometry diced" : "geometry kept", timing.writeMilliseconds);
+                      timing.geometry.c_str(), timing.writeMilliseconds);
         say(what + ": " + numbers);
       }
       if (!changedFiles(stamps).empty()) break;
