@@ -18,6 +18,7 @@
 #include "engine/image/sample_rounds.h"
 #include "scenes/input_error.h"
 #include "scenes/input_file.h"
+#include "rules/rules.h"
 
 namespace facet::cli {
 namespace {
@@ -145,6 +146,8 @@ void printError(const std::exception_ptr& error) {
 // first pass of such a picture is a quick look, and its refining passes
 // take a net of this many samples each, their mean alone the beauty.
 constexpr int kRefiningSpp = 4;
+// A change waits at most about this long for the refining pass in progress.
+constexpr double kStripMilliseconds = 100;
 
 // One picture, refined pass by pass until its passes are done, a file
 // changes or a signal comes: the rounds of engine/adaptive_render.h over the
@@ -157,38 +160,56 @@ class Picture {
 
   // Renders pass `pass` of `scene` into the picture; returns the render's
   // wall clock, its stages' sum and, on the GPU, whether it diced its
-  // geometry anew (the CPU reference keeps nothing between renders).
+  // geometry anew (the CPU reference keeps nothing between renders). A
+  // refining pass is rendered in strips of whole rows, each of about
+  // kStripMilliseconds, and ends unfinished, the picture as it was, when
+  // `stale` says so between two: nothing (a change waits for a strip, not a pass).
   struct Pass {
     double renderMilliseconds = 0, stageMilliseconds = 0, writeMilliseconds = 0;
     std::string geometry;
   };
-  Pass render(const scene::Scene& scene, int pass) {
+  std::optional<Pass> render(const scene::Scene& scene, int pass, const std::function<bool()>& stale) {
     const int width = scene.render.width, height = scene.render.height;
     const bool quickLook = scene.render.samplesPerPixel == 1;
     RoundFrame frame = roundFrame(scene, pass);
     if (frame.scene.environment) frame.scene.environment->seed = scene.environment->seed + std::uint32_t(pass);
     if (quickLook && pass > 0) frame.scene.render.samplesPerPixel = kRefiningSpp;
+    const int roundWidth = frame.scene.render.width;
+    const std::uint32_t strata = rules::f64::sample_strata(std::uint32_t(frame.scene.render.samplesPerPixel));
+    const double rays = double(rules::f64::rays_per_pixel(strata)) * roundWidth;  // per row
+    const int rows = pass == 0 ? height : std::clamp(int(kStripMilliseconds / (millisecondsPerRay_ * rays)), 1, height);
+    Image round;  // the pass's beauty over whole rows of the round's image
+    round.width = roundWidth;
+    round.height = height;
+    Pass timing;
+    for (int y0 = 0; y0 < height; y0 += rows) {
+      if (y0 > 0 && stale()) return std::nullopt;
+      // Whole rows of the round's larger image: a crop narrower than the
+      // image is rendered a row at a time (one submission each).
+      const int y1 = std::min(height, y0 + rows);
+      const PixelRect crop{0, frame.dy + y0, roundWidth, frame.dy + y1};
+      const Clock::time_point start = Clock::now();
+      RenderReport report = renderer_.render(frame.scene, backend_, {}, {crop, threads_});
+      const double milliseconds = millisecondsSince(start);
+      // By the stages: the wall clock of the first render holds the pipelines' compilation too.
+      millisecondsPerRay_ = std::max(report.totalMilliseconds(), 0.01) / (rays * (y1 - y0));
+      timing.renderMilliseconds += milliseconds;
+      timing.stageMilliseconds += report.totalMilliseconds();
+      if (backend_ == Backend::Gpu && timing.geometry != ", geometry diced")
+        timing.geometry = std::any_of(report.stages.begin(), report.stages.end(),
+                                      [](const StageTime& s) { return s.stage == Stage::DiceCells; })
+                              ? ", geometry diced"
+                              : ", geometry kept";
+      round.beauty.insert(round.beauty.end(), report.image.beauty.begin(), report.image.beauty.end());
+      if (pass == 0) first_ = std::move(report.image);
+    }
     if (pass == 0 || (quickLook && pass == 1)) {
       rounds_.emplace(width, height, std::max(width, height));
       samples_ = 0;
     }
-    // Whole rows of the round's larger image: a crop narrower than the image
-    // is rendered a row at a time (one submission each), its rows cost less.
-    const PixelRect crop{0, frame.dy, frame.scene.render.width, frame.dy + height};
-    const Clock::time_point start = Clock::now();
-    RenderReport report = renderer_.render(frame.scene, backend_, {}, {crop, threads_});
-    Pass timing;
-    timing.renderMilliseconds = millisecondsSince(start);
-    timing.stageMilliseconds = report.totalMilliseconds();
-    if (backend_ == Backend::Gpu)
-      timing.geometry = std::any_of(report.stages.begin(), report.stages.end(),
-                                    [](const StageTime& s) { return s.stage == Stage::DiceCells; })
-                            ? ", geometry diced"
-                            : ", geometry kept";
-    rounds_->add(report.image, {-frame.dx, 0, width + frame.dx, height}, {0});
+    rounds_->add(round, {-frame.dx, 0, width + frame.dx, height}, {0});
     samples_ += frame.scene.render.samplesPerPixel;
     passes_ = pass + 1;
-    if (pass == 0) first_ = std::move(report.image);
     return timing;
   }
 
@@ -210,6 +231,7 @@ class Picture {
   const WatchedScene& io_;
   std::optional<SampleRounds> rounds_;
   int samples_ = 0, passes_ = 0;
+  double millisecondsPerRay_ = 0;  // of the last render's stages, their fixed costs included
   Image first_;
 };
 
@@ -287,9 +309,11 @@ void watchScene(Renderer& renderer, Backend backend, unsigned threads, const Wat
     for (int pass = 0; scene && pass < options.passes && !signals.stopped(); ++pass) {
       Picture::Pass timing;
       try {
-        timing = picture.render(*scene, pass);
+        const auto stale = [&] { return signals.stopped() || !changedFiles(stamps).empty(); };
+        const std::optional<Picture::Pass> rendered = picture.render(*scene, pass, stale);
         // A refining pass of a picture whose files changed meanwhile is not worth writing.
-        if (pass > 0 && !changedFiles(stamps).empty()) break;
+        if (!rendered || (pass > 0 && stale())) break;
+        timing = *rendered;
         timing.writeMilliseconds = picture.write(*scene);
         written = pass + 1;
       } catch (...) {
