@@ -283,7 +283,7 @@ void watchScene(Renderer& renderer, Backend backend, unsigned threads, const Wat
     // The files as they were before the load began: one changed while it
     // read them is seen at the next look.
     const Stamps before = stampsOf(files);
-    Clock::time_point start = Clock::now();
+    const Clock::time_point start = Clock::now();
     std::optional<scene::InputFileLog> log(std::in_place);
     try {
       scene = io.load();
@@ -304,7 +304,6 @@ void watchScene(Renderer& renderer, Backend backend, unsigned threads, const Wat
 
     const std::string what = changes == 0 ? "first picture of " + nameFiles(files) : nameFiles(changed) + " changed";
     if (!scene) say(what + ": not rendered; the outputs keep the last picture");
-    const Clock::time_point pictureStart = start;
     int written = 0;  // passes in the outputs
     for (int pass = 0; scene && pass < options.passes && !signals.stopped(); ++pass) {
       Picture::Pass timing;
@@ -317,8 +316,10 @@ void watchScene(Renderer& renderer, Backend backend, unsigned threads, const Wat
         timing.writeMilliseconds = picture.write(*scene);
         written = pass + 1;
       } catch (...) {
-        if (!isBadInput(std::current_exception())) throw;
+        // The first picture's errors end the command, as `facet render`'s do.
+        if ((changes == 0 && pass == 0) || !isBadInput(std::current_exception())) throw;
         printError(std::current_exception());
+        if (pass == 0) say(what + ": not rendered; the outputs keep the last picture");
         break;
       }
       if (pass == 0) {
@@ -335,7 +336,7 @@ void watchScene(Renderer& renderer, Backend backend, unsigned threads, const Wat
     if (written > 1) {
       char line[160];
       std::snprintf(line, sizeof line, "refined to %d passes, %d spp, in %.1f s", written, picture.samples(),
-                    millisecondsSince(pictureStart) / 1000.0);
+                    millisecondsSince(start) / 1000.0);
       say(line);
     }
     if (signals.stopped() || (options.limit > 0 && changes >= options.limit)) return;

@@ -43,9 +43,10 @@ struct WatchedScene {
 
 // Renders the scene, then again on each change, until SIGINT or SIGTERM
 // (after which it returns, the outputs complete) or options.limit changes.
-// The first load's errors propagate as `facet render`'s do; a later load or
-// render that fails on bad input prints its `facet: error:` line, keeps the
-// last picture and waits for the next change. `quiet`: no summary lines.
+// The first picture's errors propagate as `facet render`'s do; a later
+// load or render that fails on bad input prints its `facet: error:` line,
+// keeps the last picture and waits for the next change. `quiet`: no
+// summary lines.
 void watchScene(Renderer& renderer, Backend backend, unsigned threads, const WatchedScene& scene,
                 const WatchOptions& options, bool quiet);
 

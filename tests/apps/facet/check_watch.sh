@@ -6,8 +6,9 @@
 #   - a broken material file: an error line, the process still running and
 #     the picture untouched; fixed (blue), it renders again;
 #   - SIGTERM: exit 0, the outputs complete, no temporaries;
-#   - --watch-limit ends it by itself; --watch with --frames and
-#     --watch-limit without --watch are refused.
+#   - --watch-limit ends it by itself; --watch with --frames,
+#     --watch-limit without --watch, and a scene broken from the start are
+#     refused.
 # Every wait is bounded, and a watchdog kills facet should one hang.
 #   check_watch.sh FACET REPOSITORY WORK_FOLDER
 set -euo pipefail
@@ -116,5 +117,11 @@ refused --watch --frames 0-1
 grep -q "facet: error: --watch: cannot be combined with --frames" err.txt || fail "--watch --frames: $(cat err.txt)"
 refused --watch-limit 2
 grep -q "facet: error: --watch-limit: needs --watch" err.txt || fail "--watch-limit alone: $(cat err.txt)"
+# A scene that cannot be loaded at the start ends the command, as render does.
+echo '{"objects": [{"mesh": "ball.obj", "material": "absent.json"}]}' >broken.json
+status=0
+timeout 60 "$facet" render broken.json --watch -o refused.png 2>err.txt || status=$?
+[ $status -eq 1 ] || fail "--watch of a broken scene exited $status, expected 1"
+grep -q "facet: error: .*absent.json" err.txt || fail "--watch of a broken scene: $(cat err.txt)"
 [ ! -e refused.png ] || fail "a refused command wrote its output"
 echo "check_watch: passed"
