@@ -1,5 +1,6 @@
 #include "scenes/input_file.h"
 
+#include <algorithm>
 #include <system_error>
 
 #include "scenes/input_error.h"
@@ -8,7 +9,21 @@ namespace facet::scene {
 
 namespace fs = std::filesystem;
 
+namespace {
+thread_local InputFileLog* openLog = nullptr;
+}  // namespace
+
+InputFileLog::InputFileLog() : outer_(openLog) { openLog = this; }
+
+InputFileLog::~InputFileLog() { openLog = outer_; }
+
+void noteInputFile(const fs::path& path) {
+  for (InputFileLog* log = openLog; log; log = log->outer_)
+    if (std::find(log->files_.begin(), log->files_.end(), path) == log->files_.end()) log->files_.push_back(path);
+}
+
 void checkInputFile(const fs::path& path, const std::string& what) {
+  noteInputFile(path);
   const auto refuse = [&](const std::string& rule) { throw InputError(path.string(), 0, "cannot open " + what, rule); };
   std::error_code error;
   const fs::file_status status = fs::status(path, error);

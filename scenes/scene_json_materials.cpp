@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "scenes/input_error.h"
+#include "scenes/input_file.h"
 #include "scenes/json_field.h"
 #include "scenes/json_overrides.h"
 #include "scenes/scene_file.h"
@@ -137,6 +138,7 @@ json materialFile(const Field& reference, const std::filesystem::path& relativeT
   const std::string name = reference.string();
   if (!namesMaterialFile(name)) reference.fail("a material file's name ends in .json");
   const std::filesystem::path file = relativeTo.parent_path() / name;
+  noteInputFile(file);
   std::error_code error;  // a name the system refuses (too long, say) is a missing file too
   if (!std::filesystem::is_regular_file(file, error)) reference.fail("no such file: " + file.string());
   std::filesystem::path key = std::filesystem::weakly_canonical(file, error);

@@ -1,6 +1,7 @@
 // facet render: a scene file (or a bare cage) to an EXR with every AOV, a
 // PNG preview, or both; or a crop, a tile or a range of frames of it
-// (farm_options.h).
+// (farm_options.h); or, with --watch, a picture again on each change to its
+// files (watch.h).
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -10,6 +11,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <vector>
 
@@ -26,6 +28,7 @@
 #include "scenes/memory_budget.h"
 #include "scene_warnings.h"
 #include "scenes/scene_file.h"
+#include "watch.h"
 
 namespace facet::cli {
 namespace {
@@ -44,6 +47,7 @@ struct RenderCommandOptions {
   std::string backend = "gpu";
   std::string adapter;
   ExrCommandOptions exrFlags;
+  WatchOptions watch;
 };
 
 std::string lowerCaseExtension(const std::string& path) {
@@ -107,6 +111,47 @@ void checkOutputs(const RenderJob& job, const RenderCommandOptions& o) {
   checkOutputExtension(o.pngFlag, job.png, ".png");
 }
 
+// A job's EXR and PNG of `image`, the pixels of `window`, as a set.
+void writeOutputs(const RenderCommandOptions& o, const RenderJob& job, const scene::Scene& scene, const Image& image,
+                  const PixelRect& window, const PreviewOptions& preview, const std::string& settingsNote = {}) {
+  std::vector<OutputFile> outputs;
+  if (o.writeExr) {
+    ExrOptions exr = exrOptions(scene, o.backend, window, o.exrFlags);
+    exr.metadata.renderSettings += settingsNote;
+    outputs.push_back(exrFile(job.exr, image, exr));
+  }
+  if (!job.png.empty()) outputs.push_back(pngFile(job.png, image, preview));
+  writeAllOrNothing(outputs);
+}
+
+void runWatch(const RenderCommandOptions& o) {
+  const PreviewOptions preview = chosenPreview(o.preview);
+  const RenderJob job{std::nullopt, o.exr, o.png};
+  checkOutputs(job, o);
+  chosenExrLayers(o.exrFlags);
+  const Backend backend = o.backend == "cpu" ? Backend::Cpu : Backend::Gpu;
+  const unsigned threads = chosenThreads(o.farm);
+  if (backend == Backend::Gpu) limitLavapipeThreads(threads);
+  std::set<std::string> warned;  // each warning once, not on every load
+  WatchedScene watched;
+  watched.load = [&] {
+    scene::Scene scene = loadEditedScene(o.scene, o.edits);
+    applySceneOverrides(o.scene_overrides, scene);
+    scene::checkImagesFitInMemory(scene, 1, o.scene_overrides.size.empty() ? o.scene + ": image size" : "--size");
+    std::vector<std::string> fresh;
+    for (const std::string& warning : sceneWarnings(scene))
+      if (warned.insert(warning).second) fresh.push_back(warning);
+    printWarnings(fresh, o.farm.quiet);
+    return scene;
+  };
+  watched.write = [&](const scene::Scene& scene, const Image& image, int passes, int samples) {
+    writeOutputs(o, job, scene, image, PixelRect::whole(image.width, image.height), preview,
+                 " watchPasses=" + std::to_string(passes) + " watchSpp=" + std::to_string(samples));
+  };
+  Renderer renderer(o.adapter);
+  watchScene(renderer, backend, threads, watched, o.watch, o.farm.quiet);
+}
+
 void runRender(const RenderCommandOptions& o) {
   const PreviewOptions preview = chosenPreview(o.preview);
   const std::vector<RenderJob> jobs = renderJobs(o);
@@ -144,11 +189,7 @@ void runRender(const RenderCommandOptions& o) {
     const double wallMilliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
-    std::vector<OutputFile> outputs;
-    if (o.writeExr)
-      outputs.push_back(exrFile(job.exr, report.image, exrOptions(scene, o.backend, report.window, o.exrFlags)));
-    if (!job.png.empty()) outputs.push_back(pngFile(job.png, report.image, preview));
-    writeAllOrNothing(outputs);
+    writeOutputs(o, job, scene, report.image, report.window, preview);
 
     summary["adapter"] = report.device;
     summary["renders"].push_back(renderJson(report, job, wallMilliseconds));
@@ -173,12 +214,17 @@ void addRenderCommand(CLI::App& app) {
   addSceneOverrideOptions(*c, o->scene_overrides);
   addFarmOptions(*c, o->farm);
   addExrOptions(*c, o->exrFlags);
+  addWatchOptions(*c, o->watch);
   c->add_option("--backend", o->backend, "Renderer backend: the GPU kernels or the CPU reference")
       ->check(CLI::IsMember({"gpu", "cpu"}));
   c->add_option("--adapter", o->adapter, "GPU adapter: a substring of its name (default: FACET_ADAPTER or the first)");
-  c->callback([o, output] {
+  c->callback([o, output, c] {
+    checkWatchFlags(*c, o->watch, o->farm);
     chooseOutputs(*o, output->count() > 0);
-    runRender(*o);
+    if (o->watch.watch)
+      runWatch(*o);
+    else
+      runRender(*o);
   });
 }
 
