@@ -365,11 +365,12 @@ class Device : public Handle<detail::DeviceState> {
   // Every pipeline goes through the device's pipeline cache (Vulkan's
   // VkPipelineCache): one the cache holds is not compiled again.
   ComputePipeline createComputePipeline(const ComputePipelineDescriptor& descriptor);
-  // The same, for each descriptor, on as many threads as the machine has
-  // cores (Vulkan lets pipelines be created concurrently; a driver compiles
-  // each on the calling thread). A failure is the first failing descriptor's
-  // Error, after every thread has finished.
-  std::vector<ComputePipeline> createComputePipelines(std::span<const ComputePipelineDescriptor> descriptors);
+  // The same, for each descriptor, on up to `threads` threads (Vulkan lets
+  // pipelines be created concurrently; a driver compiles each on the calling
+  // thread). A failure is the first failing descriptor's Error, after every
+  // thread has finished.
+  std::vector<ComputePipeline> createComputePipelines(std::span<const ComputePipelineDescriptor> descriptors,
+                                                      unsigned threads);
   // The pipeline cache's data now (header and all), to keep for the next
   // device on this adapter (DeviceDescriptor::pipelineCache).
   std::vector<std::byte> pipelineCacheData() const;

@@ -203,7 +203,8 @@ ComputePipeline Device::createComputePipeline(const ComputePipelineDescriptor& d
   return ComputePipeline(std::move(state));
 }
 
-std::vector<ComputePipeline> Device::createComputePipelines(std::span<const ComputePipelineDescriptor> descriptors) {
+std::vector<ComputePipeline> Device::createComputePipelines(std::span<const ComputePipelineDescriptor> descriptors,
+                                                            unsigned threads) {
   detail::require(*this, "device");
   std::vector<ComputePipeline> pipelines(descriptors.size());
   std::vector<std::exception_ptr> errors(descriptors.size());
@@ -215,11 +216,9 @@ std::vector<ComputePipeline> Device::createComputePipelines(std::span<const Comp
         errors[i] = std::current_exception();
       }
   };
-  const std::size_t threads =
-      std::min<std::size_t>(descriptors.size(), std::max(1u, std::thread::hardware_concurrency()));
   {
     std::vector<std::jthread> helpers;
-    for (std::size_t t = 1; t < threads; ++t) helpers.emplace_back(work);
+    for (std::size_t t = 1; t < std::min<std::size_t>(threads, descriptors.size()); ++t) helpers.emplace_back(work);
     work();
   }
   for (const std::exception_ptr& error : errors)

@@ -1,9 +1,11 @@
 #include "engine/gpu_backend/pipeline_cache.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <span>
+#include <thread>
 #include <utility>
 
 #include "facet_raycast_kernels/spirv.h"
@@ -79,7 +81,11 @@ void PipelineCache::createDeferred() {
   std::vector<gpu::ComputePipelineDescriptor> descriptors = std::exchange(deferred_, {});
   const std::vector<std::string> keys = std::exchange(deferredKeys_, {});
   try {
-    std::vector<gpu::ComputePipeline> created = device_.createComputePipelines(descriptors);
+    // One core is left to the rest of the machine: on two cores shared with
+    // other work, a second compiling thread made the start-up slower
+    // (docs/rendering.md, "Start-up").
+    const unsigned threads = std::max(1u, std::thread::hardware_concurrency()) - 1;
+    std::vector<gpu::ComputePipeline> created = device_.createComputePipelines(descriptors, std::max(1u, threads));
     for (std::size_t i = 0; i < keys.size(); ++i) pipelines_[keys[i]] = std::move(created[i]);
   } catch (...) {
     for (const std::string& key : keys) pipelines_.erase(key);  // no empty pipeline stays kept

@@ -21,8 +21,8 @@ class PipelineCache {
   // gpu::Error, not a crash).
   gpu::ComputePipeline& get(const char* kernel, const std::vector<gpu::ConstantEntry>& constants);
   void defer();
-  // Compiles the variants noted since defer(), together (a driver compiles
-  // them on several threads: gpu::Device::createComputePipelines).
+  // Compiles the variants noted since defer(), together, on every core but
+  // one (gpu::Device::createComputePipelines).
   void createDeferred();
 
   // Wall clock spent creating shader modules and pipelines since the last

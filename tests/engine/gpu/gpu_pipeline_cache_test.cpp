@@ -71,7 +71,7 @@ TEST_F(PipelineCacheTest, ABatchMakesEachDescriptorsPipeline) {
                            &shader,
                            "main",
                            {{"kScale", 1.0 + i}, {"kNegate", double(i % 2)}, {"0", 64.0}}});
-  std::vector<ComputePipeline> pipelines = device_.createComputePipelines(descriptors);
+  std::vector<ComputePipeline> pipelines = device_.createComputePipelines(descriptors, 3);
   ASSERT_EQ(pipelines.size(), descriptors.size());
   for (int i = 0; i < 6; ++i)
     EXPECT_EQ(fill(device_, pipelines[i], 300), expectedFill(300, 1.0f + float(i), i % 2 == 1)) << "pipeline " << i;
@@ -82,7 +82,7 @@ TEST_F(PipelineCacheTest, ABatchFailsWithTheFirstFailingDescriptorsError) {
   std::vector<ComputePipelineDescriptor> descriptors{{"good", nullptr, &shader, "main", {}},
                                                      {"unknown constant", nullptr, &shader, "main", {{"kNone", 1}}},
                                                      {"no entry", nullptr, &shader, "other", {}}};
-  EXPECT_THAT(errorOf([&] { device_.createComputePipelines(descriptors); }),
+  EXPECT_THAT(errorOf([&] { device_.createComputePipelines(descriptors, 3); }),
               ::testing::AllOf(::testing::HasSubstr("'unknown constant'"), ::testing::HasSubstr("kNone")));
 }
 
