@@ -21,7 +21,8 @@ double medianMilliseconds(int repeats, const std::function<double()>& run) {
 double traceMilliseconds(const RenderReport& report) {
   double total = 0;
   for (const StageTime& stage : report.stages)
-    if (stage.stage != Stage::RefineBvh && stage.stage != Stage::Environment) total += stage.milliseconds;
+    if (stage.stage != Stage::RefineBvh && stage.stage != Stage::Environment && !isStartup(stage.stage))
+      total += stage.milliseconds;
   return total;
 }
 

@@ -46,6 +46,7 @@ Row runFacet(facet::Renderer& renderer, const NamedCage& cage, const Scene& scen
       row.refineMs = stage.milliseconds;
       continue;
     }
+    if (isStartup(stage.stage)) continue;
     row.traceMs += stage.milliseconds;
     if (stage.stage == Stage::Intersect || stage.stage == Stage::Fallbacks) primary += stage.milliseconds;
     if (stage.stage == Stage::ShadowRays || stage.stage == Stage::ShadowFallbacks)

@@ -5,9 +5,11 @@
 #include <cstring>
 #include <memory>
 #include <stdexcept>
+#include <utility>
 
 #include "engine/cpu/reference_renderer.h"
 #include "engine/gpu_backend/gpu_renderer.h"
+#include "engine/gpu_backend/pipeline_cache_file.h"
 #include "scenes/path_reach.h"
 #include "scenes/scene_geometry.h"
 
@@ -61,6 +63,9 @@ struct Renderer::GpuContext {
   gpu::Instance instance;
   gpu::Device device;
   std::unique_ptr<gpu_backend::GpuRenderer> renderer;
+  // Start-up, told by the first GPU render: the Device stage and the cache's warning.
+  std::optional<double> deviceMilliseconds;
+  std::string pipelineCacheWarning;
 };
 
 Renderer::Renderer(std::string adapter) : adapter_(std::move(adapter)) {}
@@ -69,11 +74,15 @@ Renderer::~Renderer() = default;
 
 Renderer::GpuContext& Renderer::gpuContext() {
   if (!gpu_) {
+    Stopwatch clock;
     auto context = std::make_unique<GpuContext>();
     context->instance = gpu::Instance::create(gpuInstanceFromEnvironment());
-    context->device =
-        context->instance.requestAdapter(gpuAdapterFromEnvironment(adapter_)).requestDevice({"facet render"});
+    const gpu::Adapter adapter = context->instance.requestAdapter(gpuAdapterFromEnvironment(adapter_));
+    gpu_backend::StoredPipelineCache stored = gpu_backend::loadPipelineCache(adapter.info());
+    context->device = adapter.requestDevice({"facet render", std::move(stored.data)});
     context->renderer = std::make_unique<gpu_backend::GpuRenderer>(context->device);
+    context->deviceMilliseconds = clock.lap();
+    context->pipelineCacheWarning = std::move(stored.warning);
     gpu_ = std::move(context);
   }
   return *gpu_;
@@ -123,6 +132,10 @@ RenderReport Renderer::render(const scene::Scene& scene, Backend backend, const 
     }
     case Backend::Gpu: {
       GpuContext& context = gpuContext();
+      if (context.deviceMilliseconds) report.stages.push_back({Stage::Device, *context.deviceMilliseconds});
+      context.deviceMilliseconds.reset();
+      if (!context.pipelineCacheWarning.empty())
+        report.warnings.push_back(std::exchange(context.pipelineCacheWarning, {}));
       gpu_backend::GpuRenderResult result = context.renderer->render(rendered, geometry, progress, options.crop);
       report.image = std::move(result.image);
       report.stages.insert(report.stages.end(), result.stageMilliseconds.begin(), result.stageMilliseconds.end());

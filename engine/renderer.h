@@ -44,6 +44,9 @@ struct RenderReport {
   std::uint64_t newtonFallbacks = 0;  // GPU exact method: cells whose domain was subdivided
   std::uint64_t cells = 0;            // GPU: of the micro-grid
   std::uint64_t gpuBytes = 0;         // GPU: scene arrays and one band's ray buffers
+  // Once each, for the render that met it: a damaged or foreign cache file
+  // that was ignored and rebuilt.
+  std::vector<std::string> warnings;
 
   double totalMilliseconds() const;
 };

@@ -28,9 +28,11 @@ std::uint64_t continuationRays(const RenderReport& report) {
   return rays;
 }
 
-// Every stage after refinement casts or shades rays.
+// Every stage but refinement and start-up casts or shades rays.
 double raysPerSecond(const RenderReport& report) {
-  const double traceSeconds = (report.totalMilliseconds() - report.stages.front().milliseconds) * 1e-3;
+  double traceSeconds = 0;
+  for (const StageTime& stage : report.stages)
+    if (stage.stage != Stage::RefineBvh && !isStartup(stage.stage)) traceSeconds += stage.milliseconds * 1e-3;
   return double(report.primaryRays + report.shadowRays + continuationRays(report)) / traceSeconds;
 }
 
@@ -57,6 +59,7 @@ std::uint64_t peakResidentBytes() {
 
 void printSummary(const scene::Scene& scene, const RenderReport& report, const RenderJob& job,
                   double wallMilliseconds) {
+  for (const std::string& warning : report.warnings) std::fprintf(stderr, "facet: warning: %s\n", warning.c_str());
   std::printf("%s\n", report.geometrySummary.c_str());
   if (scene.environment && scene::isStudioEnvironment(*scene.environment))
     std::printf("lighting: %s (the scene has no lights or environment)\n", scene::kStudioEnvironmentName);
@@ -94,6 +97,7 @@ nlohmann::json renderJson(const RenderReport& report, const RenderJob& job, doub
                            {"gpu_bytes", report.gpuBytes},
                            {"outputs", outputPaths(job)}};
   if (!report.pathsNote.empty()) render["paths"] = report.pathsNote;
+  if (!report.warnings.empty()) render["warnings"] = report.warnings;
   if (report.raysPerBounce.empty()) return render;
   nlohmann::json bounces = nlohmann::json::array();
   for (const cpu::BounceRays& rays : report.raysPerBounce)

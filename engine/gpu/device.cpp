@@ -123,6 +123,7 @@ DeviceState::~DeviceState() {
   vkDeviceWaitIdle(device);
   for (auto& work : inFlight) vkFreeCommandBuffers(device, commandPool, 1, &work.commandBuffer);
   if (pendingUploads) vkFreeCommandBuffers(device, commandPool, 1, &pendingUploads);
+  vkDestroyPipelineCache(device, pipelineCache, nullptr);
   vkDestroySemaphore(device, timeline, nullptr);
   vkDestroyCommandPool(device, commandPool, nullptr);
   vkDestroyDevice(device, nullptr);

@@ -98,6 +98,10 @@ struct AdapterInfo {
   AdapterType type = AdapterType::Other;
   std::uint32_t vendorId = 0;
   std::uint32_t deviceId = 0;
+  std::uint32_t driverVersion = 0;  // the driver's own encoding
+  // Names the driver build whose pipeline-cache data fits this adapter
+  // (Vulkan's pipelineCacheUUID): data kept under another is not for it.
+  std::array<std::uint8_t, 16> pipelineCacheUuid{};
 };
 
 // ---------------------------------------------------------------- resources
@@ -334,6 +338,11 @@ class Queue {
 
 struct DeviceDescriptor {
   std::string label;
+  // What Device::pipelineCacheData() returned for this adapter before,
+  // to start the device's pipeline cache from; empty: an empty cache. The
+  // driver checks the data's header against itself, and ignores data made by
+  // another, but trusts the rest: hand it only bytes known to be intact.
+  std::vector<std::byte> pipelineCache;
 };
 
 class Device : public Handle<detail::DeviceState> {
@@ -353,7 +362,18 @@ class Device : public Handle<detail::DeviceState> {
   BindGroupLayout createBindGroupLayout(const BindGroupLayoutDescriptor& descriptor);
   PipelineLayout createPipelineLayout(const PipelineLayoutDescriptor& descriptor);
   BindGroup createBindGroup(const BindGroupDescriptor& descriptor);
+  // Every pipeline goes through the device's pipeline cache (Vulkan's
+  // VkPipelineCache): one the cache holds is not compiled again.
   ComputePipeline createComputePipeline(const ComputePipelineDescriptor& descriptor);
+  // The same, for each descriptor, on up to `threads` threads (Vulkan lets
+  // pipelines be created concurrently; a driver compiles each on the calling
+  // thread). A failure is the first failing descriptor's Error, after every
+  // thread has finished.
+  std::vector<ComputePipeline> createComputePipelines(std::span<const ComputePipelineDescriptor> descriptors,
+                                                      unsigned threads);
+  // The pipeline cache's data now (header and all), to keep for the next
+  // device on this adapter (DeviceDescriptor::pipelineCache).
+  std::vector<std::byte> pipelineCacheData() const;
   CommandEncoder createCommandEncoder(const CommandEncoderDescriptor& descriptor = {});
   QuerySet createQuerySet(const QuerySetDescriptor& descriptor);
 

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 
 #include "engine/gpu/vk_state.h"
 
@@ -138,6 +139,9 @@ void describeAdapter(VkPhysicalDevice device, AdapterInfo& info, Limits& limits)
   info.type = adapterType(properties.properties.deviceType);
   info.vendorId = properties.properties.vendorID;
   info.deviceId = properties.properties.deviceID;
+  info.driverVersion = properties.properties.driverVersion;
+  std::copy(std::begin(properties.properties.pipelineCacheUUID), std::end(properties.properties.pipelineCacheUUID),
+            info.pipelineCacheUuid.begin());
 
   limits.maxBufferSize = maintenance3.maxMemoryAllocationSize;
   limits.maxStorageBufferBindingSize = l.maxStorageBufferRange;
@@ -307,6 +311,11 @@ Device Adapter::requestDevice(const DeviceDescriptor& descriptor) const {
   timelineType.semaphoreType = VK_SEMAPHORE_TYPE_TIMELINE;
   VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO, &timelineType};
   check(vkCreateSemaphore(state->device, &semaphoreInfo, nullptr, &state->timeline), "vkCreateSemaphore");
+
+  VkPipelineCacheCreateInfo cacheInfo{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
+  cacheInfo.initialDataSize = descriptor.pipelineCache.size();
+  cacheInfo.pInitialData = descriptor.pipelineCache.empty() ? nullptr : descriptor.pipelineCache.data();
+  check(vkCreatePipelineCache(state->device, &cacheInfo, nullptr, &state->pipelineCache), "vkCreatePipelineCache");
   return Device(std::move(state));
 }
 

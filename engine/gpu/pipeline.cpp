@@ -1,9 +1,12 @@
 // Shader modules and compute pipelines: the shader's entry point, constants,
 // workgroup size and bindings checked against the layout, given or derived.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
+#include <exception>
 #include <map>
+#include <thread>
 
 #include "engine/gpu/layouts.h"
 
@@ -195,9 +198,44 @@ ComputePipeline Device::createComputePipeline(const ComputePipelineDescriptor& d
   info.stage.pName = descriptor.entryPoint.c_str();
   info.stage.pSpecializationInfo = specialization.entries.empty() ? nullptr : &specializationInfo;
   info.layout = state->layout->layout;
-  check(vkCreateComputePipelines(state_->device, VK_NULL_HANDLE, 1, &info, nullptr, &state->pipeline),
+  check(vkCreateComputePipelines(state_->device, state_->pipelineCache, 1, &info, nullptr, &state->pipeline),
         "vkCreateComputePipelines");
   return ComputePipeline(std::move(state));
+}
+
+std::vector<ComputePipeline> Device::createComputePipelines(std::span<const ComputePipelineDescriptor> descriptors,
+                                                            unsigned threads) {
+  detail::require(*this, "device");
+  std::vector<ComputePipeline> pipelines(descriptors.size());
+  std::vector<std::exception_ptr> errors(descriptors.size());
+  std::atomic<std::size_t> next = 0;
+  auto work = [&] {
+    for (std::size_t i; (i = next++) < descriptors.size();) try {
+        pipelines[i] = createComputePipeline(descriptors[i]);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+  };
+  {
+    std::vector<std::jthread> helpers;
+    for (std::size_t t = 1; t < std::min<std::size_t>(threads, descriptors.size()); ++t) helpers.emplace_back(work);
+    work();
+  }
+  for (const std::exception_ptr& error : errors)
+    if (error) std::rethrow_exception(error);
+  return pipelines;
+}
+
+std::vector<std::byte> Device::pipelineCacheData() const {
+  const detail::DeviceState& device = detail::require(*this, "device");
+  std::size_t size = 0;
+  detail::check(vkGetPipelineCacheData(device.device, device.pipelineCache, &size, nullptr), "vkGetPipelineCacheData");
+  std::vector<std::byte> data(size);
+  // VK_INCOMPLETE only where the cache grew between the calls, which one thread cannot do.
+  detail::check(vkGetPipelineCacheData(device.device, device.pipelineCache, &size, data.data()),
+                "vkGetPipelineCacheData");
+  data.resize(size);
+  return data;
 }
 
 BindGroupLayout ComputePipeline::getBindGroupLayout(std::uint32_t index) const {

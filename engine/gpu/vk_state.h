@@ -74,6 +74,7 @@ struct DeviceState {
   std::uint32_t queueFamily = 0;
   VkPhysicalDeviceMemoryProperties memory{};
   VkCommandPool commandPool = VK_NULL_HANDLE;
+  VkPipelineCache pipelineCache = VK_NULL_HANDLE;  // internally synchronized
 
   VkSemaphore timeline = VK_NULL_HANDLE;
   std::uint64_t lastSubmitted = 0;

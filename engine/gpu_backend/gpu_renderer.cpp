@@ -8,6 +8,7 @@
 #include "engine/gpu_backend/binding_table.h"
 #include "engine/gpu_backend/frame_params.h"
 #include "engine/gpu_backend/gpu_scene.h"
+#include "engine/gpu_backend/pipeline_cache_file.h"
 #include "engine/gpu_backend/prefilter_gpu.h"
 #include "engine/gpu_backend/raycast_layout.h"
 #include "engine/gpu_backend/render_buffers.h"
@@ -44,23 +45,28 @@ ibl::EnvironmentLighting prepareEnvironment(gpu::Device& d, const scene::Scene& 
   });
 }
 
+// The dicing stage's pipelines; the micro-grid's vertices only when tessellated.
+struct DiceKernels {
+  gpu::ComputePipeline *grid = nullptr, *cells = nullptr, *quadtrees = nullptr, *refit = nullptr;
+};
+
+DiceKernels diceKernels(PipelineCache& pipelines, bool tessellated) {
+  return {tessellated ? &pipelines.get("dice_grid", {}) : nullptr,
+          &pipelines.get("dice_cells", {{"METHOD", tessellated ? 1.0 : 0.0}}), &pipelines.get("build_quadtrees", {}),
+          &pipelines.get("refit_top_levels", {})};
+}
+
 // Stage: dicing, the micro-grid and every patch's quadtree, then the top
 // levels refitted to them.
-void dice(gpu::Device& d, PipelineCache& pipelines, const GpuScene& packed, bool tessellated, const BindingTable& table,
-          StageClock& clock) {
+void dice(gpu::Device& d, const DiceKernels& k, const GpuScene& packed, const BindingTable& table, StageClock& clock) {
   gpu::CommandEncoder encoder = d.createCommandEncoder({"dice"});
-  if (tessellated) {
-    gpu::ComputePipeline& diceGrid = pipelines.get("dice_grid", {});
-    clock.dispatch(encoder, Pass::DiceGrid, diceGrid, bindGroup(d, diceGrid, "dice grid", table),
+  if (k.grid)
+    clock.dispatch(encoder, Pass::DiceGrid, *k.grid, bindGroup(d, *k.grid, "dice grid", table),
                    packed.gridVertices + packed.edgeMidpoints);
-  }
-  gpu::ComputePipeline& diceCells = pipelines.get("dice_cells", {{"METHOD", tessellated ? 1.0 : 0.0}});
-  clock.dispatch(encoder, Pass::DiceCells, diceCells, bindGroup(d, diceCells, "dice cells", table), packed.blocks);
-  gpu::ComputePipeline& quadtrees = pipelines.get("build_quadtrees", {});
-  clock.dispatch(encoder, Pass::Quadtrees, quadtrees, bindGroup(d, quadtrees, "build quadtrees", table),
+  clock.dispatch(encoder, Pass::DiceCells, *k.cells, bindGroup(d, *k.cells, "dice cells", table), packed.blocks);
+  clock.dispatch(encoder, Pass::Quadtrees, *k.quadtrees, bindGroup(d, *k.quadtrees, "build quadtrees", table),
                  packed.patches.size());
-  gpu::ComputePipeline& refit = pipelines.get("refit_top_levels", {});
-  clock.begin(encoder, Pass::Refit, refit, bindGroup(d, refit, "refit top levels", table)).dispatchWorkgroups(1);
+  clock.begin(encoder, Pass::Refit, *k.refit, bindGroup(d, *k.refit, "refit top levels", table)).dispatchWorkgroups(1);
   d.queue().submit(encoder.finish());
   d.queue().waitIdle();
   clock.read(Pass::DiceGrid, Pass::Refit);
@@ -128,9 +134,14 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
 
   StageClock clock(d);
   d.queue().writeBuffer(band.frame, 0, &frame, sizeof(frame));
-  if (!reused) dice(d, pipelines_, packed, tessellated, table, clock);
-
+  // Stage: the pipelines this render runs and no earlier one compiled, all
+  // at once before the first dispatch (wall clock).
+  pipelines_.defer();
+  const DiceKernels diceK = reused ? DiceKernels{} : diceKernels(pipelines_, tessellated);
   const Kernels k = kernels(pipelines_, scene, lighting ? &*lighting : nullptr, compensation, tessellated);
+  pipelines_.createDeferred();
+  if (!reused) dice(d, diceK, packed, table, clock);
+
   result.image = Image(window.width(), window.height());
   std::uint64_t finished = 0;
   for (const PixelRun& run : pixelRuns(window, width)) {
@@ -163,6 +174,13 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
     }
   }
   result.gpuBytes = geometryBuffers.bytes + band.bytes;
+  double pipelineMilliseconds = pipelines_.takeMilliseconds();  // 0 where every pipeline was kept
+  if (pipelines_.takeCompiled()) {
+    start = std::chrono::steady_clock::now();
+    storePipelineCache(d);
+    pipelineMilliseconds += wallClock(start);
+  }
+  if (pipelineMilliseconds > 0) result.stageMilliseconds.push_back({Stage::Pipelines, pipelineMilliseconds});
   clock.report(result.stageMilliseconds);
   return result;
 }

@@ -1,21 +1,16 @@
 // The disk cache of prefiltered environments and of DFG tables: one file
-// per key, in the format of prefilter_cache_format.h. What a file holds must
-// also fit the request (its levels, its tables, finite values) or it is
-// rebuilt. Only regular files are read. Any failure to read or write only
-// costs the build.
+// per key in the cache folder (cache_folder.h), in the format of
+// prefilter_cache_format.h. What a file holds must also fit the request (its
+// levels, its tables, finite values) or it is rebuilt.
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <optional>
-#include <random>
 #include <sstream>
 #include <string>
-#include <system_error>
 #include <vector>
 
+#include "engine/ibl/cache_folder.h"
 #include "engine/ibl/prefilter_cache_format.h"
 #include "engine/ibl/prefiltered_environment.h"
 
@@ -27,9 +22,6 @@ namespace fs = std::filesystem;
 
 using cache_format::fnv1a;
 using cache_format::kFormatVersion;
-
-// A cache file larger than this is not one facet wrote (a link to a device).
-constexpr std::uintmax_t kLargestFile = std::uintmax_t(4) << 30;
 
 std::uint64_t fnv1a(const std::string& text) { return fnv1a(text.data(), text.size()); }
 
@@ -52,44 +44,6 @@ std::string dfgKeyText(int distribution, int geometry, const PrefilterSettings& 
   return key.str();
 }
 
-std::optional<fs::path> cacheDirectory() {
-  if (const char* dir = std::getenv("FACET_CACHE_DIR"); dir && *dir) return fs::path(dir);
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return fs::path(xdg) / "facet";
-  if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".cache" / "facet";
-  return std::nullopt;
-}
-
-std::optional<std::vector<char>> readFile(const fs::path& file) {
-  // A FIFO would block the read and a device never end it.
-  std::error_code error;
-  if (!fs::is_regular_file(file, error) || fs::file_size(file, error) > kLargestFile || error) return std::nullopt;
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::vector<char> data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) return std::nullopt;
-  return data;
-}
-
-void writeFileAtomically(const fs::path& file, const std::vector<char>& data) {
-  std::error_code error;
-  fs::create_directories(file.parent_path(), error);
-  // A name of its own per writer, so that concurrent renders never write
-  // into one temporary file; rename then replaces the file whole.
-  const fs::path temporary =
-      file.string() + ".tmp" + std::to_string(std::random_device{}()) + std::to_string(std::random_device{}());
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(data.data(), std::streamsize(data.size()));
-    out.close();
-    if (!out) {
-      fs::remove(temporary, error);
-      return;
-    }
-  }
-  fs::rename(temporary, file, error);
-  if (error) fs::remove(temporary, error);
-}
-
 // The stored value of `key` (file `<prefix>-<hash>.bin`) when present,
 // intact and fitting the request, else `build`'s, stored.
 template <class T, class ToPayload, class FromPayload, class Fits, class Build>
@@ -101,13 +55,13 @@ T cached(const std::string& prefix, const std::string& key, ToPayload toPayload,
   std::snprintf(name, sizeof name, "%s-%016llx.bin", prefix.c_str(), static_cast<unsigned long long>(fnv1a(key)));
   const fs::path file = *directory / name;
   try {
-    if (const auto data = readFile(file))
+    if (const auto data = readCacheFile(file))
       if (const auto payload = cache_format::unseal(*data, key))
         if (std::optional<T> stored = fromPayload(*payload); stored && fits(*stored)) return std::move(*stored);
   } catch (const std::exception&) {  // a file too large to hold: a miss like any other bad file
   }
   T value = build();
-  writeFileAtomically(file, cache_format::seal(key, toPayload(value)));
+  writeCacheFileAtomically(file, cache_format::seal(key, toPayload(value)));
   return value;
 }
 

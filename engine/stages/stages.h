@@ -11,7 +11,9 @@ namespace facet {
 // In the order a report lists them; a render reports only the stages it ran.
 enum class Stage {
   RefineBvh,    // the front-end: refinement and the patch BVH
+  Device,       // start-up: the GPU's instance and device, at a renderer's first GPU render
   Environment,  // the environment's tables or prefiltered maps
+  Pipelines,    // start-up: the kernels' pipelines a render is the first to run, and their cache kept
   TraceShade,   // the CPU reference's tracing and shading, as one stage
   // The GPU backend's stages (engine/gpu_backend/stage_clock.h).
   TopLevels,
@@ -38,8 +40,12 @@ constexpr std::string_view stageName(Stage stage) {
   switch (stage) {
     case Stage::RefineBvh:
       return "refine + BVH";
+    case Stage::Device:
+      return "device";
     case Stage::Environment:
       return "environment";
+    case Stage::Pipelines:
+      return "pipelines";
     case Stage::TraceShade:
       return "trace + shade";
     case Stage::TopLevels:
@@ -75,6 +81,10 @@ constexpr std::string_view stageName(Stage stage) {
   }
   return "?";
 }
+
+// What a renderer pays once (or once per new kernel variant), not per
+// image: a kept renderer's later renders do not report it.
+constexpr bool isStartup(Stage stage) { return stage == Stage::Device || stage == Stage::Pipelines; }
 
 struct StageTime {
   Stage stage;

@@ -13,7 +13,9 @@ namespace {
 // report merges stages by value: each stage keeps its own name.
 TEST(StagesTest, EachStageHasItsOwnPrintedName) {
   const std::pair<Stage, std::string_view> expected[] = {{Stage::RefineBvh, "refine + BVH"},
+                                                         {Stage::Device, "device"},
                                                          {Stage::Environment, "environment"},
+                                                         {Stage::Pipelines, "pipelines"},
                                                          {Stage::TraceShade, "trace + shade"},
                                                          {Stage::TopLevels, "top levels"},
                                                          {Stage::DiceGrid, "dice grid"},
@@ -34,6 +36,14 @@ TEST(StagesTest, EachStageHasItsOwnPrintedName) {
     names.insert(stageName(stage));
   }
   EXPECT_EQ(names.size(), std::size(expected));
+}
+
+// Readers that sum the stages of casting and shading leave these out.
+TEST(StagesTest, OnlyTheDeviceAndThePipelinesAreStartUp) {
+  EXPECT_TRUE(isStartup(Stage::Device));
+  EXPECT_TRUE(isStartup(Stage::Pipelines));
+  for (Stage stage : {Stage::RefineBvh, Stage::Environment, Stage::TopLevels, Stage::Surface, Stage::Resolve})
+    EXPECT_FALSE(isStartup(stage)) << stageName(stage);
 }
 
 }  // namespace
