@@ -140,4 +140,31 @@ DepthError compareDepth(const std::vector<float>& candidate, const std::vector<f
   return e;
 }
 
+double blockRelativeRmse(const Image& a, const Image& b, const Image& coverage, int block) {
+  double squares = 0, sum = 0;
+  std::size_t blocks = 0, pixels = 0;
+  for (int by = 0; by < coverage.height; by += block)
+    for (int bx = 0; bx < coverage.width; bx += block) {
+      glm::dvec3 sumA(0), sumB(0);
+      int count = 0;
+      for (int y = by; y < std::min(by + block, coverage.height); ++y)
+        for (int x = bx; x < std::min(bx + block, coverage.width); ++x)
+          if (covered(coverage, x, y)) {
+            sumA += glm::dvec3(a.beauty[a.index(x, y)]), sumB += glm::dvec3(b.beauty[b.index(x, y)]), ++count;
+          }
+      if (count == 0) continue;
+      const glm::dvec3 d = (sumA - sumB) / double(count);
+      squares += glm::dot(d, d) / 3, sum += (sumB.r + sumB.g + sumB.b) / 3, pixels += std::size_t(count), ++blocks;
+    }
+  return blocks == 0 || sum <= 0 ? 0 : std::sqrt(squares / double(blocks)) / (sum / double(pixels));
+}
+
+glm::dvec3 coveredMean(const Image& image, const Image& coverage) {
+  glm::dvec3 sum(0);
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < coverage.pixelCount(); ++i)
+    if (covered(coverage, i)) sum += glm::dvec3(image.beauty[i]), ++count;
+  return count == 0 ? glm::dvec3(0) : sum / double(count);
+}
+
 }  // namespace facet::analysis

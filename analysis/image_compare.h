@@ -72,6 +72,17 @@ struct ImageError {
 };
 ImageError compareToReference(const Image& candidate, const Image& reference);
 
+// Mean beauty per channel over the pixels `coverage` covers (0 where none is).
+glm::dvec3 coveredMean(const Image& image, const Image& coverage);
+
+// Relative RMSE of `a` against `b` over blocks of block x block pixels,
+// each block the mean of the pixels `coverage` covers (blocks without any
+// are left out), relative to b's mean over the covered pixels; 0 where
+// nothing is covered. Blocks trade resolution for noise: a bias that spans
+// a block stays, independent noise falls by the square root of the pixels
+// averaged. With block 1 it is compareToReference's relative RMSE.
+double blockRelativeRmse(const Image& a, const Image& b, const Image& coverage, int block);
+
 // Depth images alone (peers that only cast rays); NaN errors when nothing is compared.
 struct DepthError {
   double maxRelative = NAN;

@@ -26,5 +26,6 @@ void runStability(Renderer& renderer, const BenchOptions& options, Report& repor
 void runScaling(Renderer& renderer, const BenchOptions& options, Report& report);
 // Needs Blender (FACET_BLENDER, else `blender` on PATH); skipped with a note without it.
 void runCycles(Renderer& renderer, const BenchOptions& options, Report& report);
+void runCyclesPaths(Renderer& renderer, const BenchOptions& options, Report& report);
 
 }  // namespace facet::analysis::bench

@@ -3,11 +3,6 @@
 // against one converged facet reference: Cycles' error and render time per
 // sample count, facet's curves, and facet's time to Cycles' error. Blender
 // is optional: without it the section prints a note and is skipped.
-#include <spawn.h>
-#include <sys/wait.h>
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -24,13 +19,12 @@
 #include <vector>
 
 #include "analysis/bench/bench.h"
+#include "analysis/bench/cycles_peer.h"
 #include "analysis/gnuplot.h"
 #include "engine/image/exr_file.h"
 #include "engine/image/image_io.h"
 #include "rules/rules.h"
 #include "scenes/scene_file.h"
-
-extern char** environ;
 
 namespace facet::analysis::bench {
 namespace {
@@ -69,115 +63,10 @@ Sizes sizesFor(bool quick) {
           64};
 }
 
-// Cycles' equirectangular map looks down Blender's +x at its centre, which
-// is facet's map turned by 270 degrees about +y.
-constexpr double kCyclesMapRotationDegrees = 270;
-constexpr int kSubdivisionLevels = 7;
-
-bool isExecutable(const fs::path& path) { return fs::is_regular_file(path) && access(path.c_str(), X_OK) == 0; }
-
-// FACET_BLENDER, else `blender` on PATH; nothing when neither exists.
-std::optional<fs::path> findBlender() {
-  if (const char* named = std::getenv("FACET_BLENDER"); named && *named) {
-    if (!isExecutable(named))
-      throw std::invalid_argument(std::string("FACET_BLENDER '") + named + "': not an executable file");
-    return fs::path(named);
-  }
-  const char* path = std::getenv("PATH");
-  std::istringstream folders(path ? path : "");
-  for (std::string folder; std::getline(folders, folder, ':');)
-    if (!folder.empty() && isExecutable(fs::path(folder) / "blender")) return fs::path(folder) / "blender";
-  return std::nullopt;
-}
-
-// Runs `argv` with stdout and stderr into `log`; throws unless it exits 0.
-void runLogged(const std::vector<std::string>& argv, const fs::path& log) {
-  std::vector<char*> pointers;
-  for (const std::string& a : argv) pointers.push_back(const_cast<char*>(a.c_str()));
-  pointers.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-  pid_t pid = 0;
-  const int spawnError = posix_spawn(&pid, pointers[0], &actions, nullptr, pointers.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawnError != 0) throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(spawnError));
-  int status = 0;
-  waitpid(pid, &status, 0);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw std::runtime_error(argv[0] + " failed (status " + std::to_string(status) + "); see " + log.string());
-}
-
-void writeObj(const fs::path& path, const scene::ControlCage& cage) {
-  std::ofstream obj(path);
-  obj.precision(17);
-  for (const glm::dvec3& p : cage.positions) obj << "v " << p.x << " " << p.y << " " << p.z << "\n";
-  std::size_t at = 0;
-  for (int count : cage.faceVertexCounts) {
-    obj << "f";
-    for (int i = 0; i < count; ++i) obj << " " << cage.faceVertexIndices[at++] + 1;
-    obj << "\n";
-  }
-  if (!obj) throw std::runtime_error(path.string() + ": cannot write");
-}
-
 std::string formatted(const char* format, double value) {
   char text[32];
   std::snprintf(text, sizeof text, format, value);
   return text;
-}
-
-std::string joined(const std::vector<int>& values) {
-  std::string text;
-  for (int v : values) {
-    if (!text.empty()) text += ',';
-    text += std::to_string(v);
-  }
-  return text;
-}
-
-// Per sample count, the median of Cycles' timed render calls (seconds).
-std::map<int, double> readCyclesTimes(const fs::path& csv) {
-  std::ifstream in(csv);
-  std::map<int, std::vector<double>> runs;
-  std::string line;
-  std::getline(in, line);  // header
-  for (int samples; std::getline(in, line);)
-    if (double seconds; std::sscanf(line.c_str(), "%d,%lf", &samples, &seconds) == 2) runs[samples].push_back(seconds);
-  std::map<int, double> medians;
-  for (const auto& [samples, seconds] : runs) medians[samples] = median(seconds);
-  return medians;
-}
-
-// Mean beauty per channel over the pixels `reference` covers.
-glm::dvec3 coveredMean(const Image& image, const Image& reference) {
-  glm::dvec3 sum(0);
-  std::size_t count = 0;
-  for (std::size_t i = 0; i < reference.pixelCount(); ++i)
-    if (covered(reference, i)) sum += glm::dvec3(image.beauty[i]), ++count;
-  return sum / double(std::max<std::size_t>(count, 1));
-}
-
-struct Point {
-  std::string curve;
-  int samples = 0;  // Cycles: samples per pixel; facet: pairs per camera sample
-  double milliseconds = 0;
-  double relativeRmse = 0;
-};
-
-// The time at which a curve, ordered by N, first reaches `error`:
-// interpolated linearly in log time against log error between its
-// neighbouring points; nothing when it never does.
-std::optional<double> timeToError(const std::vector<Point>& curve, double error) {
-  for (std::size_t i = 0; i < curve.size(); ++i) {
-    if (curve[i].relativeRmse > error) continue;
-    if (i == 0) return curve[0].milliseconds;
-    const Point &a = curve[i - 1], &b = curve[i];
-    const double t = std::log(error / a.relativeRmse) / std::log(b.relativeRmse / a.relativeRmse);
-    return std::exp(std::log(a.milliseconds) + t * std::log(b.milliseconds / a.milliseconds));
-  }
-  return std::nullopt;
 }
 
 std::string curveName(const FacetCurve& c) {
@@ -245,26 +134,6 @@ RenderReport renderPreview(Renderer& renderer, scene::Scene scene, scene::IblMet
   return renderer.render(scene, Backend::Gpu);
 }
 
-// The same scene for tools/blender/material_preview.py, in facet's coordinates.
-std::vector<std::string> blenderArguments(const fs::path& blender, const fs::path& script, const fs::path& cage,
-                                          const fs::path& map, const scene::Scene& scene, const Sizes& sizes,
-                                          int repeats, unsigned threads, const fs::path& directory) {
-  const scene::Camera& camera = scene.camera;
-  const materials::Material& metal = scene.materials.at(std::size_t(scene.objects.at(0).material));
-  std::vector<std::string> argv{blender.string(), "-b", "--factory-startup", "-t", std::to_string(threads)};
-  argv.insert(argv.end(), {"--python", script.string(), "--", "--cage", cage.string(), "--env", map.string()});
-  argv.insert(argv.end(),
-              {"--intensity", cell(scene.environment->intensity), "--fov", cell(camera.verticalFovDegrees)});
-  for (const auto& [flag, v] : {std::pair{"--eye", camera.eye}, std::pair{"--target", camera.target},
-                                std::pair{"--up", camera.up}, std::pair{"--f0", metal.f0}})
-    argv.insert(argv.end(), {flag, cell(v.x), cell(v.y), cell(v.z)});
-  argv.insert(argv.end(), {"--size", std::to_string(sizes.size), std::to_string(sizes.size), "--roughness",
-                           cell(std::sqrt(metal.alpha)), "--levels", std::to_string(kSubdivisionLevels)});
-  argv.insert(argv.end(), {"--threads", std::to_string(threads), "--samples", joined(sizes.cyclesSamples), "--repeats",
-                           std::to_string(repeats), "--output", directory.string()});
-  return argv;
-}
-
 // Cycles' points, from the images and times the script wrote; `converged`
 // gets the image of the largest sample count.
 std::vector<Point> cyclesPoints(const fs::path& directory, const Sizes& sizes, const Image& reference,
@@ -295,54 +164,20 @@ std::vector<std::vector<Point>> facetCurves(Renderer& renderer, const scene::Sce
   std::vector<std::vector<Point>> curves;
   for (const FacetCurve& c : sizes.curves) {
     std::vector<Point>& curve = curves.emplace_back();
-    for (int pairs : c.pairs) {
-      Image image;
-      const double ms = medianMilliseconds(repeats, [&] {
-        RenderReport r = renderPreview(renderer, scene, c.method, c.cameraSamples, pairs, 0);
-        image = std::move(r.image);
-        return traceMilliseconds(r);
-      });
-      curve.push_back({curveName(c), pairs, ms, compareToReference(image, reference).relativeRmse});
-      std::printf("  facet %-17s N=%-4d %9.1f ms  relative RMSE %.3g\n", curveName(c).c_str(), pairs, ms,
-                  curve.back().relativeRmse);
-      std::fflush(stdout);
-    }
+    for (int pairs : c.pairs)
+      curve.push_back(timedPoint(
+          curveName(c), pairs, repeats,
+          [&] { return renderPreview(renderer, scene, c.method, c.cameraSamples, pairs, 0); }, reference));
   }
   return curves;
-}
-
-// The fastest facet curve's time to `target`'s error, as a sentence.
-std::string verdict(const std::vector<std::vector<Point>>& curves, const Point& target) {
-  std::optional<double> fastest;
-  std::string fastestCurve;
-  for (const std::vector<Point>& curve : curves)
-    if (const std::optional<double> t = timeToError(curve, target.relativeRmse); t && (!fastest || *t < *fastest))
-      fastest = t, fastestCurve = curve.front().curve;
-  char text[256];
-  if (fastest)
-    std::snprintf(text, sizeof text,
-                  "facet reaches Cycles' %d-spp error (%.3g) in %.0f ms (%s, interpolated): %.2fx Cycles' %.0f ms",
-                  target.samples, target.relativeRmse, *fastest, fastestCurve.c_str(), *fastest / target.milliseconds,
-                  target.milliseconds);
-  else
-    std::snprintf(text, sizeof text, "facet does not reach Cycles' %d-spp error (%.3g) on any measured curve",
-                  target.samples, target.relativeRmse);
-  return text;
 }
 
 }  // namespace
 
 void runCycles(Renderer& renderer, const BenchOptions& options, Report& report) {
   report.heading("Cycles: the material preview");
-  const fs::path script = options.root / "tools/blender/material_preview.py";
-  const std::optional<fs::path> blender = findBlender();
-  if (!blender || !fs::exists(script)) {
-    const std::string note =
-        !blender ? "blender is not on PATH and FACET_BLENDER is unset" : script.string() + " is not under --root";
-    std::printf("cycles: skipped: %s\n", note.c_str());
-    report.paragraph("Skipped: " + note + ".");
-    return;
-  }
+  const std::optional<CyclesPeer> peer = findCyclesPeer(options.root, "cycles", report);
+  if (!peer) return;
   const Sizes sizes = sizesFor(options.quick);
   const fs::path directory = options.output / "cycles";
   fs::create_directories(directory);
@@ -355,16 +190,11 @@ void runCycles(Renderer& renderer, const BenchOptions& options, Report& report) 
           .image;
   writeExr(directory / "facet_reference.exr", reference);
 
-  // Cycles runs on as many threads as lavapipe.
-  const char* lavapipe = std::getenv("LP_NUM_THREADS");
-  const unsigned threads =
-      lavapipe && std::atoi(lavapipe) > 0 ? unsigned(std::atoi(lavapipe)) : std::thread::hardware_concurrency();
-  const fs::path cage = directory / "cage.obj";
-  writeObj(cage, scene.objects.at(0).cage);
-  std::printf("cycles: rendering with %s on %u threads\n", blender->c_str(), threads);
+  const unsigned threads = cyclesThreads();
+  std::printf("cycles: rendering with %s on %u threads\n", peer->blender.c_str(), threads);
   std::fflush(stdout);
-  runLogged(blenderArguments(*blender, script, cage, map, scene, sizes, options.repeats, threads, directory),
-            directory / "blender.log");
+  renderInCycles(peer->blender, peer->script, describeForCycles(scene, directory),
+                 {sizes.cyclesSamples, options.repeats, 0}, directory);
   Image cyclesConverged;
   const std::vector<Point> cycles = cyclesPoints(directory, sizes, reference, cyclesConverged);
   const std::vector<std::vector<Point>> curves = facetCurves(renderer, scene, sizes, options.repeats, reference);
@@ -395,8 +225,8 @@ void runCycles(Renderer& renderer, const BenchOptions& options, Report& report) 
   report.paragraph(
       "The gold cube (scenes/examples/gold_cube.gltf, Catmull-Clark) under " + map.filename().string() + " alone, " +
       std::to_string(sizes.size) + "², Blender's metallic Fresnel, separable Smith G, occlusion off. Cycles (" +
-      blender->string() + ", " + std::to_string(threads) +
-      " threads, tools/blender/material_preview.py): the cage subdivided " + std::to_string(kSubdivisionLevels) +
+      peer->blender.string() + ", " + std::to_string(threads) +
+      " threads, tools/blender/cycles_scene.py): the cage subdivided " + std::to_string(kCyclesSubdivisionLevels) +
       " levels with its vertices on the limit surface, 1 px box filter, no clamping, no denoiser; its time is the "
       "median render call. facet: GPU backend, its tracing stages' time. Error: relative RMSE against facet sampled "
       "with " +

@@ -48,6 +48,7 @@ struct RenderCommandOptions {
   std::string adapter;
   ExrCommandOptions exrFlags;
   WatchOptions watch;
+  bool verbose = false;
 };
 
 std::string lowerCaseExtension(const std::string& path) {
@@ -193,7 +194,11 @@ void runRender(const RenderCommandOptions& o) {
 
     summary["adapter"] = report.device;
     summary["renders"].push_back(renderJson(report, job, wallMilliseconds));
-    if (!o.farm.quiet && !o.farm.json) printSummary(scene, report, job, wallMilliseconds);
+    if (o.farm.quiet || o.farm.json) continue;
+    if (o.verbose)
+      printSummary(scene, report, job, wallMilliseconds);
+    else
+      printSummaryLine(scene, report, job, wallMilliseconds);
   }
   summary["peak_resident_bytes"] = peakResidentBytes();
   if (o.farm.json) std::printf("%s\n", summary.dump(2).c_str());
@@ -218,6 +223,8 @@ void addRenderCommand(CLI::App& app) {
   c->add_option("--backend", o->backend, "Renderer backend: the GPU kernels or the CPU reference")
       ->check(CLI::IsMember({"gpu", "cpu"}));
   c->add_option("--adapter", o->adapter, "GPU adapter: a substring of its name (default: FACET_ADAPTER or the first)");
+  c->add_flag("--verbose", o->verbose,
+              "After each render, the objects' refinement, the lighting, every stage's time and the rays per bounce");
   c->callback([o, output, c] {
     checkWatchFlags(*c, o->watch, o->farm);
     chooseOutputs(*o, output->count() > 0);

@@ -45,6 +45,10 @@ void printRaysPerBounce(const RenderReport& report) {
   }
 }
 
+void printReportWarnings(const RenderReport& report) {
+  for (const std::string& warning : report.warnings) std::fprintf(stderr, "facet: warning: %s\n", warning.c_str());
+}
+
 }  // namespace
 
 std::string lightingName(const scene::Scene& scene) {
@@ -57,9 +61,30 @@ std::uint64_t peakResidentBytes() {
   return std::uint64_t(usage.ru_maxrss) * 1024;  // Linux reports KiB
 }
 
+void printSummaryLine(const scene::Scene& scene, const RenderReport& report, const RenderJob& job,
+                      double wallMilliseconds) {
+  printReportWarnings(report);
+  double stageMilliseconds = 0;
+  for (const StageTime& stage : report.stages) stageMilliseconds += stage.milliseconds;
+  std::string line = "wrote " + CLI::detail::join(outputPaths(job), " and ") + ": " +
+                     std::to_string(report.window.width()) + "x" + std::to_string(report.window.height()) + ", " +
+                     std::to_string(scene.render.samplesPerPixel) + " spp, " +
+                     (scene.render.method == scene::IntersectionMethod::Exact ? "exact" : "tessellated");
+  if (scene.render.bounces > 0) line += ", " + std::to_string(scene.render.bounces) + " bounces";
+  char timing[160];
+  std::snprintf(timing, sizeof timing, "; %s; %.2f s (stages %.2f s), %.2f Mrays/s", report.device.c_str(),
+                wallMilliseconds * 1e-3, stageMilliseconds * 1e-3, raysPerSecond(report) * 1e-6);
+  line += timing;
+  // What facet added or left out is named, never only in --verbose.
+  if (scene.environment && scene::isStudioEnvironment(*scene.environment))
+    line += std::string("; lit by the ") + scene::kStudioEnvironmentName + " (the scene has no lights or environment)";
+  if (!report.pathsNote.empty()) line += "; " + report.pathsNote;
+  std::printf("%s\n", line.c_str());
+}
+
 void printSummary(const scene::Scene& scene, const RenderReport& report, const RenderJob& job,
                   double wallMilliseconds) {
-  for (const std::string& warning : report.warnings) std::fprintf(stderr, "facet: warning: %s\n", warning.c_str());
+  printReportWarnings(report);
   std::printf("%s\n", report.geometrySummary.c_str());
   if (scene.environment && scene::isStudioEnvironment(*scene.environment))
     std::printf("lighting: %s (the scene has no lights or environment)\n", scene::kStudioEnvironmentName);

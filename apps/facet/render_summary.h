@@ -24,6 +24,12 @@ struct RenderJob {
 // (scenes/studio_environment.h), else "scene".
 std::string lightingName(const scene::Scene& scene);
 
+// One line per render (the default): outputs, size, method, device, time
+// and rate, and whatever facet added or left out.
+void printSummaryLine(const scene::Scene& scene, const RenderReport& report, const RenderJob& job,
+                      double wallMilliseconds);
+// --verbose: the per-object statistics, the lighting, every stage's time
+// and the rays per bounce.
 void printSummary(const scene::Scene& scene, const RenderReport& report, const RenderJob& job, double wallMilliseconds);
 
 // One entry of --json's "renders".

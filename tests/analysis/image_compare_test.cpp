@@ -100,6 +100,39 @@ TEST(ImageError, ZeroLengthNormalsAreTheWorstAngle) {
   EXPECT_NEAR(normalAngle(glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 2.0f, 0.0f)), std::numbers::pi / 2, 1e-12);
 }
 
+TEST(BlockRelativeRmse, OnePixelBlocksAreTheImageError) {
+  Image candidate = square();
+  for (std::size_t p = 0; p < candidate.pixelCount(); ++p)
+    if (covered(candidate, p)) candidate.beauty[p] += glm::vec4(float(p % 3) * 0.1f, 0.05f, -0.02f, 0.0f);
+  EXPECT_NEAR(blockRelativeRmse(candidate, square(), square(), 1), compareToReference(candidate, square()).relativeRmse,
+              1e-9);
+}
+
+TEST(BlockRelativeRmse, BlocksAverageNoiseAwayAndKeepABias) {
+  // +-0.1 alternating from pixel to pixel: noise that a 2 x 2 block cancels;
+  // a uniform +0.05 on top is a bias that every block keeps.
+  Image noisy = square(), biased = square();
+  for (std::size_t p = 0; p < noisy.pixelCount(); ++p) {
+    if (!covered(noisy, p)) continue;
+    const int x = int(p % 9), y = int(p / 9);
+    noisy.beauty[p] += glm::vec4(((x + y) % 2 ? 0.1f : -0.1f) * glm::vec3(1), 0.0f);
+    biased.beauty[p] += glm::vec4(0.05f, 0.05f, 0.05f, 0.0f);
+  }
+  EXPECT_NEAR(blockRelativeRmse(noisy, square(), square(), 1), 0.2, 1e-6);
+  EXPECT_NEAR(blockRelativeRmse(biased, square(), square(), 1), 0.1, 1e-6);
+  EXPECT_NEAR(blockRelativeRmse(biased, square(), square(), 4), 0.1, 1e-6);
+  // The covered 5 x 5 square meets 2 x 2 blocks in whole, half and single
+  // blocks: the whole ones cancel, the others keep part of the noise.
+  const double blocked = blockRelativeRmse(noisy, square(), square(), 2);
+  EXPECT_LT(blocked, 0.2);
+  EXPECT_GT(blocked, 0.0);
+  // Uncovered pixels never count, whatever they hold.
+  Image outside = square();
+  outside.beauty[0] = {100.0f, 100.0f, 100.0f, 1.0f};
+  EXPECT_EQ(blockRelativeRmse(outside, square(), square(), 3), 0.0);
+  EXPECT_EQ(blockRelativeRmse(outside, square(), Image(9, 9), 1), 0.0);
+}
+
 TEST(DepthError, ComparesWhereBothAreCoveredAndCountsTheRest) {
   const std::vector<float> reference{10.0f, 10.0f, INFINITY, 20.0f};
   const std::vector<float> candidate{10.0f, INFINITY, 5.0f, 22.0f};

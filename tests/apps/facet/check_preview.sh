@@ -20,7 +20,7 @@ channel_range() {
 }
 
 "$facet" render "$ball" "${common[@]}" --png alone.png >alone.out
-grep -q "^lighting: default studio environment" alone.out || fail "the studio environment is not named: $(cat alone.out)"
+grep -q "; lit by the default studio environment" alone.out || fail "the studio environment is not named: $(cat alone.out)"
 [[ -s alone.png && -z $(ls ./*.exr 2>/dev/null) ]] || fail "--png alone must write the PNG only"
 read -r lo hi <<<"$(channel_range alone.png 3)"
 [[ $lo == 255 ]] || fail "the default preview is not opaque (alpha from $lo)"

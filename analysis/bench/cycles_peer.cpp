@@ -1,0 +1,250 @@
+#include "analysis/bench/cycles_peer.h"
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/image_compare.h"
+#include "analysis/timing.h"
+#include "rules/rules.h"
+
+extern char** environ;
+
+namespace facet::analysis::bench {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+bool isExecutable(const fs::path& path) { return fs::is_regular_file(path) && access(path.c_str(), X_OK) == 0; }
+
+// Runs `argv` with stdout and stderr into `log`; throws unless it exits 0.
+void runLogged(const std::vector<std::string>& argv, const fs::path& log) {
+  std::vector<char*> pointers;
+  for (const std::string& a : argv) pointers.push_back(const_cast<char*>(a.c_str()));
+  pointers.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  pid_t pid = 0;
+  const int spawnError = posix_spawn(&pid, pointers[0], &actions, nullptr, pointers.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawnError != 0) throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(spawnError));
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error(argv[0] + " failed (status " + std::to_string(status) + "); see " + log.string());
+}
+
+void writeObj(const fs::path& path, const scene::ControlCage& cage) {
+  std::ofstream obj(path);
+  obj.precision(17);
+  for (const glm::dvec3& p : cage.positions) obj << "v " << p.x << " " << p.y << " " << p.z << "\n";
+  std::size_t at = 0;
+  for (int count : cage.faceVertexCounts) {
+    obj << "f";
+    for (int i = 0; i < count; ++i) obj << " " << cage.faceVertexIndices[at++] + 1;
+    obj << "\n";
+  }
+  if (!obj) throw std::runtime_error(path.string() + ": cannot write");
+}
+
+json triple(const glm::dvec3& v) { return json::array({v.x, v.y, v.z}); }
+
+[[noreturn]] void noCounterpart(const materials::Material& m, const std::string& why) {
+  throw std::invalid_argument("cycles: material '" + m.name + "' has no counterpart in cycles_scene.py: " + why);
+}
+
+// The material in the script's terms. Each kind is the same BSDF on both
+// sides only under the conditions checked here (docs/shading.md, "Blender's
+// metallic Fresnel"; docs/rendering.md, "Transmission").
+json cyclesMaterial(const materials::Material& m) {
+  using namespace rules::f64;
+  if (m.textures || m.emission != glm::dvec3(0) || m.anisotropy != 0 || m.clearcoat != 0 || m.energyCompensation)
+    noCounterpart(m, "textures, emission, anisotropy, a coat and energy compensation are not described");
+  if (m.distribution != D_GGX) noCounterpart(m, "Cycles' microfacets are GGX");
+  const double roughness = std::sqrt(m.alpha);
+  if (m.transmission > 0) {
+    if (m.transmission != 1 || m.thinWalled) noCounterpart(m, "glass is a closed volume, transmission 1");
+    if (m.alpha > 0 && m.geometry != G_SMITH_GGX) noCounterpart(m, "rough glass needs the separable Smith G");
+    glm::dvec3 absorption(0);
+    if (std::isfinite(m.attenuationDistance)) absorption = -glm::log(m.attenuationColor) / m.attenuationDistance;
+    return {{"kind", "glass"}, {"ior", m.eta.x}, {"roughness", roughness}, {"absorption", triple(absorption)}};
+  }
+  if (m.fresnel == F_DIELECTRIC && m.eta.x == 1.0) return {{"kind", "diffuse"}, {"albedo", triple(m.diffuse)}};
+  if (m.fresnel == F_BLENDER_METALLIC && m.geometry == G_SMITH_GGX && m.diffuse == glm::dvec3(0))
+    return {{"kind", "metal"}, {"base", triple(m.f0)}, {"roughness", roughness}};
+  noCounterpart(m,
+                "a metal needs Blender's metallic Fresnel, the separable Smith G and no diffuse; a diffuse "
+                "surface the dielectric Fresnel of index 1 (no specular)");
+}
+
+}  // namespace
+
+std::optional<fs::path> findBlender() {
+  if (const char* named = std::getenv("FACET_BLENDER"); named && *named) {
+    if (!isExecutable(named))
+      throw std::invalid_argument(std::string("FACET_BLENDER '") + named + "': not an executable file");
+    return fs::path(named);
+  }
+  const char* path = std::getenv("PATH");
+  std::istringstream folders(path ? path : "");
+  for (std::string folder; std::getline(folders, folder, ':');)
+    if (!folder.empty() && isExecutable(fs::path(folder) / "blender")) return fs::path(folder) / "blender";
+  return std::nullopt;
+}
+
+std::optional<CyclesPeer> findCyclesPeer(const fs::path& root, const std::string& section, Report& report) {
+  const fs::path script = root / "tools/blender/cycles_scene.py";
+  const std::optional<fs::path> blender = findBlender();
+  if (blender && fs::exists(script)) return CyclesPeer{*blender, script};
+  const std::string note =
+      !blender ? "blender is not on PATH and FACET_BLENDER is unset" : script.string() + " is not under --root";
+  std::printf("%s: skipped: %s\n", section.c_str(), note.c_str());
+  report.paragraph("Skipped: " + note + ".");
+  return std::nullopt;
+}
+
+unsigned cyclesThreads() {
+  const char* lavapipe = std::getenv("LP_NUM_THREADS");
+  return lavapipe && std::atoi(lavapipe) > 0 ? unsigned(std::atoi(lavapipe)) : std::thread::hardware_concurrency();
+}
+
+fs::path describeForCycles(const scene::Scene& scene, const fs::path& directory) {
+  if (!scene.environment || !scene.environment->map)
+    throw std::invalid_argument("cycles: the scene has no environment map");
+  if (!scene.lights.empty()) throw std::invalid_argument("cycles: punctual lights are not described");
+  if (scene.environment->rotationDegrees != kCyclesMapRotationDegrees)
+    throw std::invalid_argument("cycles: the environment must be turned by 270 degrees to match Cycles' map");
+  const scene::Camera& camera = scene.camera;
+  const scene::RenderSettings& render = scene.render;
+  const auto limit = [&](int kind) { return kind < 0 ? render.bounces : std::min(kind, render.bounces); };
+  json description = {
+      {"size", {render.width, render.height}},
+      {"camera",
+       {{"eye", triple(camera.eye)},
+        {"target", triple(camera.target)},
+        {"up", triple(camera.up)},
+        {"fov", camera.verticalFovDegrees}}},
+      {"environment",
+       {{"file", fs::absolute(scene.environment->map->source).string()}, {"intensity", scene.environment->intensity}}},
+      {"bounces",
+       {{"total", render.bounces},
+        {"diffuse", limit(render.diffuseBounces)},
+        {"glossy", limit(render.glossyBounces)},
+        {"transmission", limit(render.transmissionBounces)}}},
+      {"objects", json::array()}};
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const scene::Object& object = scene.objects[i];
+    const fs::path cage = directory / ("object" + std::to_string(i) + ".obj");
+    writeObj(cage, object.cage);
+    const bool subdivided = object.subdivision == scene::Subdivision::CatmullClark;
+    description["objects"].push_back({{"cage", cage.string()},
+                                      {"levels", subdivided ? kCyclesSubdivisionLevels : 0},
+                                      {"material", cyclesMaterial(scene.materials.at(std::size_t(object.material)))}});
+  }
+  const fs::path path = directory / "scene.json";
+  std::ofstream(path) << description.dump(2) << "\n";
+  return path;
+}
+
+void renderInCycles(const fs::path& blender, const fs::path& script, const fs::path& description,
+                    const CyclesRenders& renders, const fs::path& directory) {
+  std::string samples;
+  for (int n : renders.samples) {
+    if (!samples.empty()) samples += ',';
+    samples += std::to_string(n);
+  }
+  const std::string threads = std::to_string(cyclesThreads());
+  runLogged({blender.string(),
+             "-b",
+             "--factory-startup",
+             "-t",
+             threads,
+             "--python",
+             script.string(),
+             "--",
+             "--scene",
+             description.string(),
+             "--threads",
+             threads,
+             "--samples",
+             samples,
+             "--repeats",
+             std::to_string(renders.repeats),
+             "--converged",
+             std::to_string(renders.converged),
+             "--output",
+             directory.string()},
+            directory / "blender.log");
+}
+
+std::map<int, double> readCyclesTimes(const fs::path& csv) {
+  std::ifstream in(csv);
+  std::map<int, std::vector<double>> runs;
+  std::string line;
+  std::getline(in, line);  // header
+  for (int samples; std::getline(in, line);)
+    if (double seconds; std::sscanf(line.c_str(), "%d,%lf", &samples, &seconds) == 2) runs[samples].push_back(seconds);
+  std::map<int, double> medians;
+  for (const auto& [samples, seconds] : runs) medians[samples] = median(seconds);
+  return medians;
+}
+
+std::optional<double> timeToError(const std::vector<Point>& curve, double error) {
+  for (std::size_t i = 0; i < curve.size(); ++i) {
+    if (curve[i].relativeRmse > error) continue;
+    if (i == 0) return curve[0].milliseconds;
+    const Point &a = curve[i - 1], &b = curve[i];
+    const double t = std::log(error / a.relativeRmse) / std::log(b.relativeRmse / a.relativeRmse);
+    return std::exp(std::log(a.milliseconds) + t * std::log(b.milliseconds / a.milliseconds));
+  }
+  return std::nullopt;
+}
+
+Point timedPoint(const std::string& curve, int samples, int repeats, const std::function<RenderReport()>& render,
+                 const Image& reference) {
+  Image image;
+  const double ms = medianMilliseconds(repeats, [&] {
+    RenderReport r = render();
+    image = std::move(r.image);
+    return traceMilliseconds(r);
+  });
+  const Point point{curve, samples, ms, compareToReference(image, reference).relativeRmse};
+  std::printf("  facet %-22s N=%-4d %9.1f ms  relative RMSE %.4f\n", curve.c_str(), samples, ms, point.relativeRmse);
+  std::fflush(stdout);
+  return point;
+}
+
+std::string verdict(const std::vector<std::vector<Point>>& curves, const Point& target) {
+  std::optional<double> fastest;
+  std::string fastestCurve;
+  for (const std::vector<Point>& curve : curves)
+    if (const std::optional<double> t = timeToError(curve, target.relativeRmse); t && (!fastest || *t < *fastest))
+      fastest = t, fastestCurve = curve.front().curve;
+  char text[256];
+  if (fastest)
+    std::snprintf(text, sizeof text,
+                  "facet reaches Cycles' %d-spp error (%.3g) in %.0f ms (%s, interpolated): %.2fx Cycles' %.0f ms",
+                  target.samples, target.relativeRmse, *fastest, fastestCurve.c_str(), *fastest / target.milliseconds,
+                  target.milliseconds);
+  else
+    std::snprintf(text, sizeof text, "facet does not reach Cycles' %d-spp error (%.3g) on any measured curve",
+                  target.samples, target.relativeRmse);
+  return text;
+}
+
+}  // namespace facet::analysis::bench
