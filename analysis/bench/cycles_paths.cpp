@@ -174,8 +174,7 @@ std::vector<std::vector<Point>> timedCurves(Renderer& renderer, scene::Scene sce
   for (const scene::IntersectionMethod method :
        {scene::IntersectionMethod::Exact, scene::IntersectionMethod::Tessellated}) {
     scene.render.method = method;
-    const std::string name =
-        std::string("facet, ") + (method == scene::IntersectionMethod::Exact ? "exact" : "tessellated");
+    const std::string name = method == scene::IntersectionMethod::Exact ? "exact" : "tessellated";
     render(renderer, scene, sizes.facetSamples.front(), 0);  // untimed: pipelines and caches
     std::vector<Point>& curve = curves.emplace_back();
     for (int n : sizes.facetSamples)
@@ -208,6 +207,8 @@ void runCyclesPaths(Renderer& renderer, const BenchOptions& options, Report& rep
     const std::pair<Image, Image> facet = facetHalves(renderer, c.scene, sizes);
     const Image facetConverged = average(facet.first, facet.second);
     writeExr(directory / "facet_converged.exr", facetConverged);
+    writeExr(directory / "facet_half1.exr", facet.first);
+    writeExr(directory / "facet_half2.exr", facet.second);
     std::printf("bounces: %s: Cycles with %s\n", c.name.c_str(), peer->blender.c_str());
     std::fflush(stdout);
     CyclesRenders renders{c.timed ? sizes.cyclesSamples : std::vector<int>{}, options.repeats, sizes.cyclesConverged};
@@ -244,8 +245,8 @@ void runCyclesPaths(Renderer& renderer, const BenchOptions& options, Report& rep
     std::vector<std::vector<std::string>> timing;
     for (const std::vector<Point>& curve : curves)
       for (const Point& p : curve)
-        timing.push_back(
-            {p.curve, std::to_string(p.samples), number("%.1f", p.milliseconds), number("%.4f", p.relativeRmse)});
+        timing.push_back({p.curve == "Cycles" ? p.curve : "facet " + p.curve, std::to_string(p.samples),
+                          number("%.1f", p.milliseconds), number("%.4f", p.relativeRmse)});
     writeCsv(directory / "time_to_error.csv", {"renderer", "spp", "milliseconds", "relative_rmse"}, timing);
     const Point& target = *std::find_if(curves[0].begin(), curves[0].end(),
                                         [&](const Point& p) { return p.samples == sizes.cyclesTarget; });
