@@ -64,16 +64,25 @@ std::uint64_t peakResidentBytes() {
 void printSummaryLine(const scene::Scene& scene, const RenderReport& report, const RenderJob& job,
                       double wallMilliseconds) {
   printReportWarnings(report);
-  double stageMilliseconds = 0;
-  for (const StageTime& stage : report.stages) stageMilliseconds += stage.milliseconds;
+  double startupMilliseconds = 0, stageMilliseconds = 0;
+  for (const StageTime& stage : report.stages)
+    (isStartup(stage.stage) ? startupMilliseconds : stageMilliseconds) += stage.milliseconds;
   std::string line = "wrote " + CLI::detail::join(outputPaths(job), " and ") + ": " +
                      std::to_string(report.window.width()) + "x" + std::to_string(report.window.height()) + ", " +
                      std::to_string(scene.render.samplesPerPixel) + " spp, " +
                      (scene.render.method == scene::IntersectionMethod::Exact ? "exact" : "tessellated");
-  if (scene.render.bounces > 0) line += ", " + std::to_string(scene.render.bounces) + " bounces";
+  if (scene.render.bounces > 0)
+    line += ", " + std::to_string(scene.render.bounces) + (scene.render.bounces == 1 ? " bounce" : " bounces");
+  // The rays each bounce cast, up to the last that cast any.
+  std::size_t lastBounce = report.raysPerBounce.size();
+  while (lastBounce > 1 && report.raysPerBounce[lastBounce - 1].rays == 0) --lastBounce;
+  for (std::size_t bounce = 0; bounce < lastBounce; ++bounce)
+    line += (bounce == 0 ? " (rays per bounce " : "/") + std::to_string(report.raysPerBounce[bounce].rays) +
+            (bounce + 1 == lastBounce ? ")" : "");
   char timing[160];
-  std::snprintf(timing, sizeof timing, "; %s; %.2f s (stages %.2f s), %.2f Mrays/s", report.device.c_str(),
-                wallMilliseconds * 1e-3, stageMilliseconds * 1e-3, raysPerSecond(report) * 1e-6);
+  std::snprintf(timing, sizeof timing, "; %s; %.2f s (start-up %.2f s, stages %.2f s), %.2f Mrays/s",
+                report.device.c_str(), wallMilliseconds * 1e-3, startupMilliseconds * 1e-3, stageMilliseconds * 1e-3,
+                raysPerSecond(report) * 1e-6);
   line += timing;
   // What facet added or left out is named, never only in --verbose.
   if (scene.environment && scene::isStudioEnvironment(*scene.environment))
