@@ -36,7 +36,7 @@ install(FILES ${PROJECT_BINARY_DIR}/facet.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}
 foreach(folder examples cages environments)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenes/${folder} DESTINATION ${FACET_DATA_INSTALL_DIR}/scenes)
 endforeach()
-install(FILES ${PROJECT_SOURCE_DIR}/tools/blender/material_preview.py DESTINATION ${FACET_DATA_INSTALL_DIR}/tools/blender)
+install(FILES ${PROJECT_SOURCE_DIR}/tools/blender/cycles_scene.py DESTINATION ${FACET_DATA_INSTALL_DIR}/tools/blender)
 
 # The build tree's binary finds its data as an installed one does
 # (apps/facet/data_folder.h): share/facet/scenes and tools/blender beside it.

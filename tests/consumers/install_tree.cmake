@@ -12,7 +12,7 @@ foreach(path bin/facet ${LIBDIR}/libfacet.so include/facet/facet.h include/facet
              ${LIBDIR}/cmake/facet/facetConfig.cmake ${LIBDIR}/cmake/facet/facetConfigVersion.cmake
              ${LIBDIR}/pkgconfig/facet.pc share/facet/scenes/examples/preview.json
              share/facet/scenes/environments/sunrise.exr share/facet/scenes/cages/cube.obj
-             share/facet/tools/blender/material_preview.py)
+             share/facet/tools/blender/cycles_scene.py)
   if(NOT EXISTS ${PREFIX}/${path})
     message(FATAL_ERROR "the install has no ${path}")
   endif()
