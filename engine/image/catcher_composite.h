@@ -14,6 +14,11 @@ namespace facet {
 // it to be blocked: the pixel is left as the model's render has it.
 inline constexpr float kCatcherRadianceFloor = 1e-6f;
 
+// The ratio is summed over the ground in a (2 radius + 1)^2 window of
+// pixels: the visibility of the environment is noisy per pixel and smooth
+// over a few.
+inline constexpr int kCatcherRadius = 2;
+
 // Three renders of the same pixels (width x height, row by row), with the
 // same camera samples and random numbers, RGB and alpha = coverage:
 //   model    the model alone, as the picture shows it;
@@ -23,6 +28,7 @@ inline constexpr float kCatcherRadianceFloor = 1e-6f;
 // share scaled per channel by the shadow factor s in [0, 1]; alpha is the
 // model's. Throws std::invalid_argument where the planes' sizes differ.
 std::vector<glm::vec4> catchShadows(int width, int height, const std::vector<glm::vec4>& model,
-                                    const std::vector<glm::vec4>& holdout, const std::vector<glm::vec4>& ground);
+                                    const std::vector<glm::vec4>& holdout, const std::vector<glm::vec4>& ground,
+                                    int radius = kCatcherRadius);
 
 }  // namespace facet
