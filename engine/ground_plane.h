@@ -26,8 +26,8 @@ struct GroundScenes {
 // Throws std::invalid_argument for a scene without an environment or objects.
 GroundScenes groundScenes(const scene::Scene& model);
 
-// The lowest height (y) of the limit surface: each patch evaluated on a
-// grid fine enough that the error is far below a pixel's size.
+// The lowest height (y) of the limit surface, each patch evaluated on a
+// 9 x 9 grid of its (u, v).
 double lowestPoint(const scene::SceneGeometry& geometry);
 
 }  // namespace facet

@@ -1,7 +1,8 @@
 // The shadow catcher's composite on hand-made planes: the model's pixels
 // are left as rendered, the unshadowed ground is the background, the
-// shadowed ground darkens it by the ratio, a silhouette pixel blends by its
-// coverage, and a ground no light reaches is no shadow.
+// shadowed ground darkens it by the ratio, summed over a window of the
+// ground's pixels, a silhouette pixel blends by its coverage, and a ground no
+// light reaches is no shadow.
 #include "engine/image/catcher_composite.h"
 
 #include <gtest/gtest.h>
@@ -78,6 +79,22 @@ TEST(CatcherComposite, AGroundNoLightReachesCastsNoShadow) {
       catchShadows(1, 1, Plane{kBackground}, Plane{{0.0f, 0.0f, 0.0f, 1.0f}}, Plane{{0.0f, 0.0f, 0.0f, 1.0f}});
   expectNear(out[0], kBackground, "unlit ground");
   for (int c = 0; c < 4; ++c) EXPECT_TRUE(std::isfinite(out[0][c]));
+}
+
+TEST(CatcherComposite, SumsTheRatioOverTheWindowsGround) {
+  // Every other pixel shadowed outright: a noisy visibility, whose window
+  // holds 13 lit pixels of 25.
+  Plane holdout(25, kGround);
+  for (std::size_t i = 1; i < 25; i += 2) holdout[i] = {0.0f, 0.0f, 0.0f, 1.0f};
+  const Plane model(25, kBackground), ground(25, kGround);
+  expectNear(catchShadows(5, 5, model, holdout, ground, 2)[12], glm::vec4(0.52f * glm::vec3(kBackground), 0.0f),
+             "the window's ratio");
+  expectNear(catchShadows(5, 5, model, holdout, ground, 0)[12], kBackground, "a pixel's own ratio");
+  // The model's pixels hold no ground: the black holdout there is no shadow.
+  const glm::vec4 covered{0.9f, 0.1f, 0.1f, 1.0f}, half(0.5f * glm::vec3(kGround), 1.0f);
+  const Plane row = catchShadows(3, 1, Plane{covered, kBackground, kBackground},
+                                 Plane{{0.0f, 0.0f, 0.0f, 1.0f}, half, half}, Plane(3, kGround), 1);
+  expectNear(row[1], glm::vec4(0.5f * glm::vec3(kBackground), 0.0f), "beside the model");
 }
 
 TEST(CatcherComposite, RejectsPlanesOfOtherSizes) {
