@@ -10,8 +10,9 @@
 
 namespace facet {
 
-// Where the ground's unshadowed radiance is at most this, no light reaches
-// it to be blocked: the pixel is left as the model's render has it.
+// Where the ground's unshadowed radiance, averaged over the window below,
+// is at most this, no light reaches it to be blocked: the pixel is left as
+// the model's render has it.
 inline constexpr float kCatcherRadianceFloor = 1e-6f;
 
 // The ratio is summed over the ground in a (2 radius + 1)^2 window of
