@@ -5,8 +5,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
+
+#include "engine/image/catcher_composite.h"
 
 namespace facet {
 namespace {
@@ -34,6 +37,44 @@ PixelRect boundsOf(const TileGrid& grid, const std::vector<int>& tiles) {
               std::max(bounds.y1, r.y1)};
   }
   return bounds;
+}
+
+// Round `round` of `scene` over `window` of the full image.
+RenderReport renderRound(Renderer& renderer, const scene::Scene& scene, int round, const PixelRect& window,
+                         Backend backend, unsigned threads) {
+  RoundFrame frame = roundFrame(scene, round);
+  if (frame.scene.environment) frame.scene.environment->seed = scene.environment->seed + std::uint32_t(round);
+  const PixelRect crop{window.x0 + frame.dx, window.y0 + frame.dy, window.x1 + frame.dx, window.y1 + frame.dy};
+  return renderer.render(frame.scene, backend, {}, {crop, threads});
+}
+
+// The ground's round over `sub` of the round's `window`, whose pixels
+// `image` holds: the ground's two scenes take the round's camera samples and
+// random numbers, so its shadow is composited, and its noise judged, per
+// round. Marks in `shadowed` the tiles of the pixels it darkens.
+void catchRoundShadows(Renderer& renderer, const GroundScenes& ground, int round, const PixelRect& window,
+                       const PixelRect& sub, Backend backend, unsigned threads, Image& image, const TileGrid& grid,
+                       std::vector<char>& shadowed) {
+  const std::vector<glm::vec4> holdout =
+      renderRound(renderer, ground.holdout, round, sub, backend, threads).image.beauty;
+  const std::vector<glm::vec4> alone = renderRound(renderer, ground.ground, round, sub, backend, threads).image.beauty;
+  std::vector<glm::vec4> model(std::size_t(sub.pixelCount()));
+  const auto at = [&](int x, int y) -> glm::vec4& { return image.beauty[image.index(x - window.x0, y - window.y0)]; };
+  for (int y = sub.y0; y < sub.y1; ++y)
+    for (int x = sub.x0; x < sub.x1; ++x) model[std::size_t((y - sub.y0) * sub.width() + (x - sub.x0))] = at(x, y);
+  const std::vector<glm::vec4> caught = catchShadows(sub.width(), sub.height(), model, holdout, alone);
+  for (int y = sub.y0; y < sub.y1; ++y)
+    for (int x = sub.x0; x < sub.x1; ++x) {
+      const glm::vec4& c = caught[std::size_t((y - sub.y0) * sub.width() + (x - sub.x0))];
+      if (c == at(x, y)) continue;
+      at(x, y) = c;
+      shadowed[std::size_t((y / grid.size) * grid.columns() + x / grid.size)] = 1;
+    }
+}
+
+scene::Scene withRoundSpp(scene::Scene scene, int spp) {
+  scene.render.samplesPerPixel = spp;
+  return scene;
 }
 
 }  // namespace
@@ -65,12 +106,15 @@ RoundFrame roundFrame(const scene::Scene& scene, int round) {
 }
 
 AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Backend backend,
-                              const AdaptiveSettings& settings, unsigned threads) {
+                              const AdaptiveSettings& settings, unsigned threads, const GroundScenes* ground) {
   checkSettings(settings);
   const Clock::time_point start = Clock::now();
   const int width = scene.render.width, height = scene.render.height;
-  scene::Scene round = scene;
-  round.render.samplesPerPixel = settings.roundSpp;
+  const scene::Scene round = withRoundSpp(scene, settings.roundSpp);
+  std::optional<GroundScenes> groundRound;
+  if (ground)
+    groundRound =
+        GroundScenes{withRoundSpp(ground->holdout, settings.roundSpp), withRoundSpp(ground->ground, settings.roundSpp)};
   SampleRounds rounds(width, height, settings.tileSize);
   const TileGrid& grid = rounds.grid();
   AdaptiveReport report;
@@ -78,6 +122,7 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
   report.errors.assign(std::size_t(grid.count()), 0.0);
   std::vector<int> active(std::size_t(grid.count()));
   for (int t = 0; t < grid.count(); ++t) active[std::size_t(t)] = t;
+  std::vector<char> shadowed(std::size_t(grid.count()), 0);  // tiles where the ground darkens a pixel
 
   while (!active.empty()) {
     // Each round is an independent randomization of the same estimator:
@@ -86,11 +131,18 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
     // rules/sampling/random.h), and its seed are its own, so the rounds'
     // spread is an unbiased estimate of their variance (L'Ecuyer & Lemieux
     // 2002). The first is the scene itself: its centre samples give the AOVs.
-    RoundFrame frame = roundFrame(round, report.rounds);
-    if (frame.scene.environment) frame.scene.environment->seed = scene.environment->seed + std::uint32_t(report.rounds);
     const PixelRect window = boundsOf(grid, active);
-    const PixelRect crop{window.x0 + frame.dx, window.y0 + frame.dy, window.x1 + frame.dx, window.y1 + frame.dy};
-    RenderReport rendered = renderer.render(frame.scene, backend, {}, {crop, threads});
+    RenderReport rendered = renderRound(renderer, round, report.rounds, window, backend, threads);
+    if (groundRound) {
+      // The first round finds where the ground is shadowed; later rounds
+      // render the ground there alone.
+      std::vector<int> caught;
+      for (int t : active)
+        if (report.rounds == 0 || shadowed[std::size_t(t)]) caught.push_back(t);
+      if (!caught.empty())
+        catchRoundShadows(renderer, *groundRound, report.rounds, window, boundsOf(grid, caught), backend, threads,
+                          rendered.image, grid, shadowed);
+    }
     rounds.add(rendered.image, window, active);
     report.samples += std::uint64_t(settings.roundSpp) * window.pixelCount();
     if (report.rounds++ == 0) report.first = std::move(rendered);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "engine/ground_plane.h"
 #include "engine/image/sample_rounds.h"
 #include "engine/renderer.h"
 
@@ -49,9 +50,13 @@ struct AdaptiveReport {
 };
 
 // Renders `scene` (its size; its spp and seed are the rounds') by rounds.
+// With `ground` (engine/ground_plane.h, of the same camera and size), each
+// round renders its two scenes over the same pixels too and the beauty is
+// their shadow catcher's composite (engine/image/catcher_composite.h).
 // Throws std::invalid_argument for settings that break the rules above.
 AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Backend backend,
-                              const AdaptiveSettings& settings, unsigned threads = 0);
+                              const AdaptiveSettings& settings, unsigned threads = 0,
+                              const GroundScenes* ground = nullptr);
 
 // Round `round`'s scene and where its pixels lie: the image inside a larger
 // one, (a, b) = (round % 64, round / 64) pixels wider on the left and

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <utility>
@@ -22,6 +23,7 @@
 #include "data_folder.h"
 #include "engine/adaptive_render.h"
 #include "engine/camera/camera_path.h"
+#include "engine/ground_plane.h"
 #include "engine/image/contact_sheet.h"
 #include "engine/image/image_io.h"
 #include "material_options.h"
@@ -138,16 +140,23 @@ void runPreview(const PreviewStageFlags& f) {
   const Backend backend = f.backend == "cpu" ? Backend::Cpu : Backend::Gpu;
   const int frames = f.turntable.value_or(1);
   std::unique_ptr<FrameFolder> folder = f.movie.empty() ? nullptr : std::make_unique<FrameFolder>();
+  // The ground's scenes are the same under every material.
+  const std::optional<GroundScenes> ground = f.noGround ? std::nullopt : std::optional(groundScenes(model));
   Renderer renderer(f.adapter);
-  nlohmann::json summary = {
-      {"backend", f.backend},  {"width", layout.width()}, {"height", layout.height()},         {"cell_width", width},
-      {"cell_height", height}, {"frames", frames},        {"renders", nlohmann::json::array()}};
+  nlohmann::json summary = {{"backend", f.backend},      {"width", layout.width()},
+                            {"height", layout.height()}, {"cell_width", width},
+                            {"cell_height", height},     {"frames", frames},
+                            {"ground", bool(ground)},    {"renders", nlohmann::json::array()}};
   for (int frame = 0; frame < frames; ++frame) {
+    const scene::Camera camera =
+        f.turntable ? camera::turntableCamera(model.camera, frame, *f.turntable) : model.camera;
+    std::optional<GroundScenes> framed = ground;
+    if (framed) framed->holdout.camera = framed->ground.camera = camera;
     std::vector<ContactCell> cells;
     for (std::size_t i = 0; i < scenes.size(); ++i) {
       scene::Scene scene = scenes[i];
-      if (f.turntable) scene.camera = camera::turntableCamera(model.camera, frame, *f.turntable);
-      const AdaptiveReport report = renderAdaptive(renderer, scene, backend, settings);
+      scene.camera = camera;
+      const AdaptiveReport report = renderAdaptive(renderer, scene, backend, settings, 0, framed ? &*framed : nullptr);
       cells.push_back({previewPixels(report.image.beauty, width, height, look), labels[i]});
       summary["adapter"] = report.first.device;
       summary["renders"].push_back(renderJson(labels[i], frame, report, settings.noiseThreshold));

@@ -28,6 +28,8 @@ void addPreviewStageOptions(CLI::App& c, PreviewStageFlags& f) {
   addEnvironmentOptions(c, f.lighting);
   c.add_option("--ibl", f.lighting.ibl, "How the environment lights the model (default: prefiltered)")
       ->check(CLI::IsMember({"sampled", "prefiltered", "filtered"}));
+  c.add_flag("--no-ground", f.noGround,
+             "No ground under the model (default: a ground that catches the model's shadow and is otherwise unseen)");
   c.add_option("--noise-threshold", f.noiseThreshold,
                "Stop a tile once its relative standard error is below this (default 0.02)");
   c.add_option("--max-spp", f.maxSpp, "At most this many camera samples per pixel (default 256)");

@@ -28,6 +28,7 @@ struct PreviewStageFlags {
   std::optional<int> turntable;  // frames of a full orbit
   std::string movie;             // .mp4 or .gif
   double fps = 24;
+  bool noGround = false;  // no shadow-catching ground under the model
   PreviewFlags preview;
   std::string backend = "gpu";
   std::string adapter;

@@ -6,6 +6,9 @@
 #     the threshold unless it says a cap stopped it;
 #   - a noisier lighting method takes more samples than a smoother one;
 #   - --env lights the model by the map it names;
+#   - the ground (on by default; the other checks turn it off) darkens the
+#     background right under the ball and leaves the ball and the backdrop
+#     above it as --no-ground renders them;
 #   - one error line for each bad adaptive flag;
 #   - --movie: without ffmpeg on PATH, one error naming it and exit code 2,
 #     nothing written; with a fake ffmpeg that records its arguments, the
@@ -17,7 +20,7 @@ facet=$1 repo=$2 work=$3
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 fail() { echo "check_preview_stage: FAILED: $*" >&2; exit 1; }
 library=$repo/scenes/examples/materials
-common=(--size 32x32 --backend cpu --time-limit 600)
+common=(--size 32x32 --backend cpu --time-limit 600 --no-ground)
 
 # The sheet: two cells side by side, labelled; every render's verdict checked.
 "$facet" preview gold "$library/red_plastic.json" "${common[@]}" --noise-threshold 0.03 --json -o sheet.png >sheet.json
@@ -38,7 +41,7 @@ PY
 
 # A noisier estimator of the same picture takes more samples.
 samples() { /usr/bin/python3 -c 'import json,sys; print(sum(r["samples"] for r in json.load(open(sys.argv[1]))["renders"]))' "$1"; }
-on_gpu=(--size 32x32 --backend gpu --time-limit 600)
+on_gpu=(--size 32x32 --backend gpu --time-limit 600 --no-ground)
 "$facet" preview gold "${on_gpu[@]}" --noise-threshold 0.02 --json -o smooth.png >smooth.json
 "$facet" preview gold "${on_gpu[@]}" --noise-threshold 0.02 --ibl sampled --json -o noisy.png >noisy.json
 [ "$(samples noisy.json)" -gt "$(samples smooth.json)" ] ||
@@ -62,6 +65,30 @@ def pixels(path):
 rendered = pixels("rendered.png")
 mapped, studio = (float(np.abs(pixels(p)[2:34, 2:34] - rendered).mean()) for p in ("mapped.png", "studio.png"))
 assert mapped < 0.5 * studio, (mapped, studio)
+PY
+
+# The ground: two rounds for every tile either way, so the same samples.
+ground=(gold --size 32x32 --backend gpu --max-spp 8 --noise-threshold 0.0001 --json)
+"$facet" preview "${ground[@]}" -o ground.png >ground.json
+"$facet" preview "${ground[@]}" --no-ground -o bare.png >bare.json
+/usr/bin/python3 - <<'PY' || fail "the ground's shadow"
+import json, OpenImageIO as oiio, numpy as np
+assert json.load(open("ground.json"))["ground"] is True
+assert json.load(open("bare.json"))["ground"] is False
+def cell(path):  # the first cell, linear display values
+    v = oiio.ImageInput.open(path).read_image(format="float")[:32, :32, :3]
+    return np.where(v <= 0.04045, v / 12.92, ((v + 0.055) / 1.055) ** 2.4)
+ground, bare = cell("ground.png"), cell("bare.png")
+gold = bare[..., 0] - bare[..., 2] > 0.1  # the ball, its silhouette's partial pixels too
+rows = np.nonzero(gold[:, 16])[0]
+low = rows.max()
+assert low < 30, low
+luminance = lambda v: v @ np.array([0.2126, 0.7152, 0.0722])
+under = luminance(ground[low + 2 : low + 4, 15:18]).mean() / luminance(bare[low + 2 : low + 4, 15:18]).mean()
+assert under < 0.7, f"under the ball: {under} of the background"
+inner = gold & np.roll(gold, 1, 0) & np.roll(gold, -1, 0) & np.roll(gold, 1, 1) & np.roll(gold, -1, 1)
+assert np.array_equal(ground[inner], bare[inner]), "the ball's own pixels changed"
+assert np.array_equal(ground[:4], bare[:4]), "the backdrop above the ball changed"
 PY
 
 # Bad values: one line each, exit code 1, no sheet.

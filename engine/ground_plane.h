@@ -1,0 +1,33 @@
+// The ground a preview stands its model on: a shadow catcher, rendered as two
+// scenes beside the model's own (docs/preview-stage.md, "The ground"), whose
+// ratio engine/image/catcher_composite.h turns into the model's shadow on
+// the background.
+#pragma once
+
+#include "scenes/scene.h"
+#include "scenes/scene_geometry.h"
+
+namespace facet {
+
+// The ground's half-width, in diagonals of the model's bounding box: wide
+// enough for the shadow of light a few degrees above the horizon.
+inline constexpr double kGroundHalfWidth = 10.0;
+
+struct GroundScenes {
+  scene::Scene holdout;  // the model, black, standing on the ground
+  scene::Scene ground;   // the ground alone
+};
+
+// Both lit by the model's environment with shadow rays: its own method
+// where that casts them (sampled, filtered), else sampled; occlusion on.
+// The ground is a white, purely diffuse square, horizontal in the
+// environment's frame (+y up), under the middle of the model's bounding box
+// and touching its lowest point. Camera and render settings are the model's.
+// Throws std::invalid_argument for a scene without an environment or objects.
+GroundScenes groundScenes(const scene::Scene& model);
+
+// The lowest height (y) of the limit surface, each patch evaluated on a
+// 9 x 9 grid of its (u, v).
+double lowestPoint(const scene::SceneGeometry& geometry);
+
+}  // namespace facet
