@@ -48,28 +48,44 @@ RenderReport renderRound(Renderer& renderer, const scene::Scene& scene, int roun
   return renderer.render(frame.scene, backend, {}, {crop, threads});
 }
 
-// The ground's round over `sub` of the round's `window`, whose pixels
-// `image` holds: the ground's two scenes take the round's camera samples and
-// random numbers, so its shadow is composited, and its noise judged, per
-// round. Marks in `shadowed` the tiles of the pixels it darkens.
-void catchRoundShadows(Renderer& renderer, const GroundScenes& ground, int round, const PixelRect& window,
-                       const PixelRect& sub, Backend backend, unsigned threads, Image& image, const TileGrid& grid,
-                       std::vector<char>& shadowed) {
-  const std::vector<glm::vec4> holdout =
-      renderRound(renderer, ground.holdout, round, sub, backend, threads).image.beauty;
-  const std::vector<glm::vec4> alone = renderRound(renderer, ground.ground, round, sub, backend, threads).image.beauty;
-  std::vector<glm::vec4> model(std::size_t(sub.pixelCount()));
-  const auto at = [&](int x, int y) -> glm::vec4& { return image.beauty[image.index(x - window.x0, y - window.y0)]; };
-  for (int y = sub.y0; y < sub.y1; ++y)
-    for (int x = sub.x0; x < sub.x1; ++x) model[std::size_t((y - sub.y0) * sub.width() + (x - sub.x0))] = at(x, y);
-  const std::vector<glm::vec4> caught = catchShadows(sub.width(), sub.height(), model, holdout, alone);
-  for (int y = sub.y0; y < sub.y1; ++y)
-    for (int x = sub.x0; x < sub.x1; ++x) {
-      const glm::vec4& c = caught[std::size_t((y - sub.y0) * sub.width() + (x - sub.x0))];
-      if (c == at(x, y)) continue;
-      at(x, y) = c;
-      shadowed[std::size_t((y / grid.size) * grid.columns() + x / grid.size)] = 1;
-    }
+// The ground's two renders, summed over the rounds each pixel took: the
+// same rounds, camera samples and random numbers as the model's, so that
+// the ratio of the sums keeps H <= B sample by sample (catchShadows).
+struct GroundSums {
+  std::vector<glm::vec4> holdout, ground;
+  std::vector<int> rounds;
+};
+
+// Round `round` of the ground's scenes over `window`, added to the pixels
+// of the `active` tiles.
+void addGroundRound(Renderer& renderer, const GroundScenes& scenes, int round, const PixelRect& window,
+                    const TileGrid& grid, const std::vector<int>& active, Backend backend, unsigned threads,
+                    GroundSums& sums) {
+  const Image holdout = renderRound(renderer, scenes.holdout, round, window, backend, threads).image;
+  const Image alone = renderRound(renderer, scenes.ground, round, window, backend, threads).image;
+  for (int t : active) {
+    const PixelRect tile = grid.tile(t);
+    for (int y = tile.y0; y < tile.y1; ++y)
+      for (int x = tile.x0; x < tile.x1; ++x) {
+        const std::size_t at = std::size_t(y) * std::size_t(grid.width) + std::size_t(x);
+        const std::size_t in = holdout.index(x - window.x0, y - window.y0);
+        sums.holdout[at] += holdout.beauty[in];
+        sums.ground[at] += alone.beauty[in];
+        ++sums.rounds[at];
+      }
+  }
+}
+
+// The model's mean over its rounds with the ground's shadow caught from the
+// ground's means.
+std::vector<glm::vec4> caughtBeauty(int width, int height, const std::vector<glm::vec4>& model,
+                                    const GroundSums& sums) {
+  std::vector<glm::vec4> holdout(model.size()), ground(model.size());
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    holdout[i] = sums.holdout[i] / float(sums.rounds[i]);
+    ground[i] = sums.ground[i] / float(sums.rounds[i]);
+  }
+  return catchShadows(width, height, model, holdout, ground);
 }
 
 scene::Scene withRoundSpp(scene::Scene scene, int spp) {
@@ -122,7 +138,12 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
   report.errors.assign(std::size_t(grid.count()), 0.0);
   std::vector<int> active(std::size_t(grid.count()));
   for (int t = 0; t < grid.count(); ++t) active[std::size_t(t)] = t;
-  std::vector<char> shadowed(std::size_t(grid.count()), 0);  // tiles where the ground darkens a pixel
+  GroundSums groundSums;
+  if (groundRound) {
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    groundSums = {std::vector<glm::vec4>(pixels, glm::vec4(0)), std::vector<glm::vec4>(pixels, glm::vec4(0)),
+                  std::vector<int>(pixels, 0)};
+  }
 
   while (!active.empty()) {
     // Each round is an independent randomization of the same estimator:
@@ -133,16 +154,11 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
     // 2002). The first is the scene itself: its centre samples give the AOVs.
     const PixelRect window = boundsOf(grid, active);
     RenderReport rendered = renderRound(renderer, round, report.rounds, window, backend, threads);
-    if (groundRound) {
-      // The first round finds where the ground is shadowed; later rounds
-      // render the ground there alone.
-      std::vector<int> caught;
-      for (int t : active)
-        if (report.rounds == 0 || shadowed[std::size_t(t)]) caught.push_back(t);
-      if (!caught.empty())
-        catchRoundShadows(renderer, *groundRound, report.rounds, window, boundsOf(grid, caught), backend, threads,
-                          rendered.image, grid, shadowed);
-    }
+    // The ground takes the first rounds only: its shadow, averaged over a
+    // window of pixels, is smooth by then, and a tile the model keeps going
+    // (a bright edge, a noisy lobe) does not make it pay three renders a round.
+    if (groundRound && report.rounds < settings.minRounds)
+      addGroundRound(renderer, *groundRound, report.rounds, window, grid, active, backend, threads, groundSums);
     rounds.add(rendered.image, window, active);
     report.samples += std::uint64_t(settings.roundSpp) * window.pixelCount();
     if (report.rounds++ == 0) report.first = std::move(rendered);
@@ -170,7 +186,7 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
   report.image = std::move(report.first.image);
   if (report.image.width != width || report.image.height != height)
     throw std::logic_error("the first adaptive round must cover the whole image");
-  report.image.beauty = rounds.beauty();
+  report.image.beauty = groundRound ? caughtBeauty(width, height, rounds.beauty(), groundSums) : rounds.beauty();
   report.maxError = *std::max_element(report.errors.begin(), report.errors.end());
   for (int t = 0; t < grid.count(); ++t)
     report.sppMean += double(report.tileSpp[std::size_t(t)]) * double(grid.tile(t).pixelCount());

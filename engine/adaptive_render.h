@@ -51,8 +51,9 @@ struct AdaptiveReport {
 
 // Renders `scene` (its size; its spp and seed are the rounds') by rounds.
 // With `ground` (engine/ground_plane.h, of the same camera and size), each
-// round renders its two scenes over the same pixels too and the beauty is
-// their shadow catcher's composite (engine/image/catcher_composite.h).
+// round renders its two scenes over the same pixels too; the rounds stop on
+// the model's noise, and the beauty is the shadow catcher's composite of the
+// three renders' means (engine/image/catcher_composite.h).
 // Throws std::invalid_argument for settings that break the rules above.
 AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Backend backend,
                               const AdaptiveSettings& settings, unsigned threads = 0,
