@@ -22,6 +22,7 @@
 #include "rules/shading/absorption.h"
 #include "rules/shading/transmissive_continuation.h"
 #include "rules/shading/dfg.h"
+#include "rules/shading/sheen.h"
 #include "rules/environment/environment_mapping.h"
 #include "rules/environment/split_sum.h"
 #include "rules/environment/spherical_harmonics.h"

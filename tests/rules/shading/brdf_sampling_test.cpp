@@ -48,6 +48,11 @@ rules::f64::BrdfParams coated(double alpha) {
   return p;
 }
 
+// A sheen over the coated material (rules/shading/sheen.h), its albedo at
+// v taken as 0.4: the sampler and its density agree for any value.
+const rules::f64::SheenParams kSheen{glm::dvec3(0.8, 0.5, 0.3), 0.25};
+constexpr double kSheenAlbedoV = 0.4;
+
 struct Case {
   int technique;
   int d;
@@ -55,7 +60,10 @@ struct Case {
   double incidence_degrees;
   double anisotropy = 0.0;
   bool coated = false;  // the whole coated material's sampler, `technique` unused
+  bool sheen = false;   // with coated: under kSheen, sampled across all four lobes
   std::string label() const {
+    if (sheen)
+      return "sheen material alpha=" + std::to_string(alpha) + " incidence=" + std::to_string(incidence_degrees);
     if (coated)
       return "coated material alpha=" + std::to_string(alpha) + " incidence=" + std::to_string(incidence_degrees);
     return std::string(modelName(kSamplingTechniques, technique)) + " d=" + std::string(modelName(kDistributions, d)) +
@@ -85,6 +93,8 @@ std::vector<Case> cases() {
   // A clear coat's lobe beside the base's two.
   for (double incidence : {45.0, 80.0})
     all.push_back({rules::f64::SAMPLE_COSINE, rules::f64::D_GGX, 0.25, incidence, 0.0, true});
+  // A sheen's cosine lobe beside those three.
+  all.push_back({rules::f64::SAMPLE_COSINE, rules::f64::D_GGX, 0.25, 70.0, 0.0, true, true});
   return all;
 }
 
@@ -137,8 +147,9 @@ FitResult chiSquareFit(const Case& c, unsigned seed) {
   std::uniform_real_distribution<double> uniform(0, 1);
   for (long s = 0; s < kSamples; ++s) {
     glm::dvec2 u(uniform(random), uniform(random));
-    glm::dvec3 l =
-        c.coated ? rules::f64::sample_brdf_lobes(p, n, v, u) : rules::f64::sample_direction(c.technique, p, n, v, u);
+    glm::dvec3 l = c.sheen    ? rules::f64::sample_sheen_lobes(p, kSheen, n, v, kSheenAlbedoV, u)
+                   : c.coated ? rules::f64::sample_brdf_lobes(p, n, v, u)
+                              : rules::f64::sample_direction(c.technique, p, n, v, u);
     if (c.coated && l.z <= 0) {
       observed.back() += 1;
       continue;
@@ -167,8 +178,9 @@ FitResult chiSquareFit(const Case& c, unsigned seed) {
             glm::dvec3 l = glm::reflect(-v, w);
             density = rules::f64::direction_pdf(c.technique, p, n, l, v) * 4 * std::abs(glm::dot(v, w));
           } else {
-            density =
-                c.coated ? rules::f64::brdf_lobes_pdf(p, n, w, v) : rules::f64::direction_pdf(c.technique, p, n, w, v);
+            density = c.sheen    ? rules::f64::sheen_lobes_pdf(p, kSheen, n, w, v, kSheenAlbedoV)
+                      : c.coated ? rules::f64::brdf_lobes_pdf(p, n, w, v)
+                                 : rules::f64::direction_pdf(c.technique, p, n, w, v);
           }
           sum += rule.weights[a] * rule.weights[b] * density * std::sin(theta);
         }
