@@ -33,20 +33,4 @@ glm::dvec3 specularScale(const CompensationTables& tables, int material, const r
       params, dfgLookup(tables.tables[std::size_t(table)], nv, rules::f64::isotropic_equivalent_alpha(params)));
 }
 
-// 32^2 entries of 1024 cosine samples: the lookups stay within 1% (0.005
-// absolute) of the lobe's albedo, chosen by measurement (docs/shading.md,
-// "Sheen").
-PrefilterSettings sheenTableSettings() {
-  PrefilterSettings settings;
-  settings.dfgSize = 32;
-  settings.dfgSamples = 1024;
-  return settings;
-}
-
-DfgTable sheenAlbedoTable(const PrefilterSettings& settings) {
-  return cachedDfgTable(rules::f64::SHEEN_ALBEDO_TABLE, 0, settings);
-}
-
-double sheenAlbedo(const DfgTable& table, double nv, double alpha) { return dfgLookup(table, nv, alpha).x; }
-
 }  // namespace facet::ibl

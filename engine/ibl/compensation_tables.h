@@ -1,8 +1,7 @@
 // Energy compensation's albedo tables (docs/shading.md, "Energy
 // compensation"): one DFG table per (D, G) pair of the scene's compensated
 // materials, built like the split sum's and read alike by both backends. A
-// scene with no compensated material builds none. The sheen's albedo table
-// (docs/shading.md, "Sheen") is built and read the same way.
+// scene with no compensated material builds none.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -30,15 +29,5 @@ CompensationTables compensationTables(const scene::Scene& scene);
 // is not compensated.
 glm::dvec3 specularScale(const CompensationTables& tables, int material, const rules::f64::BrdfParams& params,
                          double nv);
-
-// The sheen's albedo table (rules/shading/sheen.h): E(n.v) over the DFG
-// grid, sqrt(alpha) being the sheen roughness, through the DFG tables'
-// cache.
-PrefilterSettings sheenTableSettings();
-DfgTable sheenAlbedoTable(const PrefilterSettings& settings = sheenTableSettings());
-
-// The table's E at n.v = nv for sheen alpha `alpha` (sheenRoughness^2),
-// bilinear like every DFG lookup.
-double sheenAlbedo(const DfgTable& table, double nv, double alpha);
 
 }  // namespace facet::ibl

@@ -173,13 +173,6 @@ std::array<glm::dvec3, 9> projectOnSh(const scene::EnvironmentMap& map) {
   return shFromRowSums(rows);
 }
 
-// One entry of the (D, G) pair's table, or of the sheen's albedo table
-// (m::SHEEN_ALBEDO_TABLE), which shares the grid and the cache.
-glm::dvec2 dfgEntry(int distribution, int geometry, double nv, double alpha, const PrefilterSettings& settings) {
-  if (distribution == m::SHEEN_ALBEDO_TABLE) return m::sheen_albedo_entry(nv, alpha, settings.dfgSamples);
-  return m::dfg_integrals(distribution, geometry, nv, alpha, settings.dfgSamples);
-}
-
 }  // namespace
 
 DfgTable dfgTable(int distribution, int geometry, const PrefilterSettings& settings) {
@@ -188,7 +181,8 @@ DfgTable dfgTable(int distribution, int geometry, const PrefilterSettings& setti
   forEachRow(size, [&](int j) {
     const double alpha = m::dfg_grid_alpha(j, size);
     for (int i = 0; i < size; ++i) {
-      const glm::dvec2 scaleBias = dfgEntry(distribution, geometry, m::dfg_grid_nv(i, size), alpha, settings);
+      const glm::dvec2 scaleBias =
+          m::dfg_integrals(distribution, geometry, m::dfg_grid_nv(i, size), alpha, settings.dfgSamples);
       table.scaleBias[2 * (std::size_t(j) * size + i)] = float(scaleBias.x);
       table.scaleBias[2 * (std::size_t(j) * size + i) + 1] = float(scaleBias.y);
     }
@@ -258,7 +252,8 @@ glm::dvec2 dfgLookupOnDemand(int distribution, int geometry, double nv, double a
                              const PrefilterSettings& settings) {
   const int size = settings.dfgSize;
   return dfgBilinear(size, nv, alpha, [&](int i, int j) {
-    return dfgEntry(distribution, geometry, m::dfg_grid_nv(i, size), m::dfg_grid_alpha(j, size), settings);
+    return m::dfg_integrals(distribution, geometry, m::dfg_grid_nv(i, size), m::dfg_grid_alpha(j, size),
+                            settings.dfgSamples);
   });
 }
 

@@ -1,28 +1,39 @@
 // Sheen (KHR_materials_sheen; docs/shading.md, "Sheen"): a Charlie lobe
-// over the base, its albedo table's entries, the layering and the sampled
-// lobe. Needs the rules of rules/shading/, lobe_sampling.h and
-// low_discrepancy.h.
+// over the base, under any clear coat. Needs brdf.h; its sampling is
+// lobe_sampling.h's and its albedo's entries dfg.h's.
 //
-// f = color D V + base (1 - max(color) E), with glTF's Charlie D and the
-// Charlie visibility V, and E the sheen's directional albedo (its table);
-// the layering is written with both directions' albedos so that it stays
-// reciprocal (sheen_layer).
+// f = color D V / max(1, e) + base (1 - max(color) min(e, 1)), with glTF's
+// Charlie D, the Charlie visibility V, and e the larger of the lobe's
+// directional albedos E(n.v) and E(n.l) (sheen_layer).
 
 // The smallest sheen alpha (roughness 0.07): below it D's mass sits within a
-// few degrees of the horizon, finer than the albedo table's columns resolve.
+// few degrees of the horizon, finer than the albedo's knots resolve.
 const real SHEEN_MIN_ALPHA = real(0.0049);
 
-// The albedo table's id where a DFG table holds a (D, G) pair
-// (engine/ibl/prefiltered_environment.h): entries (E, 0) over the DFG grid,
-// sqrt(alpha) being the sheen roughness.
-const int SHEEN_ALBEDO_TABLE = 100;
+// E(mu) of a material's sheen is its albedo table: a material has one sheen
+// roughness, so the table is one row of 8 knots (BrdfParams'
+// sheen_albedo_near and _far, each sheen_albedo_entry in dfg.h) at mu_k =
+// SHEEN_KNOT_MU0 + (1 - SHEEN_KNOT_MU0) (k / 7)^2, denser at grazing angles
+// where E bends fastest, read linearly between them and held below mu_0.
+const real SHEEN_KNOT_MU0 = real(0.02);
 
-struct SheenParams {
-  vec3 color;  // KHR_materials_sheen's sheenColorFactor; 0 is no sheen
-  real alpha;  // sheenRoughness^2
-};
+FACET_FN real sheen_knot_mu(int k) {
+  real t = real(k) / real(7);
+  return SHEEN_KNOT_MU0 + (real(1) - SHEEN_KNOT_MU0) * t * t * t;
+}
+
+FACET_FN bool has_sheen(BrdfParams p) { return p.sheen_color != vec3(real(0)); }
 
 FACET_FN real sheen_alpha(real alpha) { return max(alpha, SHEEN_MIN_ALPHA); }
+
+FACET_FN real sheen_albedo(BrdfParams p, real mu) {
+  real x =
+      pow(clamp((mu - SHEEN_KNOT_MU0) / (real(1) - SHEEN_KNOT_MU0), real(0), real(1)), real(1) / real(3)) * real(7);
+  int k = min(int(x), 6);
+  real a = k < 4 ? p.sheen_albedo_near[k] : p.sheen_albedo_far[k - 4];
+  real b = k < 3 ? p.sheen_albedo_near[k + 1] : p.sheen_albedo_far[k - 3];
+  return mix(a, b, x - real(k));
+}
 
 // Estevez & Kulla 2017, eq. 2: D(m) = (2 + 1/alpha) sin^(1/alpha) / (2 pi),
 // normalized like the other D's (integral of D (n.m) is 1).
@@ -63,71 +74,43 @@ FACET_FN real sheen_lobe(real alpha, vec3 n, vec3 l, vec3 v) {
   return sheen_D(a, sin2_between(n, h)) / (real(4) * nl * nv * lambdas);
 }
 
-// The table's entry at (nv, alpha): the lobe's directional albedo for color
-// 1 over `samples` Hammersley points of the cosine sampler, (E, 0).
-FACET_FN vec2 sheen_albedo_entry(real nv, real alpha, int samples) {
-  vec3 n = vec3(real(0), real(0), real(1));
-  vec3 v = vec3(sqrt(max(real(1) - nv * nv, real(0))), real(0), nv);
-  real sum = real(0);
-  for (int k = 0; k < samples; ++k) {
-    vec3 l = sample_cosine_hemisphere(hammersley_point(k, samples));
-    sum += sheen_lobe(alpha, n, l, v) * PI;  // f (n.l) / (n.l / pi)
-  }
-  return vec2(sum / real(samples), real(0));
-}
-
-// The two parts of the layered f(l, v) given the table's albedos e_v =
-// E(n.v) and e_l = E(n.l): the sheen's own reflection and the factor on the
-// base. glTF's factor 1 - max(color) E(n.v) is taken at the larger of the
-// two albedos, which keeps f(l, v) = f(v, l); where the lobe's albedo goes
-// above 1 (grazing, smooth sheen) the lobe is divided by it, so that the
-// sheen alone and over a white base never adds energy (docs/shading.md).
+// The two parts of the layered f(l, v) given the albedos e_v = E(n.v) and
+// e_l = E(n.l): the sheen's own reflection and the factor on the base.
+// glTF's factor 1 - max(color) E(n.v) is taken at the larger of the two
+// albedos (the specification's min form), which keeps f(l, v) = f(v, l);
+// where the lobe's albedo goes above 1 (grazing, smooth sheen) the lobe is
+// divided by it, so that the sheen alone and over a white base never adds
+// energy (docs/shading.md, "Sheen").
 struct SheenLayer {
   vec3 sheen;
   real base_scale;
 };
 
-FACET_FN SheenLayer sheen_layer(SheenParams s, real lobe, real e_v, real e_l) {
+FACET_FN real max_component(vec3 c) { return max(c.x, max(c.y, c.z)); }
+
+FACET_FN SheenLayer sheen_layer(BrdfParams p, real lobe, real e_v, real e_l) {
   real e = max(e_v, e_l);
   SheenLayer layer;
-  layer.sheen = s.color * (lobe / max(e, real(1)));
-  layer.base_scale = real(1) - max(s.color.x, max(s.color.y, s.color.z)) * min(e, real(1));
+  layer.sheen = p.sheen_color * (lobe / max(e, real(1)));
+  layer.base_scale = real(1) - max_component(p.sheen_color) * min(e, real(1));
   return layer;
 }
 
-// The whole material's f(l, v) with its base's specular lobe scaled by
-// `specular_scale` (brdf_evaluate_scaled), under a sheen: the base's own bits
-// where the color is 0.
-FACET_FN vec3 sheen_evaluate(BrdfParams p, SheenParams s, vec3 n, vec3 l, vec3 v, vec3 specular_scale, real e_v,
-                             real e_l) {
-  vec3 base = brdf_evaluate_scaled(p, n, l, v, specular_scale);
-  if (s.color == vec3(real(0))) return base;
-  SheenLayer layer = sheen_layer(s, sheen_lobe(s.alpha, n, l, v), e_v, e_l);
+// The layering's factor on a diffuse base with l integrated out: the
+// cosine-weighted mean of 1 - max(color) min(max(e_v, E(n.l)), 1), by the
+// midpoint rule on 8 panels of n.l.
+FACET_FN real sheen_diffuse_scale(BrdfParams p, real e_v) {
+  real sum = real(0);
+  for (int i = 0; i < 8; ++i) {
+    real mu = (real(i) + real(0.5)) / real(8);
+    sum += mu * min(max(e_v, sheen_albedo(p, mu)), real(1));
+  }
+  return real(1) - max_component(p.sheen_color) * sum * real(0.25);
+}
+
+// `base`, f(l, v) of the material below the sheen, under p's sheen.
+FACET_FN vec3 sheen_over(BrdfParams p, vec3 n, vec3 l, vec3 v, vec3 base) {
+  SheenLayer layer =
+      sheen_layer(p, sheen_lobe(p.sheen_alpha, n, l, v), sheen_albedo(p, dot(n, v)), sheen_albedo(p, dot(n, l)));
   return base * layer.base_scale + layer.sheen;
-}
-
-// Probability of sampling the sheen's lobe (the cosine sampler about n)
-// before the base's: its albedo max(color) min(E(n.v), 1) against what it
-// leaves the base's lobes at normal incidence, kept within [0.1, 0.9] when
-// both are present. 0 without a sheen.
-FACET_FN real sheen_lobe_probability(BrdfParams p, SheenParams s, real e_v) {
-  if (s.color == vec3(real(0))) return real(0);
-  real sheen = max(s.color.x, max(s.color.y, s.color.z)) * min(e_v, real(1));
-  real base = (real(1) - sheen) * (luminance(fresnel_F(p, real(1))) + luminance(p.diffuse));
-  if (base <= real(0)) return real(1);
-  return clamp(sheen / (sheen + base), real(0.1), real(0.9));
-}
-
-// The sheen takes the first share of u.x, like the coat (sample_brdf_lobes).
-FACET_FN vec3 sample_sheen_lobes(BrdfParams p, SheenParams s, vec3 n, vec3 v, real e_v, vec2 u) {
-  real p_sheen = sheen_lobe_probability(p, s, e_v);
-  if (p_sheen == real(0)) return sample_brdf_lobes(p, n, v, u);
-  if (u.x < p_sheen) return sample_direction(SAMPLE_COSINE, p, n, v, vec2(min(u.x / p_sheen, BELOW_ONE), u.y));
-  return sample_brdf_lobes(p, n, v, base_lobes_u(p_sheen, u));
-}
-
-FACET_FN real sheen_lobes_pdf(BrdfParams p, SheenParams s, vec3 n, vec3 l, vec3 v, real e_v) {
-  real p_sheen = sheen_lobe_probability(p, s, e_v);
-  if (p_sheen == real(0)) return brdf_lobes_pdf(p, n, l, v);
-  return p_sheen * direction_pdf(SAMPLE_COSINE, p, n, l, v) + (real(1) - p_sheen) * brdf_lobes_pdf(p, n, l, v);
 }

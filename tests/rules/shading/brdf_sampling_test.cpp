@@ -48,10 +48,15 @@ rules::f64::BrdfParams coated(double alpha) {
   return p;
 }
 
-// A sheen over the coated material (rules/shading/sheen.h), its albedo at
-// v taken as 0.4: the sampler and its density agree for any value.
-const rules::f64::SheenParams kSheen{glm::dvec3(0.8, 0.5, 0.3), 0.25};
-constexpr double kSheenAlbedoV = 0.4;
+// A sheen (rules/shading/sheen.h) on the coated material's base, its
+// albedo's knots a constant 0.4: the sampler and its density agree for any.
+rules::f64::BrdfParams sheened(double alpha) {
+  rules::f64::BrdfParams p = coated(alpha);
+  p.sheen_color = glm::dvec3(0.8, 0.5, 0.3);
+  p.sheen_alpha = 0.25;
+  p.sheen_albedo_near = p.sheen_albedo_far = glm::dvec4(0.4);
+  return p;
+}
 
 struct Case {
   int technique;
@@ -60,7 +65,7 @@ struct Case {
   double incidence_degrees;
   double anisotropy = 0.0;
   bool coated = false;  // the whole coated material's sampler, `technique` unused
-  bool sheen = false;   // with coated: under kSheen, sampled across all four lobes
+  bool sheen = false;   // with coated: a sheen on the base too, sampled across all four lobes
   std::string label() const {
     if (sheen)
       return "sheen material alpha=" + std::to_string(alpha) + " incidence=" + std::to_string(incidence_degrees);
@@ -131,7 +136,9 @@ FitResult chiSquareFit(const Case& c, unsigned seed) {
   const glm::dvec3 n(0, 0, 1);
   double incidence = c.incidence_degrees * kPi / 180;
   const glm::dvec3 v(std::sin(incidence), 0, std::cos(incidence));
-  rules::f64::BrdfParams p = c.coated ? coated(c.alpha) : params(c.d, c.alpha, c.anisotropy);
+  rules::f64::BrdfParams p = c.sheen    ? sheened(c.alpha)
+                             : c.coated ? coated(c.alpha)
+                                        : params(c.d, c.alpha, c.anisotropy);
   bool by_normal = !c.coated && c.technique != rules::f64::SAMPLE_COSINE;
   auto bin = [&](glm::dvec3 w) {
     double theta = std::acos(std::clamp(w.z, -1.0, 1.0));
@@ -147,9 +154,8 @@ FitResult chiSquareFit(const Case& c, unsigned seed) {
   std::uniform_real_distribution<double> uniform(0, 1);
   for (long s = 0; s < kSamples; ++s) {
     glm::dvec2 u(uniform(random), uniform(random));
-    glm::dvec3 l = c.sheen    ? rules::f64::sample_sheen_lobes(p, kSheen, n, v, kSheenAlbedoV, u)
-                   : c.coated ? rules::f64::sample_brdf_lobes(p, n, v, u)
-                              : rules::f64::sample_direction(c.technique, p, n, v, u);
+    glm::dvec3 l =
+        c.coated ? rules::f64::sample_brdf_lobes(p, n, v, u) : rules::f64::sample_direction(c.technique, p, n, v, u);
     if (c.coated && l.z <= 0) {
       observed.back() += 1;
       continue;
@@ -178,9 +184,8 @@ FitResult chiSquareFit(const Case& c, unsigned seed) {
             glm::dvec3 l = glm::reflect(-v, w);
             density = rules::f64::direction_pdf(c.technique, p, n, l, v) * 4 * std::abs(glm::dot(v, w));
           } else {
-            density = c.sheen    ? rules::f64::sheen_lobes_pdf(p, kSheen, n, w, v, kSheenAlbedoV)
-                      : c.coated ? rules::f64::brdf_lobes_pdf(p, n, w, v)
-                                 : rules::f64::direction_pdf(c.technique, p, n, w, v);
+            density =
+                c.coated ? rules::f64::brdf_lobes_pdf(p, n, w, v) : rules::f64::direction_pdf(c.technique, p, n, w, v);
           }
           sum += rule.weights[a] * rule.weights[b] * density * std::sin(theta);
         }
