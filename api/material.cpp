@@ -34,6 +34,8 @@ materials::Material toEngineMaterial(const v0::Material& material, const std::st
   spec.anisotropyRotation = material.anisotropyRotation;
   spec.clearcoat = material.clearcoat;
   spec.clearcoatRoughness = material.clearcoatRoughness;
+  spec.sheenColor = engineVector(material.sheenColor);
+  spec.sheenRoughness = material.sheenRoughness;
   return materials::buildMaterial(spec, [&](std::string_view field) { return where + "." + std::string(field); });
 }
 

@@ -41,6 +41,7 @@ struct Integrals {
   glm::dvec3 specular{0.0};
   glm::dvec3 diffuse{0.0};
   glm::dvec3 coat{0.0};
+  glm::dvec3 sheen{0.0};
 };
 
 // What a clear coat lets through to the base and back (rules/shading/clearcoat.h);
@@ -63,8 +64,20 @@ double azimuthCosineBound(double cos_v, double sin_v, glm::dvec3 m) {
   return numerator / denominator;
 }
 
-// Diffuse: the cosine map, under which the Lambert integrand is constant.
-glm::dvec3 diffuseIntegral(const rules::f64::BrdfParams& params, const glm::dvec3& v, const QuadratureRule& rule) {
+// What a sheen and a coat leave the base (sheen.h, clearcoat.h); 1 without.
+double underLayers(const rules::f64::BrdfParams& params, const glm::dvec3& l, const glm::dvec3& v) {
+  if (!rules::f64::has_sheen(params)) return throughCoat(params, l, v);
+  const double scale =
+      rules::f64::sheen_layer(params, 0.0, rules::f64::sheen_albedo(params, v.z), rules::f64::sheen_albedo(params, l.z))
+          .base_scale;
+  return scale * throughCoat(params, l, v);
+}
+
+// `value(l)` (n.l) / pdf over the cosine map: the Lambert lobe, whose
+// integrand is then constant but for the layers above it, and a sheen's.
+template <class Value>
+glm::dvec3 cosineIntegral(const rules::f64::BrdfParams& params, const glm::dvec3& v, const QuadratureRule& rule,
+                          const Value& value) {
   const glm::dvec3 n(0, 0, 1);
   glm::dvec3 sum(0.0);
   for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
@@ -72,12 +85,17 @@ glm::dvec3 diffuseIntegral(const rules::f64::BrdfParams& params, const glm::dvec
       glm::dvec2 u(rule.nodes[i], rule.nodes[j]);
       glm::dvec3 l = rules::f64::sample_direction(rules::f64::SAMPLE_COSINE, params, n, v, u);
       double pdf = rules::f64::direction_pdf(rules::f64::SAMPLE_COSINE, params, n, l, v);
-      if (pdf > 0)
-        sum += rule.weights[i] * rule.weights[j] * rules::f64::brdf_terms(params, n, l, v).diffuse *
-               (throughCoat(params, l, v) * l.z / pdf);
+      if (pdf > 0) sum += rule.weights[i] * rule.weights[j] * value(l) * (l.z / pdf);
     }
   }
   return sum;
+}
+
+glm::dvec3 diffuseIntegral(const rules::f64::BrdfParams& params, const glm::dvec3& v, const QuadratureRule& rule) {
+  const glm::dvec3 n(0, 0, 1);
+  return cosineIntegral(params, v, rule, [&](const glm::dvec3& l) {
+    return rules::f64::brdf_terms(params, n, l, v).diffuse * underLayers(params, l, v);
+  });
 }
 
 // f (n.l) / pdf over the whole unit square of `lobe`'s own sampler about n
@@ -106,8 +124,9 @@ Integrals integrate(const rules::f64::BrdfParams& params, double mu, int nodes) 
   rules::f64::BrdfParams specular = params;
   specular.diffuse = glm::dvec3(0);
   specular.clearcoat = 0;
+  specular.sheen_color = glm::dvec3(0);
   auto specularValue = [&](const glm::dvec3& l) {
-    return rules::f64::brdf_evaluate(specular, n, l, v) * throughCoat(params, l, v);
+    return rules::f64::brdf_evaluate(specular, n, l, v) * underLayers(params, l, v);
   };
   const double alpha = rules::f64::effective_alpha(params.alpha);
   const QuadratureRule rule = gaussLegendre01(nodes);
@@ -116,6 +135,14 @@ Integrals integrate(const rules::f64::BrdfParams& params, double mu, int nodes) 
   if (params.clearcoat != 0.0)
     sum.coat = sampledLobe(rules::f64::coat_lobe_params(params), params.clearcoat_normal, v, rule,
                            [&](const glm::dvec3& l) { return rules::f64::coat_evaluate(params, l, v); });
+  if (rules::f64::has_sheen(params))
+    sum.sheen = cosineIntegral(params, v, rule, [&](const glm::dvec3& l) {
+      const double lobe = rules::f64::sheen_lobe(params.sheen_alpha, n, l, v);
+      return rules::f64::sheen_layer(params, lobe, rules::f64::sheen_albedo(params, mu),
+                                     rules::f64::sheen_albedo(params, l.z))
+                 .sheen *
+             throughCoat(params, l, v);
+    });
   if (params.anisotropy != 0.0) {
     sum.specular = sampledLobe(specular, n, v, rule, specularValue);
     sum.diffuse = diffuseIntegral(params, v, rule);
@@ -177,8 +204,9 @@ AlbedoResult directionalAlbedo(const rules::f64::BrdfParams& params, double mu, 
   result.specular = fine.specular;
   result.diffuse = fine.diffuse;
   result.coat = fine.coat;
-  result.albedo = fine.specular + fine.diffuse + fine.coat;
-  glm::dvec3 difference = glm::abs(result.albedo - (coarse.specular + coarse.diffuse + coarse.coat));
+  result.sheen = fine.sheen;
+  result.albedo = fine.specular + fine.diffuse + fine.coat + fine.sheen;
+  glm::dvec3 difference = glm::abs(result.albedo - (coarse.specular + coarse.diffuse + coarse.coat + coarse.sheen));
   result.error_estimate = std::max({difference.x, difference.y, difference.z});
   result.nodes = nodes;
   return result;

@@ -15,6 +15,9 @@ namespace facet::materials {
 
 namespace {
 
+// Hammersley points per sheen albedo knot (docs/shading.md, "Sheen").
+constexpr int kSheenAlbedoSamples = 2048;
+
 template <class Params, class Vec3>
 Params toParams(const Material& m) {
   Params p;
@@ -36,6 +39,14 @@ Params toParams(const Material& m) {
   p.clearcoat = static_cast<Real>(m.clearcoat);
   p.clearcoat_alpha = static_cast<Real>(m.clearcoatRoughness * m.clearcoatRoughness);
   p.clearcoat_normal = Vec3(0.0, 0.0, 1.0);
+  p.sheen_color = Vec3(m.sheenColor);
+  p.sheen_alpha = static_cast<Real>(m.sheenRoughness * m.sheenRoughness);
+  // The sheen's albedo knots, in double like every table; none without one.
+  using Vec4 = decltype(p.sheen_albedo_near);
+  const bool sheen = m.sheenColor != glm::dvec3(0.0);
+  const double alpha = m.sheenRoughness * m.sheenRoughness;
+  p.sheen_albedo_near = sheen ? Vec4(rules::f64::sheen_albedo_knots(alpha, 0, kSheenAlbedoSamples)) : Vec4(0.0);
+  p.sheen_albedo_far = sheen ? Vec4(rules::f64::sheen_albedo_knots(alpha, 4, kSheenAlbedoSamples)) : Vec4(0.0);
   return p;
 }
 
@@ -139,6 +150,22 @@ void checkClearcoat(const MaterialSpec& spec, Material& m, const Fail& fail) {
   }
   if (m.clearcoat > 0.0 && isTransmissive(m))
     fail("clearcoat", "is not defined for a transmissive material (transmission > 0)");
+}
+
+// The sheen fields of `spec` into `m`, whose transmission is resolved.
+template <class Fail>
+void checkSheen(const MaterialSpec& spec, Material& m, const Fail& fail) {
+  m.sheenColor = spec.sheenColor.value_or(glm::dvec3(0.0));
+  for (double channel : {m.sheenColor.x, m.sheenColor.y, m.sheenColor.z})
+    if (!(channel >= 0.0 && channel <= 1.0))  // also rejects NaN
+      fail("sheen_color", "each channel must be in [0, 1], got " + formatNumber(channel));
+  if (spec.sheenRoughness && !(*spec.sheenRoughness >= 0.0 && *spec.sheenRoughness <= 1.0))
+    fail("sheen_roughness", "must be in [0, 1], got " + formatNumber(*spec.sheenRoughness));
+  if (spec.sheenRoughness && !spec.sheenColor)
+    fail("sheen_roughness", "is only used with sheen_color (give sheen_color too)");
+  m.sheenRoughness = spec.sheenRoughness.value_or(0.0);
+  if (m.sheenColor != glm::dvec3(0.0) && isTransmissive(m))
+    fail("sheen_color", "is not defined for a transmissive material (transmission > 0)");
 }
 
 }  // namespace
@@ -275,6 +302,7 @@ Material buildMaterial(const MaterialSpec& spec,
   checkTransmission(spec, preset, m, fail);
   checkAnisotropy(spec, m, fail);
   checkClearcoat(spec, m, fail);
+  checkSheen(spec, m, fail);
   return m;
 }
 
@@ -324,7 +352,9 @@ MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view s
                                       "anisotropy",
                                       "anisotropy_rotation",
                                       "clearcoat",
-                                      "clearcoat_roughness"};
+                                      "clearcoat_roughness",
+                                      "sheen_color",
+                                      "sheen_roughness"};
   if (const std::optional<std::string> key = findUnknownKey(json, kKeys)) fail(*key, unknownFieldRule(kKeys));
 
   MaterialSpec spec;
@@ -356,6 +386,8 @@ MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view s
   spec.anisotropyRotation = number("anisotropy_rotation");
   spec.clearcoat = number("clearcoat");
   spec.clearcoatRoughness = number("clearcoat_roughness");
+  spec.sheenColor = color("sheen_color");
+  spec.sheenRoughness = number("sheen_roughness");
   return spec;
 }
 
@@ -386,6 +418,8 @@ nlohmann::json toJson(const Material& m) {
   if (m.energyCompensation) json["energy_compensation"] = true;
   if (m.anisotropy > 0.0) json["anisotropy"] = m.anisotropy, json["anisotropy_rotation"] = m.anisotropyRotation;
   if (m.clearcoat > 0.0) json["clearcoat"] = m.clearcoat, json["clearcoat_roughness"] = m.clearcoatRoughness;
+  if (m.sheenColor != glm::dvec3(0.0))
+    json["sheen_color"] = array(m.sheenColor), json["sheen_roughness"] = m.sheenRoughness;
   if (isTransmissive(m)) {
     json["transmission"] = m.transmission;
     if (m.thinWalled) json["thin_walled"] = true, json["thickness"] = m.thickness;

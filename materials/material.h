@@ -76,6 +76,11 @@ struct Material {
   // square), a GGX lobe of F(0) = 0.04 over the rest.
   double clearcoat = 0.0;
   double clearcoatRoughness = 0.0;
+  // Sheen (docs/shading.md, "Sheen"): KHR_materials_sheen's color (linear
+  // RGB in [0, 1]; 0 is no sheen) and roughness (its alpha is the square),
+  // a Charlie lobe between the base and any coat.
+  glm::dvec3 sheenColor{0.0};
+  double sheenRoughness = 0.0;
 };
 
 // Whether a material transmits any light.
@@ -112,6 +117,8 @@ struct MaterialSpec {
   std::optional<double> anisotropyRotation;
   std::optional<double> clearcoat;
   std::optional<double> clearcoatRoughness;
+  std::optional<glm::dvec3> sheenColor;
+  std::optional<double> sheenRoughness;
 };
 
 // Validates and resolves a spec. Throws std::invalid_argument whose message

@@ -37,6 +37,8 @@ class Material:
     anisotropy_rotation: Optional[float]
     clearcoat: Optional[float]
     clearcoat_roughness: Optional[float]
+    sheen_color: Optional[Vec3]
+    sheen_roughness: Optional[float]
     def __init__(self, *, name: str = "", preset: Optional[str] = None, distribution: Optional[str] = None,
                  geometry: Optional[str] = None, fresnel: Optional[str] = None, alpha: Optional[float] = None,
                  roughness: Optional[float] = None, f0: Optional[Vec3] = None, ior: Optional[Vec3] = None,
@@ -45,7 +47,8 @@ class Material:
                  thin_walled: Optional[bool] = None, thickness: Optional[float] = None,
                  attenuation_color: Optional[Vec3] = None, attenuation_distance: Optional[float] = None,
                  anisotropy: Optional[float] = None, anisotropy_rotation: Optional[float] = None,
-                 clearcoat: Optional[float] = None, clearcoat_roughness: Optional[float] = None) -> None: ...
+                 clearcoat: Optional[float] = None, clearcoat_roughness: Optional[float] = None,
+                 sheen_color: Optional[Vec3] = None, sheen_roughness: Optional[float] = None) -> None: ...
 
 class Cage:
     positions: numpy.ndarray  # read-only, (n, 3)

@@ -80,7 +80,8 @@ void bindScenes(py::module_& m) {
                        OptReal roughness, OptVec f0, OptVec ior, OptVec eta, OptVec k, OptVec diffuse,
                        bool energyCompensation, OptReal transmission, std::optional<bool> thinWalled, OptReal thickness,
                        OptVec attenuationColor, OptReal attenuationDistance, OptReal anisotropy,
-                       OptReal anisotropyRotation, OptReal clearcoat, OptReal clearcoatRoughness) {
+                       OptReal anisotropyRotation, OptReal clearcoat, OptReal clearcoatRoughness, OptVec sheenColor,
+                       OptReal sheenRoughness) {
              facet::Material material{
                  name, preset, d, g, f, alpha, roughness, f0, ior, eta, k, diffuse, energyCompensation};
              material.transmission = transmission;
@@ -92,6 +93,8 @@ void bindScenes(py::module_& m) {
              material.anisotropyRotation = anisotropyRotation;
              material.clearcoat = clearcoat;
              material.clearcoatRoughness = clearcoatRoughness;
+             material.sheenColor = sheenColor;
+             material.sheenRoughness = sheenRoughness;
              return material;
            }),
            py::kw_only(), py::arg("name") = "", py::arg("preset") = py::none(), py::arg("distribution") = py::none(),
@@ -102,7 +105,8 @@ void bindScenes(py::module_& m) {
            py::arg("thin_walled") = py::none(), py::arg("thickness") = py::none(),
            py::arg("attenuation_color") = py::none(), py::arg("attenuation_distance") = py::none(),
            py::arg("anisotropy") = py::none(), py::arg("anisotropy_rotation") = py::none(),
-           py::arg("clearcoat") = py::none(), py::arg("clearcoat_roughness") = py::none())
+           py::arg("clearcoat") = py::none(), py::arg("clearcoat_roughness") = py::none(),
+           py::arg("sheen_color") = py::none(), py::arg("sheen_roughness") = py::none())
       .def_readwrite("name", &facet::Material::name)
       .def_readwrite("preset", &facet::Material::preset)
       .def_readwrite("distribution", &facet::Material::distribution)
@@ -124,7 +128,9 @@ void bindScenes(py::module_& m) {
       .def_readwrite("anisotropy", &facet::Material::anisotropy)
       .def_readwrite("anisotropy_rotation", &facet::Material::anisotropyRotation)
       .def_readwrite("clearcoat", &facet::Material::clearcoat)
-      .def_readwrite("clearcoat_roughness", &facet::Material::clearcoatRoughness);
+      .def_readwrite("clearcoat_roughness", &facet::Material::clearcoatRoughness)
+      .def_readwrite("sheen_color", &facet::Material::sheenColor)
+      .def_readwrite("sheen_roughness", &facet::Material::sheenRoughness);
 
   py::class_<facet::Cage>(m, "Cage", "A Catmull-Clark control cage in world space, 0-based indices")
       .def(py::init([](const Doubles& positions, const py::object& counts, const py::object& indices,

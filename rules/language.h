@@ -17,6 +17,7 @@ using real = FACET_REAL;
 using uint = std::uint32_t;
 using vec2 = glm::vec<2, real>;
 using vec3 = glm::vec<3, real>;
+using vec4 = glm::vec<4, real>;
 using uvec2 = glm::uvec2;
 using uvec3 = glm::uvec3;
 using glm::abs;

@@ -169,6 +169,40 @@ void applyClearcoat(const tinygltf::Material& gltf, const std::string& material,
   m.clearcoatRoughness = roughness;
 }
 
+// KHR_materials_sheen's factors into `m` (docs/gltf.md, "Sheen"); its
+// textures are not read, each with a warning saying what facet renders.
+void applySheen(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
+                materials::Material& m) {
+  const tinygltf::Value* s = extension(gltf, "KHR_materials_sheen");
+  if (!s) return;
+  const std::string at = material + ".extensions.KHR_materials_sheen";
+  glm::dvec3 color(0.0);
+  if (s->Has("sheenColorFactor")) {
+    const tinygltf::Value& c = s->Get("sheenColorFactor");
+    if (!c.IsArray() || c.ArrayLen() != 3) reader.fail(at + ".sheenColorFactor", "must be an array of 3 numbers");
+    for (int i = 0; i < 3; ++i) {
+      const tinygltf::Value& x = c.Get(i);
+      color[i] = x.IsNumber() ? x.GetNumberAsDouble() : -1.0;
+      if (!(color[i] >= 0.0 && color[i] <= 1.0))
+        reader.fail(at + ".sheenColorFactor", "every component must be a number in [0, 1]");
+    }
+  }
+  const double roughness = member(*s, "sheenRoughnessFactor", 0.0, at, reader);
+  if (const std::optional<std::string> rule = rangeRule(roughness, 0.0, 1.0))
+    reader.fail(at + ".sheenRoughnessFactor", *rule);
+  const std::pair<const char*, const char*> kTextures[] = {
+      {"sheenColorTexture", "is not read; the sheen has sheenColorFactor everywhere"},
+      {"sheenRoughnessTexture", "is not read; the sheen has sheenRoughnessFactor everywhere"}};
+  for (auto [texture, instead] : kTextures)
+    if (s->Has(texture)) reader.warn(at + "." + texture, instead);
+  if (color != glm::dvec3(0.0) && materials::isTransmissive(m)) {
+    reader.warn(at, "is not applied to a transmissive material: facet renders it without its sheen");
+    return;
+  }
+  m.sheenColor = color;
+  m.sheenRoughness = roughness;
+}
+
 }  // namespace
 
 materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index, const GltfReader& reader,
@@ -193,6 +227,7 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
   m.alpha = roughness * roughness;
   applyTransmission(gltf, material, reader, base, metallic, m);
   applyClearcoat(gltf, material, reader, m);
+  applySheen(gltf, material, reader, m);
   for (double c : gltf.emissiveFactor)
     if (!(c >= 0.0 && c <= 1.0))
       reader.fail(material + ".emissiveFactor", "every component must be in [0, 1], is " + formatNumber(c));

@@ -34,7 +34,7 @@ void runAlbedo(const AlbedoOptions& o) {
   // factor of n.v alone, read from the renderer's albedo table.
   const glm::dvec3 factor = ibl::energyCompensationOnDemand(params, mu, ibl::compensationTableSettings());
   const glm::dvec3 compensatedSpecular = r.specular * factor;
-  const glm::dvec3 compensated = compensatedSpecular + r.diffuse + r.coat;
+  const glm::dvec3 compensated = compensatedSpecular + r.diffuse + r.coat + r.sheen;
   // Without Fresnel or colored parameters all channels agree; otherwise the
   // scalar is their mean and the channels are in albedo_rgb.
   double albedo = (r.albedo.x + r.albedo.y + r.albedo.z) / 3;
@@ -47,6 +47,7 @@ void runAlbedo(const AlbedoOptions& o) {
                           {"specular_rgb", rgb(r.specular)},
                           {"diffuse_rgb", rgb(r.diffuse)},
                           {"coat_rgb", rgb(r.coat)},
+                          {"sheen_rgb", rgb(r.sheen)},
                           {"error_estimate", r.error_estimate},
                           {"nodes", r.nodes},
                           {"energy_compensated",

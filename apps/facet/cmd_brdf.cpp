@@ -36,8 +36,9 @@ void runBrdf(const BrdfOptions& o) {
   const glm::dvec3 n(0, 0, 1), l = direction(theta_l, 0), v = direction(theta_v, phi);
   rules::f64::BrdfParams p = materials::toParams64(material);
   rules::f64::BrdfTerms t = rules::f64::brdf_terms(p, n, l, v);
-  // f is the whole material's: the base's terms below, under a clear coat
-  // where the material has one (rules/shading/clearcoat.h).
+  // f is the whole material's: the base's terms below, under a sheen and a
+  // clear coat where the material has them (rules/shading/sheen.h,
+  // clearcoat.h).
   const glm::dvec3 f = rules::f64::brdf_evaluate(p, n, l, v);
   nlohmann::json pdf;
   for (const materials::ModelName& technique : materials::kSamplingTechniques)
@@ -57,6 +58,10 @@ void runBrdf(const BrdfOptions& o) {
       {"pdf", pdf},
   };
   if (p.clearcoat > 0) out["coat"] = rgb(rules::f64::coat_evaluate(p, l, v));
+  if (rules::f64::has_sheen(p))
+    out["sheen"] = rgb(rules::f64::sheen_layer(p, rules::f64::sheen_lobe(p.sheen_alpha, n, l, v),
+                                               rules::f64::sheen_albedo(p, v.z), rules::f64::sheen_albedo(p, l.z))
+                           .sheen);
   if (o.json) {
     std::printf("%s\n", out.dump(2).c_str());
     return;

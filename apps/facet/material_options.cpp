@@ -36,6 +36,8 @@ std::string flagFor(std::string_view field) {
   if (field == "fresnel") return "--f";
   if (field == "anisotropy_rotation") return "--anisotropy-rotation";
   if (field == "clearcoat_roughness") return "--clearcoat-roughness";
+  if (field == "sheen_color") return "--sheen-color";
+  if (field == "sheen_roughness") return "--sheen-roughness";
   return "--" + std::string(field);
 }
 
@@ -77,6 +79,9 @@ void addMaterialOptions(CLI::App& command, MaterialOptions& o) {
                      "the tangent's rotation about the normal from the x axis, radians");
   command.add_option("--clearcoat", o.clearcoat, "clear coat strength in [0, 1]: a GGX lobe of F(0) = 0.04 on top");
   command.add_option("--clearcoat-roughness", o.clearcoatRoughness, "the clear coat's perceptual roughness in [0, 1]");
+  command.add_option("--sheen-color", o.sheenColor,
+                     "sheen color, linear RGB in [0, 1] (r,g,b or one value): a Charlie lobe between base and coat");
+  command.add_option("--sheen-roughness", o.sheenRoughness, "the sheen's roughness in [0, 1]");
   command.add_option("--preset", o.preset, "F(0) from a preset (see `facet presets`)");
   command.add_option("--material", o.material_file, "JSON material file instead of the flags above");
 }
@@ -93,7 +98,7 @@ CLI::App* addMaterialCommand(CLI::App& parent, const std::string& name, const st
 materials::Material resolveMaterial(const MaterialOptions& o) {
   if (o.material_file) {
     if (o.d || o.g || o.f || o.f0 || o.ior || o.eta || o.k || o.alpha || o.roughness || o.diffuse || o.preset ||
-        o.anisotropy || o.anisotropyRotation || o.clearcoat || o.clearcoatRoughness)
+        o.anisotropy || o.anisotropyRotation || o.clearcoat || o.clearcoatRoughness || o.sheenColor || o.sheenRoughness)
       throw std::invalid_argument("--material: cannot be combined with material flags");
     return materials::loadMaterial(*o.material_file);
   }
@@ -116,6 +121,8 @@ materials::Material resolveMaterial(const MaterialOptions& o) {
   if (o.anisotropyRotation) spec.anisotropyRotation = parseNumber("--anisotropy-rotation", *o.anisotropyRotation);
   if (o.clearcoat) spec.clearcoat = parseNumber("--clearcoat", *o.clearcoat);
   if (o.clearcoatRoughness) spec.clearcoatRoughness = parseNumber("--clearcoat-roughness", *o.clearcoatRoughness);
+  if (o.sheenColor) spec.sheenColor = parseColor("--sheen-color", *o.sheenColor);
+  if (o.sheenRoughness) spec.sheenRoughness = parseNumber("--sheen-roughness", *o.sheenRoughness);
   return materials::buildMaterial(spec, flagFor);
 }
 

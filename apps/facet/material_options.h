@@ -1,7 +1,8 @@
 // Command-line flags that describe a material (shared by brdf, albedo and
 // plot): --d --g --f --f0 --ior --eta --k --alpha --roughness --diffuse
-// --anisotropy --anisotropy-rotation --clearcoat --clearcoat-roughness --preset, or --material FILE.json; and render's
-// flags that change a model's materials and fields: --material [OBJECT=]FILE|PRESET, --set.
+// --anisotropy --anisotropy-rotation --clearcoat --clearcoat-roughness --sheen-color --sheen-roughness --preset, or
+// --material FILE.json; and render's flags that change a model's materials and fields: --material
+// [OBJECT=]FILE|PRESET, --set.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -17,7 +18,7 @@ namespace facet::cli {
 
 struct MaterialOptions {
   std::optional<std::string> d, g, f, f0, ior, eta, k, alpha, roughness, diffuse, preset;
-  std::optional<std::string> anisotropy, anisotropyRotation, clearcoat, clearcoatRoughness;
+  std::optional<std::string> anisotropy, anisotropyRotation, clearcoat, clearcoatRoughness, sheenColor, sheenRoughness;
   std::optional<std::string> material_file;
 };
 

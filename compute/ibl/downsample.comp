@@ -11,6 +11,7 @@
 #include "rules/shading/microfacet.h"
 #include "rules/shading/fresnel.h"
 #include "rules/shading/brdf.h"
+#include "rules/shading/sheen.h"
 #include "rules/shading/brdf_sampling.h"
 #include "rules/grid/config.h"
 #include "rules/environment/environment_mapping.h"

@@ -146,6 +146,20 @@ struct PathState {
   float clearcoatNormalX;
   float clearcoatNormalY;
   float clearcoatNormalZ;
+  // Sheen (docs/shading.md, "Sheen"): BrdfParams' color, alpha and the 8
+  // knots of its albedo E(mu).
+  float sheenR;
+  float sheenG;
+  float sheenB;
+  float sheenAlpha;
+  float sheenAlbedo0;
+  float sheenAlbedo1;
+  float sheenAlbedo2;
+  float sheenAlbedo3;
+  float sheenAlbedo4;
+  float sheenAlbedo5;
+  float sheenAlbedo6;
+  float sheenAlbedo7;
 };
 
 // PathState.flags: the vertex continues by continue_path_transmissive; v lies
@@ -280,6 +294,20 @@ struct MaterialRecord {
   float clearcoat;
   float clearcoatAlpha;
   uint coatDfgTable;
+  // Sheen (docs/shading.md, "Sheen"): the color, alpha and the 8 knots of
+  // the lobe's albedo E(mu), as BrdfParams carries them.
+  float sheenR;
+  float sheenG;
+  float sheenB;
+  float sheenAlpha;
+  float sheenAlbedo0;
+  float sheenAlbedo1;
+  float sheenAlbedo2;
+  float sheenAlbedo3;
+  float sheenAlbedo4;
+  float sheenAlbedo5;
+  float sheenAlbedo6;
+  float sheenAlbedo7;
 };
 
 // What the camera-side kernels need, one uniform block (std140 agrees: all

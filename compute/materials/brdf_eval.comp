@@ -20,6 +20,7 @@
 #include "rules/shading/microfacet.h"
 #include "rules/shading/fresnel.h"
 #include "rules/shading/brdf.h"
+#include "rules/shading/sheen.h"
 #include "rules/shading/clearcoat.h"
 #include "rules/shading/brdf_sampling.h"
 
@@ -71,6 +72,10 @@ void main() {
   p.clearcoat_alpha = 0.0;
   vec3 n = cases[i].n.xyz;
   p.clearcoat_normal = n;
+  p.sheen_color = vec3(0.0);  // the sheen likewise
+  p.sheen_alpha = 0.0;
+  p.sheen_albedo_near = vec4(0.0);
+  p.sheen_albedo_far = vec4(0.0);
   vec3 l = cases[i].l.xyz;
   vec3 v = cases[i].v.xyz;
   BrdfTerms t = brdf_terms(p, n, l, v);

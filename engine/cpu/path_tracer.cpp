@@ -41,7 +41,7 @@ glm::dvec3 tracePath(const PathScene& scene, const PathVertex& first, const Path
       const m::PathContinuation next =
           m::continue_path(vertex.params, vertex.n, vertex.ng, vertex.v, vertex.specularScale, u);
       direction = next.direction;
-      lobe = m::opaque_continuation_lobe(vertex.params, vertex.v, u);
+      lobe = m::opaque_continuation_lobe(vertex.params, vertex.n, vertex.v, u);
       throughput *= next.weight;
     }
     if (!m::path_lobe_allowed(taken[lobe], limit[lobe])) break;

@@ -35,10 +35,10 @@ static_assert(offsetof(facet::gpu_layout::RenderCounters, shadowFallbackX) == 36
 static_assert(offsetof(facet::gpu_layout::RenderCounters, pathX) == 52);
 static_assert(sizeof(facet::gpu_layout::FallbackRecord) == 28);
 static_assert(sizeof(facet::gpu_layout::PathRayRecord) == 36);
-static_assert(sizeof(facet::gpu_layout::PathState) == 208);
+static_assert(sizeof(facet::gpu_layout::PathState) == 256);
 static_assert(sizeof(facet::gpu_layout::HitRecord) == 32);
 static_assert(sizeof(facet::gpu_layout::LightRecord) == 48);
 static_assert(sizeof(facet::gpu_layout::TextureSlotRecord) == 28);
-static_assert(sizeof(facet::gpu_layout::MaterialRecord) == 312);
+static_assert(sizeof(facet::gpu_layout::MaterialRecord) == 360);
 static_assert(sizeof(facet::gpu_layout::FrameParams) == 192);
 static_assert(sizeof(facet::gpu_layout::PixelAovs) == 64);

@@ -87,6 +87,12 @@ std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
     r.clearcoat = p.clearcoat;
     r.clearcoatAlpha = p.clearcoat_alpha;
     r.coatDfgTable = prefiltered && environment->coatDfgTable >= 0 ? std::uint32_t(environment->coatDfgTable) : 0u;
+    r.sheenR = p.sheen_color.x, r.sheenG = p.sheen_color.y, r.sheenB = p.sheen_color.z;
+    r.sheenAlpha = p.sheen_alpha;
+    r.sheenAlbedo0 = p.sheen_albedo_near.x, r.sheenAlbedo1 = p.sheen_albedo_near.y;
+    r.sheenAlbedo2 = p.sheen_albedo_near.z, r.sheenAlbedo3 = p.sheen_albedo_near.w;
+    r.sheenAlbedo4 = p.sheen_albedo_far.x, r.sheenAlbedo5 = p.sheen_albedo_far.y;
+    r.sheenAlbedo6 = p.sheen_albedo_far.z, r.sheenAlbedo7 = p.sheen_albedo_far.w;
     records.push_back(r);
   }
   return records;

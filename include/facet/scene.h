@@ -50,6 +50,10 @@ struct Material {
   // in [0, 1] and perceptual roughness, KHR_materials_clearcoat's factors.
   std::optional<double> clearcoat;
   std::optional<double> clearcoatRoughness;
+  // A sheen between the base and any coat (docs/shading.md, "Sheen"): its
+  // linear RGB color in [0, 1] and roughness, KHR_materials_sheen's factors.
+  std::optional<Vec3> sheenColor;
+  std::optional<double> sheenRoughness;
 };
 
 // A Catmull-Clark control cage in world space; indices are 0-based and each

@@ -32,8 +32,15 @@ FACET_FN vec3 split_sum(BrdfParams p, real nv, vec3 prefiltered, vec2 dfg, vec3 
   vec3 f90 =
       vec3(dielectric && p.eta.x == real(1) ? real(0) : real(1), dielectric && p.eta.y == real(1) ? real(0) : real(1),
            dielectric && p.eta.z == real(1) ? real(0) : real(1));
-  return prefiltered * (fresnel_F(p, real(1)) * dfg.x + f90 * dfg.y) * specular_scale +
-         p.diffuse * irradiance_over_pi;
+  vec3 specular = prefiltered * (fresnel_F(p, real(1)) * dfg.x + f90 * dfg.y) * specular_scale;
+  if (!has_sheen(p)) return specular + p.diffuse * irradiance_over_pi;
+  // Under a sheen (docs/shading.md, "Sheen"): the specular lobe's light
+  // arrives about the mirror direction, at n.l = n.v; the diffuse lobe's
+  // over the hemisphere; the broad sheen's own as the irradiance.
+  real e_v = sheen_albedo(p, nv);
+  return specular * (real(1) - max_component(p.sheen_color) * min(e_v, real(1))) +
+         p.diffuse * irradiance_over_pi * sheen_diffuse_scale(p, e_v) +
+         p.sheen_color * (e_v / max(e_v, real(1))) * irradiance_over_pi;
 }
 
 // The split sum under a clear coat (docs/shading.md, "Clear coat"): the
@@ -50,9 +57,10 @@ FACET_FN vec3 coated_split_sum(BrdfParams p, real nv, vec3 prefiltered, vec2 dfg
   specular_only.diffuse = vec3(real(0));
   vec3 specular = split_sum(specular_only, nv, prefiltered, dfg, irradiance_over_pi, specular_scale);
   vec3 diffuse = nv <= COS_EPSILON ? vec3(real(0)) : p.diffuse * irradiance_over_pi;
+  if (has_sheen(p)) diffuse *= sheen_diffuse_scale(p, sheen_albedo(p, nv));
   real out_coat = coat_transmittance(p, nv_coat);
   real in_diffuse = real(1) - p.clearcoat * (COAT_F0 + (real(1) - COAT_F0) / real(21));
-  vec3 coat = nv_coat <= COS_EPSILON ? vec3(real(0))
-                                     : prefiltered_coat * (p.clearcoat * (COAT_F0 * dfg_coat.x + dfg_coat.y));
+  vec3 coat =
+      nv_coat <= COS_EPSILON ? vec3(real(0)) : prefiltered_coat * (p.clearcoat * (COAT_F0 * dfg_coat.x + dfg_coat.y));
   return (specular * out_coat + diffuse * in_diffuse) * out_coat + coat;
 }

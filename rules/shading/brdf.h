@@ -12,7 +12,10 @@
 // clearcoat in [0, 1] is KHR_materials_clearcoat's strength: 0 is the bare
 // base (and its code path, bit for bit); above, a GGX lobe of microfacet
 // alpha clearcoat_alpha about clearcoat_normal (the normal before any normal
-// map) lies over the base (clearcoat.h).
+// map) lies over the base (clearcoat.h). sheen_color 0 is no sheen (and the
+// base's code path, bit for bit); above, a Charlie lobe of sheen_alpha lies
+// between the base and any coat, its directional albedo E(mu) given by 8
+// knots (sheen.h).
 struct BrdfParams {
   int d_model;
   int g_model;
@@ -27,6 +30,10 @@ struct BrdfParams {
   real clearcoat;
   real clearcoat_alpha;
   vec3 clearcoat_normal;
+  vec3 sheen_color;
+  real sheen_alpha;
+  vec4 sheen_albedo_near;
+  vec4 sheen_albedo_far;
 };
 
 // The isotropic alpha that stands for p's lobe where a table is indexed by

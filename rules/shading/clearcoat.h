@@ -1,5 +1,6 @@
 // A clear coat over the base BRDF (KHR_materials_clearcoat; docs/shading.md,
-// "Clear coat"), and the whole material's BRDF with it. Needs brdf.h.
+// "Clear coat"), and the whole material's BRDF with it. Needs brdf.h and
+// sheen.h.
 //
 // The coat is a dielectric of index 1.5 (F0 = 0.04) with glTF's specular
 // lobe: GGX D, height-correlated Smith G, Schlick's F at v.h, about the coat
@@ -32,6 +33,10 @@ FACET_FN BrdfParams coat_lobe_params(BrdfParams p) {
   c.clearcoat = real(0);
   c.clearcoat_alpha = real(0);
   c.clearcoat_normal = p.clearcoat_normal;
+  c.sheen_color = vec3(real(0));
+  c.sheen_alpha = real(0);
+  c.sheen_albedo_near = vec4(real(0));
+  c.sheen_albedo_far = vec4(real(0));
   return c;
 }
 
@@ -46,10 +51,12 @@ FACET_FN vec3 coat_evaluate(BrdfParams p, vec3 l, vec3 v) {
 // f(l, v) with the base's specular lobe scaled per channel by
 // `specular_scale`: vec3(1) is the course's single-scattering model, bit for
 // bit; energy compensation's factor (rules/shading/dfg.h) restores what it
-// loses. The coat is not compensated: its smooth lobes lose little.
+// loses. The coat is not compensated: its smooth lobes lose little. A sheen
+// lies on the base, under the coat (sheen.h).
 FACET_FN vec3 brdf_evaluate_scaled(BrdfParams p, vec3 n, vec3 l, vec3 v, vec3 specular_scale) {
   BrdfTerms t = brdf_terms(p, n, l, v);
   vec3 base = t.specular * specular_scale + t.diffuse;
+  if (has_sheen(p)) base = sheen_over(p, n, l, v, base);
   if (p.clearcoat == real(0)) return base;
   vec3 nc = p.clearcoat_normal;
   return base * (coat_transmittance(p, dot(nc, v)) * coat_transmittance(p, dot(nc, l))) + coat_evaluate(p, l, v);

@@ -46,6 +46,10 @@ FACET_FN vec2 dfg_integrals(int d_model, int g_model, real nv, real alpha, int s
   p.clearcoat_alpha = real(0);
   vec3 n = vec3(real(0), real(0), real(1));
   p.clearcoat_normal = n;
+  p.sheen_color = vec3(real(0));
+  p.sheen_alpha = real(0);
+  p.sheen_albedo_near = vec4(real(0));
+  p.sheen_albedo_far = vec4(real(0));
   vec3 v = vec3(sqrt(max(real(1) - nv * nv, real(0))), real(0), nv);
   int technique = specular_technique(p);
   vec2 sum = vec2(real(0));
@@ -55,6 +59,29 @@ FACET_FN vec2 dfg_integrals(int d_model, int g_model, real nv, real alpha, int s
     sum += dfg_sample_weight(brdf_terms(p, n, l, v).specular.x, l.z, pdf, real(0.5) * length(l + v));
   }
   return sum / real(samples);
+}
+
+// One entry of the sheen's albedo table (sheen.h): E(n.v) of its lobe for
+// color 1 and alpha `alpha` over `samples` Hammersley points of the cosine
+// sampler, as (E, 0). The lobe is broad and has no visible-normal sampler;
+// D-proportional normals would weigh grazing microfacets by 1 / (n.m).
+FACET_FN vec2 sheen_albedo_entry(real nv, real alpha, int samples) {
+  vec3 n = vec3(real(0), real(0), real(1));
+  vec3 v = vec3(sqrt(max(real(1) - nv * nv, real(0))), real(0), nv);
+  real sum = real(0);
+  for (int k = 0; k < samples; ++k) {
+    vec3 l = sample_cosine_hemisphere(hammersley_point(k, samples));
+    sum += sheen_lobe(alpha, n, l, v) * PI;  // f (n.l) / (n.l / pi)
+  }
+  return vec2(sum / real(samples), real(0));
+}
+
+// Four of a sheen's albedo knots (sheen.h), from knot `first` on.
+FACET_FN vec4 sheen_albedo_knots(real alpha, int first, int samples) {
+  return vec4(sheen_albedo_entry(sheen_knot_mu(first), alpha, samples).x,
+              sheen_albedo_entry(sheen_knot_mu(first + 1), alpha, samples).x,
+              sheen_albedo_entry(sheen_knot_mu(first + 2), alpha, samples).x,
+              sheen_albedo_entry(sheen_knot_mu(first + 3), alpha, samples).x);
 }
 
 // Multiple-scattering compensation of the specular lobe (Turquin 2019, after

@@ -1,5 +1,5 @@
-// One BRDF sample across a material's lobes (the base's two, and a clear
-// coat's), and its density
+// One BRDF sample across a material's lobes (the base's two, a sheen's and a
+// clear coat's), and its density
 // (docs/rendering.md, "Sampled"). Needs the rules of rules/shading/.
 
 FACET_FN real luminance(vec3 c) { return real(0.2126) * c.x + real(0.7152) * c.y + real(0.0722) * c.z; }
@@ -41,16 +41,32 @@ FACET_FN vec2 base_lobes_u(real p_coat, vec2 u) {
   return vec2(min((u.x - p_coat) / (real(1) - p_coat), BELOW_ONE), u.y);
 }
 
+// Probability of choosing the sheen's lobe (sheen.h; the cosine sampler
+// about n) before the base's two: its albedo max(color) min(E(n.v), 1)
+// against what it leaves them at normal incidence, kept within [0.1, 0.9]
+// when both are present. 0 without a sheen.
+FACET_FN real sheen_lobe_probability(BrdfParams p, vec3 n, vec3 v) {
+  if (!has_sheen(p)) return real(0);
+  real sheen = max_component(p.sheen_color) * min(sheen_albedo(p, dot(n, v)), real(1));
+  real base = (real(1) - sheen) * (luminance(fresnel_F(p, real(1))) + luminance(p.diffuse));
+  if (base <= real(0)) return real(1);
+  return clamp(sheen / (sheen + base), real(0.1), real(0.9));
+}
+
 // u.x picks the lobe and, stretched back to [0, 1) over the lobe's share, is
 // also the first coordinate of the direction within it: each lobe then
 // draws a stratified subset of a stratified point set, where a separate
-// lobe dimension would hand it a random one.
+// lobe dimension would hand it a random one. Below a coat: a sheen's lobe
+// first, then the base's two.
 FACET_FN vec3 sample_base_lobes(BrdfParams p, vec3 n, vec3 v, vec2 u) {
+  real p_sheen = sheen_lobe_probability(p, n, v);
+  if (p_sheen > real(0)) {
+    if (u.x < p_sheen) return sample_direction(SAMPLE_COSINE, p, n, v, vec2(min(u.x / p_sheen, BELOW_ONE), u.y));
+    u = base_lobes_u(p_sheen, u);
+  }
   real p_spec = specular_lobe_probability(p);
-  if (u.x < p_spec)
-    return sample_direction(specular_technique(p), p, n, v, vec2(min(u.x / p_spec, BELOW_ONE), u.y));
-  return sample_direction(SAMPLE_COSINE, p, n, v,
-                          vec2(min((u.x - p_spec) / (real(1) - p_spec), BELOW_ONE), u.y));
+  if (u.x < p_spec) return sample_direction(specular_technique(p), p, n, v, vec2(min(u.x / p_spec, BELOW_ONE), u.y));
+  return sample_direction(SAMPLE_COSINE, p, n, v, vec2(min((u.x - p_spec) / (real(1) - p_spec), BELOW_ONE), u.y));
 }
 
 FACET_FN real base_lobes_pdf(BrdfParams p, vec3 n, vec3 l, vec3 v) {
@@ -58,6 +74,8 @@ FACET_FN real base_lobes_pdf(BrdfParams p, vec3 n, vec3 l, vec3 v) {
   real pdf = real(0);
   if (p_spec > real(0)) pdf += p_spec * direction_pdf(specular_technique(p), p, n, l, v);
   if (p_spec < real(1)) pdf += (real(1) - p_spec) * direction_pdf(SAMPLE_COSINE, p, n, l, v);
+  real p_sheen = sheen_lobe_probability(p, n, v);
+  if (p_sheen > real(0)) pdf = p_sheen * direction_pdf(SAMPLE_COSINE, p, n, l, v) + (real(1) - p_sheen) * pdf;
   return pdf;
 }
 

@@ -44,13 +44,19 @@ struct TransmissiveContinuation {
   int lobe;          // PATH_LOBE_*, for the path's limits per lobe kind
 };
 
-// The lobe kind of continue_path's continuation for u seen from v: the
+// The lobe kind of continue_path's continuation for u seen from v about n: the
 // coat's and the specular lobe's shares of u.x are glossy (sample_brdf_lobes).
-FACET_FN int opaque_continuation_lobe(BrdfParams p, vec3 v, vec2 u) {
+FACET_FN int opaque_continuation_lobe(BrdfParams p, vec3 n, vec3 v, vec2 u) {
   real p_coat = coat_lobe_probability(p, v);
   if (p_coat > real(0)) {
     if (u.x < p_coat) return PATH_LOBE_GLOSSY;
     u = base_lobes_u(p_coat, u);
+  }
+  // A sheen's share takes the cosine sampler: diffuse.
+  real p_sheen = sheen_lobe_probability(p, n, v);
+  if (p_sheen > real(0)) {
+    if (u.x < p_sheen) return PATH_LOBE_DIFFUSE;
+    u = base_lobes_u(p_sheen, u);
   }
   return u.x < specular_lobe_probability(p) ? PATH_LOBE_GLOSSY : PATH_LOBE_DIFFUSE;
 }

@@ -132,6 +132,9 @@ TEST_F(CyclesPeer, RefusesWhatCyclesWouldRenderDifferently) {
   materials::Material coated = metal();
   coated.clearcoat = 1;
   refused(sceneOf({coated}), "a coat");
+  materials::Material velvet = lambert();
+  velvet.sheenColor = glm::dvec3(0.5);
+  refused(sceneOf({velvet}), "sheen");
   materials::Material thin = ruby();
   thin.thinWalled = true;
   refused(sceneOf({thin}), "closed volume");

@@ -261,5 +261,38 @@ TEST(MaterialClearcoat, BadInputsNameTheField) {
   EXPECT_THROW(buildMaterial(spec, [](std::string_view field) { return std::string(field); }), std::invalid_argument);
 }
 
+TEST(MaterialSheen, NoSheenByDefaultReadAndRoundTrips) {
+  EXPECT_EQ(build(R"({"alpha": 0.1})").sheenColor, glm::dvec3(0.0));
+  const Material m = build(R"({"alpha": 0.2, "diffuse": 0.5, "sheen_color": [0.6, 0.3, 0.1], "sheen_roughness": 0.4})");
+  EXPECT_EQ(m.sheenColor, glm::dvec3(0.6, 0.3, 0.1));
+  EXPECT_EQ(m.sheenRoughness, 0.4);
+  const Material again = build(toJson(m).dump());
+  EXPECT_EQ(again.sheenColor, m.sheenColor);
+  EXPECT_EQ(again.sheenRoughness, 0.4);
+  const rules::f64::BrdfParams p = toParams64(m);
+  EXPECT_EQ(p.sheen_color, m.sheenColor);
+  EXPECT_NEAR(p.sheen_alpha, 0.16, 1e-15);  // alpha = roughness^2
+  // The albedo's knots fall from grazing to head-on (a rough sheen's E).
+  EXPECT_GT(p.sheen_albedo_near.x, p.sheen_albedo_far.w);
+  EXPECT_GT(p.sheen_albedo_far.w, 0.0);
+}
+
+TEST(MaterialSheen, BadInputsNameTheField) {
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "sheen_color": [0.5, 1.5, 0.5]})"),
+            "test.json: field 'sheen_color': each channel must be in [0, 1], got 1.5");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "sheen_color": 1, "sheen_roughness": 2})"),
+            "test.json: field 'sheen_roughness': must be in [0, 1], got 2");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "sheen_color": "red"})"),
+            "test.json: field 'sheen_color': expected a number or an array of 3 numbers (r, g, b)");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "sheen_roughness": 0.1})"),
+            "test.json: field 'sheen_roughness': is only used with sheen_color (give sheen_color too)");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "ior": 1.5, "transmission": 1, "sheen_color": 0.5})"),
+            "test.json: field 'sheen_color': is not defined for a transmissive material (transmission > 0)");
+  MaterialSpec spec;
+  spec.alpha = 0.1;
+  spec.sheenColor = glm::dvec3(std::nan(""));
+  EXPECT_THROW(buildMaterial(spec, [](std::string_view field) { return std::string(field); }), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace facet::materials

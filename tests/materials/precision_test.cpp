@@ -22,11 +22,14 @@ TEST(Stability, SweepIsFiniteAndFloatIsAccurateWhereWellConditioned) {
   EXPECT_EQ(report.nonfinite_double, 0);
   // Under the horizon both precisions give exactly 0.
   for (const auto& row : report.by_alpha_and_cos) EXPECT_EQ(row.front().max_relative_error, 0.0);
-  // alpha >= 0.01 and min(n.l, n.v) >= 0.01: float within 1e-4 relative for
-  // every part (docs/shading.md, section 8, has the table; the bound leaves
-  // headroom for libm differences in exp and pow).
+  // alpha >= 0.01 and min(n.l, n.v) >= 0.01: float within 2e-3 relative for
+  // every part. h = (l + v) / |l + v| carries an angular error of about
+  // eps / |l + v|, and D's logarithm moves by 4/alpha per radian: at
+  // grazing l and v on opposite sides |l + v| falls to n.l + n.v = 0.02,
+  // so 4 eps / (alpha |l + v|) reaches 1.2e-3 (docs/shading.md, section 4
+  // and the table of section 8).
   for (const PrecisionReport::Part& part : report.by_part)
-    EXPECT_LT(part.benign.max_relative_error, 1e-4) << part.kind << " " << part.name << ": " << part.benign.worst_case;
+    EXPECT_LT(part.benign.max_relative_error, 2e-3) << part.kind << " " << part.name << ": " << part.benign.worst_case;
 }
 
 TEST(Stability, SamplersAreFiniteAtTheEdgesOfTheUnitSquare) {

@@ -248,6 +248,12 @@ class Scenes(unittest.TestCase):
         lacquer = facet.Material(roughness=0.5, diffuse=(0.5, 0.5, 0.5), clearcoat=0.8, clearcoat_roughness=0.05)
         self.assertEqual((lacquer.clearcoat, lacquer.clearcoat_roughness), (0.8, 0.05))
         facet.Scene([facet.Object(cube())], materials=[lacquer])  # within the rules
+        with self.assertRaisesRegex(facet.Error, r"materials\[0\].sheen_color: each channel must be in \[0, 1\]"):
+            facet.Scene([facet.Object(cube())], materials=[facet.Material(roughness=0.5, sheen_color=(0.5, 1.2, 0.5))])
+        velvet = facet.Material(roughness=0.8, diffuse=(0.2, 0.02, 0.04), sheen_color=(0.8, 0.3, 0.35),
+                                sheen_roughness=0.4)
+        self.assertEqual((tuple(velvet.sheen_color), velvet.sheen_roughness), ((0.8, 0.3, 0.35), 0.4))
+        facet.Scene([facet.Object(cube())], materials=[velvet])  # within the rules
         with self.assertRaisesRegex(facet.Error, "camera: eye and target must differ"):
             facet.Scene([facet.Object(cube())], camera=facet.Camera(eye=(0, 0, 0)))
         with self.assertRaisesRegex(facet.Error, "environment.file"):

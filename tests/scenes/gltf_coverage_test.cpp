@@ -55,18 +55,20 @@ TEST_F(GltfCoverage, ARequiredExtensionFacetLacksRefusesTheFile) {
 }
 
 TEST_F(GltfCoverage, EachIgnoredExtensionIsOneWarning) {
-  const nlohmann::json sheen = {{"sheenColorFactor", {1.0, 1.0, 1.0}}};
-  const Scene scene = load("used", {{"extensions", {{"KHR_materials_sheen", sheen}}}},
-                           {{"extensionsUsed", {"KHR_materials_sheen", "EXT_made_up"}}});
+  const nlohmann::json film = {{"iridescenceFactor", 1.0}};
+  const Scene scene = load("used", {{"extensions", {{"KHR_materials_iridescence", film}}}},
+                           {{"extensionsUsed", {"KHR_materials_iridescence", "EXT_made_up"}}});
   EXPECT_THAT(scene.warnings,
-              ElementsAre(AllOf(HasSubstr("used.gltf: extensionsUsed: extension KHR_materials_sheen is not read"),
-                                HasSubstr("without its sheen")),
+              ElementsAre(AllOf(HasSubstr("used.gltf: extensionsUsed: extension KHR_materials_iridescence is not read"),
+                                HasSubstr("without its thin film")),
                           HasSubstr("extensionsUsed: extension EXT_made_up is not read; facet renders the file as if "
                                     "it were absent")));
   // An extension the file uses without listing it is found where it is.
-  const Scene unlisted = load("unlisted", {{"extensions", {{"KHR_materials_iridescence", nlohmann::json::object()}}}});
-  EXPECT_THAT(unlisted.warnings, ElementsAre(HasSubstr("materials[0].extensions.KHR_materials_iridescence: extension "
-                                                       "KHR_materials_iridescence is not read")));
+  const Scene unlisted =
+      load("unlisted", {{"extensions", {{"KHR_materials_diffuse_transmission", nlohmann::json::object()}}}});
+  EXPECT_THAT(unlisted.warnings,
+              ElementsAre(HasSubstr("materials[0].extensions.KHR_materials_diffuse_transmission: extension "
+                                    "KHR_materials_diffuse_transmission is not read")));
 }
 
 TEST_F(GltfCoverage, IgnoredCoreFeaturesAreWarnings) {

@@ -1,6 +1,6 @@
 // glTF material extensions facet reads beyond those of transmission
 // (gltf_transmission_test.cpp): KHR_materials_emissive_strength,
-// KHR_materials_specular and KHR_materials_clearcoat.
+// KHR_materials_specular, KHR_materials_clearcoat and KHR_materials_sheen.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -149,6 +149,31 @@ TEST_F(GltfMaterialExtensions, AClearCoatLiesOverTheEmission) {
   EXPECT_LT(coat.g, bare.g);
   EXPECT_GT(coat.g, 0.96f * 5.0f);
   EXPECT_LT(coat.g, 0.96f * 5.0f + 0.5f);
+}
+
+TEST_F(GltfMaterialExtensions, SheenFactorsAreReadAndItsTexturesWarned) {
+  const nlohmann::json sheen = {{"sheenColorFactor", {0.6, 0.2, 0.1}}, {"sheenRoughnessFactor", 0.4}};
+  const Scene scene = loadScene(write("sheen", {{"extensions", {{"KHR_materials_sheen", sheen}}}}));
+  EXPECT_EQ(scene.materials.at(0).sheenColor, glm::dvec3(0.6, 0.2, 0.1));
+  EXPECT_EQ(scene.materials.at(0).sheenRoughness, 0.4);
+  EXPECT_THAT(scene.warnings, IsEmpty());
+  // Without the extension there is no sheen; each texture is one warning.
+  EXPECT_EQ(loadScene(write("bare", nlohmann::json::object())).materials.at(0).sheenColor, glm::dvec3(0.0));
+  nlohmann::json textured = sheen;
+  for (const char* slot : {"sheenColorTexture", "sheenRoughnessTexture"}) textured[slot] = {{"index", 0}};
+  const Scene warned = loadScene(write("textured", {{"extensions", {{"KHR_materials_sheen", textured}}}}));
+  EXPECT_EQ(warned.materials.at(0).sheenRoughness, 0.4);
+  EXPECT_THAT(warned.warnings,
+              ElementsAre(HasSubstr("KHR_materials_sheen.sheenColorTexture: is not read; the sheen has "
+                                    "sheenColorFactor everywhere"),
+                          HasSubstr("KHR_materials_sheen.sheenRoughnessTexture: is not read")));
+  const std::filesystem::path bad =
+      write("bad", {{"extensions", {{"KHR_materials_sheen", {{"sheenColorFactor", {0.5, 1.5, 0.5}}}}}}});
+  EXPECT_THAT([&] { loadScene(bad); }, ThrowsMessage<InputError>(HasSubstr("KHR_materials_sheen.sheenColorFactor")));
+  const std::filesystem::path rough =
+      write("rough", {{"extensions", {{"KHR_materials_sheen", {{"sheenRoughnessFactor", -0.1}}}}}});
+  EXPECT_THAT([&] { loadScene(rough); },
+              ThrowsMessage<InputError>(HasSubstr("KHR_materials_sheen.sheenRoughnessFactor")));
 }
 
 }  // namespace

@@ -29,6 +29,7 @@
 #include "rules/shading/microfacet.h"
 #include "rules/shading/fresnel.h"
 #include "rules/shading/brdf.h"
+#include "rules/shading/sheen.h"
 #include "rules/shading/clearcoat.h"
 #include "rules/shading/brdf_sampling.h"
 #include "rules/shading/lights.h"
@@ -90,7 +91,7 @@ void main() {
     PathContinuation next = continue_path(x.params, x.n, x.ng, x.v, x.specular_scale, u);
     direction = next.direction;
     weight = next.weight;
-    if (LOBE_LIMITS == 1) lobe = opaque_continuation_lobe(x.params, x.v, u);
+    if (LOBE_LIMITS == 1) lobe = opaque_continuation_lobe(x.params, x.n, x.v, u);
   }
   throughput *= weight;
   if (LOBE_LIMITS == 1) {

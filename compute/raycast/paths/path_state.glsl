@@ -33,7 +33,9 @@ PathState pack_path_state(vec3 throughput, bool alive, PathVertex x, PathMedium 
                    x.specular_scale.z, medium.material, medium.flags, medium.sigma.x, medium.sigma.y,
                    medium.sigma.z, taken.x, taken.y, taken.z, p.anisotropy, p.tangent.x, p.tangent.y,
                    p.tangent.z, p.clearcoat, p.clearcoat_alpha, p.clearcoat_normal.x, p.clearcoat_normal.y,
-                   p.clearcoat_normal.z);
+                   p.clearcoat_normal.z, p.sheen_color.x, p.sheen_color.y, p.sheen_color.z, p.sheen_alpha,
+                   p.sheen_albedo_near.x, p.sheen_albedo_near.y, p.sheen_albedo_near.z, p.sheen_albedo_near.w,
+                   p.sheen_albedo_far.x, p.sheen_albedo_far.y, p.sheen_albedo_far.z, p.sheen_albedo_far.w);
 }
 
 vec3 path_throughput(PathState s) { return vec3(s.throughputR, s.throughputG, s.throughputB); }
@@ -66,6 +68,10 @@ PathVertex path_vertex(PathState s) {
   p.clearcoat = s.clearcoat;
   p.clearcoat_alpha = s.clearcoatAlpha;
   p.clearcoat_normal = vec3(s.clearcoatNormalX, s.clearcoatNormalY, s.clearcoatNormalZ);
+  p.sheen_color = vec3(s.sheenR, s.sheenG, s.sheenB);
+  p.sheen_alpha = s.sheenAlpha;
+  p.sheen_albedo_near = vec4(s.sheenAlbedo0, s.sheenAlbedo1, s.sheenAlbedo2, s.sheenAlbedo3);
+  p.sheen_albedo_far = vec4(s.sheenAlbedo4, s.sheenAlbedo5, s.sheenAlbedo6, s.sheenAlbedo7);
   return PathVertex(vec3(s.positionX, s.positionY, s.positionZ), vec3(s.nX, s.nY, s.nZ), vec3(s.ngX, s.ngY, s.ngZ),
                     vec3(s.vX, s.vY, s.vZ), p, vec3(s.specularR, s.specularG, s.specularB));
 }

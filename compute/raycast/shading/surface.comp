@@ -38,6 +38,8 @@
 // on the isotropic path.
 // CLEARCOAT (docs/shading.md, "Clear coat"): 1 when some material has a
 // clear coat; 0 keeps every material on the bare base's path.
+// SHEEN (docs/shading.md, "Sheen"): 1 when some material has a sheen; 0
+// keeps every material on the path without one.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -49,6 +51,7 @@
 #include "rules/shading/microfacet.h"
 #include "rules/shading/fresnel.h"
 #include "rules/shading/brdf.h"
+#include "rules/shading/sheen.h"
 #include "rules/shading/clearcoat.h"
 #include "rules/shading/brdf_sampling.h"
 #include "rules/environment/environment_mapping.h"
@@ -87,6 +90,7 @@ layout(constant_id = 12) const int TRANSMISSION = 0;
 layout(constant_id = 13) const int LOBE_LIMITS = 0;
 layout(constant_id = 14) const int ANISOTROPY = 0;
 layout(constant_id = 15) const int CLEARCOAT = 0;
+layout(constant_id = 16) const int SHEEN = 0;
 
 layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
 layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord materials[]; };
@@ -137,6 +141,10 @@ BrdfParams brdf_params(uint index) {
   p.clearcoat = CLEARCOAT == 1 ? m.clearcoat : 0.0;
   p.clearcoat_alpha = m.clearcoatAlpha;
   p.clearcoat_normal = vec3(0.0, 0.0, 1.0);  // set per hit: the normal before any normal map
+  p.sheen_color = SHEEN == 1 ? vec3(m.sheenR, m.sheenG, m.sheenB) : vec3(0.0);
+  p.sheen_alpha = m.sheenAlpha;
+  p.sheen_albedo_near = vec4(m.sheenAlbedo0, m.sheenAlbedo1, m.sheenAlbedo2, m.sheenAlbedo3);
+  p.sheen_albedo_far = vec4(m.sheenAlbedo4, m.sheenAlbedo5, m.sheenAlbedo6, m.sheenAlbedo7);
   return p;
 }
 

@@ -48,6 +48,16 @@ rules::f64::BrdfParams coated(double alpha) {
   return p;
 }
 
+// A sheen (rules/shading/sheen.h) on the coated material's base, its
+// albedo's knots a constant 0.4: the sampler and its density agree for any.
+rules::f64::BrdfParams sheened(double alpha) {
+  rules::f64::BrdfParams p = coated(alpha);
+  p.sheen_color = glm::dvec3(0.8, 0.5, 0.3);
+  p.sheen_alpha = 0.25;
+  p.sheen_albedo_near = p.sheen_albedo_far = glm::dvec4(0.4);
+  return p;
+}
+
 struct Case {
   int technique;
   int d;
@@ -55,7 +65,10 @@ struct Case {
   double incidence_degrees;
   double anisotropy = 0.0;
   bool coated = false;  // the whole coated material's sampler, `technique` unused
+  bool sheen = false;   // with coated: a sheen on the base too, sampled across all four lobes
   std::string label() const {
+    if (sheen)
+      return "sheen material alpha=" + std::to_string(alpha) + " incidence=" + std::to_string(incidence_degrees);
     if (coated)
       return "coated material alpha=" + std::to_string(alpha) + " incidence=" + std::to_string(incidence_degrees);
     return std::string(modelName(kSamplingTechniques, technique)) + " d=" + std::string(modelName(kDistributions, d)) +
@@ -85,6 +98,8 @@ std::vector<Case> cases() {
   // A clear coat's lobe beside the base's two.
   for (double incidence : {45.0, 80.0})
     all.push_back({rules::f64::SAMPLE_COSINE, rules::f64::D_GGX, 0.25, incidence, 0.0, true});
+  // A sheen's cosine lobe beside those three.
+  all.push_back({rules::f64::SAMPLE_COSINE, rules::f64::D_GGX, 0.25, 70.0, 0.0, true, true});
   return all;
 }
 
@@ -121,7 +136,9 @@ FitResult chiSquareFit(const Case& c, unsigned seed) {
   const glm::dvec3 n(0, 0, 1);
   double incidence = c.incidence_degrees * kPi / 180;
   const glm::dvec3 v(std::sin(incidence), 0, std::cos(incidence));
-  rules::f64::BrdfParams p = c.coated ? coated(c.alpha) : params(c.d, c.alpha, c.anisotropy);
+  rules::f64::BrdfParams p = c.sheen    ? sheened(c.alpha)
+                             : c.coated ? coated(c.alpha)
+                                        : params(c.d, c.alpha, c.anisotropy);
   bool by_normal = !c.coated && c.technique != rules::f64::SAMPLE_COSINE;
   auto bin = [&](glm::dvec3 w) {
     double theta = std::acos(std::clamp(w.z, -1.0, 1.0));

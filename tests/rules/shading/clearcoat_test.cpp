@@ -64,7 +64,7 @@ TEST(Clearcoat, WithoutACoatTheBaseIsUnchangedBitForBit) {
     EXPECT_EQ(l, m::sample_base_lobes(p, n, v, u));
     EXPECT_EQ(m::brdf_lobes_pdf(p, n, l, v), m::base_lobes_pdf(p, n, l, v));
     EXPECT_EQ(m::brdf_evaluate(p, n, l, v), m::brdf_terms(p, n, l, v).value);
-    EXPECT_EQ(m::opaque_continuation_lobe(p, v, u),
+    EXPECT_EQ(m::opaque_continuation_lobe(p, n, v, u),
               u.x < m::specular_lobe_probability(p) ? m::PATH_LOBE_GLOSSY : m::PATH_LOBE_DIFFUSE);
   }
 }
