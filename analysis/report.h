@@ -27,5 +27,7 @@ void writeCsv(const std::filesystem::path& path, const std::vector<std::string>&
 
 // A number for a CSV cell or a table: shortest round-trip form.
 std::string cell(double value);
+// A number for a table in a printf format ("%.3g", "%+.2f%%"), at most 31 characters.
+std::string formatted(const char* format, double value);
 
 }  // namespace facet::analysis

@@ -63,12 +63,6 @@ Sizes sizesFor(bool quick) {
           64};
 }
 
-std::string formatted(const char* format, double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, format, value);
-  return text;
-}
-
 std::string curveName(const FacetCurve& c) {
   const char* method = c.method == scene::IblMethod::Sampled    ? "sampled"
                        : c.method == scene::IblMethod::Filtered ? "filtered"

@@ -154,17 +154,7 @@ Difference difference(const std::pair<Image, Image>& facet, const std::pair<Imag
 
 constexpr int kBlock = 8;
 
-std::string percent(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%+.2f%%", 100 * value);
-  return text;
-}
-
-std::string number(const char* format, double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, format, value);
-  return text;
-}
+std::string percent(double value) { return formatted("%+.2f%%", 100 * value); }
 
 // facet's timed curves, exact and tessellated, each point the median of
 // `repeats` renders after an untimed one, its error against `converged`.
@@ -227,9 +217,10 @@ void runCyclesPaths(Renderer& renderer, const BenchOptions& options, Report& rep
         "%.4f), per %d x %d block %.4f (noise %.4f, rest %.4f)\n",
         c.name.c_str(), percent(ratio.r).c_str(), percent(ratio.g).c_str(), percent(ratio.b).c_str(),
         pixels.relativeRmse, pixels.noise, pixels.rest, kBlock, kBlock, blocks.relativeRmse, blocks.noise, blocks.rest);
-    table.push_back({c.name, percent(ratio.r), percent(ratio.g), percent(ratio.b), number("%.4f", pixels.relativeRmse),
-                     number("%.4f", pixels.noise), number("%.4f", pixels.rest), number("%.4f", blocks.relativeRmse),
-                     number("%.4f", blocks.noise), number("%.4f", blocks.rest)});
+    table.push_back({c.name, percent(ratio.r), percent(ratio.g), percent(ratio.b),
+                     formatted("%.4f", pixels.relativeRmse), formatted("%.4f", pixels.noise),
+                     formatted("%.4f", pixels.rest), formatted("%.4f", blocks.relativeRmse),
+                     formatted("%.4f", blocks.noise), formatted("%.4f", blocks.rest)});
     if (!c.timed) continue;
 
     // Time to Cycles' error, both against facet's converged image.
@@ -246,7 +237,7 @@ void runCyclesPaths(Renderer& renderer, const BenchOptions& options, Report& rep
     for (const std::vector<Point>& curve : curves)
       for (const Point& p : curve)
         timing.push_back({p.curve == "Cycles" ? p.curve : "facet " + p.curve, std::to_string(p.samples),
-                          number("%.1f", p.milliseconds), number("%.4f", p.relativeRmse)});
+                          formatted("%.1f", p.milliseconds), formatted("%.4f", p.relativeRmse)});
     writeCsv(directory / "time_to_error.csv", {"renderer", "spp", "milliseconds", "relative_rmse"}, timing);
     const Point& target = *std::find_if(curves[0].begin(), curves[0].end(),
                                         [&](const Point& p) { return p.samples == sizes.cyclesTarget; });

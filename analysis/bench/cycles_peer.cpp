@@ -173,6 +173,8 @@ void renderInCycles(const fs::path& blender, const fs::path& script, const fs::p
   runLogged({blender.string(),
              "-b",
              "--factory-startup",
+             "--python-exit-code",  // a script that raises fails the run, not only its log
+             "1",
              "-t",
              threads,
              "--python",

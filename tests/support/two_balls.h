@@ -1,6 +1,6 @@
 // Two subdivided balls side by side under the sun and, optionally, the
 // courtyard: the scene the material parity tests of the GPU backend share
-// (anisotropy, clear coat), and the check that a material the kernel is
+// (anisotropy, clear coat, sheen), and the check that a material the kernel is
 // specialized for leaves its neighbour's pixels bit for bit.
 #pragma once
 
@@ -18,13 +18,16 @@
 
 namespace facet::testing {
 
-// `left` at x = -1.1 and `right` at x = 1.1, 48 x 24 pixels at 4 spp, with
-// `bounces`; lit by the sun and, with a method, the courtyard (2 pairs,
+// Rough gold (roughness 0.4) at x = -1.1, the neighbour whose pixels the
+// tests hold bit for bit, and `right` at x = 1.1; 48 x 24 pixels at 4 spp,
+// with `bounces`; lit by the sun and, with a method, the courtyard (2 pairs,
 // occluded when sampled).
-inline scene::Scene twoBalls(materials::Material left, materials::Material right,
-                             std::optional<scene::IblMethod> method, int bounces) {
+inline scene::Scene twoBalls(materials::Material right, std::optional<scene::IblMethod> method, int bounces) {
+  materials::MaterialSpec gold;
+  gold.preset = "gold";
+  gold.roughness = 0.4;
   scene::Scene s;
-  s.materials.push_back(std::move(left));
+  s.materials.push_back(buildTestMaterial(gold));
   s.materials.push_back(std::move(right));
   scene::ControlCage leftCage = uvSphereCage(8, 16), rightCage = uvSphereCage(8, 16);
   for (glm::dvec3& p : leftCage.positions) p += glm::dvec3(-1.1, 0.0, 0.0);

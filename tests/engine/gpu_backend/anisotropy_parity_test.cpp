@@ -15,16 +15,13 @@ using testing::buildTestMaterial;
 // A gold ball (isotropic) on the left, a brushed aluminium one of the given
 // anisotropy on the right, lit by the sun and the courtyard.
 scene::Scene brushedBalls(double anisotropy, scene::IblMethod method, int bounces) {
-  materials::MaterialSpec gold;
-  gold.preset = "gold";
-  gold.roughness = 0.4;
   materials::MaterialSpec aluminium;
   aluminium.preset = "aluminum";
   aluminium.roughness = 0.3;
   aluminium.anisotropy = anisotropy;
   aluminium.anisotropyRotation = 0.6;
   aluminium.diffuse = glm::dvec3(0.05);
-  return testing::twoBalls(buildTestMaterial(gold), buildTestMaterial(aluminium), method, bounces);
+  return testing::twoBalls(buildTestMaterial(aluminium), method, bounces);
 }
 
 using GpuAnisotropy = testing::GpuRenderTest;

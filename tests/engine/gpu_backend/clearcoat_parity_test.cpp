@@ -19,16 +19,13 @@ using testing::buildTestMaterial;
 // right (the car paint of scenes/examples/materials, its coat rougher to be
 // resolved at 48 x 24), lit by the sun and, with a method, the courtyard.
 scene::Scene coatedBalls(double clearcoat, std::optional<scene::IblMethod> method, int bounces) {
-  materials::MaterialSpec gold;
-  gold.preset = "gold";
-  gold.roughness = 0.4;
   materials::MaterialSpec paint;
   paint.fresnel = "schlick";
   paint.f0 = glm::dvec3(0.45, 0.06, 0.05);
   paint.diffuse = glm::dvec3(0.3, 0.01, 0.02);
   paint.roughness = 0.45;
   if (clearcoat > 0) paint.clearcoat = clearcoat, paint.clearcoatRoughness = 0.2;
-  return testing::twoBalls(buildTestMaterial(gold), buildTestMaterial(paint), method, bounces);
+  return testing::twoBalls(buildTestMaterial(paint), method, bounces);
 }
 
 using GpuClearcoat = testing::GpuRenderTest;

@@ -19,16 +19,13 @@ using testing::buildTestMaterial;
 // on the right (`sheen` false: its dark red base alone), lit by the sun and,
 // with a method, the courtyard.
 scene::Scene velvetBalls(bool sheen, std::optional<scene::IblMethod> method, int bounces) {
-  materials::MaterialSpec gold;
-  gold.preset = "gold";
-  gold.roughness = 0.4;
   materials::MaterialSpec velvet;
   velvet.fresnel = "schlick";
   velvet.f0 = glm::dvec3(0.04);
   velvet.diffuse = glm::dvec3(0.25, 0.02, 0.04);
   velvet.roughness = 0.8;
   if (sheen) velvet.sheenColor = glm::dvec3(0.9, 0.35, 0.4), velvet.sheenRoughness = 0.4;
-  return testing::twoBalls(buildTestMaterial(gold), buildTestMaterial(velvet), method, bounces);
+  return testing::twoBalls(buildTestMaterial(velvet), method, bounces);
 }
 
 using GpuSheen = testing::GpuRenderTest;
