@@ -23,6 +23,7 @@ struct TextureSlot {
   glm::dvec2 offset{0.0};
   double rotation = 0.0;  // radians
   glm::dvec2 scale{1.0};
+  int texCoord = 0;  // the set of texture coordinates it reads: 0 TEXCOORD_0, 1 TEXCOORD_1
 };
 
 // glTF's metallic-roughness parameters, kept for a textured material: its

@@ -48,6 +48,12 @@ struct ControlCage {
   // form a seam; options.faceVarying says how the values are subdivided.
   std::vector<glm::dvec2> texcoords;
   std::vector<int> faceVertexTexcoords;
+  // Optional, likewise: a second set of texture coordinates (glTF
+  // TEXCOORD_1) and linear RGB vertex colours (glTF COLOR_0).
+  std::vector<glm::dvec2> texcoords1;
+  std::vector<int> faceVertexTexcoords1;
+  std::vector<glm::dvec3> colors;
+  std::vector<int> faceVertexColors;
   std::vector<CreaseEdge> creases;
   std::vector<CornerVertex> corners;
   std::vector<int> holes;  // face indices

@@ -23,16 +23,24 @@ constexpr std::size_t kMaxZeroElements = std::size_t(1) << 24;
 
 }  // namespace
 
-std::vector<double> GltfReader::read(int accessorIndex, const std::string& where, const ElementFormat& format) const {
+std::size_t GltfReader::components(int accessorIndex, const std::string& where) const {
   if (accessorIndex < 0 || std::size_t(accessorIndex) >= model_.accessors.size())
     fail(where, "accessor index out of range");
+  return std::size_t(
+      tinygltf::GetNumComponentsInType(std::uint32_t(model_.accessors[std::size_t(accessorIndex)].type)));
+}
+
+std::vector<double> GltfReader::read(int accessorIndex, const std::string& where, const ElementFormat& format) const {
+  const std::size_t components = this->components(accessorIndex, where);
   const tinygltf::Accessor& a = model_.accessors[std::size_t(accessorIndex)];
   const std::string accessor = "accessors[" + std::to_string(accessorIndex) + "]";
-  const std::size_t components = std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(a.type)));
   if (components != format.components || std::find(format.componentTypes.begin(), format.componentTypes.end(),
                                                    a.componentType) == format.componentTypes.end())
     fail(where, accessor + " must be " + format.name + ", is componentType " + std::to_string(a.componentType) +
                     " with " + std::to_string(components) + " components");
+  if (format.normalizedOnly && !a.normalized && a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+    fail(where, accessor + " must be " + format.name + ", is componentType " + std::to_string(a.componentType) +
+                    " without normalized: true");
   const std::size_t componentBytes = std::size_t(tinygltf::GetComponentSizeInBytes(std::uint32_t(a.componentType)));
   const std::size_t elementBytes = components * componentBytes;
   double range = 1.0;

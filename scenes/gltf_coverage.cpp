@@ -110,8 +110,8 @@ void warnOfIgnoredFeatures(const tinygltf::Model& model, const GltfReader& reade
       const std::string at = "meshes[" + std::to_string(i) + "].primitives[" + std::to_string(p) + "]";
       for (const auto& [name, accessor] : primitive.attributes) {
         const std::string where = at + ".attributes." + name;
-        if (name.rfind("COLOR_", 0) == 0)
-          reader.warn(where, "vertex colours are not read; the base colour is the material's alone");
+        if (name.rfind("COLOR_", 0) == 0 && name != "COLOR_0")
+          reader.warn(where, "only COLOR_0 is read; this set of vertex colours is not");
         else if (name == "TANGENT")
           reader.warn(where, "tangents are not read; a normal map's tangent is dP/du of the texture coordinates");
         else if (name.rfind("JOINTS_", 0) == 0 || name.rfind("WEIGHTS_", 0) == 0)

@@ -25,7 +25,8 @@ struct ElementFormat {
   std::size_t components;
   std::array<int, 3> componentTypes;  // unused slots repeat the first
   const char* name;
-  bool normalizable = false;  // integer components may be normalized
+  bool normalizable = false;    // integer components may be normalized
+  bool normalizedOnly = false;  // integer components must be
 };
 // The file's errors and its accessors (gltf_accessors.cpp).
 class GltfReader {
@@ -48,6 +49,8 @@ class GltfReader {
   // substitution applied; normalized integers of a format that allows them
   // map to [0, 1] (glTF 2.0, 3.11).
   std::vector<double> read(int accessorIndex, const std::string& where, const ElementFormat& format) const;
+  // The accessor's components per element (VEC3 3, VEC4 4, ...).
+  std::size_t components(int accessorIndex, const std::string& where) const;
 
  private:
   static double component(const unsigned char* p, int type);
@@ -75,7 +78,7 @@ class TextureTable {
       : model_(model), reader_(reader), textures_(textures) {}
 
   // The slot of the texture info at field `where`: texture `index` with its
-  // extensions. One on a coordinate set other than TEXCOORD_0 is an error,
+  // extensions. One on a coordinate set past TEXCOORD_1 is an error,
   // or, where `withoutIt` says how the surface renders without the slot (one
   // that only refines the look), no slot and a warning.
   materials::TextureSlot slot(const tinygltf::ExtensionMap& extensions, int index, int texCoord,
@@ -92,9 +95,11 @@ class TextureTable {
   std::map<std::pair<int, TextureEncoding>, int> cache_;
 };
 
-// gltf_materials.cpp
+// gltf_materials.cpp. A material some primitive with vertex colours uses
+// (`vertexColours`) keeps its glTF parameters as for textures, so that the
+// colour multiplies its base colour per hit.
 materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index, const GltfReader& reader,
-                               TextureTable& textures);
+                               TextureTable& textures, bool vertexColours = false);
 
 // gltf_transmission.cpp: member `key` of extension object `value` at field
 // `where`, a finite number; `fallback` when absent.

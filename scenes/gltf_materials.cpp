@@ -77,13 +77,15 @@ materials::TextureSlot TextureTable::slot(const tinygltf::ExtensionMap& extensio
     if (transform.Has("rotation")) slot.rotation = number(transform.Get("rotation"), at + ".rotation");
     if (transform.Has("texCoord")) texCoord = int(number(transform.Get("texCoord"), at + ".texCoord"));
   }
-  if (texCoord != 0 && !withoutIt)
-    reader_.fail(where + ".texCoord", "only TEXCOORD_0 is read, not TEXCOORD_" + std::to_string(texCoord));
-  if (texCoord != 0) {
-    reader_.warn(where + ".texCoord", "only TEXCOORD_0 is read, so this slot on TEXCOORD_" + std::to_string(texCoord) +
-                                          " is dropped: " + withoutIt);
+  if (texCoord > 1 && !withoutIt)
+    reader_.fail(where + ".texCoord",
+                 "only TEXCOORD_0 and TEXCOORD_1 are read, not TEXCOORD_" + std::to_string(texCoord));
+  if (texCoord > 1) {
+    reader_.warn(where + ".texCoord", "only TEXCOORD_0 and TEXCOORD_1 are read, so this slot on TEXCOORD_" +
+                                          std::to_string(texCoord) + " is dropped: " + withoutIt);
     return {};
   }
+  slot.texCoord = texCoord;
   auto [cached, fresh] = cache_.try_emplace({index, encoding}, int(textures_.size()));
   if (fresh) textures_.push_back(convert(index, encoding));
   slot.texture = cached->second;
@@ -206,7 +208,7 @@ void applySheen(const tinygltf::Material& gltf, const std::string& material, con
 }  // namespace
 
 materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index, const GltfReader& reader,
-                               TextureTable& textures) {
+                               TextureTable& textures, bool vertexColours) {
   const auto& pbr = gltf.pbrMetallicRoughness;
   const std::string material = "materials[" + std::to_string(index) + "]";
   const std::string where = material + ".pbrMetallicRoughness";
@@ -269,6 +271,7 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
   for (const materials::TextureSlot* s :
        {&t.baseColorTexture, &t.metallicRoughnessTexture, &t.normalTexture, &t.occlusionTexture, &t.emissiveTexture})
     if (s->texture >= 0) m.textures = t;
+  if (vertexColours) m.textures = t;
   // The textured rule derives F(0) per hit from the base colour and metallic alone.
   for (const char* name : {"KHR_materials_ior", "KHR_materials_specular"})
     if (m.textures && !materials::isTransmissive(m) && extension(gltf, name))

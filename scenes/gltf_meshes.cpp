@@ -23,6 +23,13 @@ constexpr ElementFormat kTexcoord{
     {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
     "VEC2 of FLOAT, UNSIGNED_BYTE or UNSIGNED_SHORT",
     true};
+constexpr ElementFormat kColor3{
+    3,
+    {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+    "VEC3 or VEC4 of FLOAT, or of normalized UNSIGNED_BYTE or UNSIGNED_SHORT",
+    true,
+    true};
+constexpr ElementFormat kColor4{4, kColor3.componentTypes, kColor3.name, true, true};
 constexpr ElementFormat kVertexIndex{1,
                                      {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
                                       TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
@@ -56,6 +63,54 @@ std::size_t triangleCount(int mode, std::size_t vertices, const GltfReader& read
   return vertices - 2;
 }
 
+// A face-varying attribute of the glTF mesh (TEXCOORD_n, COLOR_0) as a
+// cage channel: the values of one primitive, `size` per vertex, and the
+// distinct values per cage vertex so that corners sharing both share one.
+struct Attribute {
+  const char* name;
+  const ElementFormat* format;  // nullptr: kColor3 or kColor4 by the accessor's type
+  std::size_t size;
+  bool present = false;
+  std::vector<double> perVertex;
+  std::map<std::tuple<int, double, double, double>, int> distinct;
+
+  std::vector<double> read(const tinygltf::Primitive& primitive, std::size_t vertices, const GltfReader& reader,
+                           const std::string& at) {
+    const int accessor = primitive.attributes.at(name);
+    const std::string where = at + "." + name;
+    const ElementFormat& f = format ? *format : reader.components(accessor, where) == 4 ? kColor4 : kColor3;
+    std::vector<double> values = reader.read(accessor, where, f);
+    if (values.size() / f.components != vertices)
+      reader.fail(at, std::string(name) + " and POSITION have different counts");
+    std::vector<double> out;
+    for (std::size_t v = 0; v < vertices; ++v)
+      for (std::size_t c = 0; c < size; ++c) {
+        const double x = values[v * f.components + c];
+        if (!std::isfinite(x)) reader.fail(at, std::string(name) + " " + std::to_string(v) + " is not finite");
+        // A colour past [0, 1] would make the base colour reflect more than it receives.
+        if (!format && !(x >= 0.0 && x <= 1.0))
+          reader.fail(
+              at, std::string(name) + " " + std::to_string(v) + " has a component outside [0, 1], " + formatNumber(x));
+        out.push_back(x);
+      }
+    return out;
+  }
+
+  // The value index of the corner of cage vertex `corner` at primitive vertex `vertex`.
+  template <class Value>
+  int add(int corner, std::size_t vertex, std::vector<Value>& values) {
+    double x[3] = {0.0, 0.0, 0.0};
+    for (std::size_t c = 0; c < size; ++c) x[c] = perVertex[size * vertex + c];
+    auto [it, inserted] = distinct.try_emplace({corner, x[0], x[1], x[2]}, int(values.size()));
+    if (inserted) {
+      Value value;
+      for (std::size_t c = 0; c < size; ++c) value[int(c)] = x[c];
+      values.push_back(value);
+    }
+    return it->second;
+  }
+};
+
 }  // namespace
 
 ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& primitives, const glm::dmat4& world,
@@ -63,13 +118,19 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& p
   ControlCage cage;
   cage.source = where;
   std::map<std::tuple<double, double, double>, int> welded;
-  std::map<std::tuple<int, double, double>, int> texcoordValues;
   const auto everyPrimitiveHas = [&](const char* attribute) {
     return std::all_of(primitives.begin(), primitives.end(),
                        [&](std::size_t p) { return mesh.primitives[p].attributes.count(attribute) != 0; });
   };
   const bool normals = everyPrimitiveHas("NORMAL");
-  const bool texcoords = everyPrimitiveHas("TEXCOORD_0");
+  // COLOR_0's alpha is not read: RGB multiplies the base colour.
+  Attribute uv0{"TEXCOORD_0", &kTexcoord, 2}, uv1{"TEXCOORD_1", &kTexcoord, 2}, color{"COLOR_0", nullptr, 3};
+  for (Attribute* a : {&uv0, &uv1, &color}) a->present = everyPrimitiveHas(a->name);
+  if (!color.present)
+    for (std::size_t p : primitives)
+      if (mesh.primitives[p].attributes.count("COLOR_0"))
+        reader.warn(where + ".primitives[" + std::to_string(p) + "].attributes.COLOR_0",
+                    "not every primitive of its material has COLOR_0, so the object's vertex colours are not read");
   const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(world)));
   for (std::size_t p : primitives) {
     const tinygltf::Primitive& primitive = mesh.primitives[p];
@@ -90,13 +151,8 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& p
         vertexNormals.push_back(transformed / length);
       }
     }
-    std::vector<double> uv;
-    if (texcoords) {
-      uv = reader.read(primitive.attributes.at("TEXCOORD_0"), at + ".TEXCOORD_0", kTexcoord);
-      if (uv.size() / 2 != remap.size()) reader.fail(at, "TEXCOORD_0 and POSITION have different counts");
-      for (std::size_t v = 0; v < uv.size(); ++v)
-        if (!std::isfinite(uv[v])) reader.fail(at, "TEXCOORD_0 " + std::to_string(v / 2) + " is not finite");
-    }
+    for (Attribute* a : {&uv0, &uv1, &color})
+      if (a->present) a->perVertex = a->read(primitive, remap.size(), reader, at);
     std::vector<double> indices;
     if (primitive.indices >= 0) {
       indices = reader.read(primitive.indices, at + ".indices", kVertexIndex);
@@ -133,11 +189,10 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& p
       cage.faceVertexIndices.insert(cage.faceVertexIndices.end(), corners, corners + 3);
       if (normals)
         for (std::size_t vertex : vertices) cage.faceVertexNormals.push_back(vertexNormals[vertex]);
-      for (int c = 0; texcoords && c < 3; ++c) {
-        const double s = uv[2 * vertices[c]], t = uv[2 * vertices[c] + 1];
-        auto [it, inserted] = texcoordValues.try_emplace({corners[c], s, t}, int(cage.texcoords.size()));
-        if (inserted) cage.texcoords.push_back({s, t});
-        cage.faceVertexTexcoords.push_back(it->second);
+      for (int c = 0; c < 3; ++c) {
+        if (uv0.present) cage.faceVertexTexcoords.push_back(uv0.add(corners[c], vertices[c], cage.texcoords));
+        if (uv1.present) cage.faceVertexTexcoords1.push_back(uv1.add(corners[c], vertices[c], cage.texcoords1));
+        if (color.present) cage.faceVertexColors.push_back(color.add(corners[c], vertices[c], cage.colors));
       }
     }
   }
@@ -145,7 +200,8 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& p
     for (std::size_t f = 0; f < cage.faceVertexIndices.size(); f += 3) {
       std::swap(cage.faceVertexIndices[f + 1], cage.faceVertexIndices[f + 2]);
       if (normals) std::swap(cage.faceVertexNormals[f + 1], cage.faceVertexNormals[f + 2]);
-      if (texcoords) std::swap(cage.faceVertexTexcoords[f + 1], cage.faceVertexTexcoords[f + 2]);
+      for (std::vector<int>* corners : {&cage.faceVertexTexcoords, &cage.faceVertexTexcoords1, &cage.faceVertexColors})
+        if (!corners->empty()) std::swap((*corners)[f + 1], (*corners)[f + 2]);
     }
   }
   return cage;

@@ -222,6 +222,17 @@ std::vector<std::pair<int, std::vector<std::size_t>>> materialGroups(const tinyg
   return groups;
 }
 
+// Per material of the file, then the default material: whether a primitive
+// with vertex colours (COLOR_0) uses it.
+std::vector<bool> materialsWithVertexColours(const tinygltf::Model& model) {
+  std::vector<bool> coloured(model.materials.size() + 1, false);
+  for (const tinygltf::Mesh& mesh : model.meshes)
+    for (const tinygltf::Primitive& primitive : mesh.primitives)
+      if (primitive.attributes.count("COLOR_0") && primitive.material < int(model.materials.size()))
+        coloured[primitive.material >= 0 ? std::size_t(primitive.material) : model.materials.size()] = true;
+  return coloured;
+}
+
 // The name of a mesh instance's object `k`: the mesh's name, then name.1, name.2, ...
 std::string objectName(const std::string& mesh, std::size_t k) {
   std::string name = mesh;
@@ -282,10 +293,19 @@ Scene loadGltfScene(const std::filesystem::path& path) {
   Scene scene;
   scene.source = path;
   detail::TextureTable textures(model, reader, scene.textures);
+  const std::vector<bool> coloured = materialsWithVertexColours(model);
   for (std::size_t i = 0; i < model.materials.size(); ++i)
-    scene.materials.push_back(detail::toMaterial(model.materials[i], i, reader, textures));
+    scene.materials.push_back(detail::toMaterial(model.materials[i], i, reader, textures, coloured[i]));
   const int defaultMaterialIndex = int(scene.materials.size());
   scene.materials.push_back(defaultMaterial());
+  if (coloured.back()) {
+    // defaultMaterial()'s diffuse 0.5, F(0) 0.04 and alpha 0.25 as glTF parameters.
+    materials::MaterialTextures t;
+    t.baseColor = glm::dvec3(0.5);
+    t.metallic = 0.0;
+    t.roughness = 0.5;
+    scene.materials.back().textures = t;
+  }
 
   std::optional<Camera> camera;
   std::vector<std::pair<int, glm::dmat4>> stack;

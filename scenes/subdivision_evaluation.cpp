@@ -1,4 +1,4 @@
-// The limit surface and its texture coordinates evaluated on a patch at face
+// The limit surface and its face-varying channels evaluated on a patch at face
 // parameters, through OpenSubdiv's patch basis.
 #include "scenes/subdivision_internal.h"
 
@@ -45,16 +45,25 @@ LimitPoint SubdivisionSurface::evaluatePatch(int index, double u, double v) cons
                  cvs.size(), impl_->points, u, v);
 }
 
-LimitTexcoord SubdivisionSurface::evaluateTexcoord(int index, double u, double v) const {
-  if (!hasTexcoords()) return {};
+LimitPoint SubdivisionSurface::evaluateChannel(Channel channel, int index, double u, double v) const {
+  if (!hasChannel(channel)) return {};
+  const Impl::FaceVarying& values = impl_->channels[std::size_t(channel)];
   const Far::PatchTable::PatchHandle& handle = impl_->handles.at(std::size_t(index));
   double wP[20], wDu[20], wDv[20];
-  impl_->patchTable->EvaluateBasisFaceVarying(handle, u, v, wP, wDu, wDv, nullptr, nullptr, nullptr, 0);
-  const Far::PatchDescriptor::Type type = impl_->texcoordTypes[std::size_t(index)];
-  const LimitPoint sum = combine(impl_->patches[std::size_t(index)], impl_->texcoordPatches[std::size_t(index)], wP,
-                                 wDu, wDv, impl_->patchTable->GetPatchFVarValues(handle, 0),
-                                 Far::PatchDescriptor::GetNumControlVertices(type), impl_->texcoordPoints, u, v);
+  impl_->patchTable->EvaluateBasisFaceVarying(handle, u, v, wP, wDu, wDv, nullptr, nullptr, nullptr, values.fvar);
+  const Far::PatchDescriptor::Type type = values.types[std::size_t(index)];
+  return combine(impl_->patches[std::size_t(index)], values.patches[std::size_t(index)], wP, wDu, wDv,
+                 impl_->patchTable->GetPatchFVarValues(handle, values.fvar),
+                 Far::PatchDescriptor::GetNumControlVertices(type), values.points, u, v);
+}
+
+LimitTexcoord SubdivisionSurface::evaluateTexcoord(int index, double u, double v, int set) const {
+  const LimitPoint sum = evaluateChannel(set == 1 ? Channel::Texcoord1 : Channel::Texcoord0, index, u, v);
   return {glm::dvec2(sum.position), glm::dvec2(sum.du), glm::dvec2(sum.dv)};
+}
+
+glm::dvec3 SubdivisionSurface::evaluateColor(int index, double u, double v) const {
+  return hasChannel(Channel::Color) ? evaluateChannel(Channel::Color, index, u, v).position : glm::dvec3(1.0);
 }
 
 std::optional<int> SubdivisionSurface::findPatch(int ptexFace, double u, double v) const {

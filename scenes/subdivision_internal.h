@@ -10,6 +10,7 @@
 #include <opensubdiv/far/patchTable.h>
 #include <opensubdiv/far/topologyRefiner.h>
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -31,6 +32,15 @@ struct OsdPoint {
 std::unique_ptr<Far::TopologyRefiner> createRefiner(const ControlCage& cage, Subdivision subdivision);
 int isolationLevelFor(const ControlCage& cage, const RefinementSettings& settings);
 
+// A cage's channel as OpenSubdiv takes it: its name in messages, its values
+// as points and the value index of every face corner (empty without it).
+struct ChannelValues {
+  const char* name;
+  std::vector<glm::dvec3> values;
+  const std::vector<int>& corners;
+};
+ChannelValues channelValues(const ControlCage& cage, Channel channel);
+
 // subdivision_bezier.cpp: one patch of OpenSubdiv's (vertex or face-varying)
 // in Bézier form, its control points `cvs` into `points`.
 BezierPatch bezierFromPatch(Far::PatchDescriptor::Type type, Far::ConstIndexArray cvs,
@@ -48,11 +58,17 @@ struct SubdivisionSurface::Impl {
   std::vector<PatchInfo> patches;
   std::vector<BezierPatch> bezierPatches;
   std::vector<std::array<glm::dvec3, 4>> authoredNormals;  // per patch, or empty
-  // Texture coordinates (u, v, 0): refined levels, then local points; and
-  // per patch the face-varying patch as OpenSubdiv has it and in Bézier form.
-  std::vector<detail::OsdPoint> texcoordPoints;
-  std::vector<Far::PatchDescriptor::Type> texcoordTypes;
-  std::vector<BezierPatch> texcoordPatches;
+  // Per channel (Channel's order), the cage has it when `fvar` (its
+  // OpenSubdiv channel) is >= 0: its values, refined levels then local
+  // points; and per patch the face-varying patch as OpenSubdiv has it and in
+  // Bézier form.
+  struct FaceVarying {
+    int fvar = -1;
+    std::vector<detail::OsdPoint> points;
+    std::vector<Far::PatchDescriptor::Type> types;
+    std::vector<BezierPatch> patches;
+  };
+  std::array<FaceVarying, kChannelCount> channels;
   Aabb bounds;
   SurfaceStatistics statistics;
 };

@@ -58,23 +58,24 @@ Sdc::Options sdcOptions(const SubdivisionOptions& options) {
   return sdc;
 }
 
-void validateTexcoords(const ControlCage& cage) {
+void validateChannel(const ControlCage& cage, const ChannelValues& channel) {
   auto fail = [&cage](const std::string& rule, const std::string& detail) {
     throw InputError(cage.source, 0, rule, detail);
   };
-  if (cage.faceVertexTexcoords.empty()) {
-    if (!cage.texcoords.empty()) fail("texture coordinates", "values given, but no face corner uses them");
+  const std::string name = channel.name;
+  if (channel.corners.empty()) {
+    if (!channel.values.empty()) fail(name, "values given, but no face corner uses them");
     return;
   }
-  if (cage.faceVertexTexcoords.size() != cage.faceVertexIndices.size())
-    fail("texture coordinates", std::to_string(cage.faceVertexTexcoords.size()) + " indices for " +
-                                    std::to_string(cage.faceVertexIndices.size()) + " face corners");
-  for (int index : cage.faceVertexTexcoords)
-    if (index < 0 || index >= int(cage.texcoords.size()))
-      fail("index out of range",
-           "texture coordinate " + std::to_string(index) + " of " + std::to_string(cage.texcoords.size()));
-  for (const glm::dvec2& t : cage.texcoords)
-    if (!std::isfinite(t.x) || !std::isfinite(t.y)) fail("non-finite value", "a texture coordinate is NaN or infinite");
+  if (channel.corners.size() != cage.faceVertexIndices.size())
+    fail(name, std::to_string(channel.corners.size()) + " indices for " +
+                   std::to_string(cage.faceVertexIndices.size()) + " face corners");
+  for (int index : channel.corners)
+    if (index < 0 || index >= int(channel.values.size()))
+      fail("index out of range", name + " " + std::to_string(index) + " of " + std::to_string(channel.values.size()));
+  for (const glm::dvec3& t : channel.values)
+    if (!std::isfinite(t.x) || !std::isfinite(t.y) || !std::isfinite(t.z))
+      fail("non-finite value", "a value of the " + name + " is NaN or infinite");
 }
 
 // OpenSubdiv trusts its input (an out-of-range index is undefined
@@ -111,10 +112,25 @@ void validateCage(const ControlCage& cage) {
       fail("index out of range", "corner vertex " + std::to_string(corner.vertex));
   for (int hole : cage.holes)
     if (hole < 0 || hole >= cage.faceCount()) fail("index out of range", "hole face " + std::to_string(hole));
-  validateTexcoords(cage);
+  for (int c = 0; c < kChannelCount; ++c) validateChannel(cage, channelValues(cage, Channel(c)));
 }
 
 }  // namespace
+
+ChannelValues channelValues(const ControlCage& cage, Channel channel) {
+  std::vector<glm::dvec3> values;
+  switch (channel) {
+    case Channel::Texcoord0:
+      for (const glm::dvec2& t : cage.texcoords) values.push_back(glm::dvec3(t, 0.0));
+      return {"texture coordinates", std::move(values), cage.faceVertexTexcoords};
+    case Channel::Texcoord1:
+      for (const glm::dvec2& t : cage.texcoords1) values.push_back(glm::dvec3(t, 0.0));
+      return {"second texture coordinates", std::move(values), cage.faceVertexTexcoords1};
+    case Channel::Color:
+      break;
+  }
+  return {"vertex colours", cage.colors, cage.faceVertexColors};
+}
 
 std::unique_ptr<Far::TopologyRefiner> createRefiner(const ControlCage& cage, Subdivision subdivision) {
   validateCage(cage);
@@ -145,13 +161,17 @@ std::unique_ptr<Far::TopologyRefiner> createRefiner(const ControlCage& cage, Sub
   descriptor.cornerWeights = cornerWeights.data();
   descriptor.numHoles = static_cast<int>(cage.holes.size());
   descriptor.holeIndices = cage.holes.data();
-  Far::TopologyDescriptor::FVarChannel texcoords;
-  texcoords.numValues = int(cage.texcoords.size());
-  texcoords.valueIndices = cage.faceVertexTexcoords.data();
-  if (!cage.faceVertexTexcoords.empty()) {
-    descriptor.numFVarChannels = 1;
-    descriptor.fvarChannels = &texcoords;
+  // The channels the cage has, in Channel's order (SubdivisionSurface::Impl).
+  std::vector<Far::TopologyDescriptor::FVarChannel> channels;
+  for (int c = 0; c < kChannelCount; ++c) {
+    const ChannelValues channel = channelValues(cage, Channel(c));
+    if (channel.corners.empty()) continue;
+    channels.emplace_back();
+    channels.back().numValues = int(channel.values.size());
+    channels.back().valueIndices = channel.corners.data();
   }
+  descriptor.numFVarChannels = int(channels.size());
+  descriptor.fvarChannels = channels.empty() ? nullptr : channels.data();
 
   OsdMessageCapture capture;
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;

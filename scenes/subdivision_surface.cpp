@@ -78,8 +78,10 @@ SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const Ref
   options.SetPatchPrecision<double>();
   // Face-varying patches of the same kinds as the vertex ones (the legacy
   // option makes them all bilinear in the refined values).
-  const bool withTexcoords = !cage.faceVertexTexcoords.empty();
-  options.generateFVarTables = withTexcoords;
+  int fvarChannels = 0;
+  for (int c = 0; c < kChannelCount; ++c)
+    if (!detail::channelValues(cage, Channel(c)).corners.empty()) impl->channels[std::size_t(c)].fvar = fvarChannels++;
+  options.generateFVarTables = fvarChannels > 0;
   options.generateFVarLegacyLinearPatches = false;
   options.SetFVarPatchPrecision<double>();
   refiner.RefineAdaptive(options.GetRefineAdaptiveOptions());
@@ -101,21 +103,24 @@ SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const Ref
   if (localCount > 0)
     table.GetLocalPointStencilTable<double>()->UpdateValues(impl->points.data(), impl->points.data() + refinedCount);
 
-  if (withTexcoords) {
-    const int refinedValues = refiner.GetNumFVarValuesTotal(0);
-    const int localValues = table.GetNumLocalPointsFaceVarying(0);
-    impl->texcoordPoints.resize(std::size_t(refinedValues) + std::size_t(localValues));
-    for (std::size_t t = 0; t < cage.texcoords.size(); ++t)
-      impl->texcoordPoints[t].p = glm::dvec3(cage.texcoords[t], 0.0);
-    detail::OsdPoint* values = impl->texcoordPoints.data();
+  for (int c = 0; c < kChannelCount; ++c) {
+    SubdivisionSurface::Impl::FaceVarying& channel = impl->channels[std::size_t(c)];
+    if (channel.fvar < 0) continue;
+    const int fvar = channel.fvar;
+    const int refinedValues = refiner.GetNumFVarValuesTotal(fvar);
+    const int localValues = table.GetNumLocalPointsFaceVarying(fvar);
+    channel.points.resize(std::size_t(refinedValues) + std::size_t(localValues));
+    const std::vector<glm::dvec3> cageValues = detail::channelValues(cage, Channel(c)).values;
+    for (std::size_t t = 0; t < cageValues.size(); ++t) channel.points[t].p = cageValues[t];
+    detail::OsdPoint* values = channel.points.data();
     for (int l = 1; l < refiner.GetNumLevels(); ++l) {
-      detail::OsdPoint* next = values + refiner.GetLevel(l - 1).GetNumFVarValues(0);
-      primvarRefiner.InterpolateFaceVarying(l, values, next, 0);
+      detail::OsdPoint* next = values + refiner.GetLevel(l - 1).GetNumFVarValues(fvar);
+      primvarRefiner.InterpolateFaceVarying(l, values, next, fvar);
       values = next;
     }
     if (localValues > 0)
-      table.GetLocalPointFaceVaryingStencilTable<double>(0)->UpdateValues(impl->texcoordPoints.data(),
-                                                                          impl->texcoordPoints.data() + refinedValues);
+      table.GetLocalPointFaceVaryingStencilTable<double>(fvar)->UpdateValues(channel.points.data(),
+                                                                             channel.points.data() + refinedValues);
   }
 
   impl->patchMap = std::make_unique<Far::PatchMap>(table);
@@ -185,14 +190,16 @@ SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const Ref
       if (bezier.gregory)
         for (const glm::dvec3& p : bezier.alternates) impl->bounds.extend(p);
       impl->bezierPatches.push_back(bezier);
-      if (withTexcoords) {
-        const Far::PatchParam texcoordParam = table.GetPatchFVarPatchParam(array, j, 0);
-        const Far::PatchDescriptor::Type type = (texcoordParam.IsRegular() ? table.GetFVarPatchDescriptorRegular(0)
-                                                                           : table.GetFVarPatchDescriptorIrregular(0))
-                                                    .GetType();
-        impl->texcoordTypes.push_back(type);
-        impl->texcoordPatches.push_back(detail::bezierFromPatch(type, table.GetPatchFVarValues(array, j, 0),
-                                                                impl->texcoordPoints, texcoordParam.GetBoundary()));
+      for (SubdivisionSurface::Impl::FaceVarying& channel : impl->channels) {
+        if (channel.fvar < 0) continue;
+        const Far::PatchParam fvarParam = table.GetPatchFVarPatchParam(array, j, channel.fvar);
+        const Far::PatchDescriptor::Type type =
+            (fvarParam.IsRegular() ? table.GetFVarPatchDescriptorRegular(channel.fvar)
+                                   : table.GetFVarPatchDescriptorIrregular(channel.fvar))
+                .GetType();
+        channel.types.push_back(type);
+        channel.patches.push_back(detail::bezierFromPatch(type, table.GetPatchFVarValues(array, j, channel.fvar),
+                                                          channel.points, fvarParam.GetBoundary()));
       }
     }
   }
@@ -224,10 +231,10 @@ const std::array<glm::dvec3, 4>* SubdivisionSurface::authoredNormals(int index) 
 const Aabb& SubdivisionSurface::bounds() const { return impl_->bounds; }
 const SurfaceStatistics& SubdivisionSurface::statistics() const { return impl_->statistics; }
 
-bool SubdivisionSurface::hasTexcoords() const { return !impl_->texcoordPatches.empty(); }
+bool SubdivisionSurface::hasChannel(Channel channel) const { return impl_->channels[std::size_t(channel)].fvar >= 0; }
 
-const BezierPatch* SubdivisionSurface::texcoordPatch(int index) const {
-  return hasTexcoords() ? &impl_->texcoordPatches.at(std::size_t(index)) : nullptr;
+const BezierPatch* SubdivisionSurface::channelPatch(Channel channel, int index) const {
+  return hasChannel(channel) ? &impl_->channels[std::size_t(channel)].patches.at(std::size_t(index)) : nullptr;
 }
 
 std::string describe(const SurfaceStatistics& stats) {

@@ -30,10 +30,12 @@
 // patch (its position is still OpenSubdiv's; the tests hold the two forms
 // equal to 1e-12).
 //
-// Texture coordinates, when the cage has them, are OpenSubdiv's
-// face-varying patches for the same patches (the refinement isolates
-// face-varying features too), of the same kinds and evaluated the same way
-// (EvaluateBasisFaceVarying; Gregory derivatives exact).
+// Texture coordinates (two sets) and vertex colours, each when the cage has
+// them, are OpenSubdiv face-varying channels: patches for the same patches
+// (the refinement isolates face-varying features too), of the same kinds
+// and evaluated the same way (EvaluateBasisFaceVarying; Gregory derivatives
+// exact). A colour thus subdivides as texture coordinates do, each of R, G
+// and B as one coordinate of a point.
 //
 // Parameters: every patch belongs to a ptex face (a quad of the cage, or one
 // of the n quads a non-quad face is split into) and covers the square
@@ -57,6 +59,11 @@
 namespace facet::scene {
 
 enum class EndCapBasis { Gregory, BSpline };
+
+// The face-varying channels of a cage (ControlCage): glTF's TEXCOORD_0,
+// TEXCOORD_1 and COLOR_0 (RGB).
+enum class Channel { Texcoord0, Texcoord1, Color };
+constexpr int kChannelCount = 3;
 
 // How a cage becomes a surface: Catmull-Clark's limit surface, or none, the
 // polygons as authored.
@@ -140,16 +147,22 @@ class SubdivisionSurface {
   // The limit surface on patch `index` at face parameters (u, v).
   LimitPoint evaluatePatch(int index, double u, double v) const;
 
-  // Whether the cage carried texture coordinates.
-  bool hasTexcoords() const;
-  // The texture coordinates over patch `index` as a Bézier patch in the
-  // patch's (s, t), points (u, v, 0) laid out as bezierPatch()'s; nullptr
-  // without texture coordinates.
-  const BezierPatch* texcoordPatch(int index) const;
-  // Texture coordinates on patch `index` at face parameters (u, v), from
-  // OpenSubdiv's face-varying patch (EvaluateBasisFaceVarying; Gregory
-  // derivatives exact, as for positions); zero without texture coordinates.
-  LimitTexcoord evaluateTexcoord(int index, double u, double v) const;
+  // Whether the cage carried a channel (TEXCOORD_0 for hasTexcoords()).
+  bool hasChannel(Channel channel) const;
+  bool hasTexcoords() const { return hasChannel(Channel::Texcoord0); }
+  // A channel over patch `index` as a Bézier patch in the patch's (s, t),
+  // points (u, v, 0) or (r, g, b) laid out as bezierPatch()'s; nullptr
+  // without the channel.
+  const BezierPatch* channelPatch(Channel channel, int index) const;
+  const BezierPatch* texcoordPatch(int index) const { return channelPatch(Channel::Texcoord0, index); }
+  // A channel on patch `index` at face parameters (u, v), from OpenSubdiv's
+  // face-varying patch (EvaluateBasisFaceVarying; Gregory derivatives exact,
+  // as for positions); zero without the channel.
+  LimitPoint evaluateChannel(Channel channel, int index, double u, double v) const;
+  // Texture coordinate set `set` (0 or 1); zero without it.
+  LimitTexcoord evaluateTexcoord(int index, double u, double v, int set = 0) const;
+  // The vertex colour, white (1, 1, 1) without one.
+  glm::dvec3 evaluateColor(int index, double u, double v) const;
   // The patch containing face point (u, v), found by Far::PatchMap; empty
   // over holes.
   std::optional<int> findPatch(int ptexFace, double u, double v) const;

@@ -27,7 +27,7 @@ struct PatchRecord {
   uint sourcePatch;    // OpenSubdiv patch index: the patch id in hits and AOVs
   uint coarseFace;     // the cage face the ptex face belongs to
   uint firstNormal;    // a mesh as authored with normals: 4 texels of authored normals, else FACET_NO_NORMALS
-  uint firstTexcoord;  // a cage with texture coordinates: its first texcoord texel, else FACET_NO_TEXCOORDS
+  uint firstTexcoord;  // a cage with face-varying channels: the first of their texels, else FACET_NO_TEXCOORDS
   float faceU0;
   float faceV0;
   float faceSize;  // a power of two: exact in float
@@ -37,13 +37,21 @@ const uint FACET_PATCH_RECORD_TEXELS = 2u;
 
 const uint FACET_NO_NORMALS = 0xFFFFFFFFu;
 
-// A patch's texture coordinates, FACET_TEXCOORD_TEXELS vec4 texels of the
-// texcoord texel buffer from firstTexcoord, two (u, v) points per texel:
-// the 16 Bézier points in patchPoints' order, then the alternates of slots
-// 5, 6, 10, 9, which repeat those slots on a polynomial patch, so that every
-// texcoord patch evaluates as a Gregory patch (compute/raycast/shading/texcoord.glsl).
+// A patch's face-varying channels, those its object's ObjectRange.channels
+// names, one after the other in the order of the bits below from
+// firstTexcoord in the texcoord texel buffer. Each is 20 points: the 16
+// Bézier points in patchPoints' order, then the alternates of slots 5, 6, 10,
+// 9, which repeat those slots on a polynomial patch, so that every channel
+// evaluates as a Gregory patch (compute/raycast/shading/texcoord.glsl). A set
+// of texture coordinates is FACET_TEXCOORD_TEXELS texels, two (u, v) points
+// per texel; the vertex colours, last, FACET_COLOR_TEXELS texels, one RGB
+// point per texel.
 const uint FACET_TEXCOORD_TEXELS = 10u;
+const uint FACET_COLOR_TEXELS = 20u;
 const uint FACET_NO_TEXCOORDS = 0xFFFFFFFFu;
+const uint FACET_CHANNEL_TEXCOORD0 = 1u;  // glTF TEXCOORD_0
+const uint FACET_CHANNEL_TEXCOORD1 = 2u;  // glTF TEXCOORD_1
+const uint FACET_CHANNEL_COLOR = 4u;      // glTF COLOR_0
 
 // What the ray caster needs of a patch, FACET_HEADER_TEXELS uvec4 texels of
 // the patch header texel buffer (the rest of PatchRecord is read once per

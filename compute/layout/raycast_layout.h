@@ -29,6 +29,7 @@ struct ObjectRange {
   uint firstCell;          // exact: FACET_CELL_TEXELS of bounds per cell
   uint firstGridVertex;    // tessellated: (k + 1)^2 limit points per patch
   uint firstEdgeMidpoint;  // tessellated: 4 k per patch (those of unsplit edges unused)
+  uint channels;           // its face-varying channels, FACET_CHANNEL_* bits (patch_records.h)
 };
 
 // A ray from `origin` along `direction`, over [tMin, tMax).
@@ -233,6 +234,7 @@ struct TextureSlotRecord {
   float sinRotation;
   float scaleX;
   float scaleY;
+  uint texCoord;  // the set of texture coordinates it reads, 0 or 1
 };
 
 // A material as BrdfParams wants it (rules/shading/brdf.h), the

@@ -193,16 +193,23 @@ class ReferenceScene final : public PathScene {
                                      const m::BrdfParams& params, const glm::dvec3& n, const glm::dvec3& ng,
                                      const glm::dvec3& direction, const glm::dvec3& emission) const {
     const scene::SubdivisionSurface& surface = geometry_.objects[std::size_t(hit.object)].surface;
-    const scene::LimitPoint p = surface.evaluatePatch(hit.surface.patch, hit.surface.u, hit.surface.v);
-    const scene::LimitTexcoord uv = surface.evaluateTexcoord(hit.surface.patch, hit.surface.u, hit.surface.v);
-    const m::TextureFootprint f{
-        uv.uv, uv.du, uv.dv, p.du, p.dv, hit.surface.t * coneSpread_, std::abs(glm::dot(ng, direction))};
-    auto value = [&](const materials::TextureSlot& slot) { return scene::sampleSlot(scene_.textures, slot, f); };
-    return m::textured_surface(params, n, f, t.baseColor, t.metallic, t.roughness, t.normalScale, t.occlusionStrength,
-                               emission, glm::dvec3(value(t.baseColorTexture)),
-                               glm::dvec3(value(t.metallicRoughnessTexture)), t.normalTexture.texture >= 0,
-                               glm::dvec3(value(t.normalTexture)), value(t.occlusionTexture).r,
-                               glm::dvec3(value(t.emissiveTexture)));
+    const auto& at = hit.surface;
+    const scene::LimitPoint p = surface.evaluatePatch(at.patch, at.u, at.v);
+    // A slot reads the set of texture coordinates it names.
+    const auto footprint = [&](const materials::TextureSlot& slot) {
+      const scene::LimitTexcoord uv = surface.evaluateTexcoord(at.patch, at.u, at.v, slot.texCoord);
+      return m::TextureFootprint{
+          uv.uv, uv.du, uv.dv, p.du, p.dv, at.t * coneSpread_, std::abs(glm::dot(ng, direction))};
+    };
+    auto value = [&](const materials::TextureSlot& slot) {
+      return scene::sampleSlot(scene_.textures, slot, footprint(slot));
+    };
+    // A vertex colour multiplies the base colour as its texture does (glTF COLOR_0).
+    const glm::dvec3 base = glm::dvec3(value(t.baseColorTexture)) * surface.evaluateColor(at.patch, at.u, at.v);
+    return m::textured_surface(
+        params, n, footprint(t.normalTexture), t.baseColor, t.metallic, t.roughness, t.normalScale, t.occlusionStrength,
+        emission, base, glm::dvec3(value(t.metallicRoughnessTexture)), t.normalTexture.texture >= 0,
+        glm::dvec3(value(t.normalTexture)), value(t.occlusionTexture).r, glm::dvec3(value(t.emissiveTexture)));
   }
 
   bool occluded(const glm::dvec3& position, const glm::dvec3& ng, const glm::dvec3& l, double distance,

@@ -62,6 +62,13 @@ constexpr RayPasses kBouncePasses{Pass::BounceIntersect,       Pass::BounceCompa
                                   Pass::BounceShadow,          Pass::BounceCompactShadowFallbacks,
                                   Pass::BounceShadowFallbacks, Pass::BounceGather};
 
+// Whether some material takes its glTF parameters per hit: it reads a
+// texture, or vertex colours multiply its base colour.
+bool perHitMaterials(const scene::Scene& scene) {
+  return std::any_of(scene.materials.begin(), scene.materials.end(),
+                     [](const materials::Material& m) { return m.textures.has_value(); });
+}
+
 }  // namespace
 
 Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::EnvironmentLighting* lighting,
@@ -74,7 +81,7 @@ Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::
                                           {"D_MODEL", sharedModel(scene, &materials::Material::distribution)},
                                           {"G_MODEL", sharedModel(scene, &materials::Material::geometry)},
                                           {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)},
-                                          {"TEXTURES", scene.textures.empty() ? 0.0 : 1.0},
+                                          {"TEXTURES", !scene.textures.empty() || perHitMaterials(scene) ? 1.0 : 0.0},
                                           {"EMISSION", double(emissionSlots(scene))},
                                           {"COMPENSATION", compensation.tables.empty() ? 0.0 : 1.0}};
   const bool transmission = transmits(scene);

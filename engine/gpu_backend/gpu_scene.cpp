@@ -11,6 +11,10 @@ namespace {
 
 namespace layout = gpu_layout;
 
+static_assert(layout::FACET_CHANNEL_TEXCOORD0 == 1u << int(scene::Channel::Texcoord0) &&
+              layout::FACET_CHANNEL_TEXCOORD1 == 1u << int(scene::Channel::Texcoord1) &&
+              layout::FACET_CHANNEL_COLOR == 1u << int(scene::Channel::Color));
+
 // A cell reference holds node * 4 + slot below FACET_BVH4_CELL.
 void checkNodeCount(std::uint64_t nodes) {
   if (nodes * 4 >= std::uint64_t(layout::FACET_BVH4_CELL))
@@ -25,14 +29,20 @@ std::uint32_t quadtreeLevels(std::uint32_t rate) {
   return levels;
 }
 
-// A texcoord patch as FACET_TEXCOORD_TEXELS texels (compute/layout/patch_records.h).
-void packTexcoords(const scene::BezierPatch& patch, std::vector<glm::vec4>& texels) {
+// A face-varying patch as texels (compute/layout/patch_records.h): a set of
+// texture coordinates as FACET_TEXCOORD_TEXELS, two (u, v) points each;
+// colours as FACET_COLOR_TEXELS, one RGB point each.
+void packChannel(const scene::BezierPatch& patch, scene::Channel channel, std::vector<glm::vec4>& texels) {
   static constexpr int kInteriorSlot[4] = {5, 6, 10, 9};
   std::array<glm::dvec3, 20> points;
   std::copy(patch.points.begin(), patch.points.end(), points.begin());
   for (int k = 0; k < 4; ++k)
     points[std::size_t(16 + k)] =
         patch.gregory ? patch.alternates[std::size_t(k)] : patch.points[std::size_t(kInteriorSlot[k])];
+  if (channel == scene::Channel::Color) {
+    for (const glm::dvec3& p : points) texels.push_back(glm::vec4(glm::vec3(p), 0.0f));
+    return;
+  }
   for (std::size_t k = 0; k < points.size(); k += 2)
     texels.push_back(glm::vec4(float(points[k].x), float(points[k].y), float(points[k + 1].x), float(points[k + 1].y)));
 }
@@ -86,6 +96,9 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
     range.firstCell = std::uint32_t(packed.cells);
     range.firstGridVertex = std::uint32_t(packed.gridVertices);
     range.firstEdgeMidpoint = std::uint32_t(packed.edgeMidpoints);
+    range.channels = 0;
+    for (int c = 0; c < scene::kChannelCount; ++c)
+      if (surface.hasChannel(scene::Channel(c))) range.channels |= 1u << c;
     packed.objects.push_back(range);
 
     for (std::size_t slot = 0; slot < bvh.leafPatches().size(); ++slot) {
@@ -104,11 +117,10 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
         record.firstNormal = std::uint32_t(packed.normals.size());
         for (const glm::dvec3& n : *normals) packed.normals.push_back(glm::vec4(glm::vec3(n), 0.0f));
       }
-      record.firstTexcoord = layout::FACET_NO_TEXCOORDS;
-      if (const scene::BezierPatch* texcoords = surface.texcoordPatch(source)) {
-        record.firstTexcoord = std::uint32_t(packed.texcoords.size());
-        packTexcoords(*texcoords, packed.texcoords);
-      }
+      record.firstTexcoord = range.channels ? std::uint32_t(packed.texcoords.size()) : layout::FACET_NO_TEXCOORDS;
+      for (int c = 0; c < scene::kChannelCount; ++c)
+        if (const scene::BezierPatch* values = surface.channelPatch(scene::Channel(c), source))
+          packChannel(*values, scene::Channel(c), packed.texcoords);
       const std::uint32_t firstPoint = std::uint32_t(packed.points.size());
       auto add = [&](const glm::dvec3& p) { packed.points.push_back(glm::vec4(glm::vec3(p - origin), 0.0f)); };
       for (const glm::dvec3& p : bezier.points) add(p);

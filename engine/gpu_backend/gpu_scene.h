@@ -33,7 +33,7 @@ struct GpuScene {
   std::vector<Texel> headers;  // FACET_HEADER_TEXELS per patch
   std::vector<glm::vec4> points;
   std::vector<glm::vec4> normals;    // authored, 4 per patch that has them
-  std::vector<glm::vec4> texcoords;  // FACET_TEXCOORD_TEXELS per patch of a cage that has them
+  std::vector<glm::vec4> texcoords;  // per patch, the face-varying channels of its cage (patch_records.h)
   std::vector<gpu_layout::ObjectRange> objects;
   std::uint64_t blocks = 0;         // 2 x 2 cell blocks, one dicing invocation each
   std::uint64_t gridVertices = 0;   // tessellated only

@@ -27,7 +27,8 @@ gpu_layout::TextureSlotRecord textureSlotRecord(const materials::TextureSlot& sl
           float(std::cos(slot.rotation)),
           float(std::sin(slot.rotation)),
           float(slot.scale.x),
-          float(slot.scale.y)};
+          float(slot.scale.y),
+          std::uint32_t(slot.texCoord)};
 }
 
 }  // namespace facet::gpu_backend

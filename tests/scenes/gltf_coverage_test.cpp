@@ -76,13 +76,12 @@ TEST_F(GltfCoverage, IgnoredCoreFeaturesAreWarnings) {
       {"animations", {{{"channels", nlohmann::json::array()}, {"samplers", nlohmann::json::array()}}}}};
   parts["meshes"] = {
       {{"primitives",
-        {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}, {"COLOR_0", 0}}}, {"indices", 2}, {"material", 0}}}}}};
+        {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}, {"COLOR_1", 0}}}, {"indices", 2}, {"material", 0}}}}}};
   const Scene mask = load("mask", {{"alphaMode", "MASK"}}, parts);
-  EXPECT_THAT(
-      mask.warnings,
-      ElementsAre(HasSubstr("mask.gltf: meshes[0].primitives[0].attributes.COLOR_0: vertex colours are not read"),
-                  HasSubstr("animations: animations are not read"),
-                  HasSubstr("materials[0].alphaMode: MASK is not read; the surface renders opaque")));
+  EXPECT_THAT(mask.warnings,
+              ElementsAre(HasSubstr("mask.gltf: meshes[0].primitives[0].attributes.COLOR_1: only COLOR_0 is read"),
+                          HasSubstr("animations: animations are not read"),
+                          HasSubstr("materials[0].alphaMode: MASK is not read; the surface renders opaque")));
   EXPECT_THAT(load("blend", {{"alphaMode", "BLEND"}}).warnings,
               ElementsAre(HasSubstr("materials[0].alphaMode: BLEND is not read")));
   // The quad is open: its back faces would show where glTF culls them.
@@ -139,31 +138,32 @@ TEST_F(GltfCoverage, SparseAccessorsSubstituteTheirValues) {
               ThrowsMessage<InputError>(HasSubstr("POSITION: accessors[0].sparse.indices: index ")));
 }
 
-TEST_F(GltfCoverage, AnOcclusionMapOnASecondCoordinateSetIsDroppedWithAWarning) {
+TEST_F(GltfCoverage, AnOcclusionMapOnAThirdCoordinateSetIsDroppedWithAWarning) {
   ASSERT_TRUE(facet::testing::writePng(dir_ / "grey.png", 4, 4,
                                        facet::testing::checkerTexels(4, 2, {90, 90, 90, 255}, {200, 200, 200, 255})));
   const nlohmann::json images = {{"images", {{{"uri", "grey.png"}}}}, {"textures", {{{"source", 0}}}}};
-  const Scene scene = load("occlusion", {{"occlusionTexture", {{"index", 0}, {"texCoord", 1}}}}, images);
+  const Scene scene = load("occlusion", {{"occlusionTexture", {{"index", 0}, {"texCoord", 2}}}}, images);
   EXPECT_FALSE(scene.materials.at(0).textures.has_value());  // the material reads no texture
-  EXPECT_THAT(scene.warnings, ElementsAre(HasSubstr("materials[0].occlusionTexture.texCoord: only TEXCOORD_0 is "
-                                                    "read, so this slot on TEXCOORD_1 is dropped: the environment")));
+  EXPECT_THAT(scene.warnings,
+              ElementsAre(HasSubstr("materials[0].occlusionTexture.texCoord: only TEXCOORD_0 and TEXCOORD_1 are "
+                                    "read, so this slot on TEXCOORD_2 is dropped: the environment")));
   // KHR_texture_transform's texCoord overrides the slot's; the base colour still reads TEXCOORD_0.
-  const nlohmann::json onSet1 = {{"KHR_texture_transform", {{"texCoord", 1}}}};
+  const nlohmann::json onSet2 = {{"KHR_texture_transform", {{"texCoord", 2}}}};
   const Scene both = load("both",
-                          {{"occlusionTexture", {{"index", 0}, {"extensions", onSet1}}},
+                          {{"occlusionTexture", {{"index", 0}, {"extensions", onSet2}}},
                            {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}},
                           images);
   ASSERT_TRUE(both.materials.at(0).textures.has_value());
   EXPECT_GE(both.materials[0].textures->baseColorTexture.texture, 0);
   EXPECT_EQ(both.materials[0].textures->occlusionTexture.texture, -1);
   EXPECT_EQ(both.warnings.size(), 1u);
-  // Any other slot on TEXCOORD_1 would render wrong: the file is refused.
+  // Any other slot on TEXCOORD_2 would render wrong: the file is refused.
   EXPECT_THAT(
       [&] {
-        load("base", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 1}}}}}}, images);
+        load("base", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 2}}}}}}, images);
       },
-      ThrowsMessage<InputError>(HasSubstr(
-          "materials[0].pbrMetallicRoughness.baseColorTexture.texCoord: only TEXCOORD_0 is read, not TEXCOORD_1")));
+      ThrowsMessage<InputError>(HasSubstr("materials[0].pbrMetallicRoughness.baseColorTexture.texCoord: only "
+                                          "TEXCOORD_0 and TEXCOORD_1 are read, not TEXCOORD_2")));
 }
 
 TEST_F(GltfCoverage, AClosedMeshOfAOneSidedMaterialIsNoWarning) {
@@ -174,11 +174,11 @@ TEST_F(GltfCoverage, AClosedMeshOfAOneSidedMaterialIsNoWarning) {
 TEST_F(GltfCoverage, RepeatedWarningsAreOneLine) {
   nlohmann::json parts;
   parts["meshes"] = {{{"primitives",
-                       {{{"attributes", {{"POSITION", 0}, {"COLOR_0", 0}}}, {"indices", 2}},
-                        {{"attributes", {{"POSITION", 0}, {"COLOR_0", 0}}}, {"indices", 2}},
-                        {{"attributes", {{"POSITION", 0}, {"COLOR_0", 0}}}, {"indices", 2}}}}}};
+                       {{{"attributes", {{"POSITION", 0}, {"COLOR_1", 0}}}, {"indices", 2}},
+                        {{"attributes", {{"POSITION", 0}, {"COLOR_1", 0}}}, {"indices", 2}},
+                        {{"attributes", {{"POSITION", 0}, {"COLOR_1", 0}}}, {"indices", 2}}}}}};
   EXPECT_THAT(load("colours", nlohmann::json::object(), parts).warnings,
-              ElementsAre(HasSubstr("meshes[0].primitives[0].attributes.COLOR_0 (and 2 more): vertex colours")));
+              ElementsAre(HasSubstr("meshes[0].primitives[0].attributes.COLOR_1 (and 2 more): only COLOR_0 is read")));
 }
 
 TEST_F(GltfCoverage, TinygltfWarningsArePassedOn) {

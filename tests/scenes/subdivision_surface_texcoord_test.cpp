@@ -1,7 +1,7 @@
 // Texture coordinates on the surface: OpenSubdiv's face-varying patches
 // under the face-varying rules, their Bézier form (what the GPU evaluates)
 // against OpenSubdiv's own evaluation, and the rules a cage's channel must
-// keep.
+// keep; a second set and vertex colours subdivide as the first set does.
 #include "scenes/input_error.h"
 #include "scenes/obj_cage.h"
 #include "scenes/subdivision_surface.h"
@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -82,8 +83,7 @@ TEST(SubdivisionTexcoords, UnderCornersOnlyIslandCornersKeepTheirValues) {
   // Top and bottom are islands: each of their corners is a face-varying corner.
   for (int face : {0, 1})
     for (int k = 0; k < 4; ++k)
-      EXPECT_LT(glm::distance(at(surface, face, kCornerU[k], kCornerV[k]).texcoord.uv, authored(cage, face, k)),
-                1e-12)
+      EXPECT_LT(glm::distance(at(surface, face, kCornerU[k], kCornerV[k]).texcoord.uv, authored(cage, face, k)), 1e-12)
           << "face " << face << " corner " << k;
   // Smooth rules move them: the island's corners are no longer its values.
   const SubdivisionSurface smooth = SubdivisionSurface::create(checkerCube(FV::Smooth));
@@ -171,8 +171,10 @@ TEST(SubdivisionTexcoords, TheBezierFormAndTheDerivativesAreOpenSubdivs) {
           }
         const double h = 1e-6 * d.size, u = d.u0 + 0.45 * d.size, v = d.v0 + 0.55 * d.size;
         const LimitTexcoord centre = surface.evaluateTexcoord(patch, u, v);
-        const glm::dvec2 du = (surface.evaluateTexcoord(patch, u + h, v).uv - surface.evaluateTexcoord(patch, u - h, v).uv) / (2 * h);
-        const glm::dvec2 dv = (surface.evaluateTexcoord(patch, u, v + h).uv - surface.evaluateTexcoord(patch, u, v - h).uv) / (2 * h);
+        const glm::dvec2 du =
+            (surface.evaluateTexcoord(patch, u + h, v).uv - surface.evaluateTexcoord(patch, u - h, v).uv) / (2 * h);
+        const glm::dvec2 dv =
+            (surface.evaluateTexcoord(patch, u, v + h).uv - surface.evaluateTexcoord(patch, u, v - h).uv) / (2 * h);
         const double scale = 1.0 + glm::length(centre.du) + glm::length(centre.dv);
         ASSERT_LT(glm::distance(du, centre.du), 1e-6 * scale) << "patch " << patch;
         ASSERT_LT(glm::distance(dv, centre.dv), 1e-6 * scale) << "patch " << patch;
@@ -212,6 +214,45 @@ TEST(SubdivisionTexcoords, AChannelThatBreaksItsRulesIsRejected) {
   ControlCage unused = good;
   unused.faceVertexTexcoords.clear();
   expectRejected(unused, "texture coordinates");
+}
+
+// Colours and a second set are channels of their own, subdivided by the
+// same rule: each equal to the first set's values evaluates as it does, and
+// each is held to the channel rules under its own name.
+TEST(SubdivisionChannels, EveryChannelSubdividesAsTheTextureCoordinates) {
+  for (FV rule : {FV::All, FV::Smooth}) {
+    ControlCage cage = checkerCube(rule);
+    cage.texcoords1 = cage.texcoords;
+    cage.faceVertexTexcoords1 = cage.faceVertexTexcoords;
+    for (const glm::dvec2& t : cage.texcoords) cage.colors.push_back(glm::dvec3(t, 0.25));
+    cage.faceVertexColors = cage.faceVertexTexcoords;
+    const SubdivisionSurface surface = SubdivisionSurface::create(cage);
+    ASSERT_TRUE(surface.hasChannel(Channel::Texcoord1));
+    ASSERT_TRUE(surface.hasChannel(Channel::Color));
+    double worst = 0.0;
+    for (int patch = 0; patch < surface.patchCount(); ++patch) {
+      const PatchDomain& d = surface.patch(patch).domain;
+      for (double s : {0.1, 0.5, 0.9}) {
+        const double u = d.u0 + s * d.size, v = d.v0 + (1.0 - s) * d.size;
+        const LimitTexcoord first = surface.evaluateTexcoord(patch, u, v);
+        const LimitTexcoord second = surface.evaluateTexcoord(patch, u, v, 1);
+        worst = std::max({worst, glm::distance(first.uv, second.uv), glm::distance(first.du, second.du),
+                          glm::distance(glm::dvec3(first.uv, 0.25), surface.evaluateColor(patch, u, v))});
+      }
+    }
+    EXPECT_LT(worst, 1e-12);
+  }
+  // Without colours the colour is white.
+  const SubdivisionSurface plain = SubdivisionSurface::create(checkerCube(FV::All));
+  EXPECT_FALSE(plain.hasChannel(Channel::Color));
+  EXPECT_EQ(plain.evaluateColor(0, 0.5, 0.5), glm::dvec3(1.0));
+  ControlCage shortColours = checkerCube(FV::All);
+  shortColours.colors.assign(3, glm::dvec3(0.5));
+  shortColours.faceVertexColors.assign(shortColours.faceVertexIndices.size() - 1, 0);
+  expectRejected(shortColours, "vertex colours");
+  ControlCage unusedSecond = checkerCube(FV::All);
+  unusedSecond.texcoords1 = unusedSecond.texcoords;
+  expectRejected(unusedSecond, "second texture coordinates");
 }
 
 }  // namespace

@@ -161,21 +161,36 @@ void write_shadowed(uint slot, vec3 radiance, vec3 position, vec3 ng, vec3 direc
       RayRecord(origin.x, origin.y, origin.z, frame.shadowOffset, direction.x, direction.y, direction.z, tMax), slot);
 }
 
-// A textured material at a hit on patch `record` of points `c`, seen along
-// `direction` from distance t, with shading normal n and geometric normal ng
-// facing the eye (the CPU reference's ReferenceScene::texturedSurface).
-TexturedSurface textured_hit(MaterialRecord m, PatchRecord record, ControlPoints c, HitRecord hit, BrdfParams params,
-                             vec3 n, vec3 ng, vec3 direction) {
+// A textured material at a hit on patch `record` of points `c`, of an
+// object with face-varying `channels`, seen along `direction` from distance
+// t, with shading normal n and geometric normal ng facing the eye (the CPU
+// reference's ReferenceScene::texturedSurface).
+TexturedSurface textured_hit(MaterialRecord m, PatchRecord record, uint channels, ControlPoints c, HitRecord hit,
+                             BrdfParams params, vec3 n, vec3 ng, vec3 direction) {
   PatchSample p = evaluate_patch(c, hit.s, hit.tParam);
-  SurfaceTexcoord uv = surface_texcoord(record.firstTexcoord, hit.s, hit.tParam);
-  TextureFootprint f = TextureFootprint(uv.uv, uv.ds, uv.dt, p.ds, p.dt,
-                                        hit.t * camera_cone_spread(frame.tanHalfFovY, frame.height),
-                                        abs(dot(ng, direction)));
-  return textured_surface(params, n, f, vec3(m.baseR, m.baseG, m.baseB), m.metallic, m.roughness, m.normalScale,
-                          m.occlusionStrength, vec3(m.emissionR, m.emissionG, m.emissionB),
-                          slot_value(m.baseColorTexture, f).rgb, slot_value(m.metallicRoughnessTexture, f).rgb,
-                          m.normalTexture.texture != FACET_NO_TEXTURE, slot_value(m.normalTexture, f).rgb,
-                          slot_value(m.occlusionTexture, f).r, slot_value(m.emissiveTexture, f).rgb);
+  float cone = hit.t * camera_cone_spread(frame.tanHalfFovY, frame.height);
+  SurfaceTexcoord uv = surface_texcoord(channel_texel(record.firstTexcoord, channels, FACET_CHANNEL_TEXCOORD0), hit.s,
+                                        hit.tParam);
+  TextureFootprint f = TextureFootprint(uv.uv, uv.ds, uv.dt, p.ds, p.dt, cone, abs(dot(ng, direction)));
+  TextureFootprint f1 = f;
+  if (m.baseColorTexture.texCoord == 1u || m.metallicRoughnessTexture.texCoord == 1u ||
+      m.normalTexture.texCoord == 1u || m.occlusionTexture.texCoord == 1u || m.emissiveTexture.texCoord == 1u) {
+    SurfaceTexcoord uv1 = surface_texcoord(channel_texel(record.firstTexcoord, channels, FACET_CHANNEL_TEXCOORD1),
+                                           hit.s, hit.tParam);
+    f1 = TextureFootprint(uv1.uv, uv1.ds, uv1.dt, p.ds, p.dt, cone, abs(dot(ng, direction)));
+  }
+  // A vertex colour multiplies the base colour as its texture does (glTF
+  // COLOR_0); a normal map's frame follows the coordinates it reads.
+  vec3 base = slot_value(m.baseColorTexture, m.baseColorTexture.texCoord == 1u ? f1 : f).rgb *
+              surface_color(channel_texel(record.firstTexcoord, channels, FACET_CHANNEL_COLOR), hit.s, hit.tParam);
+  TextureFootprint fn = m.normalTexture.texCoord == 1u ? f1 : f;
+  return textured_surface(
+      params, n, fn, vec3(m.baseR, m.baseG, m.baseB), m.metallic, m.roughness, m.normalScale, m.occlusionStrength,
+      vec3(m.emissionR, m.emissionG, m.emissionB), base,
+      slot_value(m.metallicRoughnessTexture, m.metallicRoughnessTexture.texCoord == 1u ? f1 : f).rgb,
+      m.normalTexture.texture != FACET_NO_TEXTURE, slot_value(m.normalTexture, fn).rgb,
+      slot_value(m.occlusionTexture, m.occlusionTexture.texCoord == 1u ? f1 : f).r,
+      slot_value(m.emissiveTexture, m.emissiveTexture.texCoord == 1u ? f1 : f).rgb);
 }
 
 // Sampled or filtered method, one sample of either technique: its share for
@@ -321,7 +336,9 @@ void main() {
     ng = -ng;
   }
   if (centre) {
-    vec2 texcoord = surface_texcoord(record.firstTexcoord, hit.s, hit.tParam).uv;
+    vec2 texcoord =
+        surface_texcoord(channel_texel(record.firstTexcoord, range.channels, FACET_CHANNEL_TEXCOORD0), hit.s, hit.tParam)
+            .uv;
     aovs[pixel] = PixelAovs(hit.t, position.x, position.y, position.z, ng.x, ng.y, ng.z, n.x, n.y, n.z,
                             range.patchIdOffset + record.sourcePatch, range.faceIdOffset + record.coarseFace,
                             record.faceU0 + hit.s * record.faceSize, record.faceV0 + hit.tParam * record.faceSize,
@@ -334,7 +351,7 @@ void main() {
   float occlusion = 1.0;
   vec3 emission = vec3(m.emissionR, m.emissionG, m.emissionB);
   if (TEXTURES == 1 && m.textured == 1u) {
-    TexturedSurface surface = textured_hit(m, record, c, hit, params, n, ng, direction);
+    TexturedSurface surface = textured_hit(m, record, range.channels, c, hit, params, n, ng, direction);
     params = surface.params;
     n = surface.n;
     occlusion = surface.occlusion;

@@ -1,8 +1,8 @@
-// Texture coordinates at a hit: the patch's face-varying patch
-// (compute/layout/patch_records.h, FACET_TEXCOORD_TEXELS) evaluated at
-// patch-local (s, t), with d(uv)/ds and d(uv)/dt in the same (s, t) as
-// evaluate_patch's dP/ds, dP/dt, so that tangents follow from the two.
-// The CPU reference's counterpart is SubdivisionSurface::evaluateTexcoord
+// A patch's face-varying channels at a hit (compute/layout/patch_records.h):
+// texture coordinates evaluated at patch-local (s, t), with d(uv)/ds and
+// d(uv)/dt in the same (s, t) as evaluate_patch's dP/ds, dP/dt, so that
+// tangents follow from the two; and the vertex colour. The CPU reference's
+// counterparts are SubdivisionSurface::evaluateTexcoord and evaluateColor
 // (scenes/subdivision_surface.h). Needs patch_eval.glsl.
 #ifndef FACET_RAYCAST_TEXCOORD_GLSL
 #define FACET_RAYCAST_TEXCOORD_GLSL
@@ -14,6 +14,14 @@ struct SurfaceTexcoord {
   vec2 ds;  // d(uv)/ds
   vec2 dt;  // d(uv)/dt
 };
+
+// The first texel of `channel` (a FACET_CHANNEL_* bit) of a patch whose
+// channels start at `first`, of an object with `channels`; FACET_NO_TEXCOORDS
+// without it. Only the colours, last, are longer than a set of coordinates.
+uint channel_texel(uint first, uint channels, uint channel) {
+  if ((channels & channel) == 0u) return FACET_NO_TEXCOORDS;
+  return first + FACET_TEXCOORD_TEXELS * uint(bitCount(channels & (channel - 1u)));
+}
 
 // Zero without texture coordinates (firstTexcoord == FACET_NO_TEXCOORDS).
 SurfaceTexcoord surface_texcoord(uint firstTexcoord, float s, float t) {
@@ -37,6 +45,21 @@ SurfaceTexcoord surface_texcoord(uint firstTexcoord, float s, float t) {
   result.ds = sample_.ds.xy;
   result.dt = sample_.dt.xy;
   return result;
+}
+
+// The vertex colour, white without one (firstColor == FACET_NO_TEXCOORDS).
+vec3 surface_color(uint firstColor, float s, float t) {
+  if (firstColor == FACET_NO_TEXCOORDS) return vec3(1.0);
+  ControlPoints c;
+  for (int k = 0; k < 16; ++k) {
+    vec3 p = texelFetch(patchTexcoords, int(firstColor) + k).xyz;
+    c.x[k % 4][k / 4] = p.x;
+    c.y[k % 4][k / 4] = p.y;
+    c.z[k % 4][k / 4] = p.z;
+  }
+  for (int k = 0; k < 4; ++k) c.alternates[k] = texelFetch(patchTexcoords, int(firstColor) + 16 + k).xyz;
+  c.gregory = true;
+  return evaluate_patch(c, s, t).position;
 }
 
 #endif

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/channels_gltf.h"
 #include "tests/support/translate_scene.h"
 #include "engine/gpu_backend/gpu_scene.h"
 #include "scenes/scene_file.h"
@@ -270,6 +271,49 @@ TEST(PackedTexcoords, AreTheFaceVaryingPatchesInGregoryForm) {
   EXPECT_LT(worst, 1e-6);
 }
 
+// Every channel of a glTF quad with both sets and colours, subdivided: the
+// channels follow one another per patch as channel_texel() finds them, and
+// read back as Gregory patches they are OpenSubdiv's.
+TEST(PackedTexcoords, EveryChannelFollowsTheLayoutOfTexcoordGlsl) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("facet_packed_channels_" + std::to_string(std::random_device{}()));
+  std::filesystem::create_directories(dir);
+  scene::Scene scene = scene::loadScene(facet::testing::writeChannelQuad(
+      dir, "quad", {{"POSITION", 0}, {"TEXCOORD_0", 1}, {"TEXCOORD_1", 2}, {"COLOR_0", 3}}, {}));
+  std::filesystem::remove_all(dir);
+  for (scene::Object& object : scene.objects) object.subdivision = scene::Subdivision::CatmullClark;
+  const scene::SceneGeometry geometry = scene::buildGeometry(scene);
+  const scene::SubdivisionSurface& surface = geometry.objects[0].surface;
+  const GpuScene packed = packScene(scene, geometry, scene.camera.eye, 0.0, false);
+  ASSERT_EQ(packed.objects[0].channels,
+            layout::FACET_CHANNEL_TEXCOORD0 | layout::FACET_CHANNEL_TEXCOORD1 | layout::FACET_CHANNEL_COLOR);
+  const std::uint32_t perPatch = 2 * layout::FACET_TEXCOORD_TEXELS + layout::FACET_COLOR_TEXELS;
+  ASSERT_EQ(packed.texcoords.size(), perPatch * packed.patches.size());
+  double worst = 0.0;
+  for (const layout::PatchRecord& record : packed.patches) {
+    scene::BezierPatch uv1, colour;
+    uv1.gregory = colour.gregory = true;
+    for (std::uint32_t k = 0; k < 20; ++k) {
+      const glm::vec4 pair = packed.texcoords[record.firstTexcoord + layout::FACET_TEXCOORD_TEXELS + k / 2];
+      const glm::dvec3 p = k % 2 ? glm::dvec3(pair.z, pair.w, 0.0) : glm::dvec3(pair.x, pair.y, 0.0);
+      const glm::dvec3 c(packed.texcoords[record.firstTexcoord + 2 * layout::FACET_TEXCOORD_TEXELS + k]);
+      (k < 16 ? uv1.points[k] : uv1.alternates[k - 16]) = p;
+      (k < 16 ? colour.points[k] : colour.alternates[k - 16]) = c;
+    }
+    for (double s : {0.0, 0.3, 0.8})
+      for (double t : {0.1, 0.5, 1.0}) {
+        const double u = record.faceU0 + s * record.faceSize, v = record.faceV0 + t * record.faceSize;
+        const int source = int(record.sourcePatch);
+        worst = std::max(
+            {worst,
+             glm::distance(glm::dvec2(scene::evaluateBezierPatch(uv1, s, t).position),
+                           surface.evaluateTexcoord(source, u, v, 1).uv),
+             glm::distance(scene::evaluateBezierPatch(colour, s, t).position, surface.evaluateColor(source, u, v))});
+      }
+  }
+  EXPECT_LT(worst, 1e-6);
+}
+
 TEST(PackedTexcoords, ACageWithoutThemHasNone) {
   const scene::Scene scene = cageScene("cube");
   const GpuScene packed = packScene(scene, scene::buildGeometry(scene), scene.camera.eye, 0.0, false);
@@ -304,6 +348,7 @@ TEST(GpuLayout, GlslLayoutOfTheSharedHeadersIsTheCppLayout) {
   FACET_EXPECT_MEMBER(ObjectRange, rate);
   FACET_EXPECT_MEMBER(ObjectRange, firstQuadtreeNode);
   FACET_EXPECT_MEMBER(ObjectRange, firstEdgeMidpoint);
+  FACET_EXPECT_MEMBER(ObjectRange, channels);
   FACET_EXPECT_MEMBER(ShadowRayRecord, slot);
   FACET_EXPECT_MEMBER(RenderCounters, shadowX);
   FACET_EXPECT_MEMBER(RenderCounters, cameraFallbacks);

@@ -25,7 +25,7 @@ void main() {
   counters.cameraFallbacks = f.ray + f.cell + uint(f.t) + f.patchIndex + uint(f.tParam) + frame.fallbackCapacity +
                              p.sourcePatch + p.coarseFace + p.firstNormal + p.firstTexcoord + uint(p.faceU0) +
                              uint(p.faceV0) + uint(p.faceSize) + p.ptexFace + o.firstPatch + frame.rootNode +
-                             o.rate + o.firstQuadtreeNode + o.firstEdgeMidpoint + uint(r.ray.tMax) + r.slot +
+                             o.rate + o.firstQuadtreeNode + o.firstEdgeMidpoint + o.channels + uint(r.ray.tMax) + r.slot +
                              hits[0].patchIndex + frame.patchCount + uint(frame.tolerance) + frame.dfgSize + frame.compensationSize +
                              pathStates[0].transmissionTaken + uint(frame.transmissionBounces) + FACET_BVH4_TEXELS;
   counters.shadowX = 0u;
