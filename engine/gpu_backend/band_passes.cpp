@@ -95,6 +95,10 @@ Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::
   if (std::any_of(scene.materials.begin(), scene.materials.end(),
                   [](const materials::Material& m) { return m.sheenColor != glm::dvec3(0.0); }))
     surface.push_back({"SHEEN", 1});
+  if (std::any_of(scene.objects.begin(), scene.objects.end(), [](const scene::Object& o) {
+        return !o.cage.faceVertexTexcoords1.empty() || !o.cage.faceVertexColors.empty();
+      }))
+    surface.push_back({"CHANNELS", 1});
   Kernels k{&pipelines.get("intersect", method), &pipelines.get("surface", surface),
             &pipelines.get("dispatch_args", {}), &pipelines.get("shadow", method),
             &pipelines.get("gather", {}),        &pipelines.get("resolve", {})};

@@ -40,6 +40,9 @@
 // clear coat; 0 keeps every material on the bare base's path.
 // SHEEN (docs/shading.md, "Sheen"): 1 when some material has a sheen; 0
 // keeps every material on the path without one.
+// CHANNELS (docs/rendering.md, "Texture coordinates and vertex colours"): 1
+// when some object has vertex colours or a second set of texture
+// coordinates; 0 evaluates neither.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -91,6 +94,7 @@ layout(constant_id = 13) const int LOBE_LIMITS = 0;
 layout(constant_id = 14) const int ANISOTROPY = 0;
 layout(constant_id = 15) const int CLEARCOAT = 0;
 layout(constant_id = 16) const int SHEEN = 0;
+layout(constant_id = 17) const int CHANNELS = 0;
 
 layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
 layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord materials[]; };
@@ -173,16 +177,18 @@ TexturedSurface textured_hit(MaterialRecord m, PatchRecord record, uint channels
                                         hit.tParam);
   TextureFootprint f = TextureFootprint(uv.uv, uv.ds, uv.dt, p.ds, p.dt, cone, abs(dot(ng, direction)));
   TextureFootprint f1 = f;
-  if (m.baseColorTexture.texCoord == 1u || m.metallicRoughnessTexture.texCoord == 1u ||
-      m.normalTexture.texCoord == 1u || m.occlusionTexture.texCoord == 1u || m.emissiveTexture.texCoord == 1u) {
+  if (CHANNELS == 1 && (m.baseColorTexture.texCoord == 1u || m.metallicRoughnessTexture.texCoord == 1u ||
+                        m.normalTexture.texCoord == 1u || m.occlusionTexture.texCoord == 1u ||
+                        m.emissiveTexture.texCoord == 1u)) {
     SurfaceTexcoord uv1 = surface_texcoord(channel_texel(record.firstTexcoord, channels, FACET_CHANNEL_TEXCOORD1),
                                            hit.s, hit.tParam);
     f1 = TextureFootprint(uv1.uv, uv1.ds, uv1.dt, p.ds, p.dt, cone, abs(dot(ng, direction)));
   }
   // A vertex colour multiplies the base colour as its texture does (glTF
   // COLOR_0); a normal map's frame follows the coordinates it reads.
-  vec3 base = slot_value(m.baseColorTexture, m.baseColorTexture.texCoord == 1u ? f1 : f).rgb *
-              surface_color(channel_texel(record.firstTexcoord, channels, FACET_CHANNEL_COLOR), hit.s, hit.tParam);
+  vec3 base = slot_value(m.baseColorTexture, m.baseColorTexture.texCoord == 1u ? f1 : f).rgb;
+  if (CHANNELS == 1)
+    base *= surface_color(channel_texel(record.firstTexcoord, channels, FACET_CHANNEL_COLOR), hit.s, hit.tParam);
   TextureFootprint fn = m.normalTexture.texCoord == 1u ? f1 : f;
   return textured_surface(
       params, n, fn, vec3(m.baseR, m.baseG, m.baseB), m.metallic, m.roughness, m.normalScale, m.occlusionStrength,
