@@ -276,7 +276,7 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
   for (const char* name : {"KHR_materials_ior", "KHR_materials_specular"})
     if (m.textures && !materials::isTransmissive(m) && extension(gltf, name))
       reader.warn(material + ".extensions." + name,
-                  "is not applied to a material that reads textures: its dielectric F(0) is 0.04");
+                  "is not applied to a material that reads textures or vertex colours: its dielectric F(0) is 0.04");
   return m;
 }
 
