@@ -8,10 +8,12 @@
 
 #include <cmath>
 #include <filesystem>
+#include <memory>
 #include <numbers>
 #include <random>
 #include <string>
 
+#include "scenes/environment_map.h"
 #include "scenes/scene_file.h"
 #include "tests/support/path_parity.h"
 #include "tests/support/textured_gltf.h"
@@ -44,6 +46,10 @@ class GltfMaterialParity : public testing::GpuRenderTest {
     return scene;
   }
 
+  // Every covered pixel of both backends' images shows one of `colours`
+  // exactly, each on a quarter of them at least, and the two agree.
+  void expectUnlitColours(const testing::PathRenders& r, const glm::dvec3 (&colours)[2]);
+
   std::filesystem::path dir_;
 };
 
@@ -69,11 +75,23 @@ TEST_F(GltfMaterialParity, UnlitShowsItsBaseColourWhateverLightsIt) {
                                 {"extensionsUsed", {"KHR_materials_unlit"}}};
   scene::Scene scene = quad("unlit", material, parts, false);
   EXPECT_TRUE(scene.warnings.empty());
-  // A key light and a white sky: neither may change what the surface shows.
+  // A key light and a white sky: neither may change what the surface
+  // shows, lit directly or by paths that reach it and leave it.
   scene.lights = {scene::Light{scene::LightType::Point, glm::dvec3(3.0), {0.5, 0.5, 2.0}}};
-  const testing::PathRenders r = testing::renderBoth(device_, scene);
+  scene.environment.emplace();
+  scene.environment->map = std::make_shared<const scene::EnvironmentMap>(scene::constantEnvironment(glm::dvec3(1.0)));
+  scene.environment->samples = 4;
   const glm::dvec3 colours[] = {factor * glm::dvec3(linear(warm.r), linear(warm.g), linear(warm.b)),
                                 factor * glm::dvec3(linear(cool.r), linear(cool.g), linear(cool.b))};
+  for (int bounces : {0, 2}) {
+    scene.render.bounces = bounces;
+    scene.environment->method = scene::IblMethod::Sampled;
+    scene.environment->occlusion = bounces > 0;
+    expectUnlitColours(testing::renderBoth(device_, scene), colours);
+  }
+}
+
+void GltfMaterialParity::expectUnlitColours(const testing::PathRenders& r, const glm::dvec3 (&colours)[2]) {
   for (const Image* image : {&r.reference, &r.gpu.image}) {
     std::size_t covered = 0, shown[2] = {0, 0};
     for (std::size_t p = 0; p < image->beauty.size(); ++p) {
