@@ -36,6 +36,8 @@ materials::Material toEngineMaterial(const v0::Material& material, const std::st
   spec.clearcoatRoughness = material.clearcoatRoughness;
   spec.sheenColor = engineVector(material.sheenColor);
   spec.sheenRoughness = material.sheenRoughness;
+  spec.baseColor = engineVector(material.baseColor);
+  spec.metallic = material.metallic;
   return materials::buildMaterial(spec, [&](std::string_view field) { return where + "." + std::string(field); });
 }
 

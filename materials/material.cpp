@@ -1,15 +1,14 @@
 #include "materials/material.h"
 
-#include <nlohmann/json.hpp>
+#include <glm/common.hpp>
 
 #include <cmath>
-#include <fstream>
+#include <utility>
 #include <sstream>
 #include <stdexcept>
 
 #include "materials/models.h"
 #include "materials/presets.h"
-#include "materials/strict_json.h"
 
 namespace facet::materials {
 
@@ -168,6 +167,39 @@ void checkSheen(const MaterialSpec& spec, Material& m, const Fail& fail) {
     fail("sheen_color", "is not defined for a transmissive material (transmission > 0)");
 }
 
+// glTF's metallic-roughness parameters (docs/shading.md, "Materials"):
+// base_color and metallic give c_diff = base (1 - metallic) and Schlick's
+// F(0) = mix(0.04, base, metallic), as glTF's textured rule does per hit
+// (rules/shading/textured_material.h). They take the place of diffuse, f0,
+// a preset and the other Fresnel terms, so none of those may be given too.
+template <class Fail>
+MaterialSpec withMetallicRoughness(MaterialSpec spec, const Fail& fail) {
+  if (!spec.baseColor && !spec.metallic) return spec;
+  if (!spec.baseColor || !spec.metallic)
+    fail(spec.baseColor ? "metallic" : "base_color",
+         "base_color and metallic are given together (glTF's default metallic of 1 would make any colour a metal)");
+  const std::pair<const char*, bool> others[] = {{"preset", spec.preset.has_value()},
+                                                 {"diffuse", spec.diffuse.has_value()},
+                                                 {"f0", spec.f0.has_value()},
+                                                 {"ior", spec.ior.has_value()},
+                                                 {"eta", spec.eta.has_value()},
+                                                 {"k", spec.k.has_value()},
+                                                 {"transmission", spec.transmission.value_or(0.0) > 0.0}};
+  for (auto [field, given] : others)
+    if (given) fail(field, "is not combined with base_color and metallic, which give c_diff and F(0)");
+  if (spec.fresnel && *spec.fresnel != "schlick")
+    fail("fresnel", "must be 'schlick' with base_color and metallic (glTF's Fresnel), got '" + *spec.fresnel + "'");
+  for (int i = 0; i < 3; ++i)
+    if (!((*spec.baseColor)[i] >= 0.0 && (*spec.baseColor)[i] <= 1.0))
+      fail("base_color", "each channel must be in [0, 1], got " + formatNumber((*spec.baseColor)[i]));
+  if (!(*spec.metallic >= 0.0 && *spec.metallic <= 1.0))
+    fail("metallic", "must be in [0, 1], got " + formatNumber(*spec.metallic));
+  spec.diffuse = *spec.baseColor * (1.0 - *spec.metallic);
+  spec.f0 = glm::mix(glm::dvec3(0.04), *spec.baseColor, *spec.metallic);
+  spec.fresnel = "schlick";
+  return spec;
+}
+
 }  // namespace
 
 rules::f64::TransmissionParams transmissionParams64(const Material& material) {
@@ -188,9 +220,10 @@ rules::f32::BrdfParams toParams32(const Material& material) {
   return toParams<rules::f32::BrdfParams, glm::vec3>(material);
 }
 
-Material buildMaterial(const MaterialSpec& spec,
+Material buildMaterial(const MaterialSpec& given,
                        const std::function<std::string(std::string_view field)>& describeField) {
   auto fail = [&](std::string_view field, const std::string& rule) { throwFieldError(describeField(field), rule); };
+  const MaterialSpec spec = withMetallicRoughness(given, fail);
   auto checkRange = [&](std::string_view field, double value, double lo, double hi) {
     if (!(value >= lo && value <= hi))  // also rejects NaN
       fail(field, "must be in [" + formatNumber(lo) + ", " + formatNumber(hi) + "], got " + formatNumber(value));
@@ -304,144 +337,6 @@ Material buildMaterial(const MaterialSpec& spec,
   checkClearcoat(spec, m, fail);
   checkSheen(spec, m, fail);
   return m;
-}
-
-MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view source) {
-  auto fail = [&](std::string_view field, const std::string& rule) {
-    throwFieldError(std::string(source) + ": field '" + std::string(field) + "'", rule);
-  };
-  if (!json.is_object()) throw std::invalid_argument(std::string(source) + ": a material must be a JSON object");
-  auto text = [&](const std::string& key) -> std::optional<std::string> {
-    if (!json.contains(key)) return std::nullopt;
-    if (!json[key].is_string()) fail(key, "expected a string");
-    return json[key].get<std::string>();
-  };
-  auto number = [&](const std::string& key) -> std::optional<double> {
-    if (!json.contains(key)) return std::nullopt;
-    if (!json[key].is_number()) fail(key, "expected a number");
-    return json[key].get<double>();
-  };
-  auto color = [&](const std::string& key) -> std::optional<glm::dvec3> {
-    if (!json.contains(key)) return std::nullopt;
-    const nlohmann::json& value = json[key];
-    if (value.is_number()) return glm::dvec3(value.get<double>());
-    if (!value.is_array() || value.size() != 3 || !value[0].is_number() || !value[1].is_number() ||
-        !value[2].is_number())
-      fail(key, "expected a number or an array of 3 numbers (r, g, b)");
-    return glm::dvec3(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
-  };
-
-  static const char* const kKeys[] = {"name",
-                                      "preset",
-                                      "distribution",
-                                      "geometry",
-                                      "fresnel",
-                                      "alpha",
-                                      "roughness",
-                                      "f0",
-                                      "ior",
-                                      "eta",
-                                      "k",
-                                      "diffuse",
-                                      "energy_compensation",
-                                      "transmission",
-                                      "thin_walled",
-                                      "attenuation_color",
-                                      "attenuation_distance",
-                                      "thickness",
-                                      "anisotropy",
-                                      "anisotropy_rotation",
-                                      "clearcoat",
-                                      "clearcoat_roughness",
-                                      "sheen_color",
-                                      "sheen_roughness"};
-  if (const std::optional<std::string> key = findUnknownKey(json, kKeys)) fail(*key, unknownFieldRule(kKeys));
-
-  MaterialSpec spec;
-  spec.name = text("name").value_or("");
-  spec.preset = text("preset");
-  spec.distribution = text("distribution");
-  spec.geometry = text("geometry");
-  spec.fresnel = text("fresnel");
-  spec.alpha = number("alpha");
-  spec.roughness = number("roughness");
-  spec.f0 = color("f0");
-  spec.ior = color("ior");
-  spec.eta = color("eta");
-  spec.k = color("k");
-  spec.diffuse = color("diffuse");
-  if (json.contains("energy_compensation")) {
-    if (!json["energy_compensation"].is_boolean()) fail("energy_compensation", "expected true or false");
-    spec.energyCompensation = json["energy_compensation"].get<bool>();
-  }
-  spec.transmission = number("transmission");
-  if (json.contains("thin_walled")) {
-    if (!json["thin_walled"].is_boolean()) fail("thin_walled", "expected true or false");
-    spec.thinWalled = json["thin_walled"].get<bool>();
-  }
-  spec.attenuationColor = color("attenuation_color");
-  spec.attenuationDistance = number("attenuation_distance");
-  spec.thickness = number("thickness");
-  spec.anisotropy = number("anisotropy");
-  spec.anisotropyRotation = number("anisotropy_rotation");
-  spec.clearcoat = number("clearcoat");
-  spec.clearcoatRoughness = number("clearcoat_roughness");
-  spec.sheenColor = color("sheen_color");
-  spec.sheenRoughness = number("sheen_roughness");
-  return spec;
-}
-
-Material loadMaterial(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument(path.string() + ": cannot open material file");
-  nlohmann::json json;
-  try {
-    json = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {  // syntax errors, and numbers beyond double's range
-    throw std::invalid_argument(path.string() + ": not valid JSON: " + e.what());
-  }
-  const std::string source = path.string();
-  return buildMaterial(materialSpecFromJson(json, source),
-                       [&](std::string_view field) { return source + ": field '" + std::string(field) + "'"; });
-}
-
-nlohmann::json toJson(const Material& m) {
-  auto array = [](glm::dvec3 v) { return nlohmann::json::array({v.x, v.y, v.z}); };
-  nlohmann::json json = {
-      {"distribution", modelName(kDistributions, m.distribution)},
-      {"geometry", modelName(kGeometryTerms, m.geometry)},
-      {"fresnel", modelName(kFresnelTerms, m.fresnel)},
-      {"alpha", m.alpha},
-      {"diffuse", array(m.diffuse)},
-  };
-  if (!m.name.empty()) json["name"] = m.name;
-  if (m.energyCompensation) json["energy_compensation"] = true;
-  if (m.anisotropy > 0.0) json["anisotropy"] = m.anisotropy, json["anisotropy_rotation"] = m.anisotropyRotation;
-  if (m.clearcoat > 0.0) json["clearcoat"] = m.clearcoat, json["clearcoat_roughness"] = m.clearcoatRoughness;
-  if (m.sheenColor != glm::dvec3(0.0))
-    json["sheen_color"] = array(m.sheenColor), json["sheen_roughness"] = m.sheenRoughness;
-  if (isTransmissive(m)) {
-    json["transmission"] = m.transmission;
-    if (m.thinWalled) json["thin_walled"] = true, json["thickness"] = m.thickness;
-    if (std::isfinite(m.attenuationDistance)) {
-      json["attenuation_color"] = array(m.attenuationColor);
-      json["attenuation_distance"] = m.attenuationDistance;
-    }
-  }
-  switch (m.fresnel) {
-    case rules::f64::F_SCHLICK:
-    case rules::f64::F_BLENDER_METALLIC:
-      json["f0"] = array(m.f0);
-      break;
-    case rules::f64::F_DIELECTRIC:
-      json["ior"] = array(m.eta);
-      break;
-    case rules::f64::F_CONDUCTOR:
-      json["eta"] = array(m.eta);
-      json["k"] = array(m.k);
-      break;
-  }
-  return json;
 }
 
 }  // namespace facet::materials

@@ -108,6 +108,9 @@ struct MaterialSpec {
   std::optional<glm::dvec3> eta;
   std::optional<glm::dvec3> k;
   std::optional<glm::dvec3> diffuse;
+  // glTF's metallic-roughness parameters, in place of diffuse, f0 and a preset.
+  std::optional<glm::dvec3> baseColor;
+  std::optional<double> metallic;
   std::optional<bool> energyCompensation;
   std::optional<double> transmission;
   std::optional<bool> thinWalled;

@@ -39,6 +39,8 @@ class Material:
     clearcoat_roughness: Optional[float]
     sheen_color: Optional[Vec3]
     sheen_roughness: Optional[float]
+    base_color: Optional[Vec3]
+    metallic: Optional[float]
     def __init__(self, *, name: str = "", preset: Optional[str] = None, distribution: Optional[str] = None,
                  geometry: Optional[str] = None, fresnel: Optional[str] = None, alpha: Optional[float] = None,
                  roughness: Optional[float] = None, f0: Optional[Vec3] = None, ior: Optional[Vec3] = None,
@@ -48,7 +50,8 @@ class Material:
                  attenuation_color: Optional[Vec3] = None, attenuation_distance: Optional[float] = None,
                  anisotropy: Optional[float] = None, anisotropy_rotation: Optional[float] = None,
                  clearcoat: Optional[float] = None, clearcoat_roughness: Optional[float] = None,
-                 sheen_color: Optional[Vec3] = None, sheen_roughness: Optional[float] = None) -> None: ...
+                 sheen_color: Optional[Vec3] = None, sheen_roughness: Optional[float] = None,
+                 base_color: Optional[Vec3] = None, metallic: Optional[float] = None) -> None: ...
 
 class Cage:
     positions: numpy.ndarray  # read-only, (n, 3)

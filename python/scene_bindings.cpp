@@ -81,7 +81,7 @@ void bindScenes(py::module_& m) {
                        bool energyCompensation, OptReal transmission, std::optional<bool> thinWalled, OptReal thickness,
                        OptVec attenuationColor, OptReal attenuationDistance, OptReal anisotropy,
                        OptReal anisotropyRotation, OptReal clearcoat, OptReal clearcoatRoughness, OptVec sheenColor,
-                       OptReal sheenRoughness) {
+                       OptReal sheenRoughness, OptVec baseColor, OptReal metallic) {
              facet::Material material{
                  name, preset, d, g, f, alpha, roughness, f0, ior, eta, k, diffuse, energyCompensation};
              material.transmission = transmission;
@@ -95,6 +95,8 @@ void bindScenes(py::module_& m) {
              material.clearcoatRoughness = clearcoatRoughness;
              material.sheenColor = sheenColor;
              material.sheenRoughness = sheenRoughness;
+             material.baseColor = baseColor;
+             material.metallic = metallic;
              return material;
            }),
            py::kw_only(), py::arg("name") = "", py::arg("preset") = py::none(), py::arg("distribution") = py::none(),
@@ -106,7 +108,8 @@ void bindScenes(py::module_& m) {
            py::arg("attenuation_color") = py::none(), py::arg("attenuation_distance") = py::none(),
            py::arg("anisotropy") = py::none(), py::arg("anisotropy_rotation") = py::none(),
            py::arg("clearcoat") = py::none(), py::arg("clearcoat_roughness") = py::none(),
-           py::arg("sheen_color") = py::none(), py::arg("sheen_roughness") = py::none())
+           py::arg("sheen_color") = py::none(), py::arg("sheen_roughness") = py::none(),
+           py::arg("base_color") = py::none(), py::arg("metallic") = py::none())
       .def_readwrite("name", &facet::Material::name)
       .def_readwrite("preset", &facet::Material::preset)
       .def_readwrite("distribution", &facet::Material::distribution)
@@ -130,7 +133,9 @@ void bindScenes(py::module_& m) {
       .def_readwrite("clearcoat", &facet::Material::clearcoat)
       .def_readwrite("clearcoat_roughness", &facet::Material::clearcoatRoughness)
       .def_readwrite("sheen_color", &facet::Material::sheenColor)
-      .def_readwrite("sheen_roughness", &facet::Material::sheenRoughness);
+      .def_readwrite("sheen_roughness", &facet::Material::sheenRoughness)
+      .def_readwrite("base_color", &facet::Material::baseColor)
+      .def_readwrite("metallic", &facet::Material::metallic);
 
   py::class_<facet::Cage>(m, "Cage", "A Catmull-Clark control cage in world space, 0-based indices")
       .def(py::init([](const Doubles& positions, const py::object& counts, const py::object& indices,

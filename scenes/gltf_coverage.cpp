@@ -13,9 +13,9 @@ namespace {
 
 // The extensions facet implements; the one list the loader and its messages read.
 constexpr std::string_view kImplemented[] = {
-    "KHR_lights_punctual",        "KHR_materials_clearcoat", "KHR_materials_emissive_strength",
-    "KHR_materials_ior",          "KHR_materials_sheen",     "KHR_materials_specular",
-    "KHR_materials_transmission", "KHR_materials_volume",    "KHR_texture_transform",
+    "KHR_lights_punctual", "KHR_materials_anisotropy", "KHR_materials_clearcoat", "KHR_materials_emissive_strength",
+    "KHR_materials_ior",   "KHR_materials_sheen",      "KHR_materials_specular",  "KHR_materials_transmission",
+    "KHR_materials_unlit", "KHR_materials_volume",     "KHR_texture_transform",
 };
 
 // What facet renders in place of an extension it ignores.
@@ -23,12 +23,10 @@ struct Fallback {
   std::string_view extension, instead;
 };
 constexpr Fallback kFallbacks[] = {
-    {"KHR_materials_anisotropy", "isotropic, at the base roughness"},
     {"KHR_materials_diffuse_transmission", "the base, opaque"},
     {"KHR_materials_dispersion", "one index of refraction for every wavelength"},
     {"KHR_materials_iridescence", "the base without its thin film"},
     {"KHR_materials_pbrSpecularGlossiness", "the material's metallic-roughness parameters"},
-    {"KHR_materials_unlit", "lit, as the metallic-roughness material it also gives"},
     {"KHR_materials_variants", "each primitive's default material"},
     {"KHR_texture_basisu", "each texture's core image (an error where it has none)"},
     {"EXT_texture_webp", "each texture's core image (an error where it has none)"},
@@ -113,7 +111,9 @@ void warnOfIgnoredFeatures(const tinygltf::Model& model, const GltfReader& reade
         if (name.rfind("COLOR_", 0) == 0 && name != "COLOR_0")
           reader.warn(where, "only COLOR_0 is read; this set of vertex colours is not");
         else if (name == "TANGENT")
-          reader.warn(where, "tangents are not read; a normal map's tangent is dP/du of the texture coordinates");
+          reader.warn(where,
+                      "tangents are not read; a normal map's and an anisotropic lobe's tangent is dP/du of the "
+                      "texture coordinates");
         else if (name.rfind("JOINTS_", 0) == 0 || name.rfind("WEIGHTS_", 0) == 0)
           reader.warn(where, "skinning is not read; meshes render in their bind pose");
       }

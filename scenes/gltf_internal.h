@@ -108,6 +108,16 @@ double member(const tinygltf::Value& value, const char* key, double fallback, co
 // Extension `name` of a material; null when it has none.
 const tinygltf::Value* extension(const tinygltf::Material& gltf, const char* name);
 
+// gltf_lobes.cpp: KHR_materials_clearcoat, KHR_materials_sheen and
+// KHR_materials_anisotropy of `gltf` (field `material`) into `m`, whose
+// transmission is already set.
+void applyClearcoat(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
+                    materials::Material& m);
+void applySheen(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
+                materials::Material& m);
+void applyAnisotropy(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
+                     materials::Material& m);
+
 // gltf_transmission.cpp: KHR_materials_ior, KHR_materials_specular,
 // KHR_materials_transmission and KHR_materials_volume of `gltf` (field
 // `material`) into `m`, whose base colour factor and metallic factor are

@@ -145,64 +145,26 @@ Texture TextureTable::convert(int index, TextureEncoding encoding) const {
 
 namespace {
 
-// KHR_materials_clearcoat's factors into `m` (docs/gltf.md, "Clear coat");
-// its textures are not read, each with a warning saying what facet renders.
-void applyClearcoat(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
-                    materials::Material& m) {
-  const tinygltf::Value* c = extension(gltf, "KHR_materials_clearcoat");
-  if (!c) return;
-  const std::string at = material + ".extensions.KHR_materials_clearcoat";
-  const double strength = member(*c, "clearcoatFactor", 0.0, at, reader);
-  const double roughness = member(*c, "clearcoatRoughnessFactor", 0.0, at, reader);
-  for (auto [field, value] :
-       {std::pair{".clearcoatFactor", strength}, std::pair{".clearcoatRoughnessFactor", roughness}})
-    if (const std::optional<std::string> rule = rangeRule(value, 0.0, 1.0)) reader.fail(at + field, *rule);
-  const std::pair<const char*, const char*> kTextures[] = {
-      {"clearcoatTexture", "is not read; the coat has clearcoatFactor everywhere"},
-      {"clearcoatRoughnessTexture", "is not read; the coat has clearcoatRoughnessFactor everywhere"},
-      {"clearcoatNormalTexture", "is not read; the coat follows the surface's normal, without a normal map"}};
-  for (auto [texture, instead] : kTextures)
-    if (c->Has(texture)) reader.warn(at + "." + texture, instead);
-  if (strength > 0.0 && materials::isTransmissive(m)) {
-    reader.warn(at, "is not applied to a transmissive material: facet renders it without its coat");
-    return;
+// KHR_materials_unlit: the surface shows its base colour (factor times
+// texture) whatever lights it, as an emitter of that colour that reflects
+// nothing: no diffuse and no interface (a dielectric of index 1, whose
+// Fresnel is 0 at every angle, F90 included). The specification's other
+// lighting properties are its fallbacks for viewers without the extension.
+materials::Material unlitMaterial(const std::string& name, const glm::dvec3& base,
+                                  const materials::TextureSlot& baseColorTexture) {
+  materials::Material m = defaultMaterial();
+  m.name = name;
+  m.fresnel = rules::f64::F_DIELECTRIC;
+  m.eta = glm::dvec3(1.0);
+  m.diffuse = glm::dvec3(0.0);
+  m.emission = base;
+  if (baseColorTexture.texture >= 0) {
+    materials::MaterialTextures t;
+    t.baseColor = glm::dvec3(0.0);  // per hit: no diffuse, and F(0) is unread under the index-1 Fresnel
+    t.emissiveTexture = baseColorTexture;
+    m.textures = t;
   }
-  m.clearcoat = strength;
-  m.clearcoatRoughness = roughness;
-}
-
-// KHR_materials_sheen's factors into `m` (docs/gltf.md, "Sheen"); its
-// textures are not read, each with a warning saying what facet renders.
-void applySheen(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
-                materials::Material& m) {
-  const tinygltf::Value* s = extension(gltf, "KHR_materials_sheen");
-  if (!s) return;
-  const std::string at = material + ".extensions.KHR_materials_sheen";
-  glm::dvec3 color(0.0);
-  if (s->Has("sheenColorFactor")) {
-    const tinygltf::Value& c = s->Get("sheenColorFactor");
-    if (!c.IsArray() || c.ArrayLen() != 3) reader.fail(at + ".sheenColorFactor", "must be an array of 3 numbers");
-    for (int i = 0; i < 3; ++i) {
-      const tinygltf::Value& x = c.Get(i);
-      color[i] = x.IsNumber() ? x.GetNumberAsDouble() : -1.0;
-      if (!(color[i] >= 0.0 && color[i] <= 1.0))
-        reader.fail(at + ".sheenColorFactor", "every component must be a number in [0, 1]");
-    }
-  }
-  const double roughness = member(*s, "sheenRoughnessFactor", 0.0, at, reader);
-  if (const std::optional<std::string> rule = rangeRule(roughness, 0.0, 1.0))
-    reader.fail(at + ".sheenRoughnessFactor", *rule);
-  const std::pair<const char*, const char*> kTextures[] = {
-      {"sheenColorTexture", "is not read; the sheen has sheenColorFactor everywhere"},
-      {"sheenRoughnessTexture", "is not read; the sheen has sheenRoughnessFactor everywhere"}};
-  for (auto [texture, instead] : kTextures)
-    if (s->Has(texture)) reader.warn(at + "." + texture, instead);
-  if (color != glm::dvec3(0.0) && materials::isTransmissive(m)) {
-    reader.warn(at, "is not applied to a transmissive material: facet renders it without its sheen");
-    return;
-  }
-  m.sheenColor = color;
-  m.sheenRoughness = roughness;
+  return m;
 }
 
 }  // namespace
@@ -222,14 +184,22 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
     if (const std::optional<std::string> rule = rangeRule(value, 0.0, 1.0)) reader.fail(where + field, *rule);
   const double metallic = pbr.metallicFactor;
   const double roughness = pbr.roughnessFactor;
+  const std::string name = gltf.name.empty() ? "material " + std::to_string(index) : gltf.name;
+  if (extension(gltf, "KHR_materials_unlit")) {
+    const auto& b = pbr.baseColorTexture;
+    return unlitMaterial(
+        name, base,
+        textures.slot(b.extensions, b.index, b.texCoord, TextureEncoding::Srgb, where + ".baseColorTexture"));
+  }
   materials::Material m = defaultMaterial();
-  m.name = gltf.name.empty() ? "material " + std::to_string(index) : gltf.name;
+  m.name = name;
   m.diffuse = base * (1.0 - metallic);
   m.f0 = glm::mix(glm::dvec3(0.04), base, metallic);
   m.alpha = roughness * roughness;
   applyTransmission(gltf, material, reader, base, metallic, m);
   applyClearcoat(gltf, material, reader, m);
   applySheen(gltf, material, reader, m);
+  applyAnisotropy(gltf, material, reader, m);
   for (double c : gltf.emissiveFactor)
     if (!(c >= 0.0 && c <= 1.0))
       reader.fail(material + ".emissiveFactor", "every component must be in [0, 1], is " + formatNumber(c));

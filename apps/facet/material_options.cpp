@@ -38,6 +38,7 @@ std::string flagFor(std::string_view field) {
   if (field == "clearcoat_roughness") return "--clearcoat-roughness";
   if (field == "sheen_color") return "--sheen-color";
   if (field == "sheen_roughness") return "--sheen-roughness";
+  if (field == "base_color") return "--base-color";
   return "--" + std::string(field);
 }
 
@@ -73,6 +74,9 @@ void addMaterialOptions(CLI::App& command, MaterialOptions& o) {
   command.add_option("--alpha", o.alpha, "microfacet alpha in [0, 1] (alpha = roughness^2)");
   command.add_option("--roughness", o.roughness, "perceptual roughness in [0, 1], instead of --alpha");
   command.add_option("--diffuse", o.diffuse, "Lambert c_diff: x or r,g,b (default 0)");
+  command.add_option("--base-color", o.baseColor,
+                     "glTF's base colour, linear r,g,b or x in [0, 1], with --metallic: instead of --diffuse and --f0");
+  command.add_option("--metallic", o.metallic, "glTF's metallic in [0, 1], with --base-color");
   command.add_option("--anisotropy", o.anisotropy,
                      "anisotropy strength in [0, 1]: alpha along the tangent (the x axis) = mix(alpha, 1, s^2)");
   command.add_option("--anisotropy-rotation", o.anisotropyRotation,
@@ -97,8 +101,9 @@ CLI::App* addMaterialCommand(CLI::App& parent, const std::string& name, const st
 
 materials::Material resolveMaterial(const MaterialOptions& o) {
   if (o.material_file) {
-    if (o.d || o.g || o.f || o.f0 || o.ior || o.eta || o.k || o.alpha || o.roughness || o.diffuse || o.preset ||
-        o.anisotropy || o.anisotropyRotation || o.clearcoat || o.clearcoatRoughness || o.sheenColor || o.sheenRoughness)
+    if (o.d || o.g || o.f || o.f0 || o.ior || o.eta || o.k || o.alpha || o.roughness || o.diffuse || o.baseColor ||
+        o.metallic || o.preset || o.anisotropy || o.anisotropyRotation || o.clearcoat || o.clearcoatRoughness ||
+        o.sheenColor || o.sheenRoughness)
       throw std::invalid_argument("--material: cannot be combined with material flags");
     return materials::loadMaterial(*o.material_file);
   }
@@ -117,6 +122,8 @@ materials::Material resolveMaterial(const MaterialOptions& o) {
   if (o.eta) spec.eta = parseColor("--eta", *o.eta);
   if (o.k) spec.k = parseColor("--k", *o.k);
   if (o.diffuse) spec.diffuse = parseColor("--diffuse", *o.diffuse);
+  if (o.baseColor) spec.baseColor = parseColor("--base-color", *o.baseColor);
+  if (o.metallic) spec.metallic = parseNumber("--metallic", *o.metallic);
   if (o.anisotropy) spec.anisotropy = parseNumber("--anisotropy", *o.anisotropy);
   if (o.anisotropyRotation) spec.anisotropyRotation = parseNumber("--anisotropy-rotation", *o.anisotropyRotation);
   if (o.clearcoat) spec.clearcoat = parseNumber("--clearcoat", *o.clearcoat);

@@ -17,7 +17,7 @@
 namespace facet::cli {
 
 struct MaterialOptions {
-  std::optional<std::string> d, g, f, f0, ior, eta, k, alpha, roughness, diffuse, preset;
+  std::optional<std::string> d, g, f, f0, ior, eta, k, alpha, roughness, diffuse, baseColor, metallic, preset;
   std::optional<std::string> anisotropy, anisotropyRotation, clearcoat, clearcoatRoughness, sheenColor, sheenRoughness;
   std::optional<std::string> material_file;
 };

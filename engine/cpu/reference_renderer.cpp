@@ -178,12 +178,14 @@ class ReferenceScene final : public PathScene {
 
  private:
   // The anisotropic lobe's tangent at `hit` about the shading normal n
-  // (rules/surface/tangent.h): the patch's dP/du, as the GPU's dP/ds.
+  // (rules/surface/tangent.h): from the texture coordinates where the
+  // surface has them, else the patch's dP/du, as the GPU's dP/ds.
   glm::dvec3 tangent(const SceneHit& hit, int material, const glm::dvec3& n) const {
-    const scene::LimitPoint p = geometry_.objects[std::size_t(hit.object)].surface.evaluatePatch(
-        hit.surface.patch, hit.surface.u, hit.surface.v);
+    const scene::SubdivisionSurface& surface = geometry_.objects[std::size_t(hit.object)].surface;
+    const scene::LimitPoint p = surface.evaluatePatch(hit.surface.patch, hit.surface.u, hit.surface.v);
+    const scene::LimitTexcoord uv = surface.evaluateTexcoord(hit.surface.patch, hit.surface.u, hit.surface.v);
     const double rotation = scene_.materials[std::size_t(material)].anisotropyRotation;
-    return m::surface_tangent(n, p.du, p.dv, std::cos(rotation), std::sin(rotation));
+    return m::texcoord_tangent(n, p.du, p.dv, uv.du, uv.dv, std::cos(rotation), std::sin(rotation));
   }
 
   // A textured material at `hit`, seen along `direction`, with the normals

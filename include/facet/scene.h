@@ -54,6 +54,11 @@ struct Material {
   // linear RGB color in [0, 1] and roughness, KHR_materials_sheen's factors.
   std::optional<Vec3> sheenColor;
   std::optional<double> sheenRoughness;
+  // glTF's metallic-roughness parameters, given together in place of
+  // diffuse, f0 and a preset: c_diff = base (1 - metallic), F(0) =
+  // mix(0.04, base, metallic).
+  std::optional<Vec3> baseColor;
+  std::optional<double> metallic;
 };
 
 // A Catmull-Clark control cage in world space; indices are 0-based and each

@@ -294,5 +294,52 @@ TEST(MaterialSheen, BadInputsNameTheField) {
   EXPECT_THROW(buildMaterial(spec, [](std::string_view field) { return std::string(field); }), std::invalid_argument);
 }
 
+TEST(MaterialMetallicRoughness, BaseColorAndMetallicGiveDiffuseAndF0AsGltfDoes) {
+  const Material plastic = build(R"({"base_color": [0.8, 0.1, 0.1], "metallic": 0, "roughness": 0.4})");
+  EXPECT_EQ(plastic.fresnel, rules::f64::F_SCHLICK);
+  EXPECT_EQ(plastic.diffuse, glm::dvec3(0.8, 0.1, 0.1));
+  EXPECT_EQ(plastic.f0, glm::dvec3(0.04));
+  const Material metal = build(R"({"base_color": [0.9, 0.6, 0.2], "metallic": 1, "roughness": 0.3})");
+  EXPECT_EQ(metal.diffuse, glm::dvec3(0.0));
+  EXPECT_EQ(metal.f0, glm::dvec3(0.9, 0.6, 0.2));
+  const Material half = build(R"({"base_color": 0.5, "metallic": 0.5, "roughness": 0.3})");
+  EXPECT_NEAR(half.diffuse.g, 0.25, 1e-15);
+  EXPECT_NEAR(half.f0.g, 0.27, 1e-15);
+  // The other layers combine with them; a round trip keeps the resolved terms.
+  const Material coated = build(R"({"base_color": 0.5, "metallic": 0, "roughness": 0.5, "clearcoat": 1})");
+  EXPECT_EQ(coated.clearcoat, 1.0);
+  const Material again = build(toJson(coated).dump());
+  EXPECT_EQ(again.diffuse, coated.diffuse);
+  EXPECT_EQ(again.f0, coated.f0);
+}
+
+TEST(MaterialMetallicRoughness, BadInputsNameTheField) {
+  EXPECT_EQ(errorOf(R"({"base_color": 0.5, "roughness": 0.5})"),
+            "test.json: field 'metallic': base_color and metallic are given together (glTF's default metallic of 1 "
+            "would make any colour a metal)");
+  EXPECT_EQ(errorOf(R"({"metallic": 1, "roughness": 0.5})").substr(0, 31), "test.json: field 'base_color': ");
+  EXPECT_EQ(errorOf(R"({"base_color": 0.5, "metallic": 0, "diffuse": 0.5, "roughness": 0.5})"),
+            "test.json: field 'diffuse': is not combined with base_color and metallic, which give c_diff and F(0)");
+  EXPECT_EQ(errorOf(R"({"base_color": 0.5, "metallic": 0, "preset": "gold", "roughness": 0.5})"),
+            "test.json: field 'preset': is not combined with base_color and metallic, which give c_diff and F(0)");
+  EXPECT_EQ(errorOf(R"({"base_color": 0.5, "metallic": 0, "transmission": 1, "roughness": 0.5})"),
+            "test.json: field 'transmission': is not combined with base_color and metallic, which give c_diff and "
+            "F(0)");
+  EXPECT_EQ(errorOf(R"({"base_color": 0.5, "metallic": 0, "fresnel": "dielectric", "roughness": 0.5})"),
+            "test.json: field 'fresnel': must be 'schlick' with base_color and metallic (glTF's Fresnel), got "
+            "'dielectric'");
+  EXPECT_EQ(errorOf(R"({"base_color": [0.5, 1.2, 0.5], "metallic": 0, "roughness": 0.5})"),
+            "test.json: field 'base_color': each channel must be in [0, 1], got 1.2");
+  EXPECT_EQ(errorOf(R"({"base_color": 0.5, "metallic": -0.5, "roughness": 0.5})"),
+            "test.json: field 'metallic': must be in [0, 1], got -0.5");
+  EXPECT_EQ(errorOf(R"({"base_color": 0.5, "metallic": "yes", "roughness": 0.5})"),
+            "test.json: field 'metallic': expected a number");
+  MaterialSpec spec;
+  spec.roughness = 0.5;
+  spec.baseColor = glm::dvec3(std::nan(""));
+  spec.metallic = 0.0;
+  EXPECT_THROW(buildMaterial(spec, [](std::string_view field) { return std::string(field); }), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace facet::materials

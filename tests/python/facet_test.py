@@ -254,6 +254,13 @@ class Scenes(unittest.TestCase):
                                 sheen_roughness=0.4)
         self.assertEqual((tuple(velvet.sheen_color), velvet.sheen_roughness), ((0.8, 0.3, 0.35), 0.4))
         facet.Scene([facet.Object(cube())], materials=[velvet])  # within the rules
+        with self.assertRaisesRegex(facet.Error, r"materials\[0\].diffuse: is not combined with base_color"):
+            facet.Scene([facet.Object(cube())],
+                        materials=[facet.Material(roughness=0.5, base_color=(0.5, 0.5, 0.5), metallic=0.0,
+                                                  diffuse=(0.5, 0.5, 0.5))])
+        rubber = facet.Material(roughness=0.65, base_color=(0.025, 0.025, 0.025), metallic=0.0)
+        self.assertEqual((tuple(rubber.base_color), rubber.metallic), ((0.025, 0.025, 0.025), 0.0))
+        facet.Scene([facet.Object(cube())], materials=[rubber])  # within the rules
         with self.assertRaisesRegex(facet.Error, "camera: eye and target must differ"):
             facet.Scene([facet.Object(cube())], camera=facet.Camera(eye=(0, 0, 0)))
         with self.assertRaisesRegex(facet.Error, "environment.file"):

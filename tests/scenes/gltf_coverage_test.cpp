@@ -44,14 +44,15 @@ TEST_F(GltfCoverage, AFileOfWhatFacetReadsHasNoWarnings) {
 TEST_F(GltfCoverage, ARequiredExtensionFacetLacksRefusesTheFile) {
   EXPECT_THAT(
       [&] {
-        load("unlit", {{"extensions", {{"KHR_materials_unlit", nlohmann::json::object()}}}},
-             {{"extensionsUsed", {"KHR_materials_unlit"}}, {"extensionsRequired", {"KHR_materials_unlit"}}});
+        load(
+            "film", {{"extensions", {{"KHR_materials_iridescence", {{"iridescenceFactor", 1.0}}}}}},
+            {{"extensionsUsed", {"KHR_materials_iridescence"}}, {"extensionsRequired", {"KHR_materials_iridescence"}}});
       },
-      ThrowsMessage<InputError>(AllOf(
-          HasSubstr("unlit.gltf: extensionsRequired: extension KHR_materials_unlit is "
-                    "not supported"),
-          HasSubstr(
-              "facet implements KHR_lights_punctual, KHR_materials_clearcoat, KHR_materials_emissive_strength"))));
+      ThrowsMessage<InputError>(
+          AllOf(HasSubstr("film.gltf: extensionsRequired: extension KHR_materials_iridescence is "
+                          "not supported"),
+                HasSubstr("facet implements KHR_lights_punctual, KHR_materials_anisotropy, KHR_materials_clearcoat, "
+                          "KHR_materials_emissive_strength"))));
 }
 
 TEST_F(GltfCoverage, EachIgnoredExtensionIsOneWarning) {

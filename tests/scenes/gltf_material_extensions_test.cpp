@@ -1,6 +1,7 @@
 // glTF material extensions facet reads beyond those of transmission
 // (gltf_transmission_test.cpp): KHR_materials_emissive_strength,
-// KHR_materials_specular, KHR_materials_clearcoat and KHR_materials_sheen.
+// KHR_materials_specular, KHR_materials_clearcoat, KHR_materials_sheen,
+// KHR_materials_anisotropy and KHR_materials_unlit.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -174,6 +175,54 @@ TEST_F(GltfMaterialExtensions, SheenFactorsAreReadAndItsTexturesWarned) {
       write("rough", {{"extensions", {{"KHR_materials_sheen", {{"sheenRoughnessFactor", -0.1}}}}}});
   EXPECT_THAT([&] { loadScene(rough); },
               ThrowsMessage<InputError>(HasSubstr("KHR_materials_sheen.sheenRoughnessFactor")));
+}
+
+TEST_F(GltfMaterialExtensions, AnisotropyFactorsAreReadAndItsTextureWarned) {
+  const nlohmann::json anisotropy = {{"anisotropyStrength", 0.7}, {"anisotropyRotation", 0.5}};
+  const Scene scene = loadScene(write("brushed", {{"extensions", {{"KHR_materials_anisotropy", anisotropy}}}}));
+  EXPECT_EQ(scene.materials.at(0).anisotropy, 0.7);
+  EXPECT_EQ(scene.materials.at(0).anisotropyRotation, 0.5);
+  EXPECT_THAT(scene.warnings, IsEmpty());
+  EXPECT_EQ(loadScene(write("bare", nlohmann::json::object())).materials.at(0).anisotropy, 0.0);
+  nlohmann::json textured = anisotropy;
+  textured["anisotropyTexture"] = {{"index", 0}};
+  const Scene warned = loadScene(write("textured", {{"extensions", {{"KHR_materials_anisotropy", textured}}}}));
+  EXPECT_EQ(warned.materials.at(0).anisotropy, 0.7);
+  EXPECT_THAT(warned.warnings, ElementsAre(HasSubstr("KHR_materials_anisotropy.anisotropyTexture: is not read")));
+  const std::filesystem::path strong =
+      write("strong", {{"extensions", {{"KHR_materials_anisotropy", {{"anisotropyStrength", 1.5}}}}}});
+  EXPECT_THAT([&] { loadScene(strong); },
+              ThrowsMessage<InputError>(HasSubstr("KHR_materials_anisotropy.anisotropyStrength")));
+  const std::filesystem::path turned =
+      write("turned", {{"extensions", {{"KHR_materials_anisotropy", {{"anisotropyRotation", "half"}}}}}});
+  EXPECT_THAT([&] { loadScene(turned); },
+              ThrowsMessage<InputError>(HasSubstr("KHR_materials_anisotropy.anisotropyRotation: must be a finite")));
+  // A transmissive material stays isotropic, with a warning.
+  const Scene glass = loadScene(write("glass", {{"extensions",
+                                                 {{"KHR_materials_anisotropy", anisotropy},
+                                                  {"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}}}));
+  EXPECT_EQ(glass.materials.at(0).anisotropy, 0.0);
+  EXPECT_THAT(glass.warnings, ElementsAre(HasSubstr("is not applied to a transmissive material")));
+}
+
+TEST_F(GltfMaterialExtensions, UnlitIsAnEmitterOfTheBaseColourThatReflectsNothing) {
+  const nlohmann::json unlit = {{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.4, 0.2, 1.0}}}},
+                                {"emissiveFactor", {1.0, 1.0, 1.0}},
+                                {"extensions", {{"KHR_materials_unlit", nlohmann::json::object()}}}};
+  const Scene scene = loadScene(write("unlit", unlit));
+  const materials::Material& m = scene.materials.at(0);
+  EXPECT_EQ(m.emission, glm::dvec3(0.8, 0.4, 0.2));  // the base colour, not the emissive fallback
+  EXPECT_EQ(m.diffuse, glm::dvec3(0.0));
+  EXPECT_EQ(m.fresnel, rules::f64::F_DIELECTRIC);
+  EXPECT_EQ(m.eta, glm::dvec3(1.0));
+  EXPECT_FALSE(m.textures.has_value());
+  EXPECT_THAT(scene.warnings, IsEmpty());
+  // Nothing is reflected at any angle: the BRDF is 0.
+  const rules::f64::BrdfParams p = materials::toParams64(m);
+  for (double c : {1.0, 0.5, 0.05}) {
+    const glm::dvec3 v(std::sqrt(1.0 - c * c), 0.0, c), l(-v.x, 0.0, v.z), n(0.0, 0.0, 1.0);
+    EXPECT_EQ(rules::f64::brdf_evaluate(p, n, l, v), glm::dvec3(0.0)) << c;
+  }
 }
 
 }  // namespace

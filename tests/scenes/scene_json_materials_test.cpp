@@ -59,7 +59,7 @@ class MaterialFiles : public facet::testing::TempDirTest {
 TEST_F(MaterialFiles, TheLibraryInTheExamplesLoadsAndWornGoldIsPolishedGoldRougher) {
   std::vector<Texture> textures;
   for (const char* file : {"polished_gold", "worn_gold", "brushed_aluminum", "red_plastic", "white_ceramic",
-                           "glazed_ceramic", "car_paint", "velvet"})
+                           "glazed_ceramic", "car_paint", "velvet", "rubber"})
     EXPECT_NO_THROW(loadMaterialReference((kExamples / "materials" / file).string() + ".json", textures)) << file;
   const materials::Material polished =
       loadMaterialReference((kExamples / "materials" / "polished_gold.json").string(), textures);

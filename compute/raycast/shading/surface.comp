@@ -366,7 +366,9 @@ void main() {
   if (TRANSMISSION == 1 && m.transmissive == 1u) params = transmissive_brdf_params(params, transmission_params(m), outside);
   if (ANISOTROPY == 1 && params.anisotropy != 0.0) {
     PatchSample point = evaluate_patch(c, hit.s, hit.tParam);
-    params.tangent = surface_tangent(n, point.ds, point.dt, m.anisotropyCos, m.anisotropySin);
+    SurfaceTexcoord uv = surface_texcoord(channel_texel(record.firstTexcoord, range.channels, FACET_CHANNEL_TEXCOORD0),
+                                          hit.s, hit.tParam);
+    params.tangent = texcoord_tangent(n, point.ds, point.dt, uv.ds, uv.dt, m.anisotropyCos, m.anisotropySin);
   }
   vec3 v = -direction;
   // The coat lies over the emission too (KHR_materials_clearcoat).

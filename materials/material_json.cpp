@@ -1,0 +1,157 @@
+// A material's JSON form (docs/shading.md, "Materials"): the keys a file
+// may hold, read into a MaterialSpec, and a built material written back.
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+#include "materials/material.h"
+#include "materials/models.h"
+#include "materials/strict_json.h"
+
+namespace facet::materials {
+
+MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view source) {
+  auto fail = [&](std::string_view field, const std::string& rule) {
+    throw std::invalid_argument(std::string(source) + ": field '" + std::string(field) + "': " + rule);
+  };
+  if (!json.is_object()) throw std::invalid_argument(std::string(source) + ": a material must be a JSON object");
+  auto text = [&](const std::string& key) -> std::optional<std::string> {
+    if (!json.contains(key)) return std::nullopt;
+    if (!json[key].is_string()) fail(key, "expected a string");
+    return json[key].get<std::string>();
+  };
+  auto number = [&](const std::string& key) -> std::optional<double> {
+    if (!json.contains(key)) return std::nullopt;
+    if (!json[key].is_number()) fail(key, "expected a number");
+    return json[key].get<double>();
+  };
+  auto color = [&](const std::string& key) -> std::optional<glm::dvec3> {
+    if (!json.contains(key)) return std::nullopt;
+    const nlohmann::json& value = json[key];
+    if (value.is_number()) return glm::dvec3(value.get<double>());
+    if (!value.is_array() || value.size() != 3 || !value[0].is_number() || !value[1].is_number() ||
+        !value[2].is_number())
+      fail(key, "expected a number or an array of 3 numbers (r, g, b)");
+    return glm::dvec3(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
+  };
+
+  static const char* const kKeys[] = {"name",
+                                      "preset",
+                                      "distribution",
+                                      "geometry",
+                                      "fresnel",
+                                      "alpha",
+                                      "roughness",
+                                      "f0",
+                                      "ior",
+                                      "eta",
+                                      "k",
+                                      "diffuse",
+                                      "base_color",
+                                      "metallic",
+                                      "energy_compensation",
+                                      "transmission",
+                                      "thin_walled",
+                                      "attenuation_color",
+                                      "attenuation_distance",
+                                      "thickness",
+                                      "anisotropy",
+                                      "anisotropy_rotation",
+                                      "clearcoat",
+                                      "clearcoat_roughness",
+                                      "sheen_color",
+                                      "sheen_roughness"};
+  if (const std::optional<std::string> key = findUnknownKey(json, kKeys)) fail(*key, unknownFieldRule(kKeys));
+
+  MaterialSpec spec;
+  spec.name = text("name").value_or("");
+  spec.preset = text("preset");
+  spec.distribution = text("distribution");
+  spec.geometry = text("geometry");
+  spec.fresnel = text("fresnel");
+  spec.alpha = number("alpha");
+  spec.roughness = number("roughness");
+  spec.f0 = color("f0");
+  spec.ior = color("ior");
+  spec.eta = color("eta");
+  spec.k = color("k");
+  spec.diffuse = color("diffuse");
+  spec.baseColor = color("base_color");
+  spec.metallic = number("metallic");
+  if (json.contains("energy_compensation")) {
+    if (!json["energy_compensation"].is_boolean()) fail("energy_compensation", "expected true or false");
+    spec.energyCompensation = json["energy_compensation"].get<bool>();
+  }
+  spec.transmission = number("transmission");
+  if (json.contains("thin_walled")) {
+    if (!json["thin_walled"].is_boolean()) fail("thin_walled", "expected true or false");
+    spec.thinWalled = json["thin_walled"].get<bool>();
+  }
+  spec.attenuationColor = color("attenuation_color");
+  spec.attenuationDistance = number("attenuation_distance");
+  spec.thickness = number("thickness");
+  spec.anisotropy = number("anisotropy");
+  spec.anisotropyRotation = number("anisotropy_rotation");
+  spec.clearcoat = number("clearcoat");
+  spec.clearcoatRoughness = number("clearcoat_roughness");
+  spec.sheenColor = color("sheen_color");
+  spec.sheenRoughness = number("sheen_roughness");
+  return spec;
+}
+
+Material loadMaterial(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::invalid_argument(path.string() + ": cannot open material file");
+  nlohmann::json json;
+  try {
+    json = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {  // syntax errors, and numbers beyond double's range
+    throw std::invalid_argument(path.string() + ": not valid JSON: " + e.what());
+  }
+  const std::string source = path.string();
+  return buildMaterial(materialSpecFromJson(json, source),
+                       [&](std::string_view field) { return source + ": field '" + std::string(field) + "'"; });
+}
+
+nlohmann::json toJson(const Material& m) {
+  auto array = [](glm::dvec3 v) { return nlohmann::json::array({v.x, v.y, v.z}); };
+  nlohmann::json json = {
+      {"distribution", modelName(kDistributions, m.distribution)},
+      {"geometry", modelName(kGeometryTerms, m.geometry)},
+      {"fresnel", modelName(kFresnelTerms, m.fresnel)},
+      {"alpha", m.alpha},
+      {"diffuse", array(m.diffuse)},
+  };
+  if (!m.name.empty()) json["name"] = m.name;
+  if (m.energyCompensation) json["energy_compensation"] = true;
+  if (m.anisotropy > 0.0) json["anisotropy"] = m.anisotropy, json["anisotropy_rotation"] = m.anisotropyRotation;
+  if (m.clearcoat > 0.0) json["clearcoat"] = m.clearcoat, json["clearcoat_roughness"] = m.clearcoatRoughness;
+  if (m.sheenColor != glm::dvec3(0.0))
+    json["sheen_color"] = array(m.sheenColor), json["sheen_roughness"] = m.sheenRoughness;
+  if (isTransmissive(m)) {
+    json["transmission"] = m.transmission;
+    if (m.thinWalled) json["thin_walled"] = true, json["thickness"] = m.thickness;
+    if (std::isfinite(m.attenuationDistance)) {
+      json["attenuation_color"] = array(m.attenuationColor);
+      json["attenuation_distance"] = m.attenuationDistance;
+    }
+  }
+  switch (m.fresnel) {
+    case rules::f64::F_SCHLICK:
+    case rules::f64::F_BLENDER_METALLIC:
+      json["f0"] = array(m.f0);
+      break;
+    case rules::f64::F_DIELECTRIC:
+      json["ior"] = array(m.eta);
+      break;
+    case rules::f64::F_CONDUCTOR:
+      json["eta"] = array(m.eta);
+      json["k"] = array(m.k);
+      break;
+  }
+  return json;
+}
+
+}  // namespace facet::materials

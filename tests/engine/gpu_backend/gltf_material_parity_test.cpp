@@ -1,0 +1,185 @@
+// glTF materials as their authors meant them, on both backends: an unlit
+// material shows its base colour whatever lights it, and
+// KHR_materials_anisotropy stretches a highlight along the direction its
+// rotation gives in the texture's frame, turned the other way on a mirrored
+// layout (docs/gltf.md; docs/shading.md, "Anisotropy").
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <numbers>
+#include <random>
+#include <string>
+
+#include "scenes/environment_map.h"
+#include "scenes/scene_file.h"
+#include "tests/support/path_parity.h"
+#include "tests/support/textured_gltf.h"
+
+namespace facet {
+namespace {
+
+using facet::testing::Rgba8;
+
+class GltfMaterialParity : public testing::GpuRenderTest {
+ protected:
+  void SetUp() override {
+    GpuRenderTest::SetUp();
+    dir_ = std::filesystem::temp_directory_path() / ("facet_gltf_material_" + std::to_string(std::random_device{}()));
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::filesystem::remove_all(dir_);
+    GpuRenderTest::TearDown();
+  }
+
+  // The textured quad of `material`, seen head-on from 3 units (the node
+  // mirrored in x when `mirrored`), 48 x 48 pixels.
+  scene::Scene quad(const std::string& name, const nlohmann::json& material, nlohmann::json parts, bool mirrored) {
+    parts["materials"] = nlohmann::json::array({material});
+    parts["nodes"] = {{{"mesh", 0}, {"scale", {mirrored ? -1.0 : 1.0, 1.0, 1.0}}}};
+    scene::Scene scene = scene::loadScene(facet::testing::writeTexturedQuad(dir_, name, parts));
+    scene.camera = {{0.0, 0.0, 3.0}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 40.0};
+    scene.render.width = scene.render.height = 48;
+    return scene;
+  }
+
+  // Every covered pixel of both backends' images shows one of `colours`
+  // exactly, each on a quarter of them at least, and the two agree.
+  void expectUnlitColours(const testing::PathRenders& r, const glm::dvec3 (&colours)[2]);
+
+  std::filesystem::path dir_;
+};
+
+// sRGB-encoded 8-bit value to linear (IEC 61966-2-1), as textures decode.
+double linear(std::uint8_t c) {
+  const double x = c / 255.0;
+  return x <= 0.04045 ? x / 12.92 : std::pow((x + 0.055) / 1.055, 2.4);
+}
+
+TEST_F(GltfMaterialParity, UnlitShowsItsBaseColourWhateverLightsIt) {
+  const Rgba8 warm{230, 200, 40, 255}, cool{20, 60, 180, 255};
+  facet::testing::writePng(dir_ / "checker.png", 8, 8, facet::testing::checkerTexels(8, 2, warm, cool));
+  const glm::dvec3 factor(0.9, 0.6, 0.3);
+  const nlohmann::json material = {
+      {"pbrMetallicRoughness",
+       {{"baseColorFactor", {factor.r, factor.g, factor.b, 1.0}}, {"baseColorTexture", {{"index", 0}}}}},
+      {"doubleSided", true},
+      {"extensions", {{"KHR_materials_unlit", nlohmann::json::object()}}}};
+  // Nearest texels, so that every pixel shows one of the two colours exactly.
+  const nlohmann::json parts = {{"textures", {{{"source", 0}, {"sampler", 0}}}},
+                                {"images", {{{"uri", "checker.png"}}}},
+                                {"samplers", {{{"magFilter", 9728}, {"minFilter", 9728}}}},
+                                {"extensionsUsed", {"KHR_materials_unlit"}}};
+  scene::Scene scene = quad("unlit", material, parts, false);
+  EXPECT_TRUE(scene.warnings.empty());
+  // A key light and a white sky: neither may change what the surface
+  // shows, lit directly or by paths that reach it and leave it.
+  scene.lights = {scene::Light{scene::LightType::Point, glm::dvec3(3.0), {0.5, 0.5, 2.0}}};
+  scene.environment.emplace();
+  scene.environment->map = std::make_shared<const scene::EnvironmentMap>(scene::constantEnvironment(glm::dvec3(1.0)));
+  scene.environment->samples = 4;
+  const glm::dvec3 colours[] = {factor * glm::dvec3(linear(warm.r), linear(warm.g), linear(warm.b)),
+                                factor * glm::dvec3(linear(cool.r), linear(cool.g), linear(cool.b))};
+  for (int bounces : {0, 2}) {
+    scene.render.bounces = bounces;
+    scene.environment->method = scene::IblMethod::Sampled;
+    scene.environment->occlusion = bounces > 0;
+    expectUnlitColours(testing::renderBoth(device_, scene), colours);
+  }
+}
+
+void GltfMaterialParity::expectUnlitColours(const testing::PathRenders& r, const glm::dvec3 (&colours)[2]) {
+  for (const Image* image : {&r.reference, &r.gpu.image}) {
+    std::size_t covered = 0, shown[2] = {0, 0};
+    for (std::size_t p = 0; p < image->beauty.size(); ++p) {
+      if (image->beauty[p].a < 1.0f) continue;
+      ++covered;
+      const glm::dvec3 c(image->beauty[p]);
+      for (int k = 0; k < 2; ++k)
+        if (glm::length(c - colours[k]) < 1e-4 * glm::length(colours[k])) ++shown[k];
+    }
+    EXPECT_GT(covered, 1000u);
+    EXPECT_EQ(shown[0] + shown[1], covered) << (image == &r.reference ? "cpu" : "gpu");
+    EXPECT_GT(shown[0], covered / 4);
+    EXPECT_GT(shown[1], covered / 4);
+  }
+  testing::expectPathParity(r, {.median = 1e-6, .p98 = 1e-5, .parted = 0});
+}
+
+// The highlight's principal axis in the image (radians from +x towards +y,
+// image rows growing up) and its elongation (the ratio of the axes' spreads),
+// over the pixels brighter than half the peak.
+struct HighlightShape {
+  double angle, elongation;
+};
+
+HighlightShape highlightShape(const Image& image, int width, int height) {
+  double peak = 0.0;
+  for (const glm::vec4& c : image.beauty) peak = std::max(peak, double(c.g));
+  double w = 0, mx = 0, my = 0, xx = 0, yy = 0, xy = 0;
+  for (int row = 0; row < height; ++row)
+    for (int x = 0; x < width; ++x) {
+      const double g = image.beauty[std::size_t(row * width + x)].g - 0.5 * peak;
+      if (g <= 0.0) continue;
+      const double y = height - 1 - row;
+      w += g, mx += g * x, my += g * y, xx += g * x * x, yy += g * y * y, xy += g * x * y;
+    }
+  mx /= w, my /= w;
+  const double cxx = xx / w - mx * mx, cyy = yy / w - my * my, cxy = xy / w - mx * my;
+  const double mean = 0.5 * (cxx + cyy), spread = std::sqrt(0.25 * (cxx - cyy) * (cxx - cyy) + cxy * cxy);
+  return {0.5 * std::atan2(2.0 * cxy, cxx - cyy), std::sqrt((mean + spread) / (mean - spread))};
+}
+
+// The difference of two axes' angles, modulo a half turn.
+double axisDifference(double a, double b) {
+  const double d = std::remainder(a - b, std::numbers::pi);
+  return std::abs(d);
+}
+
+struct AnisotropyCase {
+  double rotation;
+  bool mirrored;
+  double imageAngle;  // the expected axis in the image
+  const char* name;
+};
+
+class GltfAnisotropyParity : public GltfMaterialParity, public ::testing::WithParamInterface<AnisotropyCase> {};
+
+TEST_P(GltfAnisotropyParity, TheHighlightStretchesAlongTheTexturesDirection) {
+  const nlohmann::json material = {
+      {"pbrMetallicRoughness", {{"baseColorFactor", {0.9, 0.9, 0.9, 1.0}}, {"roughnessFactor", 0.25}}},
+      {"doubleSided", true},
+      {"extensions",
+       {{"KHR_materials_anisotropy", {{"anisotropyStrength", 0.9}, {"anisotropyRotation", GetParam().rotation}}}}}};
+  scene::Scene scene =
+      quad(GetParam().name, material, {{"extensionsUsed", {"KHR_materials_anisotropy"}}}, GetParam().mirrored);
+  EXPECT_TRUE(scene.warnings.empty());
+  scene.environment.reset();
+  scene.lights = {scene::Light{scene::LightType::Point, glm::dvec3(4.0), {0.0, 0.0, 2.0}}};
+  const testing::PathRenders r = testing::renderBoth(device_, scene);
+  for (const Image* image : {&r.reference, &r.gpu.image}) {
+    const HighlightShape shape = highlightShape(*image, scene.render.width, scene.render.height);
+    std::printf("%s: axis %.1f degrees, elongation %.2f\n", image == &r.reference ? "cpu" : "gpu",
+                shape.angle * 180.0 / std::numbers::pi, shape.elongation);
+    EXPECT_LT(axisDifference(shape.angle, GetParam().imageAngle), 10.0 * std::numbers::pi / 180.0);
+    EXPECT_GT(shape.elongation, 2.0);
+  }
+  testing::expectPathParity(r, {.median = 1e-4, .p98 = 1e-3, .parted = 0});
+}
+
+// The quad's u runs along +x, its v down the image: the tangent is +x and
+// the rotation turns it towards +y; mirrored, the tangent is -x and the
+// rotation still turns towards +y (glTF's bitangent points up the image).
+INSTANTIATE_TEST_SUITE_P(
+    Rotations, GltfAnisotropyParity,
+    ::testing::Values(AnisotropyCase{0.0, false, 0.0, "along_u"},
+                      AnisotropyCase{std::numbers::pi / 2, false, std::numbers::pi / 2, "quarter_turn"},
+                      AnisotropyCase{std::numbers::pi / 4, false, std::numbers::pi / 4, "diagonal"},
+                      AnisotropyCase{std::numbers::pi / 4, true, -std::numbers::pi / 4, "diagonal_mirrored"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace facet
