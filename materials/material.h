@@ -40,6 +40,9 @@ struct MaterialTextures {
   TextureSlot occlusionTexture;  // R scales the environment's light, by occlusionStrength
   double occlusionStrength = 1.0;
   TextureSlot emissiveTexture;  // sRGB; RGB multiplies emission
+  // KHR_materials_unlit: the base colour (factor, texture and vertex colour)
+  // is emitted, in place of the emission.
+  bool unlit = false;
 };
 
 struct Material {

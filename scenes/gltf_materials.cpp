@@ -145,23 +145,26 @@ Texture TextureTable::convert(int index, TextureEncoding encoding) const {
 
 namespace {
 
-// KHR_materials_unlit: the surface shows its base colour (factor times
-// texture) whatever lights it, as an emitter of that colour that reflects
-// nothing: no diffuse and no interface (a dielectric of index 1, whose
-// Fresnel is 0 at every angle, F90 included). The specification's other
-// lighting properties are its fallbacks for viewers without the extension.
+// KHR_materials_unlit: the surface shows its base colour (factor, texture
+// and vertex colour) whatever lights it, as an emitter of that colour that
+// reflects nothing: no diffuse and no interface (a dielectric of index 1,
+// whose Fresnel is 0 at every angle, F90 included). The specification's
+// other lighting properties are its fallbacks for viewers without the
+// extension.
 materials::Material unlitMaterial(const std::string& name, const glm::dvec3& base,
-                                  const materials::TextureSlot& baseColorTexture) {
+                                  const materials::TextureSlot& baseColorTexture, bool vertexColours) {
   materials::Material m = defaultMaterial();
   m.name = name;
   m.fresnel = rules::f64::F_DIELECTRIC;
   m.eta = glm::dvec3(1.0);
   m.diffuse = glm::dvec3(0.0);
   m.emission = base;
-  if (baseColorTexture.texture >= 0) {
+  if (baseColorTexture.texture >= 0 || vertexColours) {
     materials::MaterialTextures t;
-    t.baseColor = glm::dvec3(0.0);  // per hit: no diffuse, and F(0) is unread under the index-1 Fresnel
-    t.emissiveTexture = baseColorTexture;
+    t.baseColor = base;
+    t.baseColorTexture = baseColorTexture;
+    t.metallic = 1.0;  // per hit: no diffuse; F(0) is unread under the index-1 Fresnel
+    t.unlit = true;
     m.textures = t;
   }
   return m;
@@ -189,7 +192,8 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
     const auto& b = pbr.baseColorTexture;
     return unlitMaterial(
         name, base,
-        textures.slot(b.extensions, b.index, b.texCoord, TextureEncoding::Srgb, where + ".baseColorTexture"));
+        textures.slot(b.extensions, b.index, b.texCoord, TextureEncoding::Srgb, where + ".baseColorTexture"),
+        vertexColours);
   }
   materials::Material m = defaultMaterial();
   m.name = name;

@@ -310,6 +310,7 @@ struct MaterialRecord {
   float sheenAlbedo5;
   float sheenAlbedo6;
   float sheenAlbedo7;
+  uint unlit;  // KHR_materials_unlit, where `textured` is 1: the base colour is emitted
 };
 
 // What the camera-side kernels need, one uniform block (std140 agrees: all

@@ -211,7 +211,7 @@ class ReferenceScene final : public PathScene {
     return m::textured_surface(
         params, n, footprint(t.normalTexture), t.baseColor, t.metallic, t.roughness, t.normalScale, t.occlusionStrength,
         emission, base, glm::dvec3(value(t.metallicRoughnessTexture)), t.normalTexture.texture >= 0,
-        glm::dvec3(value(t.normalTexture)), value(t.occlusionTexture).r, glm::dvec3(value(t.emissiveTexture)));
+        glm::dvec3(value(t.normalTexture)), value(t.occlusionTexture).r, glm::dvec3(value(t.emissiveTexture)), t.unlit);
   }
 
   bool occluded(const glm::dvec3& position, const glm::dvec3& ng, const glm::dvec3& l, double distance,

@@ -55,6 +55,7 @@ std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
     r.emissionR = emission.r, r.emissionG = emission.g, r.emissionB = emission.b;
     const std::optional<materials::MaterialTextures>& t = scene.materials[i].textures;
     r.textured = t ? 1u : 0u;
+    r.unlit = t && t->unlit ? 1u : 0u;
     if (t) {
       r.baseR = float(t->baseColor.r), r.baseG = float(t->baseColor.g), r.baseB = float(t->baseColor.b);
       r.metallic = float(t->metallic);

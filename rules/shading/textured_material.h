@@ -93,16 +93,18 @@ struct TexturedSurface {
 // From the material's glTF factors and its slots' values (1 where a slot is
 // empty; `normal_mapped` false keeps n): base colour RGB, metallic-roughness
 // G roughness and B metallic, the normal map's RGB, occlusion R, emission RGB.
+// An `unlit` material (KHR_materials_unlit, docs/gltf.md) emits its base
+// colour instead; it reflects nothing by its models, not by this rule.
 FACET_FN TexturedSurface textured_surface(BrdfParams p, vec3 n, TextureFootprint f, vec3 base_factor,
                                           real metallic_factor, real roughness_factor, real normal_scale,
                                           real occlusion_strength, vec3 emission_factor, vec3 base,
                                           vec3 metallic_roughness, bool normal_mapped, vec3 normal_texel,
-                                          real occlusion, vec3 emission) {
+                                          real occlusion, vec3 emission, bool unlit) {
   TexturedSurface surface;
   surface.params = metallic_roughness_params(p, base_factor * base, metallic_factor * metallic_roughness.z,
                                              roughness_factor * metallic_roughness.y);
   surface.n = normal_mapped ? mapped_normal(n, f.dp_ds, f.dp_dt, f.duv_ds, f.duv_dt, normal_texel, normal_scale) : n;
   surface.occlusion = occlusion_factor(occlusion, occlusion_strength);
-  surface.emission = emission_factor * emission;
+  surface.emission = unlit ? base_factor * base : emission_factor * emission;
   return surface;
 }

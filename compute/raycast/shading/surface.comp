@@ -196,7 +196,7 @@ TexturedSurface textured_hit(MaterialRecord m, PatchRecord record, uint channels
       slot_value(m.metallicRoughnessTexture, m.metallicRoughnessTexture.texCoord == 1u ? f1 : f).rgb,
       m.normalTexture.texture != FACET_NO_TEXTURE, slot_value(m.normalTexture, fn).rgb,
       slot_value(m.occlusionTexture, m.occlusionTexture.texCoord == 1u ? f1 : f).r,
-      slot_value(m.emissiveTexture, m.emissiveTexture.texCoord == 1u ? f1 : f).rgb);
+      slot_value(m.emissiveTexture, m.emissiveTexture.texCoord == 1u ? f1 : f).rgb, m.unlit == 1u);
 }
 
 // Sampled or filtered method, one sample of either technique: its share for

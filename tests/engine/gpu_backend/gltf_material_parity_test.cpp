@@ -15,6 +15,7 @@
 
 #include "scenes/environment_map.h"
 #include "scenes/scene_file.h"
+#include "tests/support/channels_gltf.h"
 #include "tests/support/path_parity.h"
 #include "tests/support/textured_gltf.h"
 
@@ -107,6 +108,32 @@ void GltfMaterialParity::expectUnlitColours(const testing::PathRenders& r, const
     EXPECT_GT(shown[1], covered / 4);
   }
   testing::expectPathParity(r, {.median = 1e-6, .p98 = 1e-5, .parted = 0});
+}
+
+TEST_F(GltfMaterialParity, UnlitVertexColoursAreTheColoursShown) {
+  const nlohmann::json material = {{"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.5, 0.5, 1.0}}}},
+                                   {"doubleSided", true},
+                                   {"extensions", {{"KHR_materials_unlit", nlohmann::json::object()}}}};
+  scene::Scene scene = scene::loadScene(facet::testing::writeChannelQuad(
+      dir_, "unlit_colours", {{"POSITION", 0}, {"COLOR_0", 3}},
+      {{"materials", {material}}, {"extensionsUsed", {"KHR_lights_punctual", "KHR_materials_unlit"}}}));
+  EXPECT_TRUE(scene.warnings.empty());
+  scene.render.width = scene.render.height = 48;
+  const testing::PathRenders r = testing::renderBoth(device_, scene);
+  // Near each corner, half its colour (red, green, blue at the bottom left,
+  // bottom right, top right; white at the top left), whatever the light.
+  const struct {
+    int x, row;
+    glm::dvec3 colour;
+  } corners[] = {
+      {7, 40, {0.5, 0.0, 0.0}}, {40, 40, {0.0, 0.5, 0.0}}, {40, 7, {0.0, 0.0, 0.5}}, {7, 7, {0.5, 0.5, 0.5}}};
+  for (const Image* image : {&r.reference, &r.gpu.image})
+    for (const auto& corner : corners) {
+      const glm::dvec3 c(image->beauty[std::size_t(corner.row * 48 + corner.x)]);
+      EXPECT_LT(glm::length(c - corner.colour), 0.1) << (image == &r.reference ? "cpu " : "gpu ") << corner.x << ","
+                                                     << corner.row << ": " << c.r << " " << c.g << " " << c.b;
+    }
+  testing::expectPathParity(r, {.median = 1e-5, .p98 = 1e-4, .parted = 0});
 }
 
 // The highlight's principal axis in the image (radians from +x towards +y,
