@@ -125,11 +125,6 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& p
 void checkExtensions(const tinygltf::Model& model, const GltfReader& reader);
 void warnOfIgnoredFeatures(const tinygltf::Model& model, const GltfReader& reader);
 
-// Whether the faces of `cages` together have an edge that only one of them
-// uses (edges compared by their ends' positions, so that a mesh instance
-// split by material counts as the one surface it is).
-bool hasBoundary(const std::vector<const ControlCage*>& cages);
-
 // gltf_nodes.cpp
 glm::dmat4 localTransform(const tinygltf::Node& node);
 // Light `index` of KHR_lights_punctual, placed by node `where`.

@@ -229,21 +229,6 @@ std::string objectName(const std::string& mesh, std::size_t k) {
   return name;
 }
 
-// glTF culls the back faces of a material that is not doubleSided (the
-// default); facet renders both, which shows only where the surface is open.
-void warnOfOneSidedOpenMesh(const tinygltf::Model& model, const Scene& scene, std::size_t firstObject,
-                            const detail::GltfReader& reader) {
-  std::vector<const ControlCage*> cages;
-  for (std::size_t o = firstObject; o < scene.objects.size(); ++o) cages.push_back(&scene.objects[o].cage);
-  if (!detail::hasBoundary(cages)) return;
-  for (std::size_t o = firstObject; o < scene.objects.size(); ++o) {
-    const std::size_t material = std::size_t(scene.objects[o].material);
-    if (material < model.materials.size() && !model.materials[material].doubleSided)
-      reader.warn("materials[" + std::to_string(material) + "].doubleSided",
-                  "false is not read; the back faces of its open meshes render too");
-  }
-}
-
 }  // namespace
 
 Scene loadGltfScene(const std::filesystem::path& path) {
@@ -308,10 +293,12 @@ Scene loadGltfScene(const std::filesystem::path& path) {
         if (object.cage.faceCount() == 0) continue;  // only triangles without area
         object.subdivision = Subdivision::None;
         object.material = material;
+        // glTF culls the back faces of a material that is not doubleSided,
+        // its default material's included.
+        object.oneSided = material == defaultMaterialIndex || !model.materials[std::size_t(material)].doubleSided;
         scene.objects.push_back(std::move(object));
       }
       if (scene.objects.size() == firstObject) reader.fail(meshWhere, "has no faces");
-      warnOfOneSidedOpenMesh(model, scene, firstObject, reader);
     }
     if (node.camera >= 0 && !camera) {
       if (std::size_t(node.camera) >= model.cameras.size()) reader.fail(where, "camera index out of range");

@@ -131,7 +131,16 @@ struct Object {
   // Catmull-Clark only.
   std::optional<int> isolationLevel;  // overrides the choice from pixelTolerance
   EndCapBasis endCaps = EndCapBasis::Gregory;
+  // glTF's doubleSided false: rays pass over the back faces (cullsBackFaces).
+  bool oneSided = false;
 };
+
+// Whether rays pass over an object's back faces (docs/rendering.md,
+// "One-sided surfaces"): a one-sided object's, unless its material transmits,
+// whose inside a path sees through its back faces.
+inline bool cullsBackFaces(const Object& object, const materials::Material& material) {
+  return object.oneSided && !materials::isTransmissive(material);
+}
 
 struct Scene {
   std::filesystem::path source;

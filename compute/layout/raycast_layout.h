@@ -29,7 +29,11 @@ struct ObjectRange {
   uint firstCell;          // exact: FACET_CELL_TEXELS of bounds per cell
   uint firstGridVertex;    // tessellated: (k + 1)^2 limit points per patch
   uint firstEdgeMidpoint;  // tessellated: 4 k per patch (those of unsplit edges unused)
+  uint flags;              // FACET_OBJECT_* bits
 };
+
+// The object passes over its back faces (rules/surface/back_face.h).
+const uint FACET_OBJECT_CULL_BACK_FACES = 1u;
 
 // A ray from `origin` along `direction`, over [tMin, tMax).
 struct RayRecord {

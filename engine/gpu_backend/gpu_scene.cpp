@@ -86,6 +86,10 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
     range.firstCell = std::uint32_t(packed.cells);
     range.firstGridVertex = std::uint32_t(packed.gridVertices);
     range.firstEdgeMidpoint = std::uint32_t(packed.edgeMidpoints);
+    const scene::Object& sceneObject = scene.objects[i];
+    range.flags = scene::cullsBackFaces(sceneObject, scene.materials[std::size_t(sceneObject.material)])
+                      ? layout::FACET_OBJECT_CULL_BACK_FACES
+                      : 0u;
     packed.objects.push_back(range);
 
     for (std::size_t slot = 0; slot < bvh.leafPatches().size(); ++slot) {

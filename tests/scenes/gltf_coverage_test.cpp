@@ -85,10 +85,19 @@ TEST_F(GltfCoverage, IgnoredCoreFeaturesAreWarnings) {
                   HasSubstr("materials[0].alphaMode: MASK is not read; the surface renders opaque")));
   EXPECT_THAT(load("blend", {{"alphaMode", "BLEND"}}).warnings,
               ElementsAre(HasSubstr("materials[0].alphaMode: BLEND is not read")));
-  // The quad is open: its back faces would show where glTF culls them.
-  EXPECT_THAT(load("single", {{"doubleSided", false}}).warnings,
-              ElementsAre(HasSubstr("materials[0].doubleSided: false is not read; the back faces of its open meshes "
-                                    "render too")));
+}
+
+TEST_F(GltfCoverage, OneSidedMaterialsCullTheirBackFaces) {
+  // doubleSided false, written or by default, is read: no warning.
+  const Scene single = load("single", {{"doubleSided", false}});
+  EXPECT_THAT(single.warnings, IsEmpty());
+  ASSERT_EQ(single.objects.size(), 1u);
+  EXPECT_TRUE(single.objects[0].oneSided);
+  EXPECT_FALSE(load("double", nlohmann::json::object()).objects[0].oneSided);
+  // glTF's default material is one-sided too.
+  nlohmann::json parts;
+  parts["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 2}}}}}};
+  EXPECT_TRUE(load("default", nlohmann::json::object(), parts).objects[0].oneSided);
 }
 
 TEST_F(GltfCoverage, LightRangesAndOrthographicCamerasAreWarnings) {
@@ -167,7 +176,7 @@ TEST_F(GltfCoverage, AnOcclusionMapOnASecondCoordinateSetIsDroppedWithAWarning) 
 }
 
 TEST_F(GltfCoverage, AClosedMeshOfAOneSidedMaterialIsNoWarning) {
-  // A bipyramid of one material, doubleSided false by default: culling would hide nothing.
+  // A bipyramid of one material, doubleSided false by default.
   EXPECT_THAT(loadScene(std::string(FACET_TEST_DATA_DIR) + "/faceted_gem.gltf").warnings, IsEmpty());
 }
 

@@ -1,9 +1,10 @@
-// The ray against one micro-triangle. Needs ray.glsl.
+// The ray against one micro-triangle. Needs ray.glsl and trace_bindings.glsl.
 #ifndef FACET_RAYCAST_TRIANGLE_GLSL
 #define FACET_RAYCAST_TRIANGLE_GLSL
 
-// Möller-Trumbore; on a hit in [tMin, best.t), records it with the grid
-// step of the hit point (the steps of the corners interpolated).
+// Möller-Trumbore; on a hit in [tMin, best.t) that the object does not cull
+// (its normal is e1 x e2, as the CPU's), records it with the grid step of the
+// hit point (the steps of the corners interpolated).
 void intersect_triangle(Ray ray, vec3 a, vec3 b, vec3 c, vec2 stepA, vec2 stepB, vec2 stepC, float rate,
                         uint patchIndex, uint object, inout Hit best) {
   vec3 e1 = b - a, e2 = c - a;
@@ -18,7 +19,7 @@ void intersect_triangle(Ray ray, vec3 a, vec3 b, vec3 c, vec2 stepA, vec2 stepB,
   float wc = dot(ray.direction, r) * inverse;
   if (wc < 0.0 || wb + wc > 1.0) return;
   float t = dot(e2, r) * inverse;
-  if (t < ray.tMin || t >= best.t) return;
+  if (t < ray.tMin || t >= best.t || culled(object, ray.direction, cross(e1, e2))) return;
   best.t = t;
   best.patchIndex = patchIndex;
   best.object = object;
