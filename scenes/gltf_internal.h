@@ -96,6 +96,15 @@ class TextureTable {
 materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index, const GltfReader& reader,
                                TextureTable& textures);
 
+// gltf_materials.cpp: glTF's alphaMode of material `index` as an Object
+// carries it (scenes/scene.h): the cutoff (0: OPAQUE; MASK's alphaCutoff;
+// BLEND read as MASK at 0.5) and the base colour factor's alpha.
+struct GltfCutout {
+  double cutoff = 0.0;
+  double factor = 1.0;
+};
+GltfCutout readCutout(const tinygltf::Material& gltf, std::size_t index, const GltfReader& reader);
+
 // gltf_transmission.cpp: member `key` of extension object `value` at field
 // `where`, a finite number; `fallback` when absent.
 double member(const tinygltf::Value& value, const char* key, double fallback, const std::string& where,

@@ -136,7 +136,15 @@ void checkBeforeParsing(std::string_view json, const std::string& source) {
   const nlohmann::json gltf = nlohmann::json::parse(json, nullptr, false);
   if (!gltf.is_object()) return;
   checkImageViews(gltf, source);
-  if (gltf.contains("materials")) checkTextureInfos(gltf["materials"], "materials", source);
+  if (!gltf.contains("materials")) return;
+  checkTextureInfos(gltf["materials"], "materials", source);
+  // tinygltf reads an alphaCutoff that is not a number as if it were absent.
+  for (std::size_t i = 0; gltf["materials"].is_array() && i < gltf["materials"].size(); ++i) {
+    const nlohmann::json& m = gltf["materials"][i];
+    if (m.is_object() && m.contains("alphaCutoff") && !m["alphaCutoff"].is_number())
+      throw InputError(source, 0, "materials[" + std::to_string(i) + "].alphaCutoff",
+                       "must be a number of at least 0, is " + m["alphaCutoff"].dump());
+  }
 }
 
 // What tinygltf reads besides the file itself goes through facet's own checks:
@@ -267,8 +275,11 @@ Scene loadGltfScene(const std::filesystem::path& path) {
   Scene scene;
   scene.source = path;
   detail::TextureTable textures(model, reader, scene.textures);
-  for (std::size_t i = 0; i < model.materials.size(); ++i)
+  std::vector<detail::GltfCutout> cutouts;
+  for (std::size_t i = 0; i < model.materials.size(); ++i) {
     scene.materials.push_back(detail::toMaterial(model.materials[i], i, reader, textures));
+    cutouts.push_back(detail::readCutout(model.materials[i], i, reader));
+  }
   const int defaultMaterialIndex = int(scene.materials.size());
   scene.materials.push_back(defaultMaterial());
 
@@ -296,6 +307,12 @@ Scene loadGltfScene(const std::filesystem::path& path) {
         // glTF culls the back faces of a material that is not doubleSided,
         // its default material's included.
         object.oneSided = material == defaultMaterialIndex || !model.materials[std::size_t(material)].doubleSided;
+        if (material != defaultMaterialIndex) {
+          object.alphaCutoff = cutouts[std::size_t(material)].cutoff;
+          object.alphaFactor = cutouts[std::size_t(material)].factor;
+          if (const auto& t = scene.materials[std::size_t(material)].textures)
+            object.alphaTexture = t->baseColorTexture;
+        }
         scene.objects.push_back(std::move(object));
       }
       if (scene.objects.size() == firstObject) reader.fail(meshWhere, "has no faces");

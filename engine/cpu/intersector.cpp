@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "rules/rules.h"
+#include "scenes/texture.h"
 
 namespace facet::cpu {
 
@@ -28,10 +29,16 @@ std::optional<SurfaceHit> TessellatedIntersector::closestHit(const Ray& ray) con
 std::unique_ptr<Intersector> objectIntersector(const scene::Scene& scene, std::size_t index,
                                                const scene::ObjectGeometry& object, const ExactSettings& settings) {
   const scene::Object& source = scene.objects[index];
+  const bool culls = scene::cullsBackFaces(source, scene.materials[std::size_t(source.material)]);
   HitFilter filter;
-  if (scene::cullsBackFaces(source, scene.materials[std::size_t(source.material)]))
-    filter = [](const Ray& ray, const SurfaceHit& hit) {
-      return !rules::f64::is_back_face(ray.direction, hit.geometricNormal);
+  if (culls || scene::hasCutout(source))
+    filter = [culls, &source, &surface = object.surface, &textures = scene.textures](const Ray& ray,
+                                                                                     const SurfaceHit& hit) {
+      if (culls && rules::f64::is_back_face(ray.direction, hit.geometricNormal)) return false;
+      if (!scene::hasCutout(source)) return true;
+      const glm::dvec2 uv = surface.evaluateTexcoord(hit.patch, hit.u, hit.v).uv;
+      const double alpha = scene::sampleSlot(textures, source.alphaTexture, rules::f64::cutout_footprint(uv)).a;
+      return rules::f64::cutout_present(source.alphaFactor, alpha, source.alphaCutoff);
     };
   if (scene.render.method == scene::IntersectionMethod::Tessellated)
     return std::make_unique<TessellatedIntersector>(object.surface, object.bvh, object.refinement.tessellationRate,

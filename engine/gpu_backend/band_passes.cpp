@@ -32,12 +32,17 @@ bool transmits(const scene::Scene& scene) {
   return false;
 }
 
-// Whether some object culls its back faces: only then do the tracing kernels
-// take CULLING = 1, so that other scenes run exactly the kernels they did.
+// Whether some object culls its back faces, has a cutout: only then do the
+// tracing kernels take CULLING = 1, CUTOUTS = 1, so that other scenes run
+// exactly the kernels they did (compute/raycast/traversal/hit_filter.glsl).
 bool culls(const scene::Scene& scene) {
   for (const scene::Object& object : scene.objects)
     if (scene::cullsBackFaces(object, scene.materials[std::size_t(object.material)])) return true;
   return false;
+}
+
+bool cutsOut(const scene::Scene& scene) {
+  return std::any_of(scene.objects.begin(), scene.objects.end(), scene::hasCutout);
 }
 
 double environmentMethod(const scene::Scene& scene) {
@@ -76,8 +81,10 @@ Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::
                 const ibl::CompensationTables& compensation, bool tessellated) {
   std::vector<gpu::ConstantEntry> method{{"METHOD", tessellated ? 1.0 : 0.0}};
   std::vector<gpu::ConstantEntry> cameraFallback{{"SHADOW", 0}}, shadowFallback{{"SHADOW", 1}};
-  if (culls(scene))
-    for (auto* constants : {&method, &cameraFallback, &shadowFallback}) constants->push_back({"CULLING", 1});
+  for (auto* constants : {&method, &cameraFallback, &shadowFallback}) {
+    if (culls(scene)) constants->push_back({"CULLING", 1});
+    if (cutsOut(scene)) constants->push_back({"CUTOUTS", 1});
+  }
   std::vector<gpu::ConstantEntry> surface{{"LIGHT_COUNT", double(scene.lights.size())},
                                           {"ENVIRONMENT", environmentMethod(scene)},
                                           {"OCCLUSION", scene.environment && scene.environment->occlusion ? 1.0 : 0.0},

@@ -1,5 +1,7 @@
 #include "engine/gpu_backend/gpu_scene.h"
 
+#include "engine/gpu_backend/texture_data.h"
+
 #include <algorithm>
 #include <string>
 
@@ -90,6 +92,16 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
     range.flags = scene::cullsBackFaces(sceneObject, scene.materials[std::size_t(sceneObject.material)])
                       ? layout::FACET_OBJECT_CULL_BACK_FACES
                       : 0u;
+    if (scene::hasCutout(sceneObject)) {
+      range.flags |= layout::FACET_OBJECT_CUTOUT;
+      range.alphaCutoff = float(sceneObject.alphaCutoff);
+      range.alphaFactor = float(sceneObject.alphaFactor);
+      const layout::TextureSlotRecord slot = textureSlotRecord(sceneObject.alphaTexture);
+      range.alphaTexture = slot.texture;
+      range.alphaOffsetX = slot.offsetX, range.alphaOffsetY = slot.offsetY;
+      range.alphaCosRotation = slot.cosRotation, range.alphaSinRotation = slot.sinRotation;
+      range.alphaScaleX = slot.scaleX, range.alphaScaleY = slot.scaleY;
+    }
     packed.objects.push_back(range);
 
     for (std::size_t slot = 0; slot < bvh.leafPatches().size(); ++slot) {

@@ -20,6 +20,7 @@
 #include "scenes/scene_geometry.h"
 #include "tests/support/cages.h"
 #include "tests/support/gpu_device.h"
+#include "tests/support/path_parity.h"
 #include "tests/support/textured_gltf.h"
 
 namespace facet {
@@ -89,7 +90,9 @@ TEST_P(OneSided, AQuadIsSeenFromItsFrontOnly) {
         for (const Image* image : {&reference, &gpu}) {
           const glm::vec4 centre = image->beauty[image->index(6, 6)];
           EXPECT_EQ(centre.a, seen ? 1.0f : 0.0f);
-          if (seen) EXPECT_GT(centre.r, 0.05f);  // lit: the light is on the side it is seen from
+          if (seen) {
+            EXPECT_GT(centre.r, 0.05f);  // lit: the light is on the side it is seen from
+          }
         }
       }
 }
@@ -159,9 +162,7 @@ TEST_P(OneSided, EveryRayPassesOverABackFace) {
 
 INSTANTIATE_TEST_SUITE_P(Methods, OneSided,
                          ::testing::Values(scene::IntersectionMethod::Exact, scene::IntersectionMethod::Tessellated),
-                         [](const ::testing::TestParamInfo<scene::IntersectionMethod>& info) {
-                           return info.param == scene::IntersectionMethod::Exact ? "exact" : "tessellated";
-                         });
+                         facet::testing::methodName);
 
 }  // namespace
 }  // namespace facet
