@@ -38,6 +38,8 @@
 #include "rules/surface/authored_normal.h"
 #include "rules/surface/limit_normal.h"
 #include "rules/surface/tangent.h"
+#include "rules/surface/back_face.h"
+#include "rules/surface/cutout.h"
 #include "rules/grid/config.h"
 #include "rules/grid/workgroup_grid.h"
 #undef FACET_REAL

@@ -124,10 +124,10 @@ void warnOfIgnoredFeatures(const tinygltf::Model& model, const GltfReader& reade
   for (std::size_t i = 0; i < model.materials.size(); ++i) {
     const tinygltf::Material& m = model.materials[i];
     const std::string at = "materials[" + std::to_string(i) + "]";
-    if (m.alphaMode == "MASK")
-      reader.warn(at + ".alphaMode", "MASK is not read; the surface renders opaque, without its cutout");
-    else if (m.alphaMode == "BLEND")
-      reader.warn(at + ".alphaMode", "BLEND is not read; the surface renders opaque");
+    if (m.alphaMode == "BLEND")
+      reader.warn(at + ".alphaMode",
+                  "BLEND is read as MASK at alphaCutoff 0.5: the surface is present where its alpha is at least 0.5 "
+                  "and absent elsewhere, never partly transparent");
   }
 }
 

@@ -101,6 +101,15 @@ class TextureTable {
 materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index, const GltfReader& reader,
                                TextureTable& textures, bool vertexColours = false);
 
+// gltf_materials.cpp: glTF's alphaMode of material `index` as an Object
+// carries it (scenes/scene.h): the cutoff (0: OPAQUE; MASK's alphaCutoff;
+// BLEND read as MASK at 0.5) and the base colour factor's alpha.
+struct GltfCutout {
+  double cutoff = 0.0;
+  double factor = 1.0;
+};
+GltfCutout readCutout(const tinygltf::Material& gltf, std::size_t index, const GltfReader& reader);
+
 // gltf_transmission.cpp: member `key` of extension object `value` at field
 // `where`, a finite number; `fallback` when absent.
 double member(const tinygltf::Value& value, const char* key, double fallback, const std::string& where,
@@ -139,11 +148,6 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& p
 // used one it ignores and of the core features it does not render as written.
 void checkExtensions(const tinygltf::Model& model, const GltfReader& reader);
 void warnOfIgnoredFeatures(const tinygltf::Model& model, const GltfReader& reader);
-
-// Whether the faces of `cages` together have an edge that only one of them
-// uses (edges compared by their ends' positions, so that a mesh instance
-// split by material counts as the one surface it is).
-bool hasBoundary(const std::vector<const ControlCage*>& cages);
 
 // gltf_nodes.cpp
 glm::dmat4 localTransform(const tinygltf::Node& node);

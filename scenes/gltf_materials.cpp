@@ -254,4 +254,23 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
   return m;
 }
 
+GltfCutout readCutout(const tinygltf::Material& gltf, std::size_t index, const GltfReader& reader) {
+  const std::string material = "materials[" + std::to_string(index) + "]";
+  GltfCutout cutout;
+  if (gltf.pbrMetallicRoughness.baseColorFactor.size() == 4)
+    cutout.factor = gltf.pbrMetallicRoughness.baseColorFactor[3];
+  if (gltf.alphaMode == "OPAQUE") return cutout;
+  if (gltf.alphaMode == "BLEND") {
+    cutout.cutoff = 0.5;
+    return cutout;
+  }
+  if (gltf.alphaMode != "MASK")
+    reader.fail(material + ".alphaMode", "must be OPAQUE, MASK or BLEND, is \"" + gltf.alphaMode + "\"");
+  // glTF 2.0, 5.19: at least 0; 0 keeps every hit, as OPAQUE does.
+  if (!(gltf.alphaCutoff >= 0.0 && std::isfinite(gltf.alphaCutoff)))
+    reader.fail(material + ".alphaCutoff", "must be a number of at least 0, is " + formatNumber(gltf.alphaCutoff));
+  cutout.cutoff = gltf.alphaCutoff;
+  return cutout;
+}
+
 }  // namespace facet::scene::detail

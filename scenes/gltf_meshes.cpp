@@ -207,21 +207,4 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& p
   return cage;
 }
 
-bool hasBoundary(const std::vector<const ControlCage*>& cages) {
-  using Point = std::tuple<double, double, double>;
-  std::map<std::pair<Point, Point>, int> edges;
-  for (const ControlCage* cage : cages)
-    for (std::size_t f = 0, first = 0; f < cage->faceVertexCounts.size();
-         first += std::size_t(cage->faceVertexCounts[f++]))
-      for (std::size_t c = 0; c < std::size_t(cage->faceVertexCounts[f]); ++c) {
-        const auto point = [&](std::size_t corner) {
-          const glm::dvec3& p = cage->positions[std::size_t(cage->faceVertexIndices[first + corner])];
-          return Point{p.x, p.y, p.z};
-        };
-        const Point a = point(c), b = point((c + 1) % std::size_t(cage->faceVertexCounts[f]));
-        ++edges[std::minmax(a, b)];
-      }
-  return std::any_of(edges.begin(), edges.end(), [](const auto& edge) { return edge.second == 1; });
-}
-
 }  // namespace facet::scene::detail

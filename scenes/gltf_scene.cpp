@@ -136,7 +136,15 @@ void checkBeforeParsing(std::string_view json, const std::string& source) {
   const nlohmann::json gltf = nlohmann::json::parse(json, nullptr, false);
   if (!gltf.is_object()) return;
   checkImageViews(gltf, source);
-  if (gltf.contains("materials")) checkTextureInfos(gltf["materials"], "materials", source);
+  if (!gltf.contains("materials")) return;
+  checkTextureInfos(gltf["materials"], "materials", source);
+  // tinygltf reads an alphaCutoff that is not a number as if it were absent.
+  for (std::size_t i = 0; gltf["materials"].is_array() && i < gltf["materials"].size(); ++i) {
+    const nlohmann::json& m = gltf["materials"][i];
+    if (m.is_object() && m.contains("alphaCutoff") && !m["alphaCutoff"].is_number())
+      throw InputError(source, 0, "materials[" + std::to_string(i) + "].alphaCutoff",
+                       "must be a number of at least 0, is " + m["alphaCutoff"].dump());
+  }
 }
 
 // What tinygltf reads besides the file itself goes through facet's own checks:
@@ -240,21 +248,6 @@ std::string objectName(const std::string& mesh, std::size_t k) {
   return name;
 }
 
-// glTF culls the back faces of a material that is not doubleSided (the
-// default); facet renders both, which shows only where the surface is open.
-void warnOfOneSidedOpenMesh(const tinygltf::Model& model, const Scene& scene, std::size_t firstObject,
-                            const detail::GltfReader& reader) {
-  std::vector<const ControlCage*> cages;
-  for (std::size_t o = firstObject; o < scene.objects.size(); ++o) cages.push_back(&scene.objects[o].cage);
-  if (!detail::hasBoundary(cages)) return;
-  for (std::size_t o = firstObject; o < scene.objects.size(); ++o) {
-    const std::size_t material = std::size_t(scene.objects[o].material);
-    if (material < model.materials.size() && !model.materials[material].doubleSided)
-      reader.warn("materials[" + std::to_string(material) + "].doubleSided",
-                  "false is not read; the back faces of its open meshes render too");
-  }
-}
-
 }  // namespace
 
 Scene loadGltfScene(const std::filesystem::path& path) {
@@ -294,8 +287,11 @@ Scene loadGltfScene(const std::filesystem::path& path) {
   scene.source = path;
   detail::TextureTable textures(model, reader, scene.textures);
   const std::vector<bool> coloured = materialsWithVertexColours(model);
-  for (std::size_t i = 0; i < model.materials.size(); ++i)
+  std::vector<detail::GltfCutout> cutouts;
+  for (std::size_t i = 0; i < model.materials.size(); ++i) {
     scene.materials.push_back(detail::toMaterial(model.materials[i], i, reader, textures, coloured[i]));
+    cutouts.push_back(detail::readCutout(model.materials[i], i, reader));
+  }
   const int defaultMaterialIndex = int(scene.materials.size());
   scene.materials.push_back(defaultMaterial());
   if (coloured.back()) {
@@ -328,10 +324,18 @@ Scene loadGltfScene(const std::filesystem::path& path) {
         if (object.cage.faceCount() == 0) continue;  // only triangles without area
         object.subdivision = Subdivision::None;
         object.material = material;
+        // glTF culls the back faces of a material that is not doubleSided,
+        // its default material's included.
+        object.oneSided = material == defaultMaterialIndex || !model.materials[std::size_t(material)].doubleSided;
+        if (material != defaultMaterialIndex) {
+          object.alphaCutoff = cutouts[std::size_t(material)].cutoff;
+          object.alphaFactor = cutouts[std::size_t(material)].factor;
+          if (const auto& t = scene.materials[std::size_t(material)].textures)
+            object.alphaTexture = t->baseColorTexture;
+        }
         scene.objects.push_back(std::move(object));
       }
       if (scene.objects.size() == firstObject) reader.fail(meshWhere, "has no faces");
-      warnOfOneSidedOpenMesh(model, scene, firstObject, reader);
     }
     if (node.camera >= 0 && !camera) {
       if (std::size_t(node.camera) >= model.cameras.size()) reader.fail(where, "camera index out of range");

@@ -131,7 +131,25 @@ struct Object {
   // Catmull-Clark only.
   std::optional<int> isolationLevel;  // overrides the choice from pixelTolerance
   EndCapBasis endCaps = EndCapBasis::Gregory;
+  // glTF's doubleSided false: rays pass over the back faces (cullsBackFaces).
+  bool oneSided = false;
+  // glTF's alphaMode MASK (BLEND is read as MASK at 0.5): rays pass over the
+  // surface where alphaFactor x the alpha of alphaTexture, the material's
+  // base colour slot, is below alphaCutoff (rules/surface/cutout.h); 0: opaque.
+  double alphaCutoff = 0.0;
+  double alphaFactor = 1.0;
+  materials::TextureSlot alphaTexture;
 };
+
+// Whether rays pass over part of an object's surface by its alpha.
+inline bool hasCutout(const Object& object) { return object.alphaCutoff > 0.0; }
+
+// Whether rays pass over an object's back faces (docs/rendering.md,
+// "One-sided surfaces"): a one-sided object's, unless its material transmits,
+// whose inside a path sees through its back faces.
+inline bool cullsBackFaces(const Object& object, const materials::Material& material) {
+  return object.oneSided && !materials::isTransmissive(material);
+}
 
 struct Scene {
   std::filesystem::path source;

@@ -30,7 +30,25 @@ struct ObjectRange {
   uint firstGridVertex;    // tessellated: (k + 1)^2 limit points per patch
   uint firstEdgeMidpoint;  // tessellated: 4 k per patch (those of unsplit edges unused)
   uint channels;           // its face-varying channels, FACET_CHANNEL_* bits (patch_records.h)
+  uint flags;              // FACET_OBJECT_* bits
+  // FACET_OBJECT_CUTOUT (rules/surface/cutout.h): the cutoff, the alpha
+  // factor and the texture slot (a TextureSlotRecord's fields) of its alpha.
+  float alphaCutoff;
+  float alphaFactor;
+  uint alphaTexture;
+  float alphaOffsetX;
+  float alphaOffsetY;
+  float alphaCosRotation;
+  float alphaSinRotation;
+  float alphaScaleX;
+  float alphaScaleY;
+  uint alphaTexCoord;
 };
+
+// The object passes over its back faces (rules/surface/back_face.h).
+const uint FACET_OBJECT_CULL_BACK_FACES = 1u;
+// The object passes over where its alpha is below its cutoff.
+const uint FACET_OBJECT_CUTOUT = 2u;
 
 // A ray from `origin` along `direction`, over [tMin, tMax).
 struct RayRecord {

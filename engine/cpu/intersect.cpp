@@ -83,8 +83,9 @@ struct Piece {
 
 class ExactPatchIntersector {
  public:
-  ExactPatchIntersector(const SubdivisionSurface& surface, const Ray& ray, const ExactSettings& settings)
-      : surface_(surface), ray_(ray), settings_(settings) {
+  ExactPatchIntersector(const SubdivisionSurface& surface, const Ray& ray, const ExactSettings& settings,
+                        const HitFilter& filter)
+      : surface_(surface), ray_(ray), settings_(settings), filter_(filter) {
     const double diagonal = surface.bounds().diagonal();
     tolerance_ = settings.tolerance > 0.0 ? settings.tolerance : 1e-9 * diagonal;
     minimumPieceSize_ =
@@ -172,7 +173,6 @@ class ExactPatchIntersector {
         s >= piece.s0 - margin && s <= piece.s1 + margin && t >= piece.t0 - margin && t <= piece.t1 + margin;
     if (rayT >= tBest) return inside;
 
-    tBest = rayT;
     SurfaceHit hit;
     hit.t = rayT;
     hit.position = point.position;
@@ -183,7 +183,9 @@ class ExactPatchIntersector {
     hit.u = faceU(s);
     hit.v = faceV(t);
     hit.geometricNormal = limitNormal(surface_, index, hit.u, hit.v);
+    if (filter_ && !filter_(ray_, hit)) return inside;
     hit.shadingNormal = shadingNormal(surface_, index, hit.u, hit.v, hit.geometricNormal);
+    tBest = rayT;
     best = hit;
     return inside;
   }
@@ -191,6 +193,7 @@ class ExactPatchIntersector {
   const SubdivisionSurface& surface_;
   const Ray& ray_;
   const ExactSettings& settings_;
+  const HitFilter& filter_;
   double tolerance_ = 0.0;
   double minimumPieceSize_ = 0.0;
 };
@@ -198,9 +201,9 @@ class ExactPatchIntersector {
 }  // namespace
 
 std::optional<SurfaceHit> intersectExact(const SubdivisionSurface& surface, const PatchBvh& bvh, const Ray& ray,
-                                         const ExactSettings& settings) {
+                                         const ExactSettings& settings, const HitFilter& filter) {
   if (!usable(ray)) return std::nullopt;
-  ExactPatchIntersector patches(surface, ray, settings);
+  ExactPatchIntersector patches(surface, ray, settings, filter);
   std::optional<SurfaceHit> best;
   double tBest = ray.tMax;
   traverse(bvh, ray, tBest, [&](int patch) { patches.intersect(patch, tBest, best); });
@@ -336,7 +339,8 @@ int cellTriangles(const TessellatedSurface& tessellation, int patch, unsigned tr
 }  // namespace
 
 std::optional<SurfaceHit> intersectTessellated(const SubdivisionSurface& surface, const PatchBvh& bvh,
-                                               const TessellatedSurface& tessellation, const Ray& ray) {
+                                               const TessellatedSurface& tessellation, const Ray& ray,
+                                               const HitFilter& filter) {
   if (!usable(ray)) return std::nullopt;
   std::optional<SurfaceHit> best;
   double tBest = ray.tMax;
@@ -355,7 +359,6 @@ std::optional<SurfaceHit> intersectTessellated(const SubdivisionSurface& surface
           double t, wb, wc;
           if (!rayHitsTriangle(ray, a.position, b.position, c.position, t, wb, wc) || t < ray.tMin || t >= tBest)
             continue;
-          tBest = t;
           const glm::dvec2 step = (1.0 - wb - wc) * a.step + wb * b.step + wc * c.step;
           SurfaceHit hit;
           hit.t = t;
@@ -366,6 +369,8 @@ std::optional<SurfaceHit> intersectTessellated(const SubdivisionSurface& surface
           hit.coarseFace = info.coarseFace;
           hit.u = info.domain.u0 + info.domain.size * step.x / k;
           hit.v = info.domain.v0 + info.domain.size * step.y / k;
+          if (filter && !filter(ray, hit)) continue;
+          tBest = t;
           hit.shadingNormal = shadingNormal(surface, patch, hit.u, hit.v, limitNormal(surface, patch, hit.u, hit.v));
           best = hit;
         }

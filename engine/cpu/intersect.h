@@ -24,6 +24,11 @@
 // along it becomes a fan around the mean of its corners: the grids then
 // meet vertex to vertex and the tessellation is watertight.
 //
+// A hit the optional filter refuses (a one-sided object's back face,
+// docs/rendering.md "One-sided surfaces") is passed over as if the surface
+// were not there, and the search goes on beyond it; for the exact method a
+// refused root still settles its piece, as an accepted one does.
+//
 // Both are pure functions of their arguments (no caches, no globals), so
 // many threads may cast rays against one surface at once. A ray whose
 // direction is zero or not finite hits nothing.
@@ -32,6 +37,7 @@
 #include "scenes/patch_bvh.h"
 #include "scenes/subdivision_surface.h"
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -50,8 +56,12 @@ struct ExactSettings {
   int maxDepth = 30;
 };
 
+// Whether a hit counts; empty: every hit does.
+using HitFilter = std::function<bool(const Ray& ray, const SurfaceHit& hit)>;
+
 std::optional<SurfaceHit> intersectExact(const scene::SubdivisionSurface& surface, const scene::PatchBvh& bvh,
-                                         const Ray& ray, const ExactSettings& settings = {});
+                                         const Ray& ray, const ExactSettings& settings = {},
+                                         const HitFilter& filter = {});
 
 // Limit points on a k x k grid over every patch.
 class TessellatedSurface {
@@ -80,6 +90,7 @@ class TessellatedSurface {
 };
 
 std::optional<SurfaceHit> intersectTessellated(const scene::SubdivisionSurface& surface, const scene::PatchBvh& bvh,
-                                               const TessellatedSurface& tessellation, const Ray& ray);
+                                               const TessellatedSurface& tessellation, const Ray& ray,
+                                               const HitFilter& filter = {});
 
 }  // namespace facet::cpu

@@ -2,13 +2,18 @@
 // One object's ray caster for the reference renderer, its method chosen when
 // the scene is built: after pbrt-v4's Primitive, with Intersect as closestHit
 // and IntersectP as anyHit. Each refers to the object's surface and BVH, which
-// must outlive it, and owns what its method adds to them.
+// must outlive it, and owns what its method adds to them. Its filter (empty:
+// none) decides which hits count (intersect.h).
 
 #include "engine/cpu/intersect.h"
 #include "engine/cpu/ray.h"
 #include "scenes/patch_bvh.h"
+#include "scenes/scene.h"
+#include "scenes/scene_geometry.h"
 #include "scenes/subdivision_surface.h"
 
+#include <cstddef>
+#include <memory>
 #include <optional>
 
 namespace facet::cpu {
@@ -32,7 +37,7 @@ class Intersector {
 class ExactIntersector final : public Intersector {
  public:
   ExactIntersector(const scene::SubdivisionSurface& surface, const scene::PatchBvh& bvh,
-                   const ExactSettings& settings = {});
+                   const ExactSettings& settings = {}, HitFilter filter = {});
 
   std::optional<SurfaceHit> closestHit(const Ray& ray) const override;
 
@@ -40,12 +45,14 @@ class ExactIntersector final : public Intersector {
   const scene::SubdivisionSurface& surface_;
   const scene::PatchBvh& bvh_;
   ExactSettings settings_;
+  HitFilter filter_;
 };
 
 // The surface diced k x k per patch (intersectTessellated), once, on construction.
 class TessellatedIntersector final : public Intersector {
  public:
-  TessellatedIntersector(const scene::SubdivisionSurface& surface, const scene::PatchBvh& bvh, int rate);
+  TessellatedIntersector(const scene::SubdivisionSurface& surface, const scene::PatchBvh& bvh, int rate,
+                         HitFilter filter = {});
 
   std::optional<SurfaceHit> closestHit(const Ray& ray) const override;
 
@@ -53,6 +60,14 @@ class TessellatedIntersector final : public Intersector {
   const scene::SubdivisionSurface& surface_;
   const scene::PatchBvh& bvh_;
   TessellatedSurface tessellation_;
+  HitFilter filter_;
 };
+
+// The intersector of the scene's object `index` (its geometry `object`) by
+// the scene's method, with the filter of what its surface leaves out: a
+// one-sided object's back faces (scene::cullsBackFaces) and where its cutout's
+// alpha is below the cutoff (scene::hasCutout). The scene must outlive it.
+std::unique_ptr<Intersector> objectIntersector(const scene::Scene& scene, std::size_t index,
+                                               const scene::ObjectGeometry& object, const ExactSettings& settings);
 
 }  // namespace facet::cpu

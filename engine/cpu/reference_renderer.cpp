@@ -50,11 +50,7 @@ class ReferenceScene final : public PathScene {
       faceOffset_.push_back(faces);
       patches += object.surface.patchCount();
       faces += scene.objects[i].cage.faceCount();
-      if (scene.render.method == scene::IntersectionMethod::Tessellated)
-        intersectors_.push_back(
-            std::make_unique<TessellatedIntersector>(object.surface, object.bvh, object.refinement.tessellationRate));
-      else
-        intersectors_.push_back(std::make_unique<ExactIntersector>(object.surface, object.bvh, exactSettings));
+      intersectors_.push_back(objectIntersector(scene, i, object, exactSettings));
       const materials::Material& material = scene.materials[std::size_t(scene.objects[i].material)];
       params_.push_back(materials::toParams64(material));
       transmission_.push_back(materials::isTransmissive(material)

@@ -32,6 +32,19 @@ bool transmits(const scene::Scene& scene) {
   return false;
 }
 
+// Whether some object culls its back faces, has a cutout: only then do the
+// tracing kernels take CULLING = 1, CUTOUTS = 1, so that other scenes run
+// exactly the kernels they did (compute/raycast/traversal/hit_filter.glsl).
+bool culls(const scene::Scene& scene) {
+  for (const scene::Object& object : scene.objects)
+    if (scene::cullsBackFaces(object, scene.materials[std::size_t(object.material)])) return true;
+  return false;
+}
+
+bool cutsOut(const scene::Scene& scene) {
+  return std::any_of(scene.objects.begin(), scene.objects.end(), scene::hasCutout);
+}
+
 double environmentMethod(const scene::Scene& scene) {
   if (!scene.environment) return 0;
   switch (scene.environment->method) {
@@ -73,7 +86,12 @@ bool perHitMaterials(const scene::Scene& scene) {
 
 Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::EnvironmentLighting* lighting,
                 const ibl::CompensationTables& compensation, bool tessellated) {
-  const std::vector<gpu::ConstantEntry> method{{"METHOD", tessellated ? 1.0 : 0.0}};
+  std::vector<gpu::ConstantEntry> method{{"METHOD", tessellated ? 1.0 : 0.0}};
+  std::vector<gpu::ConstantEntry> cameraFallback{{"SHADOW", 0}}, shadowFallback{{"SHADOW", 1}};
+  for (auto* constants : {&method, &cameraFallback, &shadowFallback}) {
+    if (culls(scene)) constants->push_back({"CULLING", 1});
+    if (cutsOut(scene)) constants->push_back({"CUTOUTS", 1});
+  }
   std::vector<gpu::ConstantEntry> surface{{"LIGHT_COUNT", double(scene.lights.size())},
                                           {"ENVIRONMENT", environmentMethod(scene)},
                                           {"OCCLUSION", scene.environment && scene.environment->occlusion ? 1.0 : 0.0},
@@ -103,9 +121,9 @@ Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::
             &pipelines.get("dispatch_args", {}), &pipelines.get("shadow", method),
             &pipelines.get("gather", {}),        &pipelines.get("resolve", {})};
   if (!tessellated) {
-    k.cameraFallbacks = &pipelines.get("fallback", {{"SHADOW", 0}});
+    k.cameraFallbacks = &pipelines.get("fallback", cameraFallback);
     k.resolveCameraFallbacks = &pipelines.get("fallback_resolve", {});
-    k.shadowFallbacks = &pipelines.get("fallback", {{"SHADOW", 1}});
+    k.shadowFallbacks = &pipelines.get("fallback", shadowFallback);
   }
   if (scene.render.bounces > 0) {
     std::vector<gpu::ConstantEntry> pathSurface = surface;
@@ -123,7 +141,8 @@ Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::
     k.continuePaths = &pipelines.get("continue_paths", continuation);
     k.pathIntersect = &pipelines.get("intersect", pathIntersect);
     k.pathGather = &pipelines.get("gather", pathGather);
-    if (!tessellated) k.pathFallbacks = &pipelines.get("fallback", {{"SHADOW", 0}, {"PATHS", 1}});
+    cameraFallback.push_back({"PATHS", 1});
+    if (!tessellated) k.pathFallbacks = &pipelines.get("fallback", cameraFallback);
   }
   return k;
 }

@@ -1,5 +1,7 @@
 #include "engine/gpu_backend/gpu_scene.h"
 
+#include "engine/gpu_backend/texture_data.h"
+
 #include <algorithm>
 #include <string>
 
@@ -99,6 +101,21 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
     range.channels = 0;
     for (int c = 0; c < scene::kChannelCount; ++c)
       if (surface.hasChannel(scene::Channel(c))) range.channels |= 1u << c;
+    const scene::Object& sceneObject = scene.objects[i];
+    range.flags = scene::cullsBackFaces(sceneObject, scene.materials[std::size_t(sceneObject.material)])
+                      ? layout::FACET_OBJECT_CULL_BACK_FACES
+                      : 0u;
+    if (scene::hasCutout(sceneObject)) {
+      range.flags |= layout::FACET_OBJECT_CUTOUT;
+      range.alphaCutoff = float(sceneObject.alphaCutoff);
+      range.alphaFactor = float(sceneObject.alphaFactor);
+      const layout::TextureSlotRecord slot = textureSlotRecord(sceneObject.alphaTexture);
+      range.alphaTexture = slot.texture;
+      range.alphaOffsetX = slot.offsetX, range.alphaOffsetY = slot.offsetY;
+      range.alphaCosRotation = slot.cosRotation, range.alphaSinRotation = slot.sinRotation;
+      range.alphaScaleX = slot.scaleX, range.alphaScaleY = slot.scaleY;
+      range.alphaTexCoord = slot.texCoord;
+    }
     packed.objects.push_back(range);
 
     for (std::size_t slot = 0; slot < bvh.leafPatches().size(); ++slot) {

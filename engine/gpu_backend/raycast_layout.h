@@ -25,7 +25,7 @@ using rules::f32::uint;
 static_assert(sizeof(facet::gpu_layout::PatchRecord) == 16 * facet::gpu_layout::FACET_PATCH_RECORD_TEXELS);
 static_assert(offsetof(facet::gpu_layout::PatchRecord, faceU0) == 16);
 static_assert(offsetof(facet::gpu_layout::PatchRecord, ptexFace) == 28);
-static_assert(sizeof(facet::gpu_layout::ObjectRange) == 56);
+static_assert(sizeof(facet::gpu_layout::ObjectRange) == 100);
 static_assert(sizeof(facet::gpu_layout::RayRecord) == 32);
 static_assert(sizeof(facet::gpu_layout::ShadowRayRecord) == 36);
 static_assert(sizeof(facet::gpu_layout::RenderCounters) == 68);

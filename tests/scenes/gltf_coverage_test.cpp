@@ -78,17 +78,66 @@ TEST_F(GltfCoverage, IgnoredCoreFeaturesAreWarnings) {
   parts["meshes"] = {
       {{"primitives",
         {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}, {"COLOR_1", 0}}}, {"indices", 2}, {"material", 0}}}}}};
-  const Scene mask = load("mask", {{"alphaMode", "MASK"}}, parts);
-  EXPECT_THAT(mask.warnings,
-              ElementsAre(HasSubstr("mask.gltf: meshes[0].primitives[0].attributes.COLOR_1: only COLOR_0 is read"),
+  const Scene blend = load("blend", {{"alphaMode", "BLEND"}}, parts);
+  EXPECT_THAT(blend.warnings,
+              ElementsAre(HasSubstr("blend.gltf: meshes[0].primitives[0].attributes.COLOR_1: only COLOR_0 is read"),
                           HasSubstr("animations: animations are not read"),
-                          HasSubstr("materials[0].alphaMode: MASK is not read; the surface renders opaque")));
-  EXPECT_THAT(load("blend", {{"alphaMode", "BLEND"}}).warnings,
-              ElementsAre(HasSubstr("materials[0].alphaMode: BLEND is not read")));
-  // The quad is open: its back faces would show where glTF culls them.
-  EXPECT_THAT(load("single", {{"doubleSided", false}}).warnings,
-              ElementsAre(HasSubstr("materials[0].doubleSided: false is not read; the back faces of its open meshes "
-                                    "render too")));
+                          HasSubstr("materials[0].alphaMode: BLEND is read as MASK at alphaCutoff 0.5")));
+}
+
+TEST_F(GltfCoverage, AlphaModesAreCutouts) {
+  // MASK is read: no warning; the object carries the cutoff, the factor's
+  // alpha and the base colour slot.
+  ASSERT_TRUE(facet::testing::writePng(dir_ / "alpha.png", 2, 2, std::vector<facet::testing::Rgba8>(4, {9, 9, 9, 9})));
+  const Scene mask =
+      load("mask",
+           {{"alphaMode", "MASK"},
+            {"alphaCutoff", 0.25},
+            {"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 0.75}}, {"baseColorTexture", {{"index", 0}}}}}},
+           {{"textures", {{{"source", 0}}}}, {"images", {{{"uri", "alpha.png"}}}}});
+  EXPECT_THAT(mask.warnings, IsEmpty());
+  ASSERT_EQ(mask.objects.size(), 1u);
+  EXPECT_EQ(mask.objects[0].alphaCutoff, 0.25);
+  EXPECT_EQ(mask.objects[0].alphaFactor, 0.75);
+  EXPECT_EQ(mask.objects[0].alphaTexture.texture, 0);
+  EXPECT_TRUE(hasCutout(mask.objects[0]));
+  EXPECT_EQ(load("default_cutoff", {{"alphaMode", "MASK"}}).objects[0].alphaCutoff, 0.5);
+  EXPECT_EQ(load("blend_cutoff", {{"alphaMode", "BLEND"}}).objects[0].alphaCutoff, 0.5);
+  EXPECT_FALSE(hasCutout(load("opaque", {{"alphaCutoff", 0.9}}).objects[0]));
+}
+
+TEST_F(GltfCoverage, AlphaCutoffAndModeAreChecked) {
+  EXPECT_THAT(
+      [&] {
+        load("word", {{"alphaMode", "MASK"}, {"alphaCutoff", "half"}});
+      },
+      ThrowsMessage<InputError>(
+          HasSubstr("word.gltf: materials[0].alphaCutoff: must be a number of at least 0, is \"half\"")));
+  EXPECT_THAT(
+      [&] {
+        load("negative", {{"alphaMode", "MASK"}, {"alphaCutoff", -0.5}});
+      },
+      ThrowsMessage<InputError>(
+          HasSubstr("negative.gltf: materials[0].alphaCutoff: must be a number of at least 0, is -0.5")));
+  EXPECT_THAT(
+      [&] {
+        load("mode", {{"alphaMode", "CUTOUT"}});
+      },
+      ThrowsMessage<InputError>(
+          HasSubstr("mode.gltf: materials[0].alphaMode: must be OPAQUE, MASK or BLEND, is \"CUTOUT\"")));
+}
+
+TEST_F(GltfCoverage, OneSidedMaterialsCullTheirBackFaces) {
+  // doubleSided false, written or by default, is read: no warning.
+  const Scene single = load("single", {{"doubleSided", false}});
+  EXPECT_THAT(single.warnings, IsEmpty());
+  ASSERT_EQ(single.objects.size(), 1u);
+  EXPECT_TRUE(single.objects[0].oneSided);
+  EXPECT_FALSE(load("double", nlohmann::json::object()).objects[0].oneSided);
+  // glTF's default material is one-sided too.
+  nlohmann::json parts;
+  parts["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 2}}}}}};
+  EXPECT_TRUE(load("default", nlohmann::json::object(), parts).objects[0].oneSided);
 }
 
 TEST_F(GltfCoverage, LightRangesAndOrthographicCamerasAreWarnings) {
@@ -168,7 +217,7 @@ TEST_F(GltfCoverage, AnOcclusionMapOnAThirdCoordinateSetIsDroppedWithAWarning) {
 }
 
 TEST_F(GltfCoverage, AClosedMeshOfAOneSidedMaterialIsNoWarning) {
-  // A bipyramid of one material, doubleSided false by default: culling would hide nothing.
+  // A bipyramid of one material, doubleSided false by default.
   EXPECT_THAT(loadScene(std::string(FACET_TEST_DATA_DIR) + "/faceted_gem.gltf").warnings, IsEmpty());
 }
 

@@ -1,7 +1,7 @@
 // Newton's method on the ray against a patch, and what its answer decides
 // for a piece of the patch's domain: the exact method's one root finder,
 // for cells (finish_exact.glsl) and the pieces of the fallback
-// (subdivide_cell.glsl). Needs ray.glsl and patch_eval.glsl.
+// (subdivide_cell.glsl). Needs ray.glsl, patch_eval.glsl and trace_bindings.glsl.
 //
 // Float, where the CPU reference works in double: Newton accepts a root
 // within `frame.tolerance` of the ray, a few float ulps of the scene's
@@ -22,7 +22,9 @@ const int NEWTON_ROOT_OUTSIDE = 2;  // elsewhere on the patch
 // the patch's polynomial goes on: a ray that meets a neighbouring patch
 // then converges there instead of stalling on the edge, and the root,
 // though not a hit, tells a steep ray that this cell holds none. A root on
-// the patch in [tMin, best.t) becomes the hit.
+// the patch in [tMin, best.t) becomes the hit, unless the object passes
+// over it (hit_filter.glsl; the normal is ds x dt); a root passed over still
+// settles its piece, as the CPU's does.
 const int NEWTON_STEPS = 10;
 const float NEWTON_OVERSHOOT = 0.5;
 
@@ -68,11 +70,13 @@ int newton(ControlPoints c, Ray ray, uint patchIndex, uint object, vec4 piece, v
   float margin = 1e-6 * (piece.y - piece.x);
   bool inside = s >= piece.x - margin && s <= piece.y + margin && t >= piece.z - margin && t <= piece.w + margin;
   bool onPatch = s >= -margin && s <= 1.0 + margin && t >= -margin && t <= 1.0 + margin;
-  if (onPatch && rayT >= ray.tMin && rayT < best.t) {
+  vec2 st = clamp(vec2(s, t), 0.0, 1.0);
+  if (onPatch && rayT >= ray.tMin && rayT < best.t &&
+      !passes_over(object, ray.direction, cross(point.ds, point.dt), patchIndex, st)) {
     best.t = rayT;
     best.patchIndex = patchIndex;
     best.object = object;
-    best.st = clamp(vec2(s, t), 0.0, 1.0);
+    best.st = st;
     best.geometricNormal = vec3(0.0);
   }
   return inside ? NEWTON_ROOT_INSIDE : NEWTON_ROOT_OUTSIDE;

@@ -349,6 +349,10 @@ TEST(GpuLayout, GlslLayoutOfTheSharedHeadersIsTheCppLayout) {
   FACET_EXPECT_MEMBER(ObjectRange, firstQuadtreeNode);
   FACET_EXPECT_MEMBER(ObjectRange, firstEdgeMidpoint);
   FACET_EXPECT_MEMBER(ObjectRange, channels);
+  FACET_EXPECT_MEMBER(ObjectRange, flags);
+  FACET_EXPECT_MEMBER(ObjectRange, alphaCutoff);
+  FACET_EXPECT_MEMBER(ObjectRange, alphaScaleY);
+  FACET_EXPECT_MEMBER(ObjectRange, alphaTexCoord);
   FACET_EXPECT_MEMBER(ShadowRayRecord, slot);
   FACET_EXPECT_MEMBER(RenderCounters, shadowX);
   FACET_EXPECT_MEMBER(RenderCounters, cameraFallbacks);

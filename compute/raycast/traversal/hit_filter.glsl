@@ -1,0 +1,43 @@
+// Which hits a ray passes over, as if the surface were not there: a
+// one-sided object's back faces (docs/rendering.md, "One-sided surfaces")
+// and where a cutout's alpha is below its cutoff ("Cutouts"). CULLING and
+// CUTOUTS are 1 only where some object needs them, so that other scenes run
+// exactly the kernels they did; the object's flags are read only at a
+// candidate hit. Included by trace_bindings.glsl, after scene_bindings.glsl.
+#ifndef FACET_RAYCAST_HIT_FILTER_GLSL
+#define FACET_RAYCAST_HIT_FILTER_GLSL
+
+#include "rules/language.glsl"
+#include "rules/math.h"
+#include "rules/shading/domain.h"
+#include "rules/shading/microfacet.h"
+#include "rules/shading/fresnel.h"
+#include "rules/shading/brdf.h"
+#include "rules/texture/texture_sampling.h"
+#include "rules/shading/textured_material.h"
+#include "rules/surface/back_face.h"
+#include "rules/surface/cutout.h"
+#include "compute/raycast/common/patch_eval.glsl"
+#include "compute/raycast/shading/texcoord.glsl"
+#include "compute/raycast/shading/textures.glsl"
+
+layout(constant_id = 2) const int CULLING = 0;
+layout(constant_id = 3) const int CUTOUTS = 0;
+
+// Whether `object` passes over a hit at patch-local `st` of PatchRecord
+// `patchIndex`, of a ray along `direction`, where the surface's geometric
+// normal (of any length) is `normal`.
+bool passes_over(uint object, vec3 direction, vec3 normal, uint patchIndex, vec2 st) {
+  if (CULLING == 0 && CUTOUTS == 0) return false;
+  uint flags = objects[object].flags;
+  if (CULLING == 1 && (flags & FACET_OBJECT_CULL_BACK_FACES) != 0u && is_back_face(direction, normal)) return true;
+  if (CUTOUTS == 0 || (flags & FACET_OBJECT_CUTOUT) == 0u) return false;
+  ObjectRange o = objects[object];
+  TextureSlotRecord slot = TextureSlotRecord(o.alphaTexture, o.alphaOffsetX, o.alphaOffsetY, o.alphaCosRotation,
+                                             o.alphaSinRotation, o.alphaScaleX, o.alphaScaleY, o.alphaTexCoord);
+  uint set = o.alphaTexCoord == 1u ? FACET_CHANNEL_TEXCOORD1 : FACET_CHANNEL_TEXCOORD0;
+  vec2 uv = surface_texcoord(channel_texel(load_patch_record(patchIndex).firstTexcoord, o.channels, set), st.x, st.y).uv;
+  return !cutout_present(o.alphaFactor, slot_value(slot, cutout_footprint(uv)).a, o.alphaCutoff);
+}
+
+#endif
