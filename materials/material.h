@@ -43,6 +43,16 @@ struct MaterialTextures {
   // KHR_materials_unlit: the base colour (factor, texture and vertex colour)
   // is emitted, in place of the emission.
   bool unlit = false;
+  // The layers' textures (rules/shading/textured_material.h,
+  // textured_layers): the coat's strength (R) and roughness (G) and its
+  // normal map, the sheen's colour (sRGB), the anisotropy's direction (RG)
+  // and strength (B).
+  TextureSlot clearcoatTexture;
+  TextureSlot clearcoatRoughnessTexture;
+  TextureSlot clearcoatNormalTexture;
+  double clearcoatNormalScale = 1.0;
+  TextureSlot sheenColorTexture;
+  TextureSlot anisotropyTexture;
 };
 
 struct Material {

@@ -126,6 +126,9 @@ void applySheen(const tinygltf::Material& gltf, const std::string& material, con
                 materials::Material& m);
 void applyAnisotropy(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
                      materials::Material& m);
+// The same extensions' textures into `t`: whether it reads any.
+bool readLayerTextures(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
+                       TextureTable& textures, materials::MaterialTextures& t);
 
 // gltf_transmission.cpp: KHR_materials_ior, KHR_materials_specular,
 // KHR_materials_transmission and KHR_materials_volume of `gltf` (field

@@ -10,7 +10,7 @@
 namespace facet::scene::detail {
 
 // KHR_materials_clearcoat's factors into `m` (docs/gltf.md, "Clear coat");
-// its textures are not read, each with a warning saying what facet renders.
+// its textures are readLayerTextures'.
 void applyClearcoat(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
                     materials::Material& m) {
   const tinygltf::Value* c = extension(gltf, "KHR_materials_clearcoat");
@@ -21,12 +21,6 @@ void applyClearcoat(const tinygltf::Material& gltf, const std::string& material,
   for (auto [field, value] :
        {std::pair{".clearcoatFactor", strength}, std::pair{".clearcoatRoughnessFactor", roughness}})
     if (const std::optional<std::string> rule = rangeRule(value, 0.0, 1.0)) reader.fail(at + field, *rule);
-  const std::pair<const char*, const char*> kTextures[] = {
-      {"clearcoatTexture", "is not read; the coat has clearcoatFactor everywhere"},
-      {"clearcoatRoughnessTexture", "is not read; the coat has clearcoatRoughnessFactor everywhere"},
-      {"clearcoatNormalTexture", "is not read; the coat follows the surface's normal, without a normal map"}};
-  for (auto [texture, instead] : kTextures)
-    if (c->Has(texture)) reader.warn(at + "." + texture, instead);
   if (strength > 0.0 && materials::isTransmissive(m)) {
     reader.warn(at, "is not applied to a transmissive material: facet renders it without its coat");
     return;
@@ -36,7 +30,8 @@ void applyClearcoat(const tinygltf::Material& gltf, const std::string& material,
 }
 
 // KHR_materials_sheen's factors into `m` (docs/gltf.md, "Sheen"); its
-// textures are not read, each with a warning saying what facet renders.
+// colour texture is readLayerTextures', its roughness texture is not read
+// (the lobe's albedo is tabulated per material), with a warning.
 void applySheen(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
                 materials::Material& m) {
   const tinygltf::Value* s = extension(gltf, "KHR_materials_sheen");
@@ -56,11 +51,8 @@ void applySheen(const tinygltf::Material& gltf, const std::string& material, con
   const double roughness = member(*s, "sheenRoughnessFactor", 0.0, at, reader);
   if (const std::optional<std::string> rule = rangeRule(roughness, 0.0, 1.0))
     reader.fail(at + ".sheenRoughnessFactor", *rule);
-  const std::pair<const char*, const char*> kTextures[] = {
-      {"sheenColorTexture", "is not read; the sheen has sheenColorFactor everywhere"},
-      {"sheenRoughnessTexture", "is not read; the sheen has sheenRoughnessFactor everywhere"}};
-  for (auto [texture, instead] : kTextures)
-    if (s->Has(texture)) reader.warn(at + "." + texture, instead);
+  if (s->Has("sheenRoughnessTexture"))
+    reader.warn(at + ".sheenRoughnessTexture", "is not read; the sheen has sheenRoughnessFactor everywhere");
   if (color != glm::dvec3(0.0) && materials::isTransmissive(m)) {
     reader.warn(at, "is not applied to a transmissive material: facet renders it without its sheen");
     return;
@@ -72,7 +64,7 @@ void applySheen(const tinygltf::Material& gltf, const std::string& material, con
 // KHR_materials_anisotropy's factors into `m` (docs/gltf.md): its strength
 // and rotation are facet's anisotropy and anisotropy_rotation, about the
 // tangent glTF names, dP/du of the texture coordinates (docs/shading.md,
-// "Anisotropy"). The direction texture is not read, with a warning.
+// "Anisotropy"); its direction texture is readLayerTextures'.
 void applyAnisotropy(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
                      materials::Material& m) {
   const tinygltf::Value* a = extension(gltf, "KHR_materials_anisotropy");
@@ -82,16 +74,66 @@ void applyAnisotropy(const tinygltf::Material& gltf, const std::string& material
   if (const std::optional<std::string> rule = rangeRule(strength, 0.0, 1.0))
     reader.fail(at + ".anisotropyStrength", *rule);
   const double rotation = member(*a, "anisotropyRotation", 0.0, at, reader);
-  if (a->Has("anisotropyTexture"))
-    reader.warn(at + ".anisotropyTexture",
-                "is not read; the lobe is stretched along the tangent turned by anisotropyRotation, with "
-                "anisotropyStrength everywhere");
   if (strength > 0.0 && materials::isTransmissive(m)) {
     reader.warn(at, "is not applied to a transmissive material: facet renders it isotropic");
     return;
   }
   m.anisotropy = strength;
   m.anisotropyRotation = rotation;
+}
+
+namespace {
+
+// The texture info `key` of extension object `value` at field `at` (glTF
+// 2.0, textureInfo: `index`, `texCoord`, its extensions), as a slot.
+materials::TextureSlot extensionSlot(const tinygltf::Value& value, const char* key, TextureEncoding encoding,
+                                     const std::string& at, const GltfReader& reader, TextureTable& textures) {
+  if (!value.Has(key)) return {};
+  const std::string where = at + "." + key;
+  const tinygltf::Value& info = value.Get(key);
+  if (!info.IsObject()) reader.fail(where, "must be a texture info object");
+  const auto whole = [&](const char* member, int fallback) {
+    if (!info.Has(member)) return fallback;
+    const tinygltf::Value& x = info.Get(member);
+    if (!x.IsInt() || x.GetNumberAsInt() < 0) reader.fail(where + "." + member, "must be a whole number >= 0");
+    return x.GetNumberAsInt();
+  };
+  if (!info.Has("index")) reader.fail(where + ".index", "is required");
+  tinygltf::ExtensionMap extensions;
+  if (info.Has("extensions")) {
+    const tinygltf::Value& e = info.Get("extensions");
+    if (!e.IsObject()) reader.fail(where + ".extensions", "must be an object");
+    for (const std::string& name : e.Keys()) extensions[name] = e.Get(name);
+  }
+  return textures.slot(extensions, whole("index", -1), whole("texCoord", 0), encoding, where);
+}
+
+}  // namespace
+
+bool readLayerTextures(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
+                       TextureTable& textures, materials::MaterialTextures& t) {
+  const auto at = [&](const char* name) { return material + ".extensions." + name; };
+  if (const tinygltf::Value* c = extension(gltf, "KHR_materials_clearcoat")) {
+    const std::string where = at("KHR_materials_clearcoat");
+    t.clearcoatTexture = extensionSlot(*c, "clearcoatTexture", TextureEncoding::Linear, where, reader, textures);
+    t.clearcoatRoughnessTexture =
+        extensionSlot(*c, "clearcoatRoughnessTexture", TextureEncoding::Linear, where, reader, textures);
+    t.clearcoatNormalTexture =
+        extensionSlot(*c, "clearcoatNormalTexture", TextureEncoding::Linear, where, reader, textures);
+    if (c->Has("clearcoatNormalTexture") && c->Get("clearcoatNormalTexture").Has("scale"))
+      t.clearcoatNormalScale =
+          member(c->Get("clearcoatNormalTexture"), "scale", 1.0, where + ".clearcoatNormalTexture", reader);
+  }
+  if (const tinygltf::Value* s = extension(gltf, "KHR_materials_sheen"))
+    t.sheenColorTexture =
+        extensionSlot(*s, "sheenColorTexture", TextureEncoding::Srgb, at("KHR_materials_sheen"), reader, textures);
+  if (const tinygltf::Value* a = extension(gltf, "KHR_materials_anisotropy"))
+    t.anisotropyTexture = extensionSlot(*a, "anisotropyTexture", TextureEncoding::Linear,
+                                        at("KHR_materials_anisotropy"), reader, textures);
+  for (const materials::TextureSlot* slot : {&t.clearcoatTexture, &t.clearcoatRoughnessTexture,
+                                             &t.clearcoatNormalTexture, &t.sheenColorTexture, &t.anisotropyTexture})
+    if (slot->texture >= 0) return true;
+  return false;
 }
 
 }  // namespace facet::scene::detail

@@ -242,10 +242,11 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
   const auto& e = gltf.emissiveTexture;
   t.emissiveTexture =
       textures.slot(e.extensions, e.index, e.texCoord, TextureEncoding::Srgb, material + ".emissiveTexture");
+  const bool layered = readLayerTextures(gltf, material, reader, textures, t);
   for (const materials::TextureSlot* s :
        {&t.baseColorTexture, &t.metallicRoughnessTexture, &t.normalTexture, &t.occlusionTexture, &t.emissiveTexture})
     if (s->texture >= 0) m.textures = t;
-  if (vertexColours) m.textures = t;
+  if (vertexColours || layered) m.textures = t;
   // The textured rule derives F(0) per hit from the base colour and metallic alone.
   for (const char* name : {"KHR_materials_ior", "KHR_materials_specular"})
     if (m.textures && !materials::isTransmissive(m) && extension(gltf, name))

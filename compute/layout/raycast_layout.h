@@ -329,6 +329,13 @@ struct MaterialRecord {
   float sheenAlbedo6;
   float sheenAlbedo7;
   uint unlit;  // KHR_materials_unlit, where `textured` is 1: the base colour is emitted
+  // The layers' textures, where `textured` is 1 (materials::MaterialTextures).
+  TextureSlotRecord clearcoatTexture;
+  TextureSlotRecord clearcoatRoughnessTexture;
+  TextureSlotRecord clearcoatNormalTexture;
+  float clearcoatNormalScale;
+  TextureSlotRecord sheenColorTexture;
+  TextureSlotRecord anisotropyTexture;
 };
 
 // What the camera-side kernels need, one uniform block (std140 agrees: all

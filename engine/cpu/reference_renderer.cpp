@@ -15,6 +15,7 @@
 #include "engine/camera/camera.h"
 #include "engine/cpu/intersector.h"
 #include "engine/cpu/path_tracer.h"
+#include "engine/cpu/textured_hit.h"
 #include "engine/ibl/compensation_tables.h"
 #include "engine/ibl/environment_lighting.h"
 #include "engine/ibl/environment_lookup.h"
@@ -93,16 +94,20 @@ class ReferenceScene final : public PathScene {
     const int material = scene_.objects[std::size_t(hit.object)].material;
     double occlusion = 1.0;
     glm::dvec3 radiance = scene_.materials[std::size_t(material)].emission;
+    glm::dvec2 anisotropyDirection(1.0, 0.0);
     if (const auto& textures = scene_.materials[std::size_t(material)].textures) {
-      const m::TexturedSurface surface = texturedSurface(hit, *textures, params, n, ng, direction, radiance);
+      const m::TexturedSurface surface =
+          texturedHit(geometry_.objects[std::size_t(hit.object)].surface, hit.surface, scene_.textures, *textures,
+                      params, n, ng, direction, radiance, coneSpread_);
       params = surface.params;
       n = surface.n;
       occlusion = surface.occlusion;
       radiance = surface.emission;
+      anisotropyDirection = surface.anisotropy_direction;
     }
     const std::optional<m::TransmissionParams>& transmission = transmission_[std::size_t(hit.object)];
     if (transmission) params = m::transmissive_brdf_params(params, *transmission, outside);
-    if (params.anisotropy != 0.0) params.tangent = tangent(hit, material, n);
+    if (params.anisotropy != 0.0) params.tangent = tangent(hit, material, n, anisotropyDirection);
     // The coat lies over the emission too (KHR_materials_clearcoat).
     if (params.clearcoat != 0.0) radiance *= m::coat_transmittance(params, glm::dot(params.clearcoat_normal, v));
     const glm::dvec3 specularScale = ibl::specularScale(compensation_, material, params, glm::dot(n, v));
@@ -174,40 +179,16 @@ class ReferenceScene final : public PathScene {
 
  private:
   // The anisotropic lobe's tangent at `hit` about the shading normal n
-  // (rules/surface/tangent.h): from the texture coordinates where the
-  // surface has them, else the patch's dP/du, as the GPU's dP/ds.
-  glm::dvec3 tangent(const SceneHit& hit, int material, const glm::dvec3& n) const {
+  // (rules/surface/tangent.h), turned by the material's rotation and a
+  // texture's `direction`: from the texture coordinates where the surface
+  // has them, else the patch's dP/du, as the GPU's dP/ds.
+  glm::dvec3 tangent(const SceneHit& hit, int material, const glm::dvec3& n, const glm::dvec2& direction) const {
     const scene::SubdivisionSurface& surface = geometry_.objects[std::size_t(hit.object)].surface;
     const scene::LimitPoint p = surface.evaluatePatch(hit.surface.patch, hit.surface.u, hit.surface.v);
     const scene::LimitTexcoord uv = surface.evaluateTexcoord(hit.surface.patch, hit.surface.u, hit.surface.v);
-    const double rotation = scene_.materials[std::size_t(material)].anisotropyRotation;
-    return m::texcoord_tangent(n, p.du, p.dv, uv.du, uv.dv, std::cos(rotation), std::sin(rotation));
-  }
-
-  // A textured material at `hit`, seen along `direction`, with the normals
-  // n and ng facing the eye and emission factor `emission`
-  // (rules/shading/textured_material.h).
-  m::TexturedSurface texturedSurface(const SceneHit& hit, const materials::MaterialTextures& t,
-                                     const m::BrdfParams& params, const glm::dvec3& n, const glm::dvec3& ng,
-                                     const glm::dvec3& direction, const glm::dvec3& emission) const {
-    const scene::SubdivisionSurface& surface = geometry_.objects[std::size_t(hit.object)].surface;
-    const auto& at = hit.surface;
-    const scene::LimitPoint p = surface.evaluatePatch(at.patch, at.u, at.v);
-    // A slot reads the set of texture coordinates it names.
-    const auto footprint = [&](const materials::TextureSlot& slot) {
-      const scene::LimitTexcoord uv = surface.evaluateTexcoord(at.patch, at.u, at.v, slot.texCoord);
-      return m::TextureFootprint{
-          uv.uv, uv.du, uv.dv, p.du, p.dv, at.t * coneSpread_, std::abs(glm::dot(ng, direction))};
-    };
-    auto value = [&](const materials::TextureSlot& slot) {
-      return scene::sampleSlot(scene_.textures, slot, footprint(slot));
-    };
-    // A vertex colour multiplies the base colour as its texture does (glTF COLOR_0).
-    const glm::dvec3 base = glm::dvec3(value(t.baseColorTexture)) * surface.evaluateColor(at.patch, at.u, at.v);
-    return m::textured_surface(
-        params, n, footprint(t.normalTexture), t.baseColor, t.metallic, t.roughness, t.normalScale, t.occlusionStrength,
-        emission, base, glm::dvec3(value(t.metallicRoughnessTexture)), t.normalTexture.texture >= 0,
-        glm::dvec3(value(t.normalTexture)), value(t.occlusionTexture).r, glm::dvec3(value(t.emissiveTexture)), t.unlit);
+    const double angle = scene_.materials[std::size_t(material)].anisotropyRotation;
+    const glm::dvec2 rotation = m::turned_rotation(glm::dvec2(std::cos(angle), std::sin(angle)), direction);
+    return m::texcoord_tangent(n, p.du, p.dv, uv.du, uv.dv, rotation.x, rotation.y);
   }
 
   bool occluded(const glm::dvec3& position, const glm::dvec3& ng, const glm::dvec3& l, double distance,

@@ -68,6 +68,12 @@ std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
     r.normalTexture = textureSlotRecord(t ? t->normalTexture : none);
     r.occlusionTexture = textureSlotRecord(t ? t->occlusionTexture : none);
     r.emissiveTexture = textureSlotRecord(t ? t->emissiveTexture : none);
+    r.clearcoatTexture = textureSlotRecord(t ? t->clearcoatTexture : none);
+    r.clearcoatRoughnessTexture = textureSlotRecord(t ? t->clearcoatRoughnessTexture : none);
+    r.clearcoatNormalTexture = textureSlotRecord(t ? t->clearcoatNormalTexture : none);
+    r.clearcoatNormalScale = t ? float(t->clearcoatNormalScale) : 1.0f;
+    r.sheenColorTexture = textureSlotRecord(t ? t->sheenColorTexture : none);
+    r.anisotropyTexture = textureSlotRecord(t ? t->anisotropyTexture : none);
     const int table = compensation.tableOfMaterial[i];
     r.compensationTable =
         table == ibl::CompensationTables::kNone ? layout::FACET_NO_COMPENSATION : std::uint32_t(table);

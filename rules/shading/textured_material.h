@@ -88,6 +88,7 @@ struct TexturedSurface {
   vec3 n;
   real occlusion;
   vec3 emission;
+  vec2 anisotropy_direction;  // in the tangent frame, turned further by the material's rotation
 };
 
 // From the material's glTF factors and its slots' values (1 where a slot is
@@ -106,5 +107,37 @@ FACET_FN TexturedSurface textured_surface(BrdfParams p, vec3 n, TextureFootprint
   surface.n = normal_mapped ? mapped_normal(n, f.dp_ds, f.dp_dt, f.duv_ds, f.duv_dt, normal_texel, normal_scale) : n;
   surface.occlusion = occlusion_factor(occlusion, occlusion_strength);
   surface.emission = unlit ? base_factor * base : emission_factor * emission;
+  surface.anisotropy_direction = vec2(real(1), real(0));
   return surface;
+}
+
+// The layers' textures at a hit (docs/gltf.md), each value 1 where its slot
+// is empty (the normal map and the direction are read only where `_mapped`):
+// KHR_materials_clearcoat's strength (R of `coat`) and roughness
+// (G of `coat_roughness`) scale the factors, and its normal map turns the
+// coat's own normal in the frame of footprint `coat_f`; KHR_materials_sheen's
+// colour (sRGB) scales the factor; KHR_materials_anisotropy's RG is a
+// direction in the tangent frame, from [0, 1] to [-1, 1], and its B scales
+// the strength.
+FACET_FN TexturedSurface textured_layers(TexturedSurface s, TextureFootprint coat_f, real coat, real coat_roughness,
+                                         bool coat_mapped, vec3 coat_normal_texel, real coat_normal_scale,
+                                         vec3 sheen, bool anisotropy_mapped, vec3 anisotropy) {
+  s.params.clearcoat *= coat;
+  s.params.clearcoat_alpha *= sqr(coat_roughness);
+  if (coat_mapped)
+    s.params.clearcoat_normal = mapped_normal(s.params.clearcoat_normal, coat_f.dp_ds, coat_f.dp_dt, coat_f.duv_ds,
+                                              coat_f.duv_dt, coat_normal_texel, coat_normal_scale);
+  s.params.sheen_color *= sheen;
+  if (!anisotropy_mapped) return s;
+  s.params.anisotropy *= anisotropy.z;
+  vec2 d = vec2(anisotropy.x, anisotropy.y) * real(2) - vec2(real(1), real(1));
+  real length2 = dot(d, d);
+  s.anisotropy_direction = length2 > real(0) ? d * inversesqrt(length2) : vec2(real(1), real(0));
+  return s;
+}
+
+// A rotation (cos, sin) turned further by `direction` (a unit vector, the
+// angle it makes with the first axis).
+FACET_FN vec2 turned_rotation(vec2 rotation, vec2 direction) {
+  return vec2(rotation.x * direction.x - rotation.y * direction.y, rotation.y * direction.x + rotation.x * direction.y);
 }

@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "engine/cpu/reference_renderer.h"
 #include "scenes/input_error.h"
@@ -26,11 +28,14 @@ using ::testing::ThrowsMessage;
 class GltfMaterialExtensions : public facet::testing::TempDirTest {
  protected:
   // The textured quad of one black dielectric, double-sided, with `members` added.
+  // The file has one texture, a grey 2 x 2 PNG, for the slots that name it.
   std::filesystem::path write(const std::string& name, const nlohmann::json& members) {
     nlohmann::json m = {{"doubleSided", true},
                         {"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 1}}, {"metallicFactor", 0.0}}}};
     m.update(members);
-    return facet::testing::writeTexturedQuad(dir_, name, {{"materials", {m}}});
+    facet::testing::writePng(dir_ / "grey.png", 2, 2, std::vector<facet::testing::Rgba8>(4, {128, 128, 128, 255}));
+    return facet::testing::writeTexturedQuad(
+        dir_, name, {{"materials", {m}}, {"textures", {{{"source", 0}}}}, {"images", {{{"uri", "grey.png"}}}}});
   }
   static nlohmann::json strength(double s) { return {{"KHR_materials_emissive_strength", {{"emissiveStrength", s}}}}; }
 };
@@ -111,25 +116,40 @@ TEST_F(GltfMaterialExtensions, SpecularFactorsAreChecked) {
         "KHR_materials_specular.specularColorFactor: every component must be a finite number >= 0");
 }
 
-TEST_F(GltfMaterialExtensions, ClearcoatFactorsAreReadAndItsTexturesWarned) {
+TEST_F(GltfMaterialExtensions, ClearcoatFactorsAndTexturesAreRead) {
   const nlohmann::json coat = {{"clearcoatFactor", 0.75}, {"clearcoatRoughnessFactor", 0.2}};
   const Scene scene = loadScene(write("coat", {{"extensions", {{"KHR_materials_clearcoat", coat}}}}));
   EXPECT_EQ(scene.materials.at(0).clearcoat, 0.75);
   EXPECT_EQ(scene.materials.at(0).clearcoatRoughness, 0.2);
   EXPECT_THAT(scene.warnings, IsEmpty());
-  // Without the extension there is no coat; each texture is one warning.
+  EXPECT_FALSE(scene.materials.at(0).textures.has_value());
+  // Without the extension there is no coat; its textures are read, on
+  // either set, with the normal map's scale, and make the material textured.
   EXPECT_EQ(loadScene(write("bare", nlohmann::json::object())).materials.at(0).clearcoat, 0.0);
   nlohmann::json textured = coat;
-  for (const char* slot : {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"})
-    textured[slot] = {{"index", 0}};
-  const Scene warned = loadScene(write("textured", {{"extensions", {{"KHR_materials_clearcoat", textured}}}}));
-  EXPECT_EQ(warned.materials.at(0).clearcoat, 0.75);
-  EXPECT_THAT(warned.warnings,
-              ElementsAre(HasSubstr("KHR_materials_clearcoat.clearcoatTexture: is not read; the coat has "
-                                    "clearcoatFactor everywhere"),
-                          HasSubstr("KHR_materials_clearcoat.clearcoatRoughnessTexture: is not read"),
-                          HasSubstr("KHR_materials_clearcoat.clearcoatNormalTexture: is not read; the coat follows "
-                                    "the surface's normal")));
+  textured["clearcoatTexture"] = {{"index", 0}};
+  textured["clearcoatRoughnessTexture"] = {{"index", 0}, {"texCoord", 1}};
+  textured["clearcoatNormalTexture"] = {{"index", 0}, {"scale", 0.5}};
+  const Scene read = loadScene(write("textured", {{"extensions", {{"KHR_materials_clearcoat", textured}}}}));
+  EXPECT_EQ(read.materials.at(0).clearcoat, 0.75);
+  EXPECT_THAT(read.warnings, IsEmpty());
+  ASSERT_TRUE(read.materials.at(0).textures.has_value());
+  const materials::MaterialTextures& t = *read.materials.at(0).textures;
+  EXPECT_EQ(t.clearcoatTexture.texture, 0);
+  EXPECT_EQ(t.clearcoatRoughnessTexture.texCoord, 1);
+  EXPECT_EQ(t.clearcoatNormalTexture.texture, 0);
+  EXPECT_EQ(t.clearcoatNormalScale, 0.5);
+  EXPECT_EQ(t.baseColorTexture.texture, -1);
+  // A texture info that is not one is an error naming it.
+  for (const auto& [name, info, field] :
+       {std::tuple{"far", nlohmann::json{{"index", 3}}, "clearcoatTexture.index"},
+        std::tuple{"noindex", nlohmann::json{{"texCoord", 0}}, "clearcoatTexture.index: is required"},
+        std::tuple{"set", nlohmann::json{{"index", 0}, {"texCoord", -1}}, "clearcoatTexture.texCoord"},
+        std::tuple{"word", nlohmann::json("coat.png"), "clearcoatTexture: must be a texture info object"}}) {
+    const std::filesystem::path file = write(
+        name, {{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1.0}, {"clearcoatTexture", info}}}}}});
+    EXPECT_THAT([&] { loadScene(file); }, ThrowsMessage<InputError>(HasSubstr(field))) << name;
+  }
   const std::filesystem::path bad =
       write("bad", {{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1.5}}}}}});
   EXPECT_THAT([&] { loadScene(bad); }, ThrowsMessage<InputError>(HasSubstr("KHR_materials_clearcoat.clearcoatFactor")));
@@ -152,7 +172,7 @@ TEST_F(GltfMaterialExtensions, AClearCoatLiesOverTheEmission) {
   EXPECT_LT(coat.g, 0.96f * 5.0f + 0.5f);
 }
 
-TEST_F(GltfMaterialExtensions, SheenFactorsAreReadAndItsTexturesWarned) {
+TEST_F(GltfMaterialExtensions, SheenFactorsAndColourTextureAreRead) {
   const nlohmann::json sheen = {{"sheenColorFactor", {0.6, 0.2, 0.1}}, {"sheenRoughnessFactor", 0.4}};
   const Scene scene = loadScene(write("sheen", {{"extensions", {{"KHR_materials_sheen", sheen}}}}));
   EXPECT_EQ(scene.materials.at(0).sheenColor, glm::dvec3(0.6, 0.2, 0.1));
@@ -164,10 +184,10 @@ TEST_F(GltfMaterialExtensions, SheenFactorsAreReadAndItsTexturesWarned) {
   for (const char* slot : {"sheenColorTexture", "sheenRoughnessTexture"}) textured[slot] = {{"index", 0}};
   const Scene warned = loadScene(write("textured", {{"extensions", {{"KHR_materials_sheen", textured}}}}));
   EXPECT_EQ(warned.materials.at(0).sheenRoughness, 0.4);
-  EXPECT_THAT(warned.warnings,
-              ElementsAre(HasSubstr("KHR_materials_sheen.sheenColorTexture: is not read; the sheen has "
-                                    "sheenColorFactor everywhere"),
-                          HasSubstr("KHR_materials_sheen.sheenRoughnessTexture: is not read")));
+  ASSERT_TRUE(warned.materials.at(0).textures.has_value());
+  EXPECT_EQ(warned.materials.at(0).textures->sheenColorTexture.texture, 0);
+  // The roughness texture alone is not read: the lobe's albedo is tabulated per material.
+  EXPECT_THAT(warned.warnings, ElementsAre(HasSubstr("KHR_materials_sheen.sheenRoughnessTexture: is not read")));
   const std::filesystem::path bad =
       write("bad", {{"extensions", {{"KHR_materials_sheen", {{"sheenColorFactor", {0.5, 1.5, 0.5}}}}}}});
   EXPECT_THAT([&] { loadScene(bad); }, ThrowsMessage<InputError>(HasSubstr("KHR_materials_sheen.sheenColorFactor")));
@@ -177,7 +197,7 @@ TEST_F(GltfMaterialExtensions, SheenFactorsAreReadAndItsTexturesWarned) {
               ThrowsMessage<InputError>(HasSubstr("KHR_materials_sheen.sheenRoughnessFactor")));
 }
 
-TEST_F(GltfMaterialExtensions, AnisotropyFactorsAreReadAndItsTextureWarned) {
+TEST_F(GltfMaterialExtensions, AnisotropyFactorsAndTextureAreRead) {
   const nlohmann::json anisotropy = {{"anisotropyStrength", 0.7}, {"anisotropyRotation", 0.5}};
   const Scene scene = loadScene(write("brushed", {{"extensions", {{"KHR_materials_anisotropy", anisotropy}}}}));
   EXPECT_EQ(scene.materials.at(0).anisotropy, 0.7);
@@ -186,9 +206,11 @@ TEST_F(GltfMaterialExtensions, AnisotropyFactorsAreReadAndItsTextureWarned) {
   EXPECT_EQ(loadScene(write("bare", nlohmann::json::object())).materials.at(0).anisotropy, 0.0);
   nlohmann::json textured = anisotropy;
   textured["anisotropyTexture"] = {{"index", 0}};
-  const Scene warned = loadScene(write("textured", {{"extensions", {{"KHR_materials_anisotropy", textured}}}}));
-  EXPECT_EQ(warned.materials.at(0).anisotropy, 0.7);
-  EXPECT_THAT(warned.warnings, ElementsAre(HasSubstr("KHR_materials_anisotropy.anisotropyTexture: is not read")));
+  const Scene read = loadScene(write("textured", {{"extensions", {{"KHR_materials_anisotropy", textured}}}}));
+  EXPECT_EQ(read.materials.at(0).anisotropy, 0.7);
+  EXPECT_THAT(read.warnings, IsEmpty());
+  ASSERT_TRUE(read.materials.at(0).textures.has_value());
+  EXPECT_EQ(read.materials.at(0).textures->anisotropyTexture.texture, 0);
   const std::filesystem::path strong =
       write("strong", {{"extensions", {{"KHR_materials_anisotropy", {{"anisotropyStrength", 1.5}}}}}});
   EXPECT_THAT([&] { loadScene(strong); },

@@ -177,9 +177,7 @@ TexturedSurface textured_hit(MaterialRecord m, PatchRecord record, uint channels
                                         hit.tParam);
   TextureFootprint f = TextureFootprint(uv.uv, uv.ds, uv.dt, p.ds, p.dt, cone, abs(dot(ng, direction)));
   TextureFootprint f1 = f;
-  if (CHANNELS == 1 && (m.baseColorTexture.texCoord == 1u || m.metallicRoughnessTexture.texCoord == 1u ||
-                        m.normalTexture.texCoord == 1u || m.occlusionTexture.texCoord == 1u ||
-                        m.emissiveTexture.texCoord == 1u)) {
+  if (CHANNELS == 1 && (channels & FACET_CHANNEL_TEXCOORD1) != 0u) {
     SurfaceTexcoord uv1 = surface_texcoord(channel_texel(record.firstTexcoord, channels, FACET_CHANNEL_TEXCOORD1),
                                            hit.s, hit.tParam);
     f1 = TextureFootprint(uv1.uv, uv1.ds, uv1.dt, p.ds, p.dt, cone, abs(dot(ng, direction)));
@@ -190,13 +188,22 @@ TexturedSurface textured_hit(MaterialRecord m, PatchRecord record, uint channels
   if (CHANNELS == 1)
     base *= surface_color(channel_texel(record.firstTexcoord, channels, FACET_CHANNEL_COLOR), hit.s, hit.tParam);
   TextureFootprint fn = m.normalTexture.texCoord == 1u ? f1 : f;
-  return textured_surface(
+  TexturedSurface surface = textured_surface(
       params, n, fn, vec3(m.baseR, m.baseG, m.baseB), m.metallic, m.roughness, m.normalScale, m.occlusionStrength,
       vec3(m.emissionR, m.emissionG, m.emissionB), base,
       slot_value(m.metallicRoughnessTexture, m.metallicRoughnessTexture.texCoord == 1u ? f1 : f).rgb,
       m.normalTexture.texture != FACET_NO_TEXTURE, slot_value(m.normalTexture, fn).rgb,
       slot_value(m.occlusionTexture, m.occlusionTexture.texCoord == 1u ? f1 : f).r,
       slot_value(m.emissiveTexture, m.emissiveTexture.texCoord == 1u ? f1 : f).rgb, m.unlit == 1u);
+  if (CLEARCOAT == 0 && SHEEN == 0 && ANISOTROPY == 0) return surface;
+  TextureFootprint fc = m.clearcoatNormalTexture.texCoord == 1u ? f1 : f;
+  return textured_layers(surface, fc, slot_value(m.clearcoatTexture, m.clearcoatTexture.texCoord == 1u ? f1 : f).r,
+                         slot_value(m.clearcoatRoughnessTexture, m.clearcoatRoughnessTexture.texCoord == 1u ? f1 : f).g,
+                         m.clearcoatNormalTexture.texture != FACET_NO_TEXTURE,
+                         slot_value(m.clearcoatNormalTexture, fc).rgb, m.clearcoatNormalScale,
+                         slot_value(m.sheenColorTexture, m.sheenColorTexture.texCoord == 1u ? f1 : f).rgb,
+                         m.anisotropyTexture.texture != FACET_NO_TEXTURE,
+                         slot_value(m.anisotropyTexture, m.anisotropyTexture.texCoord == 1u ? f1 : f).rgb);
 }
 
 // Sampled or filtered method, one sample of either technique: its share for
@@ -356,19 +363,22 @@ void main() {
   MaterialRecord m = materials[range.material];
   float occlusion = 1.0;
   vec3 emission = vec3(m.emissionR, m.emissionG, m.emissionB);
+  vec2 anisotropyDirection = vec2(1.0, 0.0);
   if (TEXTURES == 1 && m.textured == 1u) {
     TexturedSurface surface = textured_hit(m, record, range.channels, c, hit, params, n, ng, direction);
     params = surface.params;
     n = surface.n;
     occlusion = surface.occlusion;
     emission = surface.emission;
+    anisotropyDirection = surface.anisotropy_direction;
   }
   if (TRANSMISSION == 1 && m.transmissive == 1u) params = transmissive_brdf_params(params, transmission_params(m), outside);
   if (ANISOTROPY == 1 && params.anisotropy != 0.0) {
     PatchSample point = evaluate_patch(c, hit.s, hit.tParam);
     SurfaceTexcoord uv = surface_texcoord(channel_texel(record.firstTexcoord, range.channels, FACET_CHANNEL_TEXCOORD0),
                                           hit.s, hit.tParam);
-    params.tangent = texcoord_tangent(n, point.ds, point.dt, uv.ds, uv.dt, m.anisotropyCos, m.anisotropySin);
+    vec2 rotation = turned_rotation(vec2(m.anisotropyCos, m.anisotropySin), anisotropyDirection);
+    params.tangent = texcoord_tangent(n, point.ds, point.dt, uv.ds, uv.dt, rotation.x, rotation.y);
   }
   vec3 v = -direction;
   // The coat lies over the emission too (KHR_materials_clearcoat).

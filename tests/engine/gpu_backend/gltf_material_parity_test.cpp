@@ -12,6 +12,7 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "scenes/environment_map.h"
 #include "scenes/scene_file.h"
@@ -193,6 +194,66 @@ TEST_P(GltfAnisotropyParity, TheHighlightStretchesAlongTheTexturesDirection) {
                 shape.angle * 180.0 / std::numbers::pi, shape.elongation);
     EXPECT_LT(axisDifference(shape.angle, GetParam().imageAngle), 10.0 * std::numbers::pi / 180.0);
     EXPECT_GT(shape.elongation, 2.0);
+  }
+  testing::expectPathParity(r, {.median = 1e-4, .p98 = 1e-3, .parted = 0});
+}
+
+TEST_F(GltfMaterialParity, AnisotropyTextureTurnsTheDirection) {
+  // One texel pointing along the bitangent (RG (0.5, 1) is (0, 1) in the
+  // tangent frame), at full strength: a quarter turn, as the rotation gives.
+  facet::testing::writePng(dir_ / "direction.png", 2, 2, std::vector<Rgba8>(4, {128, 255, 255, 255}));
+  const nlohmann::json anisotropy = {{"anisotropyStrength", 0.9}, {"anisotropyTexture", {{"index", 0}}}};
+  const nlohmann::json material = {
+      {"pbrMetallicRoughness", {{"baseColorFactor", {0.9, 0.9, 0.9, 1.0}}, {"roughnessFactor", 0.25}}},
+      {"doubleSided", true},
+      {"extensions", {{"KHR_materials_anisotropy", anisotropy}}}};
+  scene::Scene scene = quad("direction_texture", material,
+                            {{"extensionsUsed", {"KHR_materials_anisotropy"}},
+                             {"textures", {{{"source", 0}}}},
+                             {"images", {{{"uri", "direction.png"}}}}},
+                            false);
+  EXPECT_TRUE(scene.warnings.empty());
+  scene.environment.reset();
+  scene.lights = {scene::Light{scene::LightType::Point, glm::dvec3(4.0), {0.0, 0.0, 2.0}}};
+  const testing::PathRenders r = testing::renderBoth(device_, scene);
+  for (const Image* image : {&r.reference, &r.gpu.image}) {
+    const HighlightShape shape = highlightShape(*image, scene.render.width, scene.render.height);
+    EXPECT_LT(axisDifference(shape.angle, std::numbers::pi / 2), 10.0 * std::numbers::pi / 180.0);
+    EXPECT_GT(shape.elongation, 2.0);
+  }
+  testing::expectPathParity(r, {.median = 1e-4, .p98 = 1e-3, .parted = 0});
+}
+
+TEST_F(GltfMaterialParity, ACoatTextureCoatsOnlyItsCells) {
+  // A clear coat over a black base, its strength a checker of 4 x 4 cells
+  // (coated where R is 1), lit from the camera: the coat's highlight shows
+  // in the coated cells alone.
+  facet::testing::writePng(dir_ / "coat.png", 8, 8,
+                           facet::testing::checkerTexels(8, 4, {255, 255, 255, 255}, {0, 0, 0, 255}));
+  const nlohmann::json coat = {
+      {"clearcoatFactor", 1.0}, {"clearcoatRoughnessFactor", 0.3}, {"clearcoatTexture", {{"index", 0}}}};
+  const nlohmann::json material = {
+      {"pbrMetallicRoughness", {{"baseColorFactor", {0.0, 0.0, 0.0, 1.0}}, {"roughnessFactor", 1.0}}},
+      {"doubleSided", true},
+      {"extensions", {{"KHR_materials_clearcoat", coat}}}};
+  scene::Scene scene = quad("coat_texture", material,
+                            {{"extensionsUsed", {"KHR_materials_clearcoat"}},
+                             {"textures", {{{"source", 0}, {"sampler", 0}}}},
+                             {"images", {{{"uri", "coat.png"}}}},
+                             {"samplers", {{{"magFilter", 9728}, {"minFilter", 9728}}}}},
+                            false);
+  EXPECT_TRUE(scene.warnings.empty());
+  scene.environment.reset();
+  scene.lights = {scene::Light{scene::LightType::Point, glm::dvec3(4.0), {0.0, 0.0, 3.0}}};
+  const testing::PathRenders r = testing::renderBoth(device_, scene);
+  for (const Image* image : {&r.reference, &r.gpu.image}) {
+    // The four cells about the centre: the texture's cell (1, 1) is coated
+    // (even), its neighbours (2, 1) and (1, 2) are not; the image's rows
+    // grow down as the texture's t does.
+    const auto at = [&](int x, int row) { return double(image->beauty[std::size_t(row * 48 + x)].g); };
+    const double coated = at(20, 20) + at(27, 27), bare = at(27, 20) + at(20, 27);
+    std::printf("%s: coated %.4f, bare %.4f\n", image == &r.reference ? "cpu" : "gpu", coated, bare);
+    EXPECT_GT(coated, 10.0 * bare + 0.01);
   }
   testing::expectPathParity(r, {.median = 1e-4, .p98 = 1e-3, .parted = 0});
 }
