@@ -51,6 +51,7 @@ class GltfMaterialParity : public testing::GpuRenderTest {
   // Every covered pixel of both backends' images shows one of `colours`
   // exactly, each on a quarter of them at least, and the two agree.
   void expectUnlitColours(const testing::PathRenders& r, const glm::dvec3 (&colours)[2]);
+  void expectHighlightAlong(scene::Scene scene, double imageAngle);
 
   std::filesystem::path dir_;
 };
@@ -167,6 +168,23 @@ double axisDifference(double a, double b) {
   return std::abs(d);
 }
 
+// `scene` lit by a point light between the camera and the quad, on both
+// backends: a highlight stretched along `imageAngle` (within 10 degrees,
+// more than twice as long as wide), and the backends in parity.
+void GltfMaterialParity::expectHighlightAlong(scene::Scene scene, double imageAngle) {
+  scene.environment.reset();
+  scene.lights = {scene::Light{scene::LightType::Point, glm::dvec3(4.0), {0.0, 0.0, 2.0}}};
+  const testing::PathRenders r = testing::renderBoth(device_, scene);
+  for (const Image* image : {&r.reference, &r.gpu.image}) {
+    const HighlightShape shape = highlightShape(*image, scene.render.width, scene.render.height);
+    std::printf("%s: axis %.1f degrees, elongation %.2f\n", image == &r.reference ? "cpu" : "gpu",
+                shape.angle * 180.0 / std::numbers::pi, shape.elongation);
+    EXPECT_LT(axisDifference(shape.angle, imageAngle), 10.0 * std::numbers::pi / 180.0);
+    EXPECT_GT(shape.elongation, 2.0);
+  }
+  testing::expectPathParity(r, {.median = 1e-4, .p98 = 1e-3, .parted = 0});
+}
+
 struct AnisotropyCase {
   double rotation;
   bool mirrored;
@@ -185,17 +203,7 @@ TEST_P(GltfAnisotropyParity, TheHighlightStretchesAlongTheTexturesDirection) {
   scene::Scene scene =
       quad(GetParam().name, material, {{"extensionsUsed", {"KHR_materials_anisotropy"}}}, GetParam().mirrored);
   EXPECT_TRUE(scene.warnings.empty());
-  scene.environment.reset();
-  scene.lights = {scene::Light{scene::LightType::Point, glm::dvec3(4.0), {0.0, 0.0, 2.0}}};
-  const testing::PathRenders r = testing::renderBoth(device_, scene);
-  for (const Image* image : {&r.reference, &r.gpu.image}) {
-    const HighlightShape shape = highlightShape(*image, scene.render.width, scene.render.height);
-    std::printf("%s: axis %.1f degrees, elongation %.2f\n", image == &r.reference ? "cpu" : "gpu",
-                shape.angle * 180.0 / std::numbers::pi, shape.elongation);
-    EXPECT_LT(axisDifference(shape.angle, GetParam().imageAngle), 10.0 * std::numbers::pi / 180.0);
-    EXPECT_GT(shape.elongation, 2.0);
-  }
-  testing::expectPathParity(r, {.median = 1e-4, .p98 = 1e-3, .parted = 0});
+  expectHighlightAlong(scene, GetParam().imageAngle);
 }
 
 TEST_F(GltfMaterialParity, AnisotropyTextureTurnsTheDirection) {
@@ -213,15 +221,7 @@ TEST_F(GltfMaterialParity, AnisotropyTextureTurnsTheDirection) {
                              {"images", {{{"uri", "direction.png"}}}}},
                             false);
   EXPECT_TRUE(scene.warnings.empty());
-  scene.environment.reset();
-  scene.lights = {scene::Light{scene::LightType::Point, glm::dvec3(4.0), {0.0, 0.0, 2.0}}};
-  const testing::PathRenders r = testing::renderBoth(device_, scene);
-  for (const Image* image : {&r.reference, &r.gpu.image}) {
-    const HighlightShape shape = highlightShape(*image, scene.render.width, scene.render.height);
-    EXPECT_LT(axisDifference(shape.angle, std::numbers::pi / 2), 10.0 * std::numbers::pi / 180.0);
-    EXPECT_GT(shape.elongation, 2.0);
-  }
-  testing::expectPathParity(r, {.median = 1e-4, .p98 = 1e-3, .parted = 0});
+  expectHighlightAlong(scene, std::numbers::pi / 2);
 }
 
 TEST_F(GltfMaterialParity, ACoatTextureCoatsOnlyItsCells) {
