@@ -22,6 +22,7 @@
 #include "rules/shading/dielectric.h"
 #include "rules/shading/absorption.h"
 #include "rules/shading/transmissive_continuation.h"
+#include "rules/shading/path_step.h"
 #include "rules/shading/dfg.h"
 #include "rules/environment/environment_mapping.h"
 #include "rules/environment/split_sum.h"
@@ -40,6 +41,7 @@
 #include "rules/surface/tangent.h"
 #include "rules/surface/back_face.h"
 #include "rules/surface/cutout.h"
+#include "rules/shading/surface_at_hit.h"
 #include "rules/grid/config.h"
 #include "rules/grid/workgroup_grid.h"
 #undef FACET_REAL

@@ -19,6 +19,7 @@ using vec2 = glm::vec<2, real>;
 using vec3 = glm::vec<3, real>;
 using vec4 = glm::vec<4, real>;
 using uvec2 = glm::uvec2;
+using ivec3 = glm::ivec3;
 using uvec3 = glm::uvec3;
 using glm::abs;
 using glm::ceil;

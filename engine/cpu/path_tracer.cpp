@@ -2,71 +2,40 @@
 
 #include <glm/geometric.hpp>
 
-#include <cmath>
-
 namespace facet::cpu {
 
 namespace m = rules::f64;
 
-glm::dvec3 tracePath(const PathScene& scene, const PathVertex& first, const PathSampleKey& key, int bounces,
+glm::dvec3 tracePath(const PathScene& scene, const ShadedVertex& first, const m::PathSampleKey& key, int bounces,
                      std::vector<BounceRays>& rays, const LobeLimits& limits) {
-  const int limit[3] = {limits.diffuse, limits.glossy, limits.transmission};
-  int taken[3] = {0, 0, 0};
+  const glm::ivec3 limit(limits.diffuse, limits.glossy, limits.transmission);
+  const bool limited = glm::any(glm::greaterThanEqual(limit, glm::ivec3(0)));
+  const double offset = scene.leavingOffset();
   glm::dvec3 radiance = first.radiance;
-  glm::dvec3 throughput(1.0);
-  PathVertex vertex = first;
-  glm::dvec3 sigma(0.0);  // absorption of the medium the path travels in: air, or inside a transmissive object
+  m::PathCarry carry{glm::dvec3(1.0), glm::dvec3(0.0), glm::uvec3(0)};
+  m::PathVertex vertex = first.vertex;
   for (int bounce = 1; bounce <= bounces; ++bounce) {
-    const auto vertexIndex = std::uint32_t(bounce);
-    const double survival = m::path_survival_probability(throughput, vertexIndex);
-    if (survival < 1.0) {
-      if (m::path_roulette_u(key.pixel, key.sample, key.samples, key.seed, vertexIndex) >= survival) break;
-      throughput /= survival;
-    }
-    const glm::dvec2 u = m::path_continuation_u(key.pixel, key.sample, key.samples, key.seed, vertexIndex);
-    glm::dvec3 direction;
-    bool transmitted = false;
-    int lobe = m::PATH_LOBE_DIFFUSE;
-    if (vertex.transmissive) {
-      const m::TransmissiveContinuation next =
-          m::continue_path_transmissive(vertex.params, vertex.transmission, vertex.n, vertex.ng, vertex.v, u,
-                                        m::path_interface_u(key.pixel, key.sample, key.samples, key.seed, vertexIndex));
-      direction = next.direction;
-      transmitted = next.transmitted;
-      lobe = next.lobe;
-      throughput *= next.weight;
-      if (transmitted && !vertex.transmission.thin_walled)
-        sigma = vertex.outside ? vertex.transmission.sigma : glm::dvec3(0.0);
-    } else {
-      const m::PathContinuation next =
-          m::continue_path(vertex.params, vertex.n, vertex.ng, vertex.v, vertex.specularScale, u);
-      direction = next.direction;
-      lobe = m::opaque_continuation_lobe(vertex.params, vertex.n, vertex.v, u);
-      throughput *= next.weight;
-    }
-    if (!m::path_lobe_allowed(taken[lobe], limit[lobe])) break;
-    ++taken[lobe];
-    if (throughput == glm::dvec3(0.0)) break;
+    const m::PathStep step = m::path_step(vertex, carry, key, std::uint32_t(bounce), limited, limit, offset);
+    if (!step.continues) break;
+    carry = step.carry;
 
     BounceRays& counts = rays[std::size_t(bounce)];
     ++counts.rays;
-    const double offset = scene.leavingOffset();
-    const Ray ray{m::shadow_ray_origin(vertex.position, transmitted ? -vertex.ng : vertex.ng, offset), direction,
-                  offset};
-    const std::optional<PathVertex> hit = scene.shadeNearest(
-        ray, key.pixel, key.sample, m::path_vertex_seed(key.seed, vertexIndex + 1), counts.shadowRays);
-    const bool absorbing = sigma != glm::dvec3(0.0);
+    const Ray ray{step.origin, step.direction, offset};
+    const std::optional<ShadedVertex> hit = scene.shadeNearest(
+        ray, key.pixel, key.sample_index, m::path_vertex_seed(key.seed, std::uint32_t(bounce) + 1), counts.shadowRays);
     if (!hit) {
       // D at the vertex the ray left counted the environment, shadowed, over
       // its reflection lobes; its transmission lobe leads here only.
-      if (transmitted)
-        radiance += throughput * m::beer_lambert(sigma, m::INFINITE_DISTANCE) * scene.escapedRadiance(direction);
+      if (step.transmitted)
+        radiance += carry.throughput * m::beer_lambert(carry.sigma, m::INFINITE_DISTANCE) *
+                    scene.escapedRadiance(step.direction);
       break;
     }
     ++counts.hits;
-    if (absorbing) throughput *= m::beer_lambert(sigma, glm::length(hit->position - ray.origin));
-    radiance += throughput * hit->radiance;
-    vertex = *hit;
+    carry.throughput *= m::beer_lambert(carry.sigma, glm::length(hit->vertex.position - ray.origin));
+    radiance += carry.throughput * hit->radiance;
+    vertex = hit->vertex;
   }
   return radiance;
 }

@@ -22,17 +22,11 @@
 
 namespace facet::cpu {
 
-// A shaded path vertex: D(x) towards v, and the BRDF the path continues by.
-struct PathVertex {
+// A shaded vertex: D(x) towards v, and the vertex its path continues from
+// (rules/shading/path_step.h).
+struct ShadedVertex {
   glm::dvec3 radiance{0.0};  // D(x)
-  rules::f64::BrdfParams params{};
-  glm::dvec3 specularScale{1.0};  // energy compensation's factor on the specular lobe
-  glm::dvec3 position{0.0};
-  glm::dvec3 n{0.0}, ng{0.0};  // shading and geometric normals, facing v
-  glm::dvec3 v{0.0};           // towards where the path came from
-  bool transmissive = false;   // continues by continue_path_transmissive, with `transmission`
-  rules::f64::TransmissionParams transmission{};
-  bool outside = true;  // v on the side the outward geometric normal points to
+  rules::f64::PathVertex vertex{};
 };
 
 // The rays of one bounce: bounce 0 is the camera rays and the shadow rays of
@@ -49,7 +43,7 @@ class PathScene {
  public:
   // D at the nearest hit of `ray`, seen from the ray's origin, its
   // environment pairs drawn with `seed`; none where the ray hits nothing.
-  virtual std::optional<PathVertex> shadeNearest(const Ray& ray, std::uint32_t pixel, std::uint32_t sample,
+  virtual std::optional<ShadedVertex> shadeNearest(const Ray& ray, std::uint32_t pixel, std::uint32_t sample,
                                                  std::uint32_t seed, std::uint64_t& shadowRays) const = 0;
   // The offset and t_min of rays that leave a surface (shadow_ray_offset).
   virtual double leavingOffset() const = 0;
@@ -58,14 +52,6 @@ class PathScene {
 
  protected:
   ~PathScene() = default;
-};
-
-// Which random numbers a path draws (rules/sampling/path_samples.h).
-struct PathSampleKey {
-  std::uint32_t pixel = 0;    // in the full image
-  std::uint32_t sample = 0;   // the camera sample
-  std::uint32_t samples = 1;  // camera rays of the pixel
-  std::uint32_t seed = 0;     // the environment's seed
 };
 
 // Continuations of each lobe kind a path may take (PATH_LOBE_*); -1: no limit of its own.
@@ -78,7 +64,7 @@ struct LobeLimits {
 // L of the path whose first vertex is `first` (shaded with the scene's
 // seed), with at most `bounces` continuations; `rays` (bounces + 1 entries)
 // counts each bounce's continuation and shadow rays.
-glm::dvec3 tracePath(const PathScene& scene, const PathVertex& first, const PathSampleKey& key, int bounces,
+glm::dvec3 tracePath(const PathScene& scene, const ShadedVertex& first, const rules::f64::PathSampleKey& key, int bounces,
                      std::vector<BounceRays>& rays, const LobeLimits& limits = {});
 
 }  // namespace facet::cpu

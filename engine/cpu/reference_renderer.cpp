@@ -82,71 +82,45 @@ class ReferenceScene final : public PathScene {
   // The scene's seed: vertex 1's environment pairs (rules/sampling/path_samples.h).
   std::uint32_t environmentSeed() const { return environment_ ? environment_->environment->seed : 0u; }
 
-  // shade(), its environment pairs drawn with `seed`, and the BRDF there.
-  PathVertex shadeVertex(const SceneHit& hit, const glm::dvec3& direction, std::uint32_t pixel, std::uint32_t sample,
-                         std::uint32_t seed, std::uint64_t& shadowRays) const {
+  // shade(), its environment pairs drawn with `seed`, and the vertex a path continues from.
+  ShadedVertex shadeVertex(const SceneHit& hit, const glm::dvec3& direction, std::uint32_t pixel, std::uint32_t sample,
+                           std::uint32_t seed, std::uint64_t& shadowRays) const {
     const glm::dvec3 v = -direction;
-    glm::dvec3 n = hit.surface.shadingNormal, ng = hit.surface.geometricNormal;
-    const bool outside = glm::dot(ng, v) >= 0;
-    if (!outside) n = -n, ng = -ng;
-    m::BrdfParams params = params_[std::size_t(hit.object)];
-    params.clearcoat_normal = n;  // the coat's normal: no normal map applies to it
     const int material = scene_.objects[std::size_t(hit.object)].material;
-    double occlusion = 1.0;
-    glm::dvec3 radiance = scene_.materials[std::size_t(material)].emission;
-    glm::dvec2 anisotropyDirection(1.0, 0.0);
-    if (const auto& textures = scene_.materials[std::size_t(material)].textures) {
-      const m::TexturedSurface surface =
-          texturedHit(geometry_.objects[std::size_t(hit.object)].surface, hit.surface, scene_.textures, *textures,
-                      params, n, ng, direction, radiance, coneSpread_);
-      params = surface.params;
-      n = surface.n;
-      occlusion = surface.occlusion;
-      radiance = surface.emission;
-      anisotropyDirection = surface.anisotropy_direction;
-    }
-    const std::optional<m::TransmissionParams>& transmission = transmission_[std::size_t(hit.object)];
-    if (transmission) params = m::transmissive_brdf_params(params, *transmission, outside);
-    if (params.anisotropy != 0.0) params.tangent = tangent(hit, material, n, anisotropyDirection);
-    // The coat lies over the emission too (KHR_materials_clearcoat).
-    if (params.clearcoat != 0.0) radiance *= m::coat_transmittance(params, glm::dot(params.clearcoat_normal, v));
-    const glm::dvec3 specularScale = ibl::specularScale(compensation_, material, params, glm::dot(n, v));
+    const m::FacingNormals facing = m::facing_normals(hit.surface.shadingNormal, hit.surface.geometricNormal, v);
+    const m::HitMaterial fetched = hitMaterial(hit, facing.ng, direction);
+    const m::SurfaceAtHit s = m::surface_at_hit(fetched, facing, v, hitPartials(hit));
+    const glm::dvec3& position = hit.surface.position;
+    const glm::dvec3 specularScale = ibl::specularScale(compensation_, material, s.params, glm::dot(s.n, v));
+    glm::dvec3 radiance = s.emission;
     if (environment_) {
       glm::dvec3 environment(0.0);
       switch (environment_->environment->method) {
         case scene::IblMethod::Sampled:
-          environment = sampledEnvironment(params, specularScale, hit.surface.position, n, ng, v, pixel, sample, seed,
-                                           shadowRays);
+          environment =
+              sampledEnvironment(s.params, specularScale, position, s.n, s.ng, v, pixel, sample, seed, shadowRays);
           break;
         case scene::IblMethod::Prefiltered:
-          environment = prefilteredEnvironment(params, specularScale, material, n, v);
+          environment = prefilteredEnvironment(s.params, specularScale, material, s.n, v);
           break;
         case scene::IblMethod::Filtered:
-          environment = filteredEnvironment(params, specularScale, hit.surface.position, n, ng, v, pixel, sample, seed,
-                                            shadowRays);
+          environment =
+              filteredEnvironment(s.params, specularScale, position, s.n, s.ng, v, pixel, sample, seed, shadowRays);
           break;
       }
-      radiance += occlusion * environment;
+      radiance += s.occlusion * environment;
     }
     for (const scene::Light& light : scene_.lights) {
-      const m::LightIncidence incidence = m::light_incidence(punctualLight(light), hit.surface.position);
-      if (!m::light_arrives(incidence, n, ng)) continue;
-      if (occluded(hit.surface.position, ng, incidence.direction, incidence.distance, shadowRays)) continue;
-      radiance += m::punctual_radiance(params, n, incidence.direction, v, incidence.color, specularScale);
+      const m::LightIncidence incidence = m::light_incidence(punctualLight(light), position);
+      if (!m::light_arrives(incidence, s.n, s.ng)) continue;
+      if (occluded(position, s.ng, incidence.direction, incidence.distance, shadowRays)) continue;
+      radiance += m::punctual_radiance(s.params, s.n, incidence.direction, v, incidence.color, specularScale);
     }
     return {radiance,
-            params,
-            specularScale,
-            hit.surface.position,
-            n,
-            ng,
-            v,
-            transmission.has_value(),
-            transmission.value_or(m::TransmissionParams{}),
-            outside};
+            {position, s.n, s.ng, v, s.params, specularScale, fetched.transmissive, fetched.transmission, s.outside}};
   }
 
-  std::optional<PathVertex> shadeNearest(const Ray& ray, std::uint32_t pixel, std::uint32_t sample, std::uint32_t seed,
+  std::optional<ShadedVertex> shadeNearest(const Ray& ray, std::uint32_t pixel, std::uint32_t sample, std::uint32_t seed,
                                          std::uint64_t& shadowRays) const override {
     const std::optional<SceneHit> hit = closestHit(ray);
     if (!hit) return std::nullopt;
@@ -158,12 +132,12 @@ class ReferenceScene final : public PathScene {
   glm::dvec3 escapedRadiance(const glm::dvec3& direction) const override { return background(direction); }
 
   void writeAovs(Image& image, std::size_t pixel, const SceneHit& hit, const glm::dvec3& direction) const {
-    glm::dvec3 n = hit.surface.shadingNormal, ng = hit.surface.geometricNormal;
-    if (glm::dot(ng, direction) > 0) n = -n, ng = -ng;
+    const m::FacingNormals facing =
+        m::facing_normals(hit.surface.shadingNormal, hit.surface.geometricNormal, -direction);
     image.depth[pixel] = float(hit.surface.t);
     image.position[pixel] = glm::vec3(hit.surface.position);
-    image.geometricNormal[pixel] = glm::vec3(ng);
-    image.shadingNormal[pixel] = glm::vec3(n);
+    image.geometricNormal[pixel] = glm::vec3(facing.ng);
+    image.shadingNormal[pixel] = glm::vec3(facing.n);
     image.patchId[pixel] = std::uint32_t(patchOffset_[std::size_t(hit.object)] + hit.surface.patch);
     image.faceId[pixel] = std::uint32_t(faceOffset_[std::size_t(hit.object)] + hit.surface.coarseFace);
     image.uv[pixel] = glm::vec2(float(hit.surface.u), float(hit.surface.v));
@@ -178,17 +152,36 @@ class ReferenceScene final : public PathScene {
   }
 
  private:
-  // The anisotropic lobe's tangent at `hit` about the shading normal n
-  // (rules/surface/tangent.h), turned by the material's rotation and a
-  // texture's `direction`: from the texture coordinates where the surface
-  // has them, else the patch's dP/du, as the GPU's dP/ds.
-  glm::dvec3 tangent(const SceneHit& hit, int material, const glm::dvec3& n, const glm::dvec2& direction) const {
+  // What the material at `hit` offers surface_at_hit: its parameters, its
+  // textures read at the hit (seen along `direction`, of geometric normal ng)
+  // and its transmission.
+  m::HitMaterial hitMaterial(const SceneHit& hit, const glm::dvec3& ng, const glm::dvec3& direction) const {
+    const auto object = std::size_t(hit.object);
+    const materials::Material& material = scene_.materials[std::size_t(scene_.objects[object].material)];
+    m::HitMaterial fetched{};
+    fetched.params = params_[object];
+    fetched.emission = material.emission;
+    fetched.textured = material.textures.has_value();
+    if (fetched.textured) {
+      fetched.factors = texturedFactors(*material.textures);
+      fetched.texels = materialTexels(geometry_.objects[object].surface, hit.surface, scene_.textures,
+                                      *material.textures, ng, direction, coneSpread_);
+    }
+    fetched.transmissive = transmission_[object].has_value();
+    fetched.transmission = transmission_[object].value_or(m::TransmissionParams{});
+    if (fetched.params.anisotropy != 0.0)
+      fetched.anisotropy_rotation = {std::cos(material.anisotropyRotation), std::sin(material.anisotropyRotation)};
+    return fetched;
+  }
+
+  // The partials the anisotropic lobe's tangent is made of, evaluated only
+  // where the material is anisotropic (textures may only scale its strength).
+  m::HitPartials hitPartials(const SceneHit& hit) const {
+    if (params_[std::size_t(hit.object)].anisotropy == 0.0) return {};
     const scene::SubdivisionSurface& surface = geometry_.objects[std::size_t(hit.object)].surface;
     const scene::LimitPoint p = surface.evaluatePatch(hit.surface.patch, hit.surface.u, hit.surface.v);
     const scene::LimitTexcoord uv = surface.evaluateTexcoord(hit.surface.patch, hit.surface.u, hit.surface.v);
-    const double angle = scene_.materials[std::size_t(material)].anisotropyRotation;
-    const glm::dvec2 rotation = m::turned_rotation(glm::dvec2(std::cos(angle), std::sin(angle)), direction);
-    return m::texcoord_tangent(n, p.du, p.dv, uv.du, uv.dv, rotation.x, rotation.y);
+    return {p.du, p.dv, uv.du, uv.dv};
   }
 
   bool occluded(const glm::dvec3& position, const glm::dvec3& ng, const glm::dvec3& l, double distance,
@@ -295,24 +288,20 @@ class ReferenceScene final : public PathScene {
   glm::dvec3 prefilteredEnvironment(const m::BrdfParams& params, const glm::dvec3& specularScale, int material,
                                     const glm::dvec3& n, const glm::dvec3& v) const {
     const ibl::PrefilteredEnvironment& prefiltered = environment_->prefiltered;
-    const double nv = glm::dot(n, v);
-    if (nv <= m::COS_EPSILON) return glm::dvec3(0.0);  // nothing to look up (the lobe may not even exist)
-    const double alpha = m::isotropic_equivalent_alpha(params);
-    const glm::dvec3 lobe = m::split_sum_direction(m::anisotropic_bent_normal(params, n, v), v, alpha);
-    const glm::dvec3 radiance = ibl::prefilteredRadiance(prefiltered, toMap(lobe), alpha);
+    const m::SplitSumLookups l = m::split_sum_lookups(params, n, v);
+    if (!l.visible) return glm::dvec3(0.0);
+    const glm::dvec3 radiance = ibl::prefilteredRadiance(prefiltered, toMap(l.lobe), l.alpha);
     const glm::dvec2 dfg =
-        ibl::dfgLookup(prefiltered.dfg[std::size_t(environment_->dfgTable[std::size_t(material)])], nv, alpha);
+        ibl::dfgLookup(prefiltered.dfg[std::size_t(environment_->dfgTable[std::size_t(material)])], l.nv, l.alpha);
     const glm::dvec3 irradiance = ibl::irradianceOverPi(prefiltered, toMap(n));
-    if (params.clearcoat == 0.0)
-      return environment_->environment->intensity * m::split_sum(params, nv, radiance, dfg, irradiance, specularScale);
-    const glm::dvec3 nc = params.clearcoat_normal;
-    const double nvCoat = glm::dot(nc, v), alphaCoat = params.clearcoat_alpha;
-    const glm::dvec3 coatLobe = m::split_sum_direction(nc, v, alphaCoat);
+    glm::dvec3 coatRadiance(0.0);
+    glm::dvec2 coatDfg(0.0);
+    if (l.coated) {
+      coatRadiance = ibl::prefilteredRadiance(prefiltered, toMap(l.coat_lobe), l.coat_alpha);
+      coatDfg = ibl::dfgLookup(prefiltered.dfg[std::size_t(environment_->coatDfgTable)], l.nv_coat, l.coat_alpha);
+    }
     return environment_->environment->intensity *
-           m::coated_split_sum(
-               params, nv, radiance, dfg, irradiance, specularScale, nvCoat,
-               ibl::prefilteredRadiance(prefiltered, toMap(coatLobe), alphaCoat),
-               ibl::dfgLookup(prefiltered.dfg[std::size_t(environment_->coatDfgTable)], nvCoat, alphaCoat));
+           m::environment_split_sum(params, l, radiance, dfg, irradiance, specularScale, coatRadiance, coatDfg);
   }
 
   const scene::Scene& scene_;
@@ -394,7 +383,7 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
             radiance += reference.shade(*hit, direction, pixelId, sample, shadow);
             continue;
           }
-          const PathVertex first = reference.shadeVertex(*hit, direction, pixelId, sample, reference.environmentSeed(),
+          const ShadedVertex first = reference.shadeVertex(*hit, direction, pixelId, sample, reference.environmentSeed(),
                                                          bounceRays[0].shadowRays);
           radiance += tracePath(reference, first, {pixelId, sample, raysPerPixel, reference.environmentSeed()}, bounces,
                                 bounceRays, lobeLimits);

@@ -8,10 +8,9 @@ namespace facet::cpu {
 
 namespace m = rules::f64;
 
-m::TexturedSurface texturedHit(const scene::SubdivisionSurface& surface, const SurfaceHit& hit,
-                               const std::vector<scene::Texture>& textures, const materials::MaterialTextures& t,
-                               const m::BrdfParams& params, const glm::dvec3& n, const glm::dvec3& ng,
-                               const glm::dvec3& direction, const glm::dvec3& emission, double coneSpread) {
+m::MaterialTexels materialTexels(const scene::SubdivisionSurface& surface, const SurfaceHit& hit,
+                                 const std::vector<scene::Texture>& textures, const materials::MaterialTextures& t,
+                                 const glm::dvec3& ng, const glm::dvec3& direction, double coneSpread) {
   const scene::LimitPoint p = surface.evaluatePatch(hit.patch, hit.u, hit.v);
   // A slot reads the set of texture coordinates it names.
   const auto footprint = [&](const materials::TextureSlot& slot) {
@@ -21,16 +20,35 @@ m::TexturedSurface texturedHit(const scene::SubdivisionSurface& surface, const S
   const auto value = [&](const materials::TextureSlot& slot) {
     return scene::sampleSlot(textures, slot, footprint(slot));
   };
-  // A vertex colour multiplies the base colour as its texture does (glTF COLOR_0).
-  const glm::dvec3 base = glm::dvec3(value(t.baseColorTexture)) * surface.evaluateColor(hit.patch, hit.u, hit.v);
-  const m::TexturedSurface textured = m::textured_surface(
-      params, n, footprint(t.normalTexture), t.baseColor, t.metallic, t.roughness, t.normalScale, t.occlusionStrength,
-      emission, base, glm::dvec3(value(t.metallicRoughnessTexture)), t.normalTexture.texture >= 0,
-      glm::dvec3(value(t.normalTexture)), value(t.occlusionTexture).r, glm::dvec3(value(t.emissiveTexture)), t.unlit);
-  return m::textured_layers(
-      textured, footprint(t.clearcoatNormalTexture), value(t.clearcoatTexture).r, value(t.clearcoatRoughnessTexture).g,
-      t.clearcoatNormalTexture.texture >= 0, glm::dvec3(value(t.clearcoatNormalTexture)), t.clearcoatNormalScale,
-      glm::dvec3(value(t.sheenColorTexture)), t.anisotropyTexture.texture >= 0, glm::dvec3(value(t.anisotropyTexture)));
+  m::MaterialTexels texels;
+  texels.base = glm::dvec3(value(t.baseColorTexture)) * surface.evaluateColor(hit.patch, hit.u, hit.v);
+  texels.metallic_roughness = glm::dvec3(value(t.metallicRoughnessTexture));
+  texels.normal = glm::dvec3(value(t.normalTexture));
+  texels.normal_frame = footprint(t.normalTexture);
+  texels.occlusion = value(t.occlusionTexture).r;
+  texels.emission = glm::dvec3(value(t.emissiveTexture));
+  texels.coat = value(t.clearcoatTexture).r;
+  texels.coat_roughness = value(t.clearcoatRoughnessTexture).g;
+  texels.coat_normal = glm::dvec3(value(t.clearcoatNormalTexture));
+  texels.coat_normal_frame = footprint(t.clearcoatNormalTexture);
+  texels.sheen = glm::dvec3(value(t.sheenColorTexture));
+  texels.anisotropy = glm::dvec3(value(t.anisotropyTexture));
+  return texels;
+}
+
+m::TexturedFactors texturedFactors(const materials::MaterialTextures& t) {
+  m::TexturedFactors f;
+  f.base = t.baseColor;
+  f.metallic = t.metallic;
+  f.roughness = t.roughness;
+  f.normal_mapped = t.normalTexture.texture >= 0;
+  f.normal_scale = t.normalScale;
+  f.occlusion_strength = t.occlusionStrength;
+  f.unlit = t.unlit;
+  f.coat_normal_mapped = t.clearcoatNormalTexture.texture >= 0;
+  f.coat_normal_scale = t.clearcoatNormalScale;
+  f.anisotropy_mapped = t.anisotropyTexture.texture >= 0;
+  return f;
 }
 
 }  // namespace facet::cpu

@@ -1,8 +1,7 @@
-// A textured material at a hit of the CPU reference
-// (rules/shading/textured_material.h): every slot read at the hit's
-// coordinates of the set it names, the base colour times the vertex colour,
-// and the layers' textures. The GPU's counterpart is surface.comp's
-// textured_hit.
+// What the CPU reference fetches of a textured material at a hit
+// (rules/shading/surface_at_hit.h takes it from there): every slot read at
+// the hit's coordinates of the set it names, with the ray cone's footprint,
+// the base colour times the vertex colour.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -17,13 +16,15 @@
 
 namespace facet::cpu {
 
-// Material textures `t` at `hit` on `surface`, seen along `direction` with
-// the normals n and ng facing the eye, the ray's cone widening by
-// `coneSpread` per unit of distance, and emission factor `emission`.
-rules::f64::TexturedSurface texturedHit(const scene::SubdivisionSurface& surface, const SurfaceHit& hit,
-                                        const std::vector<scene::Texture>& textures,
-                                        const materials::MaterialTextures& t, const rules::f64::BrdfParams& params,
-                                        const glm::dvec3& n, const glm::dvec3& ng, const glm::dvec3& direction,
-                                        const glm::dvec3& emission, double coneSpread);
+// Material textures `t` at `hit` on `surface`, seen along `direction`, of
+// geometric normal ng, the ray's cone widening by `coneSpread` per unit of
+// distance.
+rules::f64::MaterialTexels materialTexels(const scene::SubdivisionSurface& surface, const SurfaceHit& hit,
+                                          const std::vector<scene::Texture>& textures,
+                                          const materials::MaterialTextures& t, const glm::dvec3& ng,
+                                          const glm::dvec3& direction, double coneSpread);
+
+// The glTF factors of textures `t`, as the rule takes them.
+rules::f64::TexturedFactors texturedFactors(const materials::MaterialTextures& t);
 
 }  // namespace facet::cpu

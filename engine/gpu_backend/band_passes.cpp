@@ -24,27 +24,6 @@ double sharedModel(const scene::Scene& scene, int materials::Material::*model) {
   return shared;
 }
 
-// Whether some object's material transmits: only then do the kernels take
-// TRANSMISSION = 1, so that other scenes run exactly the kernels they did.
-bool transmits(const scene::Scene& scene) {
-  for (const scene::Object& object : scene.objects)
-    if (materials::isTransmissive(scene.materials[std::size_t(object.material)])) return true;
-  return false;
-}
-
-// Whether some object culls its back faces, has a cutout: only then do the
-// tracing kernels take CULLING = 1, CUTOUTS = 1, so that other scenes run
-// exactly the kernels they did (compute/raycast/traversal/hit_filter.glsl).
-bool culls(const scene::Scene& scene) {
-  for (const scene::Object& object : scene.objects)
-    if (scene::cullsBackFaces(object, scene.materials[std::size_t(object.material)])) return true;
-  return false;
-}
-
-bool cutsOut(const scene::Scene& scene) {
-  return std::any_of(scene.objects.begin(), scene.objects.end(), scene::hasCutout);
-}
-
 double environmentMethod(const scene::Scene& scene) {
   if (!scene.environment) return 0;
   switch (scene.environment->method) {
@@ -75,49 +54,47 @@ constexpr RayPasses kBouncePasses{Pass::BounceIntersect,       Pass::BounceCompa
                                   Pass::BounceShadow,          Pass::BounceCompactShadowFallbacks,
                                   Pass::BounceShadowFallbacks, Pass::BounceGather};
 
-// Whether some material takes its glTF parameters per hit: it reads a
-// texture, or vertex colours multiply its base colour.
-bool perHitMaterials(const scene::Scene& scene) {
-  return std::any_of(scene.materials.begin(), scene.materials.end(),
-                     [](const materials::Material& m) { return m.textures.has_value(); });
+// The surface kernel's FEATURES constant (compute/layout/surface_features.h).
+double surfaceFeatures(const scene::Scene& scene, const scene::SceneFeatures& f,
+                       const ibl::EnvironmentLighting* lighting, const ibl::CompensationTables& compensation,
+                       bool paths) {
+  const auto bit = [](bool on, int feature) { return on ? 1 << feature : 0; };
+  return bit(scene.environment && scene.environment->occlusion, layout::FACET_FEATURE_OCCLUSION) |
+         bit(lighting && lighting->environmentSamples, layout::FACET_FEATURE_ENVIRONMENT_SAMPLES) |
+         bit(f.textures, layout::FACET_FEATURE_TEXTURES) | bit(f.emission, layout::FACET_FEATURE_EMISSION) |
+         bit(!compensation.tables.empty(), layout::FACET_FEATURE_COMPENSATION) |
+         bit(paths, layout::FACET_FEATURE_PATHS) | bit(f.transmission, layout::FACET_FEATURE_TRANSMISSION) |
+         bit(paths && f.lobeLimits, layout::FACET_FEATURE_LOBE_LIMITS) |
+         bit(f.anisotropy, layout::FACET_FEATURE_ANISOTROPY) | bit(f.clearcoat, layout::FACET_FEATURE_CLEARCOAT) |
+         bit(f.sheen, layout::FACET_FEATURE_SHEEN) | bit(f.channels, layout::FACET_FEATURE_CHANNELS);
 }
 
 }  // namespace
 
-Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::EnvironmentLighting* lighting,
-                const ibl::CompensationTables& compensation, bool tessellated) {
+Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const scene::SceneFeatures& features,
+                const ibl::EnvironmentLighting* lighting, const ibl::CompensationTables& compensation,
+                bool tessellated) {
+  // A constant a scene's features leave at its default is not set, so that
+  // a scene without the feature runs the kernel it always ran.
+  const auto feature = [](std::vector<gpu::ConstantEntry>& constants, bool on, const char* name) {
+    if (on) constants.push_back({name, 1});
+  };
   std::vector<gpu::ConstantEntry> method{{"METHOD", tessellated ? 1.0 : 0.0}};
   std::vector<gpu::ConstantEntry> cameraFallback{{"SHADOW", 0}}, shadowFallback{{"SHADOW", 1}};
   for (auto* constants : {&method, &cameraFallback, &shadowFallback}) {
-    if (culls(scene)) constants->push_back({"CULLING", 1});
-    if (cutsOut(scene)) constants->push_back({"CUTOUTS", 1});
+    feature(*constants, features.culling, "CULLING");
+    feature(*constants, features.cutouts, "CUTOUTS");
   }
-  std::vector<gpu::ConstantEntry> surface{{"LIGHT_COUNT", double(scene.lights.size())},
-                                          {"ENVIRONMENT", environmentMethod(scene)},
-                                          {"OCCLUSION", scene.environment && scene.environment->occlusion ? 1.0 : 0.0},
-                                          {"ENVIRONMENT_SAMPLES", lighting && lighting->environmentSamples ? 1.0 : 0.0},
-                                          {"D_MODEL", sharedModel(scene, &materials::Material::distribution)},
-                                          {"G_MODEL", sharedModel(scene, &materials::Material::geometry)},
-                                          {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)},
-                                          {"TEXTURES", !scene.textures.empty() || perHitMaterials(scene) ? 1.0 : 0.0},
-                                          {"EMISSION", double(emissionSlots(scene))},
-                                          {"COMPENSATION", compensation.tables.empty() ? 0.0 : 1.0}};
-  const bool transmission = transmits(scene);
-  if (transmission) surface.push_back({"TRANSMISSION", 1});
-  if (std::any_of(scene.materials.begin(), scene.materials.end(),
-                  [](const materials::Material& m) { return m.anisotropy > 0.0; }))
-    surface.push_back({"ANISOTROPY", 1});
-  if (std::any_of(scene.materials.begin(), scene.materials.end(),
-                  [](const materials::Material& m) { return m.clearcoat > 0.0; }))
-    surface.push_back({"CLEARCOAT", 1});
-  if (std::any_of(scene.materials.begin(), scene.materials.end(),
-                  [](const materials::Material& m) { return m.sheenColor != glm::dvec3(0.0); }))
-    surface.push_back({"SHEEN", 1});
-  if (std::any_of(scene.objects.begin(), scene.objects.end(), [](const scene::Object& o) {
-        return !o.cage.faceVertexTexcoords1.empty() || !o.cage.faceVertexColors.empty();
-      }))
-    surface.push_back({"CHANNELS", 1});
-  Kernels k{&pipelines.get("intersect", method), &pipelines.get("surface", surface),
+  auto surface = [&](bool paths) {
+    return std::vector<gpu::ConstantEntry>{
+        {"LIGHT_COUNT", double(scene.lights.size())},
+        {"ENVIRONMENT", environmentMethod(scene)},
+        {"D_MODEL", sharedModel(scene, &materials::Material::distribution)},
+        {"G_MODEL", sharedModel(scene, &materials::Material::geometry)},
+        {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)},
+        {"FEATURES", surfaceFeatures(scene, features, lighting, compensation, paths)}};
+  };
+  Kernels k{&pipelines.get("intersect", method), &pipelines.get("surface", surface(false)),
             &pipelines.get("dispatch_args", {}), &pipelines.get("shadow", method),
             &pipelines.get("gather", {}),        &pipelines.get("resolve", {})};
   if (!tessellated) {
@@ -125,25 +102,18 @@ Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::
     k.resolveCameraFallbacks = &pipelines.get("fallback_resolve", {});
     k.shadowFallbacks = &pipelines.get("fallback", shadowFallback);
   }
-  if (scene.render.bounces > 0) {
-    std::vector<gpu::ConstantEntry> pathSurface = surface;
-    pathSurface.push_back({"PATHS", 1});
-    // Limits per lobe kind: only a scene that sets one counts its paths'
-    // lobes, so that other scenes run exactly the kernels they did.
-    const bool limits = scene::limitsLobes(scene.render);
-    if (limits) pathSurface.push_back({"LOBE_LIMITS", 1});
-    std::vector<gpu::ConstantEntry> pathIntersect = method;
-    pathIntersect.push_back({"PATHS", 1});
-    k.pathSurface = &pipelines.get("surface", pathSurface);
-    std::vector<gpu::ConstantEntry> continuation, pathGather{{"PATHS", 1}};
-    if (transmission) continuation.push_back({"TRANSMISSION", 1}), pathGather.push_back({"TRANSMISSION", 1});
-    if (limits) continuation.push_back({"LOBE_LIMITS", 1});
-    k.continuePaths = &pipelines.get("continue_paths", continuation);
-    k.pathIntersect = &pipelines.get("intersect", pathIntersect);
-    k.pathGather = &pipelines.get("gather", pathGather);
-    cameraFallback.push_back({"PATHS", 1});
-    if (!tessellated) k.pathFallbacks = &pipelines.get("fallback", cameraFallback);
-  }
+  if (!features.paths) return k;
+  std::vector<gpu::ConstantEntry> pathIntersect = method, continuation, pathGather{{"PATHS", 1}};
+  pathIntersect.push_back({"PATHS", 1});
+  feature(continuation, features.transmission, "TRANSMISSION");
+  feature(continuation, features.lobeLimits, "LOBE_LIMITS");
+  feature(pathGather, features.transmission, "TRANSMISSION");
+  k.pathSurface = &pipelines.get("surface", surface(true));
+  k.continuePaths = &pipelines.get("continue_paths", continuation);
+  k.pathIntersect = &pipelines.get("intersect", pathIntersect);
+  k.pathGather = &pipelines.get("gather", pathGather);
+  cameraFallback.push_back({"PATHS", 1});
+  if (!tessellated) k.pathFallbacks = &pipelines.get("fallback", cameraFallback);
   return k;
 }
 

@@ -16,6 +16,7 @@
 #include "engine/ibl/compensation_tables.h"
 #include "engine/ibl/environment_lighting.h"
 #include "scenes/scene.h"
+#include "scenes/scene_features.h"
 
 namespace facet::gpu_backend {
 
@@ -30,8 +31,9 @@ struct Kernels {
                        *pathFallbacks = nullptr, *pathGather = nullptr;
 };
 
-Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const ibl::EnvironmentLighting* lighting,
-                const ibl::CompensationTables& compensation, bool tessellated);
+Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const scene::SceneFeatures& features,
+                const ibl::EnvironmentLighting* lighting, const ibl::CompensationTables& compensation,
+                bool tessellated);
 
 // The rays of one bounce, as engine/cpu/path_tracer.h's BounceRays counts them.
 struct GpuBounceRays {

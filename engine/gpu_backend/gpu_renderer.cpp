@@ -105,8 +105,9 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   // the last render diced the same geometry (wall clock).
   start = std::chrono::steady_clock::now();
   layout::FrameParams frame = frameParams(scene, geometry, strata, packed);
-  frame.slotsPerRay =
-      std::uint32_t(scene.lights.size()) + environmentSlots(lighting ? &*lighting : nullptr) + emissionSlots(scene);
+  const scene::SceneFeatures features = scene::sceneFeatures(scene);
+  frame.slotsPerRay = std::uint32_t(scene.lights.size()) + environmentSlots(lighting ? &*lighting : nullptr) +
+                      (features.emission ? 1 : 0);
   const EnvironmentData environment = lighting ? environmentData(*lighting, frame) : EnvironmentData{};
   const ibl::CompensationTables compensation = ibl::compensationTables(scene);
   const std::vector<glm::vec4> compensationTexelData = compensationTexels(compensation, frame);
@@ -138,7 +139,7 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   // at once before the first dispatch (wall clock).
   pipelines_.defer();
   const DiceKernels diceK = reused ? DiceKernels{} : diceKernels(pipelines_, tessellated);
-  const Kernels k = kernels(pipelines_, scene, lighting ? &*lighting : nullptr, compensation, tessellated);
+  const Kernels k = kernels(pipelines_, scene, features, lighting ? &*lighting : nullptr, compensation, tessellated);
   pipelines_.createDeferred();
   if (!reused) dice(d, diceK, packed, table, clock);
 

@@ -18,6 +18,7 @@ namespace facet::gpu_layout {
 using rules::f32::uint;
 #include "compute/layout/patch_records.h"
 #include "compute/layout/raycast_layout.h"
+#include "compute/layout/surface_features.h"
 #include "compute/layout/wide_bvh.h"
 }  // namespace facet::gpu_layout
 

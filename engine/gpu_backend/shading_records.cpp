@@ -158,14 +158,6 @@ std::vector<glm::vec4> compensationTexels(const ibl::CompensationTables& compens
   return texels;
 }
 
-std::uint32_t emissionSlots(const scene::Scene& scene) {
-  for (const scene::Object& object : scene.objects) {
-    const materials::Material& m = scene.materials[std::size_t(object.material)];
-    if (m.emission != glm::dvec3(0.0)) return 1;
-  }
-  return 0;
-}
-
 std::uint32_t environmentSlots(const ibl::EnvironmentLighting* lighting) {
   if (!lighting) return 0;
   const scene::Environment& e = *lighting->environment;

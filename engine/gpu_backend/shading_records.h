@@ -37,10 +37,6 @@ struct EnvironmentData {
 
 EnvironmentData environmentData(const ibl::EnvironmentLighting& lighting, gpu_layout::FrameParams& frame);
 
-// The slot per camera ray of what the surface emits, after the
-// environment's: one when some object's material emits.
-std::uint32_t emissionSlots(const scene::Scene& scene);
-
 // Slots per camera ray after the lights': none without an environment; one
 // for what it adds without shadow rays; one per traced sample of a pair.
 std::uint32_t environmentSlots(const ibl::EnvironmentLighting* lighting);

@@ -64,3 +64,47 @@ FACET_FN vec3 coated_split_sum(BrdfParams p, real nv, vec3 prefiltered, vec2 dfg
       nv_coat <= COS_EPSILON ? vec3(real(0)) : prefiltered_coat * (p.clearcoat * (COAT_F0 * dfg_coat.x + dfg_coat.y));
   return (specular * out_coat + diffuse * in_diffuse) * out_coat + coat;
 }
+
+// Where the prefiltered method reads its levels and tables at a shading
+// point: for the base, along its (bent) lobe at its isotropic-equivalent
+// alpha; under a clear coat, for the coat too, about the coat's normal.
+// Nothing is read where n.v is under the horizon policy's cutoff: the lobe
+// may not even exist there.
+struct SplitSumLookups {
+  bool visible;
+  real nv;
+  real alpha;
+  vec3 lobe;
+  bool coated;
+  real nv_coat;
+  real coat_alpha;
+  vec3 coat_lobe;
+};
+
+FACET_FN SplitSumLookups split_sum_lookups(BrdfParams p, vec3 n, vec3 v) {
+  SplitSumLookups l;
+  l.nv = dot(n, v);
+  l.visible = l.nv > COS_EPSILON;
+  l.alpha = isotropic_equivalent_alpha(p);
+  l.lobe = n;
+  l.coated = p.clearcoat != real(0);
+  l.nv_coat = real(0);
+  l.coat_alpha = p.clearcoat_alpha;
+  l.coat_lobe = n;
+  if (!l.visible) return l;
+  l.lobe = split_sum_direction(anisotropic_bent_normal(p, n, v), v, l.alpha);
+  if (!l.coated) return l;
+  l.nv_coat = dot(p.clearcoat_normal, v);
+  l.coat_lobe = split_sum_direction(p.clearcoat_normal, v, l.coat_alpha);
+  return l;
+}
+
+// The split sum from what was read at `l`: the base's prefiltered radiance,
+// DFG pair and irradiance, and (read only where l.coated) the coat's.
+FACET_FN vec3 environment_split_sum(BrdfParams p, SplitSumLookups l, vec3 prefiltered, vec2 dfg,
+                                    vec3 irradiance_over_pi, vec3 specular_scale, vec3 prefiltered_coat,
+                                    vec2 dfg_coat) {
+  if (!l.coated) return split_sum(p, l.nv, prefiltered, dfg, irradiance_over_pi, specular_scale);
+  return coated_split_sum(p, l.nv, prefiltered, dfg, irradiance_over_pi, specular_scale, l.nv_coat,
+                          prefiltered_coat, dfg_coat);
+}

@@ -1,18 +1,8 @@
 // Paths (docs/rendering.md, "Paths"): a camera ray's path state as the
 // kernels pack and unpack it (compute/layout/raycast_layout.h's PathState).
-// Needs rules/shading/brdf.h and transmissive_continuation.h.
+// Needs rules/shading/path_step.h.
 #ifndef FACET_RAYCAST_PATH_STATE_GLSL
 #define FACET_RAYCAST_PATH_STATE_GLSL
-
-// The vertex a path continues from: normals face v.
-struct PathVertex {
-  vec3 position;
-  vec3 n;
-  vec3 ng;
-  vec3 v;
-  BrdfParams params;
-  vec3 specular_scale;
-};
 
 // What a path carries for transmission (PathState's last members).
 struct PathMedium {
@@ -53,7 +43,9 @@ TransmissionParams transmission_params(MaterialRecord m) {
   return t;
 }
 
-PathVertex path_vertex(PathState s) {
+// The vertex a path continues from, as its state holds it: where it is
+// transmissive, with the transmission of the material its medium names.
+PathVertex path_vertex(PathState s, bool transmissive, TransmissionParams transmission) {
   BrdfParams p;
   p.d_model = s.dModel;
   p.g_model = s.gModel;
@@ -73,7 +65,8 @@ PathVertex path_vertex(PathState s) {
   p.sheen_albedo_near = vec4(s.sheenAlbedo0, s.sheenAlbedo1, s.sheenAlbedo2, s.sheenAlbedo3);
   p.sheen_albedo_far = vec4(s.sheenAlbedo4, s.sheenAlbedo5, s.sheenAlbedo6, s.sheenAlbedo7);
   return PathVertex(vec3(s.positionX, s.positionY, s.positionZ), vec3(s.nX, s.nY, s.nZ), vec3(s.ngX, s.ngY, s.ngZ),
-                    vec3(s.vX, s.vY, s.vZ), p, vec3(s.specularR, s.specularG, s.specularB));
+                    vec3(s.vX, s.vY, s.vZ), p, vec3(s.specularR, s.specularG, s.specularB), transmissive,
+                    transmission, (s.flags & FACET_PATH_OUTSIDE) != 0u);
 }
 
 #endif

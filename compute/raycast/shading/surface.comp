@@ -1,51 +1,20 @@
-// Per camera ray that hit: the surface point, its limit normal and, from the
-// centre ray, the pixel's AOVs; per light of a shaded sample, the unshadowed
-// radiance pi f(l, v) c_light (n.l) and the shadow ray that decides it; then
-// the environment's share (docs/rendering.md): prefiltered, or sampled or
-// filtered without occlusion, in one slot that no ray tests; sampled or
-// filtered with occlusion, one slot and shadow ray per environment and per
-// BRDF sample. A ray that
-// misses writes the miss AOVs and, with an environment, the radiance it
-// sees in the environment's first slot. Every slot gets its contribution;
-// the shadow rays that decide some of them are appended to one compacted
-// list (counters.shadowRays), so the shadow pass costs nothing for slots,
-// samples or pixels that need no ray.
-//
-// Specialization: LIGHT_COUNT, ENVIRONMENT
-// (0 none, 1 sampled, 2 prefiltered, 3 filtered), OCCLUSION (sampled,
-// filtered: 1 traces the environment's shadow rays), ENVIRONMENT_SAMPLES
-// (filtered: 1 adds the environment technique), the BRDF models D_MODEL, G_MODEL,
-// F_MODEL, each -1 when the scene's materials use several (the model is then
-// read per material), TEXTURES (1 when some material reads a texture) and
-// EMISSION (1 when some material emits: each ray's last slot holds it) and
-// COMPENSATION (1 when some material's specular lobe is energy-compensated).
-// PATHS (docs/rendering.md, "Paths"): 1 writes each camera ray's path state
-// (its first vertex, or none) and counts the rays that hit; with
-// frame.pathVertex > 0 the invocations are those of the compacted
-// continuation rays instead (dispatched indirectly), each shading the vertex
-// it hits into its camera ray's slots, with the environment pairs of that
-// vertex's seed, and moving its path on to that vertex (a miss ends it).
-// TRANSMISSION (docs/rendering.md, "Transmission and absorption"): 1 when
-// some material transmits; D at a vertex of one takes
-// transmissive_brdf_params by the side v lies on, a continuation ray's path
-// takes Beer-Lambert's factor over the segment it travelled, and one that
-// went through its last surface and misses sees the environment in the
-// environment's slot (gather adds it).
-// LOBE_LIMITS (docs/rendering.md, "Limits per lobe kind"): 1 when the scene
-// sets one; a continuation ray's path keeps its counts per lobe kind.
-// ANISOTROPY (docs/shading.md, "Anisotropy"): 1 when some material is
-// anisotropic; its hits evaluate the tangent field, and 0 keeps every lobe
-// on the isotropic path.
-// CLEARCOAT (docs/shading.md, "Clear coat"): 1 when some material has a
-// clear coat; 0 keeps every material on the bare base's path.
-// SHEEN (docs/shading.md, "Sheen"): 1 when some material has a sheen; 0
-// keeps every material on the path without one.
-// CHANNELS (docs/rendering.md, "Texture coordinates and vertex colours"): 1
-// when some object has vertex colours or a second set of texture
-// coordinates; 0 evaluates neither.
+// Per ray that hit: the material at the hit (rules/shading/surface_at_hit.h),
+// then one slot per light of its unshadowed radiance pi f c_light (n.l) with
+// the shadow ray that decides it, the environment's share (docs/rendering.md:
+// prefiltered in one slot no ray tests; sampled or filtered, one slot and
+// shadow ray per sample of either technique), and emission. Shadow rays go to
+// one compacted list (counters.shadowRays), so slots that need none cost
+// none. A ray that misses writes the miss AOVs and the environment it sees.
+// With PATHS (docs/rendering.md, "Paths") the invocations are a bounce's
+// continuation rays past the camera rays', and each writes its path's state.
+// Specialization: LIGHT_COUNT; the BRDF models D_MODEL, G_MODEL, F_MODEL (-1
+// where the scene's materials use several: read per material); ENVIRONMENT
+// (0 none, 1 sampled, 2 prefiltered, 3 filtered); FEATURES, the scene's
+// features as bits (compute/layout/surface_features.h).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#include "compute/layout/surface_features.h"
 #include "compute/raycast/common/scene_bindings.glsl"
 #include "compute/raycast/traversal/ray.glsl"
 #include "rules/language.glsl"
@@ -68,6 +37,7 @@
 #include "rules/sampling/scrambled_net.h"
 #include "rules/sampling/path_samples.h"
 #include "rules/shading/lights.h"
+#include "rules/shading/path_continuation.h"
 #include "rules/environment/sampled_environment.h"
 #include "rules/environment/prefilter.h"
 #include "rules/environment/filtered_environment.h"
@@ -76,25 +46,28 @@
 #include "rules/shading/dielectric.h"
 #include "rules/shading/absorption.h"
 #include "rules/shading/transmissive_continuation.h"
+#include "rules/shading/path_step.h"
 #include "rules/surface/tangent.h"
+#include "rules/shading/surface_at_hit.h"
 
 layout(constant_id = 1) const int LIGHT_COUNT = 1;
 layout(constant_id = 2) const int D_MODEL = -1;
 layout(constant_id = 3) const int G_MODEL = -1;
 layout(constant_id = 4) const int F_MODEL = -1;
 layout(constant_id = 5) const int ENVIRONMENT = 0;
-layout(constant_id = 6) const int OCCLUSION = 1;
-layout(constant_id = 7) const int ENVIRONMENT_SAMPLES = 0;
-layout(constant_id = 8) const int TEXTURES = 0;
-layout(constant_id = 9) const int EMISSION = 0;
-layout(constant_id = 10) const int COMPENSATION = 0;
-layout(constant_id = 11) const int PATHS = 0;
-layout(constant_id = 12) const int TRANSMISSION = 0;
-layout(constant_id = 13) const int LOBE_LIMITS = 0;
-layout(constant_id = 14) const int ANISOTROPY = 0;
-layout(constant_id = 15) const int CLEARCOAT = 0;
-layout(constant_id = 16) const int SHEEN = 0;
-layout(constant_id = 17) const int CHANNELS = 0;
+layout(constant_id = 6) const int FEATURES = 0;
+const int OCCLUSION = (FEATURES >> FACET_FEATURE_OCCLUSION) & 1;
+const int ENVIRONMENT_SAMPLES = (FEATURES >> FACET_FEATURE_ENVIRONMENT_SAMPLES) & 1;
+const int TEXTURES = (FEATURES >> FACET_FEATURE_TEXTURES) & 1;
+const int EMISSION = (FEATURES >> FACET_FEATURE_EMISSION) & 1;
+const int COMPENSATION = (FEATURES >> FACET_FEATURE_COMPENSATION) & 1;
+const int PATHS = (FEATURES >> FACET_FEATURE_PATHS) & 1;
+const int TRANSMISSION = (FEATURES >> FACET_FEATURE_TRANSMISSION) & 1;
+const int LOBE_LIMITS = (FEATURES >> FACET_FEATURE_LOBE_LIMITS) & 1;
+const int ANISOTROPY = (FEATURES >> FACET_FEATURE_ANISOTROPY) & 1;
+const int CLEARCOAT = (FEATURES >> FACET_FEATURE_CLEARCOAT) & 1;
+const int SHEEN = (FEATURES >> FACET_FEATURE_SHEEN) & 1;
+const int CHANNELS = (FEATURES >> FACET_FEATURE_CHANNELS) & 1;
 
 layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
 layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord materials[]; };
@@ -129,8 +102,9 @@ vec3 shading_normal(PatchRecord record, float s, float t, vec3 limit) {
   return dot(n, limit) < 0.0 ? -n : n;
 }
 
-BrdfParams brdf_params(uint index) {
-  MaterialRecord m = materials[index];
+// The material's own parameters, before any texture; a lobe the scene has
+// nowhere stays off.
+BrdfParams brdf_params(MaterialRecord m) {
   BrdfParams p;
   p.d_model = D_MODEL >= 0 ? D_MODEL : m.dModel;
   p.g_model = G_MODEL >= 0 ? G_MODEL : m.gModel;
@@ -141,10 +115,10 @@ BrdfParams brdf_params(uint index) {
   p.k = vec3(m.kR, m.kG, m.kB);
   p.diffuse = vec3(m.diffuseR, m.diffuseG, m.diffuseB);
   p.anisotropy = ANISOTROPY == 1 ? m.anisotropy : 0.0;
-  p.tangent = vec3(1.0, 0.0, 0.0);  // set per hit from the tangent field where anisotropic
+  p.tangent = vec3(1.0, 0.0, 0.0);
   p.clearcoat = CLEARCOAT == 1 ? m.clearcoat : 0.0;
   p.clearcoat_alpha = m.clearcoatAlpha;
-  p.clearcoat_normal = vec3(0.0, 0.0, 1.0);  // set per hit: the normal before any normal map
+  p.clearcoat_normal = vec3(0.0, 0.0, 1.0);
   p.sheen_color = SHEEN == 1 ? vec3(m.sheenR, m.sheenG, m.sheenB) : vec3(0.0);
   p.sheen_alpha = m.sheenAlpha;
   p.sheen_albedo_near = vec4(m.sheenAlbedo0, m.sheenAlbedo1, m.sheenAlbedo2, m.sheenAlbedo3);
@@ -165,45 +139,60 @@ void write_shadowed(uint slot, vec3 radiance, vec3 position, vec3 ng, vec3 direc
       RayRecord(origin.x, origin.y, origin.z, frame.shadowOffset, direction.x, direction.y, direction.z, tMax), slot);
 }
 
-// A textured material at a hit on patch `record` of points `c`, of an
-// object with face-varying `channels`, seen along `direction` from distance
-// t, with shading normal n and geometric normal ng facing the eye (the CPU
-// reference's ReferenceScene::texturedSurface).
-TexturedSurface textured_hit(MaterialRecord m, PatchRecord record, uint channels, ControlPoints c, HitRecord hit,
-                             BrdfParams params, vec3 n, vec3 ng, vec3 direction) {
-  PatchSample p = evaluate_patch(c, hit.s, hit.tParam);
+// Whether the scene has a layer whose textures a hit reads.
+const bool LAYERS = CLEARCOAT == 1 || SHEEN == 1 || ANISOTROPY == 1;
+
+TexturedFactors textured_factors(MaterialRecord m) {
+  return TexturedFactors(vec3(m.baseR, m.baseG, m.baseB), m.metallic, m.roughness,
+                         m.normalTexture.texture != FACET_NO_TEXTURE, m.normalScale, m.occlusionStrength,
+                         m.unlit == 1u, LAYERS && m.clearcoatNormalTexture.texture != FACET_NO_TEXTURE,
+                         m.clearcoatNormalScale, LAYERS && m.anisotropyTexture.texture != FACET_NO_TEXTURE);
+}
+
+// The footprint a slot reads: that of the coordinate set it names.
+TextureFootprint slot_footprint(TextureSlotRecord slot, TextureFootprint f0, TextureFootprint f1) {
+  return slot.texCoord == 1u ? f1 : f0;
+}
+
+// Every slot of textured material m at a hit on patch `record` (at point p)
+// of an object with face-varying `channels`, seen along `direction` from
+// distance t, of geometric normal ng (engine/cpu/textured_hit.h's
+// materialTexels).
+MaterialTexels material_texels(MaterialRecord m, PatchRecord record, uint channels, PatchSample p, HitRecord hit,
+                               vec3 ng, vec3 direction) {
   float cone = hit.t * camera_cone_spread(frame.tanHalfFovY, frame.height);
   SurfaceTexcoord uv = surface_texcoord(channel_texel(record.firstTexcoord, channels, FACET_CHANNEL_TEXCOORD0), hit.s,
                                         hit.tParam);
-  TextureFootprint f = TextureFootprint(uv.uv, uv.ds, uv.dt, p.ds, p.dt, cone, abs(dot(ng, direction)));
-  TextureFootprint f1 = f;
+  TextureFootprint f0 = TextureFootprint(uv.uv, uv.ds, uv.dt, p.ds, p.dt, cone, abs(dot(ng, direction)));
+  TextureFootprint f1 = f0;
   if (CHANNELS == 1 && (channels & FACET_CHANNEL_TEXCOORD1) != 0u) {
     SurfaceTexcoord uv1 = surface_texcoord(channel_texel(record.firstTexcoord, channels, FACET_CHANNEL_TEXCOORD1),
                                            hit.s, hit.tParam);
     f1 = TextureFootprint(uv1.uv, uv1.ds, uv1.dt, p.ds, p.dt, cone, abs(dot(ng, direction)));
   }
-  // A vertex colour multiplies the base colour as its texture does (glTF
-  // COLOR_0); a normal map's frame follows the coordinates it reads.
-  vec3 base = slot_value(m.baseColorTexture, m.baseColorTexture.texCoord == 1u ? f1 : f).rgb;
+  MaterialTexels t;
+  t.base = slot_value(m.baseColorTexture, slot_footprint(m.baseColorTexture, f0, f1)).rgb;
   if (CHANNELS == 1)
-    base *= surface_color(channel_texel(record.firstTexcoord, channels, FACET_CHANNEL_COLOR), hit.s, hit.tParam);
-  TextureFootprint fn = m.normalTexture.texCoord == 1u ? f1 : f;
-  TexturedSurface surface = textured_surface(
-      params, n, fn, vec3(m.baseR, m.baseG, m.baseB), m.metallic, m.roughness, m.normalScale, m.occlusionStrength,
-      vec3(m.emissionR, m.emissionG, m.emissionB), base,
-      slot_value(m.metallicRoughnessTexture, m.metallicRoughnessTexture.texCoord == 1u ? f1 : f).rgb,
-      m.normalTexture.texture != FACET_NO_TEXTURE, slot_value(m.normalTexture, fn).rgb,
-      slot_value(m.occlusionTexture, m.occlusionTexture.texCoord == 1u ? f1 : f).r,
-      slot_value(m.emissiveTexture, m.emissiveTexture.texCoord == 1u ? f1 : f).rgb, m.unlit == 1u);
-  if (CLEARCOAT == 0 && SHEEN == 0 && ANISOTROPY == 0) return surface;
-  TextureFootprint fc = m.clearcoatNormalTexture.texCoord == 1u ? f1 : f;
-  return textured_layers(surface, fc, slot_value(m.clearcoatTexture, m.clearcoatTexture.texCoord == 1u ? f1 : f).r,
-                         slot_value(m.clearcoatRoughnessTexture, m.clearcoatRoughnessTexture.texCoord == 1u ? f1 : f).g,
-                         m.clearcoatNormalTexture.texture != FACET_NO_TEXTURE,
-                         slot_value(m.clearcoatNormalTexture, fc).rgb, m.clearcoatNormalScale,
-                         slot_value(m.sheenColorTexture, m.sheenColorTexture.texCoord == 1u ? f1 : f).rgb,
-                         m.anisotropyTexture.texture != FACET_NO_TEXTURE,
-                         slot_value(m.anisotropyTexture, m.anisotropyTexture.texCoord == 1u ? f1 : f).rgb);
+    t.base *= surface_color(channel_texel(record.firstTexcoord, channels, FACET_CHANNEL_COLOR), hit.s, hit.tParam);
+  t.metallic_roughness = slot_value(m.metallicRoughnessTexture, slot_footprint(m.metallicRoughnessTexture, f0, f1)).rgb;
+  t.normal_frame = slot_footprint(m.normalTexture, f0, f1);
+  t.normal = slot_value(m.normalTexture, t.normal_frame).rgb;
+  t.occlusion = slot_value(m.occlusionTexture, slot_footprint(m.occlusionTexture, f0, f1)).r;
+  t.emission = slot_value(m.emissiveTexture, slot_footprint(m.emissiveTexture, f0, f1)).rgb;
+  t.coat = 1.0;
+  t.coat_roughness = 1.0;
+  t.coat_normal = vec3(1.0);
+  t.coat_normal_frame = f0;
+  t.sheen = vec3(1.0);
+  t.anisotropy = vec3(1.0);
+  if (!LAYERS) return t;
+  t.coat = slot_value(m.clearcoatTexture, slot_footprint(m.clearcoatTexture, f0, f1)).r;
+  t.coat_roughness = slot_value(m.clearcoatRoughnessTexture, slot_footprint(m.clearcoatRoughnessTexture, f0, f1)).g;
+  t.coat_normal_frame = slot_footprint(m.clearcoatNormalTexture, f0, f1);
+  t.coat_normal = slot_value(m.clearcoatNormalTexture, t.coat_normal_frame).rgb;
+  t.sheen = slot_value(m.sheenColorTexture, slot_footprint(m.sheenColorTexture, f0, f1)).rgb;
+  t.anisotropy = slot_value(m.anisotropyTexture, slot_footprint(m.anisotropyTexture, f0, f1)).rgb;
+  return t;
 }
 
 // Sampled or filtered method, one sample of either technique: its share for
@@ -225,27 +214,21 @@ void environment_sample(uint slot, BrdfParams params, vec3 specular_scale, vec3 
 void shade_environment(uint first, uint pixel, uint sample_index, uint material, BrdfParams params,
                        vec3 specular_scale, vec3 position, vec3 n, vec3 ng, vec3 v, float occlusion) {
   if (ENVIRONMENT == 2) {
-    float nv = dot(n, v);
-    if (nv <= COS_EPSILON) {  // nothing to look up (the lobe may not even exist)
+    SplitSumLookups l = split_sum_lookups(params, n, v);
+    if (!l.visible) {
       write_unshadowed(first, vec3(0.0));
       return;
     }
-    float alpha = isotropic_equivalent_alpha(params);
-    vec3 lobe = split_sum_direction(anisotropic_bent_normal(params, n, v), v, alpha);
-    vec3 prefiltered = prefiltered_radiance(to_map(lobe), alpha);
-    vec2 dfg = dfg_lookup(materials[material].dfgTable, nv, alpha);
-    vec3 irradiance = irradiance_over_pi(to_map(n));
-    vec3 radiance;
-    if (CLEARCOAT == 1 && params.clearcoat != 0.0) {
-      vec3 nc = params.clearcoat_normal;
-      float nv_coat = dot(nc, v), alpha_coat = params.clearcoat_alpha;
-      vec3 coat_lobe = split_sum_direction(nc, v, alpha_coat);
-      radiance = coated_split_sum(params, nv, prefiltered, dfg, irradiance, specular_scale, nv_coat,
-                                  prefiltered_radiance(to_map(coat_lobe), alpha_coat),
-                                  dfg_lookup(materials[material].coatDfgTable, nv_coat, alpha_coat));
-    } else {
-      radiance = split_sum(params, nv, prefiltered, dfg, irradiance, specular_scale);
+    vec3 prefiltered = prefiltered_radiance(to_map(l.lobe), l.alpha);
+    vec2 dfg = dfg_lookup(materials[material].dfgTable, l.nv, l.alpha);
+    vec3 coat_prefiltered = vec3(0.0);
+    vec2 coat_dfg = vec2(0.0);
+    if (l.coated) {
+      coat_prefiltered = prefiltered_radiance(to_map(l.coat_lobe), l.coat_alpha);
+      coat_dfg = dfg_lookup(materials[material].coatDfgTable, l.nv_coat, l.coat_alpha);
     }
+    vec3 radiance = environment_split_sum(params, l, prefiltered, dfg, irradiance_over_pi(to_map(n)), specular_scale,
+                                          coat_prefiltered, coat_dfg);
     write_unshadowed(first, occlusion * frame.environmentIntensity * radiance);
     return;
   }
@@ -293,6 +276,93 @@ PunctualLight punctual_light(LightRecord record) {
   return light;
 }
 
+// What material m offers surface_at_hit at a hit at point p (evaluated only
+// where a texture or the tangent needs it).
+HitMaterial hit_material(MaterialRecord m, PatchRecord record, uint channels, PatchSample p, HitRecord hit, vec3 ng,
+                         vec3 direction) {
+  HitMaterial h;
+  h.params = brdf_params(m);
+  h.emission = vec3(m.emissionR, m.emissionG, m.emissionB);
+  h.textured = TEXTURES == 1 && m.textured == 1u;
+  if (h.textured) {
+    h.factors = textured_factors(m);
+    h.texels = material_texels(m, record, channels, p, hit, ng, direction);
+  }
+  h.transmissive = TRANSMISSION == 1 && m.transmissive == 1u;
+  h.transmission = transmission_params(m);
+  h.anisotropy_rotation = vec2(m.anisotropyCos, m.anisotropySin);
+  return h;
+}
+
+// The tangent's partials at p, where the material is anisotropic.
+HitPartials hit_partials(bool anisotropic, PatchRecord record, uint channels, PatchSample p, HitRecord hit) {
+  if (!anisotropic) return HitPartials(vec3(0.0), vec3(0.0), vec2(0.0), vec2(0.0));
+  SurfaceTexcoord uv = surface_texcoord(channel_texel(record.firstTexcoord, channels, FACET_CHANNEL_TEXCOORD0), hit.s,
+                                        hit.tParam);
+  return HitPartials(p.ds, p.dt, uv.ds, uv.dt);
+}
+
+// A ray that hits nothing: the miss AOVs, and the environment it sees (a
+// continuation only where it went through its last surface: D at the vertex
+// it left counted the environment, shadowed, over its reflection lobes).
+void shade_miss(uint camera, uint firstSlot, bool centre, bool shaded, bool continuation, vec3 direction) {
+  if (PATHS == 1) pathStates[camera].alive = 0u;
+  if (continuation) {
+    if (TRANSMISSION == 0 || (pathStates[camera].flags & FACET_PATH_TRANSMITTED) == 0u) return;
+    for (uint slot = 0u; slot < frame.slotsPerRay; ++slot) write_unshadowed(firstSlot + slot, vec3(0.0));
+    if (ENVIRONMENT != 0)
+      write_unshadowed(firstSlot + uint(LIGHT_COUNT), beer_lambert(path_medium(pathStates[camera]).sigma,
+                                                                   INFINITE_DISTANCE) *
+                                                          environment_radiance(direction));
+    return;
+  }
+  if (centre)
+    aovs[camera / frame.raysPerPixel] = PixelAovs(INFINITE_DISTANCE, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+                                                  FACET_NO_HIT, FACET_NO_HIT, 0.0, 0.0, 0.0, 0.0);
+  for (uint slot = 0u; slot < frame.slotsPerRay; ++slot) write_unshadowed(firstSlot + slot, vec3(0.0));
+  if (ENVIRONMENT != 0 && shaded) write_unshadowed(firstSlot + uint(LIGHT_COUNT), environment_radiance(direction));
+}
+
+void write_aovs(uint pixel, HitRecord hit, ObjectRange range, PatchRecord record, vec3 position, FacingNormals f) {
+  vec2 texcoord =
+      surface_texcoord(channel_texel(record.firstTexcoord, range.channels, FACET_CHANNEL_TEXCOORD0), hit.s, hit.tParam)
+          .uv;
+  aovs[pixel] = PixelAovs(hit.t, position.x, position.y, position.z, f.ng.x, f.ng.y, f.ng.z, f.n.x, f.n.y, f.n.z,
+                          range.patchIdOffset + record.sourcePatch, range.faceIdOffset + record.coarseFace,
+                          record.faceU0 + hit.s * record.faceSize, record.faceV0 + hit.tParam * record.faceSize,
+                          texcoord.x, texcoord.y);
+}
+
+// Each light's slot from `first` on: its unshadowed radiance and the shadow
+// ray that decides it.
+void shade_lights(uint first, bool shaded, SurfaceAtHit s, vec3 position, vec3 v, vec3 specular_scale) {
+  for (int l = 0; l < LIGHT_COUNT; ++l) {
+    LightIncidence incidence = light_incidence(punctual_light(lights[l]), position);
+    if (shaded && light_arrives(incidence, s.n, s.ng))
+      write_shadowed(first + l, punctual_radiance(s.params, s.n, incidence.direction, v, incidence.color, specular_scale),
+                     position, s.ng, incidence.direction, incidence.distance);
+    else
+      write_unshadowed(first + l, vec3(0.0));
+  }
+}
+
+// The camera ray's path moves on to this vertex: a continuation's segment
+// takes Beer-Lambert's factor of the medium it crossed; the counts per lobe
+// kind travel with the path (the camera ray's vertex has taken none).
+void store_path_state(uint camera, bool continuation, bool shaded, PathVertex x, uint material, vec3 origin) {
+  vec3 throughput = continuation ? path_throughput(pathStates[camera]) : vec3(1.0);
+  PathMedium medium = PathMedium(material, 0u, vec3(0.0));
+  if (TRANSMISSION == 1) {
+    if (continuation) {
+      medium.sigma = path_medium(pathStates[camera]).sigma;
+      throughput *= beer_lambert(medium.sigma, length(x.position - origin));
+    }
+    medium.flags = (x.transmissive ? FACET_PATH_TRANSMISSIVE : 0u) | (x.outside ? FACET_PATH_OUTSIDE : 0u);
+  }
+  uvec3 taken = LOBE_LIMITS == 1 && continuation ? path_lobes_taken(pathStates[camera]) : uvec3(0u);
+  pathStates[camera] = pack_path_state(throughput, shaded, x, medium, taken);
+}
+
 void main() {
   uint index = invocation_index();
   bool continuation = PATHS == 1 && frame.pathVertex > 0u;
@@ -305,119 +375,49 @@ void main() {
   HitRecord hit = hits[index];
   uint firstSlot = camera * frame.slotsPerRay;
   Ray ray = continuation ? to_ray(pathRays[index].ray) : camera_ray(index);
-  vec3 direction = ray.direction;
-
-  if (PATHS == 1 && hit.patchIndex == FACET_NO_HIT) pathStates[camera].alive = 0u;
-  if (continuation && hit.patchIndex == FACET_NO_HIT) {
-    // D at the vertex it left counted the environment, shadowed, over its
-    // reflection lobes; its transmission lobe leads here only.
-    if (TRANSMISSION == 1 && (pathStates[camera].flags & FACET_PATH_TRANSMITTED) != 0u) {
-      for (uint slot = 0u; slot < frame.slotsPerRay; ++slot) write_unshadowed(firstSlot + slot, vec3(0.0));
-      if (ENVIRONMENT != 0)
-        write_unshadowed(firstSlot + uint(LIGHT_COUNT),
-                         beer_lambert(path_medium(pathStates[camera]).sigma, INFINITE_DISTANCE) *
-                             environment_radiance(direction));
-    }
-    return;
-  }
-  if (PATHS == 1 && hit.patchIndex != FACET_NO_HIT) atomicAdd(counters.pathHits, 1u);
+  vec3 direction = ray.direction, v = -direction;
   if (hit.patchIndex == FACET_NO_HIT) {
-    if (centre) aovs[pixel] = PixelAovs(INFINITE_DISTANCE, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, FACET_NO_HIT,
-                                        FACET_NO_HIT, 0.0, 0.0, 0.0, 0.0);
-    for (uint slot = 0u; slot < frame.slotsPerRay; ++slot) write_unshadowed(firstSlot + slot, vec3(0.0));
-    if (ENVIRONMENT != 0 && shaded) write_unshadowed(firstSlot + uint(LIGHT_COUNT), environment_radiance(direction));
+    shade_miss(camera, firstSlot, centre, shaded, continuation, direction);
     return;
   }
+  if (PATHS == 1) atomicAdd(counters.pathHits, 1u);
 
-  vec3 origin = ray.origin;
   ObjectRange range = objects[hit.object];
   PatchRecord record = load_patch_record(hit.patchIndex);
   uvec4 header = texelFetch(patchHeaders, int(hit.patchIndex * FACET_HEADER_TEXELS));
   ControlPoints c = load_control_points(header[FACET_HEADER_FIRST_POINT], header[FACET_HEADER_KIND]);
   vec3 limit = limit_normal(c, hit.s, hit.tParam);
-  vec3 n = shading_normal(record, hit.s, hit.tParam, limit);
   // A hit on a micro-triangle (the tessellated finish reports its normal)
   // lies on it; an exact hit is the limit point.
   vec3 triangleNormal = vec3(hit.geometricX, hit.geometricY, hit.geometricZ);
   bool onMicroTriangle = triangleNormal != vec3(0.0);
-  vec3 position = onMicroTriangle ? origin + hit.t * direction : evaluate_patch(c, hit.s, hit.tParam).position;
-  vec3 ng = onMicroTriangle ? triangleNormal : limit;
-  // Two-sided: both normals face the eye.
-  bool outside = !(dot(ng, direction) > 0.0);
-  if (!outside) {
-    n = -n;
-    ng = -ng;
-  }
-  if (centre) {
-    vec2 texcoord =
-        surface_texcoord(channel_texel(record.firstTexcoord, range.channels, FACET_CHANNEL_TEXCOORD0), hit.s, hit.tParam)
-            .uv;
-    aovs[pixel] = PixelAovs(hit.t, position.x, position.y, position.z, ng.x, ng.y, ng.z, n.x, n.y, n.z,
-                            range.patchIdOffset + record.sourcePatch, range.faceIdOffset + record.coarseFace,
-                            record.faceU0 + hit.s * record.faceSize, record.faceV0 + hit.tParam * record.faceSize,
-                            texcoord.x, texcoord.y);
-  }
+  vec3 position = onMicroTriangle ? ray.origin + hit.t * direction : evaluate_patch(c, hit.s, hit.tParam).position;
+  FacingNormals facing = facing_normals(shading_normal(record, hit.s, hit.tParam, limit),
+                                        onMicroTriangle ? triangleNormal : limit, v);
+  if (centre) write_aovs(pixel, hit, range, record, position, facing);
 
-  BrdfParams params = brdf_params(range.material);
-  if (CLEARCOAT == 1) params.clearcoat_normal = n;  // no normal map applies to the coat
   MaterialRecord m = materials[range.material];
-  float occlusion = 1.0;
-  vec3 emission = vec3(m.emissionR, m.emissionG, m.emissionB);
-  vec2 anisotropyDirection = vec2(1.0, 0.0);
-  if (TEXTURES == 1 && m.textured == 1u) {
-    TexturedSurface surface = textured_hit(m, record, range.channels, c, hit, params, n, ng, direction);
-    params = surface.params;
-    n = surface.n;
-    occlusion = surface.occlusion;
-    emission = surface.emission;
-    anisotropyDirection = surface.anisotropy_direction;
-  }
-  if (TRANSMISSION == 1 && m.transmissive == 1u) params = transmissive_brdf_params(params, transmission_params(m), outside);
-  if (ANISOTROPY == 1 && params.anisotropy != 0.0) {
-    PatchSample point = evaluate_patch(c, hit.s, hit.tParam);
-    SurfaceTexcoord uv = surface_texcoord(channel_texel(record.firstTexcoord, range.channels, FACET_CHANNEL_TEXCOORD0),
-                                          hit.s, hit.tParam);
-    vec2 rotation = turned_rotation(vec2(m.anisotropyCos, m.anisotropySin), anisotropyDirection);
-    params.tangent = texcoord_tangent(n, point.ds, point.dt, uv.ds, uv.dt, rotation.x, rotation.y);
-  }
-  vec3 v = -direction;
-  // The coat lies over the emission too (KHR_materials_clearcoat).
-  if (CLEARCOAT == 1 && params.clearcoat != 0.0) emission *= coat_transmittance(params, dot(params.clearcoat_normal, v));
-  vec3 specular_scale = material_specular_scale(m.compensationTable, params, dot(n, v));
-  for (int l = 0; l < LIGHT_COUNT; ++l) {
-    LightIncidence incidence = light_incidence(punctual_light(lights[l]), position);
-    if (shaded && light_arrives(incidence, n, ng))
-      write_shadowed(firstSlot + l,
-                     punctual_radiance(params, n, incidence.direction, v, incidence.color, specular_scale), position,
-                     ng, incidence.direction, incidence.distance);
-    else
-      write_unshadowed(firstSlot + l, vec3(0.0));
-  }
+  bool anisotropic = ANISOTROPY == 1 && m.anisotropy != 0.0;
+  PatchSample p;
+  if ((TEXTURES == 1 && m.textured == 1u) || anisotropic) p = evaluate_patch(c, hit.s, hit.tParam);
+  SurfaceAtHit s = surface_at_hit(hit_material(m, record, range.channels, p, hit, facing.ng, direction), facing, v,
+                                  hit_partials(anisotropic, record, range.channels, p, hit));
+  vec3 specular_scale = material_specular_scale(m.compensationTable, s.params, dot(s.n, v));
+  shade_lights(firstSlot, shaded, s, position, v, specular_scale);
   if (ENVIRONMENT != 0) {
     // Every environment slot is written exactly once either way: the loops
     // of one invocation count against lavapipe's limit of 65535.
     uint first = firstSlot + uint(LIGHT_COUNT);
     if (shaded)
-      shade_environment(first, frame.firstPixel + pixel, sample_index, range.material, params, specular_scale,
-                        position, n, ng, v, occlusion);
+      shade_environment(first, frame.firstPixel + pixel, sample_index, range.material, s.params, specular_scale,
+                        position, s.n, s.ng, v, s.occlusion);
     else
       for (uint slot = first; slot < firstSlot + frame.slotsPerRay; ++slot) write_unshadowed(slot, vec3(0.0));
   }
-  if (EMISSION == 1) write_unshadowed(firstSlot + frame.slotsPerRay - 1u, shaded ? emission : vec3(0.0));
-  if (PATHS == 1) {
-    vec3 throughput = continuation ? path_throughput(pathStates[camera]) : vec3(1.0);
-    PathMedium medium = PathMedium(range.material, 0u, vec3(0.0));
-    if (TRANSMISSION == 1) {
-      if (continuation) {
-        medium.sigma = path_medium(pathStates[camera]).sigma;
-        throughput *= beer_lambert(medium.sigma, length(position - origin));
-      }
-      medium.flags = (m.transmissive == 1u ? FACET_PATH_TRANSMISSIVE : 0u) | (outside ? FACET_PATH_OUTSIDE : 0u);
-    }
-    // Limits per lobe kind: the counts travel with the path (the camera ray's
-    // vertex has taken none); without limits they stay 0, unread.
-    uvec3 taken = LOBE_LIMITS == 1 && continuation ? path_lobes_taken(pathStates[camera]) : uvec3(0u);
-    pathStates[camera] =
-        pack_path_state(throughput, shaded, PathVertex(position, n, ng, v, params, specular_scale), medium, taken);
-  }
+  if (EMISSION == 1) write_unshadowed(firstSlot + frame.slotsPerRay - 1u, shaded ? s.emission : vec3(0.0));
+  if (PATHS == 1)
+    store_path_state(camera, continuation, shaded,
+                     PathVertex(position, s.n, s.ng, v, s.params, specular_scale,
+                                TRANSMISSION == 1 && m.transmissive == 1u, transmission_params(m), s.outside),
+                     range.material, ray.origin);
 }

@@ -10,6 +10,7 @@
 
 #include "materials/albedo.h"
 #include "rules/rules.h"
+#include "tests/support/brdf_params.h"
 #include "tests/support/quadrature.h"
 
 namespace facet::materials {
@@ -26,16 +27,9 @@ glm::dvec3 direction(double theta, double phi) {
 
 // A rough dielectric base with a diffuse lobe, under a coat.
 m::BrdfParams coatedBase(double clearcoat, double coat_alpha) {
-  m::BrdfParams p{};
-  p.d_model = m::D_GGX;
-  p.g_model = m::G_SMITH_GGX_CORRELATED;
-  p.f_model = m::F_SCHLICK;
-  p.alpha = 0.4;
-  p.f0 = glm::dvec3(0.04);
-  p.diffuse = {0.6, 0.3, 0.1};
+  m::BrdfParams p = facet::testing::schlickBase(0.4, glm::dvec3(0.04), {0.6, 0.3, 0.1});
   p.clearcoat = clearcoat;
   p.clearcoat_alpha = coat_alpha;
-  p.clearcoat_normal = kN;
   return p;
 }
 

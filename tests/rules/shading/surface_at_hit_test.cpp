@@ -1,0 +1,148 @@
+// The material at a hit (rules/shading/surface_at_hit.h), the one order both
+// backends apply: the normals face the eye, a texture's normal map turns the
+// shading normal but not the coat's, a transmissive interface is taken from
+// the side v is on, the tangent lies about the final normal, and the coat
+// covers the emission.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "rules/rules.h"
+#include "tests/support/brdf_params.h"
+
+namespace facet::rules {
+namespace {
+
+namespace m = f64;
+const glm::dvec3 kN(0, 0, 1);
+
+m::BrdfParams plastic() {
+  m::BrdfParams p = facet::testing::schlickBase(0.2, glm::dvec3(0.04), {0.5, 0.3, 0.2});
+  p.eta = glm::dvec3(1.5);
+  p.clearcoat_normal = glm::dvec3(0, 1, 0);  // what the material record holds: not yet the hit's
+  return p;
+}
+
+m::HitMaterial untextured(const m::BrdfParams& params) {
+  m::HitMaterial h{};
+  h.params = params;
+  h.emission = {0.1, 0.2, 0.3};
+  return h;
+}
+
+// A flat patch over (s, t) with texture coordinates u = s, v = t.
+m::HitPartials flatPartials() { return {{1, 0, 0}, {0, 1, 0}, {1, 0}, {0, 1}}; }
+
+// Every slot empty (1), both frames those of the flat patch.
+m::MaterialTexels emptyTexels() {
+  const m::TextureFootprint frame{{0.5, 0.5}, {1, 0}, {0, 1}, {1, 0, 0}, {0, 1, 0}, 0.0, 1.0};
+  m::MaterialTexels t{};
+  t.base = t.metallic_roughness = t.normal = t.emission = t.coat_normal = t.sheen = t.anisotropy = glm::dvec3(1.0);
+  t.occlusion = t.coat = t.coat_roughness = 1.0;
+  t.normal_frame = t.coat_normal_frame = frame;
+  return t;
+}
+
+TEST(SurfaceAtHit, NormalsFaceTheEyeAndTheSideIsTheGeometricNormals) {
+  const glm::dvec3 n = glm::normalize(glm::dvec3(0.1, 0, 1));
+  const m::FacingNormals front = m::facing_normals(n, kN, glm::dvec3(0, 0, 1));
+  EXPECT_TRUE(front.outside);
+  EXPECT_EQ(front.n, n);
+  EXPECT_EQ(front.ng, kN);
+  const m::FacingNormals back = m::facing_normals(n, kN, glm::normalize(glm::dvec3(0.3, 0, -1)));
+  EXPECT_FALSE(back.outside);
+  EXPECT_EQ(back.n, -n);
+  EXPECT_EQ(back.ng, -kN);
+}
+
+TEST(SurfaceAtHit, AnUntexturedOpaqueMaterialIsItsOwnParametersAboutTheFacingNormal) {
+  const glm::dvec3 v = glm::normalize(glm::dvec3(0.2, 0.1, 1));
+  const m::BrdfParams params = plastic();
+  const m::SurfaceAtHit s =
+      m::surface_at_hit(untextured(params), m::facing_normals(kN, kN, v), v, m::HitPartials{});
+  EXPECT_EQ(s.n, kN);
+  EXPECT_EQ(s.params.diffuse, params.diffuse);
+  EXPECT_EQ(s.params.alpha, params.alpha);
+  EXPECT_EQ(s.params.clearcoat_normal, kN);  // the hit's, not the record's
+  EXPECT_EQ(s.emission, glm::dvec3(0.1, 0.2, 0.3));
+  EXPECT_EQ(s.occlusion, 1.0);
+}
+
+TEST(SurfaceAtHit, ATransmissiveInterfaceIsTakenFromTheSideTheEyeIsOn) {
+  m::HitMaterial h = untextured(plastic());
+  h.transmissive = true;
+  h.transmission = {0.8, 1.5, false, glm::dvec3(0.0), 0.0};
+  for (const double vz : {1.0, -1.0}) {
+    const glm::dvec3 v = glm::normalize(glm::dvec3(0.3, 0, vz));
+    const m::FacingNormals facing = m::facing_normals(kN, kN, v);
+    m::BrdfParams expected = h.params;
+    expected.clearcoat_normal = facing.n;
+    expected = m::transmissive_brdf_params(expected, h.transmission, vz > 0);
+    const m::SurfaceAtHit s = m::surface_at_hit(h, facing, v, m::HitPartials{});
+    EXPECT_EQ(s.outside, vz > 0);
+    EXPECT_EQ(s.params.eta, expected.eta) << "v.z " << vz;
+    EXPECT_EQ(s.params.diffuse, expected.diffuse) << "v.z " << vz;
+    EXPECT_EQ(s.params.f_model, expected.f_model) << "v.z " << vz;
+  }
+}
+
+TEST(SurfaceAtHit, EmptySlotsLeaveTheGltfFactorsAndANormalMapTurnsTheBaseButNotTheCoat) {
+  const glm::dvec3 v = glm::normalize(glm::dvec3(0.1, 0.2, 1));
+  m::HitMaterial h = untextured(plastic());
+  h.params.clearcoat = 1.0;
+  h.params.clearcoat_alpha = 0.01;
+  h.textured = true;
+  h.factors = {{0.8, 0.6, 0.4}, 0.25, 0.5, false, 1.0, 1.0, false, false, 1.0, false};
+  h.texels = emptyTexels();
+  m::SurfaceAtHit s = m::surface_at_hit(h, m::facing_normals(kN, kN, v), v, flatPartials());
+  const m::BrdfParams expected = m::metallic_roughness_params(h.params, h.factors.base, 0.25, 0.5);
+  EXPECT_EQ(s.params.diffuse, expected.diffuse);
+  EXPECT_EQ(s.params.f0, expected.f0);
+  EXPECT_EQ(s.params.alpha, expected.alpha);
+  EXPECT_EQ(s.n, kN);
+
+  h.factors.normal_mapped = true;
+  h.texels.normal = {0.9, 0.5, 0.7};  // tilted towards +u
+  s = m::surface_at_hit(h, m::facing_normals(kN, kN, v), v, flatPartials());
+  EXPECT_GT(s.n.x, 0.5);
+  EXPECT_NEAR(glm::length(s.n), 1.0, 1e-12);
+  EXPECT_EQ(s.params.clearcoat_normal, kN);
+}
+
+TEST(SurfaceAtHit, TheTangentLiesAboutTheFinalNormalTurnedByTheRotation) {
+  const glm::dvec3 v = glm::normalize(glm::dvec3(0.1, 0.2, 1));
+  m::HitMaterial h = untextured(plastic());
+  h.params.anisotropy = 0.8;
+  h.textured = true;
+  h.factors = {{1, 1, 1}, 0.0, 0.5, true, 1.0, 1.0, false, false, 1.0, false};
+  h.texels = emptyTexels();
+  h.texels.normal = {0.9, 0.5, 0.7};
+  const double angle = std::numbers::pi / 2;
+  h.anisotropy_rotation = {std::cos(angle), std::sin(angle)};
+  const m::SurfaceAtHit turned = m::surface_at_hit(h, m::facing_normals(kN, kN, v), v, flatPartials());
+  EXPECT_NEAR(glm::dot(turned.params.tangent, turned.n), 0.0, 1e-12);
+  h.anisotropy_rotation = {1.0, 0.0};
+  const m::SurfaceAtHit along = m::surface_at_hit(h, m::facing_normals(kN, kN, v), v, flatPartials());
+  EXPECT_NEAR(glm::dot(along.params.tangent, along.n), 0.0, 1e-12);
+  EXPECT_NEAR(glm::dot(turned.params.tangent, along.params.tangent), 0.0, 1e-12);  // a quarter turn
+  EXPECT_NEAR(along.params.tangent.y, 0.0, 1e-12);  // dP/du made orthogonal to the mapped normal
+  EXPECT_GT(along.params.tangent.x, 0.0);
+
+  h.params.anisotropy = 0.0;  // isotropic: the tangent is never built
+  EXPECT_EQ(m::surface_at_hit(h, m::facing_normals(kN, kN, v), v, flatPartials()).params.tangent, glm::dvec3(0.0));
+}
+
+TEST(SurfaceAtHit, TheCoatCoversTheEmissionByItsTransmittanceTowardsTheEye) {
+  const glm::dvec3 v = glm::normalize(glm::dvec3(0.6, 0, 1));
+  m::HitMaterial h = untextured(plastic());
+  const glm::dvec3 bare = m::surface_at_hit(h, m::facing_normals(kN, kN, v), v, m::HitPartials{}).emission;
+  h.params.clearcoat = 0.5;
+  h.params.clearcoat_alpha = 0.01;
+  const m::SurfaceAtHit coated = m::surface_at_hit(h, m::facing_normals(kN, kN, v), v, m::HitPartials{});
+  EXPECT_EQ(coated.emission, bare * m::coat_transmittance(coated.params, glm::dot(kN, v)));
+  EXPECT_LT(coated.emission.z, bare.z);
+}
+
+}  // namespace
+}  // namespace facet::rules
