@@ -22,7 +22,7 @@ void checkSettings(const AdaptiveSettings& s) {
   if (!validNoiseThreshold(s.noiseThreshold))
     throw std::invalid_argument("noise threshold " + std::to_string(s.noiseThreshold) + ": " + kNoiseThresholdRule);
   if (!validMaxSpp(s.maxSpp)) throw std::invalid_argument("max spp " + std::to_string(s.maxSpp) + ": " + kMaxSppRule);
-  if (!validTimeLimit(s.timeLimitSeconds))
+  if (s.timeLimitSeconds != kNoTimeLimit && !validTimeLimit(s.timeLimitSeconds))
     throw std::invalid_argument("time limit " + std::to_string(s.timeLimitSeconds) + ": " + kTimeLimitRule);
   if (s.roundSpp < 1 || !scene::isSquare(s.roundSpp) || s.minRounds < 2 || s.tileSize < 1)
     throw std::invalid_argument("adaptive rounds need a square spp, two rounds or more and a positive tile size");

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "engine/ground_plane.h"
@@ -14,12 +15,16 @@
 
 namespace facet {
 
+// No time limit: the rounds, and with them the image, follow from the scene
+// and the settings alone, however busy the machine is.
+inline constexpr double kNoTimeLimit = std::numeric_limits<double>::infinity();
+
 struct AdaptiveSettings {
-  double noiseThreshold = 0.02;  // a tile's relative standard error (SampleRounds::error)
-  int maxSpp = 256;              // camera samples per pixel at most
-  double timeLimitSeconds = 60;  // no round starts after this
-  int roundSpp = 4;              // camera samples per pixel of each round (a square)
-  int minRounds = 4;             // before a tile's spread is trusted
+  double noiseThreshold = 0.02;            // a tile's relative standard error (SampleRounds::error)
+  int maxSpp = 256;                        // camera samples per pixel at most
+  double timeLimitSeconds = kNoTimeLimit;  // no round starts after this; the command line sets one
+  int roundSpp = 4;                        // camera samples per pixel of each round (a square)
+  int minRounds = 4;                       // before a tile's spread is trusted
   int tileSize = 16;
 };
 

@@ -77,13 +77,20 @@ TEST(GroundPlane, CatchesTheBlobsShadowAndIsOtherwiseUnseen) {
   const scene::Scene model = blob();
   const GroundScenes ground = groundScenes(model);
   // Two rounds for every tile, with or without the ground: the same samples.
+  // No time limit (the default), so that load cannot cut either render short.
   AdaptiveSettings settings;
   settings.maxSpp = 8;
   settings.noiseThreshold = 1e-4;
   settings.tileSize = 8;
   Renderer renderer;
-  const Image bare = renderAdaptive(renderer, model, Backend::Gpu, settings).image;
-  const Image caught = renderAdaptive(renderer, model, Backend::Gpu, settings, 0, &ground).image;
+  const AdaptiveReport bareReport = renderAdaptive(renderer, model, Backend::Gpu, settings);
+  const AdaptiveReport caughtReport = renderAdaptive(renderer, model, Backend::Gpu, settings, 0, &ground);
+  for (const AdaptiveReport* r : {&bareReport, &caughtReport}) {
+    ASSERT_EQ(r->stop, AdaptiveStop::SampleCap);
+    ASSERT_EQ(r->rounds, 2);
+  }
+  const Image& bare = bareReport.image;
+  const Image& caught = caughtReport.image;
   const int w = bare.width, h = bare.height;
 
   int lowestRow = -1;  // of the blob, in the middle column
