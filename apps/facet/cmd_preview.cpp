@@ -18,7 +18,6 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/movie.h"
 #include "commands.h"
 #include "data_folder.h"
 #include "engine/adaptive_render.h"
@@ -26,6 +25,7 @@
 #include "engine/ground_plane.h"
 #include "engine/image/contact_sheet.h"
 #include "engine/image/image_io.h"
+#include "engine/image/movie.h"
 #include "material_options.h"
 #include "preview_stage_options.h"
 #include "scene_options.h"
@@ -120,8 +120,8 @@ void runPreview(const PreviewStageFlags& f) {
   // Every output is checked, and ffmpeg found, before the first render.
   if (!f.movie.empty()) {
     checkOutputPath("--movie", f.movie);
-    if (!analysis::findOnPath("ffmpeg", path))
-      throw OutputError("--movie '" + f.movie + "': " + analysis::kFfmpegMissing);
+    if (!findOnPath("ffmpeg", path))
+      throw OutputError("--movie '" + f.movie + "': " + kFfmpegMissing);
   } else {
     checkOutputPath("-o", f.output);
     checkOutputExtension("-o", f.output, ".png");
@@ -164,12 +164,12 @@ void runPreview(const PreviewStageFlags& f) {
     }
     const std::vector<std::uint8_t> sheet = composeContactSheet(layout, cells);
     if (folder)
-      rgbaPngFile(analysis::framePath(folder->path(), frame), layout.width(), layout.height(), sheet)
-          .write(analysis::framePath(folder->path(), frame));
+      rgbaPngFile(framePath(folder->path(), frame), layout.width(), layout.height(), sheet)
+          .write(framePath(folder->path(), frame));
     else
       writeAllOrNothing({rgbaPngFile(f.output, layout.width(), layout.height(), sheet)});
   }
-  if (folder) analysis::writeMovie(folder->path(), frames, f.fps, f.movie, path);
+  if (folder) writeMovie(folder->path(), frames, f.fps, f.movie, path);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary["milliseconds"] = seconds * 1000.0;
   const std::string written = f.movie.empty() ? f.output : f.movie;
