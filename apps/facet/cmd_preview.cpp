@@ -26,11 +26,11 @@
 #include "engine/image/contact_sheet.h"
 #include "engine/image/image_io.h"
 #include "engine/image/movie.h"
+#include "engine/image_memory.h"
 #include "material_options.h"
 #include "preview_stage_options.h"
 #include "scene_options.h"
 #include "scenes/input_error.h"
-#include "scenes/memory_budget.h"
 #include "scenes/scene_file.h"
 #include "scenes/studio_environment.h"
 
@@ -71,7 +71,7 @@ scene::Scene previewModel(const PreviewStageFlags& f) {
   scene.environment = scene::studioEnvironment();
   applyImageSize(f.size, scene);
   applySceneOverrides(f.lighting, scene);
-  scene::checkImagesFitInMemory(scene, int(f.materials.size()) + 1, "--size");
+  checkImagesFitInMemory(scene, int(f.materials.size()) + 1, "--size");
   return scene;
 }
 
