@@ -9,9 +9,9 @@
 #include <limits>
 #include <vector>
 
-#include "engine/ground_plane.h"
 #include "engine/image/sample_rounds.h"
 #include "engine/renderer.h"
+#include "scenes/ground_plane.h"
 
 namespace facet {
 
@@ -55,14 +55,14 @@ struct AdaptiveReport {
 };
 
 // Renders `scene` (its size; its spp and seed are the rounds') by rounds.
-// With `ground` (engine/ground_plane.h, of the same camera and size), each
+// With `ground` (scenes/ground_plane.h, of the same camera and size), each
 // round renders its two scenes over the same pixels too; the rounds stop on
 // the model's noise, and the beauty is the shadow catcher's composite of the
 // three renders' means (engine/image/catcher_composite.h).
 // Throws std::invalid_argument for settings that break the rules above.
 AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Backend backend,
                               const AdaptiveSettings& settings, unsigned threads = 0,
-                              const GroundScenes* ground = nullptr);
+                              const scene::GroundScenes* ground = nullptr);
 
 // Round `round`'s scene and where its pixels lie: the image inside a larger
 // one, (a, b) = (round % 64, round / 64) pixels wider on the left and
