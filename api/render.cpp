@@ -8,8 +8,8 @@
 #include "api/image_planes.h"
 #include "api/render_settings.h"
 #include "api/scene_data.h"
+#include "engine/image_memory.h"
 #include "engine/renderer.h"
-#include "scenes/memory_budget.h"
 #include "facet/version.h"
 #include "scenes/input_error.h"
 
@@ -35,7 +35,7 @@ RenderResult Renderer::render(const Scene& input, const RenderSettings& settings
   return api::translateErrors([&] {
     const std::scoped_lock oneAtATime(state_->rendering);
     const scene::Scene s = withSettings(input, settings);
-    scene::checkImagesFitInMemory(s, 1, "render settings: width x height");
+    checkImagesFitInMemory(s, 1, "render settings: width x height");
     const RenderReport report =
         state_->engine.render(s, settings.backend == Backend::Cpu ? facet::Backend::Cpu : facet::Backend::Gpu);
     RenderResult result{publicImage(report.image), report.device, report.totalMilliseconds(), {}};
@@ -49,7 +49,7 @@ ParityReport Renderer::parity(const Scene& input, const RenderSettings& settings
   return api::translateErrors([&] {
     const std::scoped_lock oneAtATime(state_->rendering);
     const scene::Scene s = withSettings(input, settings);
-    scene::checkImagesFitInMemory(s, 2, "render settings: width x height");
+    checkImagesFitInMemory(s, 2, "render settings: width x height");
     // The GPU first: it refuses what it cannot render (a scene beyond float's range) before the CPU spends a
     // render on it.
     const RenderReport gpu = state_->engine.render(s, facet::Backend::Gpu);

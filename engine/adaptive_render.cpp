@@ -22,7 +22,7 @@ void checkSettings(const AdaptiveSettings& s) {
   if (!validNoiseThreshold(s.noiseThreshold))
     throw std::invalid_argument("noise threshold " + std::to_string(s.noiseThreshold) + ": " + kNoiseThresholdRule);
   if (!validMaxSpp(s.maxSpp)) throw std::invalid_argument("max spp " + std::to_string(s.maxSpp) + ": " + kMaxSppRule);
-  if (!validTimeLimit(s.timeLimitSeconds))
+  if (s.timeLimitSeconds != kNoTimeLimit && !validTimeLimit(s.timeLimitSeconds))
     throw std::invalid_argument("time limit " + std::to_string(s.timeLimitSeconds) + ": " + kTimeLimitRule);
   if (s.roundSpp < 1 || !scene::isSquare(s.roundSpp) || s.minRounds < 2 || s.tileSize < 1)
     throw std::invalid_argument("adaptive rounds need a square spp, two rounds or more and a positive tile size");
@@ -58,7 +58,7 @@ struct GroundSums {
 
 // Round `round` of the ground's scenes over `window`, added to the pixels
 // of the `active` tiles.
-void addGroundRound(Renderer& renderer, const GroundScenes& scenes, int round, const PixelRect& window,
+void addGroundRound(Renderer& renderer, const scene::GroundScenes& scenes, int round, const PixelRect& window,
                     const TileGrid& grid, const std::vector<int>& active, Backend backend, unsigned threads,
                     GroundSums& sums) {
   const Image holdout = renderRound(renderer, scenes.holdout, round, window, backend, threads).image;
@@ -122,15 +122,15 @@ RoundFrame roundFrame(const scene::Scene& scene, int round) {
 }
 
 AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Backend backend,
-                              const AdaptiveSettings& settings, unsigned threads, const GroundScenes* ground) {
+                              const AdaptiveSettings& settings, unsigned threads, const scene::GroundScenes* ground) {
   checkSettings(settings);
   const Clock::time_point start = Clock::now();
   const int width = scene.render.width, height = scene.render.height;
   const scene::Scene round = withRoundSpp(scene, settings.roundSpp);
-  std::optional<GroundScenes> groundRound;
+  std::optional<scene::GroundScenes> groundRound;
   if (ground)
-    groundRound =
-        GroundScenes{withRoundSpp(ground->holdout, settings.roundSpp), withRoundSpp(ground->ground, settings.roundSpp)};
+    groundRound = scene::GroundScenes{withRoundSpp(ground->holdout, settings.roundSpp),
+                                      withRoundSpp(ground->ground, settings.roundSpp)};
   SampleRounds rounds(width, height, settings.tileSize);
   const TileGrid& grid = rounds.grid();
   AdaptiveReport report;

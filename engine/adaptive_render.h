@@ -6,20 +6,25 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
-#include "engine/ground_plane.h"
 #include "engine/image/sample_rounds.h"
 #include "engine/renderer.h"
+#include "scenes/ground_plane.h"
 
 namespace facet {
 
+// No time limit: the rounds, and with them the image, follow from the scene
+// and the settings alone, however busy the machine is.
+inline constexpr double kNoTimeLimit = std::numeric_limits<double>::infinity();
+
 struct AdaptiveSettings {
-  double noiseThreshold = 0.02;  // a tile's relative standard error (SampleRounds::error)
-  int maxSpp = 256;              // camera samples per pixel at most
-  double timeLimitSeconds = 60;  // no round starts after this
-  int roundSpp = 4;              // camera samples per pixel of each round (a square)
-  int minRounds = 4;             // before a tile's spread is trusted
+  double noiseThreshold = 0.02;            // a tile's relative standard error (SampleRounds::error)
+  int maxSpp = 256;                        // camera samples per pixel at most
+  double timeLimitSeconds = kNoTimeLimit;  // no round starts after this; the command line sets one
+  int roundSpp = 4;                        // camera samples per pixel of each round (a square)
+  int minRounds = 4;                       // before a tile's spread is trusted
   int tileSize = 16;
 };
 
@@ -50,14 +55,14 @@ struct AdaptiveReport {
 };
 
 // Renders `scene` (its size; its spp and seed are the rounds') by rounds.
-// With `ground` (engine/ground_plane.h, of the same camera and size), each
+// With `ground` (scenes/ground_plane.h, of the same camera and size), each
 // round renders its two scenes over the same pixels too; the rounds stop on
 // the model's noise, and the beauty is the shadow catcher's composite of the
 // three renders' means (engine/image/catcher_composite.h).
 // Throws std::invalid_argument for settings that break the rules above.
 AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Backend backend,
                               const AdaptiveSettings& settings, unsigned threads = 0,
-                              const GroundScenes* ground = nullptr);
+                              const scene::GroundScenes* ground = nullptr);
 
 // Round `round`'s scene and where its pixels lie: the image inside a larger
 // one, (a, b) = (round % 64, round / 64) pixels wider on the left and

@@ -67,14 +67,8 @@ struct SceneObject {
   facet::Scene& scene() const { return owner.cast<facet::Scene&>(); }
 };
 
-}  // namespace
-
-facet::Scene sceneOf(const py::object& sceneOrPath) {
-  if (py::isinstance<facet::Scene>(sceneOrPath)) return sceneOrPath.cast<facet::Scene>();
-  return facet::loadScene(fspath(sceneOrPath));
-}
-
-void bindScenes(py::module_& m) {
+// The material as scene files write it, every field by its JSON name.
+void bindMaterial(py::module_& m) {
   py::class_<facet::Material>(m, "Material", "A material as scene files write it (docs/shading.md)")
       .def(py::init([](const std::string& name, OptText preset, OptText d, OptText g, OptText f, OptReal alpha,
                        OptReal roughness, OptVec f0, OptVec ior, OptVec eta, OptVec k, OptVec diffuse,
@@ -136,7 +130,10 @@ void bindScenes(py::module_& m) {
       .def_readwrite("sheen_roughness", &facet::Material::sheenRoughness)
       .def_readwrite("base_color", &facet::Material::baseColor)
       .def_readwrite("metallic", &facet::Material::metallic);
+}
 
+// Control cages, built from arrays or loaded from .obj files.
+void bindCage(py::module_& m) {
   py::class_<facet::Cage>(m, "Cage", "A Catmull-Clark control cage in world space, 0-based indices")
       .def(py::init([](const Doubles& positions, const py::object& counts, const py::object& indices,
                        const std::vector<std::tuple<int, int, double>>& creases) {
@@ -175,16 +172,12 @@ void bindScenes(py::module_& m) {
       "load_cage", [](const py::object& path) { return facet::loadCage(fspath(path)); }, py::arg("path"),
       "An OpenSubdiv-style .obj control cage, read as a scene file's mesh is; a cage with texture coordinates, "
       "corners, holes or subdivision tags is refused (load it with load_scene)");
+}
 
-  py::class_<facet::Object>(m, "Object", "A cage with the index of its material in the scene's materials")
-      .def(py::init([](facet::Cage cage, int material, const std::string& name, bool subdivided) {
-             return facet::Object{name, std::move(cage), material, subdivided};
-           }),
-           py::arg("cage"), py::kw_only(), py::arg("material") = 0, py::arg("name") = "", py::arg("subdivided") = true);
-
-  // Lights, cameras and environments are values: their fields are read-only,
-  // so that changing a copy a scene handed out cannot look like changing the
-  // scene; replace() makes the changed copy to assign back.
+// Lights, cameras and environments are values: their fields are read-only,
+// so that changing a copy a scene handed out cannot look like changing the
+// scene; replace() makes the changed copy to assign back.
+void bindLight(py::module_& m) {
   py::class_<facet::Light>(m, "Light", "A punctual light, with a scene file's lights[] fields; color is c_light")
       .def(py::init([](const std::string& type, Vec3 color, Vec3 position, Vec3 direction, double inner, double outer) {
              return facet::Light{lightType(type), color, position, direction, inner, outer};
@@ -214,7 +207,9 @@ void bindScenes(py::module_& m) {
           py::kw_only(), py::arg("type") = py::none(), py::arg("color") = py::none(), py::arg("position") = py::none(),
           py::arg("direction") = py::none(), py::arg("inner_cone") = py::none(), py::arg("outer_cone") = py::none(),
           "A copy with the fields given changed");
+}
 
+void bindCamera(py::module_& m) {
   py::class_<facet::Camera>(m, "Camera", "A pinhole camera, with a scene file's camera fields; fov is vertical")
       .def(py::init([](Vec3 eye, Vec3 target, Vec3 up, double fov) {
              return facet::Camera{eye, target, up, fov};
@@ -233,7 +228,9 @@ void bindScenes(py::module_& m) {
           },
           py::kw_only(), py::arg("eye") = py::none(), py::arg("target") = py::none(), py::arg("up") = py::none(),
           py::arg("fov") = py::none(), "A copy with the fields given changed");
+}
 
+void bindEnvironment(py::module_& m) {
   py::class_<facet::Environment>(m, "Environment",
                                  "An equirectangular .exr or .hdr map, with a scene file's environment fields")
       .def(py::init([](const py::object& file, double intensity, double rotation, const std::string& method,
@@ -266,6 +263,15 @@ void bindScenes(py::module_& m) {
           py::kw_only(), py::arg("file") = py::none(), py::arg("intensity") = py::none(),
           py::arg("rotation") = py::none(), py::arg("method") = py::none(), py::arg("samples") = py::none(),
           py::arg("occlusion") = py::none(), "A copy with the fields given changed");
+}
+
+// Objects, and the Scene that holds them with its materials, camera, environment and lights.
+void bindScene(py::module_& m) {
+  py::class_<facet::Object>(m, "Object", "A cage with the index of its material in the scene's materials")
+      .def(py::init([](facet::Cage cage, int material, const std::string& name, bool subdivided) {
+             return facet::Object{name, std::move(cage), material, subdivided};
+           }),
+           py::arg("cage"), py::kw_only(), py::arg("material") = 0, py::arg("name") = "", py::arg("subdivided") = true);
 
   py::class_<SceneObject>(m, "SceneObject", "One object of a Scene, as scene.objects lists them")
       .def_property_readonly(
@@ -316,6 +322,22 @@ void bindScenes(py::module_& m) {
   m.def(
       "load_scene", [](const py::object& path) { return sceneOf(path); }, py::arg("path"),
       "A .json scene, an .obj cage or a .gltf/.glb file");
+}
+
+}  // namespace
+
+facet::Scene sceneOf(const py::object& sceneOrPath) {
+  if (py::isinstance<facet::Scene>(sceneOrPath)) return sceneOrPath.cast<facet::Scene>();
+  return facet::loadScene(fspath(sceneOrPath));
+}
+
+void bindScenes(py::module_& m) {
+  bindMaterial(m);
+  bindCage(m);
+  bindLight(m);
+  bindCamera(m);
+  bindEnvironment(m);
+  bindScene(m);
 }
 
 }  // namespace facet_python

@@ -1,15 +1,11 @@
 // How much memory one facet process lets itself use, and the estimates it
 // holds inputs to before allocating for them (docs/reliability.md, "Limits").
 // The CLI and both APIs apply the same limit, so a render one of them
-// refuses is refused by all.
+// refuses is refused by all; engine/image_memory.h checks a render's images.
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <string>
-
-#include "engine/image/pixel_rect.h"
-#include "scenes/scene.h"
 
 namespace facet::scene {
 
@@ -41,11 +37,5 @@ std::uint64_t textureHeldBytes(int width, int height, int components, int bytesP
 // memoryLimit(): checked from the image's header, before decoding.
 void checkTextureFitsInMemory(const std::string& source, const std::string& field, int width, int height,
                               int components, int bytesPerSample, std::uint64_t heldBytes = 0);
-
-// Throws std::invalid_argument unless `images` images of the scene's size,
-// or of the crop of it that is rendered, fit in memoryLimit();
-// `sizeSource` names where the size came from.
-void checkImagesFitInMemory(const Scene& scene, int images, const std::string& sizeSource,
-                            const std::optional<PixelRect>& crop = {});
 
 }  // namespace facet::scene

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Checks the tree's structure: includes point down the layers, and no
-source file outside tests/ is longer than MAX_LINES.
+"""Checks the tree's structure: includes point down the layers, no source
+file outside tests/ is longer than MAX_LINES, and no test's result hangs on
+the wall clock (wall_clock_violations).
 
     python3 tools/check_structure.py [repo root]
 
@@ -221,12 +222,107 @@ def shortest_cycle(start, group, edges):
     return list(reversed(path))
 
 
+# A test's result must not depend on how busy the machine is
+# (docs/reliability.md, "Tests and the wall clock"). An adaptive render's time
+# limit in a test is at least a day, which no test comes near; a positive
+# one below that is a violation (zero, negative and nan are refusal tests,
+# which limit nothing).
+UNREACHABLE_TIME_LIMIT = 86400
+TIME_LIMIT_PATTERN = re.compile(r"(?:timeLimitSeconds\s*=|--time-limit[ \t=]|time_limit\s*=)[ \t]*([0-9][0-9.eE+-]*)")
+# Reading the clock or waiting on it, in C++, Python and shell; a file that
+# does is named in ALLOWED_CLOCK_READS with why its result cannot depend on it.
+CLOCK_PATTERN = re.compile(r"\b(?:steady_clock|system_clock|high_resolution_clock|sleep_for|sleep_until)\b"
+                           r"|\btime\.(?:time|monotonic|perf_counter|sleep)\(|\bdatetime\.now\b"
+                           r"|\bSECONDS\b|\bdate \+%s|\btimeout [0-9$]|\bsleep [0-9$]")
+ALLOWED_CLOCK_READS = {
+    "tests/engine/cpu/transmission_render_test.cpp": "prints how long the paths took; asserts nothing on it",
+    "tests/engine/cpu/intersect_exact_test.cpp": "prints the time per ray; asserts nothing on it",
+    "tests/engine/gpu/gpu_timestamps_test.cpp": "the host's wait bounds the device's time from above, and load only "
+                                                "lengthens the wait",
+    "tests/apps/facet/check_watch.sh": "waits for events; one deadline far beyond a run on a busy machine catches "
+                                       "a hung facet",
+    "tests/tools/farm/slurm_end_to_end.sh": "waits for the daemons; deadlines far beyond a busy machine's catch a "
+                                            "hang and stop the daemons",
+}
+# (path, the limit as written): why a busy machine cannot change the result.
+ALLOWED_TIME_LIMITS = {
+    ("tests/engine/adaptive_render_test.cpp", "1e-6"): "the time cap's own test: a limit every round passes, "
+                                                       "however idle the machine",
+}
+# `facet preview` stops its rounds after 60 s unless told otherwise, so a test
+# line that runs it names its --time-limit (TIME_LIMIT_PATTERN checks the value).
+PREVIEW_PATTERN = re.compile(r'(?:"\$facet"|"?\$\{facet\}"?|\$facet|facet;)[ \t]*preview\b')
+# (path, a piece of the line): why the line may run it with the 60 s.
+ALLOWED_PREVIEWS = {
+    ("tests/apps/facet/check_preview_stage.sh", '-o bad.png "$@"'): "the refusals, each refused before any render",
+}
+TEST_SUFFIXES = (".h", ".cpp", ".py", ".sh", ".cmake", "CMakeLists.txt")
+# This check's own test holds the patterns as the data of its cases.
+OWN_TEST = "tests/tools/structure_check_test.py"
+
+
+def wall_clock_violations(root):
+    """Printable lines: each time limit a test could reach and each clock read
+    not in the allow-lists, and each allow-listed file that no longer needs
+    its entry."""
+    violations, limited, previewed, clocked = [], set(), set(), set()
+    for folder, subfolders, files in os.walk(os.path.join(root, "tests")):
+        subfolders[:] = sorted(s for s in subfolders if not s.startswith((".", "build", "__pycache__")))
+        for name in sorted(f for f in files if f.endswith(TEST_SUFFIXES)):
+            path = os.path.relpath(os.path.join(folder, name), root).replace(os.sep, "/")
+            if path == OWN_TEST:
+                continue
+            with open(os.path.join(folder, name), encoding="utf-8", errors="replace") as source:
+                text = source.read()
+            for match in TIME_LIMIT_PATTERN.finditer(text):
+                try:
+                    seconds = float(match.group(1))
+                except ValueError:
+                    continue
+                if not 0 < seconds < UNREACHABLE_TIME_LIMIT:
+                    continue
+                limited.add((path, match.group(1)))
+                if (path, match.group(1)) not in ALLOWED_TIME_LIMITS:
+                    line = text.count("\n", 0, match.start()) + 1
+                    violations.append(f"{path}:{line}: a time limit of {match.group(1)} s: a busy machine can reach "
+                                      f"it; use at least {UNREACHABLE_TIME_LIMIT} or count rounds")
+            for match in PREVIEW_PATTERN.finditer(text):
+                start = text.rfind("\n", 0, match.start()) + 1
+                end = text.find("\n", match.end())
+                line_text = text[start : end if end >= 0 else len(text)]
+                if "--time-limit" in line_text:
+                    continue
+                allowed = [key for key in ALLOWED_PREVIEWS if key[0] == path and key[1] in line_text]
+                previewed.update(allowed)
+                if not allowed:
+                    line = text.count("\n", 0, match.start()) + 1
+                    violations.append(f"{path}:{line}: runs facet preview without --time-limit, so with its 60 s: "
+                                      f"pass --time-limit {UNREACHABLE_TIME_LIMIT}")
+            match = CLOCK_PATTERN.search(text)
+            if match:
+                clocked.add(path)
+                if path not in ALLOWED_CLOCK_READS:
+                    line = text.count("\n", 0, match.start()) + 1
+                    violations.append(f'{path}:{line}: reads the wall clock ("{match.group(0)}"): a test\'s result '
+                                      "must not depend on it; add the file to ALLOWED_CLOCK_READS only with why it "
+                                      "cannot")
+    for allowed, used, kind in ((ALLOWED_TIME_LIMITS, limited, "ALLOWED_TIME_LIMITS"),
+                                (ALLOWED_PREVIEWS, previewed, "ALLOWED_PREVIEWS"),
+                                (ALLOWED_CLOCK_READS, clocked, "ALLOWED_CLOCK_READS")):
+        for entry in sorted(set(allowed) - used):
+            path = entry if isinstance(entry, str) else entry[0]
+            if os.path.isfile(os.path.join(root, path)):
+                violations.append(f"{path}: {entry} is in {kind} but no longer needed there: remove it")
+    return violations
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("root", nargs="?", default=os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
                         help="the repository root (default: the one holding this script)")
     root = parser.parse_args(argv).root
     violations, cycles, stats = check(root)
+    violations += wall_clock_violations(root)
     counts = f"{stats['files']} files, {stats['includes']} includes, {stats['layers']} layers"
     for violation in violations:
         print(violation)
@@ -237,7 +333,7 @@ def main(argv=None):
     if violations or cycles:
         print(f"check_structure: {len(violations)} violations, {len(cycles)} layer cycles ({counts})")
         return 1
-    print(f"check_structure: {counts}: includes point down, no file over {MAX_LINES} lines")
+    print(f"check_structure: {counts}: includes point down, no file over {MAX_LINES} lines, no test on the wall clock")
     return 0
 
 

@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "analysis/bench/bench.h"
-#include "analysis/bench/cycles_peer.h"
+#include "analysis/bench/cycles_sections.h"
 #include "analysis/gnuplot.h"
 #include "engine/image/exr_file.h"
 #include "engine/image/image_io.h"
@@ -107,7 +107,7 @@ scene::Scene materialPreview(const fs::path& root, const fs::path& map, int size
   scene.lights.clear();
   scene.environment.emplace();
   scene.environment->map = std::make_shared<const scene::EnvironmentMap>(scene::loadEnvironmentMap(map));
-  scene.environment->rotationDegrees = kCyclesMapRotationDegrees;
+  scene.environment->rotationDegrees = peers::kCyclesMapRotationDegrees;
   // A convex surface never shadows itself: occlusion changes nothing but the time.
   scene.environment->occlusion = false;
   scene.render.width = scene.render.height = size;
@@ -132,7 +132,7 @@ RenderReport renderPreview(Renderer& renderer, scene::Scene scene, scene::IblMet
 // gets the image of the largest sample count.
 std::vector<Point> cyclesPoints(const fs::path& directory, const Sizes& sizes, const Image& reference,
                                 Image& converged) {
-  const std::map<int, double> seconds = readCyclesTimes(directory / "cycles_times.csv");
+  const std::map<int, double> seconds = peers::readCyclesTimes(directory / "cycles_times.csv");
   std::vector<Point> points;
   for (int samples : sizes.cyclesSamples) {
     const Image written = readExr(directory / ("cycles_" + std::to_string(samples) + "spp.exr"));
@@ -170,7 +170,7 @@ std::vector<std::vector<Point>> facetCurves(Renderer& renderer, const scene::Sce
 
 void runCycles(Renderer& renderer, const BenchOptions& options, Report& report) {
   report.heading("Cycles: the material preview");
-  const std::optional<CyclesPeer> peer = findCyclesPeer(options.root, "cycles", report);
+  const std::optional<peers::CyclesPeer> peer = findCyclesPeer(options.root, "cycles", report);
   if (!peer) return;
   const Sizes sizes = sizesFor(options.quick);
   const fs::path directory = options.output / "cycles";
@@ -184,11 +184,11 @@ void runCycles(Renderer& renderer, const BenchOptions& options, Report& report) 
           .image;
   writeExr(directory / "facet_reference.exr", reference);
 
-  const unsigned threads = cyclesThreads();
+  const unsigned threads = peers::cyclesThreads();
   std::printf("cycles: rendering with %s on %u threads\n", peer->blender.c_str(), threads);
   std::fflush(stdout);
-  renderInCycles(peer->blender, peer->script, describeForCycles(scene, directory),
-                 {sizes.cyclesSamples, options.repeats, 0}, directory);
+  peers::renderInCycles(peer->blender, peer->script, peers::describeForCycles(scene, directory),
+                        {sizes.cyclesSamples, options.repeats, 0}, directory);
   Image cyclesConverged;
   const std::vector<Point> cycles = cyclesPoints(directory, sizes, reference, cyclesConverged);
   const std::vector<std::vector<Point>> curves = facetCurves(renderer, scene, sizes, options.repeats, reference);
@@ -220,7 +220,8 @@ void runCycles(Renderer& renderer, const BenchOptions& options, Report& report) 
       "The gold cube (scenes/examples/gold_cube.gltf, Catmull-Clark) under " + map.filename().string() + " alone, " +
       std::to_string(sizes.size) + "², Blender's metallic Fresnel, separable Smith G, occlusion off. Cycles (" +
       peer->blender.string() + ", " + std::to_string(threads) +
-      " threads, tools/blender/cycles_scene.py): the cage subdivided " + std::to_string(kCyclesSubdivisionLevels) +
+      " threads, tools/blender/cycles_scene.py): the cage subdivided " +
+      std::to_string(peers::kCyclesSubdivisionLevels) +
       " levels with its vertices on the limit surface, 1 px box filter, no clamping, no denoiser; its time is the "
       "median render call. facet: GPU backend, its tracing stages' time. Error: relative RMSE against facet sampled "
       "with " +

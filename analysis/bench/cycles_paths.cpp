@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "analysis/bench/bench.h"
-#include "analysis/bench/cycles_peer.h"
+#include "analysis/bench/cycles_sections.h"
 #include "engine/image/exr_file.h"
 #include "engine/image/image_io.h"
 #include "rules/rules.h"
@@ -51,7 +51,7 @@ void cyclesBounces(scene::RenderSettings& render) {
 // The environment as Cycles sees it, sampled with one pair per vertex and shadowed.
 void cyclesEnvironment(scene::Scene& scene) {
   scene::Environment& environment = scene.environment.value();
-  environment.rotationDegrees = kCyclesMapRotationDegrees;
+  environment.rotationDegrees = peers::kCyclesMapRotationDegrees;
   environment.method = scene::IblMethod::Sampled;
   environment.samples = 1;
   environment.occlusion = true;
@@ -178,7 +178,7 @@ std::vector<std::vector<Point>> timedCurves(Renderer& renderer, scene::Scene sce
 
 void runCyclesPaths(Renderer& renderer, const BenchOptions& options, Report& report) {
   report.heading("Cycles: scenes that bounce");
-  const std::optional<CyclesPeer> peer = findCyclesPeer(options.root, "bounces", report);
+  const std::optional<peers::CyclesPeer> peer = findCyclesPeer(options.root, "bounces", report);
   if (!peer) return;
   const Sizes sizes = sizesFor(options.quick);
   struct Case {
@@ -201,8 +201,10 @@ void runCyclesPaths(Renderer& renderer, const BenchOptions& options, Report& rep
     writeExr(directory / "facet_half2.exr", facet.second);
     std::printf("bounces: %s: Cycles with %s\n", c.name.c_str(), peer->blender.c_str());
     std::fflush(stdout);
-    CyclesRenders renders{c.timed ? sizes.cyclesSamples : std::vector<int>{}, options.repeats, sizes.cyclesConverged};
-    renderInCycles(peer->blender, peer->script, describeForCycles(c.scene, directory), renders, directory);
+    peers::CyclesRenders renders{c.timed ? sizes.cyclesSamples : std::vector<int>{}, options.repeats,
+                                 sizes.cyclesConverged};
+    peers::renderInCycles(peer->blender, peer->script, peers::describeForCycles(c.scene, directory), renders,
+                          directory);
     const std::pair<Image, Image> cycles{cyclesImage(directory / "cycles_converged_seed1.exr", facetConverged),
                                          cyclesImage(directory / "cycles_converged_seed2.exr", facetConverged)};
     const float exposure = middleGreyExposure(facetConverged);
@@ -224,7 +226,7 @@ void runCyclesPaths(Renderer& renderer, const BenchOptions& options, Report& rep
     if (!c.timed) continue;
 
     // Time to Cycles' error, both against facet's converged image.
-    const std::map<int, double> seconds = readCyclesTimes(directory / "cycles_times.csv");
+    const std::map<int, double> seconds = peers::readCyclesTimes(directory / "cycles_times.csv");
     std::vector<std::vector<Point>> curves(1);
     for (int n : sizes.cyclesSamples) {
       const Image image = cyclesImage(directory / ("cycles_" + std::to_string(n) + "spp.exr"), facetConverged);
@@ -247,7 +249,7 @@ void runCyclesPaths(Renderer& renderer, const BenchOptions& options, Report& rep
     report.table({"renderer", "spp", "ms (facet: GPU tracing stages; Cycles: render call)", "relative RMSE"}, timing);
   }
   report.paragraph(
-      "Cycles (" + peer->blender.string() + ", " + std::to_string(cyclesThreads()) +
+      "Cycles (" + peer->blender.string() + ", " + std::to_string(peers::cyclesThreads()) +
       " threads, tools/blender/cycles_scene.py) and facet (GPU backend) with Cycles' default bounce limits (12; "
       "diffuse 4, glossy 4, transmission 12), the courtyard sampled, no clamping or denoising. Converged: facet " +
       std::to_string(2 * sizes.facetRenders) + " renders of " + std::to_string(sizes.facetConverged) +

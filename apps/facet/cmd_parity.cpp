@@ -11,13 +11,13 @@
 #include "analysis/parity.h"
 #include "analysis/parity_statistics.h"
 #include "commands.h"
+#include "engine/image_memory.h"
 #include "engine/render_record.h"
 #include "engine/renderer.h"
 #include "material_options.h"
 #include "parity_options.h"
 #include "parity_output.h"
 #include "scene_options.h"
-#include "scenes/memory_budget.h"
 #include "scene_warnings.h"
 
 namespace facet::cli {
@@ -63,8 +63,8 @@ ParityCase judgeScene(const std::string& file, const ParityCommandOptions& o,
   applySceneOverrides(o.sceneOverrides, scene);
   // The reference's render; per adapter its render, the first pair, the
   // pairs' sums (about an image and a half) and the two mean images.
-  scene::checkImagesFitInMemory(scene, 1 + 6 * int(adapters.size()),
-                                o.sceneOverrides.size.empty() ? file + ": image size" : "--size");
+  checkImagesFitInMemory(scene, 1 + 6 * int(adapters.size()),
+                         o.sceneOverrides.size.empty() ? file + ": image size" : "--size");
   const bool statistical = seededEstimate(scene) && o.renders > 1;
   const int renders = statistical ? o.renders : 1;
   const std::uint32_t firstSeed = scene.environment ? scene.environment->seed : 0u;

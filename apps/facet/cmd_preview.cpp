@@ -18,19 +18,19 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/movie.h"
 #include "commands.h"
 #include "data_folder.h"
 #include "engine/adaptive_render.h"
 #include "engine/camera/camera_path.h"
-#include "engine/ground_plane.h"
 #include "engine/image/contact_sheet.h"
 #include "engine/image/image_io.h"
+#include "engine/image/movie.h"
+#include "engine/image_memory.h"
 #include "material_options.h"
 #include "preview_stage_options.h"
 #include "scene_options.h"
+#include "scenes/ground_plane.h"
 #include "scenes/input_error.h"
-#include "scenes/memory_budget.h"
 #include "scenes/scene_file.h"
 #include "scenes/studio_environment.h"
 
@@ -71,7 +71,7 @@ scene::Scene previewModel(const PreviewStageFlags& f) {
   scene.environment = scene::studioEnvironment();
   applyImageSize(f.size, scene);
   applySceneOverrides(f.lighting, scene);
-  scene::checkImagesFitInMemory(scene, int(f.materials.size()) + 1, "--size");
+  checkImagesFitInMemory(scene, int(f.materials.size()) + 1, "--size");
   return scene;
 }
 
@@ -120,8 +120,7 @@ void runPreview(const PreviewStageFlags& f) {
   // Every output is checked, and ffmpeg found, before the first render.
   if (!f.movie.empty()) {
     checkOutputPath("--movie", f.movie);
-    if (!analysis::findOnPath("ffmpeg", path))
-      throw OutputError("--movie '" + f.movie + "': " + analysis::kFfmpegMissing);
+    if (!findOnPath("ffmpeg", path)) throw OutputError("--movie '" + f.movie + "': " + kFfmpegMissing);
   } else {
     checkOutputPath("-o", f.output);
     checkOutputExtension("-o", f.output, ".png");
@@ -141,7 +140,8 @@ void runPreview(const PreviewStageFlags& f) {
   const int frames = f.turntable.value_or(1);
   std::unique_ptr<FrameFolder> folder = f.movie.empty() ? nullptr : std::make_unique<FrameFolder>();
   // The ground's scenes are the same under every material.
-  const std::optional<GroundScenes> ground = f.noGround ? std::nullopt : std::optional(groundScenes(model));
+  const std::optional<scene::GroundScenes> ground =
+      f.noGround ? std::nullopt : std::optional(scene::groundScenes(model));
   Renderer renderer(f.adapter);
   nlohmann::json summary = {{"backend", f.backend},      {"width", layout.width()},
                             {"height", layout.height()}, {"cell_width", width},
@@ -150,7 +150,7 @@ void runPreview(const PreviewStageFlags& f) {
   for (int frame = 0; frame < frames; ++frame) {
     const scene::Camera camera =
         f.turntable ? camera::turntableCamera(model.camera, frame, *f.turntable) : model.camera;
-    std::optional<GroundScenes> framed = ground;
+    std::optional<scene::GroundScenes> framed = ground;
     if (framed) framed->holdout.camera = framed->ground.camera = camera;
     std::vector<ContactCell> cells;
     for (std::size_t i = 0; i < scenes.size(); ++i) {
@@ -164,12 +164,12 @@ void runPreview(const PreviewStageFlags& f) {
     }
     const std::vector<std::uint8_t> sheet = composeContactSheet(layout, cells);
     if (folder)
-      rgbaPngFile(analysis::framePath(folder->path(), frame), layout.width(), layout.height(), sheet)
-          .write(analysis::framePath(folder->path(), frame));
+      rgbaPngFile(framePath(folder->path(), frame), layout.width(), layout.height(), sheet)
+          .write(framePath(folder->path(), frame));
     else
       writeAllOrNothing({rgbaPngFile(f.output, layout.width(), layout.height(), sheet)});
   }
-  if (folder) analysis::writeMovie(folder->path(), frames, f.fps, f.movie, path);
+  if (folder) writeMovie(folder->path(), frames, f.fps, f.movie, path);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary["milliseconds"] = seconds * 1000.0;
   const std::string written = f.movie.empty() ? f.output : f.movie;

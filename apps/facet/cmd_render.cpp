@@ -17,6 +17,7 @@
 
 #include "commands.h"
 #include "engine/image/image_io.h"
+#include "engine/image_memory.h"
 #include "engine/renderer.h"
 #include "exr_options.h"
 #include "farm_options.h"
@@ -25,7 +26,6 @@
 #include "progress_log.h"
 #include "render_summary.h"
 #include "scene_options.h"
-#include "scenes/memory_budget.h"
 #include "scene_warnings.h"
 #include "scenes/scene_file.h"
 #include "watch.h"
@@ -138,7 +138,7 @@ void runWatch(const RenderCommandOptions& o) {
   watched.load = [&] {
     scene::Scene scene = loadEditedScene(o.scene, o.edits);
     applySceneOverrides(o.scene_overrides, scene);
-    scene::checkImagesFitInMemory(scene, 1, o.scene_overrides.size.empty() ? o.scene + ": image size" : "--size");
+    checkImagesFitInMemory(scene, 1, o.scene_overrides.size.empty() ? o.scene + ": image size" : "--size");
     std::vector<std::string> fresh;
     for (const std::string& warning : sceneWarnings(scene))
       if (warned.insert(warning).second) fresh.push_back(warning);
@@ -162,7 +162,7 @@ void runRender(const RenderCommandOptions& o) {
   applySceneOverrides(o.scene_overrides, scene);
   const int width = scene.render.width, height = scene.render.height;
   const std::optional<PixelRect> crop = chosenCrop(o.farm, width, height);
-  scene::checkImagesFitInMemory(scene, 1, o.scene_overrides.size.empty() ? o.scene + ": image size" : "--size", crop);
+  checkImagesFitInMemory(scene, 1, o.scene_overrides.size.empty() ? o.scene + ": image size" : "--size", crop);
   const std::vector<std::string> warnings = sceneWarnings(scene);
   printWarnings(warnings, o.farm.quiet || o.farm.json);
   const Backend backend = o.backend == "cpu" ? Backend::Cpu : Backend::Gpu;

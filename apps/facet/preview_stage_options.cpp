@@ -3,7 +3,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "analysis/movie.h"
+#include "engine/image/movie.h"
 
 namespace facet::cli {
 namespace {
@@ -63,7 +63,7 @@ void checkPreviewStageFlags(const PreviewStageFlags& f) {
   if (f.movie.empty() && f.turntable) throw std::invalid_argument("--turntable: give --movie out.mp4 or out.gif");
   if (!f.movie.empty()) {
     if (!f.turntable) throw std::invalid_argument("--movie '" + f.movie + "': give --turntable N, its frames");
-    if (!analysis::movieFormat(f.movie))
+    if (!movieFormat(f.movie))
       throw std::invalid_argument("--movie '" + f.movie + "': the extension chooses the format: expected .mp4 or .gif");
     if (!f.output.empty())
       throw std::invalid_argument("-o '" + f.output + "': --movie writes the movie alone; give one or the other");

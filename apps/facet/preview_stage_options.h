@@ -24,7 +24,7 @@ struct PreviewStageFlags {
   SceneOverrides lighting;  // --env, --env-intensity, --env-rotation and --ibl
   double noiseThreshold = AdaptiveSettings{}.noiseThreshold;
   long long maxSpp = AdaptiveSettings{}.maxSpp;
-  double timeLimit = AdaptiveSettings{}.timeLimitSeconds;
+  double timeLimit = 60;  // seconds per image: a preview answers while one waits, where the API renders to the end
   std::optional<int> turntable;  // frames of a full orbit
   std::string movie;             // .mp4 or .gif
   double fps = 24;

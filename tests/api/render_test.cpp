@@ -154,7 +154,7 @@ TEST(ApiRender, TransparentPresetsTransmitOnBothBackends) {
 }
 
 // The API holds a render to the memory limit the CLI holds it to
-// (scenes/memory_budget.h), before anything is allocated for it.
+// (engine/image_memory.h), before anything is allocated for it.
 TEST(ApiRender, ARenderOverTheMemoryLimitIsRefusedAsOnTheCommandLine) {
   ASSERT_EQ(setenv("FACET_MEMORY_LIMIT", "64", 1), 0);
   facet::Renderer renderer;

@@ -29,7 +29,6 @@ AdaptiveSettings settings(double threshold, int maxSpp) {
   AdaptiveSettings s;
   s.noiseThreshold = threshold;
   s.maxSpp = maxSpp;
-  s.timeLimitSeconds = 600;
   s.tileSize = 8;
   return s;
 }
@@ -77,10 +76,15 @@ TEST(AdaptiveRender, ASampleCapStopsItAndSaysSo) {
   EXPECT_EQ(r.rounds, 4);
 }
 
+TEST(AdaptiveRender, HasNoTimeLimitUnlessGivenOne) {
+  // The other tests render with the default, so their rounds depend on the settings alone.
+  EXPECT_EQ(AdaptiveSettings{}.timeLimitSeconds, kNoTimeLimit);
+}
+
 TEST(AdaptiveRender, ATimeLimitStopsItAndSaysSo) {
   Renderer renderer;
   AdaptiveSettings s = settings(1e-5, 65536);
-  s.timeLimitSeconds = 1e-6;  // spent by the first round
+  s.timeLimitSeconds = 1e-6;  // spent by the first round however idle the machine: load only makes it later
   const AdaptiveReport r = renderAdaptive(renderer, studioBlob(scene::IblMethod::Sampled, 1), Backend::Cpu, s);
   EXPECT_EQ(r.stop, AdaptiveStop::TimeCap);
   EXPECT_EQ(r.rounds, 1);

@@ -56,6 +56,7 @@ class StructureCheckTest(unittest.TestCase):
                 with open(os.path.join(root, path), "w") as file:
                     file.write(text)
             violations, cycles, _ = check_structure.check(root)
+            violations += check_structure.wall_clock_violations(root)
             output = io.StringIO()
             with contextlib.redirect_stdout(output):
                 status = check_structure.main([root])
@@ -118,6 +119,43 @@ class StructureCheckTest(unittest.TestCase):
         violations, _, _, _ = self.check({"scenes/long.cpp": "x\n" * 450, "apps/facet/long.cpp": "x\n" * 451,
                                           "tools/long.py": "x\n" * 450 + "x"})
         self.assertEqual(violations, ["apps/facet/long.cpp: 451 lines > 450", "tools/long.py: 451 lines > 450"])
+
+    def test_rejects_a_time_limit_a_busy_machine_can_reach(self):
+        violations, _, status, _ = self.check({
+            "tests/engine/render_test.cpp": "s.timeLimitSeconds = 600;\ns.timeLimitSeconds = 86400;\n",
+            "tests/apps/check.sh": 'common=(--time-limit 60)\nbad --time-limit -1\nbad --time-limit nan\n',
+        })
+        self.assertEqual(status, 1)
+        self.assertEqual(len(violations), 2)
+        self.assertIn("tests/apps/check.sh:1: a time limit of 60 s", violations[0])
+        self.assertIn("tests/engine/render_test.cpp:1: a time limit of 600 s", violations[1])
+
+    def test_rejects_facet_preview_without_a_time_limit(self):
+        violations, _, _, _ = self.check({"tests/apps/check.sh": (
+            '"$facet" preview gold -o a.png\n'
+            '"$facet" preview gold --time-limit 86400 -o b.png\n'
+            "# facet preview in a comment runs nothing\n")})
+        self.assertEqual(len(violations), 1)
+        self.assertIn("tests/apps/check.sh:1: runs facet preview without --time-limit", violations[0])
+
+    def test_rejects_a_test_that_reads_the_clock_unless_allowed(self):
+        violations, _, _, _ = self.check({
+            "tests/engine/speed_test.cpp": "auto start = std::chrono::steady_clock::now();\n",
+            "tests/apps/wait.sh": "\nsleep 1\n",
+            "tests/python/wait_test.py": "import time\nstarted = time.monotonic()\n",
+            # Allowed: it prints the time and asserts nothing on it.
+            "tests/engine/cpu/intersect_exact_test.cpp": "auto start = std::chrono::steady_clock::now();\n",
+        })
+        self.assertEqual(len(violations), 3)
+        self.assertIn('tests/apps/wait.sh:2: reads the wall clock ("sleep 1")', violations[0])
+        self.assertIn("tests/engine/speed_test.cpp:1: reads the wall clock", violations[1])
+        self.assertIn("tests/python/wait_test.py:2: reads the wall clock", violations[2])
+
+    def test_rejects_an_allowance_no_longer_needed(self):
+        violations, _, _, _ = self.check({"tests/engine/cpu/intersect_exact_test.cpp": "int main() {}\n"})
+        self.assertEqual(len(violations), 1)
+        self.assertIn("tests/engine/cpu/intersect_exact_test.cpp: tests/engine/cpu/intersect_exact_test.cpp is in "
+                      "ALLOWED_CLOCK_READS but no longer needed there", violations[0])
 
 
 if __name__ == "__main__":

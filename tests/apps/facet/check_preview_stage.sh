@@ -20,10 +20,13 @@ facet=$1 repo=$2 work=$3
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 fail() { echo "check_preview_stage: FAILED: $*" >&2; exit 1; }
 library=$repo/scenes/examples/materials
-common=(--size 32x32 --backend cpu --time-limit 600 --no-ground)
+# Every render here: the longest --time-limit the flag takes, a day, which no
+# render here comes near, so how busy the machine is cannot change its rounds.
+preview() { "$facet" preview --time-limit 86400 "$@"; }
+common=(--size 32x32 --backend cpu --no-ground)
 
 # The sheet: two cells side by side, labelled; every render's verdict checked.
-"$facet" preview gold "$library/red_plastic.json" "${common[@]}" --noise-threshold 0.03 --json -o sheet.png >sheet.json
+preview gold "$library/red_plastic.json" "${common[@]}" --noise-threshold 0.03 --json -o sheet.png >sheet.json
 /usr/bin/python3 - sheet.json sheet.png <<'PY' || fail "the sheet's report or size"
 import json, struct, sys
 report = json.load(open(sys.argv[1]))
@@ -41,21 +44,21 @@ PY
 
 # A noisier estimator of the same picture takes more samples.
 samples() { /usr/bin/python3 -c 'import json,sys; print(sum(r["samples"] for r in json.load(open(sys.argv[1]))["renders"]))' "$1"; }
-on_gpu=(--size 32x32 --backend gpu --time-limit 600 --no-ground)
-"$facet" preview gold "${on_gpu[@]}" --noise-threshold 0.02 --json -o smooth.png >smooth.json
-"$facet" preview gold "${on_gpu[@]}" --noise-threshold 0.02 --ibl sampled --json -o noisy.png >noisy.json
+on_gpu=(--size 32x32 --backend gpu --no-ground)
+preview gold "${on_gpu[@]}" --noise-threshold 0.02 --json -o smooth.png >smooth.json
+preview gold "${on_gpu[@]}" --noise-threshold 0.02 --ibl sampled --json -o noisy.png >noisy.json
 [ "$(samples noisy.json)" -gt "$(samples smooth.json)" ] ||
   fail "sampled lighting took $(samples noisy.json) samples, prefiltered $(samples smooth.json)"
 
 # A cap that stops it is said.
-"$facet" preview gold "${on_gpu[@]}" --ibl sampled --noise-threshold 0.0001 --max-spp 8 -o capped.png >capped.txt
+preview gold "${on_gpu[@]}" --ibl sampled --noise-threshold 0.0001 --max-spp 8 -o capped.png >capped.txt
 grep -q "sample cap" capped.txt || fail "a render stopped by --max-spp does not say so: $(cat capped.txt)"
 
 # --env lights the model by a map instead of the studio: the cell is nearer
 # to `facet render --env` of the same map than to the studio's preview.
 map=$repo/scenes/environments/studio.exr
-"$facet" preview gold "${on_gpu[@]}" --max-spp 16 --env "$map" --env-rotation 90 -o mapped.png --quiet
-"$facet" preview gold "${on_gpu[@]}" --max-spp 16 -o studio.png --quiet
+preview gold "${on_gpu[@]}" --max-spp 16 --env "$map" --env-rotation 90 -o mapped.png --quiet
+preview gold "${on_gpu[@]}" --max-spp 16 -o studio.png --quiet
 "$facet" render "$repo/scenes/examples/superball.obj" --material gold --size 32x32 --spp 16 --env "$map" \
   --env-rotation 90 -o rendered.png --quiet
 /usr/bin/python3 - <<'PY' || fail "--env does not light the preview"
@@ -69,12 +72,14 @@ PY
 
 # The ground: two rounds for every tile either way, so the same samples.
 ground=(gold --size 32x32 --backend gpu --max-spp 8 --noise-threshold 0.0001 --json)
-"$facet" preview "${ground[@]}" -o ground.png >ground.json
-"$facet" preview "${ground[@]}" --no-ground -o bare.png >bare.json
+preview "${ground[@]}" -o ground.png >ground.json
+preview "${ground[@]}" --no-ground -o bare.png >bare.json
 /usr/bin/python3 - <<'PY' || fail "the ground's shadow"
 import json, OpenImageIO as oiio, numpy as np
 assert json.load(open("ground.json"))["ground"] is True
 assert json.load(open("bare.json"))["ground"] is False
+for name in ("ground.json", "bare.json"):
+    assert [r["stop"] for r in json.load(open(name))["renders"]] == ["sample cap"], name
 def cell(path):  # the first cell, linear display values
     v = oiio.ImageInput.open(path).read_image(format="float")[:32, :32, :3]
     return np.where(v <= 0.04045, v / 12.92, ((v + 0.055) / 1.055) ** 2.4)
@@ -115,7 +120,7 @@ bad "--env: File does not exist: nosuch.exr" --env nosuch.exr
 
 # No ffmpeg on PATH: one line naming it and how to install it, exit code 2, nothing written.
 set +e
-PATH=/nonexistent "$facet" preview gold "${common[@]:0:4}" --turntable 2 --movie turn.mp4 >out.txt 2>err.txt
+PATH=/nonexistent preview gold "${common[@]}" --turntable 2 --movie turn.mp4 >out.txt 2>err.txt
 code=$?
 set -e
 [ "$code" = 2 ] || fail "no ffmpeg: exit code $code: $(cat err.txt)"
@@ -143,7 +148,7 @@ SH
 chmod +x bin/ffmpeg
 export RECORD=$work/recorded
 movie="it's \"quoted\" \$(touch injected).gif"
-PATH=$work/bin:$PATH "$facet" preview gold "${common[@]}" --turntable 4 --movie "$movie" --quiet
+PATH=$work/bin:$PATH preview gold "${common[@]}" --turntable 4 --movie "$movie" --quiet
 [ -f "$movie" ] || fail "the fake ffmpeg's movie is not at the name given"
 [ ! -e injected ] || fail "a file name ran a command"
 grep -qx -- "-frames:v" recorded/args.txt || fail "no -frames:v in $(cat recorded/args.txt)"
@@ -166,7 +171,7 @@ for i in range(4):
 PY
 # ffmpeg fails: one error line, exit code 2, no movie and no temporary left.
 set +e
-FAKE_FFMPEG=fail PATH=$work/bin:$PATH "$facet" preview gold "${common[@]}" --turntable 2 --movie failed.mp4 \
+FAKE_FFMPEG=fail PATH=$work/bin:$PATH preview gold "${common[@]}" --turntable 2 --movie failed.mp4 \
   --quiet >out.txt 2>err.txt
 code=$?
 set -e

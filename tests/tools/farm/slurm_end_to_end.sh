@@ -90,16 +90,17 @@ CONF
 mkdir "$work/state" "$work/spool"
 slurmctld -f "$SLURM_CONF" || fail "slurmctld did not start"
 slurmd -f "$SLURM_CONF" -N "$host" || fail "slurmd did not start"
-for _ in $(seq 100); do
-  [[ $(sinfo -h -N -o %T 2>/dev/null) == idle ]] && break
-  sleep 0.2
-done
+# The node's start is waited for, not timed: the deadline, far beyond a start
+# on a busy machine and below the test's ctest TIMEOUT, only catches a hang.
+deadline=$((SECONDS + 300))
+until [[ $(sinfo -h -N -o %T 2>/dev/null) == idle || $SECONDS -ge $deadline ]]; do sleep 0.2; done
 [[ $(sinfo -h -N -o %T 2>/dev/null) == idle ]] || fail "the node is not idle: $(sinfo -N 2>&1)"
 
 out=$work/out
 mkdir -m 777 "$out"
 scene=$repo/scenes/examples/superball.obj
 common=(--size 48x40 --spp 4 --backend cpu)
+# --time: a job that hangs ends (a job takes seconds, its limit is minutes).
 export FACET=$facet FACET_SBATCH_OPTIONS="--cpus-per-task=1 --time=5"
 
 # A 4-tile still, merged by the dependent job.

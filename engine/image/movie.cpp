@@ -1,4 +1,4 @@
-#include "analysis/movie.h"
+#include "engine/image/movie.h"
 
 #include <spawn.h>
 #include <sys/wait.h>
@@ -15,7 +15,7 @@
 
 extern char** environ;
 
-namespace facet::analysis {
+namespace facet {
 
 namespace fs = std::filesystem;
 
@@ -110,4 +110,4 @@ void writeMovie(const fs::path& folder, int frames, double fps, const fs::path& 
   });
 }
 
-}  // namespace facet::analysis
+}  // namespace facet

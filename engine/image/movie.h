@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace facet::analysis {
+namespace facet {
 
 enum class MovieFormat { Mp4, Gif };
 
@@ -43,4 +43,4 @@ void runProgram(const std::vector<std::string>& arguments);
 void writeMovie(const std::filesystem::path& folder, int frames, double fps, const std::filesystem::path& output,
                 const std::string& path);
 
-}  // namespace facet::analysis
+}  // namespace facet

@@ -1,6 +1,6 @@
 // ffmpeg's arguments are an argv built from paths, never shell text; a
 // missing or failing ffmpeg leaves no movie behind.
-#include "analysis/movie.h"
+#include "engine/image/movie.h"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -12,7 +12,7 @@
 #include "engine/image/image_io.h"
 #include "tests/support/temp_dir.h"
 
-namespace facet::analysis {
+namespace facet {
 namespace {
 
 namespace fs = std::filesystem;
@@ -120,4 +120,4 @@ TEST_F(Movie, ASucceedingFfmpegPutsItsFileInPlace) {
 }
 
 }  // namespace
-}  // namespace facet::analysis
+}  // namespace facet

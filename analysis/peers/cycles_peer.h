@@ -1,6 +1,7 @@
 // Blender Cycles as a peer of `facet bench`: finding Blender, describing a
-// facet scene in the terms of tools/blender/cycles_scene.py, and running it.
-// Both Cycles sections (cycles.cpp, cycles_paths.cpp) render through this.
+// facet scene in the terms of tools/blender/cycles_scene.py, running it and
+// reading its times. Both Cycles sections (analysis/bench/cycles.cpp,
+// cycles_paths.cpp) render through this.
 #pragma once
 
 #include <filesystem>
@@ -9,13 +10,9 @@
 #include <string>
 #include <vector>
 
-#include <functional>
-
-#include "analysis/report.h"
-#include "engine/renderer.h"
 #include "scenes/scene.h"
 
-namespace facet::analysis::bench {
+namespace facet::peers {
 
 // Cycles' equirectangular map looks down Blender's +x at its centre, which
 // is facet's map turned by 270 degrees about +y.
@@ -26,12 +23,10 @@ constexpr int kCyclesSubdivisionLevels = 7;
 // FACET_BLENDER, else `blender` on PATH; nothing when neither exists.
 std::optional<std::filesystem::path> findBlender();
 
-// Blender and tools/blender/cycles_scene.py under `root`; where either is
-// missing, prints "SECTION: skipped: why", says so in the report and returns nothing.
+// Blender and tools/blender/cycles_scene.py.
 struct CyclesPeer {
   std::filesystem::path blender, script;
 };
-std::optional<CyclesPeer> findCyclesPeer(const std::filesystem::path& root, const std::string& section, Report& report);
 
 // Threads Cycles runs on: as many as lavapipe's (LP_NUM_THREADS), else the machine's.
 unsigned cyclesThreads();
@@ -53,28 +48,7 @@ void renderInCycles(const std::filesystem::path& blender, const std::filesystem:
                     const std::filesystem::path& description, const CyclesRenders& renders,
                     const std::filesystem::path& directory);
 
-// A render's time and error on a curve of increasing samples.
-struct Point {
-  std::string curve;
-  int samples = 0;  // Cycles: samples per pixel; facet: the curve's own count
-  double milliseconds = 0;
-  double relativeRmse = 0;
-};
-
-// The time at which a curve, ordered by N, first reaches `error`:
-// interpolated linearly in log time against log error between its
-// neighbouring points; nothing when it never does.
-std::optional<double> timeToError(const std::vector<Point>& curve, double error);
-
-// One facet point: the median of `repeats` runs of `render`'s tracing
-// stages, its image's error against `reference`; printed as it is measured.
-Point timedPoint(const std::string& curve, int samples, int repeats, const std::function<RenderReport()>& render,
-                 const Image& reference);
-
-// The fastest facet curve's time to `target`'s error (a Cycles point), as a sentence.
-std::string verdict(const std::vector<std::vector<Point>>& curves, const Point& target);
-
 // Per sample count, the median of Cycles' timed render calls (seconds).
 std::map<int, double> readCyclesTimes(const std::filesystem::path& csv);
 
-}  // namespace facet::analysis::bench
+}  // namespace facet::peers

@@ -1,4 +1,4 @@
-#include "engine/ground_plane.h"
+#include "scenes/ground_plane.h"
 
 #include <algorithm>
 #include <limits>
@@ -7,13 +7,13 @@
 
 #include "scenes/scene_file.h"
 
-namespace facet {
+namespace facet::scene {
 namespace {
 
 // A dielectric of index 1 is no interface: F = 0 at every angle, where
 // Schlick's would still rise at grazing; so no specular lobe at all.
 materials::Material lambertian(const char* name, double albedo) {
-  materials::Material m = scene::defaultMaterial();
+  materials::Material m = defaultMaterial();
   m.name = name;
   m.fresnel = rules::f64::F_DIELECTRIC;
   m.eta = glm::dvec3(1.0);
@@ -21,12 +21,12 @@ materials::Material lambertian(const char* name, double albedo) {
   return m;
 }
 
-scene::Object groundSquare(const scene::Aabb& bounds, double height) {
+Object groundSquare(const Aabb& bounds, double height) {
   const double half = kGroundHalfWidth * bounds.diagonal();
   const glm::dvec3 c = bounds.centre();
-  scene::Object ground;
+  Object ground;
   ground.name = "ground";
-  ground.subdivision = scene::Subdivision::None;
+  ground.subdivision = Subdivision::None;
   ground.cage.source = "the preview's ground";
   // Counter-clockwise seen from above: the normal is +y.
   ground.cage.positions = {{c.x - half, height, c.z - half},
@@ -40,32 +40,32 @@ scene::Object groundSquare(const scene::Aabb& bounds, double height) {
 
 }  // namespace
 
-double lowestPoint(const scene::SceneGeometry& geometry) {
+double lowestPoint(const SceneGeometry& geometry) {
   constexpr int kGrid = 8;  // intervals per side of each patch
   double lowest = std::numeric_limits<double>::infinity();
-  for (const scene::ObjectGeometry& object : geometry.objects)
+  for (const ObjectGeometry& object : geometry.objects)
     for (int p = 0; p < object.surface.patchCount(); ++p)
       for (int j = 0; j <= kGrid; ++j)
         for (int i = 0; i <= kGrid; ++i) {
-          const scene::BezierSample s =
-              scene::evaluateBezierPatch(object.surface.bezierPatch(p), double(i) / kGrid, double(j) / kGrid);
+          const BezierSample s =
+              evaluateBezierPatch(object.surface.bezierPatch(p), double(i) / kGrid, double(j) / kGrid);
           lowest = std::min(lowest, s.position.y);
         }
   return lowest;
 }
 
-GroundScenes groundScenes(const scene::Scene& model) {
+GroundScenes groundScenes(const Scene& model) {
   if (!model.environment) throw std::invalid_argument("the ground needs an environment to light it");
   if (model.objects.empty()) throw std::invalid_argument("the ground needs a model to stand under");
-  const scene::SceneGeometry geometry = scene::buildGeometry(model);
-  const scene::Object ground = groundSquare(geometry.bounds, lowestPoint(geometry));
+  const SceneGeometry geometry = buildGeometry(model);
+  const Object ground = groundSquare(geometry.bounds, lowestPoint(geometry));
 
-  scene::Scene lit = model;
+  Scene lit = model;
   lit.objects.clear();
   lit.materials.clear();
   lit.lights.clear();
   lit.render.bounces = 0;
-  if (lit.environment->method == scene::IblMethod::Prefiltered) lit.environment->method = scene::IblMethod::Filtered;
+  if (lit.environment->method == IblMethod::Prefiltered) lit.environment->method = IblMethod::Filtered;
   lit.environment->occlusion = true;
   lit.environment->samples = std::min(lit.environment->samples, 4);
 
@@ -80,7 +80,7 @@ GroundScenes groundScenes(const scene::Scene& model) {
   // The holdout reflects nothing: the ground's share of its pixels is all
   // the holdout's radiance.
   scenes.holdout.materials = {lambertian("holdout", 0.0), lambertian("ground", 1.0)};
-  for (scene::Object object : model.objects) {
+  for (Object object : model.objects) {
     object.material = 0;
     scenes.holdout.objects.push_back(std::move(object));
   }
@@ -89,4 +89,4 @@ GroundScenes groundScenes(const scene::Scene& model) {
   return scenes;
 }
 
-}  // namespace facet
+}  // namespace facet::scene

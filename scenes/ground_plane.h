@@ -7,15 +7,15 @@
 #include "scenes/scene.h"
 #include "scenes/scene_geometry.h"
 
-namespace facet {
+namespace facet::scene {
 
 // The ground's half-width, in diagonals of the model's bounding box: wide
 // enough for the shadow of light a few degrees above the horizon.
 inline constexpr double kGroundHalfWidth = 10.0;
 
 struct GroundScenes {
-  scene::Scene holdout;  // the model, black, standing on the ground
-  scene::Scene ground;   // the ground alone
+  Scene holdout;  // the model, black, standing on the ground
+  Scene ground;   // the ground alone
 };
 
 // Both lit by the model's environment with shadow rays: its own method
@@ -24,10 +24,10 @@ struct GroundScenes {
 // environment's frame (+y up), under the middle of the model's bounding box
 // and touching its lowest point. Camera and render settings are the model's.
 // Throws std::invalid_argument for a scene without an environment or objects.
-GroundScenes groundScenes(const scene::Scene& model);
+GroundScenes groundScenes(const Scene& model);
 
 // The lowest height (y) of the limit surface, each patch evaluated on a
 // 9 x 9 grid of its (u, v).
-double lowestPoint(const scene::SceneGeometry& geometry);
+double lowestPoint(const SceneGeometry& geometry);
 
-}  // namespace facet
+}  // namespace facet::scene

@@ -1,4 +1,4 @@
-// What `facet bench` hands Blender (analysis/bench/cycles_peer.h): each
+// What `facet bench` hands Blender (analysis/peers/cycles_peer.h): each
 // material as the Cycles BSDF that is the same function, or an error where
 // there is none; the absorption coefficients; the bounce limits; the cages.
 #include <gtest/gtest.h>
@@ -9,11 +9,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/bench/cycles_peer.h"
+#include "analysis/peers/cycles_peer.h"
 #include "rules/rules.h"
 #include "tests/support/temp_dir.h"
 
-namespace facet::analysis::bench {
+namespace facet::peers {
 namespace {
 
 namespace fs = std::filesystem;
@@ -147,4 +147,4 @@ TEST_F(CyclesPeer, RefusesWhatCyclesWouldRenderDifferently) {
 }
 
 }  // namespace
-}  // namespace facet::analysis::bench
+}  // namespace facet::peers
