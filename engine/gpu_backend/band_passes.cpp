@@ -34,7 +34,7 @@ bool transmits(const scene::Scene& scene) {
 
 // Whether some object culls its back faces, has a cutout: only then do the
 // tracing kernels take CULLING = 1, CUTOUTS = 1, so that other scenes run
-// exactly the kernels they did (compute/raycast/traversal/hit_filter.glsl).
+// exactly the kernels they did (compute/raycast/common/hit_filter.glsl).
 bool culls(const scene::Scene& scene) {
   for (const scene::Object& object : scene.objects)
     if (scene::cullsBackFaces(object, scene.materials[std::size_t(object.material)])) return true;

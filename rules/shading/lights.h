@@ -1,7 +1,7 @@
 // What a punctual light delivers at a surface point and the shadow ray that
 // decides whether it arrives (docs/rendering.md, "Shading"). Each backend fills
 // PunctualLight from its own light record. Needs the BRDF's rules and
-// INFINITE_DISTANCE, a real +infinity (compute/raycast/traversal/ray.glsl;
+// INFINITE_DISTANCE, a real +infinity (compute/raycast/common/ray.glsl;
 // rules/language.h in C++).
 
 // A punctual light: directional (along `direction`), else at `position`,

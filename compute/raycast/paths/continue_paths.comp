@@ -22,7 +22,7 @@
 
 #include "compute/layout/raycast_layout.h"
 #include "compute/raycast/common/workgroup.glsl"
-#include "compute/raycast/traversal/ray.glsl"
+#include "compute/raycast/common/ray.glsl"
 #include "rules/language.glsl"
 #include "rules/math.h"
 #include "rules/shading/domain.h"
@@ -52,7 +52,7 @@ layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord
 layout(set = 0, binding = 32, std430) buffer PathStates { PathState pathStates[]; };
 layout(set = 0, binding = 33, std430) writeonly buffer PathRays { PathRayRecord pathRays[]; };
 
-#include "compute/raycast/paths/path_state.glsl"
+#include "compute/raycast/common/path_state.glsl"
 
 void main() {
   uint path = invocation_index();

@@ -47,7 +47,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "compute/raycast/common/scene_bindings.glsl"
-#include "compute/raycast/traversal/ray.glsl"
+#include "compute/raycast/common/ray.glsl"
 #include "rules/language.glsl"
 #include "rules/math.h"
 #include "rules/shading/domain.h"
@@ -109,13 +109,13 @@ layout(set = 0, binding = 33, std430) readonly buffer PathRays { PathRayRecord p
 
 #include "compute/raycast/common/patch_eval.glsl"
 #include "compute/raycast/shading/limit_normal.glsl"
-#include "compute/raycast/shading/texcoord.glsl"
+#include "compute/raycast/common/texcoord.glsl"
 #include "compute/raycast/shading/environment.glsl"
 #include "compute/raycast/common/camera_rays.glsl"
 #include "rules/surface/authored_normal.h"
-#include "compute/raycast/shading/textures.glsl"
+#include "compute/raycast/common/textures.glsl"
 #include "compute/raycast/shading/energy_compensation.glsl"
-#include "compute/raycast/paths/path_state.glsl"
+#include "compute/raycast/common/path_state.glsl"
 
 // The shading normal: a mesh's authored normals interpolated where it has
 // them (turned to the side of the surface's normal `limit`), else `limit`

@@ -18,8 +18,8 @@
 #include "rules/surface/back_face.h"
 #include "rules/surface/cutout.h"
 #include "compute/raycast/common/patch_eval.glsl"
-#include "compute/raycast/shading/texcoord.glsl"
-#include "compute/raycast/shading/textures.glsl"
+#include "compute/raycast/common/texcoord.glsl"
+#include "compute/raycast/common/textures.glsl"
 
 layout(constant_id = 2) const int CULLING = 0;
 layout(constant_id = 3) const int CUTOUTS = 0;
