@@ -2,6 +2,16 @@
 // docs/rendering.md, "Prefiltered: the split sum"). Needs the rules of
 // rules/shading/.
 
+#ifndef FACET_RULE_ENVIRONMENT_SPLIT_SUM
+#define FACET_RULE_ENVIRONMENT_SPLIT_SUM
+
+#include "rules/math.h"
+#include "rules/shading/brdf.h"
+#include "rules/shading/clearcoat.h"
+#include "rules/shading/domain.h"
+#include "rules/shading/fresnel.h"
+#include "rules/shading/sheen.h"
+
 // Levels are spaced evenly in perceptual roughness sqrt(alpha): level i of
 // `levels` has alpha = (i / (levels - 1))^2, level 0 is the map itself.
 FACET_FN real prefiltered_level(real alpha, int levels) {
@@ -64,3 +74,5 @@ FACET_FN vec3 coated_split_sum(BrdfParams p, real nv, vec3 prefiltered, vec2 dfg
       nv_coat <= COS_EPSILON ? vec3(real(0)) : prefiltered_coat * (p.clearcoat * (COAT_F0 * dfg_coat.x + dfg_coat.y));
   return (specular * out_coat + diffuse * in_diffuse) * out_coat + coat;
 }
+
+#endif
