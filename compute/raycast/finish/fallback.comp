@@ -31,10 +31,6 @@ layout(set = 0, binding = 33, std430) readonly buffer PathRays { PathRayRecord p
 #include "compute/raycast/finish/subdivide_cell.glsl"
 #include "compute/raycast/common/micro_grid.glsl"
 #include "compute/raycast/common/cell_reference.glsl"
-#include "rules/language.glsl"
-#include "rules/sampling/random.h"
-#include "rules/sampling/low_discrepancy.h"
-#include "rules/sampling/scrambled_net.h"
 #include "compute/raycast/common/camera_rays.glsl"
 
 const uint HIT_WORDS = 8u;  // sizeof(HitRecord) / 4

@@ -24,10 +24,6 @@ void defer_cell(uint reference) {
 }
 
 #include "compute/raycast/traversal/trace.glsl"
-#include "rules/language.glsl"
-#include "rules/sampling/random.h"
-#include "rules/sampling/low_discrepancy.h"
-#include "rules/sampling/scrambled_net.h"
 #include "compute/raycast/common/camera_rays.glsl"
 
 void main() {
