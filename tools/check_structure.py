@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Checks the tree's structure: includes point down the layers and, inside
-compute/raycast/, down its role rooms; no source file outside tests/ is
-longer than MAX_LINES.
+compute/raycast/, down its role rooms; every rule has its include guard and
+its two lines in rules/instance.h; no source file outside tests/ is longer
+than MAX_LINES.
 
     python3 tools/check_structure.py [repo root]
 
@@ -60,6 +61,13 @@ ROOMS = [
     ("film", 1),
     ("traversal", 2),  # calls the finishes at each candidate cell
 ]
+
+# A rule (rules/language.h states the convention) is guarded by
+# FACET_RULE_<its path below rules/>, which rules/instance.h undefines after
+# each real type: a rule whose #undef is missing would be left out of the
+# next type without a word.
+RULE_INSTANCE = "rules/instance.h"
+NOT_RULES = ("rules/language.h", "rules/rules.h", RULE_INSTANCE)
 
 MAX_LINES = 450
 INCLUDING_SUFFIXES = (".h", ".cpp", ".glsl", ".comp")
@@ -149,6 +157,32 @@ def resolve_include(root, including_path, name):
     return name, None
 
 
+def rule_guard(path):
+    return "FACET_RULE_" + re.sub(r"\W", "_", path[len("rules/") : -len(".h")]).upper()
+
+
+def rule_violations(root, paths):
+    rules = [p for p in paths if p.startswith("rules/") and p.endswith(".h") and p not in NOT_RULES]
+    if not rules:
+        return []
+    instance = read_text(root, RULE_INSTANCE) if RULE_INSTANCE in paths else ""
+    violations = []
+    for path in rules:
+        guard = rule_guard(path)
+        text = read_text(root, path)
+        opening = rf"(?:[ \t]*(?://[^\n]*)?\n)*#ifndef {guard}\n#define {guard}\n"  # after comments only
+        if not re.match(opening, text) or not text.rstrip().endswith("#endif"):
+            violations.append(f"{path}: not inside its guard #ifndef {guard} / #define {guard} / ... / #endif")
+        if f'#include "{path}"' not in instance or not re.search(rf"^#undef {guard}$", instance, re.M):
+            violations.append(f'{RULE_INSTANCE}: lacks #include "{path}" or, at its end, #undef {guard}')
+    return violations
+
+
+def read_text(root, path):
+    with open(os.path.join(root, path), "rb") as source:
+        return source.read().decode("utf-8", "replace")
+
+
 def count_lines(data):
     return data.count(b"\n") + (1 if data and not data.endswith(b"\n") else 0)
 
@@ -161,7 +195,9 @@ def check(root, layers=LAYERS, max_lines=MAX_LINES, rooms=ROOMS):
     edges = defaultdict(dict)  # layer -> {included layer: an example "path:line"}
     room_edges = defaultdict(dict)  # the same between the rooms of RAYCAST
     files = includes = 0
-    for path in source_files(root):
+    paths = source_files(root)
+    violations += rule_violations(root, paths)
+    for path in paths:
         if not path.endswith(COUNTED_SUFFIXES):
             continue
         files += 1

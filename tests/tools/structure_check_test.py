@@ -133,6 +133,23 @@ class StructureCheckTest(unittest.TestCase):
         self.assertIn("compute/raycast/lighting/light.glsl: in no room of compute/raycast", violations[0])
         self.assertIn("compute/raycast/loose.glsl: in no room of compute/raycast", violations[1])
 
+    def test_rejects_a_rule_without_its_guard_or_its_lines_in_the_instance(self):
+        def rule(guard, body=""):
+            return f"// A rule.\n\n#ifndef {guard}\n#define {guard}\n{body}\n#endif\n"
+        violations, _, status, _ = self.check({
+            "rules/math.h": rule("FACET_RULE_MATH"),
+            "rules/shading/brdf.h": rule("FACET_RULE_SHADING_BRDF", includes("rules/math.h")),
+            "rules/shading/sheen.h": rule("FACET_RULE_BRDF"),
+            "rules/instance.h": includes("rules/math.h", "rules/shading/brdf.h", "rules/shading/sheen.h")
+                                + "#undef FACET_RULE_MATH\n#undef FACET_RULE_SHADING_SHEEN\n",
+        })
+        self.assertEqual(status, 1)
+        self.assertEqual(violations, [
+            'rules/instance.h: lacks #include "rules/shading/brdf.h" or, at its end, #undef FACET_RULE_SHADING_BRDF',
+            "rules/shading/sheen.h: not inside its guard #ifndef FACET_RULE_SHADING_SHEEN / "
+            "#define FACET_RULE_SHADING_SHEEN / ... / #endif",
+        ])
+
     def test_rejects_a_folder_in_no_layer(self):
         violations, _, status, _ = self.check({
             "widgets/widget.h": "",
