@@ -1,11 +1,12 @@
 // The GLSL side of the language the rules are written in (rules/language.h
-// states the subset and is the C++ side). A kernel includes this file before
-// any rule:
+// states the subset and is the C++ side). A kernel includes this file and
+// then the rules it calls itself, in any order, since each rule includes the
+// rules it uses:
 //   #extension GL_GOOGLE_include_directive : require
 //   #include "rules/language.glsl"
-//   #include "rules/math.h"
+//   #include "rules/shading/brdf.h"
 //   ...
-// (glslang -I<repo root>); rules/instance.h lists the order rules depend on.
+// (glslang -I<repo root>).
 #ifndef FACET_RULES_LANGUAGE_GLSL
 #define FACET_RULES_LANGUAGE_GLSL
 

@@ -8,8 +8,15 @@
 //     `FACET_OUT(type) name` (a reference in C++, `out` in GLSL), the way
 //     OpenSubdiv's osd/patchBasisCommon*.h spell one source for every language;
 //   - no other references, no constructors of structs, no C++-only syntax;
-//   - no include guard in a rule: rules/rules.h includes each rule once per
-//     real type, each time in its own namespace.
+//   - a rule includes the rules it uses, and nothing else, inside the guard
+//       #ifndef FACET_RULE_<PATH>
+//       #define FACET_RULE_<PATH>
+//       ...
+//       #endif
+//     <PATH> being its path below rules/ without `.h`, in capitals with `_`
+//     for `/`: rules/shading/brdf.h is FACET_RULE_SHADING_BRDF. A kernel has
+//     one instantiation; C++ has one per real type, each in its own namespace,
+//     so rules/instance.h undefines every guard after each.
 // This file is that per-type part: it is included inside the namespace, with
 // FACET_REAL naming the scalar type, and maps GLSL's types and built-ins onto
 // GLM and the C++ library.

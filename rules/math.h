@@ -1,6 +1,8 @@
 // The constants and small identities every rule builds on. Written in the
-// common subset of GLSL and C++ (rules/language.h says what that is); no
-// include guard, since C++ instantiates each rule once per real type.
+// common subset of GLSL and C++ (rules/language.h says what that is).
+
+#ifndef FACET_RULE_MATH
+#define FACET_RULE_MATH
 
 const real PI = real(3.14159265358979323846);
 const real INV_PI = real(0.31830988618379067154);
@@ -14,3 +16,5 @@ FACET_FN real sin2_between(vec3 a, vec3 b) {
   vec3 c = cross(a, b);
   return dot(c, c);
 }
+
+#endif

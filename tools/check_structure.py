@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
-"""Checks the tree's structure: includes point down the layers, no source
-file outside tests/ is longer than MAX_LINES, and no test's result hangs on
-the wall clock (wall_clock_violations).
+"""Checks the tree's structure: includes point down the layers and, inside
+compute/raycast/, down its role rooms; every rule has its include guard and
+its two lines in rules/instance.h; no source file outside tests/ is longer
+than MAX_LINES; and no test's result hangs on the wall clock
+(wall_clock_violations).
 
     python3 tools/check_structure.py [repo root]
 
@@ -45,6 +47,28 @@ LAYERS = [
     ("python", 9),
     ("tools", 9),
 ]
+
+# The role rooms of the ray caster, (room, rank), ranked like LAYERS inside
+# the compute layer: a file of a room may include files of its own room or
+# of a room of strictly lower rank, so a piece a second room needs lives in
+# common/. A new room must be named here.
+RAYCAST = "compute/raycast"
+ROOMS = [
+    ("common", 0),  # what more than one room uses
+    ("dicing", 1),
+    ("finish", 1),
+    ("shading", 1),
+    ("paths", 1),
+    ("film", 1),
+    ("traversal", 2),  # calls the finishes at each candidate cell
+]
+
+# A rule (rules/language.h states the convention) is guarded by
+# FACET_RULE_<its path below rules/>, which rules/instance.h undefines after
+# each real type: a rule whose #undef is missing would be left out of the
+# next type without a word.
+RULE_INSTANCE = "rules/instance.h"
+NOT_RULES = ("rules/language.h", "rules/rules.h", RULE_INSTANCE)
 
 MAX_LINES = 450
 INCLUDING_SUFFIXES = (".h", ".cpp", ".glsl", ".comp")
@@ -105,6 +129,16 @@ def layer_of(path, layers=LAYERS):
     return None
 
 
+def room_of(path, rooms=ROOMS):
+    """(room, rank) of a file inside RAYCAST, rank None for one in no room;
+    None for a file outside RAYCAST."""
+    if not path.startswith(RAYCAST + "/"):
+        return None
+    rest = path[len(RAYCAST) + 1 :]
+    room = f"{RAYCAST}/{rest.split('/')[0]}" if "/" in rest else RAYCAST
+    return room, {f"{RAYCAST}/{name}": rank for name, rank in rooms}.get(room)
+
+
 def resolve_include(root, including_path, name):
     """The repository path (or, for a generated header, the layer) a quoted
     include names, the way the build's include paths find it."""
@@ -124,18 +158,47 @@ def resolve_include(root, including_path, name):
     return name, None
 
 
+def rule_guard(path):
+    return "FACET_RULE_" + re.sub(r"\W", "_", path[len("rules/") : -len(".h")]).upper()
+
+
+def rule_violations(root, paths):
+    rules = [p for p in paths if p.startswith("rules/") and p.endswith(".h") and p not in NOT_RULES]
+    if not rules:
+        return []
+    instance = read_text(root, RULE_INSTANCE) if RULE_INSTANCE in paths else ""
+    violations = []
+    for path in rules:
+        guard = rule_guard(path)
+        text = read_text(root, path)
+        opening = rf"(?:[ \t]*(?://[^\n]*)?\n)*#ifndef {guard}\n#define {guard}\n"  # after comments only
+        if not re.match(opening, text) or not text.rstrip().endswith("#endif"):
+            violations.append(f"{path}: not inside its guard #ifndef {guard} / #define {guard} / ... / #endif")
+        if f'#include "{path}"' not in instance or not re.search(rf"^#undef {guard}$", instance, re.M):
+            violations.append(f'{RULE_INSTANCE}: lacks #include "{path}" or, at its end, #undef {guard}')
+    return violations
+
+
+def read_text(root, path):
+    with open(os.path.join(root, path), "rb") as source:
+        return source.read().decode("utf-8", "replace")
+
+
 def count_lines(data):
     return data.count(b"\n") + (1 if data and not data.endswith(b"\n") else 0)
 
 
-def check(root, layers=LAYERS, max_lines=MAX_LINES):
+def check(root, layers=LAYERS, max_lines=MAX_LINES, rooms=ROOMS):
     """Returns (violations, cycles, stats): violations are printable lines,
-    cycles come from layer_cycles."""
+    cycles come from layer_cycles, the layers' first, then the rooms'."""
     ranks = dict(layers)
     violations = []
     edges = defaultdict(dict)  # layer -> {included layer: an example "path:line"}
+    room_edges = defaultdict(dict)  # the same between the rooms of RAYCAST
     files = includes = 0
-    for path in source_files(root):
+    paths = source_files(root)
+    violations += rule_violations(root, paths)
+    for path in paths:
         if not path.endswith(COUNTED_SUFFIXES):
             continue
         files += 1
@@ -146,6 +209,9 @@ def check(root, layers=LAYERS, max_lines=MAX_LINES):
             violations.append(f"{path}: {lines} lines > {max_lines}")
         if not path.endswith(INCLUDING_SUFFIXES):
             continue
+        own_room = room_of(path, rooms)
+        if own_room is not None and own_room[1] is None:
+            violations.append(f"{path}: in no room of {RAYCAST}: add its folder to ROOMS in tools/check_structure.py")
         own = layer_of(path, layers)
         if own is None:
             violations.append(f"{path}: in no layer: add its folder to LAYERS in tools/check_structure.py")
@@ -161,6 +227,12 @@ def check(root, layers=LAYERS, max_lines=MAX_LINES):
             else:
                 other = layer_of(target, layers)
             where = f"{path}:{line}"
+            other_room = room_of(target, rooms) if generated_layer is None else None
+            if own_room and other_room and own_room[0] != other_room[0] and None not in (own_room[1], other_room[1]):
+                room_edges[own_room[0]].setdefault(other_room[0], where)
+                if other_room[1] >= own_room[1]:
+                    violations.append(f'{where}: includes "{name}" (room {own_room[0]}, rank {own_room[1]}) -> '
+                                      f"room {other_room[0]} (rank {other_room[1]}): includes must point down")
             if other is None or other[1] is None:
                 violations.append(f'{where}: includes "{name}" (layer {own[0]}, rank {own[1]}) -> {target}, '
                                   "in no layer: add its folder to LAYERS in tools/check_structure.py")
@@ -171,8 +243,8 @@ def check(root, layers=LAYERS, max_lines=MAX_LINES):
             if other[1] >= own[1]:
                 violations.append(f'{where}: includes "{name}" (layer {own[0]}, rank {own[1]}) -> '
                                   f"layer {other[0]} (rank {other[1]}): includes must point down")
-    stats = {"files": files, "includes": includes, "layers": len(layers)}
-    return violations, layer_cycles(edges), stats
+    stats = {"files": files, "includes": includes, "layers": len(layers), "rooms": len(rooms)}
+    return violations, layer_cycles(edges) + layer_cycles(room_edges), stats
 
 
 def layer_cycles(edges):
@@ -323,15 +395,16 @@ def main(argv=None):
     root = parser.parse_args(argv).root
     violations, cycles, stats = check(root)
     violations += wall_clock_violations(root)
-    counts = f"{stats['files']} files, {stats['includes']} includes, {stats['layers']} layers"
+    counts = f"{stats['files']} files, {stats['includes']} includes, {stats['layers']} layers, {stats['rooms']} rooms"
     for violation in violations:
         print(violation)
     for cycle in cycles:
-        print("layer cycle: " + " -> ".join([layer for layer, _, _ in cycle] + [cycle[0][0]]))
+        kind = "room" if cycle[0][0].startswith(RAYCAST + "/") else "layer"
+        print(f"{kind} cycle: " + " -> ".join([layer for layer, _, _ in cycle] + [cycle[0][0]]))
         for layer, included, where in cycle:
             print(f"    {layer} -> {included}: {where}")
     if violations or cycles:
-        print(f"check_structure: {len(violations)} violations, {len(cycles)} layer cycles ({counts})")
+        print(f"check_structure: {len(violations)} violations, {len(cycles)} cycles ({counts})")
         return 1
     print(f"check_structure: {counts}: includes point down, no file over {MAX_LINES} lines, no test on the wall clock")
     return 0

@@ -16,7 +16,7 @@
 
 #include "compute/layout/raycast_layout.h"
 #include "compute/layout/wide_bvh.h"
-#include "compute/raycast/traversal/ray.glsl"
+#include "compute/raycast/common/ray.glsl"
 
 layout(local_size_x = 64) in;
 

@@ -11,7 +11,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "compute/raycast/common/scene_bindings.glsl"
-#include "compute/raycast/traversal/trace_bindings.glsl"
+#include "compute/raycast/common/trace_bindings.glsl"
 
 layout(constant_id = 0) const int METHOD = 1;
 
@@ -20,7 +20,7 @@ layout(set = 0, binding = 33, std430) readonly buffer PathRays { PathRayRecord p
 
 void defer_cell(uint reference) {}  // the exact method's fallbacks: not counted here
 
-#include "compute/raycast/traversal/ray.glsl"
+#include "compute/raycast/common/ray.glsl"
 #include "compute/raycast/traversal/wide_bvh_node.glsl"
 
 void finish_cell(Ray ray, uint reference, inout Hit best);

@@ -5,17 +5,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "rules/language.glsl"
-#include "rules/math.h"
-#include "rules/shading/domain.h"
-#include "rules/shading/microfacet.h"
-#include "rules/shading/fresnel.h"
-#include "rules/shading/brdf.h"
-#include "rules/shading/sheen.h"
-#include "rules/shading/clearcoat.h"
-#include "rules/shading/brdf_sampling.h"
 #include "rules/grid/config.h"
-#include "rules/shading/lobe_sampling.h"
-#include "rules/sampling/low_discrepancy.h"
 #include "rules/shading/dfg.h"
 
 layout(local_size_x = FACET_IBL_TILE_SIZE, local_size_y = FACET_IBL_TILE_SIZE) in;

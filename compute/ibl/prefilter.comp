@@ -6,17 +6,10 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "rules/language.glsl"
-#include "rules/math.h"
-#include "rules/shading/domain.h"
-#include "rules/shading/microfacet.h"
-#include "rules/shading/fresnel.h"
-#include "rules/shading/brdf.h"
-#include "rules/shading/sheen.h"
-#include "rules/shading/brdf_sampling.h"
-#include "rules/grid/config.h"
 #include "rules/environment/environment_mapping.h"
-#include "rules/sampling/low_discrepancy.h"
 #include "rules/environment/prefilter.h"
+#include "rules/grid/config.h"
+#include "rules/shading/microfacet.h"
 
 layout(local_size_x = FACET_IBL_TILE_SIZE, local_size_y = FACET_IBL_TILE_SIZE) in;
 

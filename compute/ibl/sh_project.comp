@@ -6,15 +6,8 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "rules/language.glsl"
-#include "rules/math.h"
-#include "rules/shading/domain.h"
-#include "rules/shading/microfacet.h"
-#include "rules/shading/fresnel.h"
-#include "rules/shading/brdf.h"
-#include "rules/shading/sheen.h"
-#include "rules/shading/brdf_sampling.h"
-#include "rules/grid/config.h"
 #include "rules/environment/spherical_harmonics.h"
+#include "rules/grid/config.h"
 
 layout(local_size_x = FACET_WORKGROUP_SIZE) in;
 

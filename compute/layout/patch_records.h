@@ -42,7 +42,7 @@ const uint FACET_NO_NORMALS = 0xFFFFFFFFu;
 // firstTexcoord in the texcoord texel buffer. Each is 20 points: the 16
 // Bézier points in patchPoints' order, then the alternates of slots 5, 6, 10,
 // 9, which repeat those slots on a polynomial patch, so that every channel
-// evaluates as a Gregory patch (compute/raycast/shading/texcoord.glsl). A set
+// evaluates as a Gregory patch (compute/raycast/common/texcoord.glsl). A set
 // of texture coordinates is FACET_TEXCOORD_TEXELS texels, two (u, v) points
 // per texel; the vertex colours, last, FACET_COLOR_TEXELS texels, one RGB
 // point per texel.

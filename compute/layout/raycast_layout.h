@@ -238,7 +238,7 @@ struct LightRecord {
 };
 
 // A texture a material reads (an index into the texture table of
-// compute/raycast/shading/textures.glsl, FACET_NO_TEXTURE for none) and its
+// compute/raycast/common/textures.glsl, FACET_NO_TEXTURE for none) and its
 // KHR_texture_transform.
 const uint FACET_NO_TEXTURE = 0xFFFFFFFFu;
 

@@ -15,13 +15,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "rules/language.glsl"
-#include "rules/math.h"
-#include "rules/shading/domain.h"
-#include "rules/shading/microfacet.h"
-#include "rules/shading/fresnel.h"
 #include "rules/shading/brdf.h"
-#include "rules/shading/sheen.h"
-#include "rules/shading/clearcoat.h"
 #include "rules/shading/brdf_sampling.h"
 
 layout(local_size_x = 64) in;

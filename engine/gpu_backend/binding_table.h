@@ -1,6 +1,6 @@
 // Every buffer of a render by its binding number. A number names one buffer
 // in every kernel (compute/raycast/common/scene_bindings.glsl,
-// compute/raycast/traversal/trace_bindings.glsl and the kernels' own), so
+// compute/raycast/common/trace_bindings.glsl and the kernels' own), so
 // each kernel's bind group follows from its layout.
 #pragma once
 

@@ -1,4 +1,4 @@
-// A scene's textures as compute/raycast/shading/textures.glsl reads them: every
+// A scene's textures as compute/raycast/common/textures.glsl reads them: every
 // level of every texture in one texel buffer, the levels' extents and each
 // texture's sampler in two small tables.
 #pragma once

@@ -2,6 +2,9 @@
 // (i, j) is sampled at (i + sx, j + sy) with (sx, sy) = (0.5, 0.5) at its
 // centre; row 0 is the top of the image.
 
+#ifndef FACET_RULE_CAMERA_CAMERA
+#define FACET_RULE_CAMERA_CAMERA
+
 // The camera as both sides see it: an orthonormal frame and the image plane
 // at distance 1 along `forward`, scaled by tan(fov / 2).
 struct CameraFrame {
@@ -19,3 +22,5 @@ FACET_FN vec3 camera_ray_direction(CameraFrame c, real x, real y, real width, re
   real sy = (real(1) - real(2) * y / height) * c.tanHalfFovY;
   return normalize(c.forward + sx * c.right + sy * c.up);
 }
+
+#endif

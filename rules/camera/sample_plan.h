@@ -7,6 +7,9 @@
 // they are shaded. The beauty is the mean of the shaded samples (misses
 // count as black); alpha is the fraction of them that hit.
 
+#ifndef FACET_RULE_CAMERA_SAMPLE_PLAN
+#define FACET_RULE_CAMERA_SAMPLE_PLAN
+
 FACET_FN uint sample_strata(uint samples_per_pixel) {
   return uint(floor(sqrt(real(samples_per_pixel)) + real(0.5)));
 }
@@ -18,3 +21,5 @@ FACET_FN uint first_shaded_sample(uint strata) { return strata == 1u ? 0u : 1u; 
 FACET_FN bool is_shaded_sample(uint sample_index, uint strata) { return sample_index >= first_shaded_sample(strata); }
 
 FACET_FN uint shaded_sample_count(uint strata) { return strata * strata; }
+
+#endif

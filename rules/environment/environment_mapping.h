@@ -1,8 +1,12 @@
 // The equirectangular map's geometry, its directions, texel solid angles and
-// bilinear taps (docs/rendering.md, "Image-based lighting"). Needs
-// rules/math.h.
+// bilinear taps (docs/rendering.md, "Image-based lighting").
 //   u = 1/2 + atan2(d.x, -d.z) / (2 pi)   (u = 1/2 looks down -z)
 //   v = acos(d.y) / pi                      (v = 0 is +y, row 0 of the map)
+
+#ifndef FACET_RULE_ENVIRONMENT_ENVIRONMENT_MAPPING
+#define FACET_RULE_ENVIRONMENT_ENVIRONMENT_MAPPING
+
+#include "rules/math.h"
 
 // World direction -> map frame: the map is turned by `rotation` (given as
 // its cosine and sine) about +y, so the world sees R d_map; undo it.
@@ -72,3 +76,5 @@ FACET_FN BilinearTaps environment_bilinear(vec2 uv, int width, int height) {
   b.y1 = min(b.y0 + 1, height - 1);
   return b;
 }
+
+#endif

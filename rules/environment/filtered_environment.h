@@ -9,7 +9,12 @@
 // the environment's density filtered like its radiance (the density's own mip
 // chain at the same level): against the point density, the sun's filtered halo
 // around the sun, which no environment sample covers, would count in full.
-// Needs sampled_environment.h and prefilter.h.
+
+#ifndef FACET_RULE_ENVIRONMENT_FILTERED_ENVIRONMENT
+#define FACET_RULE_ENVIRONMENT_FILTERED_ENVIRONMENT
+
+#include "rules/environment/prefilter.h"
+#include "rules/environment/sampled_environment.h"
 
 // A map whose brightest texel stands this far above its mean radiance
 // (luminance, solid-angle weighted) has a source that filtered BRDF samples
@@ -31,3 +36,5 @@ const real FILTERED_LOD_OFFSET = real(-0.5);
 FACET_FN real filtered_sample_lod(MisSample s, uint pairs, int width, int height, int chain_levels) {
   return mip_level_for_density(s.pdf, int(pairs), width, height, chain_levels, FILTERED_LOD_OFFSET);
 }
+
+#endif

@@ -1,7 +1,11 @@
 // The split sum's cosine-convolved irradiance map, what the SH irradiance gives
 // way to where a bright source makes bands 0-2 ring (docs/rendering.md,
-// "Prefiltered: the split sum"). Needs rules/math.h and
-// rules/environment/environment_mapping.h.
+// "Prefiltered: the split sum").
+
+#ifndef FACET_RULE_ENVIRONMENT_IRRADIANCE_MAP
+#define FACET_RULE_ENVIRONMENT_IRRADIANCE_MAP
+
+#include "rules/environment/environment_mapping.h"
 
 // The irradiance table, at FrameParams::shOffset of the environment tables:
 // texel 0 holds (source, width, height) of the map, texels 1-9 the SH
@@ -71,3 +75,5 @@ FACET_FN int irradiance_source_level(int width, int levels) {
   }
   return level;
 }
+
+#endif

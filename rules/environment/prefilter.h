@@ -1,7 +1,16 @@
 // The prefiltered levels by filtered importance sampling (Krivanek & Colbert
 // 2008) with n = v = r, read from a solid-angle-weighted mip chain of the map
-// (docs/rendering.md, "Prefiltered: the split sum"). Needs the rules of
-// rules/shading/, environment_mapping.h and low_discrepancy.h.
+// (docs/rendering.md, "Prefiltered: the split sum").
+
+#ifndef FACET_RULE_ENVIRONMENT_PREFILTER
+#define FACET_RULE_ENVIRONMENT_PREFILTER
+
+#include "rules/environment/environment_mapping.h"
+#include "rules/math.h"
+#include "rules/sampling/low_discrepancy.h"
+#include "rules/shading/brdf_sampling.h"
+#include "rules/shading/domain.h"
+#include "rules/shading/microfacet.h"
 
 // A coarser texel of the mip chain averages the 2 x 2 finer texels it covers
 // weighted by solid angle, so that the chain keeps the map's integral over
@@ -50,3 +59,5 @@ FACET_FN real prefilter_source_lod(real alpha, vec3 m, int samples, int width, i
   real pdf = real(0.25) * microfacet_D(D_GGX, effective_alpha(alpha), m.z, m.x * m.x + m.y * m.y);
   return mip_level_for_density(pdf, samples, width, height, chain_levels, real(1));
 }
+
+#endif

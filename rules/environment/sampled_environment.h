@@ -2,9 +2,18 @@
 // sample, N pairs of one environment sample and one BRDF sample, each weighted
 // by the power heuristic against the other technique's density. Drawing from
 // the environment's distribution, and its density, are each backend's own (an
-// alias table in texel buffers, or in vectors); the rest is here. Needs the
-// rules of rules/shading/, random.h, low_discrepancy.h, scrambled_net.h, mis.h,
-// lobe_sampling.h and rules/shading/lights.h.
+// alias table in texel buffers, or in vectors); the rest is here.
+
+#ifndef FACET_RULE_ENVIRONMENT_SAMPLED_ENVIRONMENT
+#define FACET_RULE_ENVIRONMENT_SAMPLED_ENVIRONMENT
+
+#include "rules/sampling/mis.h"
+#include "rules/sampling/random.h"
+#include "rules/sampling/scrambled_net.h"
+#include "rules/shading/brdf.h"
+#include "rules/shading/clearcoat.h"
+#include "rules/shading/lights.h"
+#include "rules/shading/lobe_sampling.h"
 
 // Pair `pair` of `pairs`: point `pair` of the scrambled net of (pixel,
 // sample, seed) (scrambled_net.h), three groups of two dimensions: the
@@ -68,3 +77,5 @@ FACET_FN vec3 mis_sample_share(BrdfParams p, vec3 n, vec3 v, MisSample s, vec3 r
   return brdf_evaluate_scaled(p, n, l, v, specular_scale) * radiance * dot(n, l) *
          (power_heuristic(s.pdf, s.other_pdf) / s.pdf) / real(pairs);
 }
+
+#endif

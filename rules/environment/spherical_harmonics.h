@@ -1,6 +1,11 @@
 // The real spherical harmonics of bands 0-2 and the exact integrals over a map
 // texel that project the environment onto them (Ramamoorthi & Hanrahan 2001;
-// docs/rendering.md, "Prefiltered: the split sum"). Needs rules/math.h.
+// docs/rendering.md, "Prefiltered: the split sum").
+
+#ifndef FACET_RULE_ENVIRONMENT_SPHERICAL_HARMONICS
+#define FACET_RULE_ENVIRONMENT_SPHERICAL_HARMONICS
+
+#include "rules/math.h"
 
 // The basis at unit d.
 FACET_FN real sh_basis(int i, vec3 d) {
@@ -62,3 +67,5 @@ FACET_FN ShColumnIntegrals sh_column_integrals(int x, int width) {
   c.sin_cos_phi = real(0.5) * chord * sin(real(2) * centre);
   return c;
 }
+
+#endif

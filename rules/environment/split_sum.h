@@ -1,6 +1,16 @@
 // The split sum of the prefiltered method (Karis 2013; the corrections are in
-// docs/rendering.md, "Prefiltered: the split sum"). Needs the rules of
-// rules/shading/.
+// docs/rendering.md, "Prefiltered: the split sum").
+
+#ifndef FACET_RULE_ENVIRONMENT_SPLIT_SUM
+#define FACET_RULE_ENVIRONMENT_SPLIT_SUM
+
+#include "rules/math.h"
+#include "rules/shading/brdf.h"
+#include "rules/shading/brdf_sampling.h"
+#include "rules/shading/clearcoat.h"
+#include "rules/shading/domain.h"
+#include "rules/shading/fresnel.h"
+#include "rules/shading/sheen.h"
 
 // Levels are spaced evenly in perceptual roughness sqrt(alpha): level i of
 // `levels` has alpha = (i / (levels - 1))^2, level 0 is the map itself.
@@ -108,3 +118,5 @@ FACET_FN vec3 environment_split_sum(BrdfParams p, SplitSumLookups l, vec3 prefil
   return coated_split_sum(p, l.nv, prefiltered, dfg, irradiance_over_pi, specular_scale, l.nv_coat,
                           prefiltered_coat, dfg_coat);
 }
+
+#endif

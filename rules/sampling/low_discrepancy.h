@@ -1,5 +1,8 @@
 // Hammersley's point set, the same on every run and on both backends.
 
+#ifndef FACET_RULE_SAMPLING_LOW_DISCREPANCY
+#define FACET_RULE_SAMPLING_LOW_DISCREPANCY
+
 // The 32 bits of `bits` mirrored, by swapping halves, bytes, nibbles, pairs
 // and bits. No loop, so a kernel's sample loop stays far from lavapipe's
 // limit of 65535 iterations per invocation.
@@ -23,3 +26,5 @@ FACET_FN vec2 hammersley_point(int i, int n) {
   real half_cell = real(0.5) / real(n);
   return vec2(real(i) / real(n) + half_cell, radical_inverse_base2(i) + half_cell);
 }
+
+#endif

@@ -5,7 +5,13 @@
 // Each later vertex keys its environment pairs by a seed of its own, and every
 // vertex draws its continuation from a net keyed by a sample index no camera
 // sample has, so no two vertices, and no vertex and its continuation, share
-// numbers. Needs random.h and scrambled_net.h.
+// numbers.
+
+#ifndef FACET_RULE_SAMPLING_PATH_SAMPLES
+#define FACET_RULE_SAMPLING_PATH_SAMPLES
+
+#include "rules/sampling/random.h"
+#include "rules/sampling/scrambled_net.h"
 
 // Camera samples count up from 0 (at most 4097) and the camera's own net is
 // keyed by 0xFFFFFFFF (camera_samples.h).
@@ -59,3 +65,5 @@ FACET_FN bool path_lobe_allowed(int taken, int limit) { return limit < 0 || take
 FACET_FN real path_interface_u(uint pixel, uint sample_index, uint samples, uint seed, uint vertex) {
   return scrambled_point(pixel, PATH_CONTINUATION_SAMPLE, path_vertex_seed(seed, vertex), 1u, sample_index, samples).y;
 }
+
+#endif

@@ -2,6 +2,9 @@
 // (pixel, sample, dimension) so that the GPU kernels and the CPU reference draw
 // exactly the same ones, in any order.
 
+#ifndef FACET_RULE_SAMPLING_RANDOM
+#define FACET_RULE_SAMPLING_RANDOM
+
 // PCG hash (Jarzynski & Olano 2020, "Hash Functions for GPU Rendering").
 FACET_FN uint pcg_hash(uint value) {
   uint state = value * 747796405u + 2891336453u;
@@ -21,3 +24,5 @@ FACET_FN real unit_from_bits(uint bits) { return real(bits >> 8u) * real(5.96046
 FACET_FN real sample_uniform(uint pixel, uint sample_index, uint dimension) {
   return unit_from_bits(sample_bits(pixel, sample_index, dimension));
 }
+
+#endif

@@ -3,8 +3,13 @@
 // each 2D group of dimensions shuffled and Owen-scrambled on its own (Burley
 // 2020, "Practical Hash-based Owen Scrambling"), so that for n a power of 2
 // they stratify every elementary box while pixels and groups stay independent.
-// Integer arithmetic only: both backends draw the same bits. Needs random.h and
-// low_discrepancy.h.
+// Integer arithmetic only: both backends draw the same bits.
+
+#ifndef FACET_RULE_SAMPLING_SCRAMBLED_NET
+#define FACET_RULE_SAMPLING_SCRAMBLED_NET
+
+#include "rules/sampling/low_discrepancy.h"
+#include "rules/sampling/random.h"
 
 // A permutation of 32-bit words in which bit j of the result depends only on
 // bits 0 ... j of x: reversed, it permutes each subinterval within its
@@ -51,3 +56,5 @@ FACET_FN vec2 scrambled_point(uint pixel, uint sample_index, uint seed, uint gro
   uvec2 b = scrambled_point_bits(pixel, sample_index, seed, group, k, n);
   return vec2(unit_from_bits(b.x), unit_from_bits(b.y));
 }
+
+#endif

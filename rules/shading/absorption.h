@@ -1,5 +1,8 @@
 // Beer-Lambert absorption inside a transmissive material
-// (docs/shading.md, "Transmission"). Needs rules/math.h.
+// (docs/shading.md, "Transmission").
+
+#ifndef FACET_RULE_SHADING_ABSORPTION
+#define FACET_RULE_SHADING_ABSORPTION
 
 // glTF's KHR_materials_volume: light that travels attenuation_distance inside
 // keeps attenuation_color of itself, so sigma = -ln(c) / d per channel; an
@@ -19,3 +22,5 @@ FACET_FN vec3 beer_lambert(vec3 sigma, real distance) {
   t.z = sigma.z > real(0) ? exp(-sigma.z * distance) : real(1);
   return t;
 }
+
+#endif

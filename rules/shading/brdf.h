@@ -3,6 +3,14 @@
 // for any choice of D, G and F; a clear coat over it is
 // rules/shading/clearcoat.h, which has the whole material's brdf_evaluate.
 
+#ifndef FACET_RULE_SHADING_BRDF
+#define FACET_RULE_SHADING_BRDF
+
+#include "rules/math.h"
+#include "rules/shading/domain.h"
+#include "rules/shading/fresnel.h"
+#include "rules/shading/microfacet.h"
+
 // Which fields are read depends on the models: f0 for F_SCHLICK, eta for
 // F_DIELECTRIC (per channel, so dispersion is possible), eta and k for
 // F_CONDUCTOR. alpha is the microfacet alpha, not perceptual roughness.
@@ -108,3 +116,5 @@ FACET_FN BrdfTerms brdf_terms(BrdfParams p, vec3 n, vec3 l, vec3 v) {
   t.value = t.specular + t.diffuse;
   return t;
 }
+
+#endif

@@ -5,6 +5,14 @@
 // integrates to 1 there; a sampled l under the horizon is a valid sample on
 // which the BRDF is 0.
 
+#ifndef FACET_RULE_SHADING_BRDF_SAMPLING
+#define FACET_RULE_SHADING_BRDF_SAMPLING
+
+#include "rules/math.h"
+#include "rules/shading/brdf.h"
+#include "rules/shading/domain.h"
+#include "rules/shading/microfacet.h"
+
 const int SAMPLE_COSINE = 0;       // cosine-weighted hemisphere (Lambert)
 const int SAMPLE_D = 1;            // half vector with density D(m)(n.m), for d_model
 const int SAMPLE_GGX_VISIBLE = 2;  // half vector from GGX's visible normals as seen from v
@@ -148,3 +156,5 @@ FACET_FN vec3 anisotropic_bent_normal(BrdfParams p, vec3 n, vec3 v) {
   real length2 = dot(bent, bent);
   return length2 > real(0) ? bent * inversesqrt(length2) : n;
 }
+
+#endif

@@ -1,6 +1,5 @@
 // A clear coat over the base BRDF (KHR_materials_clearcoat; docs/shading.md,
-// "Clear coat"), and the whole material's BRDF with it. Needs brdf.h and
-// sheen.h.
+// "Clear coat"), and the whole material's BRDF with it.
 //
 // The coat is a dielectric of index 1.5 (F0 = 0.04) with glTF's specular
 // lobe: GGX D, height-correlated Smith G, Schlick's F at v.h, about the coat
@@ -10,6 +9,14 @@
 // the glTF layering's factor (1 - c F(n_c.v)) applied on both crossings: the
 // product keeps f(l, v) = f(v, l) and, as each factor alone, never adds
 // energy.
+
+#ifndef FACET_RULE_SHADING_CLEARCOAT
+#define FACET_RULE_SHADING_CLEARCOAT
+
+#include "rules/shading/brdf.h"
+#include "rules/shading/fresnel.h"
+#include "rules/shading/microfacet.h"
+#include "rules/shading/sheen.h"
 
 // ((1.5 - 1) / (1.5 + 1))^2
 const real COAT_F0 = real(0.04);
@@ -66,3 +73,5 @@ FACET_FN vec3 brdf_evaluate_scaled(BrdfParams p, vec3 n, vec3 l, vec3 v, vec3 sp
 FACET_FN vec3 brdf_evaluate(BrdfParams p, vec3 n, vec3 l, vec3 v) {
   return brdf_evaluate_scaled(p, n, l, v, vec3(real(1)));
 }
+
+#endif

@@ -1,7 +1,17 @@
 // The split sum's DFG tables, their grid and their integrals
 // (docs/rendering.md, "Prefiltered: the split sum"), and the
-// multiple-scattering factor they give. Needs the rules of rules/shading/,
-// lobe_sampling.h and low_discrepancy.h.
+// multiple-scattering factor they give.
+
+#ifndef FACET_RULE_SHADING_DFG
+#define FACET_RULE_SHADING_DFG
+
+#include "rules/math.h"
+#include "rules/sampling/low_discrepancy.h"
+#include "rules/shading/brdf.h"
+#include "rules/shading/brdf_sampling.h"
+#include "rules/shading/fresnel.h"
+#include "rules/shading/lobe_sampling.h"
+#include "rules/shading/sheen.h"
 
 // The two integrals for one sample l of the specular lobe (F = 1), weighted
 // by n.l / pdf: scale multiplies F(0), bias is added, so that F(0) scale +
@@ -98,3 +108,5 @@ FACET_FN vec3 energy_compensation(vec3 f0, vec2 dfg) {
 // `dfg` at the view's n.v and p's alpha. F0 is Fresnel at normal incidence:
 // f0 for Schlick's F, what the other models give there.
 FACET_FN vec3 specular_compensation(BrdfParams p, vec2 dfg) { return energy_compensation(fresnel_F(p, real(1)), dfg); }
+
+#endif

@@ -3,8 +3,17 @@
 // densities (docs/shading.md, "Transmission"). Directions are world-space unit
 // vectors with n facing v; eta = n_l / n_v, the index on l's side of the
 // interface over the index on v's side. The smooth limit is the domain's
-// ALPHA_MIN (effective_alpha), not a separate delta case. Needs the rules of
-// rules/shading/ up to lobe_sampling.h.
+// ALPHA_MIN (effective_alpha), not a separate delta case.
+
+#ifndef FACET_RULE_SHADING_DIELECTRIC
+#define FACET_RULE_SHADING_DIELECTRIC
+
+#include "rules/math.h"
+#include "rules/shading/brdf_sampling.h"
+#include "rules/shading/domain.h"
+#include "rules/shading/fresnel.h"
+#include "rules/shading/lights.h"
+#include "rules/shading/microfacet.h"
 
 // eta across the surface of a closed object whose inside has index `ior`,
 // seen from v outside (the side the outward normal points to) or inside.
@@ -164,3 +173,5 @@ FACET_FN real dielectric_pdf(real alpha, real eta, real transmission, vec3 n, ve
   return (real(1) - reflect_probability(interface_split(eta, dot(v, m), transmission))) *
          dielectric_transmission_pdf(alpha, eta, n, l, v);
 }
+
+#endif

@@ -1,6 +1,11 @@
 // Fresnel reflectance of an optically flat facet, cos_i = cosine between the
 // incident direction and the facet normal. Derivations: docs/shading.md.
 
+#ifndef FACET_RULE_SHADING_FRESNEL
+#define FACET_RULE_SHADING_FRESNEL
+
+#include "rules/math.h"
+
 const int F_NONE = 0;  // F = 1: the bare microfacet term, as used for albedo
 const int F_SCHLICK = 1;
 const int F_DIELECTRIC = 2;
@@ -54,3 +59,5 @@ FACET_FN vec3 fresnel_blender_metallic(vec3 f0, real cos_i) {
   real t = (fresnel_dielectric(real(1.5), cos_i) - normal) / (real(1) - normal);
   return f0 + (vec3(real(1)) - f0) * t;
 }
+
+#endif

@@ -1,8 +1,14 @@
 // What a punctual light delivers at a surface point and the shadow ray that
 // decides whether it arrives (docs/rendering.md, "Shading"). Each backend fills
-// PunctualLight from its own light record. Needs the BRDF's rules and
-// INFINITE_DISTANCE, a real +infinity (compute/raycast/traversal/ray.glsl;
-// rules/language.h in C++).
+// PunctualLight from its own light record. Needs INFINITE_DISTANCE,
+// a real +infinity (compute/raycast/common/ray.glsl; rules/language.h in C++).
+
+#ifndef FACET_RULE_SHADING_LIGHTS
+#define FACET_RULE_SHADING_LIGHTS
+
+#include "rules/math.h"
+#include "rules/shading/brdf.h"
+#include "rules/shading/clearcoat.h"
 
 // A punctual light: directional (along `direction`), else at `position`,
 // a spot around `direction` when `spot`, with its cones as cosines.
@@ -77,3 +83,5 @@ FACET_FN real shadow_ray_offset(real scene_diagonal, real root_tolerance) {
 }
 
 FACET_FN vec3 shadow_ray_origin(vec3 point, vec3 ng, real offset) { return point + offset * ng; }
+
+#endif

@@ -1,6 +1,15 @@
 // One BRDF sample across a material's lobes (the base's two, a sheen's and a
 // clear coat's), and its density
-// (docs/rendering.md, "Sampled"). Needs the rules of rules/shading/.
+// (docs/rendering.md, "Sampled").
+
+#ifndef FACET_RULE_SHADING_LOBE_SAMPLING
+#define FACET_RULE_SHADING_LOBE_SAMPLING
+
+#include "rules/shading/brdf.h"
+#include "rules/shading/brdf_sampling.h"
+#include "rules/shading/clearcoat.h"
+#include "rules/shading/microfacet.h"
+#include "rules/shading/sheen.h"
 
 FACET_FN real luminance(vec3 c) { return real(0.2126) * c.x + real(0.7152) * c.y + real(0.0722) * c.z; }
 
@@ -95,3 +104,5 @@ FACET_FN real brdf_lobes_pdf(BrdfParams p, vec3 n, vec3 l, vec3 v) {
   return p_coat * direction_pdf(SAMPLE_GGX_VISIBLE, coat_lobe_params(p), p.clearcoat_normal, l, v) +
          (real(1) - p_coat) * base_lobes_pdf(p, n, l, v);
 }
+
+#endif

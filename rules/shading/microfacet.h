@@ -1,6 +1,12 @@
 // Microfacet normal distributions D and shadowing-masking functions G. Formulas
 // and their derivations: docs/shading.md.
 
+#ifndef FACET_RULE_SHADING_MICROFACET
+#define FACET_RULE_SHADING_MICROFACET
+
+#include "rules/math.h"
+#include "rules/shading/domain.h"
+
 // Normal distribution ids. Smith G names its microsurface with the same ids.
 const int D_GGX = 0;
 const int D_BECKMANN = 1;
@@ -192,3 +198,5 @@ FACET_FN real microfacet_G_anisotropic(int model, vec2 alpha, vec3 l, vec3 v, re
     return real(1) / (real(1) + lambda_l) * (real(1) / (real(1) + lambda_v));
   return real(1) / (real(1) + lambda_l + lambda_v);
 }
+
+#endif

@@ -3,7 +3,15 @@
 // the whole material with sample_brdf_lobes, and the weight
 // f(l, v) (n.l) / pdf(l) that multiplies the path's throughput. Both
 // backends continue their paths with this one rule, so that they trace the
-// same paths. Needs the rules of rules/shading/ and lights.h.
+// same paths.
+
+#ifndef FACET_RULE_SHADING_PATH_CONTINUATION
+#define FACET_RULE_SHADING_PATH_CONTINUATION
+
+#include "rules/shading/brdf.h"
+#include "rules/shading/clearcoat.h"
+#include "rules/shading/lights.h"
+#include "rules/shading/lobe_sampling.h"
 
 struct PathContinuation {
   vec3 direction;
@@ -20,3 +28,5 @@ FACET_FN PathContinuation continue_path(BrdfParams p, vec3 n, vec3 ng, vec3 v, v
   c.weight = brdf_evaluate_scaled(p, n, c.direction, v, specular_scale) * (dot(n, c.direction) / pdf);
   return c;
 }
+
+#endif

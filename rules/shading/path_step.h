@@ -3,8 +3,16 @@
 // roulette, the continuation (opaque or through a transmissive interface),
 // the limit of its lobe kind, the end of a path that carries nothing, and the
 // medium the new ray travels in. A backend fetches the vertex and its path's
-// state and stores what this rule returns. Needs path_continuation.h,
-// transmissive_continuation.h, rules/sampling/path_samples.h and lights.h.
+// state and stores what this rule returns.
+
+#ifndef FACET_RULE_SHADING_PATH_STEP
+#define FACET_RULE_SHADING_PATH_STEP
+
+#include "rules/sampling/path_samples.h"
+#include "rules/shading/brdf.h"
+#include "rules/shading/lights.h"
+#include "rules/shading/path_continuation.h"
+#include "rules/shading/transmissive_continuation.h"
 
 // Which random numbers a path draws (rules/sampling/path_samples.h): the
 // pixel of the full image, the camera sample of `samples`, the scene's seed.
@@ -89,3 +97,5 @@ FACET_FN PathStep path_step(PathVertex x, PathCarry carry, PathSampleKey key, ui
   step.origin = shadow_ray_origin(x.position, step.transmitted ? -x.ng : x.ng, offset);
   return step;
 }
+
+#endif

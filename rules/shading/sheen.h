@@ -1,10 +1,17 @@
 // Sheen (KHR_materials_sheen; docs/shading.md, "Sheen"): a Charlie lobe
-// over the base, under any clear coat. Needs brdf.h; its sampling is
-// lobe_sampling.h's and its albedo's entries dfg.h's.
+// over the base, under any clear coat. Its sampling is lobe_sampling.h's
+// and its albedo's entries dfg.h's.
 //
 // f = color D V / max(1, e) + base (1 - max(color) min(e, 1)), with glTF's
 // Charlie D, the Charlie visibility V, and e the larger of the lobe's
 // directional albedos E(n.v) and E(n.l) (sheen_layer).
+
+#ifndef FACET_RULE_SHADING_SHEEN
+#define FACET_RULE_SHADING_SHEEN
+
+#include "rules/math.h"
+#include "rules/shading/brdf.h"
+#include "rules/shading/domain.h"
 
 // The smallest sheen alpha (roughness 0.07): below it D's mass sits within a
 // few degrees of the horizon, finer than the albedo's knots resolve.
@@ -114,3 +121,5 @@ FACET_FN vec3 sheen_over(BrdfParams p, vec3 n, vec3 l, vec3 v, vec3 base) {
       sheen_layer(p, sheen_lobe(p.sheen_alpha, n, l, v), sheen_albedo(p, dot(n, v)), sheen_albedo(p, dot(n, l)));
   return base * layer.base_scale + layer.sheen;
 }
+
+#endif

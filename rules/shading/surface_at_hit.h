@@ -2,8 +2,16 @@
 // (docs/shading.md, "The material at a hit"): a backend fetches what the hit
 // offers (the material's parameters, its textures' values, the surface's
 // partials) and stores what this rule returns; every choice between them is
-// made here. Needs textured_material.h, transmissive_continuation.h,
-// clearcoat.h and rules/surface/tangent.h.
+// made here.
+
+#ifndef FACET_RULE_SHADING_SURFACE_AT_HIT
+#define FACET_RULE_SHADING_SURFACE_AT_HIT
+
+#include "rules/shading/brdf.h"
+#include "rules/shading/clearcoat.h"
+#include "rules/shading/textured_material.h"
+#include "rules/shading/transmissive_continuation.h"
+#include "rules/surface/tangent.h"
 
 // The normals the surface gives at a hit, turned to face v. The hit is
 // `outside` where v lies on the side the outward geometric normal points to.
@@ -124,3 +132,5 @@ FACET_FN SurfaceAtHit surface_at_hit(HitMaterial m, FacingNormals facing, vec3 v
     s.emission = s.emission * coat_transmittance(s.params, dot(s.params.clearcoat_normal, v));
   return s;
 }
+
+#endif

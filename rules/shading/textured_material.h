@@ -1,5 +1,11 @@
 // What a textured glTF material becomes at a hit (docs/shading.md, "Textures").
-// Needs rules/shading/brdf.h and texture_sampling.h.
+
+#ifndef FACET_RULE_SHADING_TEXTURED_MATERIAL
+#define FACET_RULE_SHADING_TEXTURED_MATERIAL
+
+#include "rules/math.h"
+#include "rules/shading/brdf.h"
+#include "rules/texture/texture_sampling.h"
 
 // The half angle by which a camera ray's cone widens: one pixel's angle at
 // the image centre, for an image `height` pixels high (Akenine-Möller et al.
@@ -141,3 +147,5 @@ FACET_FN TexturedSurface textured_layers(TexturedSurface s, TextureFootprint coa
 FACET_FN vec2 turned_rotation(vec2 rotation, vec2 direction) {
   return vec2(rotation.x * direction.x - rotation.y * direction.y, rotation.y * direction.x + rotation.x * direction.y);
 }
+
+#endif

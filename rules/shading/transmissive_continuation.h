@@ -3,7 +3,21 @@
 // material is f = f_r + (1 - transmission) c_diff / pi + transmission f_t,
 // its dielectric lobes (rules/shading/dielectric.h) and its diffuse lobe
 // chosen by their weight. continue_path (path_continuation.h) stays the rule
-// of opaque materials. Needs dielectric.h, absorption.h and lights.h.
+// of opaque materials.
+
+#ifndef FACET_RULE_SHADING_TRANSMISSIVE_CONTINUATION
+#define FACET_RULE_SHADING_TRANSMISSIVE_CONTINUATION
+
+#include "rules/sampling/path_samples.h"
+#include "rules/shading/absorption.h"
+#include "rules/shading/brdf.h"
+#include "rules/shading/brdf_sampling.h"
+#include "rules/shading/clearcoat.h"
+#include "rules/shading/dielectric.h"
+#include "rules/shading/domain.h"
+#include "rules/shading/fresnel.h"
+#include "rules/shading/lights.h"
+#include "rules/shading/lobe_sampling.h"
 
 // What a material adds to BrdfParams to transmit (glTF's
 // KHR_materials_transmission, KHR_materials_volume, KHR_materials_ior).
@@ -100,3 +114,5 @@ FACET_FN TransmissiveContinuation continue_path_transmissive(BrdfParams p, Trans
   c.weight = brdf_evaluate(p, n, c.direction, v) * (dot(n, c.direction) / pdf);
   return c;
 }
+
+#endif

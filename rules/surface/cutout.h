@@ -2,6 +2,12 @@
 // colour factor's times its base colour texture's, reaches the cutoff, and
 // absent elsewhere, for every ray (docs/rendering.md, "Cutouts"). A cutoff
 // of 0 keeps every hit: the surface is opaque.
+
+#ifndef FACET_RULE_SURFACE_CUTOUT
+#define FACET_RULE_SURFACE_CUTOUT
+
+#include "rules/shading/textured_material.h"
+
 FACET_FN bool cutout_present(real alpha_factor, real texture_alpha, real cutoff) {
   return alpha_factor * texture_alpha >= cutoff;
 }
@@ -21,3 +27,5 @@ FACET_FN TextureFootprint cutout_footprint(vec2 uv) {
   f.cos_view = real(1);
   return f;
 }
+
+#endif

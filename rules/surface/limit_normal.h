@@ -6,8 +6,10 @@
 // surface is probed at points moved towards the patch centre by growing
 // fractions of the way, and the first well-defined normal is taken. Each
 // backend evaluates the probes with its own patch evaluation (the oracle
-// rule of docs/architecture.md); this is what they decide alike. Needs
-// rules/math.h.
+// rule of docs/architecture.md); this is what they decide alike.
+
+#ifndef FACET_RULE_SURFACE_LIMIT_NORMAL
+#define FACET_RULE_SURFACE_LIMIT_NORMAL
 
 // The cross product is trusted when |ds x dt| exceeds this fraction of
 // |ds| |dt| (the sine of the angle between them) and neither derivative is
@@ -42,3 +44,5 @@ FACET_FN vec3 unit_normal_or_up(vec3 n) {
   real size = length(n);
   return size > real(0) ? n / size : vec3(real(0), real(0), real(1));
 }
+
+#endif

@@ -4,7 +4,11 @@
 // rotation (cos, sin). Where dP/ds vanishes or lies along n (a degenerate
 // patch corner), dP/dt turned a quarter about n stands in, as ds x dt ~ n
 // makes dt x n point along ds; where both fail, the arbitrary frame's.
-// Needs rules/shading/microfacet.h.
+
+#ifndef FACET_RULE_SURFACE_TANGENT
+#define FACET_RULE_SURFACE_TANGENT
+
+#include "rules/shading/microfacet.h"
 
 FACET_FN vec3 surface_tangent(vec3 n, vec3 dp_ds, vec3 dp_dt, real cos_rotation, real sin_rotation) {
   vec3 t = dp_ds - n * dot(n, dp_ds);
@@ -30,3 +34,5 @@ FACET_FN vec3 texcoord_tangent(vec3 n, vec3 dp_ds, vec3 dp_dt, vec2 duv_ds, vec2
   real turn = dot(cross(n, dp_du), dp_dv) > real(0) ? -sin_rotation : sin_rotation;
   return surface_tangent(n, dp_du, -dp_dv, cos_rotation, turn);
 }
+
+#endif

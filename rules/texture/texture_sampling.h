@@ -5,6 +5,9 @@
 // from a ray cone (Akenine-Möller et al., "Improved Shader and Texture Level of
 // Detail Using Ray Cones", JCGT 2021).
 
+#ifndef FACET_RULE_TEXTURE_TEXTURE_SAMPLING
+#define FACET_RULE_TEXTURE_TEXTURE_SAMPLING
+
 // Texture coordinate wrap modes (glTF sampler wrapS / wrapT).
 const uint FACET_WRAP_REPEAT = 0u;
 const uint FACET_WRAP_MIRRORED_REPEAT = 1u;
@@ -127,3 +130,5 @@ FACET_FN vec2 transform_uv(vec2 uv, vec2 offset, real cos_rotation, real sin_rot
 FACET_FN real srgb_to_linear(real c) {
   return c <= real(0.04045) ? c / real(12.92) : pow((c + real(0.055)) / real(1.055), real(2.4));
 }
+
+#endif

@@ -23,7 +23,8 @@ def includes(*names):
 
 # A tree that keeps the real table's layering, with each kind of include the
 # script has to resolve: root-relative, beside the including file, the public
-# API as "facet/...", and generated SPIR-V headers that exist in no folder.
+# API as "facet/...", and generated SPIR-V headers that exist in no folder;
+# inside compute/raycast/, an include down the rooms.
 GOOD_TREE = {
     "materials/material.h": "#pragma once\n#include <vector>\n",
     "scenes/scene.h": includes("materials/material.h"),
@@ -31,8 +32,8 @@ GOOD_TREE = {
     "engine/camera/camera_math.h": "",
     "engine/gpu_backend/renderer.cpp": includes("engine/camera/camera.h", "detail/packing.h", "facet_kernels/spirv.h"),
     "engine/gpu_backend/detail/packing.h": "",
-    "compute/raycast/trace.comp": includes("compute/shared/layout.h", "ray.glsl"),
-    "compute/raycast/ray.glsl": "",
+    "compute/raycast/traversal/trace.comp": includes("compute/shared/layout.h", "compute/raycast/common/ray.glsl"),
+    "compute/raycast/common/ray.glsl": "",
     "compute/shared/layout.h": "",
     "include/facet/scene.h": "",
     "apps/facet/main.cpp": includes("facet/scene.h", "facet/version.h", "engine/camera/camera.h"),
@@ -85,14 +86,70 @@ class StructureCheckTest(unittest.TestCase):
 
     def test_reports_a_cycle_between_layers(self):
         violations, cycles, status, output = self.check({
-            "compute/raycast/shade.comp": includes("engine/cpu/shade.h"),
+            "compute/raycast/shading/shade.comp": includes("engine/cpu/shade.h"),
             "engine/cpu/shade.h": includes("compute/shared/layout.h"),
         })
         self.assertEqual(len(violations), 2)
-        self.assertEqual(cycles, [[("compute", "engine/cpu", "compute/raycast/shade.comp:1"),
+        self.assertEqual(cycles, [[("compute", "engine/cpu", "compute/raycast/shading/shade.comp:1"),
                                    ("engine/cpu", "compute", "engine/cpu/shade.h:1")]])
         self.assertEqual(status, 1)
         self.assertIn("layer cycle: compute -> engine/cpu -> compute", output)
+
+    def test_rejects_a_sideways_include_between_rooms(self):
+        violations, cycles, status, _ = self.check({
+            "compute/raycast/dicing/dice.comp": includes("compute/raycast/shading/textures.glsl"),
+            "compute/raycast/shading/textures.glsl": "",
+        })
+        self.assertEqual(violations, ['compute/raycast/dicing/dice.comp:1: includes '
+                                      '"compute/raycast/shading/textures.glsl" (room compute/raycast/dicing, rank 1) '
+                                      "-> room compute/raycast/shading (rank 1): includes must point down"])
+        self.assertEqual(cycles, [])
+        self.assertEqual(status, 1)
+
+    def test_rejects_an_include_up_the_rooms(self):
+        violations, _, _, _ = self.check({
+            "compute/raycast/common/ray.glsl": includes("compute/raycast/traversal/trace.comp"),
+        })
+        self.assertEqual(len(violations), 1)
+        self.assertIn("(room compute/raycast/common, rank 0) -> room compute/raycast/traversal (rank 2)", violations[0])
+
+    def test_reports_a_cycle_between_rooms(self):
+        violations, cycles, status, output = self.check({
+            "compute/raycast/traversal/trace.comp": includes("compute/raycast/finish/finish.glsl"),
+            "compute/raycast/finish/finish.glsl": includes("compute/raycast/traversal/trace.glsl"),
+            "compute/raycast/traversal/trace.glsl": "",
+        })
+        self.assertEqual(len(violations), 1)
+        finish, traversal = "compute/raycast/finish", "compute/raycast/traversal"
+        self.assertEqual(cycles, [[(finish, traversal, f"{finish}/finish.glsl:1"),
+                                   (traversal, finish, f"{traversal}/trace.comp:1")]])
+        self.assertEqual(status, 1)
+        self.assertIn(f"room cycle: {finish} -> {traversal} -> {finish}", output)
+
+    def test_rejects_a_file_in_no_room(self):
+        violations, _, status, _ = self.check({"compute/raycast/lighting/light.glsl": "",
+                                               "compute/raycast/loose.glsl": ""})
+        self.assertEqual(status, 1)
+        self.assertEqual(len(violations), 2)
+        self.assertIn("compute/raycast/lighting/light.glsl: in no room of compute/raycast", violations[0])
+        self.assertIn("compute/raycast/loose.glsl: in no room of compute/raycast", violations[1])
+
+    def test_rejects_a_rule_without_its_guard_or_its_lines_in_the_instance(self):
+        def rule(guard, body=""):
+            return f"// A rule.\n\n#ifndef {guard}\n#define {guard}\n{body}\n#endif\n"
+        violations, _, status, _ = self.check({
+            "rules/math.h": rule("FACET_RULE_MATH"),
+            "rules/shading/brdf.h": rule("FACET_RULE_SHADING_BRDF", includes("rules/math.h")),
+            "rules/shading/sheen.h": rule("FACET_RULE_BRDF"),
+            "rules/instance.h": includes("rules/math.h", "rules/shading/brdf.h", "rules/shading/sheen.h")
+                                + "#undef FACET_RULE_MATH\n#undef FACET_RULE_SHADING_SHEEN\n",
+        })
+        self.assertEqual(status, 1)
+        self.assertEqual(violations, [
+            'rules/instance.h: lacks #include "rules/shading/brdf.h" or, at its end, #undef FACET_RULE_SHADING_BRDF',
+            "rules/shading/sheen.h: not inside its guard #ifndef FACET_RULE_SHADING_SHEEN / "
+            "#define FACET_RULE_SHADING_SHEEN / ... / #endif",
+        ])
 
     def test_rejects_a_folder_in_no_layer(self):
         violations, _, status, _ = self.check({

@@ -8,7 +8,6 @@
 
 #include "rules/language.glsl"
 #include "rules/camera/camera.h"
-#include "rules/camera/sample_plan.h"
 #include "rules/camera/camera_samples.h"
 
 Ray camera_ray(uint index) {

@@ -5,7 +5,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
-#include "rules/grid/config.h"
 #include "rules/language.glsl"
 #include "rules/grid/workgroup_grid.h"
 #include "compute/layout/raycast_layout.h"
@@ -14,7 +13,6 @@ layout(local_size_x = 1) in;
 
 layout(set = 0, binding = 0, std140) uniform FrameBlock { FrameParams frame; };
 layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters; };
-
 
 void main() {
   uvec3 shadow = workgroup_grid(counters.shadowRays);

@@ -5,6 +5,7 @@
 #ifndef FACET_RAYCAST_WORKGROUP_GLSL
 #define FACET_RAYCAST_WORKGROUP_GLSL
 
+#include "rules/language.glsl"
 #include "rules/grid/config.h"
 
 layout(local_size_x = FACET_WORKGROUP_SIZE) in;

@@ -8,12 +8,12 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "compute/raycast/common/scene_bindings.glsl"
-#include "compute/raycast/traversal/ray.glsl"
+#include "compute/raycast/common/ray.glsl"
 #include "compute/layout/wide_bvh.h"
 #include "compute/raycast/dicing/dicing.glsl"
 #include "compute/raycast/common/patch_eval.glsl"
-#include "compute/raycast/dicing/patch_hull.glsl"
-#include "compute/raycast/dicing/micro_grid.glsl"
+#include "compute/raycast/common/patch_hull.glsl"
+#include "compute/raycast/common/micro_grid.glsl"
 
 layout(constant_id = 0) const int METHOD = 0;
 

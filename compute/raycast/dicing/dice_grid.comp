@@ -1,4 +1,4 @@
-// Tessellated method: the micro-grid's limit points (compute/raycast/dicing/micro_grid.glsl),
+// Tessellated method: the micro-grid's limit points (compute/raycast/common/micro_grid.glsl),
 // one invocation each, grid vertices first, then edge midpoints.
 #version 460
 #extension GL_GOOGLE_include_directive : require
@@ -6,7 +6,7 @@
 #include "compute/raycast/common/scene_bindings.glsl"
 #include "compute/raycast/dicing/dicing.glsl"
 #include "compute/raycast/common/patch_eval.glsl"
-#include "compute/raycast/dicing/micro_grid.glsl"
+#include "compute/raycast/common/micro_grid.glsl"
 
 layout(set = 0, binding = 5, rgba32f) uniform writeonly imageBuffer gridVerticesOut;
 layout(set = 0, binding = 6, rgba32f) uniform writeonly imageBuffer edgeMidpointsOut;

@@ -10,7 +10,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "compute/raycast/common/scene_bindings.glsl"
-#include "compute/raycast/traversal/trace_bindings.glsl"
+#include "compute/raycast/common/trace_bindings.glsl"
 
 layout(constant_id = 0) const int SHADOW = 0;
 layout(constant_id = 1) const int PATHS = 0;
@@ -24,17 +24,13 @@ layout(set = 0, binding = 24, std430) buffer CameraFallbacks { FallbackRecord ca
 layout(set = 0, binding = 25, std430) readonly buffer ShadowFallbacks { FallbackRecord shadowFallbacks[]; };
 layout(set = 0, binding = 33, std430) readonly buffer PathRays { PathRayRecord pathRays[]; };
 
-#include "compute/raycast/traversal/ray.glsl"
+#include "compute/raycast/common/ray.glsl"
 #include "compute/raycast/common/patch_eval.glsl"
-#include "compute/raycast/dicing/patch_hull.glsl"
+#include "compute/raycast/common/patch_hull.glsl"
 #include "compute/raycast/finish/exact_newton.glsl"
 #include "compute/raycast/finish/subdivide_cell.glsl"
-#include "compute/raycast/dicing/micro_grid.glsl"
-#include "compute/raycast/traversal/cell_reference.glsl"
-#include "rules/language.glsl"
-#include "rules/sampling/random.h"
-#include "rules/sampling/low_discrepancy.h"
-#include "rules/sampling/scrambled_net.h"
+#include "compute/raycast/common/micro_grid.glsl"
+#include "compute/raycast/common/cell_reference.glsl"
 #include "compute/raycast/common/camera_rays.glsl"
 
 const uint HIT_WORDS = 8u;  // sizeof(HitRecord) / 4

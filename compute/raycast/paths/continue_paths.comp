@@ -12,26 +12,8 @@
 
 #include "compute/layout/raycast_layout.h"
 #include "compute/raycast/common/workgroup.glsl"
-#include "compute/raycast/traversal/ray.glsl"
+#include "compute/raycast/common/ray.glsl"
 #include "rules/language.glsl"
-#include "rules/math.h"
-#include "rules/shading/domain.h"
-#include "rules/shading/microfacet.h"
-#include "rules/shading/fresnel.h"
-#include "rules/shading/brdf.h"
-#include "rules/shading/sheen.h"
-#include "rules/shading/clearcoat.h"
-#include "rules/shading/brdf_sampling.h"
-#include "rules/shading/lights.h"
-#include "rules/sampling/random.h"
-#include "rules/sampling/low_discrepancy.h"
-#include "rules/sampling/scrambled_net.h"
-#include "rules/sampling/path_samples.h"
-#include "rules/shading/lobe_sampling.h"
-#include "rules/shading/path_continuation.h"
-#include "rules/shading/dielectric.h"
-#include "rules/shading/absorption.h"
-#include "rules/shading/transmissive_continuation.h"
 #include "rules/shading/path_step.h"
 
 layout(constant_id = 0) const int TRANSMISSION = 0;
@@ -43,7 +25,7 @@ layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord
 layout(set = 0, binding = 32, std430) buffer PathStates { PathState pathStates[]; };
 layout(set = 0, binding = 33, std430) writeonly buffer PathRays { PathRayRecord pathRays[]; };
 
-#include "compute/raycast/paths/path_state.glsl"
+#include "compute/raycast/common/path_state.glsl"
 
 void main() {
   uint path = invocation_index();

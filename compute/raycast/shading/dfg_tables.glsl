@@ -1,8 +1,11 @@
 // DFG tables in a texel buffer, as engine/ibl/prefiltered_environment.h lays
 // one out: size x size (scale, bias) texels from `first`, read bilinearly at
-// dfg_grid_position (rules/shading/dfg.h) like ibl::dfgLookup. Needs dfg.h.
+// dfg_grid_position (rules/shading/dfg.h) like ibl::dfgLookup.
 #ifndef FACET_RAYCAST_DFG_TABLES_GLSL
 #define FACET_RAYCAST_DFG_TABLES_GLSL
+
+#include "rules/language.glsl"
+#include "rules/shading/dfg.h"
 
 vec2 dfg_table_lookup(samplerBuffer tables, uint first, int size, float nv, float alpha) {
   vec2 position = dfg_grid_position(nv, alpha, size);

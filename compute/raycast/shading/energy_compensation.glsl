@@ -1,11 +1,14 @@
 // Energy compensation as the surface kernel applies it (docs/shading.md,
 // "Energy compensation"): the factor on a material's specular lobe, read
 // from the scene's compensation tables (engine/ibl/compensation_tables.h)
-// like the CPU reference's ibl::specularScale. Needs the rules of rules/shading/,
-// rules/shading/dfg.h, `frame` and the specialization constant
-// COMPENSATION (1 when some material is compensated).
+// like the CPU reference's ibl::specularScale. Needs `frame` and the
+// specialization constant COMPENSATION (1 when some material is compensated).
 #ifndef FACET_RAYCAST_ENERGY_COMPENSATION_GLSL
 #define FACET_RAYCAST_ENERGY_COMPENSATION_GLSL
+
+#include "rules/language.glsl"
+#include "rules/shading/brdf.h"
+#include "rules/shading/dfg.h"
 
 #include "compute/raycast/shading/dfg_tables.glsl"
 

@@ -3,12 +3,15 @@
 // the split sum and the mip chain of the filtered method, laid out by FrameParams' offsets
 // (engine/gpu_backend/gpu_renderer.cpp). The same steps as the CPU
 // reference (engine/cpu/reference_renderer.cpp, engine/ibl/), in float.
-// Needs the rules of rules/shading/, rules/environment/environment_mapping.h,
-// split_sum.h, dfg.h, spherical_harmonics.h and `frame`.
+// Needs `frame`.
 #ifndef FACET_RAYCAST_ENVIRONMENT_GLSL
 #define FACET_RAYCAST_ENVIRONMENT_GLSL
 
+#include "rules/language.glsl"
+#include "rules/environment/environment_mapping.h"
 #include "rules/environment/irradiance_map.h"
+#include "rules/environment/spherical_harmonics.h"
+#include "rules/environment/split_sum.h"
 #include "compute/raycast/shading/dfg_tables.glsl"
 
 vec3 to_map(vec3 world) {

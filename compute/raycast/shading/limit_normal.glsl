@@ -1,9 +1,10 @@
 // The limit normal with the fallback both backends share
 // (rules/surface/limit_normal.h), over this kernel's patch evaluation.
-// Needs patch_eval.glsl, rules/language.glsl and rules/math.h.
+// Needs patch_eval.glsl.
 #ifndef FACET_RAYCAST_LIMIT_NORMAL_GLSL
 #define FACET_RAYCAST_LIMIT_NORMAL_GLSL
 
+#include "rules/language.glsl"
 #include "rules/surface/limit_normal.h"
 
 vec3 limit_normal(ControlPoints c, float s, float t) {

@@ -7,7 +7,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "compute/raycast/common/scene_bindings.glsl"
-#include "compute/raycast/traversal/trace_bindings.glsl"
+#include "compute/raycast/common/trace_bindings.glsl"
 
 layout(constant_id = 0) const int METHOD = 0;
 layout(constant_id = 1) const int PATHS = 0;
@@ -24,10 +24,6 @@ void defer_cell(uint reference) {
 }
 
 #include "compute/raycast/traversal/trace.glsl"
-#include "rules/language.glsl"
-#include "rules/sampling/random.h"
-#include "rules/sampling/low_discrepancy.h"
-#include "rules/sampling/scrambled_net.h"
 #include "compute/raycast/common/camera_rays.glsl"
 
 void main() {

@@ -6,7 +6,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "compute/raycast/common/scene_bindings.glsl"
-#include "compute/raycast/traversal/trace_bindings.glsl"
+#include "compute/raycast/common/trace_bindings.glsl"
 
 layout(constant_id = 0) const int METHOD = 0;
 

@@ -8,11 +8,11 @@
 #ifndef FACET_RAYCAST_TRACE_GLSL
 #define FACET_RAYCAST_TRACE_GLSL
 
-#include "compute/raycast/traversal/ray.glsl"
+#include "compute/raycast/common/ray.glsl"
 #include "compute/raycast/common/patch_eval.glsl"
-#include "compute/raycast/dicing/patch_hull.glsl"
-#include "compute/raycast/dicing/micro_grid.glsl"
-#include "compute/raycast/traversal/cell_reference.glsl"
+#include "compute/raycast/common/patch_hull.glsl"
+#include "compute/raycast/common/micro_grid.glsl"
+#include "compute/raycast/common/cell_reference.glsl"
 #include "compute/raycast/finish/triangle.glsl"
 #include "compute/raycast/finish/finish_exact.glsl"
 #include "compute/raycast/finish/finish_tessellated.glsl"

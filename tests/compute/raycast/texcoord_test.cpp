@@ -1,4 +1,4 @@
-// surface_texcoord (compute/raycast/shading/texcoord.glsl) in float on the device,
+// surface_texcoord (compute/raycast/common/texcoord.glsl) in float on the device,
 // reading the packed texcoord texels, against
 // SubdivisionSurface::evaluateTexcoord (OpenSubdiv, double): the values and
 // the derivatives that tangents and texture footprints are built from.

@@ -7,7 +7,7 @@ layout(local_size_x = 64) in;
 
 layout(binding = 3) uniform samplerBuffer patchPoints;  // patch_eval.glsl's, unread here
 #include "compute/raycast/common/patch_eval.glsl"
-#include "compute/raycast/shading/texcoord.glsl"
+#include "compute/raycast/common/texcoord.glsl"
 
 struct TexcoordCase {
   uint firstTexcoord;

@@ -8,18 +8,11 @@
 #define FACET_RAYCAST_HIT_FILTER_GLSL
 
 #include "rules/language.glsl"
-#include "rules/math.h"
-#include "rules/shading/domain.h"
-#include "rules/shading/microfacet.h"
-#include "rules/shading/fresnel.h"
-#include "rules/shading/brdf.h"
-#include "rules/texture/texture_sampling.h"
-#include "rules/shading/textured_material.h"
 #include "rules/surface/back_face.h"
 #include "rules/surface/cutout.h"
 #include "compute/raycast/common/patch_eval.glsl"
-#include "compute/raycast/shading/texcoord.glsl"
-#include "compute/raycast/shading/textures.glsl"
+#include "compute/raycast/common/texcoord.glsl"
+#include "compute/raycast/common/textures.glsl"
 
 layout(constant_id = 2) const int CULLING = 0;
 layout(constant_id = 3) const int CUTOUTS = 0;

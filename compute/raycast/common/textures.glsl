@@ -1,9 +1,12 @@
 // The scene's textures as the surface kernel reads them
 // (engine/gpu_backend/texture_data.h): the same lookup as the CPU reference
-// (scenes/texture.cpp), in float. Needs rules/texture/texture_sampling.h
-// and textured_material.h.
+// (scenes/texture.cpp), in float.
 #ifndef FACET_RAYCAST_TEXTURES_GLSL
 #define FACET_RAYCAST_TEXTURES_GLSL
+
+#include "rules/language.glsl"
+#include "rules/shading/textured_material.h"
+#include "rules/texture/texture_sampling.h"
 
 // Every level of every texture, linear RGBA.
 layout(set = 0, binding = 29) uniform samplerBuffer textureTexels;

@@ -14,6 +14,6 @@ layout(set = 0, binding = 6) uniform samplerBuffer edgeMidpoints;
 layout(set = 0, binding = 16) uniform samplerBuffer cellBounds;
 layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters; };
 
-#include "compute/raycast/traversal/hit_filter.glsl"
+#include "compute/raycast/common/hit_filter.glsl"
 
 #endif

@@ -1,8 +1,11 @@
 // Paths (docs/rendering.md, "Paths"): a camera ray's path state as the
 // kernels pack and unpack it (compute/layout/raycast_layout.h's PathState).
-// Needs rules/shading/path_step.h.
 #ifndef FACET_RAYCAST_PATH_STATE_GLSL
 #define FACET_RAYCAST_PATH_STATE_GLSL
+
+#include "rules/language.glsl"
+#include "rules/shading/path_step.h"
+#include "rules/shading/transmissive_continuation.h"
 
 // What a path carries for transmission (PathState's last members).
 struct PathMedium {
