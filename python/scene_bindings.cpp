@@ -75,67 +75,7 @@ facet::Scene sceneOf(const py::object& sceneOrPath) {
 }
 
 void bindScenes(py::module_& m) {
-  py::class_<facet::Material>(m, "Material", "A material as scene files write it (docs/shading.md)")
-      .def(py::init([](const std::string& name, OptText preset, OptText d, OptText g, OptText f, OptReal alpha,
-                       OptReal roughness, OptVec f0, OptVec ior, OptVec eta, OptVec k, OptVec diffuse,
-                       bool energyCompensation, OptReal transmission, std::optional<bool> thinWalled, OptReal thickness,
-                       OptVec attenuationColor, OptReal attenuationDistance, OptReal anisotropy,
-                       OptReal anisotropyRotation, OptReal clearcoat, OptReal clearcoatRoughness, OptVec sheenColor,
-                       OptReal sheenRoughness, OptVec baseColor, OptReal metallic) {
-             facet::Material material{
-                 name, preset, d, g, f, alpha, roughness, f0, ior, eta, k, diffuse, energyCompensation};
-             material.transmission = transmission;
-             material.thinWalled = thinWalled;
-             material.thickness = thickness;
-             material.attenuationColor = attenuationColor;
-             material.attenuationDistance = attenuationDistance;
-             material.anisotropy = anisotropy;
-             material.anisotropyRotation = anisotropyRotation;
-             material.clearcoat = clearcoat;
-             material.clearcoatRoughness = clearcoatRoughness;
-             material.sheenColor = sheenColor;
-             material.sheenRoughness = sheenRoughness;
-             material.baseColor = baseColor;
-             material.metallic = metallic;
-             return material;
-           }),
-           py::kw_only(), py::arg("name") = "", py::arg("preset") = py::none(), py::arg("distribution") = py::none(),
-           py::arg("geometry") = py::none(), py::arg("fresnel") = py::none(), py::arg("alpha") = py::none(),
-           py::arg("roughness") = py::none(), py::arg("f0") = py::none(), py::arg("ior") = py::none(),
-           py::arg("eta") = py::none(), py::arg("k") = py::none(), py::arg("diffuse") = py::none(),
-           py::arg("energy_compensation") = false, py::arg("transmission") = py::none(),
-           py::arg("thin_walled") = py::none(), py::arg("thickness") = py::none(),
-           py::arg("attenuation_color") = py::none(), py::arg("attenuation_distance") = py::none(),
-           py::arg("anisotropy") = py::none(), py::arg("anisotropy_rotation") = py::none(),
-           py::arg("clearcoat") = py::none(), py::arg("clearcoat_roughness") = py::none(),
-           py::arg("sheen_color") = py::none(), py::arg("sheen_roughness") = py::none(),
-           py::arg("base_color") = py::none(), py::arg("metallic") = py::none())
-      .def_readwrite("name", &facet::Material::name)
-      .def_readwrite("preset", &facet::Material::preset)
-      .def_readwrite("distribution", &facet::Material::distribution)
-      .def_readwrite("geometry", &facet::Material::geometry)
-      .def_readwrite("fresnel", &facet::Material::fresnel)
-      .def_readwrite("alpha", &facet::Material::alpha)
-      .def_readwrite("roughness", &facet::Material::roughness)
-      .def_readwrite("f0", &facet::Material::f0)
-      .def_readwrite("ior", &facet::Material::ior)
-      .def_readwrite("eta", &facet::Material::eta)
-      .def_readwrite("k", &facet::Material::k)
-      .def_readwrite("diffuse", &facet::Material::diffuse)
-      .def_readwrite("energy_compensation", &facet::Material::energyCompensation)
-      .def_readwrite("transmission", &facet::Material::transmission)
-      .def_readwrite("thin_walled", &facet::Material::thinWalled)
-      .def_readwrite("thickness", &facet::Material::thickness)
-      .def_readwrite("attenuation_color", &facet::Material::attenuationColor)
-      .def_readwrite("attenuation_distance", &facet::Material::attenuationDistance)
-      .def_readwrite("anisotropy", &facet::Material::anisotropy)
-      .def_readwrite("anisotropy_rotation", &facet::Material::anisotropyRotation)
-      .def_readwrite("clearcoat", &facet::Material::clearcoat)
-      .def_readwrite("clearcoat_roughness", &facet::Material::clearcoatRoughness)
-      .def_readwrite("sheen_color", &facet::Material::sheenColor)
-      .def_readwrite("sheen_roughness", &facet::Material::sheenRoughness)
-      .def_readwrite("base_color", &facet::Material::baseColor)
-      .def_readwrite("metallic", &facet::Material::metallic);
+  bindMaterial(m);
 
   py::class_<facet::Cage>(m, "Cage", "A Catmull-Clark control cage in world space, 0-based indices")
       .def(py::init([](const Doubles& positions, const py::object& counts, const py::object& indices,
