@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "materials/models.h"
+#include "materials/parameter_table.h"
 #include "materials/presets.h"
 
 namespace facet::materials {
@@ -61,6 +62,21 @@ std::string formatNumber(double x) {
 
 std::string formatVector(glm::dvec3 v) { return formatNumber(v.x) + "," + formatNumber(v.y) + "," + formatNumber(v.z); }
 
+// A bounded parameter's range, from its row of the table.
+template <class Fail>
+void checkBounds(BoundedParameter parameter, double value, const Fail& fail) {
+  const auto [lo, hi] = parameter.bounds;
+  if (!(value >= lo && value <= hi))  // also rejects NaN
+    fail(parameter.key, "must be in [" + formatNumber(lo) + ", " + formatNumber(hi) + "], got " + formatNumber(value));
+}
+
+// The parameters given as they are used; the checks below see them in `m`.
+void copyPlainParameters(const MaterialSpec& spec, Material& m) {
+  forEachParameter([&](const auto& row) {
+    if (row.plain && spec.*row.spec) m.*row.plain = *(spec.*row.spec);
+  });
+}
+
 // The transmission fields of `spec` (or its preset) into `m`, whose
 // transmission factor and Fresnel are already resolved.
 template <class Fail>
@@ -90,7 +106,6 @@ void checkTransmission(const MaterialSpec& spec, const Preset* preset, Material&
     fail(indexField, "a transmissive material's index of refraction (inside over outside) must be >= 1, got " +
                          formatNumber(m.eta.x));
   if (m.energyCompensation) fail("energy_compensation", "is not defined for a transmissive material");
-  m.thinWalled = spec.thinWalled.value_or(false);
   if (preset) m.attenuationColor = preset->attenuationColor, m.attenuationDistance = preset->attenuationDistance;
   if (spec.attenuationColor) {
     for (int i = 0; i < 3; ++i)
@@ -108,24 +123,18 @@ void checkTransmission(const MaterialSpec& spec, const Preset* preset, Material&
     if (!m.thinWalled) fail("thickness", "is only used by a thin-walled material (thin_walled true)");
     if (!(*spec.thickness >= 0.0 && std::isfinite(*spec.thickness)))
       fail("thickness", "must be finite and >= 0, got " + formatNumber(*spec.thickness));
-    m.thickness = *spec.thickness;
   }
 }
 
-// The anisotropy fields of `spec` into `m`, whose models and transmission are
-// already resolved.
+// The anisotropy fields of `spec`, copied into `m`, whose models and
+// transmission are already resolved.
 template <class Fail>
-void checkAnisotropy(const MaterialSpec& spec, Material& m, const Fail& fail) {
-  if (spec.anisotropy) {
-    if (!(*spec.anisotropy >= 0.0 && *spec.anisotropy <= 1.0))  // also rejects NaN
-      fail("anisotropy", "must be in [0, 1], got " + formatNumber(*spec.anisotropy));
-    m.anisotropy = *spec.anisotropy;
-  }
+void checkAnisotropy(const MaterialSpec& spec, const Material& m, const Fail& fail) {
+  if (spec.anisotropy) checkBounds(bounded(&MaterialSpec::anisotropy), *spec.anisotropy, fail);
   if (spec.anisotropyRotation) {
     if (!std::isfinite(*spec.anisotropyRotation))
       fail("anisotropy_rotation", "must be a finite angle in radians, got " + formatNumber(*spec.anisotropyRotation));
     if (!spec.anisotropy) fail("anisotropy_rotation", "is only used with anisotropy (give anisotropy too)");
-    m.anisotropyRotation = *spec.anisotropyRotation;
   }
   if (m.anisotropy == 0.0) return;
   if (m.distribution == rules::f64::D_BLINN_PHONG)
@@ -133,36 +142,28 @@ void checkAnisotropy(const MaterialSpec& spec, Material& m, const Fail& fail) {
   if (isTransmissive(m)) fail("anisotropy", "is not defined for a transmissive material (transmission > 0)");
 }
 
-// The clear coat fields of `spec` into `m`, whose transmission is already
-// resolved.
+// The clear coat fields of `spec`, copied into `m`, whose transmission is
+// already resolved.
 template <class Fail>
-void checkClearcoat(const MaterialSpec& spec, Material& m, const Fail& fail) {
-  auto unit = [&](std::string_view field, double value) {
-    if (!(value >= 0.0 && value <= 1.0))  // also rejects NaN
-      fail(field, "must be in [0, 1], got " + formatNumber(value));
-    return value;
-  };
-  if (spec.clearcoat) m.clearcoat = unit("clearcoat", *spec.clearcoat);
+void checkClearcoat(const MaterialSpec& spec, const Material& m, const Fail& fail) {
+  if (spec.clearcoat) checkBounds(bounded(&MaterialSpec::clearcoat), *spec.clearcoat, fail);
   if (spec.clearcoatRoughness) {
-    m.clearcoatRoughness = unit("clearcoat_roughness", *spec.clearcoatRoughness);
+    checkBounds(bounded(&MaterialSpec::clearcoatRoughness), *spec.clearcoatRoughness, fail);
     if (!spec.clearcoat) fail("clearcoat_roughness", "is only used with clearcoat (give clearcoat too)");
   }
   if (m.clearcoat > 0.0 && isTransmissive(m))
     fail("clearcoat", "is not defined for a transmissive material (transmission > 0)");
 }
 
-// The sheen fields of `spec` into `m`, whose transmission is resolved.
+// The sheen fields of `spec`, copied into `m`, whose transmission is resolved.
 template <class Fail>
-void checkSheen(const MaterialSpec& spec, Material& m, const Fail& fail) {
-  m.sheenColor = spec.sheenColor.value_or(glm::dvec3(0.0));
+void checkSheen(const MaterialSpec& spec, const Material& m, const Fail& fail) {
   for (double channel : {m.sheenColor.x, m.sheenColor.y, m.sheenColor.z})
     if (!(channel >= 0.0 && channel <= 1.0))  // also rejects NaN
       fail("sheen_color", "each channel must be in [0, 1], got " + formatNumber(channel));
-  if (spec.sheenRoughness && !(*spec.sheenRoughness >= 0.0 && *spec.sheenRoughness <= 1.0))
-    fail("sheen_roughness", "must be in [0, 1], got " + formatNumber(*spec.sheenRoughness));
+  if (spec.sheenRoughness) checkBounds(bounded(&MaterialSpec::sheenRoughness), *spec.sheenRoughness, fail);
   if (spec.sheenRoughness && !spec.sheenColor)
     fail("sheen_roughness", "is only used with sheen_color (give sheen_color too)");
-  m.sheenRoughness = spec.sheenRoughness.value_or(0.0);
   if (m.sheenColor != glm::dvec3(0.0) && isTransmissive(m))
     fail("sheen_color", "is not defined for a transmissive material (transmission > 0)");
 }
@@ -192,8 +193,7 @@ MaterialSpec withMetallicRoughness(MaterialSpec spec, const Fail& fail) {
   for (int i = 0; i < 3; ++i)
     if (!((*spec.baseColor)[i] >= 0.0 && (*spec.baseColor)[i] <= 1.0))
       fail("base_color", "each channel must be in [0, 1], got " + formatNumber((*spec.baseColor)[i]));
-  if (!(*spec.metallic >= 0.0 && *spec.metallic <= 1.0))
-    fail("metallic", "must be in [0, 1], got " + formatNumber(*spec.metallic));
+  checkBounds(bounded(&MaterialSpec::metallic), *spec.metallic, fail);
   spec.diffuse = *spec.baseColor * (1.0 - *spec.metallic);
   spec.f0 = glm::mix(glm::dvec3(0.04), *spec.baseColor, *spec.metallic);
   spec.fresnel = "schlick";
@@ -224,10 +224,6 @@ Material buildMaterial(const MaterialSpec& given,
                        const std::function<std::string(std::string_view field)>& describeField) {
   auto fail = [&](std::string_view field, const std::string& rule) { throwFieldError(describeField(field), rule); };
   const MaterialSpec spec = withMetallicRoughness(given, fail);
-  auto checkRange = [&](std::string_view field, double value, double lo, double hi) {
-    if (!(value >= lo && value <= hi))  // also rejects NaN
-      fail(field, "must be in [" + formatNumber(lo) + ", " + formatNumber(hi) + "], got " + formatNumber(value));
-  };
   auto checkVector = [&](std::string_view field, glm::dvec3 v, double lo, bool loOpen) {
     for (int i = 0; i < 3; ++i) {
       bool ok = std::isfinite(v[i]) && (loOpen ? v[i] > lo : v[i] >= lo);
@@ -243,6 +239,7 @@ Material buildMaterial(const MaterialSpec& given,
 
   Material m;
   m.name = spec.name;
+  copyPlainParameters(spec, m);
   const Preset* preset = nullptr;
   if (spec.preset) {
     preset = findPreset(*spec.preset);
@@ -264,7 +261,7 @@ Material buildMaterial(const MaterialSpec& given,
     }
   };
   bool hasFresnelParameter = spec.f0 || spec.ior || spec.eta || spec.k || preset;
-  if (spec.transmission) checkRange("transmission", *spec.transmission, 0.0, 1.0);
+  if (spec.transmission) checkBounds(bounded(&MaterialSpec::transmission), *spec.transmission, fail);
   m.transmission = spec.transmission.value_or(preset ? preset->transmission : 0.0);
   const bool transmissive = isTransmissive(m);
   const int defaultFresnel = transmissive          ? rules::f64::F_DIELECTRIC
@@ -277,10 +274,10 @@ Material buildMaterial(const MaterialSpec& given,
   if (spec.alpha && spec.roughness) fail("alpha", "give alpha or roughness, not both");
   if (!spec.alpha && !spec.roughness) fail("alpha", "required (or roughness = sqrt(alpha))");
   if (spec.alpha) {
-    checkRange("alpha", *spec.alpha, 0.0, 1.0);
+    checkBounds(bounded(&MaterialSpec::alpha), *spec.alpha, fail);
     m.alpha = *spec.alpha;
   } else {
-    checkRange("roughness", *spec.roughness, 0.0, 1.0);
+    checkBounds(bounded(&MaterialSpec::roughness), *spec.roughness, fail);
     m.alpha = *spec.roughness * *spec.roughness;
   }
 
@@ -327,11 +324,7 @@ Material buildMaterial(const MaterialSpec& given,
       break;
   }
 
-  if (spec.diffuse) {
-    checkReflectance("diffuse", *spec.diffuse);
-    m.diffuse = *spec.diffuse;
-  }
-  m.energyCompensation = spec.energyCompensation.value_or(false);
+  if (spec.diffuse) checkReflectance("diffuse", *spec.diffuse);
   checkTransmission(spec, preset, m, fail);
   checkAnisotropy(spec, m, fail);
   checkClearcoat(spec, m, fail);

@@ -12,6 +12,7 @@
 #include <string>
 #include <string_view>
 
+#include "materials/material_parameters.h"
 #include "rules/rules.h"
 
 namespace facet::materials {
@@ -107,35 +108,15 @@ rules::f64::BrdfParams toParams64(const Material& material);
 rules::f32::BrdfParams toParams32(const Material& material);
 
 // What a user wrote, before validation. Field names are the JSON keys; the
-// command line uses the same names as flags.
+// command line uses the same names as flags. Besides the name and the
+// models' names, one optional field a row of materials/material_parameters.h
+// (alpha, roughness, f0, ..., sheenRoughness).
 struct MaterialSpec {
   std::string name;
-  std::optional<std::string> preset;
-  std::optional<std::string> distribution;
-  std::optional<std::string> geometry;
-  std::optional<std::string> fresnel;
-  std::optional<double> alpha;
-  std::optional<double> roughness;
-  std::optional<glm::dvec3> f0;
-  std::optional<glm::dvec3> ior;
-  std::optional<glm::dvec3> eta;
-  std::optional<glm::dvec3> k;
-  std::optional<glm::dvec3> diffuse;
-  // glTF's metallic-roughness parameters, in place of diffuse, f0 and a preset.
-  std::optional<glm::dvec3> baseColor;
-  std::optional<double> metallic;
-  std::optional<bool> energyCompensation;
-  std::optional<double> transmission;
-  std::optional<bool> thinWalled;
-  std::optional<glm::dvec3> attenuationColor;
-  std::optional<double> attenuationDistance;
-  std::optional<double> thickness;
-  std::optional<double> anisotropy;
-  std::optional<double> anisotropyRotation;
-  std::optional<double> clearcoat;
-  std::optional<double> clearcoatRoughness;
-  std::optional<glm::dvec3> sheenColor;
-  std::optional<double> sheenRoughness;
+  std::optional<std::string> preset, distribution, geometry, fresnel;
+#define FACET_MATERIAL_SPEC_FIELD(type, member, ...) std::optional<type> member;
+  FACET_MATERIAL_PARAMETERS(FACET_MATERIAL_SPEC_FIELD)
+#undef FACET_MATERIAL_SPEC_FIELD
 };
 
 // Validates and resolves a spec. Throws std::invalid_argument whose message

@@ -2,68 +2,43 @@
 // may hold, read into a MaterialSpec, and a built material written back.
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
+#include <type_traits>
 
 #include "materials/material.h"
 #include "materials/models.h"
+#include "materials/parameter_table.h"
 #include "materials/strict_json.h"
 
 namespace facet::materials {
+
+namespace {
+
+// The keys a material file may hold, in the order an unknown key's error
+// lists them: the name and the models' names, then every parameter's.
+constexpr auto kKeys = [] {
+  std::array<const char*, 5 + kMaterialParameterCount> keys{"name", "preset", "distribution", "geometry", "fresnel"};
+  std::size_t i = 5;
+  forEachParameter([&](const auto& row) { keys[i++] = row.key; });
+  return keys;
+}();
+
+}  // namespace
 
 MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view source) {
   auto fail = [&](std::string_view field, const std::string& rule) {
     throw std::invalid_argument(std::string(source) + ": field '" + std::string(field) + "': " + rule);
   };
   if (!json.is_object()) throw std::invalid_argument(std::string(source) + ": a material must be a JSON object");
+  if (const std::optional<std::string> key = findUnknownKey(json, kKeys)) fail(*key, unknownFieldRule(kKeys));
   auto text = [&](const std::string& key) -> std::optional<std::string> {
     if (!json.contains(key)) return std::nullopt;
     if (!json[key].is_string()) fail(key, "expected a string");
     return json[key].get<std::string>();
   };
-  auto number = [&](const std::string& key) -> std::optional<double> {
-    if (!json.contains(key)) return std::nullopt;
-    if (!json[key].is_number()) fail(key, "expected a number");
-    return json[key].get<double>();
-  };
-  auto color = [&](const std::string& key) -> std::optional<glm::dvec3> {
-    if (!json.contains(key)) return std::nullopt;
-    const nlohmann::json& value = json[key];
-    if (value.is_number()) return glm::dvec3(value.get<double>());
-    if (!value.is_array() || value.size() != 3 || !value[0].is_number() || !value[1].is_number() ||
-        !value[2].is_number())
-      fail(key, "expected a number or an array of 3 numbers (r, g, b)");
-    return glm::dvec3(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
-  };
-
-  static const char* const kKeys[] = {"name",
-                                      "preset",
-                                      "distribution",
-                                      "geometry",
-                                      "fresnel",
-                                      "alpha",
-                                      "roughness",
-                                      "f0",
-                                      "ior",
-                                      "eta",
-                                      "k",
-                                      "diffuse",
-                                      "base_color",
-                                      "metallic",
-                                      "energy_compensation",
-                                      "transmission",
-                                      "thin_walled",
-                                      "attenuation_color",
-                                      "attenuation_distance",
-                                      "thickness",
-                                      "anisotropy",
-                                      "anisotropy_rotation",
-                                      "clearcoat",
-                                      "clearcoat_roughness",
-                                      "sheen_color",
-                                      "sheen_roughness"};
-  if (const std::optional<std::string> key = findUnknownKey(json, kKeys)) fail(*key, unknownFieldRule(kKeys));
 
   MaterialSpec spec;
   spec.name = text("name").value_or("");
@@ -71,33 +46,28 @@ MaterialSpec materialSpecFromJson(const nlohmann::json& json, std::string_view s
   spec.distribution = text("distribution");
   spec.geometry = text("geometry");
   spec.fresnel = text("fresnel");
-  spec.alpha = number("alpha");
-  spec.roughness = number("roughness");
-  spec.f0 = color("f0");
-  spec.ior = color("ior");
-  spec.eta = color("eta");
-  spec.k = color("k");
-  spec.diffuse = color("diffuse");
-  spec.baseColor = color("base_color");
-  spec.metallic = number("metallic");
-  if (json.contains("energy_compensation")) {
-    if (!json["energy_compensation"].is_boolean()) fail("energy_compensation", "expected true or false");
-    spec.energyCompensation = json["energy_compensation"].get<bool>();
-  }
-  spec.transmission = number("transmission");
-  if (json.contains("thin_walled")) {
-    if (!json["thin_walled"].is_boolean()) fail("thin_walled", "expected true or false");
-    spec.thinWalled = json["thin_walled"].get<bool>();
-  }
-  spec.attenuationColor = color("attenuation_color");
-  spec.attenuationDistance = number("attenuation_distance");
-  spec.thickness = number("thickness");
-  spec.anisotropy = number("anisotropy");
-  spec.anisotropyRotation = number("anisotropy_rotation");
-  spec.clearcoat = number("clearcoat");
-  spec.clearcoatRoughness = number("clearcoat_roughness");
-  spec.sheenColor = color("sheen_color");
-  spec.sheenRoughness = number("sheen_roughness");
+  forEachParameter([&](const auto& row) {
+    if (!json.contains(row.key)) return;
+    const nlohmann::json& value = json[row.key];
+    using T = typename std::decay_t<decltype(row)>::Value;
+    if constexpr (std::is_same_v<T, double>) {
+      if (!value.is_number()) fail(row.key, "expected a number");
+      spec.*row.spec = value.get<double>();
+    } else if constexpr (std::is_same_v<T, bool>) {
+      if (!value.is_boolean()) fail(row.key, "expected true or false");
+      spec.*row.spec = value.get<bool>();
+    } else {
+      static_assert(std::is_same_v<T, glm::dvec3>);
+      if (value.is_number()) {
+        spec.*row.spec = glm::dvec3(value.get<double>());
+        return;
+      }
+      if (!value.is_array() || value.size() != 3 || !value[0].is_number() || !value[1].is_number() ||
+          !value[2].is_number())
+        fail(row.key, "expected a number or an array of 3 numbers (r, g, b)");
+      spec.*row.spec = glm::dvec3(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
+    }
+  });
   return spec;
 }
 

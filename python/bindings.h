@@ -84,7 +84,10 @@ inline std::vector<Vec3> vectors(const Doubles& a) {
 // A Scene, or the scene file at a path (str or os.PathLike).
 facet::Scene sceneOf(const py::object& sceneOrPath);
 
-// Material, Cage, Object, Light, Camera, Environment, Scene, SceneObject,
+// Material (material_bindings.cpp).
+void bindMaterial(py::module_& m);
+
+// Material (through bindMaterial), Cage, Object, Light, Camera, Environment, Scene, SceneObject,
 // load_scene and load_cage (scene_bindings.cpp).
 void bindScenes(py::module_& m);
 

@@ -27,31 +27,31 @@ class Material:
     eta: Optional[Vec3]
     k: Optional[Vec3]
     diffuse: Optional[Vec3]
+    base_color: Optional[Vec3]
+    metallic: Optional[float]
     energy_compensation: bool
     transmission: Optional[float]
     thin_walled: Optional[bool]
-    thickness: Optional[float]
     attenuation_color: Optional[Vec3]
     attenuation_distance: Optional[float]
+    thickness: Optional[float]
     anisotropy: Optional[float]
     anisotropy_rotation: Optional[float]
     clearcoat: Optional[float]
     clearcoat_roughness: Optional[float]
     sheen_color: Optional[Vec3]
     sheen_roughness: Optional[float]
-    base_color: Optional[Vec3]
-    metallic: Optional[float]
     def __init__(self, *, name: str = "", preset: Optional[str] = None, distribution: Optional[str] = None,
                  geometry: Optional[str] = None, fresnel: Optional[str] = None, alpha: Optional[float] = None,
                  roughness: Optional[float] = None, f0: Optional[Vec3] = None, ior: Optional[Vec3] = None,
                  eta: Optional[Vec3] = None, k: Optional[Vec3] = None, diffuse: Optional[Vec3] = None,
+                 base_color: Optional[Vec3] = None, metallic: Optional[float] = None,
                  energy_compensation: bool = False, transmission: Optional[float] = None,
-                 thin_walled: Optional[bool] = None, thickness: Optional[float] = None,
-                 attenuation_color: Optional[Vec3] = None, attenuation_distance: Optional[float] = None,
+                 thin_walled: Optional[bool] = None, attenuation_color: Optional[Vec3] = None,
+                 attenuation_distance: Optional[float] = None, thickness: Optional[float] = None,
                  anisotropy: Optional[float] = None, anisotropy_rotation: Optional[float] = None,
                  clearcoat: Optional[float] = None, clearcoat_roughness: Optional[float] = None,
-                 sheen_color: Optional[Vec3] = None, sheen_roughness: Optional[float] = None,
-                 base_color: Optional[Vec3] = None, metallic: Optional[float] = None) -> None: ...
+                 sheen_color: Optional[Vec3] = None, sheen_roughness: Optional[float] = None) -> None: ...
 
 class Cage:
     positions: numpy.ndarray  # read-only, (n, 3)

@@ -9,10 +9,12 @@
 #include <array>
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "materials/parameter_table.h"
 #include "scenes/scene.h"
 #include "scenes/texture.h"
 #include "scenes/input_error.h"
@@ -114,6 +116,9 @@ GltfCutout readCutout(const tinygltf::Material& gltf, std::size_t index, const G
 // `where`, a finite number; `fallback` when absent.
 double member(const tinygltf::Value& value, const char* key, double fallback, const std::string& where,
               const GltfReader& reader);
+// The rule a glTF factor breaks, if any: the bounds of the row of the
+// material parameter it becomes (materials/parameter_table.h).
+std::optional<std::string> factorRule(double value, materials::BoundedParameter parameter);
 // Extension `name` of a material; null when it has none.
 const tinygltf::Value* extension(const tinygltf::Material& gltf, const char* name);
 

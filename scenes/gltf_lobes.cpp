@@ -2,10 +2,9 @@
 // KHR_materials_clearcoat, KHR_materials_sheen and KHR_materials_anisotropy
 // (docs/gltf.md).
 #include <optional>
-#include <utility>
+#include <string>
 
 #include "scenes/gltf_internal.h"
-#include "scenes/value_rules.h"
 
 namespace facet::scene::detail {
 
@@ -18,9 +17,11 @@ void applyClearcoat(const tinygltf::Material& gltf, const std::string& material,
   const std::string at = material + ".extensions.KHR_materials_clearcoat";
   const double strength = member(*c, "clearcoatFactor", 0.0, at, reader);
   const double roughness = member(*c, "clearcoatRoughnessFactor", 0.0, at, reader);
-  for (auto [field, value] :
-       {std::pair{".clearcoatFactor", strength}, std::pair{".clearcoatRoughnessFactor", roughness}})
-    if (const std::optional<std::string> rule = rangeRule(value, 0.0, 1.0)) reader.fail(at + field, *rule);
+  using materials::MaterialSpec, materials::bounded;
+  if (const std::optional<std::string> rule = factorRule(strength, bounded(&MaterialSpec::clearcoat)))
+    reader.fail(at + ".clearcoatFactor", *rule);
+  if (const std::optional<std::string> rule = factorRule(roughness, bounded(&MaterialSpec::clearcoatRoughness)))
+    reader.fail(at + ".clearcoatRoughnessFactor", *rule);
   if (strength > 0.0 && materials::isTransmissive(m)) {
     reader.warn(at, "is not applied to a transmissive material: facet renders it without its coat");
     return;
@@ -49,7 +50,8 @@ void applySheen(const tinygltf::Material& gltf, const std::string& material, con
     }
   }
   const double roughness = member(*s, "sheenRoughnessFactor", 0.0, at, reader);
-  if (const std::optional<std::string> rule = rangeRule(roughness, 0.0, 1.0))
+  if (const std::optional<std::string> rule =
+          factorRule(roughness, materials::bounded(&materials::MaterialSpec::sheenRoughness)))
     reader.fail(at + ".sheenRoughnessFactor", *rule);
   if (s->Has("sheenRoughnessTexture"))
     reader.warn(at + ".sheenRoughnessTexture", "is not read; the sheen has sheenRoughnessFactor everywhere");
@@ -71,7 +73,8 @@ void applyAnisotropy(const tinygltf::Material& gltf, const std::string& material
   if (!a) return;
   const std::string at = material + ".extensions.KHR_materials_anisotropy";
   const double strength = member(*a, "anisotropyStrength", 0.0, at, reader);
-  if (const std::optional<std::string> rule = rangeRule(strength, 0.0, 1.0))
+  if (const std::optional<std::string> rule =
+          factorRule(strength, materials::bounded(&materials::MaterialSpec::anisotropy)))
     reader.fail(at + ".anisotropyStrength", *rule);
   const double rotation = member(*a, "anisotropyRotation", 0.0, at, reader);
   if (strength > 0.0 && materials::isTransmissive(m)) {

@@ -182,9 +182,11 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
       reader.fail(where + ".baseColorFactor", "every component must be in [0, 1], is " + formatNumber(c));
   glm::dvec3 base(1.0);
   if (pbr.baseColorFactor.size() >= 3) base = {pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]};
-  for (auto [field, value] :
-       {std::pair{".metallicFactor", pbr.metallicFactor}, std::pair{".roughnessFactor", pbr.roughnessFactor}})
-    if (const std::optional<std::string> rule = rangeRule(value, 0.0, 1.0)) reader.fail(where + field, *rule);
+  using materials::MaterialSpec, materials::bounded;
+  if (const std::optional<std::string> rule = factorRule(pbr.metallicFactor, bounded(&MaterialSpec::metallic)))
+    reader.fail(where + ".metallicFactor", *rule);
+  if (const std::optional<std::string> rule = factorRule(pbr.roughnessFactor, bounded(&MaterialSpec::roughness)))
+    reader.fail(where + ".roughnessFactor", *rule);
   const double metallic = pbr.metallicFactor;
   const double roughness = pbr.roughnessFactor;
   const std::string name = gltf.name.empty() ? "material " + std::to_string(index) : gltf.name;

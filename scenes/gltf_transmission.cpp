@@ -21,6 +21,10 @@ double member(const tinygltf::Value& value, const char* key, double fallback, co
   return x.GetNumberAsDouble();
 }
 
+std::optional<std::string> factorRule(double value, materials::BoundedParameter parameter) {
+  return rangeRule(value, parameter.bounds.lo, parameter.bounds.hi);
+}
+
 const tinygltf::Value* extension(const tinygltf::Material& gltf, const char* name) {
   const auto found = gltf.extensions.find(name);
   return found == gltf.extensions.end() ? nullptr : &found->second;
@@ -74,7 +78,8 @@ void applyTransmission(const tinygltf::Material& gltf, const std::string& materi
   if (t->Has("transmissionTexture"))
     reader.fail(where + ".transmissionTexture", "is not read: give transmissionFactor alone");
   m.transmission = member(*t, "transmissionFactor", 0.0, where, reader);
-  if (const std::optional<std::string> rule = rangeRule(m.transmission, 0.0, 1.0))
+  if (const std::optional<std::string> rule =
+          factorRule(m.transmission, materials::bounded(&materials::MaterialSpec::transmission)))
     reader.fail(where + ".transmissionFactor", *rule);
   if (!materials::isTransmissive(m)) return;
   if (specular)

@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 #include "materials/models.h"
@@ -34,12 +35,9 @@ std::string flagFor(std::string_view field) {
   if (field == "distribution") return "--d";
   if (field == "geometry") return "--g";
   if (field == "fresnel") return "--f";
-  if (field == "anisotropy_rotation") return "--anisotropy-rotation";
-  if (field == "clearcoat_roughness") return "--clearcoat-roughness";
-  if (field == "sheen_color") return "--sheen-color";
-  if (field == "sheen_roughness") return "--sheen-roughness";
-  if (field == "base_color") return "--base-color";
-  return "--" + std::string(field);
+  std::string flag = "--" + std::string(field);
+  std::replace(flag.begin(), flag.end(), '_', '-');
+  return flag;
 }
 
 }  // namespace
@@ -67,25 +65,9 @@ void addMaterialOptions(CLI::App& command, MaterialOptions& o) {
   command.add_option(
       "--f", o.f,
       "Fresnel: " + modelList(materials::kFresnelTerms) + " (default schlick if F(0) or a preset is given, else none)");
-  command.add_option("--f0", o.f0, "F(0) = c_spec for schlick (or to derive an ior): x or r,g,b");
-  command.add_option("--ior", o.ior, "index of refraction for dielectric: x or r,g,b");
-  command.add_option("--eta", o.eta, "conductor: real part of the complex index, r,g,b");
-  command.add_option("--k", o.k, "conductor: extinction coefficient, r,g,b");
-  command.add_option("--alpha", o.alpha, "microfacet alpha in [0, 1] (alpha = roughness^2)");
-  command.add_option("--roughness", o.roughness, "perceptual roughness in [0, 1], instead of --alpha");
-  command.add_option("--diffuse", o.diffuse, "Lambert c_diff: x or r,g,b (default 0)");
-  command.add_option("--base-color", o.baseColor,
-                     "glTF's base colour, linear r,g,b or x in [0, 1], with --metallic: instead of --diffuse and --f0");
-  command.add_option("--metallic", o.metallic, "glTF's metallic in [0, 1], with --base-color");
-  command.add_option("--anisotropy", o.anisotropy,
-                     "anisotropy strength in [0, 1]: alpha along the tangent (the x axis) = mix(alpha, 1, s^2)");
-  command.add_option("--anisotropy-rotation", o.anisotropyRotation,
-                     "the tangent's rotation about the normal from the x axis, radians");
-  command.add_option("--clearcoat", o.clearcoat, "clear coat strength in [0, 1]: a GGX lobe of F(0) = 0.04 on top");
-  command.add_option("--clearcoat-roughness", o.clearcoatRoughness, "the clear coat's perceptual roughness in [0, 1]");
-  command.add_option("--sheen-color", o.sheenColor,
-                     "sheen color, linear RGB in [0, 1] (r,g,b or one value): a Charlie lobe between base and coat");
-  command.add_option("--sheen-roughness", o.sheenRoughness, "the sheen's roughness in [0, 1]");
+  materials::forEachParameterIndexed([&](const auto& row, std::size_t i) {
+    if (row.flagHelp) command.add_option(flagFor(row.key), o.parameters[i], row.flagHelp);
+  });
   command.add_option("--preset", o.preset, "F(0) from a preset (see `facet presets`)");
   command.add_option("--material", o.material_file, "JSON material file instead of the flags above");
 }
@@ -101,9 +83,8 @@ CLI::App* addMaterialCommand(CLI::App& parent, const std::string& name, const st
 
 materials::Material resolveMaterial(const MaterialOptions& o) {
   if (o.material_file) {
-    if (o.d || o.g || o.f || o.f0 || o.ior || o.eta || o.k || o.alpha || o.roughness || o.diffuse || o.baseColor ||
-        o.metallic || o.preset || o.anisotropy || o.anisotropyRotation || o.clearcoat || o.clearcoatRoughness ||
-        o.sheenColor || o.sheenRoughness)
+    const bool parameterGiven = std::ranges::any_of(o.parameters, [](const auto& text) { return text.has_value(); });
+    if (o.d || o.g || o.f || o.preset || parameterGiven)
       throw std::invalid_argument("--material: cannot be combined with material flags");
     return materials::loadMaterial(*o.material_file);
   }
@@ -115,21 +96,14 @@ materials::Material resolveMaterial(const MaterialOptions& o) {
   spec.distribution = o.d;
   spec.geometry = o.g;
   spec.fresnel = o.f;
-  if (o.alpha) spec.alpha = parseNumber("--alpha", *o.alpha);
-  if (o.roughness) spec.roughness = parseNumber("--roughness", *o.roughness);
-  if (o.f0) spec.f0 = parseColor("--f0", *o.f0);
-  if (o.ior) spec.ior = parseColor("--ior", *o.ior);
-  if (o.eta) spec.eta = parseColor("--eta", *o.eta);
-  if (o.k) spec.k = parseColor("--k", *o.k);
-  if (o.diffuse) spec.diffuse = parseColor("--diffuse", *o.diffuse);
-  if (o.baseColor) spec.baseColor = parseColor("--base-color", *o.baseColor);
-  if (o.metallic) spec.metallic = parseNumber("--metallic", *o.metallic);
-  if (o.anisotropy) spec.anisotropy = parseNumber("--anisotropy", *o.anisotropy);
-  if (o.anisotropyRotation) spec.anisotropyRotation = parseNumber("--anisotropy-rotation", *o.anisotropyRotation);
-  if (o.clearcoat) spec.clearcoat = parseNumber("--clearcoat", *o.clearcoat);
-  if (o.clearcoatRoughness) spec.clearcoatRoughness = parseNumber("--clearcoat-roughness", *o.clearcoatRoughness);
-  if (o.sheenColor) spec.sheenColor = parseColor("--sheen-color", *o.sheenColor);
-  if (o.sheenRoughness) spec.sheenRoughness = parseNumber("--sheen-roughness", *o.sheenRoughness);
+  // Only numbers and colours are flags (materials/material_parameters.h).
+  materials::forEachParameterIndexed([&](const auto& row, std::size_t i) {
+    const std::optional<std::string>& text = o.parameters[i];
+    if (!text) return;
+    using T = typename std::decay_t<decltype(row)>::Value;
+    if constexpr (std::is_same_v<T, double>) spec.*row.spec = parseNumber(flagFor(row.key), *text);
+    if constexpr (std::is_same_v<T, glm::dvec3>) spec.*row.spec = parseColor(flagFor(row.key), *text);
+  });
   return materials::buildMaterial(spec, flagFor);
 }
 

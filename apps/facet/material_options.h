@@ -1,24 +1,27 @@
 // Command-line flags that describe a material (shared by brdf, albedo and
-// plot): --d --g --f --f0 --ior --eta --k --alpha --roughness --diffuse
-// --anisotropy --anisotropy-rotation --clearcoat --clearcoat-roughness --sheen-color --sheen-roughness --preset, or
-// --material FILE.json; and render's flags that change a model's materials and fields: --material
-// [OBJECT=]FILE|PRESET, --set.
+// plot): --d --g --f, a flag per row of the material parameter table that
+// has one (--alpha, --f0, ..., --sheen-roughness), --preset, or --material
+// FILE.json; and render's flags that change a model's materials and fields:
+// --material [OBJECT=]FILE|PRESET, --set.
 #pragma once
 
 #include <CLI/CLI.hpp>
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "materials/material.h"
+#include "materials/parameter_table.h"
 #include "scenes/scene.h"
 
 namespace facet::cli {
 
 struct MaterialOptions {
-  std::optional<std::string> d, g, f, f0, ior, eta, k, alpha, roughness, diffuse, baseColor, metallic, preset;
-  std::optional<std::string> anisotropy, anisotropyRotation, clearcoat, clearcoatRoughness, sheenColor, sheenRoughness;
+  std::optional<std::string> d, g, f, preset;
+  // By row of materials/parameter_table.h; a row without a flag stays empty.
+  std::array<std::optional<std::string>, materials::kMaterialParameterCount> parameters;
   std::optional<std::string> material_file;
 };
 

@@ -3,6 +3,7 @@ same numbers from both, and facet's own messages in Python's exceptions."""
 import json
 import os
 import pathlib
+import re
 import subprocess
 import threading
 import unittest
@@ -265,6 +266,24 @@ class Scenes(unittest.TestCase):
             facet.Scene([facet.Object(cube())], camera=facet.Camera(eye=(0, 0, 0)))
         with self.assertRaisesRegex(facet.Error, "environment.file"):
             facet.Scene([facet.Object(cube())], environment=facet.Environment(WORK / "missing.exr"))
+
+    def test_every_material_keyword_reaches_its_property_and_the_scene_rules_under_its_name(self):
+        """Each parameter keyword, given a value out of place, is the field the scene's error names."""
+        signature = facet.Material.__init__.__doc__.splitlines()[0]
+        kinds = dict(re.findall(r"(\w+): (?:Optional\[)?(float|bool|tuple)", signature))
+        parameters = [k for k in kinds if k not in ("name", "preset", "distribution", "geometry", "fresnel")]
+        self.assertEqual(parameters[0], "alpha")
+        transmissive = {"transmission": 1.0, "ior": (1.5, 1.5, 1.5)}
+        companions = {"metallic": {"base_color": (0.5, 0.5, 0.5)}, "base_color": {"metallic": 0.0},
+                      "energy_compensation": transmissive}
+        for key in parameters:
+            value = {"float": float("nan"), "bool": True, "tuple": (float("nan"),) * 3}[kinds[key]]
+            given = {} if key in ("alpha", "roughness") else {"alpha": 0.1}
+            material = facet.Material(**given, **companions.get(key, {}), **{key: value})
+            read = getattr(material, key)
+            self.assertTrue(read is True if value is True else np.isnan(read).all(), key)
+            with self.assertRaisesRegex(facet.Error, rf"materials\[0\]\.{key}: ", msg=key):
+                facet.Scene([facet.Object(cube())], materials=[material])
 
     def test_index_arrays_are_integers_within_range_never_wrapped_or_truncated(self):
         corners = np.array([[i & 1, i >> 1 & 1, i >> 2 & 1] for i in range(8)], dtype=float)
