@@ -1,0 +1,124 @@
+#include "engine/preview_stage.h"
+
+#include <unistd.h>
+
+#include <random>
+#include <stdexcept>
+#include <utility>
+
+#include "engine/camera/camera_path.h"
+#include "engine/image/image_io.h"
+#include "engine/image/movie.h"
+#include "scenes/input_error.h"
+#include "scenes/scene_file.h"
+#include "scenes/studio_environment.h"
+
+namespace facet {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A turntable's frames, in a folder of their own that goes when the movie
+// is made or abandoned, whichever way that ends.
+class FrameFolder {
+ public:
+  FrameFolder() {
+    std::random_device entropy;
+    path_ =
+        fs::temp_directory_path() / ("facet-preview-" + std::to_string(::getpid()) + "-" + std::to_string(entropy()));
+    fs::create_directory(path_);
+  }
+  ~FrameFolder() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  FrameFolder(const FrameFolder&) = delete;
+  FrameFolder& operator=(const FrameFolder&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+// The model with `reference` on every object, and the material's name.
+std::pair<scene::Scene, std::string> withMaterial(const scene::Scene& model, const std::string& reference) {
+  scene::Scene scene = model;
+  materials::Material material;
+  try {
+    material = scene::loadMaterialReference(reference, scene.textures);
+  } catch (const scene::InputError& e) {
+    // A preset's errors name render's flag; here the material is one of a list.
+    const std::string message = e.what(), flag = "--material: ";
+    if (message.rfind(flag, 0) != 0) throw;
+    throw std::invalid_argument("material '" + reference + "': " + message.substr(flag.size()));
+  }
+  std::string label = material.name;
+  scene::assignMaterial(scene, "", std::move(material));
+  return {std::move(scene), std::move(label)};
+}
+
+}  // namespace
+
+scene::Scene studioLitModel(scene::Scene model) {
+  model.lights.clear();
+  model.environment = scene::studioEnvironment();
+  return model;
+}
+
+PreviewStage::PreviewStage(const scene::Scene& model, const std::vector<std::string>& materials,
+                           const PreviewStageSettings& settings)
+    : model_(model), settings_(settings) {
+  for (const std::string& reference : materials) {
+    auto [scene, label] = withMaterial(model, reference);
+    scenes_.push_back(std::move(scene));
+    labels_.push_back(std::move(label));
+  }
+  layout_ = contactSheetLayout(int(scenes_.size()), model.render.width, model.render.height, settings.columns);
+  if (settings.ground) ground_ = scene::groundScenes(model);
+}
+
+PreviewSheet PreviewStage::render(Renderer& renderer, int frame, const PreviewProgress& progress) const {
+  if (frame < 0 || frame >= frames())
+    throw std::invalid_argument("preview frame " + std::to_string(frame) + ": expected one of the " +
+                                std::to_string(frames()) + " frames");
+  const int width = model_.render.width, height = model_.render.height;
+  const scene::Camera camera =
+      settings_.turntable ? camera::turntableCamera(model_.camera, frame, *settings_.turntable) : model_.camera;
+  std::optional<scene::GroundScenes> ground = ground_;
+  if (ground) ground->holdout.camera = ground->ground.camera = camera;
+  PreviewSheet sheet;
+  sheet.frame = frame;
+  std::vector<ContactCell> cells;
+  for (std::size_t i = 0; i < scenes_.size(); ++i) {
+    scene::Scene scene = scenes_[i];
+    scene.camera = camera;
+    PreviewPicture picture{labels_[i], frame,
+                           renderAdaptive(renderer, scene, settings_.backend, settings_.adaptive, settings_.threads,
+                                          ground ? &*ground : nullptr),
+                           {}};
+    picture.rgba = previewPixels(picture.report.image.beauty, width, height, settings_.look);
+    cells.push_back({picture.rgba, picture.label});
+    if (progress) progress(picture);
+    sheet.pictures.push_back(std::move(picture));
+  }
+  sheet.rgba = composeContactSheet(layout_, cells);
+  return sheet;
+}
+
+void writePreviewStage(Renderer& renderer, const PreviewStage& stage, const fs::path& output, double fps,
+                       const std::string& searchPath, const PreviewProgress& progress) {
+  const ContactSheetLayout& layout = stage.layout();
+  if (!stage.turntable()) {
+    const PreviewSheet sheet = stage.render(renderer, 0, progress);
+    writeAllOrNothing({rgbaPngFile(output, layout.width(), layout.height(), sheet.rgba)});
+    return;
+  }
+  const FrameFolder folder;
+  for (int frame = 0; frame < stage.frames(); ++frame) {
+    const fs::path file = framePath(folder.path(), frame);
+    rgbaPngFile(file, layout.width(), layout.height(), stage.render(renderer, frame, progress).rgba).write(file);
+  }
+  writeMovie(folder.path(), stage.frames(), fps, output, searchPath);
+}
+
+}  // namespace facet

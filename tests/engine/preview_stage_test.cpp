@@ -1,0 +1,103 @@
+// The preview stage on the CPU reference: one picture per material, in the
+// materials' order, labelled with the material's name and of the model's
+// size, laid out on a sheet of the layout's size; a turntable's frames look
+// from different places; a material that does not load is named; the sheet
+// is written as a PNG.
+#include "engine/preview_stage.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "tests/support/ground_blob.h"
+#include "tests/support/temp_dir.h"
+
+namespace facet {
+namespace {
+
+// Few samples: the test is about what the stage returns, not how clean it is.
+PreviewStageSettings quickSettings() {
+  PreviewStageSettings s;
+  s.adaptive.maxSpp = 8;
+  s.adaptive.minRounds = 2;
+  s.adaptive.tileSize = 8;
+  s.backend = Backend::Cpu;
+  return s;
+}
+
+scene::Scene smallModel() {
+  scene::Scene model = studioLitModel(testing::blobOverGround());
+  model.render.width = 24;
+  model.render.height = 16;
+  return model;
+}
+
+TEST(PreviewStage, OnePictureAMaterialWithItsNameAndTheModelsSize) {
+  Renderer renderer;
+  int reported = 0;
+  const PreviewStage stage(smallModel(), {"gold", "silver"}, quickSettings());
+  ASSERT_EQ(stage.frames(), 1);
+  const PreviewSheet sheet = stage.render(renderer, 0, [&](const PreviewPicture&) { ++reported; });
+  EXPECT_EQ(reported, 2) << "the progress sees each picture";
+  ASSERT_EQ(sheet.pictures.size(), 2u);
+  EXPECT_EQ(sheet.pictures[0].label, stage.labels()[0]);
+  EXPECT_EQ(sheet.pictures[1].label, stage.labels()[1]);
+  EXPECT_NE(sheet.pictures[0].label, sheet.pictures[1].label);
+  EXPECT_EQ(sheet.pictures[0].label.find('/'), std::string::npos);
+  for (const PreviewPicture& p : sheet.pictures) {
+    EXPECT_EQ(p.frame, 0);
+    EXPECT_EQ(p.report.image.width, 24);
+    EXPECT_EQ(p.report.image.height, 16);
+    EXPECT_EQ(p.rgba.size(), 24u * 16u * 4u) << p.label;
+    EXPECT_LE(p.report.tileSpp.front(), 8) << "the sample cap holds";
+  }
+  EXPECT_NE(sheet.pictures[0].rgba, sheet.pictures[1].rgba) << "each cell wears its own material";
+  const ContactSheetLayout& layout = stage.layout();
+  EXPECT_EQ(layout.count, 2);
+  EXPECT_EQ(layout.cellWidth, 24);
+  EXPECT_EQ(layout.cellHeight, 16);
+  EXPECT_EQ(sheet.rgba.size(), std::size_t(layout.width()) * std::size_t(layout.height()) * 4u);
+}
+
+TEST(PreviewStage, ATurntablesFramesLookFromDifferentPlaces) {
+  PreviewStageSettings settings = quickSettings();
+  settings.turntable = 4;
+  settings.ground = false;
+  const PreviewStage stage(smallModel(), {"gold"}, settings);
+  ASSERT_TRUE(stage.turntable());
+  ASSERT_EQ(stage.frames(), 4);
+  Renderer renderer;
+  const PreviewSheet first = stage.render(renderer, 0), second = stage.render(renderer, 1);
+  EXPECT_EQ(second.frame, 1);
+  EXPECT_EQ(second.pictures.at(0).frame, 1);
+  EXPECT_NE(first.pictures.at(0).rgba, second.pictures.at(0).rgba);
+  EXPECT_THROW(stage.render(renderer, 4), std::invalid_argument);
+}
+
+TEST(PreviewStage, AMaterialThatDoesNotLoadIsNamed) {
+  try {
+    const PreviewStage stage(smallModel(), {"gold", "no-such-preset"}, quickSettings());
+    FAIL() << "an unknown preset loaded";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("material 'no-such-preset': ", 0), 0u) << e.what();
+  }
+}
+
+class PreviewStageFiles : public testing::TempDirTest {};
+
+TEST_F(PreviewStageFiles, WritesTheSheetAsAPng) {
+  PreviewStageSettings settings = quickSettings();
+  settings.ground = false;
+  const PreviewStage stage(smallModel(), {"gold"}, settings);
+  Renderer renderer;
+  const std::filesystem::path sheet = dir_ / "sheet.png";
+  writePreviewStage(renderer, stage, sheet, 24, "");
+  ASSERT_TRUE(std::filesystem::is_regular_file(sheet));
+  EXPECT_GT(std::filesystem::file_size(sheet), 8u);
+}
+
+}  // namespace
+}  // namespace facet
