@@ -127,6 +127,58 @@ double beautyTestUnits(const PairedRenders& renders, std::size_t p, const glm::v
   return worst > 0 ? std::log(worst) / std::log(alpha) : INFINITY;
 }
 
+// The AOVs that are reported and gate nothing, accumulated pixel by pixel.
+struct ReportedAovs {
+  Accumulator alpha = reported("alpha", "|d|");
+  Accumulator position = reported("position", "|dP| / |P|");
+  Accumulator geometric = reported("geometric normal", "angle (rad)");
+  Accumulator uv = reported("uv", "|duv|");
+  Accumulator texcoord = reported("texcoord", "|dst|");
+  Accumulator patchId = reported("patchId", "differs");
+  Accumulator faceId = reported("faceId", "differs");
+
+  // Pixel (x, y), covered on both images.
+  void add(const Image& reference, const Image& candidate, int x, int y, bool onEitherSilhouette) {
+    const std::size_t p = reference.index(x, y);
+    const glm::vec4 &rb = reference.beauty[p], &cb = candidate.beauty[p];
+    const double da = std::abs(double(cb.a) - double(rb.a));
+    alpha.add(da, da, 0, onEitherSilhouette, {x, y, rb.a, cb.a});
+    const glm::dvec3 rp(reference.position[p]), cp(candidate.position[p]);
+    const double dp = glm::length(cp - rp);
+    position.add(dp, dp / std::max(glm::length(rp), 1e-30), 0, onEitherSilhouette,
+                 {x, y, glm::length(rp), glm::length(cp)});
+    const double geometricAngle = normalAngle(reference.geometricNormal[p], candidate.geometricNormal[p]);
+    geometric.add(geometricAngle, geometricAngle, 0, onEitherSilhouette, {x, y, 0, geometricAngle});
+    const double duv = glm::length(glm::dvec2(candidate.uv[p]) - glm::dvec2(reference.uv[p]));
+    uv.add(duv, duv, 0, onEitherSilhouette, {x, y, 0, duv});
+    const double dst = glm::length(glm::dvec2(candidate.texcoord[p]) - glm::dvec2(reference.texcoord[p]));
+    texcoord.add(dst, dst, 0, onEitherSilhouette, {x, y, 0, dst});
+    const double patchDiffers = reference.patchId[p] != candidate.patchId[p] ? 1.0 : 0.0;
+    patchId.add(patchDiffers, patchDiffers, 0, onEitherSilhouette,
+                {x, y, double(reference.patchId[p]), double(candidate.patchId[p])});
+    const double faceDiffers = reference.faceId[p] != candidate.faceId[p] ? 1.0 : 0.0;
+    faceId.add(faceDiffers, faceDiffers, 0, onEitherSilhouette,
+               {x, y, double(reference.faceId[p]), double(candidate.faceId[p])});
+  }
+};
+
+// The verdict from the coverage and the finished AOVs.
+void setVerdict(ParityReport& report, std::size_t minCoverage) {
+  bool allPass = report.coveragePass;
+  for (const AovParity& aov : report.aovs) allPass = allPass && aov.pass;
+  // Nothing to judge is no evidence of agreement: an empty image never
+  // passes. Coverage that differs is judged first: a candidate that renders
+  // nothing where the reference has a surface is wrong, not unjudged.
+  const bool enough = report.covered > 0 && report.covered >= minCoverage;
+  report.verdict = !report.coveragePass ? Verdict::Fail
+                   : !enough            ? Verdict::InsufficientCoverage
+                   : allPass            ? Verdict::Pass
+                                        : Verdict::Fail;
+  if (report.verdict == Verdict::InsufficientCoverage)
+    for (AovParity& aov : report.aovs) aov.pass = !aov.gated;
+  report.pass = report.verdict == Verdict::Pass;
+}
+
 }  // namespace
 
 const char* toString(Verdict verdict) {
@@ -167,13 +219,7 @@ ParityReport compareImages(const Image& reference, const Image& candidate, const
     beauty.aov.significance = tolerances.significance;
     beauty.aov.alpha = sidakAlpha(tolerances.significance, 3 * coveredOnBoth(reference, candidate));
   }
-  Accumulator alpha = reported("alpha", "|d|");
-  Accumulator position = reported("position", "|dP| / |P|");
-  Accumulator geometric = reported("geometric normal", "angle (rad)");
-  Accumulator uv = reported("uv", "|duv|");
-  Accumulator texcoord = reported("texcoord", "|dst|");
-  Accumulator patchId = reported("patchId", "differs");
-  Accumulator faceId = reported("faceId", "differs");
+  ReportedAovs others;
 
   for (int y = 0; y < report.height; ++y) {
     for (int x = 0; x < report.width; ++x) {
@@ -205,24 +251,7 @@ ParityReport compareImages(const Image& reference, const Image& candidate, const
       } else {
         beauty.add(db, db / std::max(scale, 1e-30), scale, onEitherSilhouette, beautyAt);
       }
-      const double da = std::abs(double(cb.a) - double(rb.a));
-      alpha.add(da, da, 0, onEitherSilhouette, {x, y, rb.a, cb.a});
-      const glm::dvec3 rp(reference.position[p]), cp(candidate.position[p]);
-      const double dp = glm::length(cp - rp);
-      position.add(dp, dp / std::max(glm::length(rp), 1e-30), 0, onEitherSilhouette,
-                   {x, y, glm::length(rp), glm::length(cp)});
-      const double geometricAngle = normalAngle(reference.geometricNormal[p], candidate.geometricNormal[p]);
-      geometric.add(geometricAngle, geometricAngle, 0, onEitherSilhouette, {x, y, 0, geometricAngle});
-      const double duv = glm::length(glm::dvec2(candidate.uv[p]) - glm::dvec2(reference.uv[p]));
-      uv.add(duv, duv, 0, onEitherSilhouette, {x, y, 0, duv});
-      const double dst = glm::length(glm::dvec2(candidate.texcoord[p]) - glm::dvec2(reference.texcoord[p]));
-      texcoord.add(dst, dst, 0, onEitherSilhouette, {x, y, 0, dst});
-      const double patchDiffers = reference.patchId[p] != candidate.patchId[p] ? 1.0 : 0.0;
-      patchId.add(patchDiffers, patchDiffers, 0, onEitherSilhouette,
-                  {x, y, double(reference.patchId[p]), double(candidate.patchId[p])});
-      const double faceDiffers = reference.faceId[p] != candidate.faceId[p] ? 1.0 : 0.0;
-      faceId.add(faceDiffers, faceDiffers, 0, onEitherSilhouette,
-                 {x, y, double(reference.faceId[p]), double(candidate.faceId[p])});
+      others.add(reference, candidate, x, y, onEitherSilhouette);
     }
   }
 
@@ -231,21 +260,10 @@ ParityReport compareImages(const Image& reference, const Image& candidate, const
     if (report.heat[p] >= 0) report.heat[p] = std::max({report.heat[p], normal.aov.heat[p], beauty.aov.heat[p]});
   report.coverageAllowed = allowance(tolerances.coverageShare, report.pixels);
   report.coveragePass = report.coverageMismatchesInterior == 0 && report.coverageMismatches <= report.coverageAllowed;
-  for (Accumulator* a : {&depth, &normal, &beauty, &alpha, &position, &geometric, &uv, &texcoord, &patchId, &faceId})
+  for (Accumulator* a : {&depth, &normal, &beauty, &others.alpha, &others.position, &others.geometric, &others.uv,
+                         &others.texcoord, &others.patchId, &others.faceId})
     report.aovs.push_back(a->finish());
-  bool allPass = report.coveragePass;
-  for (const AovParity& aov : report.aovs) allPass = allPass && aov.pass;
-  // Nothing to judge is no evidence of agreement: an empty image never
-  // passes. Coverage that differs is judged first: a candidate that renders
-  // nothing where the reference has a surface is wrong, not unjudged.
-  const bool enough = report.covered > 0 && report.covered >= tolerances.minCoverage;
-  report.verdict = !report.coveragePass ? Verdict::Fail
-                   : !enough            ? Verdict::InsufficientCoverage
-                   : allPass            ? Verdict::Pass
-                                        : Verdict::Fail;
-  if (report.verdict == Verdict::InsufficientCoverage)
-    for (AovParity& aov : report.aovs) aov.pass = !aov.gated;
-  report.pass = report.verdict == Verdict::Pass;
+  setVerdict(report, tolerances.minCoverage);
   return report;
 }
 

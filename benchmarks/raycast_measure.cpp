@@ -57,31 +57,62 @@ Row runFacet(facet::Renderer& renderer, const NamedCage& cage, const Scene& scen
   return row;
 }
 
+// Warm-up: compile every GPU pipeline once outside the timed renders.
+void warmUp(facet::Renderer& renderer, const NamedCage& cage) {
+  Scene warm = facet::scene::sceneFromCage(cage.cage);
+  warm.render.width = warm.render.height = 32;
+  for (IntersectionMethod m : {IntersectionMethod::Exact, IntersectionMethod::Tessellated}) {
+    warm.render.method = m;
+    (void)renderer.render(warm, facet::Backend::Gpu);
+  }
+}
+
+// The CPU exact method is the slow oracle; it would be skipped where it
+// dominates the run (said in the output); no cage here is that large.
+bool skipCpuExact(const NamedCage& c, int size) { return size >= 1024 && c.cage.faceCount() > 1000000; }
+
+// facet's four rows of `scene`: exact and tessellated on each backend, their
+// depth against the CPU exact one's, which becomes `referenceDepth` (empty
+// where it is skipped).
+void addFacetRows(std::vector<Row>& rows, std::vector<std::string>& skipped, facet::Renderer& renderer,
+                  const NamedCage& cage, Scene& scene, std::vector<float>& referenceDepth) {
+  const int size = scene.render.width;
+  scene.render.method = IntersectionMethod::Exact;
+  if (skipCpuExact(cage, size)) {
+    skipped.push_back("CPU exact skipped on " + cage.name + " at " + std::to_string(size) +
+                      "² (too slow for the time budget); no depth errors there");
+  } else {
+    Row row = runFacet(renderer, cage, scene, facet::Backend::Cpu, &referenceDepth);
+    row.error = compareDepth(referenceDepth, referenceDepth);
+    rows.push_back(row);
+  }
+  std::vector<float> depth;
+  Row gpuExact = runFacet(renderer, cage, scene, facet::Backend::Gpu, &depth);
+  gpuExact.error = compareDepth(depth, referenceDepth);
+  rows.push_back(gpuExact);
+
+  scene.render.method = IntersectionMethod::Tessellated;
+  Row cpuTess = runFacet(renderer, cage, scene, facet::Backend::Cpu, &depth);
+  cpuTess.error = compareDepth(depth, referenceDepth);
+  rows.push_back(cpuTess);
+  Row gpuTess = runFacet(renderer, cage, scene, facet::Backend::Gpu, &depth);
+  gpuTess.error = compareDepth(depth, referenceDepth);
+  rows.push_back(gpuTess);
+}
+
 }  // namespace
 
 Measurements measureAll(Renderer& renderer, const std::vector<NamedCage>& cages, const std::vector<int>& sizes,
                         [[maybe_unused]] const std::vector<int>& allRates, [[maybe_unused]] bool quick) {
   // Faces × rate² grid quads, about 2 GB: Embree's rates past it are left out.
   [[maybe_unused]] constexpr double kEmbreeGridBudget = 40e6;
-  // The CPU exact method is the slow oracle; it would be skipped where it
-  // dominates the run (said in the output); no cage here is that large.
-  auto skipCpuExact = [&](const NamedCage& c, int size) { return size >= 1024 && c.cage.faceCount() > 1000000; };
-
   const double runStart = nowMs();
   std::vector<Row> rows;
   std::vector<std::string> skipped;
   std::vector<std::string> checks;  // --quick: embree8's depth against embree's
   bool checksPassed = true;
 
-  // Warm-up: compile every GPU pipeline once outside the timed renders.
-  {
-    Scene warm = facet::scene::sceneFromCage(cages[0].cage);
-    warm.render.width = warm.render.height = 32;
-    for (IntersectionMethod m : {IntersectionMethod::Exact, IntersectionMethod::Tessellated}) {
-      warm.render.method = m;
-      (void)renderer.render(warm, facet::Backend::Gpu);
-    }
-  }
+  warmUp(renderer, cages[0]);
 
   for (const NamedCage& cage : cages) {
 #if FACET_HAVE_EMBREE
@@ -100,27 +131,7 @@ Measurements measureAll(Renderer& renderer, const std::vector<NamedCage>& cages,
       std::vector<float> referenceDepth;
       std::fprintf(stderr, "[%6.1f s] %s %d²\n", (nowMs() - runStart) / 1e3, cage.name.c_str(), size);
 
-      scene.render.method = IntersectionMethod::Exact;
-      if (skipCpuExact(cage, size)) {
-        skipped.push_back("CPU exact skipped on " + cage.name + " at " + std::to_string(size) +
-                          "² (too slow for the time budget); no depth errors there");
-      } else {
-        Row row = runFacet(renderer, cage, scene, facet::Backend::Cpu, &referenceDepth);
-        row.error = compareDepth(referenceDepth, referenceDepth);
-        rows.push_back(row);
-      }
-      std::vector<float> depth;
-      Row gpuExact = runFacet(renderer, cage, scene, facet::Backend::Gpu, &depth);
-      gpuExact.error = compareDepth(depth, referenceDepth);
-      rows.push_back(gpuExact);
-
-      scene.render.method = IntersectionMethod::Tessellated;
-      Row cpuTess = runFacet(renderer, cage, scene, facet::Backend::Cpu, &depth);
-      cpuTess.error = compareDepth(depth, referenceDepth);
-      rows.push_back(cpuTess);
-      Row gpuTess = runFacet(renderer, cage, scene, facet::Backend::Gpu, &depth);
-      gpuTess.error = compareDepth(depth, referenceDepth);
-      rows.push_back(gpuTess);
+      addFacetRows(rows, skipped, renderer, cage, scene, referenceDepth);
 
 #if FACET_HAVE_EMBREE
       // Median of 3 casts by `cast` into `out`, as a row of `engine`.
@@ -145,7 +156,7 @@ Measurements measureAll(Renderer& renderer, const std::vector<NamedCage>& cages,
         row.note = embree.notes();
         return row;
       };
-      std::vector<float> depth8;
+      std::vector<float> depth, depth8;
       for (std::size_t r = 0; r < rates.size(); ++r) {
         commitMs[r] = embree.setTessellationRate(rates[r]);
         rows.push_back(

@@ -200,6 +200,73 @@ MaterialSpec withMetallicRoughness(MaterialSpec spec, const Fail& fail) {
   return spec;
 }
 
+// The preset `spec` names, or nullptr for none.
+template <class Fail>
+const Preset* namedPreset(const MaterialSpec& spec, const Fail& fail) {
+  if (!spec.preset) return nullptr;
+  const Preset* preset = findPreset(*spec.preset);
+  if (!preset) {
+    std::string names;
+    for (const Preset& p : presets()) names += (names.empty() ? "" : ", ") + std::string(p.name);
+    fail("preset", "unknown preset '" + *spec.preset + "' (expected one of: " + names + ")");
+  }
+  return preset;
+}
+
+// GGX alpha, given as alpha or as roughness = sqrt(alpha), one of the two.
+template <class Fail>
+double alphaOf(const MaterialSpec& spec, const Fail& fail) {
+  if (spec.alpha && spec.roughness) fail("alpha", "give alpha or roughness, not both");
+  if (!spec.alpha && !spec.roughness) fail("alpha", "required (or roughness = sqrt(alpha))");
+  if (spec.alpha) {
+    checkBounds(bounded(&MaterialSpec::alpha), *spec.alpha, fail);
+    return *spec.alpha;
+  }
+  checkBounds(bounded(&MaterialSpec::roughness), *spec.roughness, fail);
+  return *spec.roughness * *spec.roughness;
+}
+
+// The parameters m's Fresnel term reads, from `spec` and `f0` (given or the
+// preset's); a parameter the term does not read may not be given.
+template <class Fail>
+void resolveFresnel(const MaterialSpec& spec, const std::optional<glm::dvec3>& f0, Material& m, const Fail& fail) {
+  std::string fresnelName(modelName(kFresnelTerms, m.fresnel));
+  auto onlyFor = [&](std::string_view field, bool given, bool used, std::string_view users) {
+    if (given && !used) fail(field, "is only used by fresnel " + std::string(users) + ", not '" + fresnelName + "'");
+  };
+  onlyFor("f0", spec.f0.has_value(),
+          m.fresnel == rules::f64::F_SCHLICK || m.fresnel == rules::f64::F_DIELECTRIC ||
+              m.fresnel == rules::f64::F_BLENDER_METALLIC,
+          "'schlick', 'dielectric' or 'blender-metallic'");
+  onlyFor("ior", spec.ior.has_value(), m.fresnel == rules::f64::F_DIELECTRIC, "'dielectric'");
+  onlyFor("eta", spec.eta.has_value(), m.fresnel == rules::f64::F_CONDUCTOR, "'conductor'");
+  onlyFor("k", spec.k.has_value(), m.fresnel == rules::f64::F_CONDUCTOR, "'conductor'");
+
+  switch (m.fresnel) {
+    case rules::f64::F_SCHLICK:
+    case rules::f64::F_BLENDER_METALLIC:
+      if (!f0) fail("f0", "required by fresnel '" + fresnelName + "' (or give a preset)");
+      m.f0 = *f0;
+      break;
+    case rules::f64::F_DIELECTRIC:
+      if (spec.ior) {
+        m.eta = *spec.ior;
+      } else if (f0) {
+        for (int i = 0; i < 3; ++i)
+          if (!((*f0)[i] < 1.0)) fail("f0", "must be < 1 to derive an index of refraction");
+        m.eta = {iorFromF0(f0->x), iorFromF0(f0->y), iorFromF0(f0->z)};
+      } else {
+        fail("ior", "required by fresnel 'dielectric' (or give f0 or a preset)");
+      }
+      break;
+    case rules::f64::F_CONDUCTOR:
+      if (!spec.eta || !spec.k) fail(spec.eta ? "k" : "eta", "required by fresnel 'conductor'");
+      m.eta = *spec.eta;
+      m.k = *spec.k;
+      break;
+  }
+}
+
 }  // namespace
 
 rules::f64::TransmissionParams transmissionParams64(const Material& material) {
@@ -240,16 +307,8 @@ Material buildMaterial(const MaterialSpec& given,
   Material m;
   m.name = spec.name;
   copyPlainParameters(spec, m);
-  const Preset* preset = nullptr;
-  if (spec.preset) {
-    preset = findPreset(*spec.preset);
-    if (!preset) {
-      std::string names;
-      for (const Preset& p : presets()) names += (names.empty() ? "" : ", ") + std::string(p.name);
-      fail("preset", "unknown preset '" + *spec.preset + "' (expected one of: " + names + ")");
-    }
-    if (m.name.empty()) m.name = preset->name;
-  }
+  const Preset* preset = namedPreset(spec, fail);
+  if (preset && m.name.empty()) m.name = preset->name;
 
   auto parse = [&](std::span<const ModelName> table, std::string_view field, const std::optional<std::string>& value,
                    int fallback) {
@@ -271,15 +330,7 @@ Material buildMaterial(const MaterialSpec& given,
   m.geometry = parse(kGeometryTerms, "geometry", spec.geometry, rules::f64::G_SMITH_GGX_CORRELATED);
   m.fresnel = parse(kFresnelTerms, "fresnel", spec.fresnel, defaultFresnel);
 
-  if (spec.alpha && spec.roughness) fail("alpha", "give alpha or roughness, not both");
-  if (!spec.alpha && !spec.roughness) fail("alpha", "required (or roughness = sqrt(alpha))");
-  if (spec.alpha) {
-    checkBounds(bounded(&MaterialSpec::alpha), *spec.alpha, fail);
-    m.alpha = *spec.alpha;
-  } else {
-    checkBounds(bounded(&MaterialSpec::roughness), *spec.roughness, fail);
-    m.alpha = *spec.roughness * *spec.roughness;
-  }
+  m.alpha = alphaOf(spec, fail);
 
   std::optional<glm::dvec3> f0 = spec.f0;
   if (!f0 && preset) f0 = preset->f0_linear;
@@ -288,41 +339,7 @@ Material buildMaterial(const MaterialSpec& given,
   if (spec.eta) checkVector("eta", *spec.eta, 0.0, true);
   if (spec.k) checkVector("k", *spec.k, 0.0, false);
 
-  std::string fresnelName(modelName(kFresnelTerms, m.fresnel));
-  auto onlyFor = [&](std::string_view field, bool given, bool used, std::string_view users) {
-    if (given && !used) fail(field, "is only used by fresnel " + std::string(users) + ", not '" + fresnelName + "'");
-  };
-  onlyFor("f0", spec.f0.has_value(),
-          m.fresnel == rules::f64::F_SCHLICK || m.fresnel == rules::f64::F_DIELECTRIC ||
-              m.fresnel == rules::f64::F_BLENDER_METALLIC,
-          "'schlick', 'dielectric' or 'blender-metallic'");
-  onlyFor("ior", spec.ior.has_value(), m.fresnel == rules::f64::F_DIELECTRIC, "'dielectric'");
-  onlyFor("eta", spec.eta.has_value(), m.fresnel == rules::f64::F_CONDUCTOR, "'conductor'");
-  onlyFor("k", spec.k.has_value(), m.fresnel == rules::f64::F_CONDUCTOR, "'conductor'");
-
-  switch (m.fresnel) {
-    case rules::f64::F_SCHLICK:
-    case rules::f64::F_BLENDER_METALLIC:
-      if (!f0) fail("f0", "required by fresnel '" + fresnelName + "' (or give a preset)");
-      m.f0 = *f0;
-      break;
-    case rules::f64::F_DIELECTRIC:
-      if (spec.ior) {
-        m.eta = *spec.ior;
-      } else if (f0) {
-        for (int i = 0; i < 3; ++i)
-          if (!((*f0)[i] < 1.0)) fail("f0", "must be < 1 to derive an index of refraction");
-        m.eta = {iorFromF0(f0->x), iorFromF0(f0->y), iorFromF0(f0->z)};
-      } else {
-        fail("ior", "required by fresnel 'dielectric' (or give f0 or a preset)");
-      }
-      break;
-    case rules::f64::F_CONDUCTOR:
-      if (!spec.eta || !spec.k) fail(spec.eta ? "k" : "eta", "required by fresnel 'conductor'");
-      m.eta = *spec.eta;
-      m.k = *spec.k;
-      break;
-  }
+  resolveFresnel(spec, f0, m, fail);
 
   if (spec.diffuse) checkReflectance("diffuse", *spec.diffuse);
   checkTransmission(spec, preset, m, fail);

@@ -248,9 +248,9 @@ std::string objectName(const std::string& mesh, std::size_t k) {
   return name;
 }
 
-}  // namespace
-
-Scene loadGltfScene(const std::filesystem::path& path) {
+// The file read and parsed by tinygltf, its external files and images read
+// through the checks here; `warning` gets tinygltf's warnings.
+tinygltf::Model parseGltf(const std::filesystem::path& path, std::string& warning) {
   const std::string source = path.string();
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(source, 0, "cannot load glTF", "cannot open the file");
@@ -265,7 +265,7 @@ Scene loadGltfScene(const std::filesystem::path& path) {
   ExternalReads reads{source, nullptr};
   loader.SetFsCallbacks({&fileExists, &sameFilePath, &readWholeFile, nullptr, &reads});
   loader.SetImageLoader(&decodeGltfImage, &reads);
-  std::string error, warning;
+  std::string error;
   const std::string baseDir = path.parent_path().string();
   const bool ok =
       binary
@@ -274,6 +274,44 @@ Scene loadGltfScene(const std::filesystem::path& path) {
           : loader.LoadASCIIFromString(&model, &error, &warning, file.data(), unsigned(file.size()), baseDir);
   if (reads.refusal) std::rethrow_exception(reads.refusal);
   if (!ok) throw InputError(source, 0, "cannot load glTF", error.empty() ? "unknown tinygltf error" : error);
+  return model;
+}
+
+// The objects of the mesh instance at `node` (nodes[index] as `where`), one
+// per material of its primitives, at `world`.
+void addMeshObjects(Scene& scene, const tinygltf::Model& model, const tinygltf::Node& node, const std::string& where,
+                    const glm::dmat4& world, int defaultMaterialIndex, const std::vector<detail::GltfCutout>& cutouts,
+                    const detail::GltfReader& reader) {
+  if (std::size_t(node.mesh) >= model.meshes.size()) reader.fail(where, "mesh index out of range");
+  const tinygltf::Mesh& mesh = model.meshes[std::size_t(node.mesh)];
+  const std::string meshWhere = "meshes[" + std::to_string(node.mesh) + "]";
+  const std::size_t firstObject = scene.objects.size();
+  for (const auto& [material, primitives] : materialGroups(mesh, defaultMaterialIndex, reader, meshWhere)) {
+    Object object;
+    object.name = objectName(mesh.name.empty() ? where : mesh.name, scene.objects.size() - firstObject);
+    object.cage = detail::toCage(mesh, primitives, world, reader, meshWhere);
+    if (object.cage.faceCount() == 0) continue;  // only triangles without area
+    object.subdivision = Subdivision::None;
+    object.material = material;
+    // glTF culls the back faces of a material that is not doubleSided,
+    // its default material's included.
+    object.oneSided = material == defaultMaterialIndex || !model.materials[std::size_t(material)].doubleSided;
+    if (material != defaultMaterialIndex) {
+      object.alphaCutoff = cutouts[std::size_t(material)].cutoff;
+      object.alphaFactor = cutouts[std::size_t(material)].factor;
+      if (const auto& t = scene.materials[std::size_t(material)].textures) object.alphaTexture = t->baseColorTexture;
+    }
+    scene.objects.push_back(std::move(object));
+  }
+  if (scene.objects.size() == firstObject) reader.fail(meshWhere, "has no faces");
+}
+
+}  // namespace
+
+Scene loadGltfScene(const std::filesystem::path& path) {
+  const std::string source = path.string();
+  std::string warning;
+  tinygltf::Model model = parseGltf(path, warning);
   const detail::GltfReader reader(model, source);
   detail::checkExtensions(model, reader);
   for (std::size_t start = 0; start < warning.size();) {  // tinygltf's, one per line
@@ -312,31 +350,7 @@ Scene loadGltfScene(const std::filesystem::path& path) {
     const tinygltf::Node& node = model.nodes[std::size_t(index)];
     const std::string where = "nodes[" + std::to_string(index) + "]";
     const glm::dmat4 world = parent * detail::localTransform(node);
-    if (node.mesh >= 0) {
-      if (std::size_t(node.mesh) >= model.meshes.size()) reader.fail(where, "mesh index out of range");
-      const tinygltf::Mesh& mesh = model.meshes[std::size_t(node.mesh)];
-      const std::string meshWhere = "meshes[" + std::to_string(node.mesh) + "]";
-      const std::size_t firstObject = scene.objects.size();
-      for (const auto& [material, primitives] : materialGroups(mesh, defaultMaterialIndex, reader, meshWhere)) {
-        Object object;
-        object.name = objectName(mesh.name.empty() ? where : mesh.name, scene.objects.size() - firstObject);
-        object.cage = detail::toCage(mesh, primitives, world, reader, meshWhere);
-        if (object.cage.faceCount() == 0) continue;  // only triangles without area
-        object.subdivision = Subdivision::None;
-        object.material = material;
-        // glTF culls the back faces of a material that is not doubleSided,
-        // its default material's included.
-        object.oneSided = material == defaultMaterialIndex || !model.materials[std::size_t(material)].doubleSided;
-        if (material != defaultMaterialIndex) {
-          object.alphaCutoff = cutouts[std::size_t(material)].cutoff;
-          object.alphaFactor = cutouts[std::size_t(material)].factor;
-          if (const auto& t = scene.materials[std::size_t(material)].textures)
-            object.alphaTexture = t->baseColorTexture;
-        }
-        scene.objects.push_back(std::move(object));
-      }
-      if (scene.objects.size() == firstObject) reader.fail(meshWhere, "has no faces");
-    }
+    if (node.mesh >= 0) addMeshObjects(scene, model, node, where, world, defaultMaterialIndex, cutouts, reader);
     if (node.camera >= 0 && !camera) {
       if (std::size_t(node.camera) >= model.cameras.size()) reader.fail(where, "camera index out of range");
       const tinygltf::Camera& c = model.cameras[std::size_t(node.camera)];

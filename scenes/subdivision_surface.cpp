@@ -49,6 +49,134 @@ std::array<glm::dvec3, 4> cornerNormals(const ControlCage& cage, int face, int f
   return normals;
 }
 
+// The patch table's options: patches isolated to `level`, end caps of the
+// settings' basis, and face-varying patches where the cage has channels.
+Far::PatchTableFactory::Options patchTableOptions(const RefinementSettings& settings, int level, bool faceVarying) {
+  Far::PatchTableFactory::Options options(level);
+  options.SetEndCapType(settings.endCaps == EndCapBasis::Gregory
+                            ? Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS
+                            : Far::PatchTableFactory::Options::ENDCAP_BSPLINE_BASIS);
+  // Infinitely sharp creases become boundary patches instead of being
+  // isolated down to the maximum level.
+  options.useInfSharpPatch = true;
+  options.useSingleCreasePatch = false;
+  options.generateVaryingTables = false;
+  options.generateVaryingLocalPoints = false;
+  options.SetPatchPrecision<double>();
+  // Face-varying patches of the same kinds as the vertex ones (the legacy
+  // option makes them all bilinear in the refined values).
+  options.generateFVarTables = faceVarying;
+  options.generateFVarLegacyLinearPatches = false;
+  options.SetFVarPatchPrecision<double>();
+  return options;
+}
+
+// Positions: cage, every refined level, then the end-cap local points.
+std::vector<detail::OsdPoint> refinedPositions(const ControlCage& cage, const Far::TopologyRefiner& refiner,
+                                               const Far::PatchTable& table) {
+  const int refinedCount = refiner.GetNumVerticesTotal();
+  std::vector<detail::OsdPoint> points(static_cast<size_t>(refinedCount) + table.GetNumLocalPoints());
+  for (int v = 0; v < cage.vertexCount(); ++v) points[v].p = cage.positions[v];
+  Far::PrimvarRefinerReal<double> primvarRefiner(refiner);
+  detail::OsdPoint* source = points.data();
+  for (int l = 1; l < refiner.GetNumLevels(); ++l) {
+    detail::OsdPoint* destination = source + refiner.GetLevel(l - 1).GetNumVertices();
+    primvarRefiner.Interpolate(l, source, destination);
+    source = destination;
+  }
+  if (table.GetNumLocalPoints() > 0)
+    table.GetLocalPointStencilTable<double>()->UpdateValues(points.data(), points.data() + refinedCount);
+  return points;
+}
+
+// A face-varying channel's values, in the same order as refinedPositions'.
+std::vector<detail::OsdPoint> refinedChannelValues(const std::vector<glm::dvec3>& cageValues,
+                                                   const Far::TopologyRefiner& refiner, const Far::PatchTable& table,
+                                                   int fvar) {
+  const int refinedValues = refiner.GetNumFVarValuesTotal(fvar);
+  const int localValues = table.GetNumLocalPointsFaceVarying(fvar);
+  std::vector<detail::OsdPoint> points(std::size_t(refinedValues) + std::size_t(localValues));
+  for (std::size_t t = 0; t < cageValues.size(); ++t) points[t].p = cageValues[t];
+  Far::PrimvarRefinerReal<double> primvarRefiner(refiner);
+  detail::OsdPoint* values = points.data();
+  for (int l = 1; l < refiner.GetNumLevels(); ++l) {
+    detail::OsdPoint* next = values + refiner.GetLevel(l - 1).GetNumFVarValues(fvar);
+    primvarRefiner.InterpolateFaceVarying(l, values, next, fvar);
+    values = next;
+  }
+  if (localValues > 0)
+    table.GetLocalPointFaceVaryingStencilTable<double>(fvar)->UpdateValues(points.data(),
+                                                                           points.data() + refinedValues);
+  return points;
+}
+
+// The cage face of each ptex face: a quad is one, an n-gon n.
+std::vector<int> coarseFacesOfPtexFaces(const ControlCage& cage, const Far::PtexIndices& ptex) {
+  std::vector<int> coarseFaceOfPtex(ptex.GetNumFaces());
+  for (int face = 0; face < cage.faceCount(); ++face) {
+    int first = ptex.GetFaceId(face);
+    int count = cage.faceVertexCounts[face] == 4 ? 1 : cage.faceVertexCounts[face];
+    for (int k = 0; k < count; ++k) coarseFaceOfPtex[first + k] = face;
+  }
+  return coarseFaceOfPtex;
+}
+
+// Where each cage face's corners start in faceVertexIndices.
+std::vector<int> faceStarts(const ControlCage& cage) {
+  std::vector<int> starts;
+  for (int face = 0, first = 0; face < cage.faceCount(); first += cage.faceVertexCounts[std::size_t(face++)])
+    starts.push_back(first);
+  return starts;
+}
+
+PatchInfo patchInfo(const Far::PatchParam& param, const std::vector<int>& coarseFaceOfPtex, bool gregory) {
+  PatchInfo info;
+  info.ptexFace = param.GetFaceId();
+  info.coarseFace = coarseFaceOfPtex[info.ptexFace];
+  info.domain.size = param.GetParamFraction();
+  info.domain.u0 = param.GetU() * info.domain.size;
+  info.domain.v0 = param.GetV() * info.domain.size;
+  info.depth = param.GetDepth();
+  info.boundaryMask = param.GetBoundary();
+  info.transitionMask = param.GetTransition();
+  info.gregory = gregory;
+  return info;
+}
+
+void countPatch(SurfaceStatistics& stats, const Far::PatchDescriptor& descriptor, const Far::PatchParam& param) {
+  if (descriptor.GetType() == Far::PatchDescriptor::QUADS) {
+    ++stats.regularPatches;
+  } else if (descriptor.GetType() == Far::PatchDescriptor::GREGORY_BASIS) {
+    ++stats.endCapPatches;
+  } else {
+    // B-spline end caps share the regular patch type.
+    if (param.IsRegular())
+      ++stats.regularPatches;
+    else
+      ++stats.endCapPatches;
+  }
+}
+
+void extendBounds(Aabb& bounds, const BezierPatch& bezier) {
+  for (const glm::dvec3& p : bezier.points) bounds.extend(p);
+  if (bezier.gregory)
+    for (const glm::dvec3& p : bezier.alternates) bounds.extend(p);
+}
+
+// The bytes OpenSubdiv holds for the surface: patch vertices and parameters,
+// the refined and local points, and the local points' stencils.
+size_t openSubdivBytes(const Far::PatchTable& table, std::size_t pointCount) {
+  size_t stencilBytes = 0;
+  if (const auto* stencils = table.GetLocalPointStencilTable<double>()) {
+    stencilBytes = stencils->GetControlIndices().size() * sizeof(Far::Index) +
+                   stencils->GetWeights().size() * sizeof(double) +
+                   static_cast<size_t>(stencils->GetNumStencils()) * 2 * sizeof(int);
+  }
+  return static_cast<size_t>(table.GetNumControlVerticesTotal()) * sizeof(Far::Index) +
+         static_cast<size_t>(table.GetNumPatchesTotal()) * sizeof(Far::PatchParam) +
+         pointCount * sizeof(detail::OsdPoint) + stencilBytes;
+}
+
 }  // namespace
 
 SubdivisionSurface::SubdivisionSurface(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -65,73 +193,26 @@ SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const Ref
   // A bilinear quad is a patch as it stands; one level splits every other
   // face into quads.
   const int level = bilinear ? 1 : detail::isolationLevelFor(cage, settings);
-  Far::PatchTableFactory::Options options(level);
-  options.SetEndCapType(settings.endCaps == EndCapBasis::Gregory
-                            ? Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS
-                            : Far::PatchTableFactory::Options::ENDCAP_BSPLINE_BASIS);
-  // Infinitely sharp creases become boundary patches instead of being
-  // isolated down to the maximum level.
-  options.useInfSharpPatch = true;
-  options.useSingleCreasePatch = false;
-  options.generateVaryingTables = false;
-  options.generateVaryingLocalPoints = false;
-  options.SetPatchPrecision<double>();
-  // Face-varying patches of the same kinds as the vertex ones (the legacy
-  // option makes them all bilinear in the refined values).
   int fvarChannels = 0;
   for (int c = 0; c < kChannelCount; ++c)
     if (!detail::channelValues(cage, Channel(c)).corners.empty()) impl->channels[std::size_t(c)].fvar = fvarChannels++;
-  options.generateFVarTables = fvarChannels > 0;
-  options.generateFVarLegacyLinearPatches = false;
-  options.SetFVarPatchPrecision<double>();
+  const Far::PatchTableFactory::Options options = patchTableOptions(settings, level, fvarChannels > 0);
   refiner.RefineAdaptive(options.GetRefineAdaptiveOptions());
   impl->patchTable.reset(Far::PatchTableFactory::Create(refiner, options));
   const Far::PatchTable& table = *impl->patchTable;
 
-  // Positions: cage, every refined level, then the end-cap local points.
-  const int refinedCount = refiner.GetNumVerticesTotal();
-  const int localCount = table.GetNumLocalPoints();
-  impl->points.resize(static_cast<size_t>(refinedCount) + localCount);
-  for (int v = 0; v < cage.vertexCount(); ++v) impl->points[v].p = cage.positions[v];
-  Far::PrimvarRefinerReal<double> primvarRefiner(refiner);
-  detail::OsdPoint* source = impl->points.data();
-  for (int l = 1; l < refiner.GetNumLevels(); ++l) {
-    detail::OsdPoint* destination = source + refiner.GetLevel(l - 1).GetNumVertices();
-    primvarRefiner.Interpolate(l, source, destination);
-    source = destination;
-  }
-  if (localCount > 0)
-    table.GetLocalPointStencilTable<double>()->UpdateValues(impl->points.data(), impl->points.data() + refinedCount);
-
+  impl->points = refinedPositions(cage, refiner, table);
   for (int c = 0; c < kChannelCount; ++c) {
     SubdivisionSurface::Impl::FaceVarying& channel = impl->channels[std::size_t(c)];
-    if (channel.fvar < 0) continue;
-    const int fvar = channel.fvar;
-    const int refinedValues = refiner.GetNumFVarValuesTotal(fvar);
-    const int localValues = table.GetNumLocalPointsFaceVarying(fvar);
-    channel.points.resize(std::size_t(refinedValues) + std::size_t(localValues));
-    const std::vector<glm::dvec3> cageValues = detail::channelValues(cage, Channel(c)).values;
-    for (std::size_t t = 0; t < cageValues.size(); ++t) channel.points[t].p = cageValues[t];
-    detail::OsdPoint* values = channel.points.data();
-    for (int l = 1; l < refiner.GetNumLevels(); ++l) {
-      detail::OsdPoint* next = values + refiner.GetLevel(l - 1).GetNumFVarValues(fvar);
-      primvarRefiner.InterpolateFaceVarying(l, values, next, fvar);
-      values = next;
-    }
-    if (localValues > 0)
-      table.GetLocalPointFaceVaryingStencilTable<double>(fvar)->UpdateValues(channel.points.data(),
-                                                                             channel.points.data() + refinedValues);
+    if (channel.fvar >= 0)
+      channel.points =
+          refinedChannelValues(detail::channelValues(cage, Channel(c)).values, refiner, table, channel.fvar);
   }
 
   impl->patchMap = std::make_unique<Far::PatchMap>(table);
 
   Far::PtexIndices ptex(refiner);
-  std::vector<int> coarseFaceOfPtex(ptex.GetNumFaces());
-  for (int face = 0; face < cage.faceCount(); ++face) {
-    int first = ptex.GetFaceId(face);
-    int count = cage.faceVertexCounts[face] == 4 ? 1 : cage.faceVertexCounts[face];
-    for (int k = 0; k < count; ++k) coarseFaceOfPtex[first + k] = face;
-  }
+  const std::vector<int> coarseFaceOfPtex = coarseFacesOfPtexFaces(cage, ptex);
 
   SurfaceStatistics& stats = impl->statistics;
   const bool withNormals = bilinear && !cage.faceVertexNormals.empty();
@@ -139,9 +220,7 @@ SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const Ref
     throw InputError(cage.source, 0, "authored normals",
                      std::to_string(cage.faceVertexNormals.size()) + " normals for " +
                          std::to_string(cage.faceVertexIndices.size()) + " face corners");
-  std::vector<int> faceStarts;
-  for (int face = 0, first = 0; face < cage.faceCount(); first += cage.faceVertexCounts[std::size_t(face++)])
-    faceStarts.push_back(first);
+  const std::vector<int> starts = faceStarts(cage);
   int patchIndex = 0;
   for (int array = 0; array < table.GetNumPatchArrays(); ++array) {
     const Far::PatchDescriptor descriptor = table.GetPatchArrayDescriptor(array);
@@ -157,38 +236,18 @@ SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const Ref
 
       const Far::PatchParam param = table.GetPatchParam(array, j);
       const Far::ConstIndexArray cvs = table.GetPatchVertices(array, j);
-      PatchInfo info;
-      info.ptexFace = param.GetFaceId();
-      info.coarseFace = coarseFaceOfPtex[info.ptexFace];
-      info.domain.size = param.GetParamFraction();
-      info.domain.u0 = param.GetU() * info.domain.size;
-      info.domain.v0 = param.GetV() * info.domain.size;
-      info.depth = param.GetDepth();
-      info.boundaryMask = param.GetBoundary();
-      info.transitionMask = param.GetTransition();
-      info.gregory = gregory;
+      const PatchInfo info = patchInfo(param, coarseFaceOfPtex, gregory);
       impl->patches.push_back(info);
 
       const BezierPatch bezier = detail::bezierFromPatch(descriptor.GetType(), cvs, impl->points, info.boundaryMask);
-      if (quads) {
+      if (quads && withNormals) {
         std::array<glm::dvec3, 4> points;
         for (int k = 0; k < 4; ++k) points[k] = impl->points[cvs[k]].p;
-        if (withNormals)
-          impl->authoredNormals.push_back(
-              cornerNormals(cage, info.coarseFace, faceStarts[std::size_t(info.coarseFace)], points));
-        ++stats.regularPatches;
-      } else if (gregory) {
-        ++stats.endCapPatches;
-      } else {
-        // B-spline end caps share the regular patch type.
-        if (param.IsRegular())
-          ++stats.regularPatches;
-        else
-          ++stats.endCapPatches;
+        impl->authoredNormals.push_back(
+            cornerNormals(cage, info.coarseFace, starts[std::size_t(info.coarseFace)], points));
       }
-      for (const glm::dvec3& p : bezier.points) impl->bounds.extend(p);
-      if (bezier.gregory)
-        for (const glm::dvec3& p : bezier.alternates) impl->bounds.extend(p);
+      countPatch(stats, descriptor, param);
+      extendBounds(impl->bounds, bezier);
       impl->bezierPatches.push_back(bezier);
       for (SubdivisionSurface::Impl::FaceVarying& channel : impl->channels) {
         if (channel.fvar < 0) continue;
@@ -208,17 +267,9 @@ SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const Ref
   stats.isolationLevel = bilinear ? 0 : level;
   stats.cageFaces = cage.faceCount();
   stats.ptexFaces = ptex.GetNumFaces();
-  stats.refinedVertices = refinedCount;
-  stats.localPoints = localCount;
-  size_t stencilBytes = 0;
-  if (const auto* stencils = table.GetLocalPointStencilTable<double>()) {
-    stencilBytes = stencils->GetControlIndices().size() * sizeof(Far::Index) +
-                   stencils->GetWeights().size() * sizeof(double) +
-                   static_cast<size_t>(stencils->GetNumStencils()) * 2 * sizeof(int);
-  }
-  stats.openSubdivBytes = static_cast<size_t>(table.GetNumControlVerticesTotal()) * sizeof(Far::Index) +
-                          static_cast<size_t>(table.GetNumPatchesTotal()) * sizeof(Far::PatchParam) +
-                          impl->points.size() * sizeof(detail::OsdPoint) + stencilBytes;
+  stats.refinedVertices = refiner.GetNumVerticesTotal();
+  stats.localPoints = table.GetNumLocalPoints();
+  stats.openSubdivBytes = openSubdivBytes(table, impl->points.size());
   return SubdivisionSurface(std::move(impl));
 }
 

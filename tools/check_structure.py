@@ -2,7 +2,8 @@
 """Checks the tree's structure: includes point down the layers and, inside
 compute/raycast/, down its role rooms; every rule has its include guard and
 its two lines in rules/instance.h; no source file outside tests/ is longer
-than MAX_LINES; and no test's result hangs on the wall clock
+than MAX_LINES and no function in one longer than MAX_FUNCTION_LINES
+(long_function_violations); and no test's result hangs on the wall clock
 (wall_clock_violations).
 
     python3 tools/check_structure.py [repo root]
@@ -17,6 +18,9 @@ import re
 import subprocess
 import sys
 from collections import defaultdict, deque
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from function_spans import brace_functions, python_functions  # noqa: E402  (beside this script)
 
 # The layers, (folder, rank): a file may include files of its own layer or of
 # a layer of strictly lower rank. This table IS the layering that
@@ -388,12 +392,37 @@ def wall_clock_violations(root):
     return violations
 
 
+# A function, from its signature's first line to its closing brace (C++,
+# GLSL) or its last line (Python under tools/), has at most this many lines;
+# a longer one is split into functions of one concept each.
+MAX_FUNCTION_LINES = 100
+BRACE_SUFFIXES = (".h", ".cpp", ".glsl", ".comp")
+
+
+def long_function_violations(root, max_lines=MAX_FUNCTION_LINES):
+    """Printable lines: each function outside tests/ longer than max_lines."""
+    violations = []
+    for path in source_files(root):
+        if path.endswith(BRACE_SUFFIXES):
+            functions = brace_functions(read_text(root, path))
+        elif path.startswith("tools/") and path.endswith(".py"):
+            functions = python_functions(read_text(root, path))
+        else:
+            continue
+        for name, first, last in functions:
+            if last - first + 1 > max_lines:
+                violations.append(f"{path}:{first}: {name} is {last - first + 1} lines > {max_lines}: split it into "
+                                  "functions of one concept each")
+    return violations
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("root", nargs="?", default=os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
                         help="the repository root (default: the one holding this script)")
     root = parser.parse_args(argv).root
     violations, cycles, stats = check(root)
+    violations += long_function_violations(root)
     violations += wall_clock_violations(root)
     counts = f"{stats['files']} files, {stats['includes']} includes, {stats['layers']} layers, {stats['rooms']} rooms"
     for violation in violations:
@@ -406,7 +435,8 @@ def main(argv=None):
     if violations or cycles:
         print(f"check_structure: {len(violations)} violations, {len(cycles)} cycles ({counts})")
         return 1
-    print(f"check_structure: {counts}: includes point down, no file over {MAX_LINES} lines, no test on the wall clock")
+    print(f"check_structure: {counts}: includes point down, no file over {MAX_LINES} lines, no function over "
+          f"{MAX_FUNCTION_LINES}, no test on the wall clock")
     return 0
 
 

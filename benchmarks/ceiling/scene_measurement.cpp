@@ -71,6 +71,64 @@ gpu::Buffer upload(gpu::Device& device, const char* label, gpu::BufferUsage usag
   return buffer;
 }
 
+// A point light: the scene's own, else one along its first light's direction, two diagonals out.
+dvec3 pointLight(const facet::scene::Scene& scene, const facet::scene::SceneGeometry& geometry) {
+  const double diagonal = geometry.bounds.diagonal();
+  dvec3 light = geometry.bounds.centre() + dvec3(0, 2 * diagonal, 0);
+  if (!scene.lights.empty()) {
+    const facet::scene::Light& l = scene.lights[0];
+    light = l.type == facet::scene::LightType::Directional
+                ? geometry.bounds.centre() - 2 * diagonal * glm::normalize(l.direction)
+                : l.position;
+  }
+  return light;
+}
+
+// What the kernels wrote: per pixel the closest hit's (t, triangle), then
+// per pixel the shadow ray's code.
+struct KernelResults {
+  std::span<const std::uint32_t> out;
+  std::size_t pixels;
+  float hitT(std::size_t p) const { return std::bit_cast<float>(out[2 * p]); }
+  std::uint32_t hitTri(std::size_t p) const { return out[2 * p + 1]; }
+  std::uint32_t shadowCode(std::size_t p) const { return out[2 * pixels + p]; }
+};
+
+// Every kCheckStride-th pixel's hit and shadow ray against brute force over
+// `tris`, counted in row; `lightF` is the light relative to the eye.
+void checkAgainstBruteForce(Row& row, const KernelResults& results, const std::vector<Triangle>& tris,
+                            const facet::rules::f64::CameraFrame& camera, const FrameBlock& frame, const vec3& lightF,
+                            float shadowOffset) {
+  // Camera rays in double; shadow rays start where the kernel's do (same
+  // float arithmetic), so a mismatch there is the traversal's, not the offset's.
+  facet::rules::f64::CameraFrame relative = camera;
+  relative.eye = dvec3(0);
+  for (std::size_t p = 0; p < results.pixels; p += kCheckStride) {
+    const dvec3 d = facet::rules::f64::camera_ray_direction(relative, double(p % kSize) + 0.5, double(p / kSize) + 0.5,
+                                                            kSize, kSize);
+    const double reference = bruteForce(tris, dvec3(0), d, kInf, false);
+    ++row.checked;
+    if ((reference < kInf) != (results.hitTri(p) != kEmpty))
+      ++row.hitMismatch;
+    else if (reference < kInf)
+      row.maxRelDepth = std::max(row.maxRelDepth, std::abs(results.hitT(p) - reference) / reference);
+    if (results.shadowCode(p) < 2) continue;
+    const float w = frame.screen.x, h = frame.screen.y;
+    const float sx = (2.0f * (float(p % kSize) + 0.5f) / w - 1.0f) * frame.screen.z;
+    const float sy = (1.0f - 2.0f * (float(p / kSize) + 0.5f) / h) * frame.screen.w;
+    const vec3 df = glm::normalize(vec3(frame.forward) + sx * vec3(frame.right) + sy * vec3(frame.up));
+    const Triangle& tri = tris[results.hitTri(p)];
+    vec3 n = glm::normalize(glm::cross(tri.b - tri.a, tri.c - tri.a));
+    if (glm::dot(n, df) > 0) n = -n;
+    const vec3 o = df * results.hitT(p) + n * shadowOffset;
+    const dvec3 toLight = dvec3(lightF - o);
+    const double distance = glm::length(toLight);
+    const bool occluded = bruteForce(tris, dvec3(o), toLight / distance, distance, true) < kInf;
+    ++row.shadowChecked;
+    row.shadowMismatch += occluded != (results.shadowCode(p) == 3);
+  }
+}
+
 }  // namespace
 
 Row measureScene(gpu::Device& device, const std::string& path) {
@@ -99,15 +157,8 @@ Row measureScene(gpu::Device& device, const std::string& path) {
   row.triangles = tris.size(), row.buildMs = median(buildMs), row.nodes = bvh.nodeCount(), row.depth = bvh.depth;
   row.nodeBytes = bvh.nodeTexels.size() * 16, row.triBytes = bvh.triTexels.size() * 16;
 
-  // A point light: the scene's own, else one along its first light's direction, two diagonals out.
   const double diagonal = geometry.bounds.diagonal();
-  dvec3 light = geometry.bounds.centre() + dvec3(0, 2 * diagonal, 0);
-  if (!scene.lights.empty()) {
-    const facet::scene::Light& l = scene.lights[0];
-    light = l.type == facet::scene::LightType::Directional
-                ? geometry.bounds.centre() - 2 * diagonal * glm::normalize(l.direction)
-                : l.position;
-  }
+  const dvec3 light = pointLight(scene, geometry);
   const facet::rules::f64::CameraFrame camera = facet::camera::cameraFrame(scene.camera, kSize, kSize);
   const float shadowOffset = float(1e-4 * diagonal);
   const FrameBlock frame{glm::vec4(vec3(camera.forward), 0), glm::vec4(vec3(camera.right), 0),
@@ -141,48 +192,17 @@ Row measureScene(gpu::Device& device, const std::string& path) {
   encoder.copyBufferToBuffer(shadow, 0, readback, pixels * 8, pixels * 4);
   device.queue().submit(encoder.finish());
   device.queue().waitIdle();
-  const std::span<const std::uint32_t> out = readback.mapped<const std::uint32_t>();
-  auto hitT = [&](std::size_t p) { return std::bit_cast<float>(out[2 * p]); };
-  auto hitTri = [&](std::size_t p) { return out[2 * p + 1]; };
-  auto shadowCode = [&](std::size_t p) { return out[2 * pixels + p]; };
+  const KernelResults results{readback.mapped<const std::uint32_t>(), pixels};
   for (std::size_t p = 0; p < pixels; ++p) {
-    row.hits += hitTri(p) != kEmpty;
-    row.shadowRays += shadowCode(p) >= 2;
-    row.occluded += shadowCode(p) == 3;
+    row.hits += results.hitTri(p) != kEmpty;
+    row.shadowRays += results.shadowCode(p) >= 2;
+    row.occluded += results.shadowCode(p) == 3;
   }
   row.primaryMs = primaryNs * 1e-6, row.shadowMs = shadowNs * 1e-6;
   row.primaryMrays = double(pixels) / primaryNs * 1e3;
   row.shadowMrays = double(row.shadowRays) / shadowNs * 1e3;
 
-  // Camera rays in double; shadow rays start where the kernel's do (same
-  // float arithmetic), so a mismatch there is the traversal's, not the offset's.
-  facet::rules::f64::CameraFrame relative = camera;
-  relative.eye = dvec3(0);
-  const vec3 lightF = vec3(light - eye);
-  for (std::size_t p = 0; p < pixels; p += kCheckStride) {
-    const dvec3 d = facet::rules::f64::camera_ray_direction(relative, double(p % kSize) + 0.5, double(p / kSize) + 0.5,
-                                                            kSize, kSize);
-    const double reference = bruteForce(bvh.tris, dvec3(0), d, kInf, false);
-    ++row.checked;
-    if ((reference < kInf) != (hitTri(p) != kEmpty))
-      ++row.hitMismatch;
-    else if (reference < kInf)
-      row.maxRelDepth = std::max(row.maxRelDepth, std::abs(hitT(p) - reference) / reference);
-    if (shadowCode(p) < 2) continue;
-    const float w = frame.screen.x, h = frame.screen.y;
-    const float sx = (2.0f * (float(p % kSize) + 0.5f) / w - 1.0f) * frame.screen.z;
-    const float sy = (1.0f - 2.0f * (float(p / kSize) + 0.5f) / h) * frame.screen.w;
-    const vec3 df = glm::normalize(vec3(frame.forward) + sx * vec3(frame.right) + sy * vec3(frame.up));
-    const Triangle& tri = bvh.tris[hitTri(p)];
-    vec3 n = glm::normalize(glm::cross(tri.b - tri.a, tri.c - tri.a));
-    if (glm::dot(n, df) > 0) n = -n;
-    const vec3 o = df * hitT(p) + n * shadowOffset;
-    const dvec3 toLight = dvec3(lightF - o);
-    const double distance = glm::length(toLight);
-    const bool occluded = bruteForce(bvh.tris, dvec3(o), toLight / distance, distance, true) < kInf;
-    ++row.shadowChecked;
-    row.shadowMismatch += occluded != (shadowCode(p) == 3);
-  }
+  checkAgainstBruteForce(row, results, bvh.tris, camera, frame, vec3(light - eye), shadowOffset);
   return row;
 }
 

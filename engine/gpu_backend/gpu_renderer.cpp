@@ -72,6 +72,36 @@ void dice(gpu::Device& d, const DiceKernels& k, const GpuScene& packed, const Bi
   clock.read(Pass::DiceGrid, Pass::Refit);
 }
 
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A band's rays and fallbacks added to the render's; `primaryRays` are the
+// band's camera rays.
+void addBandCounts(GpuRenderResult& result, const BandCounts& counts, std::uint64_t primaryRays) {
+  result.primaryRays += primaryRays;
+  result.shadowRays += counts.shadowRays;
+  result.newtonFallbacks += counts.newtonFallbacks;
+  result.raysPerBounce.resize(counts.bounces.size());
+  for (std::size_t b = 0; b < counts.bounces.size(); ++b) {
+    result.raysPerBounce[b].rays += counts.bounces[b].rays;
+    result.raysPerBounce[b].hits += counts.bounces[b].hits;
+    result.raysPerBounce[b].shadowRays += counts.bounces[b].shadowRays;
+  }
+}
+
+// Stage: the render's pipeline compiles, and storing the cache file when
+// any pipeline was compiled (wall clock); 0 where every pipeline was kept.
+double pipelineStageMilliseconds(PipelineCache& pipelines, gpu::Device& d) {
+  double milliseconds = pipelines.takeMilliseconds();
+  if (pipelines.takeCompiled()) {
+    const auto start = std::chrono::steady_clock::now();
+    storePipelineCache(d);
+    milliseconds += millisecondsSince(start);
+  }
+  return milliseconds;
+}
+
 }  // namespace
 
 GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::SceneGeometry& geometry,
@@ -82,23 +112,20 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   const glm::dvec3 origin = scene.camera.eye;
   gpu::Device& d = device_;
   GpuRenderResult result;
-  auto wallClock = [](std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  };
 
   // The packed geometry first, checked against the device's limits before
   // anything else takes time (its wall clock counts to the top levels).
   auto start = std::chrono::steady_clock::now();
   const GpuScene packed = packScene(scene, geometry, origin, rootTolerance(scene, geometry), tessellated);
   checkGeometryLimits(packed, d.limits(), d.adapterInfo().name);
-  const double packMilliseconds = wallClock(start);
+  const double packMilliseconds = millisecondsSince(start);
 
   // Stage: the environment's tables or prefiltered maps (wall clock).
   start = std::chrono::steady_clock::now();
   std::optional<ibl::EnvironmentLighting> lighting;
   if (scene.environment) {
     lighting = prepareEnvironment(d, scene);
-    result.stageMilliseconds.push_back({Stage::Environment, wallClock(start)});
+    result.stageMilliseconds.push_back({Stage::Environment, millisecondsSince(start)});
   }
 
   // Stage: the BVH's top levels and the patches, packed and uploaded unless
@@ -117,7 +144,7 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   const GeometryBuffers& geometryBuffers = diced_->buffers;
   const ShadingBuffers shadingBuffers = uploadShading(d, scene, lighting ? &*lighting : nullptr, environment,
                                                       compensation, compensationTexelData, origin);
-  result.stageMilliseconds.push_back({Stage::TopLevels, packMilliseconds + wallClock(start)});
+  result.stageMilliseconds.push_back({Stage::TopLevels, packMilliseconds + millisecondsSince(start)});
 
   const int width = scene.render.width;
   const PixelRect window = crop.value_or(PixelRect::whole(width, scene.render.height));
@@ -160,27 +187,14 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
         continue;
       }
       readBand(band, first, count, width, window, origin, result.image);
-      result.primaryRays += count * frame.raysPerPixel;
-      result.shadowRays += counts.shadowRays;
-      result.newtonFallbacks += counts.newtonFallbacks;
-      result.raysPerBounce.resize(counts.bounces.size());
-      for (std::size_t b = 0; b < counts.bounces.size(); ++b) {
-        result.raysPerBounce[b].rays += counts.bounces[b].rays;
-        result.raysPerBounce[b].hits += counts.bounces[b].hits;
-        result.raysPerBounce[b].shadowRays += counts.bounces[b].shadowRays;
-      }
+      addBandCounts(result, counts, count * frame.raysPerPixel);
       first += count;
       finished += count;
       if (progress) progress(double(finished) / double(pixels));
     }
   }
   result.gpuBytes = geometryBuffers.bytes + band.bytes;
-  double pipelineMilliseconds = pipelines_.takeMilliseconds();  // 0 where every pipeline was kept
-  if (pipelines_.takeCompiled()) {
-    start = std::chrono::steady_clock::now();
-    storePipelineCache(d);
-    pipelineMilliseconds += wallClock(start);
-  }
+  const double pipelineMilliseconds = pipelineStageMilliseconds(pipelines_, d);
   if (pipelineMilliseconds > 0) result.stageMilliseconds.push_back({Stage::Pipelines, pipelineMilliseconds});
   clock.report(result.stageMilliseconds);
   return result;

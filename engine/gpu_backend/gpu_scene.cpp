@@ -49,11 +49,9 @@ void packChannel(const scene::BezierPatch& patch, scene::Channel channel, std::v
     texels.push_back(glm::vec4(float(points[k].x), float(points[k].y), float(points[k + 1].x), float(points[k + 1].y)));
 }
 
-}  // namespace
-
-GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geometry, const glm::dvec3& origin,
-                   double margin, bool tessellated) {
-  GpuScene packed;
+// Each object's entry in the top levels: its BVH, its patches' bounds in
+// leaf order and the quadtree below each patch.
+std::vector<TopLevelObject> topLevelObjects(const scene::SceneGeometry& geometry) {
   std::vector<TopLevelObject> tops;
   std::uint64_t quadtreeNodes = 0;
   for (const scene::ObjectGeometry& object : geometry.objects) {
@@ -70,12 +68,106 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
   for (std::size_t i = 0; i < tops.size(); ++i)
     for (int source : tops[i].bvh->leafPatches())
       tops[i].patchBounds.push_back(scene::patchBounds(geometry.objects[i].surface.bezierPatch(source)));
+  return tops;
+}
+
+// Back-face culling and the alpha cutout, from the object and its material.
+void setObjectFlags(layout::ObjectRange& range, const scene::Scene& scene, const scene::Object& sceneObject) {
+  range.flags = scene::cullsBackFaces(sceneObject, scene.materials[std::size_t(sceneObject.material)])
+                    ? layout::FACET_OBJECT_CULL_BACK_FACES
+                    : 0u;
+  if (scene::hasCutout(sceneObject)) {
+    range.flags |= layout::FACET_OBJECT_CUTOUT;
+    range.alphaCutoff = float(sceneObject.alphaCutoff);
+    range.alphaFactor = float(sceneObject.alphaFactor);
+    const layout::TextureSlotRecord slot = textureSlotRecord(sceneObject.alphaTexture);
+    range.alphaTexture = slot.texture;
+    range.alphaOffsetX = slot.offsetX, range.alphaOffsetY = slot.offsetY;
+    range.alphaCosRotation = slot.cosRotation, range.alphaSinRotation = slot.sinRotation;
+    range.alphaScaleX = slot.scaleX, range.alphaScaleY = slot.scaleY;
+    range.alphaTexCoord = slot.texCoord;
+  }
+}
+
+// The patch in leaf slot `slot` of object `object` (its range as far as
+// set): its record, authored normals, face-varying texels, control points
+// and two header texels, whose cells, grid vertices and edge midpoints start
+// at the object's.
+void packPatch(GpuScene& packed, const scene::SubdivisionSurface& surface, int source, std::uint64_t slot,
+               const layout::ObjectRange& range, std::uint32_t object, const glm::dvec3& origin) {
+  const scene::PatchInfo& info = surface.patch(source);
+  const scene::BezierPatch& bezier = surface.bezierPatch(source);
+  layout::PatchRecord record{};
+  record.sourcePatch = std::uint32_t(source);
+  record.coarseFace = std::uint32_t(info.coarseFace);
+  record.faceU0 = float(info.domain.u0);
+  record.faceV0 = float(info.domain.v0);
+  record.faceSize = float(info.domain.size);
+  record.ptexFace = std::uint32_t(info.ptexFace);
+  record.firstNormal = layout::FACET_NO_NORMALS;
+  if (const std::array<glm::dvec3, 4>* normals = surface.authoredNormals(source)) {
+    record.firstNormal = std::uint32_t(packed.normals.size());
+    for (const glm::dvec3& n : *normals) packed.normals.push_back(glm::vec4(glm::vec3(n), 0.0f));
+  }
+  record.firstTexcoord = range.channels ? std::uint32_t(packed.texcoords.size()) : layout::FACET_NO_TEXCOORDS;
+  for (int c = 0; c < scene::kChannelCount; ++c)
+    if (const scene::BezierPatch* values = surface.channelPatch(scene::Channel(c), source))
+      packChannel(*values, scene::Channel(c), packed.texcoords);
+  const std::uint32_t firstPoint = std::uint32_t(packed.points.size());
+  auto add = [&](const glm::dvec3& p) { packed.points.push_back(glm::vec4(glm::vec3(p - origin), 0.0f)); };
+  for (const glm::dvec3& p : bezier.points) add(p);
+  if (bezier.gregory)
+    for (const glm::dvec3& p : bezier.alternates) add(p);
+  packed.headers.push_back({firstPoint, bezier.gregory ? layout::FACET_PATCH_GREGORY : layout::FACET_PATCH_BEZIER,
+                            info.transitionMask, range.rate});
+  packed.headers.push_back({std::uint32_t(packed.cells + slot * range.rate * range.rate),
+                            std::uint32_t(packed.gridVertices + slot * (range.rate + 1) * (range.rate + 1)),
+                            std::uint32_t(packed.edgeMidpoints + slot * 4 * range.rate), object});
+  packed.patches.push_back(record);
+}
+
+// Moves every object's quadtrees after the top-level nodes and points the
+// top levels' references to quadtree roots at them.
+void placeQuadtrees(GpuScene& packed, const TopLevels& top, std::uint64_t topNodes) {
+  for (std::size_t i = 0; i < packed.objects.size(); ++i) {
+    layout::ObjectRange& range = packed.objects[i];
+    range.firstQuadtreeNode += std::uint32_t(topNodes);
+    for (const auto& [texel, component] : top.patchSlots[i])
+      packed.topNodes[texel][component] += range.firstQuadtreeNode;
+  }
+}
+
+// Post-order from the root: a node's top-level children come first.
+std::vector<std::uint32_t> refitOrder(const GpuScene& packed, std::uint64_t topNodes) {
+  std::vector<std::uint32_t> order;
+  std::vector<std::pair<std::uint32_t, bool>> stack{{packed.rootNode, false}};
+  while (!stack.empty()) {
+    const auto [node, childrenDone] = stack.back();
+    stack.pop_back();
+    if (childrenDone) {
+      order.push_back(node);
+      continue;
+    }
+    stack.push_back({node, true});
+    for (std::uint32_t reference :
+         packed.topNodes[std::size_t(node) * layout::FACET_BVH4_TEXELS + layout::FACET_BVH4_REFERENCES])
+      if (reference < topNodes) stack.push_back({reference, false});
+  }
+  return order;
+}
+
+}  // namespace
+
+GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geometry, const glm::dvec3& origin,
+                   double margin, bool tessellated) {
+  GpuScene packed;
+  const std::vector<TopLevelObject> tops = topLevelObjects(geometry);
   const TopLevels top = buildTopLevels(tops, origin, margin, packed.topNodes);
   packed.rootNode = top.root;
   packed.depth = top.depth;
 
   std::uint32_t patchIds = 0, faceIds = 0;
-  quadtreeNodes = 0;
+  std::uint64_t quadtreeNodes = 0;
   for (std::size_t i = 0; i < geometry.objects.size(); ++i) {
     const scene::ObjectGeometry& object = geometry.objects[i];
     const scene::SubdivisionSurface& surface = object.surface;
@@ -101,56 +193,11 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
     range.channels = 0;
     for (int c = 0; c < scene::kChannelCount; ++c)
       if (surface.hasChannel(scene::Channel(c))) range.channels |= 1u << c;
-    const scene::Object& sceneObject = scene.objects[i];
-    range.flags = scene::cullsBackFaces(sceneObject, scene.materials[std::size_t(sceneObject.material)])
-                      ? layout::FACET_OBJECT_CULL_BACK_FACES
-                      : 0u;
-    if (scene::hasCutout(sceneObject)) {
-      range.flags |= layout::FACET_OBJECT_CUTOUT;
-      range.alphaCutoff = float(sceneObject.alphaCutoff);
-      range.alphaFactor = float(sceneObject.alphaFactor);
-      const layout::TextureSlotRecord slot = textureSlotRecord(sceneObject.alphaTexture);
-      range.alphaTexture = slot.texture;
-      range.alphaOffsetX = slot.offsetX, range.alphaOffsetY = slot.offsetY;
-      range.alphaCosRotation = slot.cosRotation, range.alphaSinRotation = slot.sinRotation;
-      range.alphaScaleX = slot.scaleX, range.alphaScaleY = slot.scaleY;
-      range.alphaTexCoord = slot.texCoord;
-    }
+    setObjectFlags(range, scene, scene.objects[i]);
     packed.objects.push_back(range);
 
-    for (std::size_t slot = 0; slot < bvh.leafPatches().size(); ++slot) {
-      const int source = bvh.leafPatches()[slot];
-      const scene::PatchInfo& info = surface.patch(source);
-      const scene::BezierPatch& bezier = surface.bezierPatch(source);
-      layout::PatchRecord record{};
-      record.sourcePatch = std::uint32_t(source);
-      record.coarseFace = std::uint32_t(info.coarseFace);
-      record.faceU0 = float(info.domain.u0);
-      record.faceV0 = float(info.domain.v0);
-      record.faceSize = float(info.domain.size);
-      record.ptexFace = std::uint32_t(info.ptexFace);
-      record.firstNormal = layout::FACET_NO_NORMALS;
-      if (const std::array<glm::dvec3, 4>* normals = surface.authoredNormals(source)) {
-        record.firstNormal = std::uint32_t(packed.normals.size());
-        for (const glm::dvec3& n : *normals) packed.normals.push_back(glm::vec4(glm::vec3(n), 0.0f));
-      }
-      record.firstTexcoord = range.channels ? std::uint32_t(packed.texcoords.size()) : layout::FACET_NO_TEXCOORDS;
-      for (int c = 0; c < scene::kChannelCount; ++c)
-        if (const scene::BezierPatch* values = surface.channelPatch(scene::Channel(c), source))
-          packChannel(*values, scene::Channel(c), packed.texcoords);
-      const std::uint32_t firstPoint = std::uint32_t(packed.points.size());
-      auto add = [&](const glm::dvec3& p) { packed.points.push_back(glm::vec4(glm::vec3(p - origin), 0.0f)); };
-      for (const glm::dvec3& p : bezier.points) add(p);
-      if (bezier.gregory)
-        for (const glm::dvec3& p : bezier.alternates) add(p);
-      const std::uint64_t local = slot;
-      packed.headers.push_back({firstPoint, bezier.gregory ? layout::FACET_PATCH_GREGORY : layout::FACET_PATCH_BEZIER,
-                                info.transitionMask, rate});
-      packed.headers.push_back({std::uint32_t(packed.cells + local * rate * rate),
-                                std::uint32_t(packed.gridVertices + local * (rate + 1) * (rate + 1)),
-                                std::uint32_t(packed.edgeMidpoints + local * 4 * rate), std::uint32_t(i)});
-      packed.patches.push_back(record);
-    }
+    for (std::size_t slot = 0; slot < bvh.leafPatches().size(); ++slot)
+      packPatch(packed, surface, bvh.leafPatches()[slot], slot, range, std::uint32_t(i), origin);
     const std::uint64_t blocksPerSide = std::uint64_t(1) << (levels - 1);
     packed.blocks += patchCount * blocksPerSide * blocksPerSide;
     packed.cells += patchCount * rate * rate;
@@ -166,26 +213,8 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
   const std::uint64_t topNodes = packed.topNodes.size() / layout::FACET_BVH4_TEXELS;
   packed.nodeCount = topNodes + quadtreeNodes;
   checkNodeCount(packed.nodeCount);
-  for (std::size_t i = 0; i < packed.objects.size(); ++i) {
-    layout::ObjectRange& range = packed.objects[i];
-    range.firstQuadtreeNode += std::uint32_t(topNodes);
-    for (const auto& [texel, component] : top.patchSlots[i])
-      packed.topNodes[texel][component] += range.firstQuadtreeNode;
-  }
-  // Post-order from the root: a node's top-level children come first.
-  std::vector<std::pair<std::uint32_t, bool>> stack{{packed.rootNode, false}};
-  while (!stack.empty()) {
-    const auto [node, childrenDone] = stack.back();
-    stack.pop_back();
-    if (childrenDone) {
-      packed.refitOrder.push_back(node);
-      continue;
-    }
-    stack.push_back({node, true});
-    for (std::uint32_t reference :
-         packed.topNodes[std::size_t(node) * layout::FACET_BVH4_TEXELS + layout::FACET_BVH4_REFERENCES])
-      if (reference < topNodes) stack.push_back({reference, false});
-  }
+  placeQuadtrees(packed, top, topNodes);
+  packed.refitOrder = refitOrder(packed, topNodes);
   return packed;
 }
 

@@ -139,17 +139,11 @@ scene::EnvironmentMap halved(const scene::EnvironmentMap& map) {
   return half;
 }
 
-}  // namespace
-
-facet::ibl::PrefilteredEnvironment prefilterOnGpu(gpu::Device& device, const scene::EnvironmentMap& map,
-                                                  const facet::ibl::ModelPairs& models,
-                                                  const facet::ibl::PrefilterSettings& settings) {
-  // facet::ibl in full throughout: the kernels' gpu_backend::ibl hides it here.
-  namespace spirv = gpu_backend::ibl::spirv;
-  // The chain must fit one storage binding (lavapipe binds 128 MiB: maps up
-  // to 4096 x 2048); a larger map is halved on the host first. The levels it
-  // loses are ones no sample reads at the default settings: level 1's
-  // narrowest samples read lod 5.8 of a 16384 x 8192 map's chain.
+// The chain must fit one storage binding (lavapipe binds 128 MiB: maps up
+// to 4096 x 2048); a larger map is halved on the host first, and returned.
+// The levels it loses are ones no sample reads at the default settings:
+// level 1's narrowest samples read lod 5.8 of a 16384 x 8192 map's chain.
+std::optional<scene::EnvironmentMap> reducedToFit(gpu::Device& device, const scene::EnvironmentMap& map) {
   std::optional<scene::EnvironmentMap> reduced;
   const scene::EnvironmentMap* fitting = &map;
   while (chainBytes(fitting->width, fitting->height) > device.limits().maxStorageBufferBindingSize) {
@@ -159,7 +153,57 @@ facet::ibl::PrefilteredEnvironment prefilterOnGpu(gpu::Device& device, const sce
     reduced = halved(*fitting);
     fitting = &*reduced;
   }
-  const scene::EnvironmentMap& source = *fitting;
+  return reduced;
+}
+
+// One DFG table per (distribution, geometry) pair, in the pairs' order.
+std::vector<gpu::Buffer> dispatchDfgTables(PrefilterJob& job, const gpu::Buffer& params,
+                                           const facet::ibl::ModelPairs& models, int size) {
+  namespace spirv = gpu_backend::ibl::spirv;
+  std::vector<gpu::Buffer> tables;
+  for (const auto& [distribution, geometry] : models) {
+    tables.push_back(job.storage("DFG table", 8 * std::uint64_t(size) * std::uint64_t(size)));
+    const std::string label = "dfg D=" + std::to_string(distribution) + " G=" + std::to_string(geometry);
+    job.dispatch(
+        job.pipeline(label.c_str(), spirv::dfg, {{"D_MODEL", double(distribution)}, {"G_MODEL", double(geometry)}}),
+        {{0, &params}, {1, &tables.back()}}, groupsFor(size, FACET_IBL_TILE_SIZE),
+        groupsFor(size, FACET_IBL_TILE_SIZE));
+  }
+  return tables;
+}
+
+// The prefiltered levels after the first, one after another in `bytes`.
+void readPrefilteredLevels(facet::ibl::PrefilteredEnvironment& env, const std::vector<std::byte>& bytes) {
+  std::size_t offset = 0;
+  for (std::size_t i = 1; i < env.levels.size(); ++i) {
+    facet::ibl::RadianceLevel& level = env.levels[i];
+    const std::size_t count = 3 * std::size_t(level.width) * std::size_t(level.height);
+    level.rgb = valuesAt<float>(bytes, offset, count);
+    offset += count * sizeof(float);
+  }
+}
+
+// Each source row's five sums, as sh_project writes them: one vec4 each.
+std::vector<facet::ibl::ShRowSums> shRowSums(const std::vector<std::byte>& bytes, int height) {
+  const std::vector<float> sums = valuesAt<float>(bytes, 0, 20 * std::size_t(height));
+  std::vector<facet::ibl::ShRowSums> rows(height);
+  for (int y = 0; y < height; ++y)
+    for (int k = 0; k < 5; ++k) {
+      const float* sum = &sums[4 * (5 * std::size_t(y) + k)];
+      rows[y][k] = glm::dvec3(sum[0], sum[1], sum[2]);
+    }
+  return rows;
+}
+
+}  // namespace
+
+facet::ibl::PrefilteredEnvironment prefilterOnGpu(gpu::Device& device, const scene::EnvironmentMap& map,
+                                                  const facet::ibl::ModelPairs& models,
+                                                  const facet::ibl::PrefilterSettings& settings) {
+  // facet::ibl in full throughout: the kernels' gpu_backend::ibl hides it here.
+  namespace spirv = gpu_backend::ibl::spirv;
+  const std::optional<scene::EnvironmentMap> reduced = reducedToFit(device, map);
+  const scene::EnvironmentMap& source = reduced ? *reduced : map;
   const std::vector<facet::ibl::LevelSize> chainSizes = facet::ibl::sourceChainSizes(source.width, source.height);
   std::vector<std::uint32_t> chainOffsets;
   std::uint64_t chainFloats = 0;
@@ -220,36 +264,15 @@ facet::ibl::PrefilteredEnvironment prefilterOnGpu(gpu::Device& device, const sce
                groupsFor(irradianceSize.width, FACET_IBL_TILE_SIZE),
                groupsFor(irradianceSize.height, FACET_IBL_TILE_SIZE));
 
-  std::vector<gpu::Buffer> tables;
   uniforms.push_back(job.uniform("DFG params", DfgParams{settings.dfgSize, settings.dfgSamples}));
-  for (const auto& [distribution, geometry] : models) {
-    tables.push_back(job.storage("DFG table", 8 * std::uint64_t(settings.dfgSize) * std::uint64_t(settings.dfgSize)));
-    const std::string label = "dfg D=" + std::to_string(distribution) + " G=" + std::to_string(geometry);
-    job.dispatch(
-        job.pipeline(label.c_str(), spirv::dfg, {{"D_MODEL", double(distribution)}, {"G_MODEL", double(geometry)}}),
-        {{0, &uniforms.back()}, {1, &tables.back()}}, groupsFor(settings.dfgSize, FACET_IBL_TILE_SIZE),
-        groupsFor(settings.dfgSize, FACET_IBL_TILE_SIZE));
-  }
+  const std::vector<gpu::Buffer> tables = dispatchDfgTables(job, uniforms.back(), models, settings.dfgSize);
 
   std::vector<const gpu::Buffer*> results{&levels, &rowSums, &irradiance};
   for (const gpu::Buffer& table : tables) results.push_back(&table);
   const std::vector<std::vector<std::byte>> bytes = job.finish(results);
 
-  std::size_t offset = 0;
-  for (std::size_t i = 1; i < env.levels.size(); ++i) {
-    facet::ibl::RadianceLevel& level = env.levels[i];
-    const std::size_t count = 3 * std::size_t(level.width) * std::size_t(level.height);
-    level.rgb = valuesAt<float>(bytes[0], offset, count);
-    offset += count * sizeof(float);
-  }
-  const std::vector<float> sums = valuesAt<float>(bytes[1], 0, 20 * std::size_t(source.height));
-  std::vector<facet::ibl::ShRowSums> rows(source.height);
-  for (int y = 0; y < source.height; ++y)
-    for (int k = 0; k < 5; ++k) {
-      const float* sum = &sums[4 * (5 * std::size_t(y) + k)];
-      rows[y][k] = glm::dvec3(sum[0], sum[1], sum[2]);
-    }
-  env.irradianceSh = facet::ibl::shFromRowSums(rows);
+  readPrefilteredLevels(env, bytes[0]);
+  env.irradianceSh = facet::ibl::shFromRowSums(shRowSums(bytes[1], source.height));
   env.irradianceMap = {irradianceSize.width, irradianceSize.height, 0.0,
                        valuesAt<float>(bytes[2], 0, 3 * std::size_t(irradianceSize.width) * irradianceSize.height)};
   env.irradianceFromMap = facet::ibl::usesIrradianceMap(env.irradianceSh, env.irradianceMap);

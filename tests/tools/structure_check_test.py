@@ -57,6 +57,7 @@ class StructureCheckTest(unittest.TestCase):
                 with open(os.path.join(root, path), "w") as file:
                     file.write(text)
             violations, cycles, _ = check_structure.check(root)
+            violations += check_structure.long_function_violations(root)
             violations += check_structure.wall_clock_violations(root)
             output = io.StringIO()
             with contextlib.redirect_stdout(output):
@@ -176,6 +177,44 @@ class StructureCheckTest(unittest.TestCase):
         violations, _, _, _ = self.check({"scenes/long.cpp": "x\n" * 450, "apps/facet/long.cpp": "x\n" * 451,
                                           "tools/long.py": "x\n" * 450 + "x"})
         self.assertEqual(violations, ["apps/facet/long.cpp: 451 lines > 450", "tools/long.py: 451 lines > 450"])
+
+    def test_accepts_a_100_line_function_and_rejects_101(self):
+        def function(signature, lines, body="  x();\n"):
+            return signature + " {\n" + body * (lines - 2) + "}\n"
+        violations, _, status, _ = self.check({
+            "scenes/long.cpp": function("namespace {\nint fits(int a)", 100)
+                               + "}  // namespace\n\n" + function("int\nScene::tooLong(int a,\n    int b) const", 99),
+            "compute/raycast/shading/shade.comp": "layout(local_size_x = 64) in;\n" + function("void main()", 101),
+            # The constructor's first line counts, and the members' {} are not its body.
+            "engine/camera/camera.cpp": function("Camera::Camera(int a)\n    : a_{a}, b_(a)", 100),
+            "tools/long.py": "def fits():\n" + "    x()\n" * 99 + "\n\nclass A:\n    def long(self):\n"
+                             + "        x()\n" * 100,
+            "tests/scenes/long_test.cpp": function("TEST(Scene, Long)", 300),
+        })
+        self.assertEqual(status, 1)
+        self.assertEqual(violations, [
+            "compute/raycast/shading/shade.comp:2: main is 101 lines > 100: split it into functions of one concept each",
+            "engine/camera/camera.cpp:1: Camera::Camera is 101 lines > 100: split it into functions of one concept each",
+            "scenes/long.cpp:104: Scene::tooLong is 101 lines > 100: split it into functions of one concept each",
+            "tools/long.py:104: A.long is 101 lines > 100: split it into functions of one concept each",
+        ])
+
+    def test_braces_in_comments_strings_and_blocks_are_not_functions(self):
+        body = ('  auto open = "{{{";  // }\n'
+                "  char close = '}';\n"
+                "  /* } } */\n"
+                '  auto raw = R"x(})x";\n'
+                "  auto call = [](int a) { return a; };\n"
+                "  if (open) {\n  }\n")
+        text = ("#define BRACE {\n"
+                "struct Pair { int a{1}; int b = 2; };\n"
+                "enum class E { A, B };\n"
+                "const int table[] = {1, 2, 3};\n"
+                'extern "C" {\nint f(int a) {\n' + body * 14 + "}\n}\n")
+        # f is lines 6 to 105: 100 lines, which a brace too few or too many would change.
+        self.assertEqual(check_structure.brace_functions(text), [("f", 6, 105)])
+        violations, _, _, _ = self.check({"scenes/braces.cpp": text})
+        self.assertEqual(violations, [])
 
     def test_rejects_a_time_limit_a_busy_machine_can_reach(self):
         violations, _, status, _ = self.check({
