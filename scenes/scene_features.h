@@ -1,8 +1,8 @@
-// What a scene uses, decided once per scene: every kernel variant the GPU
-// path compiles and every choice the CPU reference makes between a feature's
-// code and its absence follow from this record, so that a feature no object
-// uses costs a scene nothing (as pbrt-v4's haveBasicEvalMaterial and
-// Mitsuba's m_has_* flags do).
+// What a scene uses, decided once per render: every kernel variant the GPU
+// path compiles follows from this record, so that a feature no object uses
+// costs a scene nothing (as pbrt-v4's haveBasicEvalMaterial and Mitsuba's
+// m_has_* flags do). The CPU reference decides per hit instead, from the
+// material it meets.
 #pragma once
 
 #include "scenes/scene.h"
