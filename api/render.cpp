@@ -12,6 +12,7 @@
 #include "engine/renderer.h"
 #include "facet/version.h"
 #include "scenes/input_error.h"
+#include "scenes/light_transport.h"
 
 namespace facet::v0 {
 
@@ -38,7 +39,9 @@ RenderResult Renderer::render(const Scene& input, const RenderSettings& settings
     checkImagesFitInMemory(s, 1, "render settings: width x height");
     const RenderReport report =
         state_->engine.render(s, settings.backend == Backend::Cpu ? facet::Backend::Cpu : facet::Backend::Gpu);
-    RenderResult result{publicImage(report.image), report.device, report.totalMilliseconds(), {}};
+    RenderResult result{
+        publicImage(report.image), report.device, report.totalMilliseconds(), report.lightTransport.bounces,
+        report.lightTransport.note, {}};
     for (const cpu::BounceRays& rays : report.raysPerBounce)
       result.raysPerBounce.push_back({rays.rays, rays.hits, rays.shadowRays});
     return result;
@@ -48,7 +51,8 @@ RenderResult Renderer::render(const Scene& input, const RenderSettings& settings
 ParityReport Renderer::parity(const Scene& input, const RenderSettings& settings) {
   return api::translateErrors([&] {
     const std::scoped_lock oneAtATime(state_->rendering);
-    const scene::Scene s = withSettings(input, settings);
+    scene::Scene s = withSettings(input, settings);
+    scene::stateLightTransport(s);
     checkImagesFitInMemory(s, 2, "render settings: width x height");
     // The GPU first: it refuses what it cannot render (a scene beyond float's range) before the CPU spends a
     // render on it.

@@ -33,8 +33,11 @@ scene::Scene withSettings(const Scene& input, const RenderSettings& s) {
     out.render.method =
         *s.method == Method::Exact ? scene::IntersectionMethod::Exact : scene::IntersectionMethod::Tessellated;
   if (s.tessellationRate) out.render.tessellationRate = s.tessellationRate;
-  out.render.bounces = s.bounces.value_or(out.render.bounces);
-  require(scene::pathsCountEnvironmentOnce(out.render.bounces, out.environment), "bounces",
+  if (s.bounces) {
+    out.render.bounces = *s.bounces;
+    out.render.bouncesStated = true;
+  }
+  require(!scene::bouncesContradictEnvironment(out.render, out.environment), "bounces",
           scene::kBouncesNeedOcclusionRule);
   return out;
 }

@@ -76,11 +76,11 @@ const char* methodName(IblMethod method) {
 // The file is named only when it is not the map the scene holds, which the
 // block then keeps.
 json environmentBlock(const Environment& e, const std::optional<scene::Environment>& current) {
-  json block = {{"intensity", e.intensity},
-                {"rotation", e.rotationDegrees},
-                {"method", methodName(e.method)},
-                {"samples", e.samples},
-                {"occlusion", e.occlusion}};
+  json block = {{"intensity", e.intensity}, {"rotation", e.rotationDegrees}, {"samples", e.samples}};
+  if (e.method) {
+    block["method"] = methodName(*e.method);
+    block["occlusion"] = e.occlusion;
+  }
   if (!current || current->map->source.string() != e.file) block["file"] = e.file;
   return block;
 }
@@ -137,7 +137,12 @@ std::optional<Environment> Scene::environment() const {
   const IblMethod method = e->method == scene::IblMethod::Sampled    ? IblMethod::Sampled
                            : e->method == scene::IblMethod::Filtered ? IblMethod::Filtered
                                                                      : IblMethod::Prefiltered;
-  return Environment{e->map->source.string(), e->intensity, e->rotationDegrees, method, e->samples, e->occlusion};
+  return Environment{e->map->source.string(),
+                     e->intensity,
+                     e->rotationDegrees,
+                     e->methodStated ? std::optional(method) : std::nullopt,
+                     e->samples,
+                     e->occlusion};
 }
 
 void Scene::setEnvironment(const std::optional<Environment>& environment) {
@@ -146,7 +151,7 @@ void Scene::setEnvironment(const std::optional<Environment>& environment) {
     if (environment)
       e = scene::readEnvironmentBlock(environmentBlock(*environment, data_->scene.environment), kSource,
                                       data_->scene.environment);
-    if (!scene::pathsCountEnvironmentOnce(data_->scene.render.bounces, e))
+    if (scene::bouncesContradictEnvironment(data_->scene.render, e))
       throw scene::InputError(kSource, 0, "render.bounces", scene::kBouncesNeedOcclusionRule);
     return changed(*data_, [&](scene::Scene& s) { s.environment = std::move(e); });
   });

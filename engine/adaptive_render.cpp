@@ -10,6 +10,8 @@
 #include <string>
 
 #include "engine/image/catcher_composite.h"
+#include "scenes/light_transport.h"
+#include "scenes/scene_geometry.h"
 
 namespace facet {
 namespace {
@@ -126,7 +128,12 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
   checkSettings(settings);
   const Clock::time_point start = Clock::now();
   const int width = scene.render.width, height = scene.render.height;
-  const scene::Scene round = withRoundSpp(scene, settings.roundSpp);
+  // Chosen once for every round, not per round (scenes/light_transport.h).
+  std::optional<scene::LightTransport> transport;
+  if (scene::leavesLightTransportUnsaid(scene))
+    transport = scene::chooseLightTransport(scene, scene::buildGeometry(scene));
+  const scene::Scene round =
+      withRoundSpp(transport ? scene::withLightTransport(scene, *transport) : scene, settings.roundSpp);
   std::optional<scene::GroundScenes> groundRound;
   if (ground)
     groundRound = scene::GroundScenes{withRoundSpp(ground->holdout, settings.roundSpp),
@@ -161,7 +168,14 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
       addGroundRound(renderer, *groundRound, report.rounds, window, grid, active, backend, threads, groundSums);
     rounds.add(rendered.image, window, active);
     report.samples += std::uint64_t(settings.roundSpp) * window.pixelCount();
-    if (report.rounds++ == 0) report.first = std::move(rendered);
+    if (report.rounds++ == 0) {
+      report.first = std::move(rendered);
+      if (transport) {
+        report.first.lightTransport = *transport;
+        report.first.warnings.insert(report.first.warnings.end(), transport->warnings.begin(),
+                                     transport->warnings.end());
+      }
+    }
 
     std::vector<int> next;
     bool capped = false;

@@ -10,7 +10,7 @@
 #include "engine/cpu/reference_renderer.h"
 #include "engine/gpu_backend/gpu_renderer.h"
 #include "engine/gpu_backend/pipeline_cache_file.h"
-#include "scenes/path_reach.h"
+#include "scenes/light_transport.h"
 #include "scenes/scene_geometry.h"
 
 namespace facet {
@@ -104,18 +104,16 @@ RenderReport Renderer::render(const scene::Scene& scene, Backend backend, const 
   Stopwatch clock;
   scene::SceneGeometry geometry = scene::buildGeometry(scene);
   // Decided once, here, so that both backends render the same scene.
-  std::optional<scene::Scene> withoutPaths;
-  if (scene::pathsCountEnvironmentOnce(scene.render.bounces, scene.environment))
-    if (std::optional<std::string> why = scene::whyNoPathContinues(scene, geometry)) {
-      withoutPaths = scene;
-      withoutPaths->render.bounces = 0;
-      report.pathsNote = "paths: none cast: " + *why;
-    }
-  const scene::Scene& rendered = withoutPaths ? *withoutPaths : scene;
+  const scene::LightTransport transport = scene::chooseLightTransport(scene, geometry);
+  std::optional<scene::Scene> chosen;
+  if (scene::changesScene(transport, scene)) scene::applyLightTransport(transport, chosen.emplace(scene));
+  const scene::Scene& rendered = chosen ? *chosen : scene;
+  report.lightTransport = transport;
+  report.warnings.insert(report.warnings.end(), transport.warnings.begin(), transport.warnings.end());
   report.stages.push_back({Stage::RefineBvh, clock.lap()});
   report.patches = geometry.patchCount();
   report.geometrySummary = scene::describe(scene, geometry);
-  if (!report.pathsNote.empty()) report.geometrySummary += "\n" + report.pathsNote;
+  if (!transport.note.empty()) report.geometrySummary += "\n" + transport.note;
   switch (backend) {
     case Backend::Cpu: {
       cpu::ReferenceStatistics statistics;

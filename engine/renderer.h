@@ -14,6 +14,7 @@
 #include "engine/image/image.h"
 #include "engine/image/pixel_rect.h"
 #include "engine/stages/stages.h"
+#include "scenes/light_transport.h"
 #include "scenes/scene.h"
 
 namespace facet {
@@ -32,9 +33,9 @@ struct RenderReport {
   PixelRect window;             // where `image` lies in the full image
   std::string device;           // what ran the render
   std::string geometrySummary;  // refinement, patch counts and memory per object
-  // Why the scene's bounces cast no paths (scenes/path_reach.h), rendered as
-  // with 0 bounces; empty where paths were traced or none were asked for.
-  std::string pathsNote;
+  // The light transport rendered, stated or chosen, and what was chosen and
+  // why (scenes/light_transport.h).
+  scene::LightTransport lightTransport;
   int patches = 0;
   std::vector<StageTime> stages;
   std::uint64_t primaryRays = 0;

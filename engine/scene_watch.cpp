@@ -7,6 +7,8 @@
 
 #include "scenes/input_error.h"
 #include "scenes/input_file.h"
+#include "scenes/light_transport.h"
+#include "scenes/scene_geometry.h"
 
 namespace facet {
 namespace {
@@ -106,12 +108,18 @@ void SceneWatch::render() {
   begun.change = changes_;
   begun.files = changes_ == 0 ? files_ : changed_;
   if (scene)
-    renderPasses(*scene, begun, start);
+    renderPasses(std::move(*scene), begun, start);
   else
     report(begun);
 }
 
-void SceneWatch::renderPasses(const scene::Scene& scene, WatchPicture& begun, Clock::time_point start) {
+void SceneWatch::renderPasses(scene::Scene scene, WatchPicture& begun, Clock::time_point start) {
+  // Chosen once for the picture's passes and strips (scenes/light_transport.h).
+  if (scene::leavesLightTransportUnsaid(scene)) {
+    const scene::LightTransport transport = scene::chooseLightTransport(scene, scene::buildGeometry(scene));
+    scene = scene::withLightTransport(std::move(scene), transport);
+    begun.lightTransport = transport.note;
+  }
   int written = 0;  // passes in the outputs
   for (int pass = 0; pass < settings_.passes && !stopped(); ++pass) {
     try {

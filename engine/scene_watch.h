@@ -14,6 +14,7 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "engine/image/image.h"
@@ -49,6 +50,7 @@ struct WatchPicture {
   double milliseconds = 0;             // from the start of the load to the first pass written
   double loadMilliseconds = 0, renderMilliseconds = 0, stageMilliseconds = 0, writeMilliseconds = 0;
   std::optional<bool> geometryDiced;  // ProgressivePicture::Pass's
+  std::string lightTransport;         // what was chosen and why, where the scene left it unsaid
 };
 
 // A picture refined past its first pass, once its passes end.
@@ -103,7 +105,7 @@ class SceneWatch {
   static Stamps stampsOf(const std::vector<std::filesystem::path>& files);
   static std::vector<std::filesystem::path> changedSince(const Stamps& stamps);
 
-  void renderPasses(const scene::Scene& scene, WatchPicture& begun, std::chrono::steady_clock::time_point start);
+  void renderPasses(scene::Scene scene, WatchPicture& begun, std::chrono::steady_clock::time_point start);
   bool stopped() const { return events_.stopRequested && events_.stopRequested(); }
   void report(const WatchPicture& picture) const;
   void reportBadInput(const std::exception_ptr& error) const;

@@ -94,11 +94,11 @@ class Environment:
     file: str
     intensity: float
     rotation: float
-    method: str  # sampled, prefiltered or filtered
+    method: Optional[str]  # sampled, prefiltered or filtered; None: chosen, sampled where paths run
     samples: int
     occlusion: bool
     def __init__(self, file: Union[str, PathLike[str]], *, intensity: float = 1.0, rotation: float = 0.0,
-                 method: str = "prefiltered", samples: int = 16, occlusion: bool = True) -> None: ...
+                 method: Optional[str] = None, samples: int = 16, occlusion: bool = True) -> None: ...
     def replace(self, *, file: Optional[Union[str, PathLike[str]]] = None, intensity: Optional[float] = None,
                 rotation: Optional[float] = None, method: Optional[str] = None, samples: Optional[int] = None,
                 occlusion: Optional[bool] = None) -> Environment: ...

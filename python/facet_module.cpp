@@ -74,6 +74,8 @@ py::dict renderDict(facet::Renderer& renderer, const py::object& sceneOrPath, co
     return rendered;
   }();
   py::dict out = imageDict(std::move(result.image));
+  out["bounces"] = result.bounces;
+  out["light_transport"] = result.lightTransport;
   // As `facet render --json` reports it: only paths of bounces above 0 have it.
   if (result.raysPerBounce.empty()) return out;
   py::list bounces;

@@ -169,19 +169,23 @@ void bindCamera(py::module_& m) {
 void bindEnvironment(py::module_& m) {
   py::class_<facet::Environment>(m, "Environment",
                                  "An equirectangular .exr or .hdr map, with a scene file's environment fields")
-      .def(py::init([](const py::object& file, double intensity, double rotation, const std::string& method,
-                       int samples, bool occlusion) {
-             return facet::Environment{fspath(file), intensity, rotation, iblMethod(method), samples, occlusion};
+      .def(py::init([](const py::object& file, double intensity, double rotation, OptText method, int samples,
+                       bool occlusion) {
+             return facet::Environment{fspath(file), intensity, rotation,
+                                       method ? std::optional(iblMethod(*method)) : std::nullopt, samples, occlusion};
            }),
            py::arg("file"), py::kw_only(), py::arg("intensity") = 1.0, py::arg("rotation") = 0.0,
-           py::arg("method") = "prefiltered", py::arg("samples") = 16, py::arg("occlusion") = true)
+           py::arg("method") = py::none(), py::arg("samples") = 16, py::arg("occlusion") = true)
       .def_readonly("file", &facet::Environment::file,
                     "The map (a loaded scene's may be the default studio map's name, or empty for a uniform colour)")
       .def_readonly("intensity", &facet::Environment::intensity, "What the map is scaled by")
       .def_readonly("rotation", &facet::Environment::rotationDegrees, "Degrees about +y")
       .def_property_readonly(
-          "method", [](const facet::Environment& e) { return iblMethodName(e.method); },
-          "The lighting method: sampled, prefiltered or filtered")
+          "method",
+          [](const facet::Environment& e) -> OptText {
+            return e.method ? OptText(iblMethodName(*e.method)) : std::nullopt;
+          },
+          "The lighting method: sampled, prefiltered or filtered; None: chosen, sampled where paths run")
       .def_readonly("samples", &facet::Environment::samples, "sampled, filtered: pairs per camera sample")
       .def_readonly("occlusion", &facet::Environment::occlusion, "sampled, filtered: shadow rays on")
       .def(

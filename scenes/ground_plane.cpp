@@ -65,8 +65,10 @@ GroundScenes groundScenes(const Scene& model) {
   lit.materials.clear();
   lit.lights.clear();
   lit.render.bounces = 0;
+  lit.render.bouncesStated = true;
   if (lit.environment->method == IblMethod::Prefiltered) lit.environment->method = IblMethod::Filtered;
   lit.environment->occlusion = true;
+  lit.environment->methodStated = true;
   lit.environment->samples = std::min(lit.environment->samples, 4);
 
   GroundScenes scenes{lit, lit};

@@ -141,18 +141,21 @@ ConvexityCheck checkConvexity(const SubdivisionSurface& surface, const PatchBvh&
   return check;
 }
 
-std::optional<std::string> whyNoPathContinues(const Scene& scene, const SceneGeometry& geometry) {
+PathReach pathReach(const Scene& scene, const SceneGeometry& geometry) {
+  if (scene.objects.empty()) return {false, "the scene has no object"};
+  if (scene.objects.size() > 1) return {true, std::to_string(scene.objects.size()) + " objects can see each other"};
+  const Object& object = scene.objects.front();
+  const materials::Material& material = scene.materials.at(std::size_t(object.material));
+  if (materials::isTransmissive(material)) return {true, "'" + material.name + "' transmits"};
   // The tessellation's own dents (a grid's diagonals, the fans at level
   // transitions) are not checked: it traces.
-  if (scene.render.bounces == 0 || scene.objects.size() != 1 || scene.render.method != IntersectionMethod::Exact)
-    return std::nullopt;
-  const Object& object = scene.objects.front();
-  if (materials::isTransmissive(scene.materials.at(std::size_t(object.material))) || !closesIntoSphere(object.cage))
-    return std::nullopt;
+  if (scene.render.method != IntersectionMethod::Exact) return {true, "the tessellation is not checked for convexity"};
+  if (!closesIntoSphere(object.cage)) return {true, "'" + object.name + "' has holes, handles or open edges"};
   const ObjectGeometry& g = geometry.objects.front();
   const ConvexityCheck check = checkConvexity(g.surface, g.bvh, scene.camera.eye, kConvexTolerance);
-  if (check.excess > kConvexTolerance || check.eyeClearance <= kConvexTolerance) return std::nullopt;
-  return "one convex closed object, seen from outside; no continuation can hit";
+  if (check.excess > kConvexTolerance) return {true, "'" + object.name + "' is concave"};
+  if (check.eyeClearance <= kConvexTolerance) return {true, "the eye is inside '" + object.name + "'"};
+  return {false, "one convex closed object, seen from outside; no continuation can hit"};
 }
 
 }  // namespace facet::scene

@@ -2,14 +2,14 @@
 // (docs/rendering.md, "Scenes whose paths cannot continue"). A continuation
 // that misses adds nothing, so where none can hit, tracing paths cannot
 // change the image: the front-end then renders with 0 bounces on both
-// backends, and the image is byte-identical to `--bounces 0`.
+// backends (scenes/light_transport.h), and the image is byte-identical to
+// `--bounces 0`.
 #pragma once
 
 #include <glm/vec3.hpp>
 
 #include <cstddef>
 #include <limits>
-#include <optional>
 #include <string>
 
 #include "scenes/scene.h"
@@ -51,8 +51,13 @@ ConvexityCheck checkConvexity(const SubdivisionSurface& surface, const PatchBvh&
 // to the surface.
 inline constexpr double kConvexTolerance = 1e-7;
 
-// Why no continuation of `scene`'s paths can hit anything, for the render
-// report; none where one may (or where the scene has no paths).
-std::optional<std::string> whyNoPathContinues(const Scene& scene, const SceneGeometry& geometry);
+// Whether a continuation of `scene`'s paths can hit anything, and why, for
+// the render report; the check of convexity runs only for one closed object
+// cast exactly.
+struct PathReach {
+  bool continues = true;
+  std::string why;
+};
+PathReach pathReach(const Scene& scene, const SceneGeometry& geometry);
 
 }  // namespace facet::scene

@@ -73,6 +73,10 @@ struct RenderSettings {
   int height = 512;
   int samplesPerPixel = 1;  // a square number: stratified sqrt x sqrt
   int bounces = 0;          // continuations per camera sample's path; 0: direct light only
+  // False where a scene file, the command line or an API left the bounces
+  // and the lobe limits unsaid: facet chooses them from the scene
+  // (scenes/light_transport.h). A scene built in code states them.
+  bool bouncesStated = true;
   // Continuations of each lobe kind a path may take besides `bounces`
   // (rules/sampling/path_samples.h); -1: no limit of its own.
   int diffuseBounces = -1;
@@ -106,6 +110,10 @@ struct Environment {
   IblMethod method = IblMethod::Prefiltered;
   int samples = 16;  // sampled, filtered: pairs per camera sample
   bool occlusion = true;
+  // False where nothing said the method or the occlusion: where paths run,
+  // facet samples the environment with its shadow rays
+  // (scenes/light_transport.h).
+  bool methodStated = true;
   // Sampled, filtered: which random numbers (rules/environment/sampled_environment.h); renders
   // with different seeds are statistically independent.
   std::uint32_t seed = 0;
@@ -119,6 +127,13 @@ inline bool limitsLobes(const RenderSettings& r) {
 // Whether paths of `bounces` count the environment once (kBouncesNeedOcclusionRule).
 inline bool pathsCountEnvironmentOnce(int bounces, const std::optional<Environment>& environment) {
   return bounces == 0 || !environment || (environment->occlusion && environment->method != IblMethod::Prefiltered);
+}
+
+// Whether the stated bounces and the stated environment method contradict
+// each other (kBouncesNeedOcclusionRule): an unstated method is chosen to
+// carry the paths.
+inline bool bouncesContradictEnvironment(const RenderSettings& r, const std::optional<Environment>& environment) {
+  return environment && environment->methodStated && !pathsCountEnvironmentOnce(r.bounces, environment);
 }
 
 struct Object {

@@ -25,6 +25,7 @@ Scene loadScene(const std::filesystem::path& path, std::span<const JsonOverride>
   const bool cage = extension == ".obj", gltf = extension == ".gltf" || extension == ".glb";
   if (cage || gltf) {
     Scene scene = cage ? sceneFromCage(loadObjCage(path)) : loadGltfScene(path);
+    scene.render.bouncesStated = false;  // a model file says nothing of light transport
     applyModelOverrides(scene, path, overrides);
     return scene;
   }

@@ -155,6 +155,7 @@ Scene sceneFromDocument(const json& document, const std::filesystem::path& path)
 
   Scene scene;
   scene.source = path;
+  scene.render.bouncesStated = false;  // unless the render block states them
   std::map<std::string, int> materialIndex;
   if (root.has("materials")) {
     const Field materials = root["materials"];
@@ -209,7 +210,7 @@ Scene sceneFromDocument(const json& document, const std::filesystem::path& path)
 
   if (root.has("render")) readRender(root["render"], scene.render);
   if (root.has("environment")) scene.environment = readEnvironment(root["environment"], path);
-  if (!pathsCountEnvironmentOnce(scene.render.bounces, scene.environment))
+  if (bouncesContradictEnvironment(scene.render, scene.environment))
     root["render"]["bounces"].fail(kBouncesNeedOcclusionRule);
   scene.camera = root.has("camera") ? readCamera(root["camera"], Camera{}) : frameBounds(cageBounds(scene));
   if (root.has("camera_keys"))

@@ -23,7 +23,10 @@ void readRender(const Field& f, RenderSettings& r) {
     r.samplesPerPixel = f["spp"].integer(1, 4096);
     if (!isSquare(r.samplesPerPixel)) f["spp"].fail(kSamplesPerPixelRule);
   }
-  if (f.has("bounces")) r.bounces = f["bounces"].integer(0, kMaxBounces);
+  if (f.has("bounces")) {
+    r.bounces = f["bounces"].integer(0, kMaxBounces);
+    r.bouncesStated = true;
+  }
   for (auto [key, limit] :
        {std::pair{"diffuse_bounces", &r.diffuseBounces}, std::pair{"glossy_bounces", &r.glossyBounces},
         std::pair{"transmission_bounces", &r.transmissionBounces}})
@@ -50,7 +53,7 @@ Environment readEnvironment(const Field& f, const std::filesystem::path& sceneFi
   f.object({"file", "color", "intensity", "rotation", "method", "samples", "occlusion"});
   if (f.has("file") && f.has("color")) f.fail("give exactly one of file (an .exr or .hdr map) and color");
   if (!f.has("file") && !f.has("color") && !start) f.fail("give exactly one of file (an .exr or .hdr map) and color");
-  Environment environment = start.value_or(Environment{});
+  Environment environment = start.value_or(Environment{.methodStated = false});
   if (f.has("file")) {
     const Field file = f["file"];
     try {
@@ -75,6 +78,7 @@ Environment readEnvironment(const Field& f, const std::filesystem::path& sceneFi
         {{"sampled", IblMethod::Sampled}, {"prefiltered", IblMethod::Prefiltered}, {"filtered", IblMethod::Filtered}});
   if (f.has("samples")) environment.samples = f["samples"].integer(1, 16384);
   if (f.has("occlusion")) environment.occlusion = f["occlusion"].boolean();
+  if (f.has("method") || f.has("occlusion")) environment.methodStated = true;
   return environment;
 }
 

@@ -55,6 +55,7 @@ Environment studioEnvironment() {
       std::make_shared<const EnvironmentMap>(studioEnvironmentMap());
   Environment environment;
   environment.map = map;
+  environment.methodStated = false;
   return environment;
 }
 

@@ -19,6 +19,7 @@
 #include "parity_output.h"
 #include "scene_options.h"
 #include "scene_warnings.h"
+#include "scenes/light_transport.h"
 
 namespace facet::cli {
 namespace {
@@ -61,6 +62,7 @@ ParityCase judgeScene(const std::string& file, const ParityCommandOptions& o,
   scene::Scene scene = loadEditedScene(file, o.edits);
   printWarnings(sceneWarnings(scene), false);
   applySceneOverrides(o.sceneOverrides, scene);
+  scene::stateLightTransport(scene);
   // The reference's render; per adapter its render, the first pair, the
   // pairs' sums (about an image and a half) and the two mean images.
   checkImagesFitInMemory(scene, 1 + 6 * int(adapters.size()),

@@ -43,15 +43,18 @@ nlohmann::json renderJson(const std::string& label, int frame, const AdaptiveRep
           {"spp_mean", r.sppMean},    {"spp_min", *least},
           {"spp_max", *most},         {"max_tile_error", r.maxError},
           {"tile_errors", r.errors},  {"noise_threshold", threshold},
-          {"stop", toString(r.stop)}, {"milliseconds", r.seconds * 1000.0}};
+          {"stop", toString(r.stop)}, {"milliseconds", r.seconds * 1000.0},
+          {"bounces", r.first.lightTransport.bounces},  {"light_transport", r.first.lightTransport.note}};
 }
 
 void printRender(const nlohmann::json& r, bool turntable) {
   const std::string frame = turntable ? " frame " + std::to_string(int(r["frame"])) : std::string();
-  std::printf("%s%s: %d rounds, %d-%d spp (mean %.1f), largest tile error %.4f (threshold %g): %s, %.2f s\n",
+  const std::string transport = r["light_transport"];
+  std::printf("%s%s: %d rounds, %d-%d spp (mean %.1f), largest tile error %.4f (threshold %g): %s, %.2f s%s\n",
               std::string(r["material"]).c_str(), frame.c_str(), int(r["rounds"]), int(r["spp_min"]), int(r["spp_max"]),
               double(r["spp_mean"]), double(r["max_tile_error"]), double(r["noise_threshold"]),
-              std::string(r["stop"]).c_str(), double(r["milliseconds"]) / 1000.0);
+              std::string(r["stop"]).c_str(), double(r["milliseconds"]) / 1000.0,
+              transport.empty() ? "" : ("; " + transport).c_str());
 }
 
 void runPreview(const PreviewStageFlags& f) {

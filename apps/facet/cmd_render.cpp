@@ -125,6 +125,18 @@ void writeOutputs(const RenderCommandOptions& o, const RenderJob& job, const sce
   writeAllOrNothing(outputs);
 }
 
+// The outputs record what was rendered, the chosen light transport too; the
+// next frame chooses again, its camera its own.
+void writeRendered(const RenderCommandOptions& o, const RenderJob& job, scene::Scene& scene,
+                   const RenderReport& report, const PreviewOptions& preview) {
+  const scene::RenderSettings render = scene.render;
+  const std::optional<scene::Environment> environment = scene.environment;
+  scene::applyLightTransport(report.lightTransport, scene);
+  writeOutputs(o, job, scene, report.image, report.window, preview);
+  scene.render = render;
+  scene.environment = environment;
+}
+
 void runWatch(const RenderCommandOptions& o) {
   const PreviewOptions preview = chosenPreview(o.preview);
   const RenderJob job{std::nullopt, o.exr, o.png};
@@ -190,7 +202,7 @@ void runRender(const RenderCommandOptions& o) {
     const double wallMilliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
-    writeOutputs(o, job, scene, report.image, report.window, preview);
+    writeRendered(o, job, scene, report, preview);
 
     summary["adapter"] = report.device;
     summary["renders"].push_back(renderJson(report, job, wallMilliseconds));

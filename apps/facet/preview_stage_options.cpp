@@ -26,7 +26,8 @@ void addPreviewStageOptions(CLI::App& c, PreviewStageFlags& f) {
   c.add_option("--columns", f.columns, "Cells per row (default: a grid about as wide as tall)")
       ->check(CLI::Range(1, 64));
   addEnvironmentOptions(c, f.lighting);
-  c.add_option("--ibl", f.lighting.ibl, "How the environment lights the model (default: prefiltered)")
+  c.add_option("--ibl", f.lighting.ibl, "How the environment lights the model (default: prefiltered, or sampled with "
+                 "occlusion where paths run)")
       ->check(CLI::IsMember({"sampled", "prefiltered", "filtered"}));
   c.add_flag("--no-ground", f.noGround,
              "No ground under the model (default: a ground that catches the model's shadow and is otherwise unseen)");

@@ -71,8 +71,8 @@ void printSummaryLine(const scene::Scene& scene, const RenderReport& report, con
                      std::to_string(report.window.width()) + "x" + std::to_string(report.window.height()) + ", " +
                      std::to_string(scene.render.samplesPerPixel) + " spp, " +
                      (scene.render.method == scene::IntersectionMethod::Exact ? "exact" : "tessellated");
-  if (scene.render.bounces > 0)
-    line += ", " + std::to_string(scene.render.bounces) + (scene.render.bounces == 1 ? " bounce" : " bounces");
+  const int bounces = report.lightTransport.bounces;
+  if (bounces > 0) line += ", " + std::to_string(bounces) + (bounces == 1 ? " bounce" : " bounces");
   // The rays each bounce cast, up to the last that cast any.
   std::size_t lastBounce = report.raysPerBounce.size();
   while (lastBounce > 1 && report.raysPerBounce[lastBounce - 1].rays == 0) --lastBounce;
@@ -87,7 +87,7 @@ void printSummaryLine(const scene::Scene& scene, const RenderReport& report, con
   // What facet added or left out is named, never only in --verbose.
   if (scene.environment && scene::isStudioEnvironment(*scene.environment))
     line += std::string("; lit by the ") + scene::kStudioEnvironmentName + " (the scene has no lights or environment)";
-  if (!report.pathsNote.empty()) line += "; " + report.pathsNote;
+  if (!report.lightTransport.note.empty()) line += "; " + report.lightTransport.note;
   std::printf("%s\n", line.c_str());
 }
 
@@ -130,7 +130,8 @@ nlohmann::json renderJson(const RenderReport& report, const RenderJob& job, doub
                            {"rays_per_second", raysPerSecond(report)},
                            {"gpu_bytes", report.gpuBytes},
                            {"outputs", outputPaths(job)}};
-  if (!report.pathsNote.empty()) render["paths"] = report.pathsNote;
+  render["bounces"] = report.lightTransport.bounces;
+  if (!report.lightTransport.note.empty()) render["light_transport"] = report.lightTransport.note;
   if (!report.warnings.empty()) render["warnings"] = report.warnings;
   if (report.raysPerBounce.empty()) return render;
   nlohmann::json bounces = nlohmann::json::array();

@@ -37,7 +37,7 @@ glm::dvec3 vector3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
 // environment flags need an environment from either.
 void applyEnvironmentOverrides(const SceneOverrides& o, scene::Scene& scene) {
   if (!o.environment.empty()) {
-    if (!scene.environment) scene.environment.emplace();
+    if (!scene.environment) scene.environment = scene::Environment{.methodStated = false};
     scene.environment->map = std::make_shared<const scene::EnvironmentMap>(scene::loadEnvironmentMap(o.environment));
   }
   const bool anyEnvironmentFlag =
@@ -56,6 +56,7 @@ void applyEnvironmentOverrides(const SceneOverrides& o, scene::Scene& scene) {
                                      : scene::IblMethod::Prefiltered;
   if (o.iblSamples) e.samples = *o.iblSamples;
   if (!o.occlusion.empty()) e.occlusion = o.occlusion == "on";
+  if (!o.ibl.empty() || !o.occlusion.empty()) e.methodStated = true;
 }
 
 }  // namespace
@@ -76,12 +77,15 @@ void applySceneOverrides(const SceneOverrides& o, scene::Scene& scene) {
       throw std::invalid_argument("--spp " + std::to_string(*o.spp) + ": " + scene::kSamplesPerPixelRule);
     scene.render.samplesPerPixel = *o.spp;
   }
-  if (o.bounces) scene.render.bounces = *o.bounces;
+  if (o.bounces) {
+    scene.render.bounces = *o.bounces;
+    scene.render.bouncesStated = true;
+  }
   if (o.diffuseBounces) scene.render.diffuseBounces = *o.diffuseBounces;
   if (o.glossyBounces) scene.render.glossyBounces = *o.glossyBounces;
   if (o.transmissionBounces) scene.render.transmissionBounces = *o.transmissionBounces;
   applyEnvironmentOverrides(o, scene);
-  if (!scene::pathsCountEnvironmentOnce(scene.render.bounces, scene.environment))
+  if (scene::bouncesContradictEnvironment(scene.render, scene.environment))
     throw std::invalid_argument("bounces " + std::to_string(scene.render.bounces) + " (--bounces or the scene's " +
                                 "render.bounces): " + scene::kBouncesNeedOcclusionRule);
   applyEnergyCompensation(o.energyCompensation, scene);
@@ -142,7 +146,8 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& o) {
   command
       .add_option("--bounces", o.bounces,
                   "Continuations of each camera sample's path (0: direct light only; above 0: --ibl sampled or "
-                  "filtered with --occlusion on)")
+                  "filtered with --occlusion on; default: chosen from the scene, 12 with Cycles' lobe limits where "
+                  "a continuation can hit anything, else 0)")
       ->check(CLI::Range(0, scene::kMaxBounces));
   for (auto [flag, kind, value] : {std::tuple{"--diffuse-bounces", "diffuse", &o.diffuseBounces},
                                    std::tuple{"--glossy-bounces", "glossy", &o.glossyBounces},
@@ -157,7 +162,8 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& o) {
   command
       .add_option("--ibl", o.ibl,
                   "Image-based lighting: Monte Carlo with MIS, the prefiltered split sum, or BRDF samples read "
-                  "from the map's mip chain")
+                  "from the map's mip chain (default: the scene's; where it says none, prefiltered, or sampled "
+                  "with occlusion where paths run)")
       ->check(CLI::IsMember({"sampled", "prefiltered", "filtered"}));
   command
       .add_option("--ibl-samples", o.iblSamples,

@@ -75,7 +75,7 @@ std::string pictureLine(const WatchPicture& p) {
                 "%dx%d, %d spp in %.0f ms (load %.0f ms, render %.0f ms, its stages %.0f ms%s, write %.0f ms)",
                 p.width, p.height, p.spp, p.milliseconds, p.loadMilliseconds, p.renderMilliseconds,
                 p.stageMilliseconds, geometry, p.writeMilliseconds);
-  return what + ": " + numbers;
+  return what + ": " + numbers + (p.lightTransport.empty() ? "" : "; " + p.lightTransport);
 }
 
 }  // namespace

@@ -26,7 +26,9 @@ struct RenderSettings {
   std::optional<int> tessellationRate;  // tessellated method
   // Continuations of each camera sample's path, in [0, 64]; 0 is direct light
   // only. Above 0: an environment, if any, sampled or filtered with
-  // occlusion on (docs/rendering.md, "Paths").
+  // occlusion on (docs/rendering.md, "Paths"). None: the scene's, or where
+  // it states none, chosen from the scene (docs/rendering.md, "Light
+  // transport chosen by the scene").
   std::optional<int> bounces;
 };
 
@@ -41,6 +43,10 @@ struct RenderResult {
   Image image;
   std::string device;  // what ran it
   double milliseconds = 0;
+  int bounces = 0;  // as rendered, stated or chosen
+  // What light transport was chosen and why; empty where the scene and the
+  // settings stated it.
+  std::string lightTransport;
   std::vector<BounceRays> raysPerBounce;  // bounce 0 to the last; empty unless bounces > 0
 };
 

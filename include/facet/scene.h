@@ -106,9 +106,11 @@ struct Environment {
   std::string file;
   double intensity = 1;
   double rotationDegrees = 0;
-  IblMethod method = IblMethod::Prefiltered;
-  int samples = 16;  // sampled: pairs per camera sample
-  bool occlusion = true;
+  // None: chosen, prefiltered unless paths run, then sampled with occlusion
+  // (docs/rendering.md, "Light transport chosen by the scene").
+  std::optional<IblMethod> method;
+  int samples = 16;       // sampled: pairs per camera sample
+  bool occlusion = true;  // sampled, filtered, with a method given
 };
 
 // No camera: framed from the default direction; no lights: the default key

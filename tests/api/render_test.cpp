@@ -85,6 +85,23 @@ TEST(ApiRender, BouncesAreCheckedAsTheSceneFileChecksThem) {
       << prefiltered;
 }
 
+// Unsaid bounces are chosen from the scene as `facet render` chooses them
+// (docs/rendering.md, "Light transport chosen by the scene").
+TEST(ApiRender, UnsaidBouncesAreChosenFromTheScene) {
+  facet::Renderer renderer;
+  facet::RenderSettings settings;
+  settings.backend = facet::Backend::Cpu;
+  const facet::RenderResult chosen = renderer.render(cubeOnSlab(facet::IblMethod::Sampled), settings);
+  EXPECT_EQ(chosen.bounces, 12);
+  EXPECT_EQ(chosen.lightTransport,
+            "paths: 12 bounces (diffuse 4, glossy 4, transmission 12): 2 objects can see each other");
+  ASSERT_GT(chosen.raysPerBounce.size(), 1u);
+  EXPECT_GT(chosen.raysPerBounce[1].hits, 0u);
+  const facet::RenderResult stated = renderer.render(cubeOnSlab(facet::IblMethod::Sampled), onCpu(0));
+  EXPECT_EQ(stated.bounces, 0);
+  EXPECT_TRUE(stated.lightTransport.empty());
+}
+
 TEST(ApiRender, TheGpuTracesTheCpusPathsRayForRay) {
   facet::Renderer renderer;
   const facet::Scene scene = cubeOnSlab(facet::IblMethod::Sampled);

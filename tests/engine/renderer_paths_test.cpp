@@ -62,12 +62,12 @@ class RendererPaths : public ::testing::TestWithParam<Backend> {
 TEST_P(RendererPaths, AConvexObjectCastsNoContinuationAndRendersZeroBouncesImage) {
   const RenderReport paths = renderer().render(underSky(cubeCage(), 8), GetParam());
   const RenderReport direct = renderer().render(underSky(cubeCage(), 0), GetParam());
-  std::printf("%s: %s\n", toString(GetParam()), paths.pathsNote.c_str());
-  EXPECT_EQ(paths.pathsNote, "paths: none cast: one convex closed object, seen from outside; no continuation can hit");
-  EXPECT_NE(paths.geometrySummary.find(paths.pathsNote), std::string::npos);
+  std::printf("%s: %s\n", toString(GetParam()), paths.lightTransport.note.c_str());
+  EXPECT_EQ(paths.lightTransport.note, "paths: none cast: one convex closed object, seen from outside; no continuation can hit");
+  EXPECT_NE(paths.geometrySummary.find(paths.lightTransport.note), std::string::npos);
   EXPECT_TRUE(paths.raysPerBounce.empty());
   EXPECT_EQ(paths.shadowRays, direct.shadowRays);
-  EXPECT_TRUE(direct.pathsNote.empty());
+  EXPECT_TRUE(direct.lightTransport.note.empty());
   expectSameImage(paths.image, direct.image);
 }
 
@@ -90,7 +90,7 @@ TEST_P(RendererPaths, AConcaveObjectStillBounces) {
   s.camera.eye = {0.0, 2.5, 3.0};
   s.camera.target = {0.0, 0.0, 0.0};
   const RenderReport report = renderer().render(s, GetParam());
-  EXPECT_TRUE(report.pathsNote.empty());
+  EXPECT_TRUE(report.lightTransport.note.empty());
   ASSERT_EQ(report.raysPerBounce.size(), 3u);
   std::printf("%s torus: bounce 1 %llu rays, %llu hit\n", toString(GetParam()),
               (unsigned long long)report.raysPerBounce[1].rays, (unsigned long long)report.raysPerBounce[1].hits);
@@ -101,10 +101,50 @@ TEST_P(RendererPaths, AnEyeInsideAConvexSphereStillBounces) {
   scene::Scene s = testing::insideDiffuseSphere(0.5, 1, 16, 1);
   s.render.method = scene::IntersectionMethod::Exact;
   const RenderReport report = renderer().render(s, GetParam());
-  EXPECT_TRUE(report.pathsNote.empty());
+  EXPECT_TRUE(report.lightTransport.note.empty());
   ASSERT_EQ(report.raysPerBounce.size(), 2u);
   EXPECT_EQ(report.raysPerBounce[1].hits, report.raysPerBounce[1].rays);  // closed: every continuation hits
   EXPECT_GT(report.raysPerBounce[1].rays, 0u);
+}
+
+// Glass left to choose is glass (scenes/light_transport.h): under a white
+// sky a clear cube passes most of the light behind it, where the direct
+// light alone shows its reflection only; and the choice renders what
+// Cycles' limits, stated, render.
+TEST_P(RendererPaths, GlassLeftToChooseShowsWhatIsBehindIt) {
+  scene::Scene s = underSky(cubeCage(), 0);
+  s.environment->map = std::make_shared<const scene::EnvironmentMap>(scene::constantEnvironment(glm::dvec3(1.0)));
+  s.materials.front().transmission = 1.0;
+  s.materials.front().diffuse = glm::dvec3(0.0);
+  s.materials.front().name = "glass";
+  s.environment->method = scene::IblMethod::Prefiltered;
+  s.environment->methodStated = false;
+  s.render.bouncesStated = false;
+  const RenderReport chosen = renderer().render(s, GetParam());
+  s.render.bouncesStated = true;
+  const RenderReport direct = renderer().render(s, GetParam());
+  // The choice is Cycles' limits with the environment sampled, stated or not.
+  s.render.bounces = 12;
+  s.render.diffuseBounces = 4;
+  s.render.glossyBounces = 4;
+  s.render.transmissionBounces = 12;
+  s.environment->method = scene::IblMethod::Sampled;
+  s.environment->methodStated = true;
+  expectSameImage(renderer().render(s, GetParam()).image, chosen.image);
+  auto coveredMean = [](const Image& image) {
+    double sum = 0;
+    std::size_t covered = 0;
+    for (std::size_t p = 0; p < image.pixelCount(); ++p)
+      if (std::isfinite(image.depth[p])) sum += image.beauty[p].g, ++covered;
+    return sum / double(covered);
+  };
+  std::printf("%s glass: chosen %s, mean %.3f; stated 0 bounces, mean %.3f\n", toString(GetParam()),
+              chosen.lightTransport.note.c_str(), coveredMean(chosen.image), coveredMean(direct.image));
+  EXPECT_EQ(chosen.lightTransport.bounces, 12);
+  EXPECT_GT(coveredMean(chosen.image), 0.6);
+  EXPECT_LT(coveredMean(direct.image), 0.3);
+  ASSERT_EQ(direct.warnings.size(), 1u);
+  EXPECT_NE(direct.warnings.front().find("'glass' transmits"), std::string::npos);
 }
 
 INSTANTIATE_TEST_SUITE_P(BothBackends, RendererPaths, ::testing::Values(Backend::Cpu, Backend::Gpu),

@@ -197,6 +197,22 @@ class Render(unittest.TestCase):
         on_gpu = self.renderer.render(scene("sampled"), backend="gpu", spp=1, bounces=1)
         self.assertEqual(on_gpu["rays_per_bounce"][1]["rays"], paths["rays_per_bounce"][1]["rays"])
 
+    def test_the_light_transport_is_chosen_where_nothing_states_it(self):
+        environment = facet.Environment(EXAMPLES.parent / "environments" / "courtyard_256x128.hdr", samples=2)
+        self.assertIsNone(environment.method)
+        objects = [facet.Object(box((-1, -1, -1), (1, 1, 1)), subdivided=False),
+                   facet.Object(box((-4, -1.5, -4), (4, -1, 4)), subdivided=False)]
+        scene = facet.Scene(objects, camera=facet.Camera(eye=(3, 2.5, 4), target=(0, -0.5, 0), fov=50),
+                            environment=environment, size=(12, 12))
+        chosen = self.renderer.render(scene, backend="cpu", spp=1)
+        self.assertEqual(chosen["bounces"], 12)
+        self.assertEqual(chosen["light_transport"], "paths: 12 bounces (diffuse 4, glossy 4, transmission 12), "
+                                                    "environment sampled: 2 objects can see each other")
+        self.assertGreater(chosen["rays_per_bounce"][1]["hits"], 0)
+        stated = self.renderer.render(scene, backend="cpu", spp=1, bounces=0)
+        self.assertEqual((stated["bounces"], stated["light_transport"]), (0, ""))
+        self.assertNotIn("rays_per_bounce", stated)
+
     def test_render_settings_are_checked(self):
         with self.assertRaisesRegex(facet.Error, r"render settings: width: must be in \[1, 16384\]"):
             self.renderer.render(str(EXAMPLES / "gold_cube.gltf"), size=(0, 10))

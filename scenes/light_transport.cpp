@@ -1,0 +1,114 @@
+#include "scenes/light_transport.h"
+
+#include "materials/material.h"
+#include "scenes/path_reach.h"
+
+namespace facet::scene {
+namespace {
+
+LightTransport asStated(const RenderSettings& r) {
+  return {r.bounces, r.diffuseBounces, r.glossyBounces, r.transmissionBounces, false, {}, {}};
+}
+
+std::string bounceLimits(const LightTransport& t) {
+  std::string text = "paths: " + std::to_string(t.bounces) + (t.bounces == 1 ? " bounce" : " bounces");
+  if (t.diffuseBounces >= 0 || t.glossyBounces >= 0 || t.transmissionBounces >= 0)
+    text += " (diffuse " + std::to_string(t.diffuseBounces) + ", glossy " + std::to_string(t.glossyBounces) +
+            ", transmission " + std::to_string(t.transmissionBounces) + ")";
+  return text;
+}
+
+// Unless the scene stated otherwise, a limit of its own per lobe kind.
+int chosenLimit(int stated, int chosen) { return stated >= 0 ? stated : chosen; }
+
+// Glass with no path through it shows nothing behind it: said, never silent.
+void warnOfDarkTransmission(const Scene& scene, const std::string& why, LightTransport& t) {
+  for (const Object& object : scene.objects) {
+    const materials::Material& material = scene.materials.at(std::size_t(object.material));
+    if (!materials::isTransmissive(material)) continue;
+    t.warnings.push_back("'" + material.name + "' transmits, but " + why +
+                         ": no path passes through it and it shows nothing behind it");
+    return;
+  }
+}
+
+bool environmentCarriesPaths(const Scene& scene) { return pathsCountEnvironmentOnce(1, scene.environment); }
+
+}  // namespace
+
+LightTransport chooseLightTransport(const Scene& scene, const SceneGeometry& geometry) {
+  LightTransport t = asStated(scene.render);
+  const bool methodStated = !scene.environment || scene.environment->methodStated;
+  if (scene.render.bouncesStated) {
+    if (t.bounces > 0 && !environmentCarriesPaths(scene) && !methodStated) t.samplesEnvironment = true;
+    if (t.bounces > 0 && (environmentCarriesPaths(scene) || t.samplesEnvironment))
+      if (const PathReach reach = pathReach(scene, geometry); !reach.continues) {
+        t = asStated(scene.render);
+        t.bounces = 0;
+        t.note = "paths: none cast: " + reach.why;
+      }
+    if (scene.render.bounces == 0) warnOfDarkTransmission(scene, "the bounces are stated 0", t);
+    return t;
+  }
+  const PathReach reach = pathReach(scene, geometry);
+  if (!reach.continues) {
+    t.note = "direct light only: " + reach.why;
+    return t;
+  }
+  if (!environmentCarriesPaths(scene) && methodStated) {
+    t.note = "direct light only: the environment's stated method (prefiltered, or occlusion off) cannot light "
+             "paths; give --ibl sampled to trace them (" + reach.why + ")";
+    warnOfDarkTransmission(scene, "the environment's stated method cannot light paths", t);
+    return t;
+  }
+  t.bounces = kChosenBounces;
+  t.diffuseBounces = chosenLimit(scene.render.diffuseBounces, kChosenDiffuseBounces);
+  t.glossyBounces = chosenLimit(scene.render.glossyBounces, kChosenGlossyBounces);
+  t.transmissionBounces = chosenLimit(scene.render.transmissionBounces, kChosenTransmissionBounces);
+  t.samplesEnvironment = !environmentCarriesPaths(scene);
+  t.note = bounceLimits(t) + (t.samplesEnvironment ? ", environment sampled" : "") + ": " + reach.why;
+  return t;
+}
+
+void stateLightTransport(Scene& scene) {
+  scene.render.bouncesStated = true;
+  if (!scene.environment || scene.environment->methodStated) return;
+  if (scene.render.bounces > 0 && !environmentCarriesPaths(scene))
+    applyLightTransport({.bounces = scene.render.bounces,
+                         .diffuseBounces = scene.render.diffuseBounces,
+                         .glossyBounces = scene.render.glossyBounces,
+                         .transmissionBounces = scene.render.transmissionBounces,
+                         .samplesEnvironment = true},
+                        scene);
+  scene.environment->methodStated = true;
+}
+
+bool leavesLightTransportUnsaid(const Scene& scene) {
+  return !scene.render.bouncesStated || (scene.environment && !scene.environment->methodStated);
+}
+
+Scene withLightTransport(Scene scene, const LightTransport& transport) {
+  applyLightTransport(transport, scene);
+  scene.render.bouncesStated = true;
+  if (scene.environment) scene.environment->methodStated = true;
+  return scene;
+}
+
+bool changesScene(const LightTransport& t, const Scene& scene) {
+  const RenderSettings& r = scene.render;
+  return t.bounces != r.bounces || t.diffuseBounces != r.diffuseBounces || t.glossyBounces != r.glossyBounces ||
+         t.transmissionBounces != r.transmissionBounces || t.samplesEnvironment;
+}
+
+void applyLightTransport(const LightTransport& t, Scene& scene) {
+  scene.render.bounces = t.bounces;
+  scene.render.diffuseBounces = t.diffuseBounces;
+  scene.render.glossyBounces = t.glossyBounces;
+  scene.render.transmissionBounces = t.transmissionBounces;
+  if (t.samplesEnvironment) {
+    scene.environment->method = IblMethod::Sampled;
+    scene.environment->occlusion = true;
+  }
+}
+
+}  // namespace facet::scene

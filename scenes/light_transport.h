@@ -1,0 +1,56 @@
+// How much light transport a render traces (docs/rendering.md, "Light
+// transport chosen by the scene"). Where the scene leaves the bounces unsaid,
+// paths run with Cycles' default limits wherever a continuation can meet a
+// surface, and direct light alone where none can; where they run, an
+// environment whose method is unsaid is sampled with its shadow rays. Stated
+// settings always win: paths that cannot continue are still cast as none.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scenes/scene.h"
+#include "scenes/scene_geometry.h"
+
+namespace facet::scene {
+
+// Cycles' default bounce limits (Blender 3.4: Max Bounces, Light Paths).
+inline constexpr int kChosenBounces = 12;
+inline constexpr int kChosenDiffuseBounces = 4;
+inline constexpr int kChosenGlossyBounces = 4;
+inline constexpr int kChosenTransmissionBounces = 12;
+
+struct LightTransport {
+  int bounces = 0;
+  int diffuseBounces = -1;
+  int glossyBounces = -1;
+  int transmissionBounces = -1;
+  bool samplesEnvironment = false;  // the environment switched to sampled, occlusion on
+  // What was chosen and why, for the summary line ("paths: 12 bounces ...:
+  // 'teacup' is concave"); empty where the scene stated it all and nothing
+  // was dropped.
+  std::string note;
+  // A transmissive material that no path passes through.
+  std::vector<std::string> warnings;
+};
+
+LightTransport chooseLightTransport(const Scene& scene, const SceneGeometry& geometry);
+
+// Leaves nothing to choose: the bounces as they are (0 where unsaid, the
+// course's local model), and the environment's method as it is unless
+// stated bounces need it sampled. For comparisons whose subject is the
+// backends, not the picture (parity).
+void stateLightTransport(Scene& scene);
+
+// Whether the scene leaves anything to choose.
+bool leavesLightTransportUnsaid(const Scene& scene);
+
+// `scene` with `transport` applied and nothing left to choose, for renders
+// of one scene repeated (adaptive rounds) that choose once.
+Scene withLightTransport(Scene scene, const LightTransport& transport);
+
+// Whether rendering `scene` with `transport` differs from rendering it as it is.
+bool changesScene(const LightTransport& transport, const Scene& scene);
+void applyLightTransport(const LightTransport& transport, Scene& scene);
+
+}  // namespace facet::scene

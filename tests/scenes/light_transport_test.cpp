@@ -1,0 +1,152 @@
+// The light transport chosen by the scene (scenes/light_transport.h): paths
+// with Cycles' limits where a continuation can hit, direct light where none
+// can, and what the scene states always kept.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "scenes/light_transport.h"
+#include "scenes/obj_cage.h"
+#include "scenes/scene_file.h"
+#include "scenes/studio_environment.h"
+#include "tests/support/blob_scene.h"
+#include "tests/support/cages.h"
+
+namespace facet::scene {
+namespace {
+
+// One object under the default studio light, nothing of light transport said.
+Scene unsaid(ControlCage cage, const char* name) {
+  Scene s;
+  s.materials.push_back(facet::testing::lambertian(0.5));
+  s.materials.front().name = "grey";
+  Object object;
+  object.name = name;
+  object.cage = std::move(cage);
+  s.objects.push_back(std::move(object));
+  s.camera.eye = {0.5, 3.0, 4.0};
+  s.render.width = s.render.height = 32;
+  s.render.bouncesStated = false;
+  s.environment = studioEnvironment();
+  return s;
+}
+
+Scene cube() { return unsaid(loadObjCage(std::filesystem::path(FACET_CAGE_DIR) / "cube.obj"), "cube"); }
+Scene torus() { return unsaid(testing::torusCage(12, 8, 1.0, 0.35), "torus"); }
+
+LightTransport choose(const Scene& s) { return chooseLightTransport(s, buildGeometry(s)); }
+
+TEST(LightTransport, OneConvexObjectGetsDirectLightAsItIs) {
+  const Scene s = cube();
+  const LightTransport t = choose(s);
+  EXPECT_EQ(t.bounces, 0);
+  EXPECT_EQ(t.note, "direct light only: one convex closed object, seen from outside; no continuation can hit");
+  EXPECT_FALSE(changesScene(t, s));  // the split sum stays: nothing is lost
+  EXPECT_TRUE(t.warnings.empty());
+}
+
+TEST(LightTransport, AConcaveObjectGetsCyclesLimitsAndASampledEnvironment) {
+  Scene s = torus();
+  const LightTransport t = choose(s);
+  EXPECT_EQ(t.bounces, kChosenBounces);
+  EXPECT_EQ(t.diffuseBounces, kChosenDiffuseBounces);
+  EXPECT_EQ(t.glossyBounces, kChosenGlossyBounces);
+  EXPECT_EQ(t.transmissionBounces, kChosenTransmissionBounces);
+  EXPECT_TRUE(t.samplesEnvironment);
+  EXPECT_EQ(t.note,
+            "paths: 12 bounces (diffuse 4, glossy 4, transmission 12), environment sampled: 'torus' has holes, handles or open edges");
+  ASSERT_TRUE(changesScene(t, s));
+  applyLightTransport(t, s);
+  EXPECT_EQ(s.environment->method, IblMethod::Sampled);
+  EXPECT_TRUE(s.environment->occlusion);
+  EXPECT_TRUE(pathsCountEnvironmentOnce(s.render.bounces, s.environment));
+}
+
+TEST(LightTransport, AStatedLobeLimitIsKept) {
+  Scene s = torus();
+  s.render.glossyBounces = 1;
+  const LightTransport t = choose(s);
+  EXPECT_EQ(t.glossyBounces, 1);
+  EXPECT_EQ(t.diffuseBounces, kChosenDiffuseBounces);
+}
+
+TEST(LightTransport, StatedBouncesWin) {
+  Scene s = torus();
+  s.render.bouncesStated = true;
+  s.render.bounces = 3;
+  s.environment->method = IblMethod::Filtered;
+  s.environment->methodStated = true;
+  const LightTransport t = choose(s);
+  EXPECT_EQ(t.bounces, 3);
+  EXPECT_EQ(t.diffuseBounces, -1);
+  EXPECT_FALSE(t.samplesEnvironment);
+  EXPECT_TRUE(t.note.empty());
+  EXPECT_FALSE(changesScene(t, s));
+
+  s.render.bounces = 0;
+  EXPECT_EQ(choose(s).bounces, 0);
+}
+
+TEST(LightTransport, StatedBouncesOnAConvexObjectCastNone) {
+  Scene s = cube();
+  s.render.bouncesStated = true;
+  s.render.bounces = 8;
+  const LightTransport t = choose(s);
+  EXPECT_EQ(t.bounces, 0);
+  EXPECT_EQ(t.note, "paths: none cast: one convex closed object, seen from outside; no continuation can hit");
+  EXPECT_FALSE(t.samplesEnvironment);
+}
+
+TEST(LightTransport, GlassIsNeverSilentlyBlack) {
+  Scene s = cube();
+  s.materials.front().transmission = 1.0;
+  s.materials.front().name = "glass";
+  const LightTransport chosen = choose(s);
+  EXPECT_EQ(chosen.bounces, kChosenBounces);  // a convex glass cube still bounces: its inside
+  EXPECT_EQ(chosen.note,
+            "paths: 12 bounces (diffuse 4, glossy 4, transmission 12), environment sampled: 'glass' transmits");
+  EXPECT_TRUE(chosen.warnings.empty());
+
+  s.render.bouncesStated = true;
+  const LightTransport stated = choose(s);
+  EXPECT_EQ(stated.bounces, 0);
+  ASSERT_EQ(stated.warnings.size(), 1u);
+  EXPECT_EQ(stated.warnings.front(),
+            "'glass' transmits, but the bounces are stated 0: no path passes through it and it shows nothing behind it");
+}
+
+TEST(LightTransport, AStatedPrefilteredEnvironmentKeepsDirectLightAndSaysWhichOptionTraces) {
+  Scene s = torus();
+  s.environment->methodStated = true;
+  const LightTransport t = choose(s);
+  EXPECT_EQ(t.bounces, 0);
+  EXPECT_NE(t.note.find("give --ibl sampled"), std::string::npos) << t.note;
+  EXPECT_TRUE(t.warnings.empty());
+  s.materials.front().transmission = 1.0;
+  EXPECT_EQ(choose(s).warnings.size(), 1u);
+}
+
+TEST(LightTransport, ParityStatesWhatWasUnsaid) {
+  Scene s = torus();
+  stateLightTransport(s);
+  EXPECT_TRUE(s.render.bouncesStated);
+  EXPECT_EQ(s.render.bounces, 0);
+  EXPECT_EQ(s.environment->method, IblMethod::Prefiltered);
+
+  Scene paths = torus();
+  paths.render.bounces = 4;
+  stateLightTransport(paths);
+  EXPECT_EQ(paths.environment->method, IblMethod::Sampled);  // the stated bounces need it
+  EXPECT_TRUE(paths.environment->methodStated);
+}
+
+TEST(LightTransport, AModelFileLeavesItToChoose) {
+  const Scene s = loadScene(std::filesystem::path(FACET_CAGE_DIR) / "cube.obj");
+  EXPECT_FALSE(s.render.bouncesStated);
+  ASSERT_TRUE(s.environment);
+  EXPECT_FALSE(s.environment->methodStated);
+}
+
+}  // namespace
+}  // namespace facet::scene
