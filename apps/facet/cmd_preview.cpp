@@ -78,7 +78,9 @@ void runPreview(const PreviewStageFlags& f) {
   }
   const auto start = std::chrono::steady_clock::now();
   const scene::Scene model = previewModel(f);
-  const PreviewStage stage(model, f.materials, settings);
+  std::vector<std::string> materials;
+  for (const std::string& reference : f.materials) materials.push_back(libraryMaterialReference(reference));
+  const PreviewStage stage(model, materials, settings);
   const ContactSheetLayout& layout = stage.layout();
   const int width = model.render.width, height = model.render.height, frames = stage.frames();
   Renderer renderer(f.adapter);

@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
 
+#include "data_folder.h"
 #include "materials/models.h"
+#include "materials/presets.h"
 #include "scenes/json_overrides.h"
 #include "scenes/scene_file.h"
 
@@ -110,7 +113,8 @@ materials::Material resolveMaterial(const MaterialOptions& o) {
 void addSceneEditOptions(CLI::App& command, SceneEdits& edits) {
   command
       .add_option("--material", edits.materials,
-                  "A material on the model's objects: a material file (.json) or a preset (see `facet presets`); "
+                  "A material on the model's objects: a material file (.json), a preset (see `facet presets`) or a "
+                  "name of the shipped library (scenes/examples/materials: glass, glazed_ceramic, ...); "
                   "OBJECT=FILE|PRESET for the objects of that name (repeatable)")
       ->allow_extra_args(false);
   command
@@ -118,6 +122,19 @@ void addSceneEditOptions(CLI::App& command, SceneEdits& edits) {
                   "PATH=VALUE: a field of the scene by its JSON path, e.g. render.spp=16, camera.fov=40, "
                   "materials.gold.roughness=0.2, objects[0].material=silver (repeatable)")
       ->allow_extra_args(false);
+}
+
+std::string libraryMaterialReference(const std::string& reference) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const bool bareName = reference.find_first_of("./") == std::string::npos;
+  if (!bareName || materials::findPreset(reference) || fs::exists(reference, error)) return reference;
+  try {
+    const fs::path file = dataFolder() / "scenes" / "examples" / "materials" / (reference + ".json");
+    return fs::is_regular_file(file, error) ? file.string() : reference;
+  } catch (const std::invalid_argument&) {
+    return reference;  // no data folder: the reference's own error names it
+  }
 }
 
 scene::Scene loadEditedScene(const std::string& path, const SceneEdits& edits) {
@@ -142,7 +159,7 @@ scene::Scene loadEditedScene(const std::string& path, const SceneEdits& edits) {
 
   scene::Scene scene = scene::loadScene(path, overrides);
   for (const auto& [object, reference] : assignments) {
-    materials::Material material = scene::loadMaterialReference(reference, scene.textures);
+    materials::Material material = scene::loadMaterialReference(libraryMaterialReference(reference), scene.textures);
     try {
       scene::assignMaterial(scene, object, std::move(material));
     } catch (const std::invalid_argument& e) {

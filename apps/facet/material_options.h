@@ -41,6 +41,12 @@ struct SceneEdits {
 
 void addSceneEditOptions(CLI::App& command, SceneEdits& edits);
 
+// A material reference as --material and facet preview take it: a file, a
+// preset, or a bare name of the shipped library, NAME.json in
+// scenes/examples/materials of the data folder (data_folder.h), which a
+// name that is no preset and no file resolves to where it exists.
+std::string libraryMaterialReference(const std::string& reference);
+
 // The scene at `path` with the --set overrides read into it and the
 // --material materials on its objects (docs/scene-format.md, "Material
 // files" and "The command line: --material and --set"); throws naming the

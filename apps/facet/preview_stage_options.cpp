@@ -17,7 +17,8 @@ std::string text(double value) {
 }  // namespace
 
 void addPreviewStageOptions(CLI::App& c, PreviewStageFlags& f) {
-  c.add_option("materials", f.materials, "Material files (.json) or presets (see `facet presets`), one cell each")
+  c.add_option("materials", f.materials, "Material files (.json), presets (see `facet presets`) or names of the shipped "
+                 "library (scenes/examples/materials: glass, glazed_ceramic, ...), one cell each")
       ->required();
   c.add_option("--model", f.model, "The model every material is put on (default: the default scene's superball)")
       ->check(CLI::ExistingFile);
