@@ -2,6 +2,7 @@
 
 #include "materials/material.h"
 #include "scenes/path_reach.h"
+#include "scenes/scene_file.h"
 
 namespace facet::scene {
 namespace {
@@ -81,6 +82,12 @@ void stateLightTransport(Scene& scene) {
                          .samplesEnvironment = true},
                         scene);
   scene.environment->methodStated = true;
+}
+
+Scene loadStatedScene(const std::filesystem::path& path) {
+  Scene scene = loadScene(path);
+  stateLightTransport(scene);
+  return scene;
 }
 
 bool leavesLightTransportUnsaid(const Scene& scene) {

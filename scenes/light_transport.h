@@ -6,6 +6,7 @@
 // settings always win: paths that cannot continue are still cast as none.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,11 @@ LightTransport chooseLightTransport(const Scene& scene, const SceneGeometry& geo
 // stated bounces need it sampled. For comparisons whose subject is the
 // backends, not the picture (parity).
 void stateLightTransport(Scene& scene);
+
+// The scene file at `path`, its light transport stated: for measurements
+// of one method or setting (facet bench, facet ibl-chart), which render
+// what they set and nothing chosen.
+Scene loadStatedScene(const std::filesystem::path& path);
 
 // Whether the scene leaves anything to choose.
 bool leavesLightTransportUnsaid(const Scene& scene);

@@ -24,6 +24,7 @@
 #include "engine/image/exr_file.h"
 #include "engine/image/image_io.h"
 #include "rules/rules.h"
+#include "scenes/light_transport.h"
 #include "scenes/scene_file.h"
 
 namespace facet::analysis::bench {
@@ -102,7 +103,7 @@ void writeChart(const fs::path& path, const std::vector<std::vector<Point>>& cur
 // Cycles' plain GGX Principled metallic has: separable Smith G and its
 // metallic Fresnel (docs/shading.md).
 scene::Scene materialPreview(const fs::path& root, const fs::path& map, int size) {
-  scene::Scene scene = scene::loadScene(root / "scenes/examples/gold_cube.gltf");
+  scene::Scene scene = scene::loadStatedScene(root / "scenes/examples/gold_cube.gltf");
   scene::overrideSubdivision(scene, "catmull-clark", "cycles");
   scene.lights.clear();
   scene.environment.emplace();

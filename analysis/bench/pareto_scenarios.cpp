@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 
+#include "scenes/light_transport.h"
 #include "scenes/scene_file.h"
 
 namespace facet::analysis::bench::pareto {
@@ -55,7 +56,7 @@ double gpuToleranceFloor(const scene::Scene& scene) {
 
 std::vector<Scenario> scenarios(const BenchOptions& options, const Sizes& sizes) {
   std::vector<Scenario> list;
-  const scene::Scene preview = scene::loadScene(options.root / "scenes/examples/preview.json");
+  const scene::Scene preview = scene::loadStatedScene(options.root / "scenes/examples/preview.json");
 
   Scenario defaultPreview{"preview", "", preview, ErrorAxis::Beauty, geometrySettings(sizes)};
   defaultPreview.scene.render.width = sizes.previewWidth;
@@ -64,7 +65,7 @@ std::vector<Scenario> scenarios(const BenchOptions& options, const Sizes& sizes)
   list.push_back(defaultPreview);
 
   for (const std::string& cage : sizes.cages) {
-    Scenario torture{cage, "", scene::loadScene(options.root / ("scenes/cages/" + cage + ".obj")), ErrorAxis::Depth,
+    Scenario torture{cage, "", scene::loadStatedScene(options.root / ("scenes/cages/" + cage + ".obj")), ErrorAxis::Depth,
                      geometrySettings(sizes)};
     torture.scene.render.width = torture.scene.render.height = sizes.cageSize;
     torture.description = "torture cage scenes/cages/" + cage + ".obj, default framing and key light";

@@ -15,7 +15,7 @@
 #include "analysis/bench/bench.h"
 #include "analysis/gnuplot.h"
 #include "analysis/power_law.h"
-#include "scenes/scene_file.h"
+#include "scenes/light_transport.h"
 
 namespace facet::analysis::bench {
 namespace {
@@ -172,7 +172,7 @@ scene::Light pointLight(int index, int count) {
 
 std::vector<SweepSpec> defineSweeps(const BenchOptions& options) {
   const bool quick = options.quick;
-  const scene::Scene preview = scene::loadScene(options.root / "scenes/examples/preview.json");
+  const scene::Scene preview = scene::loadStatedScene(options.root / "scenes/examples/preview.json");
   // Refinement is normally chosen from the objects' size on screen, which
   // would change the geometry along with the resolution; pin it.
   auto pinned = [](scene::Scene scene, int isolation, int rate) {
@@ -221,7 +221,7 @@ std::vector<SweepSpec> defineSweeps(const BenchOptions& options) {
 
   SweepSpec patches =
       sweepOf("scaling_patches", "Time against patch count (suzanne, isolation levels)", "patches",
-              sized(scene::loadScene(options.root / "scenes/cages/suzanne.obj"), quick ? 32 : 96, quick ? 32 : 96));
+              sized(scene::loadStatedScene(options.root / "scenes/cages/suzanne.obj"), quick ? 32 : 96, quick ? 32 : 96));
   patches.base.render.tessellationRate = 2;
   patches.fixed = "suzanne, " + sizeOf(patches.base) + ", tessellated k = 2, one directional light";
   patches.steps = quick ? std::vector<int>{1, 2} : std::vector<int>{1, 2, 3, 4};

@@ -17,7 +17,7 @@
 #include "material_options.h"
 #include "scene_options.h"
 #include "scene_warnings.h"
-#include "scenes/scene_file.h"
+#include "scenes/light_transport.h"
 
 namespace facet::cli {
 namespace {
@@ -70,7 +70,7 @@ void runIblChart(ChartOptions o) {
   analysis::IblChartSettings settings;
   settings.alphas = parseAlphas(o.alphas);
   settings.sampleCounts = sampleCounts(o.maxSamples);
-  settings.base = scene::loadScene(o.scene);
+  settings.base = scene::loadStatedScene(o.scene);
   printWarnings(sceneWarnings(settings.base), false);
   applyImageSize(o.size, settings.base);
   applyMethod("tess", settings.base);

@@ -148,5 +148,15 @@ TEST(LightTransport, AModelFileLeavesItToChoose) {
   EXPECT_FALSE(s.environment->methodStated);
 }
 
+// What facet bench and facet ibl-chart measure is what they set.
+TEST(LightTransport, AMeasurementLoadsTheSceneStated) {
+  const Scene s = loadStatedScene(std::filesystem::path(FACET_CAGE_DIR) / "cube.obj");
+  EXPECT_TRUE(s.render.bouncesStated);
+  EXPECT_EQ(s.render.bounces, 0);
+  ASSERT_TRUE(s.environment);
+  EXPECT_TRUE(s.environment->methodStated);
+  EXPECT_FALSE(leavesLightTransportUnsaid(s));
+}
+
 }  // namespace
 }  // namespace facet::scene
