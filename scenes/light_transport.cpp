@@ -41,7 +41,10 @@ LightTransport chooseLightTransport(const Scene& scene, const SceneGeometry& geo
   LightTransport t = asStated(scene.render);
   const bool methodStated = !scene.environment || scene.environment->methodStated;
   if (scene.render.bouncesStated) {
-    if (t.bounces > 0 && !environmentCarriesPaths(scene) && !methodStated) t.samplesEnvironment = true;
+    if (t.bounces > 0 && !environmentCarriesPaths(scene) && !methodStated) {
+      t.samplesEnvironment = true;
+      t.note = "environment sampled: the stated bounces need its shadow rays";
+    }
     if (t.bounces > 0 && (environmentCarriesPaths(scene) || t.samplesEnvironment))
       if (const PathReach reach = pathReach(scene, geometry); !reach.continues) {
         t = asStated(scene.render);

@@ -88,6 +88,16 @@ TEST(LightTransport, StatedBouncesWin) {
   EXPECT_EQ(choose(s).bounces, 0);
 }
 
+TEST(LightTransport, StatedBouncesSampleAnUnsaidEnvironmentAndSaySo) {
+  Scene s = torus();
+  s.render.bouncesStated = true;
+  s.render.bounces = 2;
+  const LightTransport t = choose(s);
+  EXPECT_EQ(t.bounces, 2);
+  EXPECT_TRUE(t.samplesEnvironment);
+  EXPECT_EQ(t.note, "environment sampled: the stated bounces need its shadow rays");
+}
+
 TEST(LightTransport, StatedBouncesOnAConvexObjectCastNone) {
   Scene s = cube();
   s.render.bouncesStated = true;
