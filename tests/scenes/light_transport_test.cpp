@@ -37,6 +37,12 @@ Scene torus() { return unsaid(testing::torusCage(12, 8, 1.0, 0.35), "torus"); }
 
 LightTransport choose(const Scene& s) { return chooseLightTransport(s, buildGeometry(s)); }
 
+Scene withStatedBounces(Scene s, int bounces) {
+  s.render.bouncesStated = true;
+  s.render.bounces = bounces;
+  return s;
+}
+
 TEST(LightTransport, OneConvexObjectGetsDirectLightAsItIs) {
   const Scene s = cube();
   const LightTransport t = choose(s);
@@ -72,9 +78,7 @@ TEST(LightTransport, AStatedLobeLimitIsKept) {
 }
 
 TEST(LightTransport, StatedBouncesWin) {
-  Scene s = torus();
-  s.render.bouncesStated = true;
-  s.render.bounces = 3;
+  Scene s = withStatedBounces(torus(), 3);
   s.environment->method = IblMethod::Filtered;
   s.environment->methodStated = true;
   const LightTransport t = choose(s);
@@ -89,20 +93,14 @@ TEST(LightTransport, StatedBouncesWin) {
 }
 
 TEST(LightTransport, StatedBouncesSampleAnUnsaidEnvironmentAndSaySo) {
-  Scene s = torus();
-  s.render.bouncesStated = true;
-  s.render.bounces = 2;
-  const LightTransport t = choose(s);
+  const LightTransport t = choose(withStatedBounces(torus(), 2));
   EXPECT_EQ(t.bounces, 2);
   EXPECT_TRUE(t.samplesEnvironment);
   EXPECT_EQ(t.note, "environment sampled: the stated bounces need its shadow rays");
 }
 
 TEST(LightTransport, StatedBouncesOnAConvexObjectCastNone) {
-  Scene s = cube();
-  s.render.bouncesStated = true;
-  s.render.bounces = 8;
-  const LightTransport t = choose(s);
+  const LightTransport t = choose(withStatedBounces(cube(), 8));
   EXPECT_EQ(t.bounces, 0);
   EXPECT_EQ(t.note, "paths: none cast: one convex closed object, seen from outside; no continuation can hit");
   EXPECT_FALSE(t.samplesEnvironment);
