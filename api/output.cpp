@@ -10,6 +10,8 @@
 #include "engine/image/exr_file.h"
 #include "engine/image/image_io.h"
 #include "engine/render_record.h"
+#include "scenes/light_transport.h"
+#include "scenes/scene_geometry.h"
 
 namespace facet::v0 {
 
@@ -19,7 +21,11 @@ void writeExr(const std::string& path, const RenderResult& result, const Scene& 
     checkOutputPath("path", path);
     checkOutputExtension("path", path, ".exr");
     const facet::Image image = engineImage(result.image);
-    const scene::Scene rendered = withSettings(scene, settings);
+    scene::Scene rendered = withSettings(scene, settings);
+    // The file records what the render chose, as `facet render` records it:
+    // the choice follows from the scene and the settings alone.
+    if (scene::leavesLightTransportUnsaid(rendered))
+      rendered = scene::withLightTransport(rendered, scene::chooseLightTransport(rendered, scene::buildGeometry(rendered)));
     if (image.width != rendered.render.width || image.height != rendered.render.height)
       throw Error(ErrorKind::BadInput, "image: " + std::to_string(image.width) + " x " + std::to_string(image.height) +
                                            " is not the " + std::to_string(rendered.render.width) + " x " +
