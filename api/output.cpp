@@ -23,8 +23,11 @@ void writeExr(const std::string& path, const RenderResult& result, const Scene& 
     const facet::Image image = engineImage(result.image);
     scene::Scene rendered = withSettings(scene, settings);
     // The file records what the render chose, as `facet render` records it:
-    // the choice follows from the scene and the settings alone.
-    if (scene::leavesLightTransportUnsaid(rendered))
+    // the choice follows from the scene and the settings alone, and changes
+    // the record only where the render's bounces differ or its paths sample
+    // an unsaid environment.
+    if (result.bounces != rendered.render.bounces ||
+        (result.bounces > 0 && scene::leavesLightTransportUnsaid(rendered)))
       rendered = scene::withLightTransport(rendered, scene::chooseLightTransport(rendered, scene::buildGeometry(rendered)));
     if (image.width != rendered.render.width || image.height != rendered.render.height)
       throw Error(ErrorKind::BadInput, "image: " + std::to_string(image.width) + " x " + std::to_string(image.height) +

@@ -12,11 +12,9 @@ LightTransport asStated(const RenderSettings& r) {
 }
 
 std::string bounceLimits(const LightTransport& t) {
-  std::string text = "paths: " + std::to_string(t.bounces) + (t.bounces == 1 ? " bounce" : " bounces");
-  if (t.diffuseBounces >= 0 || t.glossyBounces >= 0 || t.transmissionBounces >= 0)
-    text += " (diffuse " + std::to_string(t.diffuseBounces) + ", glossy " + std::to_string(t.glossyBounces) +
-            ", transmission " + std::to_string(t.transmissionBounces) + ")";
-  return text;
+  return "paths: " + std::to_string(t.bounces) + " bounces (diffuse " + std::to_string(t.diffuseBounces) +
+         ", glossy " + std::to_string(t.glossyBounces) + ", transmission " + std::to_string(t.transmissionBounces) +
+         ")";
 }
 
 // Unless the scene stated otherwise, a limit of its own per lobe kind.
@@ -77,13 +75,11 @@ LightTransport chooseLightTransport(const Scene& scene, const SceneGeometry& geo
 void stateLightTransport(Scene& scene) {
   scene.render.bouncesStated = true;
   if (!scene.environment || scene.environment->methodStated) return;
-  if (scene.render.bounces > 0 && !environmentCarriesPaths(scene))
-    applyLightTransport({.bounces = scene.render.bounces,
-                         .diffuseBounces = scene.render.diffuseBounces,
-                         .glossyBounces = scene.render.glossyBounces,
-                         .transmissionBounces = scene.render.transmissionBounces,
-                         .samplesEnvironment = true},
-                        scene);
+  if (scene.render.bounces > 0 && !environmentCarriesPaths(scene)) {
+    LightTransport sampled = asStated(scene.render);
+    sampled.samplesEnvironment = true;
+    applyLightTransport(sampled, scene);
+  }
   scene.environment->methodStated = true;
 }
 

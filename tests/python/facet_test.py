@@ -85,15 +85,19 @@ class Render(unittest.TestCase):
         self.assertTrue(np.isinf(image["depth"][~covered]).all())
 
     def test_the_files_it_writes_are_the_command_lines_byte_for_byte(self):
-        # The gold cube renders direct light; the teacup's paths are chosen, and both files record them.
+        # The gold cube renders direct light; the teacup's paths are chosen; the superball's stated bounces
+        # cast none (it is convex): each file records what was rendered.
         flags = {"exposure": 1.5, "tonemap": "aces", "background": (0.2, 0.3, 0.4), "aovs": "beauty,depth"}
-        for scene in (EXAMPLES / "gold_cube.gltf", EXAMPLES.parent / "cages" / "newell_teacup.obj"):
+        for scene, bounces in ((EXAMPLES / "gold_cube.gltf", None),
+                               (EXAMPLES.parent / "cages" / "newell_teacup.obj", None),
+                               (EXAMPLES / "superball.obj", 4)):
+            stated = [] if bounces is None else ["--bounces", str(bounces)]
             run = cli("render", scene, "-o", WORK / "cli.exr", "--png", WORK / "cli.png", "--size", "24x16",
                       "--backend", "cpu", "--exposure", "1.5", "--tonemap", "aces", "--background", "0.2,0.3,0.4",
-                      "--aovs", "beauty,depth")
+                      "--aovs", "beauty,depth", *stated)
             self.assertEqual(run.returncode, 0, run.stderr)
-            self.renderer.render(str(scene), size=(24, 16), backend="cpu", exr=str(WORK / "api.exr"),
-                                 png=str(WORK / "api.png"), **flags)
+            self.renderer.render(str(scene), size=(24, 16), backend="cpu", bounces=bounces,
+                                 exr=str(WORK / "api.exr"), png=str(WORK / "api.png"), **flags)
             for kind in ("exr", "png"):
                 self.assertEqual((WORK / f"api.{kind}").read_bytes(), (WORK / f"cli.{kind}").read_bytes(),
                                  f"{scene.name} {kind}")
