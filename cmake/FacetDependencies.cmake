@@ -2,6 +2,8 @@
 find_package(Threads REQUIRED)
 find_package(Vulkan REQUIRED COMPONENTS glslangValidator)
 find_program(FACET_SPIRV_VAL spirv-val REQUIRED)
+# The optimizer folds a pipeline's constants into its kernel (engine/gpu/spirv_specialize.h).
+find_package(SPIRV-Tools-opt REQUIRED)
 find_package(glm REQUIRED)
 find_package(nlohmann_json REQUIRED)
 find_package(CLI11 QUIET CONFIG)

@@ -1,14 +1,16 @@
 // Shader modules and compute pipelines: the shader's entry point, constants,
-// workgroup size and bindings checked against the layout, given or derived.
+// workgroup size and bindings checked against the layout, given or derived;
+// each pipeline compiled from its module with its constants folded in.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <cstring>
 #include <exception>
 #include <map>
 #include <thread>
+#include <unordered_map>
 
 #include "engine/gpu/layouts.h"
+#include "engine/gpu/spirv_specialize.h"
 
 namespace facet::gpu {
 
@@ -18,18 +20,12 @@ ShaderModule Device::createShaderModule(const ShaderModuleDescriptor& descriptor
   state->device = state_;
   state->label = descriptor.label;
   state->reflection = spirv::reflect(descriptor.code, descriptor.label);
-  VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  info.codeSize = descriptor.code.size_bytes();
-  info.pCode = descriptor.code.data();
-  detail::check(vkCreateShaderModule(state_->device, &info, nullptr, &state->module), "vkCreateShaderModule");
+  state->code.assign(descriptor.code.begin(), descriptor.code.end());
   return ShaderModule(std::move(state));
 }
 
 namespace detail {
 
-ShaderModuleState::~ShaderModuleState() {
-  if (module) vkDestroyShaderModule(device->device, module, nullptr);
-}
 ComputePipelineState::~ComputePipelineState() {
   if (pipeline) vkDestroyPipeline(device->device, pipeline, nullptr);
 }
@@ -79,32 +75,16 @@ void checkLayoutAgainstShader(const std::string& pipelineLabel, const PipelineLa
   }
 }
 
-// Specialization data: VkBool32 for bools, the constant's own width otherwise.
-struct Specialization {
-  std::vector<VkSpecializationMapEntry> entries;
-  std::vector<std::byte> data;
-
-  void add(const spirv::SpecConstant& c, double value) {
-    std::byte bytes[8];
-    std::size_t size = 4;
-    if (c.kind == spirv::ScalarKind::Bool) {
-      std::uint32_t v = value != 0 ? 1u : 0u;
-      std::memcpy(bytes, &v, 4);
-    } else if (c.kind == spirv::ScalarKind::Float) {
-      size = c.width / 8;
-      if (size == 8) {
-        std::memcpy(bytes, &value, 8);
-      } else {
-        float v = float(value);
-        std::memcpy(bytes, &v, 4);
-      }
-    } else {
-      size = c.width / 8;
-      std::int64_t v = std::int64_t(value);
-      std::memcpy(bytes, &v, size);  // little-endian: the low bytes
-    }
-    entries.push_back({c.id, std::uint32_t(data.size()), size});
-    data.insert(data.end(), bytes, bytes + size);
+// A pipeline keeps nothing of the module it was created from, so the
+// specialized module lives only while its pipeline is created.
+struct TransientShaderModule {
+  VkDevice device;
+  VkShaderModule module = VK_NULL_HANDLE;
+  explicit TransientShaderModule(VkDevice owner) : device(owner) {}
+  TransientShaderModule(const TransientShaderModule&) = delete;
+  TransientShaderModule& operator=(const TransientShaderModule&) = delete;
+  ~TransientShaderModule() {
+    if (module) vkDestroyShaderModule(device, module, nullptr);
   }
 };
 
@@ -147,7 +127,7 @@ ComputePipeline Device::createComputePipeline(const ComputePipelineDescriptor& d
   state->shaderBindings = reflection.bindings;
   state->workgroupSize = reflection.workgroupSize;
 
-  Specialization specialization;
+  std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> literals;
   std::map<std::uint32_t, double> overridden;
   for (const ConstantEntry& entry : descriptor.constants) {
     const spirv::SpecConstant* constant = reflection.findConstant(entry.key);
@@ -159,7 +139,7 @@ ComputePipeline Device::createComputePipeline(const ComputePipelineDescriptor& d
     }
     if (overridden.count(constant->id)) throw Error(name + ": constant '" + entry.key + "' is given twice");
     overridden[constant->id] = checkedConstant(descriptor.label, *constant, entry.value);
-    specialization.add(*constant, entry.value);
+    literals[constant->id] = spirv::literalWords(*constant, entry.value);
   }
   for (int i = 0; i < 3; ++i) {
     auto id = reflection.workgroupSizeSpecIds[i];
@@ -186,17 +166,17 @@ ComputePipeline Device::createComputePipeline(const ComputePipelineDescriptor& d
     state->layout = deriveLayout(state_, descriptor.label, reflection);
   }
 
-  VkSpecializationInfo specializationInfo{};
-  specializationInfo.mapEntryCount = std::uint32_t(specialization.entries.size());
-  specializationInfo.pMapEntries = specialization.entries.data();
-  specializationInfo.dataSize = specialization.data.size();
-  specializationInfo.pData = specialization.data.data();
+  const std::vector<std::uint32_t> code = spirv::specialize(module.code, literals, module.label);
+  VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  moduleInfo.codeSize = code.size() * sizeof(std::uint32_t);
+  moduleInfo.pCode = code.data();
+  TransientShaderModule specialized{state_->device};
+  check(vkCreateShaderModule(state_->device, &moduleInfo, nullptr, &specialized.module), "vkCreateShaderModule");
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
   info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
   info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-  info.stage.module = module.module;
+  info.stage.module = specialized.module;
   info.stage.pName = descriptor.entryPoint.c_str();
-  info.stage.pSpecializationInfo = specialization.entries.empty() ? nullptr : &specializationInfo;
   info.layout = state->layout->layout;
   check(vkCreateComputePipelines(state_->device, state_->pipelineCache, 1, &info, nullptr, &state->pipeline),
         "vkCreateComputePipelines");

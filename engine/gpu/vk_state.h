@@ -116,9 +116,8 @@ std::shared_ptr<BufferState> createBufferState(const std::shared_ptr<DeviceState
 struct ShaderModuleState {
   std::shared_ptr<DeviceState> device;
   std::string label;
-  VkShaderModule module = VK_NULL_HANDLE;
+  std::vector<std::uint32_t> code;  // the driver gets it per pipeline, specialized
   spirv::Reflection reflection;
-  ~ShaderModuleState();
 };
 
 struct BindGroupLayoutState {

@@ -94,7 +94,9 @@ Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const scene
         {"F_MODEL", sharedModel(scene, &materials::Material::fresnel)},
         {"FEATURES", surfaceFeatures(scene, features, lighting, compensation, paths)}};
   };
-  Kernels k{&pipelines.get("intersect", method), &pipelines.get("surface", surface(false)),
+  // With paths every ray's vertex, the camera ray's too, keeps a path state,
+  // so one surface variant shades them all.
+  Kernels k{&pipelines.get("intersect", method), &pipelines.get("surface", surface(features.paths)),
             &pipelines.get("dispatch_args", {}), &pipelines.get("shadow", method),
             &pipelines.get("gather", {}),        &pipelines.get("resolve", {})};
   if (!tessellated) {
@@ -108,7 +110,6 @@ Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const scene
   feature(continuation, features.transmission, "TRANSMISSION");
   feature(continuation, features.lobeLimits, "LOBE_LIMITS");
   feature(pathGather, features.transmission, "TRANSMISSION");
-  k.pathSurface = &pipelines.get("surface", surface(true));
   k.continuePaths = &pipelines.get("continue_paths", continuation);
   k.pathIntersect = &pipelines.get("intersect", pathIntersect);
   k.pathGather = &pipelines.get("gather", pathGather);
@@ -146,7 +147,7 @@ BandCounts traceBand(gpu::Device& d, const Kernels& k, const BindingTable& table
            true);
       pass(encoder, passes.resolveFallbacks, k.resolveCameraFallbacks, "resolve fallbacks", fallbacks, true);
     }
-    pass(encoder, passes.surface, k.pathSurface ? k.pathSurface : k.surface, "surface", pathList, continuation);
+    pass(encoder, passes.surface, k.surface, "surface", pathList, continuation);
     compact(passes.compactShadowRays, encoder);
     pass(encoder, passes.shadow, k.shadow, "shadow", offsetof(layout::RenderCounters, shadowX), true);
     if (k.shadowFallbacks) {

@@ -25,10 +25,10 @@ namespace facet::gpu_backend {
 struct Kernels {
   gpu::ComputePipeline *intersect, *surface, *dispatchArgs, *shadow, *gather, *resolve;
   gpu::ComputePipeline *cameraFallbacks = nullptr, *resolveCameraFallbacks = nullptr, *shadowFallbacks = nullptr;
-  // Paths: the surface kernel that writes path states, the continuation, and
-  // the kernels that work off the continuation rays' list.
-  gpu::ComputePipeline *pathSurface = nullptr, *continuePaths = nullptr, *pathIntersect = nullptr,
-                       *pathFallbacks = nullptr, *pathGather = nullptr;
+  // Paths: the continuation, and the kernels that work off the continuation
+  // rays' list (`surface` then writes path states).
+  gpu::ComputePipeline *continuePaths = nullptr, *pathIntersect = nullptr, *pathFallbacks = nullptr,
+                       *pathGather = nullptr;
 };
 
 Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const scene::SceneFeatures& features,
