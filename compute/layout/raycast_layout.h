@@ -88,6 +88,13 @@ struct RenderCounters {
   uint pathY;
   uint pathZ;
   uint pathHits;  // rays of this bounce that hit: camera rays at bounce 0, then continuation rays
+  // Paths that go on from this bounce's vertices (their camera rays),
+  // appended by the surface kernel: the next bounce continues these alone.
+  // Last, so that a bounce can clear the counters before it and keep them.
+  uint livePaths;
+  uint liveX;
+  uint liveY;
+  uint liveZ;
 };
 
 // A continuation ray of the compacted list (paths, docs/rendering.md
@@ -100,13 +107,11 @@ struct PathRayRecord {
 // A path's state, one per camera ray: its throughput T1 ... Tk, and the
 // vertex it continues from (eye-relative position, shading and geometric
 // normals facing v, the BRDF after textures, energy compensation's specular
-// scale). `alive` is 0 once the path has ended (or never started: a miss or
-// an unshaded sample).
+// scale). Which paths are still going is the counters' live list.
 struct PathState {
   float throughputR;
   float throughputG;
   float throughputB;
-  uint alive;
   float positionX;
   float positionY;
   float positionZ;

@@ -118,57 +118,89 @@ Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const scene
   return k;
 }
 
+namespace {
+
+// The passes of one band as command buffers: a pass over the band's camera
+// rays or over a list, one bounce's rays from intersection to gather, the
+// resolve, and a submit that returns the counters.
+class BandEncoder {
+ public:
+  BandEncoder(gpu::Device& d, const Kernels& k, const BindingTable& table, BandBuffers& band, std::uint64_t rays,
+              std::uint64_t pixels, StageClock& clock)
+      : d_(d), k_(k), table_(table), band_(band), rays_(rays), pixels_(pixels), clock_(clock),
+        dispatchArgs_(group(k.dispatchArgs, "dispatch args")) {}
+
+  // The workgroup grids of the lists from their lengths so far.
+  void compact(gpu::CommandEncoder& encoder, Pass pass) {
+    clock_.begin(encoder, pass, *k_.dispatchArgs, dispatchArgs_).dispatchWorkgroups(1);
+  }
+
+  // A pass over the band's camera rays, or with `indirect` over the list
+  // whose grid the counters hold at offset `list`.
+  void pass(gpu::CommandEncoder& encoder, Pass pass, const gpu::ComputePipeline* p, const char* label,
+            std::size_t list, bool indirect) {
+    if (indirect)
+      clock_.begin(encoder, pass, *p, group(p, label)).dispatchWorkgroupsIndirect(band_.counters, list);
+    else
+      clock_.dispatch(encoder, pass, *p, group(p, label), rays_);
+  }
+
+  // One bounce's rays from their intersection to their gather: the camera
+  // rays (continuation false) or the continuation rays of the list.
+  void traceRays(gpu::CommandEncoder& encoder, const RayPasses& passes, bool continuation) {
+    const std::size_t pathList = offsetof(layout::RenderCounters, pathX);
+    pass(encoder, passes.intersect, continuation ? k_.pathIntersect : k_.intersect, "intersect", pathList,
+         continuation);
+    if (k_.cameraFallbacks) {
+      compact(encoder, passes.compactFallbacks);
+      const std::size_t fallbacks = offsetof(layout::RenderCounters, cameraFallbackX);
+      pass(encoder, passes.fallbacks, continuation ? k_.pathFallbacks : k_.cameraFallbacks, "ray fallbacks",
+           fallbacks, true);
+      pass(encoder, passes.resolveFallbacks, k_.resolveCameraFallbacks, "resolve fallbacks", fallbacks, true);
+    }
+    pass(encoder, passes.surface, k_.surface, "surface", pathList, continuation);
+    compact(encoder, passes.compactShadowRays);
+    pass(encoder, passes.shadow, k_.shadow, "shadow", offsetof(layout::RenderCounters, shadowX), true);
+    if (k_.shadowFallbacks) {
+      compact(encoder, passes.compactShadowFallbacks);
+      pass(encoder, passes.shadowFallbacks, k_.shadowFallbacks, "shadow ray fallbacks",
+           offsetof(layout::RenderCounters, shadowFallbackX), true);
+    }
+    pass(encoder, passes.gather, continuation ? k_.pathGather : k_.gather, "gather", pathList, continuation);
+  }
+
+  // The band's pixels from its rays, copied for the host.
+  void finish(gpu::CommandEncoder& encoder) {
+    clock_.dispatch(encoder, Pass::Resolve, *k_.resolve, group(k_.resolve, "resolve"), pixels_);
+    encoder.copyBufferToBuffer(band_.aovs, 0, band_.aovsHost, 0, pixels_ * sizeof(layout::PixelAovs));
+    encoder.copyBufferToBuffer(band_.beauty, 0, band_.beautyHost, 0, pixels_ * 16);
+  }
+
+  layout::RenderCounters submit(gpu::CommandEncoder& encoder) {
+    encoder.copyBufferToBuffer(band_.counters, 0, band_.countersHost, 0, band_.counters.size());
+    d_.queue().submit(encoder.finish());
+    d_.queue().waitIdle();
+    return band_.countersHost.mapped<layout::RenderCounters>()[0];
+  }
+
+ private:
+  gpu::BindGroup group(const gpu::ComputePipeline* p, const char* label) { return bindGroup(d_, *p, label, table_); }
+
+  gpu::Device& d_;
+  const Kernels& k_;
+  const BindingTable& table_;
+  BandBuffers& band_;
+  std::uint64_t rays_, pixels_;
+  StageClock& clock_;
+  gpu::BindGroup dispatchArgs_;
+};
+
+}  // namespace
+
 BandCounts traceBand(gpu::Device& d, const Kernels& k, const BindingTable& table, BandBuffers& band,
                      gpu_layout::FrameParams frame, int bounces, std::uint64_t rays, std::uint64_t pixels,
                      StageClock& clock) {
-  auto group = [&](const gpu::ComputePipeline* p, const char* label) { return bindGroup(d, *p, label, table); };
-  const gpu::BindGroup dispatchArgs = group(k.dispatchArgs, "dispatch args");
-  auto compact = [&](Pass pass, gpu::CommandEncoder& encoder) {
-    clock.begin(encoder, pass, *k.dispatchArgs, dispatchArgs).dispatchWorkgroups(1);
-  };
-  // A pass over the band's camera rays, or with `list` indirectly over a
-  // list whose grid the counters hold at that offset.
-  auto pass = [&](gpu::CommandEncoder& encoder, Pass pass, const gpu::ComputePipeline* p, const char* label,
-                  std::size_t list, bool indirect) {
-    if (indirect)
-      clock.begin(encoder, pass, *p, group(p, label)).dispatchWorkgroupsIndirect(band.counters, list);
-    else
-      clock.dispatch(encoder, pass, *p, group(p, label), rays);
-  };
-  const std::size_t pathList = offsetof(layout::RenderCounters, pathX);
-  // One bounce's rays from their intersection to their gather: the camera
-  // rays (continuation false) or the continuation rays of the list.
-  auto traceRays = [&](gpu::CommandEncoder& encoder, const RayPasses& passes, bool continuation) {
-    pass(encoder, passes.intersect, continuation ? k.pathIntersect : k.intersect, "intersect", pathList, continuation);
-    if (k.cameraFallbacks) {
-      compact(passes.compactFallbacks, encoder);
-      const std::size_t fallbacks = offsetof(layout::RenderCounters, cameraFallbackX);
-      pass(encoder, passes.fallbacks, continuation ? k.pathFallbacks : k.cameraFallbacks, "ray fallbacks", fallbacks,
-           true);
-      pass(encoder, passes.resolveFallbacks, k.resolveCameraFallbacks, "resolve fallbacks", fallbacks, true);
-    }
-    pass(encoder, passes.surface, k.surface, "surface", pathList, continuation);
-    compact(passes.compactShadowRays, encoder);
-    pass(encoder, passes.shadow, k.shadow, "shadow", offsetof(layout::RenderCounters, shadowX), true);
-    if (k.shadowFallbacks) {
-      compact(passes.compactShadowFallbacks, encoder);
-      pass(encoder, passes.shadowFallbacks, k.shadowFallbacks, "shadow ray fallbacks",
-           offsetof(layout::RenderCounters, shadowFallbackX), true);
-    }
-    pass(encoder, passes.gather, continuation ? k.pathGather : k.gather, "gather", pathList, continuation);
-  };
-  auto finish = [&](gpu::CommandEncoder& encoder) {
-    clock.dispatch(encoder, Pass::Resolve, *k.resolve, group(k.resolve, "resolve"), pixels);
-    encoder.copyBufferToBuffer(band.aovs, 0, band.aovsHost, 0, pixels * sizeof(layout::PixelAovs));
-    encoder.copyBufferToBuffer(band.beauty, 0, band.beautyHost, 0, pixels * 16);
-  };
-  auto submit = [&](gpu::CommandEncoder& encoder) {
-    encoder.copyBufferToBuffer(band.counters, 0, band.countersHost, 0, band.counters.size());
-    d.queue().submit(encoder.finish());
-    d.queue().waitIdle();
-    return band.countersHost.mapped<layout::RenderCounters>()[0];
-  };
-
+  BandEncoder passes(d, k, table, band, rays, pixels, clock);
   BandCounts counts;
   auto add = [&](const layout::RenderCounters& c) {
     counts.shadowRays += c.shadowRays;
@@ -179,35 +211,47 @@ BandCounts traceBand(gpu::Device& d, const Kernels& k, const BindingTable& table
 
   gpu::CommandEncoder encoder = d.createCommandEncoder({"render band"});
   encoder.clearBuffer(band.counters);
-  traceRays(encoder, kCameraPasses, false);
-  if (bounces == 0) finish(encoder);
-  const layout::RenderCounters camera = submit(encoder);
+  passes.traceRays(encoder, kCameraPasses, false);
+  if (bounces == 0) passes.finish(encoder);
+  const layout::RenderCounters camera = passes.submit(encoder);
   clock.read(Pass::Intersect, Pass::Resolve);
   if (!add(camera) || bounces == 0) return counts;
   counts.bounces.push_back({rays, camera.pathHits, camera.shadowRays});
 
   // Paths: one submit per bounce, its frame naming the vertex the
-  // continuation rays leave and the seed of the vertex they hit.
+  // continuation rays leave and the seed of the vertex they hit. A bounce
+  // continues the live list the last one appended (its counters are kept
+  // when the others are cleared), then starts its own.
+  const std::size_t liveCount = offsetof(layout::RenderCounters, livePaths);
   const std::uint32_t seed = frame.environmentSeed;
   frame.pathSeed = seed;
-  std::uint64_t alive = camera.pathHits;
-  for (int bounce = 1; bounce <= bounces; ++bounce) {
+  std::uint64_t alive = camera.livePaths;
+  int bounce = 1;
+  bool complete = true;  // false: a fallback list overflowed, and the band is rendered again with room
+  for (; bounce <= bounces && alive > 0 && complete; ++bounce) {
     frame.pathVertex = std::uint32_t(bounce);
     frame.environmentSeed = rules::f32::path_vertex_seed(seed, std::uint32_t(bounce) + 1);
     d.queue().writeBuffer(band.frame, 0, &frame, sizeof(frame));
     gpu::CommandEncoder bounceEncoder = d.createCommandEncoder({"render band's bounce"});
-    bounceEncoder.clearBuffer(band.counters);
-    if (alive > 0) {
-      pass(bounceEncoder, Pass::Continue, k.continuePaths, "continue paths", 0, false);
-      compact(Pass::BounceCompact, bounceEncoder);
-      traceRays(bounceEncoder, kBouncePasses, true);
-    }
-    if (bounce == bounces) finish(bounceEncoder);
-    const layout::RenderCounters c = submit(bounceEncoder);
+    bounceEncoder.clearBuffer(band.counters, 0, liveCount);
+    passes.pass(bounceEncoder, Pass::Continue, k.continuePaths, "continue paths",
+                offsetof(layout::RenderCounters, liveX), true);
+    bounceEncoder.clearBuffer(band.counters, liveCount, sizeof(std::uint32_t));
+    passes.compact(bounceEncoder, Pass::BounceCompact);
+    passes.traceRays(bounceEncoder, kBouncePasses, true);
+    if (bounce == bounces) passes.finish(bounceEncoder);
+    const layout::RenderCounters c = passes.submit(bounceEncoder);
     clock.read(Pass::Continue, Pass::BounceGather);
     counts.bounces.push_back({c.pathRays, c.pathHits, c.shadowRays});
-    alive = c.pathHits;
-    if (!add(c)) break;
+    alive = c.livePaths;
+    complete = add(c);
+  }
+  if (complete && bounce <= bounces) {
+    // Every path ended early: the bounces left trace nothing.
+    counts.bounces.resize(std::size_t(bounces) + 1);
+    gpu::CommandEncoder finishEncoder = d.createCommandEncoder({"render band's resolve"});
+    passes.finish(finishEncoder);
+    passes.submit(finishEncoder);
   }
   clock.read(Pass::Resolve, Pass::Resolve);
   // The next band's camera rays read the scene's seed again.

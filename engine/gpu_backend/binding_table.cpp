@@ -40,7 +40,8 @@ BindingTable bindingTable(const GeometryBuffers& g, const ShadingBuffers& s, con
           // Without paths no kernel that runs reads or writes these: they
           // name a buffer that is there, so that nothing is allocated.
           {32, b.pathStates ? &b.pathStates : &b.hits},
-          {33, b.pathRays ? &b.pathRays : &b.hits}};
+          {33, b.pathRays ? &b.pathRays : &b.hits},
+          {34, b.livePaths ? &b.livePaths : &b.hits}};
 }
 
 gpu::BindGroup bindGroup(gpu::Device& d, const gpu::ComputePipeline& pipeline, const std::string& label,

@@ -95,6 +95,7 @@ std::uint64_t bandPixelCount(const BandShape& shape, std::uint64_t pixels, std::
                               {"camera hits", rays * sizeof(layout::HitRecord)},
                               {"path states", shape.paths ? rays * sizeof(layout::PathState) : 0},
                               {"continuation rays", shape.paths ? rays * sizeof(layout::PathRayRecord) : 0},
+                              {"live paths", shape.paths ? rays * sizeof(std::uint32_t) : 0},
                               {"camera ray radiance", rays * 16},
                               {"AOVs", sizeof(layout::PixelAovs)},
                               {"beauty", 16}};
@@ -197,7 +198,8 @@ BandBuffers allocateBands(gpu::Device& d, std::uint64_t bandPixels, std::uint64_
   if (paths) {
     b.pathStates = storage(d, "path states", bandRays * sizeof(layout::PathState));
     b.pathRays = storage(d, "continuation rays", bandRays * sizeof(layout::PathRayRecord));
-    b.bytes += b.pathStates.size() + b.pathRays.size();
+    b.livePaths = storage(d, "live paths", bandRays * sizeof(std::uint32_t));
+    b.bytes += b.pathStates.size() + b.pathRays.size() + b.livePaths.size();
   }
   const std::uint64_t fallbackBytes = std::max(1u, fallbackCapacity) * sizeof(layout::FallbackRecord);
   b.cameraFallbacks = storage(d, "camera ray fallbacks", fallbackBytes);

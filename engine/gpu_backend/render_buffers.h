@@ -37,7 +37,7 @@ struct ShadingBuffers {
 struct BandBuffers {
   gpu::Buffer frame, hits, shadowRays, contributions, aovs, rayRadiance, beauty, counters;
   gpu::Buffer cameraFallbacks, shadowFallbacks;  // exact method: FallbackRecords, fallbackCapacity each
-  gpu::Buffer pathStates, pathRays;              // paths only: a PathState and a PathRayRecord per camera ray
+  gpu::Buffer pathStates, pathRays, livePaths;  // paths only: a PathState, a PathRayRecord, a path index per camera ray
   gpu::Buffer aovsHost, beautyHost, countersHost;
   std::uint64_t bytes = 0;
 };

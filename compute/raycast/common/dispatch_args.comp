@@ -33,4 +33,8 @@ void main() {
   counters.pathX = path.x;
   counters.pathY = path.y;
   counters.pathZ = path.z;
+  uvec3 live = workgroup_grid(counters.livePaths);  // paths that go on (0 without paths)
+  counters.liveX = live.x;
+  counters.liveY = live.y;
+  counters.liveZ = live.z;
 }

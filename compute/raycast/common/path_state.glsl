@@ -17,9 +17,9 @@ struct PathMedium {
 // The continuations of each lobe kind a path has taken, indexed by PATH_LOBE_*.
 uvec3 path_lobes_taken(PathState s) { return uvec3(s.diffuseTaken, s.glossyTaken, s.transmissionTaken); }
 
-PathState pack_path_state(vec3 throughput, bool alive, PathVertex x, PathMedium medium, uvec3 taken) {
+PathState pack_path_state(vec3 throughput, PathVertex x, PathMedium medium, uvec3 taken) {
   BrdfParams p = x.params;
-  return PathState(throughput.x, throughput.y, throughput.z, alive ? 1u : 0u, x.position.x, x.position.y,
+  return PathState(throughput.x, throughput.y, throughput.z, x.position.x, x.position.y,
                    x.position.z, x.n.x, x.n.y, x.n.z, x.ng.x, x.ng.y, x.ng.z, x.v.x, x.v.y, x.v.z, p.d_model,
                    p.g_model, p.f_model, p.alpha, p.f0.x, p.f0.y, p.f0.z, p.eta.x, p.eta.y, p.eta.z, p.k.x, p.k.y,
                    p.k.z, p.diffuse.x, p.diffuse.y, p.diffuse.z, x.specular_scale.x, x.specular_scale.y,

@@ -1,9 +1,9 @@
-// Paths (docs/rendering.md, "Paths"), one invocation per camera ray of the
-// band: a live path's step from vertex frame.pathVertex by the shared rule
-// path_step (rules/shading/path_step.h), keyed as the CPU reference keys it,
-// so that both backends trace the same paths. A path that goes on stores
-// what it carries and appends its ray to the compacted list
-// (counters.pathRays); one that ends is marked so.
+// Paths (docs/rendering.md, "Paths"), one invocation per path of the live
+// list that the last bounce's surface kernel made: its step from vertex
+// frame.pathVertex by the shared rule path_step (rules/shading/path_step.h),
+// keyed as the CPU reference keys it, so that both backends trace the same
+// paths. A path that goes on stores what it carries and appends its ray to
+// the compacted list (counters.pathRays); one that ends appends nothing.
 // TRANSMISSION: 1 when some material transmits (a vertex may then be
 // transmissive, and a path carries its medium). LOBE_LIMITS: 1 when the
 // scene limits some lobe kind (a path then counts its lobes).
@@ -24,13 +24,14 @@ layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters;
 layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord materials[]; };
 layout(set = 0, binding = 32, std430) buffer PathStates { PathState pathStates[]; };
 layout(set = 0, binding = 33, std430) writeonly buffer PathRays { PathRayRecord pathRays[]; };
+layout(set = 0, binding = 34, std430) readonly buffer LivePaths { uint livePaths[]; };
 
 #include "compute/raycast/common/path_state.glsl"
 
 void main() {
-  uint path = invocation_index();
-  if (path >= frame.pixelCount * frame.raysPerPixel) return;
-  if (pathStates[path].alive == 0u) return;  // before loading the rest: most paths end early
+  uint index = invocation_index();
+  if (index >= counters.livePaths) return;
+  uint path = livePaths[index];
   PathState state = pathStates[path];
   PathMedium medium = path_medium(state);
   bool transmissive = TRANSMISSION == 1 && (medium.flags & FACET_PATH_TRANSMISSIVE) != 0u;
@@ -43,10 +44,7 @@ void main() {
   PathStep step = path_step(path_vertex(state, transmissive, transmission), carry, key, frame.pathVertex,
                             LOBE_LIMITS == 1, ivec3(frame.diffuseBounces, frame.glossyBounces, frame.transmissionBounces),
                             frame.shadowOffset);
-  if (!step.continues) {
-    pathStates[path].alive = 0u;
-    return;
-  }
+  if (!step.continues) return;
   pathStates[path].throughputR = step.carry.throughput.x;
   pathStates[path].throughputG = step.carry.throughput.y;
   pathStates[path].throughputB = step.carry.throughput.z;

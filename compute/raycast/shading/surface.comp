@@ -63,6 +63,7 @@ layout(set = 0, binding = 27) uniform samplerBuffer authoredNormals;
 layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters; };
 layout(set = 0, binding = 32, std430) buffer PathStates { PathState pathStates[]; };
 layout(set = 0, binding = 33, std430) readonly buffer PathRays { PathRayRecord pathRays[]; };
+layout(set = 0, binding = 34, std430) writeonly buffer LivePaths { uint livePaths[]; };
 
 #include "compute/raycast/common/patch_eval.glsl"
 #include "compute/raycast/shading/limit_normal.glsl"
@@ -289,7 +290,6 @@ HitPartials hit_partials(bool anisotropic, PatchRecord record, uint channels, Pa
 // continuation only where it went through its last surface: D at the vertex
 // it left counted the environment, shadowed, over its reflection lobes).
 void shade_miss(uint camera, uint firstSlot, bool centre, bool shaded, bool continuation, vec3 direction) {
-  if (PATHS == 1) pathStates[camera].alive = 0u;
   if (continuation) {
     if (TRANSMISSION == 0 || (pathStates[camera].flags & FACET_PATH_TRANSMITTED) == 0u) return;
     for (uint slot = 0u; slot < frame.slotsPerRay; ++slot) write_unshadowed(firstSlot + slot, vec3(0.0));
@@ -331,7 +331,8 @@ void shade_lights(uint first, bool shaded, SurfaceAtHit s, vec3 position, vec3 v
 
 // The camera ray's path moves on to this vertex: a continuation's segment
 // takes Beer-Lambert's factor of the medium it crossed; the counts per lobe
-// kind travel with the path (the camera ray's vertex has taken none).
+// kind travel with the path (the camera ray's vertex has taken none). A shaded
+// vertex puts its path on the live list, which the next bounce continues.
 void store_path_state(uint camera, bool continuation, bool shaded, PathVertex x, uint material, vec3 origin) {
   vec3 throughput = continuation ? path_throughput(pathStates[camera]) : vec3(1.0);
   PathMedium medium = PathMedium(material, 0u, vec3(0.0));
@@ -343,7 +344,8 @@ void store_path_state(uint camera, bool continuation, bool shaded, PathVertex x,
     medium.flags = (x.transmissive ? FACET_PATH_TRANSMISSIVE : 0u) | (x.outside ? FACET_PATH_OUTSIDE : 0u);
   }
   uvec3 taken = LOBE_LIMITS == 1 && continuation ? path_lobes_taken(pathStates[camera]) : uvec3(0u);
-  pathStates[camera] = pack_path_state(throughput, shaded, x, medium, taken);
+  pathStates[camera] = pack_path_state(throughput, x, medium, taken);
+  if (shaded) livePaths[atomicAdd(counters.livePaths, 1u)] = camera;
 }
 
 void main() {

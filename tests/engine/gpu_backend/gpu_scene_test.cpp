@@ -358,6 +358,8 @@ TEST(GpuLayout, GlslLayoutOfTheSharedHeadersIsTheCppLayout) {
   FACET_EXPECT_MEMBER(RenderCounters, cameraFallbacks);
   FACET_EXPECT_MEMBER(RenderCounters, cameraFallbackX);
   FACET_EXPECT_MEMBER(RenderCounters, shadowFallbackZ);
+  FACET_EXPECT_MEMBER(RenderCounters, livePaths);
+  FACET_EXPECT_MEMBER(RenderCounters, liveZ);
   FACET_EXPECT_MEMBER(FallbackRecord, cell);
   FACET_EXPECT_MEMBER(FallbackRecord, tParam);
   FACET_EXPECT_MEMBER(FrameParams, fallbackCapacity);
