@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -94,7 +95,7 @@ class TextureTable {
   const tinygltf::Model& model_;
   const GltfReader& reader_;
   std::vector<Texture>& textures_;
-  std::map<std::pair<int, TextureEncoding>, int> cache_;
+  std::map<std::tuple<int, int, TextureEncoding>, int> cache_;  // (image, sampler, encoding) -> texture
 };
 
 // gltf_materials.cpp. A material some primitive with vertex colours uses

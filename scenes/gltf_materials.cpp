@@ -86,7 +86,10 @@ materials::TextureSlot TextureTable::slot(const tinygltf::ExtensionMap& extensio
     return {};
   }
   slot.texCoord = texCoord;
-  auto [cached, fresh] = cache_.try_emplace({index, encoding}, int(textures_.size()));
+  // glTF textures that pair the same image with the same sampler are one
+  // texture: converted, filtered into mip levels and uploaded once.
+  const tinygltf::Texture& gltf = model_.textures[std::size_t(index)];
+  auto [cached, fresh] = cache_.try_emplace({gltf.source, gltf.sampler, encoding}, int(textures_.size()));
   if (fresh) textures_.push_back(convert(index, encoding));
   slot.texture = cached->second;
   return slot;
