@@ -97,6 +97,21 @@ TEST_F(GltfTextures, PngImagesDecodeIntoTheMaterialsSlots) {
   EXPECT_EQ(data.sampler.wrapS, t::FACET_WRAP_REPEAT);
 }
 
+// Files name one image in many textures (a test sheet: one texture per
+// material over a few images); those are one texture, not a copy each.
+TEST_F(GltfTextures, TexturesOfOneImageAndSamplerAreOneTexture) {
+  nlohmann::json file = parts({{"occlusionTexture", {{"index", 2}}}, {"normalTexture", {{"index", 3}}}});
+  // 2 is texture 1 again (mr.png, no sampler); 3 is mr.png with sampler 0.
+  file["textures"].push_back({{"source", 1}});
+  file["textures"].push_back({{"source", 1}, {"sampler", 0}});
+  const Scene scene = loadScene(facet::testing::writeTexturedQuad(dir_, "quad", file));
+  const materials::MaterialTextures& m = *scene.materials.at(0).textures;
+  EXPECT_EQ(m.occlusionTexture.texture, m.metallicRoughnessTexture.texture);
+  EXPECT_NE(m.normalTexture.texture, m.metallicRoughnessTexture.texture);  // the same image, another sampler
+  ASSERT_EQ(scene.textures.size(), 3u);
+  EXPECT_EQ(scene.textures[std::size_t(m.normalTexture.texture)].sampler.magFilter, t::FACET_FILTER_NEAREST);
+}
+
 TEST_F(GltfTextures, AMaterialWithoutTexturesHasNoSlots) {
   nlohmann::json p = parts();
   p["materials"][0] = {{"pbrMetallicRoughness", {{"roughnessFactor", 0.5}}}};
