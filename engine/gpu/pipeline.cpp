@@ -166,10 +166,11 @@ ComputePipeline Device::createComputePipeline(const ComputePipelineDescriptor& d
     state->layout = deriveLayout(state_, descriptor.label, reflection);
   }
 
-  const std::vector<std::uint32_t> code = spirv::specialize(module.code, literals, module.label);
+  const std::shared_ptr<const std::vector<std::uint32_t>> code =
+      spirv::specializeOnce(module.code, literals, module.label);
   VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  moduleInfo.codeSize = code.size() * sizeof(std::uint32_t);
-  moduleInfo.pCode = code.data();
+  moduleInfo.codeSize = code->size() * sizeof(std::uint32_t);
+  moduleInfo.pCode = code->data();
   TransientShaderModule specialized{state_->device};
   check(vkCreateShaderModule(state_->device, &moduleInfo, nullptr, &specialized.module), "vkCreateShaderModule");
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};

@@ -1,7 +1,11 @@
 #include "engine/gpu/spirv_specialize.h"
 
+#include <algorithm>
 #include <cstring>
+#include <mutex>
 #include <spirv-tools/optimizer.hpp>
+#include <string_view>
+#include <unordered_map>
 
 #include "engine/gpu/describe.h"
 
@@ -64,6 +68,54 @@ std::vector<std::uint32_t> specialize(std::span<const std::uint32_t> words,
     throw Error(detail::describe("shader module", label) + ": its constants could not be folded into the code" +
                 (messages.empty() ? std::string() : ": " + messages));
   return specialized;
+}
+
+namespace {
+
+// A module and its values, as one run of words: the values by constant id,
+// each as its id, its length and its words, then the module.
+std::vector<std::uint32_t> specializationKey(
+    std::span<const std::uint32_t> words, const std::unordered_map<std::uint32_t, std::vector<std::uint32_t>>& values) {
+  std::vector<std::uint32_t> ids;
+  for (const auto& entry : values) ids.push_back(entry.first);
+  std::sort(ids.begin(), ids.end());
+  std::vector<std::uint32_t> key;
+  for (std::uint32_t id : ids) {
+    const std::vector<std::uint32_t>& literal = values.at(id);
+    key.push_back(id);
+    key.push_back(std::uint32_t(literal.size()));
+    key.insert(key.end(), literal.begin(), literal.end());
+  }
+  key.insert(key.end(), words.begin(), words.end());
+  return key;
+}
+
+struct KeyHash {
+  std::size_t operator()(const std::vector<std::uint32_t>& key) const {
+    return std::hash<std::string_view>{}(
+        std::string_view(reinterpret_cast<const char*>(key.data()), key.size() * sizeof(std::uint32_t)));
+  }
+};
+
+}  // namespace
+
+std::shared_ptr<const std::vector<std::uint32_t>> specializeOnce(
+    std::span<const std::uint32_t> words, const std::unordered_map<std::uint32_t, std::vector<std::uint32_t>>& values,
+    const std::string& label) {
+  static std::mutex mutex;
+  static std::unordered_map<std::vector<std::uint32_t>, std::shared_ptr<const std::vector<std::uint32_t>>, KeyHash>
+      specialized;
+  std::vector<std::uint32_t> key = specializationKey(words, values);
+  {
+    const std::lock_guard lock(mutex);
+    const auto found = specialized.find(key);
+    if (found != specialized.end()) return found->second;
+  }
+  // Two threads asking for one variant at once may both run the optimizer;
+  // its result is the same, and the first one stored is kept.
+  auto code = std::make_shared<const std::vector<std::uint32_t>>(specialize(words, values, label));
+  const std::lock_guard lock(mutex);
+  return specialized.emplace(std::move(key), std::move(code)).first->second;
 }
 
 }  // namespace facet::gpu::spirv

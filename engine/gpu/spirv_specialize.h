@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <unordered_map>
@@ -26,5 +27,12 @@ std::vector<std::uint32_t> literalWords(const SpecConstant& constant, double val
 std::vector<std::uint32_t> specialize(std::span<const std::uint32_t> words,
                                       const std::unordered_map<std::uint32_t, std::vector<std::uint32_t>>& values,
                                       const std::string& label);
+
+// specialize(), run once per process for each module and values: a process
+// that creates the same pipeline again (another device, renderer or
+// picture) reuses the code instead of running the optimizer again.
+std::shared_ptr<const std::vector<std::uint32_t>> specializeOnce(
+    std::span<const std::uint32_t> words, const std::unordered_map<std::uint32_t, std::vector<std::uint32_t>>& values,
+    const std::string& label);
 
 }  // namespace facet::gpu::spirv

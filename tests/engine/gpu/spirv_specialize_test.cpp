@@ -66,6 +66,20 @@ TEST(SpirvSpecialize, LiteralsFollowSpirvsRules) {
               ElementsAre(std::uint32_t(bits), std::uint32_t(bits >> 32)));  // low word first
 }
 
+TEST(SpirvSpecialize, EachModuleAndValuesAreOptimizedOncePerProcess) {
+  const std::span<const std::uint32_t> gated = test_spirv::constant_gated;
+  const auto off = specializeOnce(gated, {{0, {0}}}, "gated");
+  EXPECT_EQ(*off, specialize(gated, {{0, {0}}}, "gated"));
+  // The same module under another label, as another device would give it.
+  EXPECT_EQ(specializeOnce(std::vector<std::uint32_t>(gated.begin(), gated.end()), {{0, {0}}}, "again"), off);
+  const auto on = specializeOnce(gated, {{0, {1}}}, "gated");
+  EXPECT_NE(on, off);
+  EXPECT_EQ(*on, specialize(gated, {{0, {1}}}, "gated"));
+  const auto fill = specializeOnce(test_spirv::specialized_fill, {{0, {32}}, {1, {1}}}, "fill");
+  EXPECT_NE(*fill, *off);
+  EXPECT_EQ(specializeOnce(test_spirv::specialized_fill, {{1, {1}}, {0, {32}}}, "fill"), fill);
+}
+
 TEST(SpirvSpecialize, CodeTheOptimizerRejectsIsAnErrorNamingTheModule) {
   const std::vector<std::uint32_t> truncated(test_spirv::constant_gated.begin(),
                                              test_spirv::constant_gated.begin() + 40);
@@ -75,6 +89,8 @@ TEST(SpirvSpecialize, CodeTheOptimizerRejectsIsAnErrorNamingTheModule) {
   } catch (const Error& e) {
     EXPECT_THAT(e.what(), HasSubstr("shader module 'cut short'"));
   }
+  for (int attempt = 0; attempt < 2; ++attempt)  // a failure is not remembered as code
+    EXPECT_THROW(specializeOnce(truncated, {}, "cut short"), Error);
 }
 
 }  // namespace
