@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,12 +33,9 @@ void runMerge(const MergeOptions& o) {
     checkOutputPath("--png", o.png);
     checkOutputExtension("--png", o.png, ".png");
   }
-  // merge never overwrites what it reads.
-  for (const std::string& tile : o.tiles) {
-    if (namesSameFile(tile, o.exr)) throw OutputError("-o '" + o.exr + "': names the input tile '" + tile + "'");
-    if (!o.png.empty() && namesSameFile(tile, o.png))
-      throw OutputError("--png '" + o.png + "': names the input tile '" + tile + "'");
-  }
+  const std::vector<std::filesystem::path> tiles(o.tiles.begin(), o.tiles.end());
+  checkNotAnInput("-o", o.exr, tiles);
+  if (!o.png.empty()) checkNotAnInput("--png", o.png, tiles);
   for (const std::string& tile : o.tiles) scene::checkTileFile(tile);
   mergeTiles({o.tiles.begin(), o.tiles.end()}, {o.exr, o.png, preview});
   if (!o.quiet)

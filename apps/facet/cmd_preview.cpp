@@ -20,6 +20,7 @@
 #include "material_options.h"
 #include "preview_stage_options.h"
 #include "scene_options.h"
+#include "scenes/input_file.h"
 
 namespace facet::cli {
 namespace {
@@ -77,10 +78,13 @@ void runPreview(const PreviewStageFlags& f) {
     checkOutputExtension("-o", f.output, ".png");
   }
   const auto start = std::chrono::steady_clock::now();
+  const std::string written = f.movie.empty() ? f.output : f.movie;
+  const scene::InputFileLog inputs;  // the model's files, the lighting's and the materials'
   const scene::Scene model = previewModel(f);
   std::vector<std::string> materials;
   for (const std::string& reference : f.materials) materials.push_back(libraryMaterialReference(reference));
   const PreviewStage stage(model, materials, settings);
+  checkNotAnInput(f.movie.empty() ? "-o" : "--movie", written, inputs.files());
   const ContactSheetLayout& layout = stage.layout();
   const int width = model.render.width, height = model.render.height, frames = stage.frames();
   Renderer renderer(f.adapter);
@@ -94,7 +98,6 @@ void runPreview(const PreviewStageFlags& f) {
         renderJson(picture.label, picture.frame, picture.report, settings.adaptive.noiseThreshold));
     if (!f.quiet && !f.json) printRender(summary["renders"].back(), stage.turntable());
   };
-  const std::string written = f.movie.empty() ? f.output : f.movie;
   writePreviewStage(renderer, stage, written, f.fps, path, progress);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary["milliseconds"] = seconds * 1000.0;

@@ -27,6 +27,7 @@
 #include "render_summary.h"
 #include "scene_options.h"
 #include "scene_warnings.h"
+#include "scenes/input_file.h"
 #include "scenes/scene_file.h"
 #include "watch.h"
 
@@ -112,6 +113,18 @@ void checkOutputs(const RenderJob& job, const RenderCommandOptions& o) {
   checkOutputExtension(o.pngFlag, job.png, ".png");
 }
 
+// The scene with its edits, refused before any render when an output of
+// `jobs` is one of the files it reads (its file, materials, meshes, images).
+scene::Scene loadSceneOfOtherFiles(const RenderCommandOptions& o, const std::vector<RenderJob>& jobs) {
+  const scene::InputFileLog inputs;
+  scene::Scene scene = loadEditedScene(o.scene, o.edits);
+  for (const RenderJob& job : jobs) {
+    if (o.writeExr) checkNotAnInput("-o", job.exr, inputs.files());
+    if (!job.png.empty()) checkNotAnInput(o.pngFlag, job.png, inputs.files());
+  }
+  return scene;
+}
+
 // A job's EXR and PNG of `image`, the pixels of `window`, as a set.
 void writeOutputs(const RenderCommandOptions& o, const RenderJob& job, const scene::Scene& scene, const Image& image,
                   const PixelRect& window, const PreviewOptions& preview, const std::string& settingsNote = {}) {
@@ -148,7 +161,7 @@ void runWatch(const RenderCommandOptions& o) {
   std::set<std::string> warned;  // each warning once, not on every load
   WatchedScene watched;
   watched.load = [&] {
-    scene::Scene scene = loadEditedScene(o.scene, o.edits);
+    scene::Scene scene = loadSceneOfOtherFiles(o, {job});
     applySceneOverrides(o.scene_overrides, scene);
     checkImagesFitInMemory(scene, 1, o.scene_overrides.size.empty() ? o.scene + ": image size" : "--size");
     std::vector<std::string> fresh;
@@ -170,7 +183,7 @@ void runRender(const RenderCommandOptions& o) {
   const std::vector<RenderJob> jobs = renderJobs(o);
   for (const RenderJob& job : jobs) checkOutputs(job, o);
   chosenExrLayers(o.exrFlags);
-  scene::Scene scene = loadEditedScene(o.scene, o.edits);
+  scene::Scene scene = loadSceneOfOtherFiles(o, jobs);
   applySceneOverrides(o.scene_overrides, scene);
   const int width = scene.render.width, height = scene.render.height;
   const std::optional<PixelRect> crop = chosenCrop(o.farm, width, height);

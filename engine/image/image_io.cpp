@@ -63,6 +63,14 @@ bool namesSameFile(const std::filesystem::path& a, const std::filesystem::path& 
   return std::filesystem::absolute(a).lexically_normal() == std::filesystem::absolute(b).lexically_normal();
 }
 
+void checkNotAnInput(const std::string& flag, const std::filesystem::path& path,
+                     const std::vector<std::filesystem::path>& inputs) {
+  for (const std::filesystem::path& input : inputs)
+    if (namesSameFile(path, input))
+      throw OutputError(flag + " '" + path.string() + "': names '" + input.string() +
+                        "', which this command reads: an output never replaces an input");
+}
+
 void removeLeftoversOfEndedProcesses(const std::filesystem::path& folder, const std::string& prefix) {
   std::error_code error;
   for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {

@@ -47,6 +47,13 @@ void checkOutputExtension(const std::string& flag, const std::filesystem::path& 
 // and other spellings included), else the same normalized absolute path.
 bool namesSameFile(const std::filesystem::path& a, const std::filesystem::path& b);
 
+// Throws OutputError "<flag> '<path>': names '<input>', which this command
+// reads: an output never replaces an input" when `path` names one of
+// `inputs` (namesSameFile: links and other spellings included). Checked
+// once the inputs are known, before the work that produces the output.
+void checkNotAnInput(const std::string& flag, const std::filesystem::path& path,
+                     const std::vector<std::filesystem::path>& inputs);
+
 // Writes every file to a temporary in its destination's folder, then renames
 // them all into place with SIGINT, SIGTERM and SIGHUP held back. When a write
 // fails, removes the temporaries and leaves every existing destination
