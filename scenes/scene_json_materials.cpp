@@ -24,6 +24,9 @@ namespace detail {
 namespace {
 
 constexpr const char* kTextureKeys[] = {"diffuse_texture", "f0_texture", "roughness_texture"};
+// Files that extend files are read by recursion: the bound keeps a chain of
+// any length within the stack (docs/reliability.md, "Limits").
+constexpr std::size_t kDeepestExtends = 64;
 
 // A texture field: an image file relative to the scene file, or an object
 // of the image and its sampling.
@@ -148,6 +151,9 @@ json materialFile(const Field& reference, const std::filesystem::path& relativeT
     for (auto at = find(chain, key); at != chain.end(); ++at) cycle += at->filename().string() + " -> ";
     reference.fail("material files extend each other in a cycle: " + cycle + key.filename().string());
   }
+  if (chain.size() >= kDeepestExtends)
+    reference.fail("material files extend each other more than " + std::to_string(kDeepestExtends) +
+                   " deep, from " + chain.front().filename().string());
   const std::string source = file.string();
   std::ifstream in(file);
   json document;

@@ -121,6 +121,21 @@ TEST_F(MaterialFiles, ErrorsNameTheFileThatBreaksTheRule) {
   EXPECT_THAT(errorOf(R"({"extends": "gold"})"), HasSubstr("extends: a material file's name ends in .json"));
 }
 
+TEST_F(MaterialFiles, AChainOfExtendsIsBoundedBeforeTheStackIs) {
+  constexpr int kDeepest = 64;
+  const auto name = [](int i) { return "m" + std::to_string(i) + ".json"; };
+  write("lib/" + name(kDeepest + 1), R"({"preset": "gold", "roughness": 0.3})");
+  for (int i = kDeepest; i >= 1; --i) write("lib/" + name(i), R"({"extends": ")" + name(i + 1) + R"("})");
+  // 64 files deep from the scene's entry: m1.json .. m64.json, the last extending m65.json.
+  EXPECT_THAT(errorOf(R"("lib/m1.json")"),
+              HasSubstr(name(kDeepest) + ": extends: material files extend each other more than 64 deep, from m1.json"));
+  EXPECT_NO_THROW(withMaterial(R"("lib/m2.json")"));
+  for (int i = kDeepest + 1; i < 4000; ++i)
+    write("lib/" + name(i), R"({"extends": ")" + name(i + 1) + R"("})");
+  write("lib/" + name(4000), R"({"preset": "gold", "roughness": 0.3})");
+  EXPECT_THAT(errorOf(R"("lib/m1.json")"), HasSubstr("more than 64 deep"));
+}
+
 TEST_F(MaterialFiles, AMaterialNameMustNotLookLikeAFile) {
   write("scene.json", R"({"materials": {"gold.json": {"preset": "gold", "roughness": 0.2}},
                           "objects": [{"mesh": "ball.obj"}]})");
