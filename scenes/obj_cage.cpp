@@ -7,10 +7,12 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <optional>
 #include <set>
 #include <sstream>
+#include <string>
 #include <utility>
 
 namespace facet::scene {
@@ -29,9 +31,17 @@ std::vector<std::string_view> splitWhitespace(std::string_view line) {
   return tokens;
 }
 
+// A token of the file in an error, quoted only when it could be OBJ's: short
+// and of letters, digits and `_ . + - /`. Anything else (a line of a file
+// that is not OBJ at all, /etc/shadow's say) is described, never repeated.
 // Built by appending: GCC 12 warns (-Wrestrict, a false positive) on
 // "'" + std::string(...).
 std::string inQuotes(std::string_view text) {
+  constexpr std::size_t kLongestQuoted = 32;
+  const bool objLike = text.size() <= kLongestQuoted && std::all_of(text.begin(), text.end(), [](char c) {
+                         return std::isalnum(static_cast<unsigned char>(c)) || (c != '\0' && std::strchr("_.+-/", c));
+                       });
+  if (!objLike) return "a token of " + std::to_string(text.size()) + " characters that OBJ does not write (not quoted)";
   std::string result(1, '\'');
   result.append(text);
   result.push_back('\'');

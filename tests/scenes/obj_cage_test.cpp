@@ -239,6 +239,27 @@ std::string caseName(const ::testing::TestParamInfo<BadCage>& info) {
 INSTANTIATE_TEST_SUITE_P(BadCages, ObjCageErrorsOnItsLine, ::testing::ValuesIn(kBadCages), caseName);
 
 // OpenSubdiv subdivides these, so the reader passes them on as written.
+// A file that is not OBJ (a password file named as a mesh, say) is refused
+// without its contents in the message; OBJ's own tokens are still quoted.
+TEST(ObjCageErrors, QuoteOnlyWhatCouldBeObj) {
+  const auto messageOf = [](const std::string& text) {
+    try {
+      parseObjCage(text, "test.obj");
+    } catch (const InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string("(no error)");
+  };
+  const std::string secret = messageOf("root:$y$j9T$aSecretHash:20228:0:99999:7:::\nv 0 0 0\n");
+  EXPECT_EQ(secret.find("root"), std::string::npos) << secret;
+  EXPECT_EQ(secret.find("Secret"), std::string::npos) << secret;
+  EXPECT_NE(secret.find("a token of 42 characters that OBJ does not write (not quoted)"), std::string::npos) << secret;
+  const std::string number = messageOf(kQuad + "v 1 " + std::string(40, '7') + "x 3\n");
+  EXPECT_NE(number.find("a token of 41 characters"), std::string::npos) << number;
+  EXPECT_NE(messageOf(kQuad + "f 1 2 3 4\nbogus 1 2\n").find("'bogus' is not an OBJ statement"), std::string::npos);
+  EXPECT_NE(messageOf(kQuad + "v 1 two 3\n").find("'two'"), std::string::npos);
+}
+
 TEST(ObjCage, AcceptsWhatOpenSubdivAccepts) {
   const ControlCage repeated = parseObjCage(kQuad + "f 1 2 2 3\nf 1 2 3 -4\n", "repeated");
   EXPECT_EQ(repeated.faceVertexIndices, (std::vector<int>{0, 1, 1, 2, 0, 1, 2, 0}));
