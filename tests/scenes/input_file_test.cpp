@@ -21,14 +21,13 @@ namespace fs = std::filesystem;
 using ::testing::Contains;
 using ::testing::UnorderedElementsAre;
 
-const fs::path kExamples = FACET_EXAMPLES_DIR;
 const fs::path kEnvironments = FACET_ENVIRONMENTS_DIR;
 
 class InputFiles : public facet::testing::TempDirTest {
  protected:
   void SetUp() override {
     TempDirTest::SetUp();
-    fs::copy_file(kExamples / "superball.obj", dir_ / "ball.obj");
+    fs::copy_file(fs::path(FACET_EXAMPLES_DIR) / "superball.obj", dir_ / "ball.obj");
     fs::create_directories(dir_ / "lib");
     const std::vector<std::uint8_t> grey(4 * 2 * 3, 128);
     ASSERT_TRUE(stbi_write_png((dir_ / "lib" / "albedo.png").c_str(), 4, 2, 3, grey.data(), 4 * 3));

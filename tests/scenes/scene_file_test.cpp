@@ -19,13 +19,12 @@ namespace fs = std::filesystem;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 
-const fs::path kExamples = FACET_EXAMPLES_DIR;
 
 class SceneFiles : public facet::testing::TempDirTest {
  protected:
   void SetUp() override {
     TempDirTest::SetUp();
-    fs::copy_file(kExamples / "superball.obj", dir_ / "ball.obj");
+    fs::copy_file(fs::path(FACET_EXAMPLES_DIR) / "superball.obj", dir_ / "ball.obj");
   }
 
   fs::path write(const std::string& name, const std::string& text) {
@@ -43,7 +42,7 @@ class SceneFiles : public facet::testing::TempDirTest {
 };
 
 TEST_F(SceneFiles, ThePreviewSceneHasEveryPreset) {
-  Scene scene = loadScene(kExamples / "preview.json");
+  Scene scene = loadScene(fs::path(FACET_EXAMPLES_DIR) / "preview.json");
   EXPECT_EQ(scene.objects.size(), 10u);
   EXPECT_EQ(scene.materials.size(), 10u);
   EXPECT_EQ(scene.lights.size(), 1u);
@@ -164,7 +163,7 @@ TEST_F(SceneFiles, NonFiniteNumbersAreRejected) {
 
 TEST_F(SceneFiles, BrokenGltfFilesNameTheFileAndTheProblem) {
   const std::string valid = [] {
-    std::ifstream in(kExamples / "gold_cube.gltf");
+    std::ifstream in(fs::path(FACET_EXAMPLES_DIR) / "gold_cube.gltf");
     return std::string(std::istreambuf_iterator<char>(in), {});
   }();
   auto errorOfGltf = [&](const std::string& text) {
@@ -192,7 +191,7 @@ TEST_F(SceneFiles, UnknownExtensionsAreRejected) {
 }
 
 TEST_F(SceneFiles, GltfMeshesAreWeldedCagesWithTheirMaterialsCamerasAndLights) {
-  Scene scene = loadScene(kExamples / "gold_cube.gltf");
+  Scene scene = loadScene(fs::path(FACET_EXAMPLES_DIR) / "gold_cube.gltf");
   ASSERT_EQ(scene.objects.size(), 1u);
   EXPECT_EQ(scene.objects[0].subdivision, Subdivision::None);
   const ControlCage& cage = scene.objects[0].cage;
@@ -230,7 +229,7 @@ TEST_F(SceneFiles, ABareCageIsFramedAndLit) {
 
 TEST_F(SceneFiles, AnEnvironmentMapIsReadRelativeToTheSceneFile) {
   fs::create_directories(dir_ / "maps");
-  fs::copy_file(kExamples / "../environments/courtyard_256x128.hdr", dir_ / "maps/court.hdr");
+  fs::copy_file(fs::path(FACET_EXAMPLES_DIR) / "../environments/courtyard_256x128.hdr", dir_ / "maps/court.hdr");
   const Scene scene = loadScene(write("env.json", R"({"objects": [{"mesh": "ball.obj"}],
       "environment": {"file": "maps/court.hdr", "intensity": 2.5, "rotation": -90, "method": "sampled",
                       "samples": 64, "occlusion": false}})"));

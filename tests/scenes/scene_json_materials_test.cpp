@@ -23,13 +23,12 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-const fs::path kExamples = FACET_EXAMPLES_DIR;
 
 class MaterialFiles : public facet::testing::TempDirTest {
  protected:
   void SetUp() override {
     TempDirTest::SetUp();
-    fs::copy_file(kExamples / "superball.obj", dir_ / "ball.obj");
+    fs::copy_file(fs::path(FACET_EXAMPLES_DIR) / "superball.obj", dir_ / "ball.obj");
     fs::create_directories(dir_ / "lib");
   }
 
@@ -60,11 +59,11 @@ TEST_F(MaterialFiles, TheLibraryInTheExamplesLoadsAndWornGoldIsPolishedGoldRough
   std::vector<Texture> textures;
   for (const char* file : {"polished_gold", "worn_gold", "brushed_aluminum", "red_plastic", "white_ceramic",
                            "glazed_ceramic", "car_paint", "velvet", "rubber"})
-    EXPECT_NO_THROW(loadMaterialReference((kExamples / "materials" / file).string() + ".json", textures)) << file;
+    EXPECT_NO_THROW(loadMaterialReference((fs::path(FACET_EXAMPLES_DIR) / "materials" / file).string() + ".json", textures)) << file;
   const materials::Material polished =
-      loadMaterialReference((kExamples / "materials" / "polished_gold.json").string(), textures);
+      loadMaterialReference((fs::path(FACET_EXAMPLES_DIR) / "materials" / "polished_gold.json").string(), textures);
   const materials::Material worn =
-      loadMaterialReference((kExamples / "materials" / "worn_gold.json").string(), textures);
+      loadMaterialReference((fs::path(FACET_EXAMPLES_DIR) / "materials" / "worn_gold.json").string(), textures);
   EXPECT_EQ(worn.f0, polished.f0);
   EXPECT_GT(worn.f0.r, 0.9);
   EXPECT_NEAR(polished.alpha, 0.2 * 0.2, 1e-12);
@@ -74,7 +73,7 @@ TEST_F(MaterialFiles, TheLibraryInTheExamplesLoadsAndWornGoldIsPolishedGoldRough
 }
 
 TEST_F(MaterialFiles, TheLibrarySceneNamesFilesFromItsMaterialsAndObjects) {
-  const Scene scene = loadScene(kExamples / "material_library.json");
+  const Scene scene = loadScene(fs::path(FACET_EXAMPLES_DIR) / "material_library.json");
   ASSERT_EQ(scene.objects.size(), 5u);
   EXPECT_NEAR(materialOf(scene, 0).alpha, 0.2 * 0.2, 1e-12);    // "gold": polished_gold.json
   EXPECT_NEAR(materialOf(scene, 1).alpha, 0.55 * 0.55, 1e-12);  // worn_gold.json, named by the object
@@ -187,7 +186,7 @@ TEST_F(MaterialFiles, AModelTakesRenderCameraAndEnvironmentOverridesOnly) {
   EXPECT_THAT([&] { loadScene(dir_ / "ball.obj", std::vector{parseJsonOverride("camera.fov=200")}); },
               ::testing::ThrowsMessage<InputError>(HasSubstr("--set: camera.fov: must be in [0.001, 179], is 200")));
   const Scene gltf =
-      loadScene(kExamples / "gold_cube.gltf", std::vector{parseJsonOverride("environment.color=[0.5, 0.5, 0.5]")});
+      loadScene(fs::path(FACET_EXAMPLES_DIR) / "gold_cube.gltf", std::vector{parseJsonOverride("environment.color=[0.5, 0.5, 0.5]")});
   ASSERT_TRUE(gltf.environment.has_value());  // a model with lights gains the environment it is given
 }
 

@@ -12,7 +12,7 @@ class Timestamps : public GpuTest {
   // GPU time of a busy-loop dispatch, and the host's wall time around it: the
   // fastest of three runs, since another process can only ever add time.
   std::pair<double, double> timeBusyLoop(int iterations) {
-    auto pipeline = derivedPipeline("busy", spirv::fma_chain, {{"kIterations", double(iterations)}});
+    auto pipeline = derivedPipeline("busy", facet::spirv::fma_chain, {{"kIterations", double(iterations)}});
     auto layout = pipeline.getBindGroupLayout(0);
     Buffer values = upload(std::vector<float>(4 * 4096, 0.5f));
     auto group = device_.createBindGroup({"busy", &layout, {{0, &values}}});

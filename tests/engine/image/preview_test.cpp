@@ -9,7 +9,7 @@
 namespace facet {
 namespace {
 
-constexpr int kWidth = 6, kHeight = 5;
+constexpr int kPictureWidth = 6, kPictureHeight = 5;
 
 int encoded(double linear) { return int(std::lround(linearToSrgb(std::clamp(linear, 0.0, 1.0)) * 255.0)); }
 
@@ -17,10 +17,10 @@ int encoded(double linear) { return int(std::lround(linearToSrgb(std::clamp(line
 // half covered, the rest missed, as both renderers store it: each pixel the
 // mean of its samples, a miss seeing `environment`.
 std::vector<glm::vec4> silhouette(glm::vec3 surface, glm::vec3 environment) {
-  std::vector<glm::vec4> beauty(kWidth * kHeight, glm::vec4(environment, 0.0f));
+  std::vector<glm::vec4> beauty(kPictureWidth * kPictureHeight, glm::vec4(environment, 0.0f));
   for (int y = 1; y < 4; ++y) {
-    beauty[std::size_t(y * kWidth + 2)] = glm::vec4(0.5f * surface + 0.5f * environment, 0.5f);
-    beauty[std::size_t(y * kWidth + 3)] = glm::vec4(surface, 1.0f);
+    beauty[std::size_t(y * kPictureWidth + 2)] = glm::vec4(0.5f * surface + 0.5f * environment, 0.5f);
+    beauty[std::size_t(y * kPictureWidth + 3)] = glm::vec4(surface, 1.0f);
   }
   return beauty;
 }
@@ -34,7 +34,7 @@ PreviewOptions clamped() {
 TEST(Preview, IsOpaqueAndShowsTheEnvironmentByDefault) {
   const glm::vec3 environment(0.2f, 0.3f, 0.4f);
   const std::vector<std::uint8_t> rgba =
-      previewPixels(silhouette({0.8f, 0.1f, 0.1f}, environment), kWidth, kHeight, clamped());
+      previewPixels(silhouette({0.8f, 0.1f, 0.1f}, environment), kPictureWidth, kPictureHeight, clamped());
   for (std::size_t i = 0; i < rgba.size() / 4; ++i) EXPECT_EQ(rgba[4 * i + 3], 255) << "pixel " << i;
   EXPECT_EQ(rgba[0], encoded(0.2));
   EXPECT_EQ(rgba[1], encoded(0.3));
@@ -46,9 +46,9 @@ TEST(Preview, StraightAlphaKeepsTheSurfaceColourAtItsEdges) {
   PreviewOptions options = clamped();
   options.straightAlpha = true;
   for (const glm::vec3 environment : {glm::vec3(0.0f), glm::vec3(0.6f, 0.5f, 0.9f)}) {
-    const std::vector<std::uint8_t> rgba = previewPixels(silhouette(surface, environment), kWidth, kHeight, options);
+    const std::vector<std::uint8_t> rgba = previewPixels(silhouette(surface, environment), kPictureWidth, kPictureHeight, options);
     for (int y = 1; y < 4; ++y) {
-      const std::size_t edge = 4 * std::size_t(y * kWidth + 2), inside = edge + 4;
+      const std::size_t edge = 4 * std::size_t(y * kPictureWidth + 2), inside = edge + 4;
       EXPECT_EQ(rgba[edge + 3], 128);
       EXPECT_EQ(rgba[inside + 3], 255);
       for (int c = 0; c < 3; ++c) {
@@ -65,8 +65,8 @@ TEST(Preview, ABackgroundReplacesTheEnvironmentBehindTheEdges) {
   PreviewOptions options = clamped();
   options.background = background;
   const std::vector<std::uint8_t> rgba =
-      previewPixels(silhouette(surface, {0.6f, 0.5f, 0.9f}), kWidth, kHeight, options);
-  const std::size_t edge = 4 * std::size_t(2 * kWidth + 2);
+      previewPixels(silhouette(surface, {0.6f, 0.5f, 0.9f}), kPictureWidth, kPictureHeight, options);
+  const std::size_t edge = 4 * std::size_t(2 * kPictureWidth + 2);
   for (int c = 0; c < 3; ++c) {
     EXPECT_EQ(rgba[c], encoded(background[c]));
     EXPECT_NEAR(rgba[edge + c], encoded(0.5 * surface[c] + 0.5 * background[c]), 1) << c;

@@ -5,13 +5,14 @@
 #include <gtest/gtest.h>
 
 #include "rules/rules.h"
+#include "tests/support/shading_frame.h"
 #include "tests/support/brdf_params.h"
 
 namespace facet::rules {
 namespace {
 
+using facet::testing::kN;
 namespace m = f64;
-const glm::dvec3 kN(0, 0, 1);
 
 m::BrdfParams base() { return facet::testing::schlickBase(0.3, glm::dvec3(0.04), {0.4, 0.5, 0.6}); }
 

@@ -10,20 +10,18 @@
 
 #include "materials/albedo.h"
 #include "rules/rules.h"
+#include "tests/support/shading_frame.h"
 #include "tests/support/quadrature.h"
 
 namespace facet::materials {
 namespace {
 
+using facet::testing::kPi;
+using facet::testing::direction;
 namespace m = rules::f64;
 using testing::integratePolar;
-constexpr double kPi = std::numbers::pi;
 // (alpha_t, alpha_b) pairs: strongly and mildly anisotropic, either way round.
-const glm::dvec2 kAlphas[] = {{0.5, 0.1}, {0.1, 0.5}, {1.0, 0.25}, {0.3, 0.2}};
-
-glm::dvec3 direction(double theta, double phi) {
-  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
-}
+const glm::dvec2 kAnisotropicAlphas[] = {{0.5, 0.1}, {0.1, 0.5}, {1.0, 0.25}, {0.3, 0.2}};
 
 // Integral over the hemisphere of m of integrand(m), polar panels sized for
 // the narrower alpha, 128 Gauss-Legendre nodes in azimuth.
@@ -41,7 +39,7 @@ double hemisphere(glm::dvec2 alpha, const Integrand& integrand) {
 TEST(Anisotropy, DistributionsAreNormalized) {
   // Tolerance 1e-6: the azimuthal rule resolves an elongation of 10 to ~1e-9.
   for (int d : {m::D_GGX, m::D_BECKMANN})
-    for (glm::dvec2 alpha : kAlphas) {
+    for (glm::dvec2 alpha : kAnisotropicAlphas) {
       double area = hemisphere(alpha, [&](glm::dvec3 w) { return m::microfacet_D_anisotropic(d, alpha, w) * w.z; });
       EXPECT_NEAR(area, 1.0, 1e-6) << "d " << d << " alpha " << alpha.x << "," << alpha.y;
     }
@@ -53,7 +51,7 @@ TEST(Anisotropy, SmithLambdaMakesTheVisibleProjectedAreaTheCosine) {
   // 5e-4 at grazing v, where the kink of max(0, v.m) cuts across the
   // azimuthal rule's nodes.
   for (int d : {m::D_GGX, m::D_BECKMANN})
-    for (glm::dvec2 alpha : kAlphas)
+    for (glm::dvec2 alpha : kAnisotropicAlphas)
       for (double theta_v : {0.0, 0.5, 1.0, 1.3, 1.5})
         for (double phi_v : {0.0, 0.7, 2.0}) {
           glm::dvec3 v = direction(theta_v, phi_v);

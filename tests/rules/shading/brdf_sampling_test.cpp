@@ -11,12 +11,13 @@
 #include "materials/albedo.h"
 #include "materials/models.h"
 #include "rules/rules.h"
+#include "tests/support/shading_frame.h"
 
 namespace facet::materials {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-const double kAlphas[] = {0.1, 0.5, 1.0};
+using facet::testing::kPi;
+const double kSampledAlphas[] = {0.1, 0.5, 1.0};
 const double kIncidenceDegrees[] = {15, 45, 80};
 
 // An anisotropic lobe's tangent: off the axes and off v's plane (xz), so that
@@ -80,9 +81,9 @@ struct Case {
 std::vector<Case> cases() {
   std::vector<Case> all;
   for (const ModelName& d : kDistributions)
-    for (double alpha : kAlphas)
+    for (double alpha : kSampledAlphas)
       for (double incidence : kIncidenceDegrees) all.push_back({rules::f64::SAMPLE_D, d.id, alpha, incidence});
-  for (double alpha : kAlphas)
+  for (double alpha : kSampledAlphas)
     for (double incidence : kIncidenceDegrees)
       all.push_back({rules::f64::SAMPLE_GGX_VISIBLE, rules::f64::D_GGX, alpha, incidence});
   // Anisotropic lobes (alpha_t = 0.541, alpha_b = 0.1; alpha_t = 1, alpha_b =

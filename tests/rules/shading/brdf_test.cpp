@@ -8,16 +8,15 @@
 
 #include "materials/models.h"
 #include "rules/rules.h"
+#include "tests/support/shading_frame.h"
 
 namespace facet::materials {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using facet::testing::direction;
+using facet::testing::kPi;
 
-glm::dvec3 direction(double theta_degrees, double phi_degrees) {
-  double t = theta_degrees * kPi / 180, p = phi_degrees * kPi / 180;
-  return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
-}
+glm::dvec3 directionInDegrees(double theta, double phi) { return direction(theta * kPi / 180, phi * kPi / 180); }
 
 rules::f64::BrdfParams params(int d, int g, int f, double alpha) {
   rules::f64::BrdfParams p{};
@@ -86,7 +85,7 @@ TEST(Brdf, SmithLambdaMatchesTextbookForms) {
 
 TEST(Brdf, AssemblesTheMicrofacetFormula) {
   // f = F G D / (4 (n.l)(n.v)) + c_diff / pi from independently built parts.
-  glm::dvec3 n(0, 0, 1), l = direction(40, 0), v = direction(25, 150);
+  glm::dvec3 n(0, 0, 1), l = directionInDegrees(40, 0), v = directionInDegrees(25, 150);
   rules::f64::BrdfParams p = params(rules::f64::D_GGX, rules::f64::G_SMITH_GGX_CORRELATED, rules::f64::F_SCHLICK, 0.3);
   glm::dvec3 h = glm::normalize(l + v);
   double theta_h = std::acos(h.z);
@@ -112,7 +111,7 @@ TEST(Brdf, ReciprocalForEveryCombination) {
       for (const ModelName& f : kFresnelTerms)
         for (double alpha : {0.0, 0.1, 0.5, 1.0})
           for (int trial = 0; trial < 20; ++trial) {
-            glm::dvec3 n(0, 0, 1), l = direction(theta(random), phi(random)), v = direction(theta(random), phi(random));
+            glm::dvec3 n(0, 0, 1), l = directionInDegrees(theta(random), phi(random)), v = directionInDegrees(theta(random), phi(random));
             rules::f64::BrdfParams p = params(d.id, g.id, f.id, alpha);
             glm::dvec3 forward = rules::f64::brdf_evaluate(p, n, l, v);
             glm::dvec3 backward = rules::f64::brdf_evaluate(p, n, v, l);
@@ -140,20 +139,20 @@ TEST(Brdf, ZeroUnderTheHorizon) {
   // Policy: n.l <= 1e-4 or n.v <= 1e-4 gives f = 0, D = G = F = 0.
   rules::f64::BrdfParams p = params(rules::f64::D_GGX, rules::f64::G_SMITH_GGX, rules::f64::F_SCHLICK, 0.5);
   glm::dvec3 n(0, 0, 1);
-  for (auto [l, v] : {std::pair{direction(100, 0), direction(30, 0)}, std::pair{direction(30, 0), direction(90, 180)},
-                      std::pair{direction(89.995, 0), direction(20, 0)}}) {
+  for (auto [l, v] : {std::pair{directionInDegrees(100, 0), directionInDegrees(30, 0)}, std::pair{directionInDegrees(30, 0), directionInDegrees(90, 180)},
+                      std::pair{directionInDegrees(89.995, 0), directionInDegrees(20, 0)}}) {
     rules::f64::BrdfTerms t = rules::f64::brdf_terms(p, n, l, v);
     EXPECT_EQ(t.value, glm::dvec3(0));
     EXPECT_EQ(t.D, 0.0);
     EXPECT_EQ(t.G, 0.0);
   }
-  EXPECT_GT(rules::f64::brdf_evaluate(p, n, direction(89.99, 0), direction(20, 0)).x, 0.0);
+  EXPECT_GT(rules::f64::brdf_evaluate(p, n, directionInDegrees(89.99, 0), directionInDegrees(20, 0)).x, 0.0);
 }
 
 TEST(Brdf, AlphaIsClampedToItsDocumentedRange) {
   // alpha below ALPHA_MIN evaluates as ALPHA_MIN, so alpha = 0 is a finite,
   // very sharp lobe rather than a delta.
-  glm::dvec3 n(0, 0, 1), l = direction(30, 0), v = direction(30, 180);
+  glm::dvec3 n(0, 0, 1), l = directionInDegrees(30, 0), v = directionInDegrees(30, 180);
   rules::f64::BrdfParams zero = params(rules::f64::D_GGX, rules::f64::G_SMITH_GGX, rules::f64::F_NONE, 0.0);
   rules::f64::BrdfParams minimum =
       params(rules::f64::D_GGX, rules::f64::G_SMITH_GGX, rules::f64::F_NONE, rules::f64::ALPHA_MIN);

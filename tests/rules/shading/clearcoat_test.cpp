@@ -10,20 +10,18 @@
 
 #include "materials/albedo.h"
 #include "rules/rules.h"
+#include "tests/support/shading_frame.h"
 #include "tests/support/brdf_params.h"
 #include "tests/support/quadrature.h"
 
 namespace facet::materials {
 namespace {
 
+using facet::testing::kPi;
+using facet::testing::kN;
+using facet::testing::direction;
 namespace m = rules::f64;
 using testing::integratePolar;
-constexpr double kPi = std::numbers::pi;
-const glm::dvec3 kN(0, 0, 1);
-
-glm::dvec3 direction(double theta, double phi) {
-  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
-}
 
 // A rough dielectric base with a diffuse lobe, under a coat.
 m::BrdfParams coatedBase(double clearcoat, double coat_alpha) {

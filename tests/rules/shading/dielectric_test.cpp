@@ -11,13 +11,14 @@
 #include <vector>
 
 #include "rules/rules.h"
+#include "tests/support/shading_frame.h"
 
 namespace facet {
 namespace {
 
+using facet::testing::kN;
 namespace m = rules::f64;
 
-const glm::dvec3 kN(0.0, 0.0, 1.0);
 
 glm::dvec3 viewAt(double cosTheta) { return {std::sqrt(std::max(0.0, 1 - cosTheta * cosTheta)), 0.0, cosTheta}; }
 

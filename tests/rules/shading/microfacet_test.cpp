@@ -7,13 +7,14 @@
 
 #include "materials/models.h"
 #include "rules/rules.h"
+#include "tests/support/shading_frame.h"
 #include "tests/support/quadrature.h"
 
 namespace facet::materials {
 namespace {
 
+using facet::testing::kPi;
 using testing::integratePolar;
-constexpr double kPi = std::numbers::pi;
 const double kAlphas[] = {0.05, 0.1, 0.25, 0.5, 1.0};
 
 // Integral of D(m)(n.m) over the hemisphere; D depends on theta only.

@@ -7,12 +7,13 @@
 #include <cstdint>
 
 #include "rules/rules.h"
+#include "tests/support/shading_frame.h"
 
 namespace facet::rules {
 namespace {
 
+using facet::testing::kN;
 namespace m = f64;
-const glm::dvec3 kN(0, 0, 1);
 constexpr double kOffset = 1e-3;
 const glm::ivec3 kNoLimits(-1);
 

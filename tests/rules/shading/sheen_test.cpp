@@ -12,17 +12,15 @@
 #include "materials/albedo.h"
 #include "materials/material.h"
 #include "rules/rules.h"
+#include "tests/support/shading_frame.h"
 
 namespace facet::materials {
 namespace {
 
+using facet::testing::kPi;
+using facet::testing::kN;
+using facet::testing::direction;
 namespace m = rules::f64;
-constexpr double kPi = std::numbers::pi;
-const glm::dvec3 kN(0, 0, 1);
-
-glm::dvec3 direction(double theta, double phi) {
-  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
-}
 
 // A Beckmann dielectric base of diffuse `diffuse` under a sheen of `color`
 // and `roughness`, its knots as materials give them.

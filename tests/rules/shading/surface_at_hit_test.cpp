@@ -9,13 +9,14 @@
 #include <numbers>
 
 #include "rules/rules.h"
+#include "tests/support/shading_frame.h"
 #include "tests/support/brdf_params.h"
 
 namespace facet::rules {
 namespace {
 
+using facet::testing::kN;
 namespace m = f64;
-const glm::dvec3 kN(0, 0, 1);
 
 m::BrdfParams plastic() {
   m::BrdfParams p = facet::testing::schlickBase(0.2, glm::dvec3(0.04), {0.5, 0.3, 0.2});
