@@ -226,6 +226,16 @@ double alphaOf(const MaterialSpec& spec, const Fail& fail) {
   return *spec.roughness * *spec.roughness;
 }
 
+// An index of refraction or extinction coefficient, each component in
+// (0, kMaxOpticalConstant], or [0, ...] where zero is physical (extinction).
+template <class Fail>
+void checkOpticalConstant(std::string_view field, const glm::dvec3& value, bool zeroAllowed, const Fail& fail) {
+  for (int i = 0; i < 3; ++i)
+    if (!((zeroAllowed ? value[i] >= 0.0 : value[i] > 0.0) && value[i] <= kMaxOpticalConstant))  // also NaN
+      fail(field, std::string("every component must be in ") + (zeroAllowed ? "[0, " : "(0, ") +
+                      formatNumber(kMaxOpticalConstant) + "], got " + formatVector(value));
+}
+
 // The parameters m's Fresnel term reads, from `spec` and `f0` (given or the
 // preset's); a parameter the term does not read may not be given.
 template <class Fail>
@@ -255,6 +265,10 @@ void resolveFresnel(const MaterialSpec& spec, const std::optional<glm::dvec3>& f
         for (int i = 0; i < 3; ++i)
           if (!((*f0)[i] < 1.0)) fail("f0", "must be < 1 to derive an index of refraction");
         m.eta = {iorFromF0(f0->x), iorFromF0(f0->y), iorFromF0(f0->z)};
+        for (int i = 0; i < 3; ++i)
+          if (!(m.eta[i] <= kMaxOpticalConstant))
+            fail("f0", "gives an index of refraction of " + formatNumber(m.eta[i]) + ", above the largest, " +
+                           formatNumber(kMaxOpticalConstant) + ": got " + formatVector(*f0));
       } else {
         fail("ior", "required by fresnel 'dielectric' (or give f0 or a preset)");
       }
@@ -291,14 +305,6 @@ Material buildMaterial(const MaterialSpec& given,
                        const std::function<std::string(std::string_view field)>& describeField) {
   auto fail = [&](std::string_view field, const std::string& rule) { throwFieldError(describeField(field), rule); };
   const MaterialSpec spec = withMetallicRoughness(given, fail);
-  auto checkVector = [&](std::string_view field, glm::dvec3 v, double lo, bool loOpen) {
-    for (int i = 0; i < 3; ++i) {
-      bool ok = std::isfinite(v[i]) && (loOpen ? v[i] > lo : v[i] >= lo);
-      if (!ok)
-        fail(field, std::string("every component must be finite and ") + (loOpen ? "> " : ">= ") + formatNumber(lo) +
-                        ", got " + formatVector(v));
-    }
-  };
   auto checkReflectance = [&](std::string_view field, glm::dvec3 v) {
     for (int i = 0; i < 3; ++i)
       if (!(v[i] >= 0.0 && v[i] <= 1.0)) fail(field, "every component must be in [0, 1], got " + formatVector(v));
@@ -335,9 +341,9 @@ Material buildMaterial(const MaterialSpec& given,
   std::optional<glm::dvec3> f0 = spec.f0;
   if (!f0 && preset) f0 = preset->f0_linear;
   if (spec.f0) checkReflectance("f0", *spec.f0);
-  if (spec.ior) checkVector("ior", *spec.ior, 0.0, true);
-  if (spec.eta) checkVector("eta", *spec.eta, 0.0, true);
-  if (spec.k) checkVector("k", *spec.k, 0.0, false);
+  if (spec.ior) checkOpticalConstant("ior", *spec.ior, false, fail);
+  if (spec.eta) checkOpticalConstant("eta", *spec.eta, false, fail);
+  if (spec.k) checkOpticalConstant("k", *spec.k, true, fail);
 
   resolveFresnel(spec, f0, m, fail);
 

@@ -98,6 +98,12 @@ struct Material {
   double sheenRoughness = 0.0;
 };
 
+// The largest index of refraction (ior, eta) or extinction coefficient (k)
+// a material may have. The Fresnel terms raise them to the fourth power in
+// float on the GPU, which stays finite up to here; materials in visible
+// light stay below 10 (docs/reliability.md, "Limits").
+inline constexpr double kMaxOpticalConstant = 1000.0;
+
 // Whether a material transmits any light.
 inline bool isTransmissive(const Material& material) { return material.transmission > 0.0; }
 

@@ -2,6 +2,7 @@
 // scenes/gltf_*.cpp include this file.
 #pragma once
 
+#include <nlohmann/json_fwd.hpp>
 #include <tiny_gltf.h>
 
 #include <glm/mat4x4.hpp>
@@ -151,6 +152,10 @@ void applyTransmission(const tinygltf::Material& gltf, const std::string& materi
 // joined and the rest form seams.
 ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& primitives, const glm::dmat4& world,
                    const GltfReader& reader, const std::string& where);
+
+// gltf_schema.cpp: the JSON type of every core property, as written; throws
+// InputError naming the property.
+void checkPropertyTypes(const nlohmann::json& gltf, const std::string& source);
 
 // gltf_extensions.cpp: refuses a file whose extensionsRequired names an
 // extension facet does not implement (glTF 2.0, 3.12), and warns of each

@@ -123,7 +123,8 @@ void checkTextureInfos(const nlohmann::json& value, const std::string& where, co
     if (key == "KHR_texture_transform" && member.contains("scale") && member["scale"].is_array())
       for (std::size_t i = 0; i < member["scale"].size(); ++i)
         checkTextureScale(member["scale"][i], at + ".scale[" + std::to_string(i) + "]", source);
-    if (key == "normalTexture" && member.contains("scale")) checkTextureScale(member["scale"], at + ".scale", source);
+    if ((key == "normalTexture" || key == "clearcoatNormalTexture") && member.contains("scale"))
+      checkTextureScale(member["scale"], at + ".scale", source);
     if (key != "extras") checkTextureInfos(member, at, source);
   }
 }
@@ -131,20 +132,11 @@ void checkTextureInfos(const nlohmann::json& value, const std::string& where, co
 // The parts of the file that tinygltf would read unsafely or misread, checked
 // on the JSON as written. Malformed JSON is left to tinygltf.
 void checkBeforeParsing(std::string_view json, const std::string& source) {
-  if (json.find("\"images\"") == std::string_view::npos && json.find("\"materials\"") == std::string_view::npos)
-    return;  // no second parse for files without either
   const nlohmann::json gltf = nlohmann::json::parse(json, nullptr, false);
   if (!gltf.is_object()) return;
   checkImageViews(gltf, source);
-  if (!gltf.contains("materials")) return;
-  checkTextureInfos(gltf["materials"], "materials", source);
-  // tinygltf reads an alphaCutoff that is not a number as if it were absent.
-  for (std::size_t i = 0; gltf["materials"].is_array() && i < gltf["materials"].size(); ++i) {
-    const nlohmann::json& m = gltf["materials"][i];
-    if (m.is_object() && m.contains("alphaCutoff") && !m["alphaCutoff"].is_number())
-      throw InputError(source, 0, "materials[" + std::to_string(i) + "].alphaCutoff",
-                       "must be a number of at least 0, is " + m["alphaCutoff"].dump());
-  }
+  if (gltf.contains("materials")) checkTextureInfos(gltf["materials"], "materials", source);
+  detail::checkPropertyTypes(gltf, source);
 }
 
 // What tinygltf reads besides the file itself goes through facet's own checks:

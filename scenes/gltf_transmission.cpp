@@ -65,7 +65,9 @@ void applyTransmission(const tinygltf::Material& gltf, const std::string& materi
   const tinygltf::Value* iorExtension = extension(gltf, "KHR_materials_ior");
   if (iorExtension) {
     ior = member(*iorExtension, "ior", 1.5, at + "KHR_materials_ior", reader);
-    if (!(ior >= 1.0)) reader.fail(at + "KHR_materials_ior.ior", "must be >= 1, is " + formatNumber(ior));
+    if (!(ior >= 1.0 && ior <= materials::kMaxOpticalConstant))
+      reader.fail(at + "KHR_materials_ior.ior",
+                  "must be in [1, " + formatNumber(materials::kMaxOpticalConstant) + "], is " + formatNumber(ior));
   }
   // The dielectric's F(0) from its index, in place of 0.04 (= index 1.5).
   glm::dvec3 dielectricF0(std::pow((ior - 1) / (ior + 1), 2.0));

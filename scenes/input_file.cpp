@@ -22,19 +22,24 @@ void noteInputFile(const fs::path& path) {
     if (std::find(log->files_.begin(), log->files_.end(), path) == log->files_.end()) log->files_.push_back(path);
 }
 
-void checkInputFile(const fs::path& path, const std::string& what) {
-  noteInputFile(path);
-  const auto refuse = [&](const std::string& rule) { throw InputError(path.string(), 0, "cannot open " + what, rule); };
+std::optional<std::string> inputFileProblem(const fs::path& path) {
   std::error_code error;
   const fs::file_status status = fs::status(path, error);
-  if (!fs::exists(status)) refuse("no such file");
-  if (fs::is_directory(status)) refuse("it is a folder, not a file");
-  if (!fs::is_regular_file(status)) refuse("it is a FIFO, socket or device, not a regular file");
+  if (!fs::exists(status)) return "no such file";
+  if (fs::is_directory(status)) return "it is a folder, not a file";
+  if (!fs::is_regular_file(status)) return "it is a FIFO, socket or device, not a regular file";
   const std::uintmax_t size = fs::file_size(path, error);
-  if (error) refuse(error.message());
+  if (error) return error.message();
   if (size > kLargestInputFile)
-    refuse("it is " + std::to_string(size) + " bytes, more than the " + std::to_string(kLargestInputFile) +
-           " facet reads");
+    return "it is " + std::to_string(size) + " bytes, more than the " + std::to_string(kLargestInputFile) +
+           " facet reads";
+  return std::nullopt;
+}
+
+void checkInputFile(const fs::path& path, const std::string& what) {
+  noteInputFile(path);
+  if (const std::optional<std::string> problem = inputFileProblem(path))
+    throw InputError(path.string(), 0, "cannot open " + what, *problem);
 }
 
 }  // namespace facet::scene

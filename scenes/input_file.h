@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,11 @@ namespace facet::scene {
 
 // No input facet reads comes near this; a larger file is refused before it is read.
 constexpr std::uintmax_t kLargestInputFile = std::uintmax_t(8) << 30;
+
+// Why `path` cannot be read as input: "no such file", "it is a folder, not a
+// file", ...; nothing when it is an existing regular file (links followed)
+// of at most kLargestInputFile bytes.
+std::optional<std::string> inputFileProblem(const std::filesystem::path& path);
 
 // Throws InputError "<path>: cannot open <what>: <rule>" unless `path` is an
 // existing regular file (links followed) of at most kLargestInputFile bytes.

@@ -7,12 +7,14 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 
 #include "scenes/camera_keys.h"
 #include "scenes/camera_rules.h"
 #include "scenes/environment_map.h"
 #include "scenes/input_error.h"
+#include "scenes/input_file.h"
 #include "scenes/json_field.h"
 #include "scenes/json_overrides.h"
 #include "scenes/obj_cage.h"
@@ -182,7 +184,8 @@ Scene sceneFromDocument(const json& document, const std::filesystem::path& path)
     if (!o.has("mesh")) o.fail("an object needs a mesh (an .obj control cage, relative to the scene file)");
     const std::filesystem::path mesh = path.parent_path() / o["mesh"].string();
     if (mesh.extension() != ".obj") o["mesh"].fail("meshes are OpenSubdiv-style .obj cages");
-    if (!std::filesystem::is_regular_file(mesh)) o["mesh"].fail("no such file: " + mesh.string());
+    if (const std::optional<std::string> problem = inputFileProblem(mesh))
+      o["mesh"].fail(*problem + ": " + mesh.string());
     object.cage = loadObjCage(mesh);
     if (o.has("transform")) transformCage(object.cage, readTransform(o["transform"]));
 

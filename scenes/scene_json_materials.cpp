@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <span>
 #include <string>
 #include <system_error>
@@ -49,7 +50,7 @@ Texture readTexture(const Field& f, const std::filesystem::path& sceneFile, bool
     sampler.mipMode = rules::f64::FACET_MIP_NEAREST;
   }
   const std::filesystem::path file = sceneFile.parent_path() / image.string();
-  if (!std::filesystem::is_regular_file(file)) image.fail("no such file: " + file.string());
+  if (const std::optional<std::string> problem = inputFileProblem(file)) image.fail(*problem + ": " + file.string());
   try {
     return roughness ? loadRoughnessTexture(file, sampler) : loadColorTexture(file, sampler);
   } catch (const InputError& e) {
@@ -142,8 +143,9 @@ json materialFile(const Field& reference, const std::filesystem::path& relativeT
   if (!namesMaterialFile(name)) reference.fail("a material file's name ends in .json");
   const std::filesystem::path file = relativeTo.parent_path() / name;
   noteInputFile(file);
-  std::error_code error;  // a name the system refuses (too long, say) is a missing file too
-  if (!std::filesystem::is_regular_file(file, error)) reference.fail("no such file: " + file.string());
+  if (const std::optional<std::string> problem = inputFileProblem(file))
+    reference.fail(*problem + ": " + file.string());
+  std::error_code error;
   std::filesystem::path key = std::filesystem::weakly_canonical(file, error);
   if (error) key = file;
   if (find(chain, key) != chain.end()) {

@@ -95,8 +95,29 @@ TEST(MaterialFile, ErrorsNameTheFileTheFieldAndTheRule) {
       errorOf(R"({"alpha": 0.1, "preset": "mithril"})").rfind("test.json: field 'preset': unknown preset 'mithril'", 0),
       0u);
   EXPECT_EQ(errorOf(R"({"alpha": 0.1, "fresnel": "dielectric", "ior": [1.5, 0, 1.5]})")
-                .rfind("test.json: field 'ior': every component must be finite and > 0, got 1.5,0,1.5", 0),
+                .rfind("test.json: field 'ior': every component must be in (0, 1000], got 1.5,0,1.5", 0),
             0u);
+}
+
+// The Fresnel terms raise an index to the fourth power in float: past
+// kMaxOpticalConstant that overflows, so no material may hold a larger one,
+// however it is given.
+TEST(MaterialFile, IndicesOfRefractionAreBoundedWhereverTheyComeFrom) {
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "fresnel": "dielectric", "ior": 2e19})"),
+            "test.json: field 'ior': every component must be in (0, 1000], got 2e+19,2e+19,2e+19");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "fresnel": "conductor", "eta": [0.2, 1e10, 0.2], "k": 3})"),
+            "test.json: field 'eta': every component must be in (0, 1000], got 0.2,1e+10,0.2");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "fresnel": "conductor", "eta": 0.2, "k": [3, 3, 1e308]})"),
+            "test.json: field 'k': every component must be in [0, 1000], got 3,3,1e+308");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "fresnel": "dielectric", "f0": 0.999})")
+                .rfind("test.json: field 'f0': gives an index of refraction of 3998, above the largest, 1000", 0),
+            0u);
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "transmission": 1, "ior": 1001})"),
+            "test.json: field 'ior': every component must be in (0, 1000], got 1001,1001,1001");
+  const Material glass = build(R"({"alpha": 0.1, "transmission": 1, "ior": 1000})");
+  EXPECT_EQ(glass.eta, glm::dvec3(kMaxOpticalConstant));
+  const Material metal = build(R"({"alpha": 0.1, "fresnel": "conductor", "eta": 1000, "k": [0, 1000, 1]})");
+  EXPECT_EQ(metal.k, glm::dvec3(0, kMaxOpticalConstant, 1));
 }
 
 TEST(MaterialFile, LoadNamesTheFileOnSyntaxErrors) {

@@ -112,7 +112,7 @@ TEST_F(GltfCoverage, AlphaCutoffAndModeAreChecked) {
         load("word", {{"alphaMode", "MASK"}, {"alphaCutoff", "half"}});
       },
       ThrowsMessage<InputError>(
-          HasSubstr("word.gltf: materials[0].alphaCutoff: must be a number of at least 0, is \"half\"")));
+          HasSubstr("word.gltf: materials[0].alphaCutoff: must be a number (glTF 2.0), is \"half\"")));
   EXPECT_THAT(
       [&] {
         load("negative", {{"alphaMode", "MASK"}, {"alphaCutoff", -0.5}});

@@ -375,6 +375,13 @@ TEST_F(GltfTextures, ATextureScaleBeyondAMillionIsRefused) {
         facet::testing::writeTexturedQuad(dir_, "normal", parts({{"normalTexture", {{"index", 1}, {"scale", scale}}}}));
     EXPECT_THAT([&] { loadScene(normal); },
                 ThrowsMessage<InputError>(HasSubstr("normal.gltf: materials[0].normalTexture.scale: must be within")));
+    const nlohmann::json coat = {{"clearcoatFactor", 1.0}, {"clearcoatNormalTexture", {{"index", 1}, {"scale", scale}}}};
+    const auto coated = facet::testing::writeTexturedQuad(
+        dir_, "coat", parts({{"extensions", {{"KHR_materials_clearcoat", coat}}}}));
+    EXPECT_THAT([&] { loadScene(coated); },
+                ThrowsMessage<InputError>(HasSubstr(
+                    "coat.gltf: materials[0].extensions.KHR_materials_clearcoat.clearcoatNormalTexture.scale: must be "
+                    "within")));
   }
   const Scene bound = loadScene(facet::testing::writeTexturedQuad(
       dir_, "bound",

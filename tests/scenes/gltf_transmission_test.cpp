@@ -74,7 +74,9 @@ TEST_F(GltfTransmission, WhatCannotBeRenderedIsNamed) {
           "materials[0].pbrMetallicRoughness.metallicFactor", "must be a dielectric here", 1.0);
   refused("factor", {{"KHR_materials_transmission", {{"transmissionFactor", 2}}}},
           "KHR_materials_transmission.transmissionFactor", "must be in [0, 1]");
-  refused("index", {{"KHR_materials_ior", {{"ior", 0.5}}}}, "KHR_materials_ior.ior", "must be >= 1");
+  refused("index", {{"KHR_materials_ior", {{"ior", 0.5}}}}, "KHR_materials_ior.ior", "must be in [1, 1000], is 0.5");
+  refused("huge_index", {{"KHR_materials_ior", {{"ior", 2e19}}}}, "KHR_materials_ior.ior",
+          "must be in [1, 1000], is 2e+19");
   refused("distance",
           {{"KHR_materials_transmission", {{"transmissionFactor", 1}}},
            {"KHR_materials_volume", {{"thicknessFactor", 1}, {"attenuationDistance", 0}}}},

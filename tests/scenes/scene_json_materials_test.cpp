@@ -105,6 +105,10 @@ TEST_F(MaterialFiles, TexturesInAFileAreRelativeToTheFile) {
 
 TEST_F(MaterialFiles, ErrorsNameTheFileThatBreaksTheRule) {
   EXPECT_THAT(errorOf(R"("lib/none.json")"), HasSubstr("objects[0].material: no such file:"));
+  fs::create_directories(dir_ / "lib" / "folder.json");
+  EXPECT_THAT(errorOf(R"("lib/folder.json")"), HasSubstr("objects[0].material: it is a folder, not a file:"));
+  EXPECT_THAT(errorOf(R"({"extends": "lib/folder.json"})"),
+              HasSubstr("objects[0].material.extends: it is a folder, not a file:"));
   write("lib/bad.json", R"({"preset": "gold", "roughness": 3})");
   EXPECT_THAT(errorOf(R"({"extends": "lib/bad.json"})"), HasSubstr("bad.json: roughness: must be in [0, 1], got 3"));
   write("lib/broken.json", R"({"preset": )");

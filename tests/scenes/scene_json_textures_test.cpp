@@ -3,6 +3,7 @@
 // and the errors for bad texture fields.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <stb_image_write.h>
 
 #include <cstdint>
@@ -96,6 +97,13 @@ TEST_F(JsonTextures, ErrorsNameTheFileTheFieldAndTheRule) {
   EXPECT_THAT(errorOf(R"({"roughness": 0.5, "diffuse_texture": "maps/missing.png"})"),
               AllOf(HasSubstr("scene.json"), HasSubstr("objects[0].material.diffuse_texture"),
                     HasSubstr("no such file"), HasSubstr("missing.png")));
+  ASSERT_EQ(mkfifo((dir_ / "maps" / "pipe.png").c_str(), 0600), 0);
+  EXPECT_THAT(errorOf(R"({"roughness": 0.5, "diffuse_texture": "maps/pipe.png"})"),
+              AllOf(HasSubstr("objects[0].material.diffuse_texture"),
+                    HasSubstr("it is a FIFO, socket or device, not a regular file"), HasSubstr("pipe.png")));
+  fs::create_directories(dir_ / "maps" / "folder.png");
+  EXPECT_THAT(errorOf(R"({"roughness": 0.5, "diffuse_texture": "maps/folder.png"})"),
+              AllOf(HasSubstr("objects[0].material.diffuse_texture"), HasSubstr("it is a folder, not a file")));
   EXPECT_THAT(errorOf(R"({"roughness": 0.5, "diffuse_texture": {"image": "maps/broken.png"}})"),
               AllOf(HasSubstr("objects[0].material.diffuse_texture.image"), HasSubstr("cannot decode the image")));
   EXPECT_THAT(

@@ -17,7 +17,9 @@
 #include "engine/cpu/reference_renderer.h"
 #include "engine/gpu_backend/gpu_renderer.h"
 #include "analysis/parity.h"
+#include "tests/support/glass_scenes.h"
 #include "tests/support/gpu_device.h"
+#include "tests/support/path_parity.h"
 #include "scenes/environment_map.h"
 #include "scenes/scene_file.h"
 #include "scenes/input_error.h"
@@ -216,6 +218,37 @@ TEST_F(FloatRange, TheGpuRefusesAnEnvironmentBeyondFloatsReach) {
     EXPECT_THAT(e.what(), ::testing::HasSubstr("the GPU sums the environment in float: its radiance must be at most "
                                                "1e30: its largest texel times the intensity is 1e+32"));
   }
+}
+
+// The Fresnel terms raise an index to the fourth power in float: at the
+// largest index and extinction a material may hold, glass and a conductor
+// in a white furnace keep every pixel finite on both backends, lit by the
+// prefiltered environment or by samples of it, with and without paths.
+TEST_F(FloatRange, AtTheLargestOpticalConstantsEveryPixelIsFinite) {
+  materials::MaterialSpec conductor;
+  conductor.name = "conductor";
+  conductor.roughness = 0.3;
+  conductor.fresnel = "conductor";
+  conductor.eta = conductor.k = glm::dvec3(materials::kMaxOpticalConstant);
+  struct Lighting {
+    scene::IblMethod method;
+    int bounces;
+  };
+  for (const materials::MaterialSpec& spec : {testing::glassSpec(materials::kMaxOpticalConstant), conductor})
+    for (const Lighting lighting : {Lighting{scene::IblMethod::Prefiltered, 0}, Lighting{scene::IblMethod::Sampled, 0},
+                                    Lighting{scene::IblMethod::Sampled, 4}}) {
+      SCOPED_TRACE(spec.name + ", bounces " + std::to_string(lighting.bounces));
+      scene::Scene scene =
+          testing::underWhite(testing::buildTestMaterial(spec), testing::uvSphereCage(8, 16), lighting.bounces, 12, 35);
+      scene.environment->method = lighting.method;
+      scene.render.samplesPerPixel = 1;
+      const testing::PathRenders r = testing::renderBoth(device_, scene);
+      for (const Image* image : {&r.reference, &r.gpu.image}) {
+        const auto finite = [](const glm::vec4& p) { return std::isfinite(p.r + p.g + p.b + p.a); };
+        EXPECT_TRUE(std::all_of(image->beauty.begin(), image->beauty.end(), finite))
+            << (image == &r.reference ? "CPU" : "GPU");
+      }
+    }
 }
 
 // The texcoord AOV on the checker cube (seams, creases, corners-only rule),
