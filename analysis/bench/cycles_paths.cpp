@@ -25,7 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Sizes {
+struct PathSizes {
   int width;                       // the teacup's square; the glass scene is twice as wide
   std::vector<int> cyclesSamples;  // timed, for the teacup's time to error
   int cyclesTarget;                // the sample count whose error facet is asked to reach
@@ -35,7 +35,7 @@ struct Sizes {
   std::vector<int> facetSamples;   // camera samples of the timed renders
 };
 
-Sizes sizesFor(bool quick) {
+PathSizes pathSizesFor(bool quick) {
   if (quick) return {24, {4}, 4, 16, 16, 1, {1, 4}};
   return {96, {4, 16, 64, 256}, 64, 2048, 1024, 1, {1, 4, 16, 64, 256}};
 }
@@ -106,7 +106,7 @@ Image average(const Image& a, const Image& b) {
 
 // facet's converged image as two independent halves, each the mean of
 // `renders` GPU renders under seeds of its own.
-std::pair<Image, Image> facetHalves(Renderer& renderer, const scene::Scene& scene, const Sizes& sizes) {
+std::pair<Image, Image> facetHalves(Renderer& renderer, const scene::Scene& scene, const PathSizes& sizes) {
   std::vector<Image> halves;
   std::uint32_t seed = 1;
   for (int half = 0; half < 2; ++half) {
@@ -158,7 +158,7 @@ std::string percent(double value) { return formatted("%+.2f%%", 100 * value); }
 
 // facet's timed curves, exact and tessellated, each point the median of
 // `repeats` renders after an untimed one, its error against `converged`.
-std::vector<std::vector<Point>> timedCurves(Renderer& renderer, scene::Scene scene, const Sizes& sizes, int repeats,
+std::vector<std::vector<Point>> timedCurves(Renderer& renderer, scene::Scene scene, const PathSizes& sizes, int repeats,
                                             const Image& converged) {
   std::vector<std::vector<Point>> curves;
   for (const scene::IntersectionMethod method :
@@ -180,7 +180,7 @@ void runCyclesPaths(Renderer& renderer, const BenchOptions& options, Report& rep
   report.heading("Cycles: scenes that bounce");
   const std::optional<peers::CyclesPeer> peer = findCyclesPeer(options.root, "bounces", report);
   if (!peer) return;
-  const Sizes sizes = sizesFor(options.quick);
+  const PathSizes sizes = pathSizesFor(options.quick);
   struct Case {
     std::string name;
     scene::Scene scene;
