@@ -10,6 +10,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "engine/image/image_io.h"
+
 extern char** environ;
 
 namespace facet::analysis {
@@ -50,6 +52,7 @@ void runGnuplot(std::string script, const std::string& data, const fs::path& out
     terminal = "pngcairo" + size;
   else
     throw std::invalid_argument("--out: must end in .svg or .png, got '" + out.string() + "'");
+  checkOutputPath("--out", out);
 
   fs::path work = fs::temp_directory_path() / ("facet-plot-" + std::to_string(getpid()));
   fs::create_directories(work);

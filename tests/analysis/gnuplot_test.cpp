@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "engine/image/image_io.h"
 #include "tests/support/temp_dir.h"
 
 namespace facet::analysis {
@@ -53,6 +54,16 @@ TEST_F(Gnuplot, AnImageGnuplotDoesNotFinishIsAnErrorAndNoFile) {
   EXPECT_THROW(runGnuplot("set output OUTPUT\nexit\n", kData, out, 200, 120), std::runtime_error);
   EXPECT_FALSE(fs::exists(out));
   EXPECT_FALSE(fs::exists(dir_ / "unfinished.png.partial"));
+}
+
+// Where gnuplot's finished chart cannot be renamed to (a folder), the
+// output is refused as any command's is, before gnuplot runs.
+TEST_F(Gnuplot, AFolderAsTheOutputIsRefusedBeforeGnuplotRuns) {
+  const fs::path out = dir_ / "chart.png";
+  fs::create_directories(out);
+  EXPECT_THROW(runGnuplot("set output OUTPUT\n" + kLine, kData, out, 200, 120), OutputError);
+  EXPECT_TRUE(fs::is_directory(out));
+  EXPECT_FALSE(fs::exists(dir_ / "chart.png.partial"));
 }
 
 }  // namespace
