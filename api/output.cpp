@@ -11,6 +11,7 @@
 #include "engine/image/image_io.h"
 #include "engine/render_record.h"
 #include "scenes/light_transport.h"
+#include "scenes/sampling_choice.h"
 #include "scenes/scene_geometry.h"
 
 namespace facet::v0 {
@@ -25,10 +26,11 @@ void writeExr(const std::string& path, const RenderResult& result, const Scene& 
     // The file records what the render chose, as `facet render` records it:
     // the choice follows from the scene and the settings alone, and changes
     // the record only where the render's bounces differ or its paths sample
-    // an unsaid environment.
+    // an unsaid environment; the sampling follows from the light transport.
     if (result.bounces != rendered.render.bounces ||
         (result.bounces > 0 && scene::leavesLightTransportUnsaid(rendered)))
       rendered = scene::withLightTransport(rendered, scene::chooseLightTransport(rendered, scene::buildGeometry(rendered)));
+    scene::chooseSampling(rendered);
     if (image.width != rendered.render.width || image.height != rendered.render.height)
       throw Error(ErrorKind::BadInput, "image: " + std::to_string(image.width) + " x " + std::to_string(image.height) +
                                            " is not the " + std::to_string(rendered.render.width) + " x " +

@@ -8,6 +8,7 @@
 #include "api/image_planes.h"
 #include "api/render_settings.h"
 #include "api/scene_data.h"
+#include "engine/adaptive_render.h"
 #include "engine/image_memory.h"
 #include "engine/renderer.h"
 #include "facet/version.h"
@@ -37,8 +38,8 @@ RenderResult Renderer::render(const Scene& input, const RenderSettings& settings
     const std::scoped_lock oneAtATime(state_->rendering);
     const scene::Scene s = withSettings(input, settings);
     checkImagesFitInMemory(s, 1, "render settings: width x height");
-    const RenderReport report =
-        state_->engine.render(s, settings.backend == Backend::Cpu ? facet::Backend::Cpu : facet::Backend::Gpu);
+    const facet::Backend backend = settings.backend == Backend::Cpu ? facet::Backend::Cpu : facet::Backend::Gpu;
+    const RenderReport report = renderPicture(state_->engine, s, backend);
     RenderResult result{
         publicImage(report.image), report.device, report.totalMilliseconds(), report.lightTransport.bounces,
         report.lightTransport.note, {}};
@@ -52,7 +53,7 @@ ParityReport Renderer::parity(const Scene& input, const RenderSettings& settings
   return api::translateErrors([&] {
     const std::scoped_lock oneAtATime(state_->rendering);
     scene::Scene s = withSettings(input, settings);
-    scene::stateLightTransport(s);
+    scene::leaveNothingToChoose(s);
     checkImagesFitInMemory(s, 2, "render settings: width x height");
     // The GPU first: it refuses what it cannot render (a scene beyond float's range) before the CPU spends a
     // render on it.

@@ -28,7 +28,10 @@ scene::Scene withSettings(const Scene& input, const RenderSettings& s) {
             "must be in [0, " + std::to_string(scene::kMaxBounces) + "]");
   out.render.width = s.width.value_or(out.render.width);
   out.render.height = s.height.value_or(out.render.height);
-  out.render.samplesPerPixel = s.samplesPerPixel.value_or(out.render.samplesPerPixel);
+  if (s.samplesPerPixel) {
+    out.render.samplesPerPixel = *s.samplesPerPixel;
+    out.render.sampling = scene::Sampling::OnePass;
+  }
   if (s.method)
     out.render.method =
         *s.method == Method::Exact ? scene::IntersectionMethod::Exact : scene::IntersectionMethod::Tessellated;

@@ -68,7 +68,8 @@ scene::ControlCage engineCage(const Cage& cage, const std::string& where) {
 scene::Scene engineScene(const SceneDescription& d) {
   scene::Scene s;
   s.source = kSource;
-  s.render.bouncesStated = false;  // RenderSettings::bounces states them
+  s.render.bouncesStated = false;  // RenderSettings::bounces and samplesPerPixel state them
+  s.render.sampling = scene::Sampling::Chosen;
   for (std::size_t i = 0; i < d.materials.size(); ++i)
     s.materials.push_back(api::toEngineMaterial(d.materials[i], "materials[" + std::to_string(i) + "]"));
   if (s.materials.empty()) s.materials.push_back(scene::defaultMaterial());

@@ -11,6 +11,7 @@
 
 #include "engine/image/catcher_composite.h"
 #include "scenes/light_transport.h"
+#include "scenes/sampling_choice.h"
 #include "scenes/scene_geometry.h"
 
 namespace facet {
@@ -21,33 +22,64 @@ using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 void checkSettings(const AdaptiveSettings& s) {
-  if (!validNoiseThreshold(s.noiseThreshold))
-    throw std::invalid_argument("noise threshold " + std::to_string(s.noiseThreshold) + ": " + kNoiseThresholdRule);
-  if (!validMaxSpp(s.maxSpp)) throw std::invalid_argument("max spp " + std::to_string(s.maxSpp) + ": " + kMaxSppRule);
+  if (!scene::validNoiseThreshold(s.noiseThreshold))
+    throw std::invalid_argument("noise threshold " + std::to_string(s.noiseThreshold) + ": " + scene::kNoiseThresholdRule);
+  if (!scene::validMaxSpp(s.maxSpp)) throw std::invalid_argument("max spp " + std::to_string(s.maxSpp) + ": " + scene::kMaxSppRule);
   if (s.timeLimitSeconds != kNoTimeLimit && !validTimeLimit(s.timeLimitSeconds))
     throw std::invalid_argument("time limit " + std::to_string(s.timeLimitSeconds) + ": " + kTimeLimitRule);
   if (s.roundSpp < 1 || !scene::isSquare(s.roundSpp) || s.minRounds < 2 || s.tileSize < 1)
     throw std::invalid_argument("adaptive rounds need a square spp, two rounds or more and a positive tile size");
 }
 
-// The smallest rectangle holding every tile listed.
-PixelRect boundsOf(const TileGrid& grid, const std::vector<int>& tiles) {
-  PixelRect bounds = grid.tile(tiles.front());
-  for (int t : tiles) {
-    const PixelRect r = grid.tile(t);
-    bounds = {std::min(bounds.x0, r.x0), std::min(bounds.y0, r.y0), std::max(bounds.x1, r.x1),
-              std::max(bounds.y1, r.y1)};
+// What a round renders in one render: a rectangle of the grid's pixels and
+// the active tiles inside it.
+struct RoundWindow {
+  PixelRect pixels;
+  std::vector<int> tiles;
+};
+
+// The windows of a round over the `active` tiles (in the grid's order): the
+// active tiles of each row of tiles spanned by one rectangle, and
+// neighbouring rows joined where their union renders at most a quarter more
+// pixels than they hold. The first round is one window, the whole image;
+// later ones render little that has already stopped, in few renders.
+std::vector<RoundWindow> roundWindows(const TileGrid& grid, const std::vector<int>& active) {
+  std::vector<RoundWindow> rows;
+  for (int t : active) {
+    const PixelRect tile = grid.tile(t);
+    if (!rows.empty() && rows.back().pixels.y0 == tile.y0) {
+      rows.back().pixels.x1 = tile.x1;
+      rows.back().tiles.push_back(t);
+    } else {
+      rows.push_back({tile, {t}});
+    }
   }
-  return bounds;
+  std::vector<RoundWindow> windows;
+  for (RoundWindow& row : rows) {
+    if (!windows.empty() && windows.back().pixels.y1 == row.pixels.y0) {
+      RoundWindow& last = windows.back();
+      const PixelRect joined{std::min(last.pixels.x0, row.pixels.x0), last.pixels.y0,
+                             std::max(last.pixels.x1, row.pixels.x1), row.pixels.y1};
+      if (4 * joined.pixelCount() <= 5 * (last.pixels.pixelCount() + row.pixels.pixelCount())) {
+        last.pixels = joined;
+        last.tiles.insert(last.tiles.end(), row.tiles.begin(), row.tiles.end());
+        continue;
+      }
+    }
+    windows.push_back(std::move(row));
+  }
+  return windows;
 }
+
+// `rect` moved by (dx, dy).
+PixelRect moved(const PixelRect& rect, int dx, int dy) { return {rect.x0 + dx, rect.y0 + dy, rect.x1 + dx, rect.y1 + dy}; }
 
 // Round `round` of `scene` over `window` of the full image.
 RenderReport renderRound(Renderer& renderer, const scene::Scene& scene, int round, const PixelRect& window,
                          Backend backend, unsigned threads) {
   RoundFrame frame = roundFrame(scene, round);
   if (frame.scene.environment) frame.scene.environment->seed = scene.environment->seed + std::uint32_t(round);
-  const PixelRect crop{window.x0 + frame.dx, window.y0 + frame.dy, window.x1 + frame.dx, window.y1 + frame.dy};
-  return renderer.render(frame.scene, backend, {}, {crop, threads});
+  return renderer.render(frame.scene, backend, {}, {moved(window, frame.dx, frame.dy), threads});
 }
 
 // The ground's two renders, summed over the rounds each pixel took: the
@@ -90,6 +122,29 @@ std::vector<glm::vec4> caughtBeauty(int width, int height, const std::vector<glm
   return catchShadows(width, height, model, holdout, ground);
 }
 
+// What a later round cost, added to the first's report.
+void addRoundCost(RenderReport& total, const RenderReport& round) {
+  for (const StageTime& stage : round.stages) {
+    auto same = std::find_if(total.stages.begin(), total.stages.end(),
+                             [&](const StageTime& s) { return s.stage == stage.stage; });
+    if (same == total.stages.end())
+      total.stages.push_back(stage);
+    else
+      same->milliseconds += stage.milliseconds;
+  }
+  total.primaryRays += round.primaryRays;
+  total.shadowRays += round.shadowRays;
+  if (total.raysPerBounce.size() < round.raysPerBounce.size()) total.raysPerBounce.resize(round.raysPerBounce.size());
+  for (std::size_t bounce = 0; bounce < round.raysPerBounce.size(); ++bounce) {
+    total.raysPerBounce[bounce].rays += round.raysPerBounce[bounce].rays;
+    total.raysPerBounce[bounce].hits += round.raysPerBounce[bounce].hits;
+    total.raysPerBounce[bounce].shadowRays += round.raysPerBounce[bounce].shadowRays;
+  }
+  total.newtonFallbacks += round.newtonFallbacks;
+  total.cells += round.cells;
+  total.warnings.insert(total.warnings.end(), round.warnings.begin(), round.warnings.end());
+}
+
 scene::Scene withRoundSpp(scene::Scene scene, int spp) {
   scene.render.samplesPerPixel = spp;
   return scene;
@@ -123,11 +178,43 @@ RoundFrame roundFrame(const scene::Scene& scene, int round) {
   return frame;
 }
 
+namespace {
+
+// The tiles of `active` that go on after a round: not those whose spread is
+// trusted and below the threshold, nor those the next round would take past
+// the cap (which `report` says stopped them). Each tile's samples and error
+// so far are noted in `report`.
+std::vector<int> tilesGoingOn(const std::vector<int>& active, const SampleRounds& rounds,
+                              const AdaptiveSettings& settings, AdaptiveReport& report) {
+  std::vector<int> next;
+  for (int t : active) {
+    report.tileSpp[std::size_t(t)] += settings.roundSpp;
+    const double error = rounds.error(t);
+    report.errors[std::size_t(t)] = error;
+    if (rounds.rounds(t) >= settings.minRounds && error <= settings.noiseThreshold) continue;
+    if (report.tileSpp[std::size_t(t)] + settings.roundSpp > settings.maxSpp) {
+      report.stop = AdaptiveStop::SampleCap;
+      continue;
+    }
+    next.push_back(t);
+  }
+  return next;
+}
+
+}  // namespace
+
 AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Backend backend,
-                              const AdaptiveSettings& settings, unsigned threads, const scene::GroundScenes* ground) {
+                              const AdaptiveSettings& settings, const RenderOptions& options,
+                              const std::function<void(double)>& progress, const scene::GroundScenes* ground) {
   checkSettings(settings);
   const Clock::time_point start = Clock::now();
-  const int width = scene.render.width, height = scene.render.height;
+  const PixelRect area = options.crop.value_or(PixelRect::whole(scene.render.width, scene.render.height));
+  if (area.empty() || !area.inside(scene.render.width, scene.render.height))
+    throw std::invalid_argument("crop " + area.text() + ": expected a non-empty rectangle inside the image");
+  if (ground && !(area == PixelRect::whole(scene.render.width, scene.render.height)))
+    throw std::invalid_argument("crop " + area.text() + ": the shadow-catching ground renders the whole image");
+  const int width = area.width(), height = area.height();
+  const unsigned threads = options.threads;
   // Chosen once for every round, not per round (scenes/light_transport.h).
   std::optional<scene::LightTransport> transport;
   if (scene::leavesLightTransportUnsaid(scene))
@@ -141,6 +228,7 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
   SampleRounds rounds(width, height, settings.tileSize);
   const TileGrid& grid = rounds.grid();
   AdaptiveReport report;
+  report.noiseThreshold = settings.noiseThreshold;
   report.tileSpp.assign(std::size_t(grid.count()), 0);
   report.errors.assign(std::size_t(grid.count()), 0.0);
   std::vector<int> active(std::size_t(grid.count()));
@@ -159,53 +247,77 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
     // rules/sampling/random.h), and its seed are its own, so the rounds'
     // spread is an unbiased estimate of their variance (L'Ecuyer & Lemieux
     // 2002). The first is the scene itself: its centre samples give the AOVs.
-    const PixelRect window = boundsOf(grid, active);
-    RenderReport rendered = renderRound(renderer, round, report.rounds, window, backend, threads);
-    // The ground takes the first rounds only: its shadow, averaged over a
-    // window of pixels, is smooth by then, and a tile the model keeps going
-    // (a bright edge, a noisy lobe) does not make it pay three renders a round.
-    if (groundRound && report.rounds < settings.minRounds)
-      addGroundRound(renderer, *groundRound, report.rounds, window, grid, active, backend, threads, groundSums);
-    rounds.add(rendered.image, window, active);
-    report.samples += std::uint64_t(settings.roundSpp) * window.pixelCount();
-    if (report.rounds++ == 0) {
-      report.first = std::move(rendered);
-      if (transport) {
-        report.first.lightTransport = *transport;
-        report.first.warnings.insert(report.first.warnings.end(), transport->warnings.begin(),
-                                     transport->warnings.end());
-      }
-    }
-
-    std::vector<int> next;
-    bool capped = false;
-    for (int t : active) {
-      report.tileSpp[std::size_t(t)] += settings.roundSpp;
-      const double error = rounds.error(t);
-      report.errors[std::size_t(t)] = error;
-      if (rounds.rounds(t) >= settings.minRounds && error <= settings.noiseThreshold) continue;
-      if (report.tileSpp[std::size_t(t)] + settings.roundSpp > settings.maxSpp) {
-        capped = true;
+    for (const RoundWindow& window : roundWindows(grid, active)) {
+      // The window's pixels of the full image.
+      RenderReport rendered =
+          renderRound(renderer, round, report.rounds, moved(window.pixels, area.x0, area.y0), backend, threads);
+      // The ground takes the first rounds only: its shadow, averaged over a
+      // window of pixels, is smooth by then, and a tile the model keeps going
+      // (a bright edge, a noisy lobe) does not make it pay three renders a round.
+      if (groundRound && report.rounds < settings.minRounds)
+        addGroundRound(renderer, *groundRound, report.rounds, window.pixels, grid, window.tiles, backend, threads,
+                       groundSums);
+      rounds.add(rendered.image, window.pixels, window.tiles);
+      report.samples += std::uint64_t(settings.roundSpp) * window.pixels.pixelCount();
+      if (report.rounds > 0) {
+        addRoundCost(report.render, rendered);
         continue;
       }
-      next.push_back(t);
+      report.render = std::move(rendered);
+      if (transport) {
+        report.render.lightTransport = *transport;
+        report.render.warnings.insert(report.render.warnings.end(), transport->warnings.begin(),
+                                      transport->warnings.end());
+      }
     }
-    if (capped) report.stop = AdaptiveStop::SampleCap;
-    active = std::move(next);
+    ++report.rounds;
+
+    active = tilesGoingOn(active, rounds, settings, report);
+    if (progress) progress(1.0 - double(active.size()) / double(grid.count()));
     if (!active.empty() && secondsSince(start) >= settings.timeLimitSeconds) {
       report.stop = AdaptiveStop::TimeCap;
       break;
     }
   }
-  report.image = std::move(report.first.image);
+  report.image = std::move(report.render.image);
   if (report.image.width != width || report.image.height != height)
-    throw std::logic_error("the first adaptive round must cover the whole image");
+    throw std::logic_error("the first adaptive round must cover the whole image or crop");
   report.image.beauty = groundRound ? caughtBeauty(width, height, rounds.beauty(), groundSums) : rounds.beauty();
   report.maxError = *std::max_element(report.errors.begin(), report.errors.end());
   for (int t = 0; t < grid.count(); ++t)
     report.sppMean += double(report.tileSpp[std::size_t(t)]) * double(grid.tile(t).pixelCount());
   report.sppMean /= double(grid.width) * double(grid.height);
   report.seconds = secondsSince(start);
+  return report;
+}
+
+RenderReport renderPicture(Renderer& renderer, const scene::Scene& scene, Backend backend,
+                           const std::function<void(double)>& progress, const RenderOptions& options,
+                           double timeLimitSeconds, AdaptiveReport* rounds) {
+  scene::Scene sampled = scene;
+  std::optional<scene::LightTransport> transport;
+  std::string samplingNote;
+  if (scene.render.sampling == scene::Sampling::Chosen) {
+    // The choice rests on the light transport's: chosen once, here, for the
+    // renders below.
+    if (scene::leavesLightTransportUnsaid(scene))
+      transport = scene::chooseLightTransport(scene, scene::buildGeometry(scene));
+    if (transport) sampled = scene::withLightTransport(scene, *transport);
+    samplingNote = scene::chooseSampling(sampled);
+  }
+  RenderReport report;
+  if (sampled.render.sampling == scene::Sampling::OnePass) {
+    report = renderer.render(sampled, backend, progress, options);
+  } else {
+    AdaptiveReport adaptive = renderAdaptive(renderer, sampled, backend,
+                                             adaptiveSettings(sampled.render, timeLimitSeconds), options, progress);
+    report = std::move(adaptive.render);
+    report.image = std::move(adaptive.image);
+    report.samplesPerPixel = 0;
+    if (rounds) *rounds = std::move(adaptive);
+  }
+  if (transport) report.lightTransport = *transport;
+  report.samplingNote = samplingNote;
   return report;
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -20,21 +21,27 @@ namespace facet {
 inline constexpr double kNoTimeLimit = std::numeric_limits<double>::infinity();
 
 struct AdaptiveSettings {
-  double noiseThreshold = 0.02;            // a tile's relative standard error (SampleRounds::error)
-  int maxSpp = 256;                        // camera samples per pixel at most
+  double noiseThreshold = scene::kDefaultNoiseThreshold;  // a tile's relative standard error (SampleRounds::error)
+  int maxSpp = scene::kDefaultMaxSamplesPerPixel;         // camera samples per pixel at most
   double timeLimitSeconds = kNoTimeLimit;  // no round starts after this; the command line sets one
   int roundSpp = 4;                        // camera samples per pixel of each round (a square)
   int minRounds = 4;                       // before a tile's spread is trusted
   int tileSize = 16;
 };
 
-// The settings' rules, for the command line and the APIs alike.
-inline constexpr const char* kNoiseThresholdRule = "expected a number in (0, 1]";
-inline constexpr const char* kMaxSppRule = "expected a whole number of samples in [8, 65536] (two rounds of 4)";
+// The time limit's rule, for the command line and the APIs alike; the
+// others are the scene's (scenes/scene.h).
 inline constexpr const char* kTimeLimitRule = "expected a number of seconds in (0, 86400]";
-inline bool validNoiseThreshold(double t) { return t > 0.0 && t <= 1.0; }
-inline bool validMaxSpp(long long spp) { return spp >= 8 && spp <= 65536; }
 inline bool validTimeLimit(double seconds) { return seconds > 0.0 && seconds <= 86400.0; }
+
+// A scene's own stopping rules (RenderSettings), with a time limit.
+inline AdaptiveSettings adaptiveSettings(const scene::RenderSettings& render, double timeLimitSeconds = kNoTimeLimit) {
+  AdaptiveSettings settings;
+  settings.noiseThreshold = render.noiseThreshold;
+  settings.maxSpp = render.maxSamplesPerPixel;
+  settings.timeLimitSeconds = timeLimitSeconds;
+  return settings;
+}
 
 enum class AdaptiveStop { Converged, SampleCap, TimeCap };
 const char* toString(AdaptiveStop stop);
@@ -43,26 +50,43 @@ struct AdaptiveReport {
   // The beauty: each pixel's mean over its rounds; the AOVs of the first
   // round, which passes through each pixel's centre.
   Image image;
-  RenderReport first;  // the first round's report: device, stages, geometry
+  // The first round's device, geometry and light transport; every round's
+  // stages and rays.
+  RenderReport render;
   AdaptiveStop stop = AdaptiveStop::Converged;
   int rounds = 0;              // renders made
   std::uint64_t samples = 0;   // camera samples rendered, finished tiles inside a round's crop too
   double sppMean = 0;          // camera samples per pixel kept, over the image
   std::vector<double> errors;  // per tile, when it stopped
+  double noiseThreshold = 0;   // the settings' threshold
   std::vector<int> tileSpp;    // per tile: camera samples per pixel taken
   double maxError = 0;         // the largest of `errors`
   double seconds = 0;          // wall clock of every round
 };
 
-// Renders `scene` (its size; its spp and seed are the rounds') by rounds.
-// With `ground` (scenes/ground_plane.h, of the same camera and size), each
+// Renders `scene` (its size; its spp and seed are the rounds') by rounds,
+// telling `progress` the share of tiles finished after each,
+// over `options.crop` of the image where given: its tiles start at the
+// crop's corner, so a crop on the tiles' lines renders the whole image's
+// pixels there. With `ground` (scenes/ground_plane.h, of the same camera and size), each
 // round renders its two scenes over the same pixels too; the rounds stop on
 // the model's noise, and the beauty is the shadow catcher's composite of the
 // three renders' means (engine/image/catcher_composite.h).
 // Throws std::invalid_argument for settings that break the rules above.
 AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Backend backend,
-                              const AdaptiveSettings& settings, unsigned threads = 0,
+                              const AdaptiveSettings& settings, const RenderOptions& options = {},
+                              const std::function<void(double)>& progress = {},
                               const scene::GroundScenes* ground = nullptr);
+
+// A picture of `scene` as its sampling says (RenderSettings::sampling): one
+// pass of its samples per pixel, or adaptive rounds to its noise threshold
+// and sample cap, which `rounds` receives where given (the image moved into
+// the result's); where the scene leaves it to choose, as
+// scenes/sampling_choice.h chooses, the report saying what and why. The
+// command line and the APIs render by it.
+RenderReport renderPicture(Renderer& renderer, const scene::Scene& scene, Backend backend,
+                           const std::function<void(double)>& progress = {}, const RenderOptions& options = {},
+                           double timeLimitSeconds = kNoTimeLimit, AdaptiveReport* rounds = nullptr);
 
 // Round `round`'s scene and where its pixels lie: the image inside a larger
 // one, (a, b) = (round % 64, round / 64) pixels wider on the left and

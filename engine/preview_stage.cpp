@@ -93,8 +93,8 @@ PreviewSheet PreviewStage::render(Renderer& renderer, int frame, const PreviewPr
     scene::Scene scene = scenes_[i];
     scene.camera = camera;
     PreviewPicture picture{labels_[i], frame,
-                           renderAdaptive(renderer, scene, settings_.backend, settings_.adaptive, settings_.threads,
-                                          ground ? &*ground : nullptr),
+                           renderAdaptive(renderer, scene, settings_.backend, settings_.adaptive,
+                                          {std::nullopt, settings_.threads}, {}, ground ? &*ground : nullptr),
                            {}};
     picture.rgba = previewPixels(picture.report.image.beauty, width, height, settings_.look);
     cells.push_back({picture.rgba, picture.label});

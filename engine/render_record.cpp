@@ -44,6 +44,8 @@ std::string settingsDigest(const scene::Scene& scene, const std::string& backend
   const scene::RenderSettings& r = scene.render;
   text << r.width << ' ' << r.height << ' ' << r.samplesPerPixel << ' ' << int(r.method) << ' ' << r.pixelTolerance
        << ' ' << r.tessellationRate.value_or(-1) << ' ' << r.exactTolerance.value_or(-1) << '\n';
+  if (r.sampling != scene::Sampling::OnePass)
+    text << "sampling " << int(r.sampling) << ' ' << r.noiseThreshold << ' ' << r.maxSamplesPerPixel << '\n';
   if (r.bounces > 0) text << "bounces " << r.bounces << '\n';  // only above 0: a render without paths keeps its digest
   if (scene::limitsLobes(r))
     text << "lobes " << r.diffuseBounces << ' ' << r.glossyBounces << ' ' << r.transmissionBounces << '\n';
@@ -67,8 +69,13 @@ std::string renderSettingsText(const scene::Scene& scene, const std::string& bac
   const scene::RenderSettings& r = scene.render;
   const auto orAuto = [](const auto& value) { return value ? std::to_string(*value) : std::string("auto"); };
   std::ostringstream text;
-  text << "backend=" << backend << " size=" << r.width << 'x' << r.height << " spp=" << r.samplesPerPixel
-       << " method=" << (r.method == scene::IntersectionMethod::Exact ? "exact" : "tess")
+  text << "backend=" << backend << " size=" << r.width << 'x' << r.height;
+  if (r.sampling == scene::Sampling::OnePass)
+    text << " spp=" << r.samplesPerPixel;
+  else
+    text << " sampling=" << (r.sampling == scene::Sampling::Adaptive ? "adaptive" : "chosen")
+         << " noiseThreshold=" << r.noiseThreshold << " maxSpp=" << r.maxSamplesPerPixel;
+  text << " method=" << (r.method == scene::IntersectionMethod::Exact ? "exact" : "tess")
        << " pixelTolerance=" << r.pixelTolerance << " tessellationRate=" << orAuto(r.tessellationRate);
   if (r.bounces > 0) text << " bounces=" << r.bounces;
   if (scene::limitsLobes(r))

@@ -109,6 +109,7 @@ RenderReport Renderer::render(const scene::Scene& scene, Backend backend, const 
   if (scene::changesScene(transport, scene)) scene::applyLightTransport(transport, chosen.emplace(scene));
   const scene::Scene& rendered = chosen ? *chosen : scene;
   report.lightTransport = transport;
+  report.samplesPerPixel = scene.render.samplesPerPixel;
   report.warnings.insert(report.warnings.end(), transport.warnings.begin(), transport.warnings.end());
   report.stages.push_back({Stage::RefineBvh, clock.lap()});
   report.patches = geometry.patchCount();

@@ -36,6 +36,11 @@ struct RenderReport {
   // The light transport rendered, stated or chosen, and what was chosen and
   // why (scenes/light_transport.h).
   scene::LightTransport lightTransport;
+  // The camera samples per pixel of one pass; 0 for adaptive rounds
+  // (engine/adaptive_render.h). Where facet chose the sampling, why
+  // (scenes/sampling_choice.h).
+  int samplesPerPixel = 0;
+  std::string samplingNote;
   int patches = 0;
   std::vector<StageTime> stages;
   std::uint64_t primaryRays = 0;

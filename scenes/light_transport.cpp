@@ -72,7 +72,8 @@ LightTransport chooseLightTransport(const Scene& scene, const SceneGeometry& geo
   return t;
 }
 
-void stateLightTransport(Scene& scene) {
+void leaveNothingToChoose(Scene& scene) {
+  scene.render.sampling = Sampling::OnePass;
   scene.render.bouncesStated = true;
   if (!scene.environment || scene.environment->methodStated) return;
   if (scene.render.bounces > 0 && !environmentCarriesPaths(scene)) {
@@ -85,7 +86,7 @@ void stateLightTransport(Scene& scene) {
 
 Scene loadStatedScene(const std::filesystem::path& path) {
   Scene scene = loadScene(path);
-  stateLightTransport(scene);
+  leaveNothingToChoose(scene);
   return scene;
 }
 

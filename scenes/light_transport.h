@@ -37,13 +37,14 @@ struct LightTransport {
 
 LightTransport chooseLightTransport(const Scene& scene, const SceneGeometry& geometry);
 
-// Leaves nothing to choose: the bounces as they are (0 where unsaid, the
-// course's local model), and the environment's method as it is unless
-// stated bounces need it sampled. For comparisons whose subject is the
-// backends, not the picture (parity).
-void stateLightTransport(Scene& scene);
+// Leaves nothing to choose: one pass of the samples per pixel as they are
+// (1 where unsaid), the bounces as they are (0 where unsaid, the course's
+// local model), and the environment's method as it is unless stated
+// bounces need it sampled. For comparisons whose subject is the backends,
+// not the picture (parity).
+void leaveNothingToChoose(Scene& scene);
 
-// The scene file at `path`, its light transport stated: for measurements
+// The scene file at `path`, nothing left to choose: for measurements
 // of one method or setting (facet bench, facet ibl-chart), which render
 // what they set and nothing chosen.
 Scene loadStatedScene(const std::filesystem::path& path);

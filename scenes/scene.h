@@ -60,6 +60,15 @@ inline bool isSquare(int n) {
 }
 inline constexpr const char* kSamplesPerPixelRule = "samples per pixel must be a square number (an n x n grid)";
 
+// Adaptive sampling's stopping rules (engine/adaptive_render.h): a tile's
+// relative standard error, and the camera samples per pixel at most.
+inline constexpr double kDefaultNoiseThreshold = 0.02;
+inline constexpr int kDefaultMaxSamplesPerPixel = 256;
+inline constexpr const char* kNoiseThresholdRule = "expected a number in (0, 1]";
+inline constexpr const char* kMaxSppRule = "expected a whole number of samples in [8, 65536] (two rounds of 4)";
+inline bool validNoiseThreshold(double t) { return t > 0.0 && t <= 1.0; }
+inline bool validMaxSpp(long long spp) { return spp >= 8 && spp <= 65536; }
+
 // Paths (docs/rendering.md, "Paths"): a continuation that
 // misses adds nothing because the vertex it left counted the environment with
 // its shadow rays, so paths need them.
@@ -68,10 +77,20 @@ inline constexpr const char* kBouncesNeedOcclusionRule =
     "bounces above 0 need the environment lit with its shadow rays (ibl sampled or filtered, occlusion on): a "
     "continuation that misses adds nothing because the vertex it left counted the environment, shadowed";
 
+// How a render takes its camera samples (docs/rendering.md, "Converged by
+// default"): one pass of `samplesPerPixel`; adaptive rounds until every
+// tile's noise is below `noiseThreshold` or it has `maxSamplesPerPixel`; or,
+// where a scene file, the command line or an API states neither, as facet
+// chooses from the scene (scenes/sampling_choice.h).
+enum class Sampling { Chosen, OnePass, Adaptive };
+
 struct RenderSettings {
   int width = 512;
   int height = 512;
   int samplesPerPixel = 1;  // a square number: stratified sqrt x sqrt
+  Sampling sampling = Sampling::OnePass;  // a scene built in code states one pass
+  double noiseThreshold = kDefaultNoiseThreshold;
+  int maxSamplesPerPixel = kDefaultMaxSamplesPerPixel;
   int bounces = 0;          // continuations per camera sample's path; 0: direct light only
   // False where a scene file, the command line or an API left the bounces
   // and the lobe limits unsaid: facet chooses them from the scene

@@ -25,7 +25,8 @@ Scene loadScene(const std::filesystem::path& path, std::span<const JsonOverride>
   const bool cage = extension == ".obj", gltf = extension == ".gltf" || extension == ".glb";
   if (cage || gltf) {
     Scene scene = cage ? sceneFromCage(loadObjCage(path)) : loadGltfScene(path);
-    scene.render.bouncesStated = false;  // a model file says nothing of light transport
+    scene.render.bouncesStated = false;  // a model file says nothing of light transport or sampling
+    scene.render.sampling = Sampling::Chosen;
     applyModelOverrides(scene, path, overrides);
     return scene;
   }

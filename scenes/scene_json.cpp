@@ -158,6 +158,7 @@ Scene sceneFromDocument(const json& document, const std::filesystem::path& path)
   Scene scene;
   scene.source = path;
   scene.render.bouncesStated = false;  // unless the render block states them
+  scene.render.sampling = Sampling::Chosen;
   std::map<std::string, int> materialIndex;
   if (root.has("materials")) {
     const Field materials = root["materials"];

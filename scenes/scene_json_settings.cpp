@@ -15,13 +15,26 @@
 namespace facet::scene::detail {
 
 void readRender(const Field& f, RenderSettings& r) {
-  f.object({"width", "height", "spp", "bounces", "diffuse_bounces", "glossy_bounces", "transmission_bounces", "method",
+  f.object({"width", "height", "spp", "noise_threshold", "max_spp", "bounces", "diffuse_bounces", "glossy_bounces", "transmission_bounces", "method",
             "tess_level", "pixel_tolerance"});
   if (f.has("width")) r.width = f["width"].integer(1, 16384);
   if (f.has("height")) r.height = f["height"].integer(1, 16384);
   if (f.has("spp")) {
+    if (f.has("noise_threshold") || f.has("max_spp"))
+      f["spp"].fail("give spp (one pass of that many samples) or noise_threshold and max_spp (adaptive rounds), "
+                    "not both");
     r.samplesPerPixel = f["spp"].integer(1, 4096);
     if (!isSquare(r.samplesPerPixel)) f["spp"].fail(kSamplesPerPixelRule);
+    r.sampling = Sampling::OnePass;
+  }
+  if (f.has("noise_threshold")) {
+    r.noiseThreshold = f["noise_threshold"].number(0.0, 1.0);
+    if (!validNoiseThreshold(r.noiseThreshold)) f["noise_threshold"].fail(kNoiseThresholdRule);
+    r.sampling = Sampling::Adaptive;
+  }
+  if (f.has("max_spp")) {
+    r.maxSamplesPerPixel = f["max_spp"].integer(8, 65536);
+    r.sampling = Sampling::Adaptive;
   }
   if (f.has("bounces")) {
     r.bounces = f["bounces"].integer(0, kMaxBounces);

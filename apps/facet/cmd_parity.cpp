@@ -62,7 +62,7 @@ ParityCase judgeScene(const std::string& file, const ParityCommandOptions& o,
   scene::Scene scene = loadEditedScene(file, o.edits);
   printWarnings(sceneWarnings(scene), false);
   applySceneOverrides(o.sceneOverrides, scene);
-  scene::stateLightTransport(scene);
+  scene::leaveNothingToChoose(scene);
   // The reference's render; per adapter its render, the first pair, the
   // pairs' sums (about an image and a half) and the two mean images.
   checkImagesFitInMemory(scene, 1 + 6 * int(adapters.size()),

@@ -19,6 +19,7 @@
 #include "engine/preview_stage.h"
 #include "material_options.h"
 #include "preview_stage_options.h"
+#include "render_summary.h"
 #include "scene_options.h"
 #include "scenes/input_file.h"
 
@@ -37,15 +38,15 @@ scene::Scene previewModel(const PreviewStageFlags& f) {
   return scene;
 }
 
-nlohmann::json renderJson(const std::string& label, int frame, const AdaptiveReport& r, double threshold) {
-  const auto [least, most] = std::minmax_element(r.tileSpp.begin(), r.tileSpp.end());
-  return {{"material", label},        {"frame", frame},
-          {"rounds", r.rounds},       {"samples", r.samples},
-          {"spp_mean", r.sppMean},    {"spp_min", *least},
-          {"spp_max", *most},         {"max_tile_error", r.maxError},
-          {"tile_errors", r.errors},  {"noise_threshold", threshold},
-          {"stop", toString(r.stop)}, {"milliseconds", r.seconds * 1000.0},
-          {"bounces", r.first.lightTransport.bounces},  {"light_transport", r.first.lightTransport.note}};
+nlohmann::json renderJson(const std::string& label, int frame, const AdaptiveReport& r) {
+  nlohmann::json render = adaptiveJson(r);
+  render["material"] = label;
+  render["frame"] = frame;
+  render["tile_errors"] = r.errors;
+  render["milliseconds"] = r.seconds * 1000.0;
+  render["bounces"] = r.render.lightTransport.bounces;
+  render["light_transport"] = r.render.lightTransport.note;
+  return render;
 }
 
 void printRender(const nlohmann::json& r, bool turntable) {
@@ -93,9 +94,9 @@ void runPreview(const PreviewStageFlags& f) {
                             {"cell_height", height},     {"frames", frames},
                             {"ground", settings.ground}, {"renders", nlohmann::json::array()}};
   const auto progress = [&](const PreviewPicture& picture) {
-    summary["adapter"] = picture.report.first.device;
+    summary["adapter"] = picture.report.render.device;
     summary["renders"].push_back(
-        renderJson(picture.label, picture.frame, picture.report, settings.adaptive.noiseThreshold));
+        renderJson(picture.label, picture.frame, picture.report));
     if (!f.quiet && !f.json) printRender(summary["renders"].back(), stage.turntable());
   };
   writePreviewStage(renderer, stage, written, f.fps, path, progress);

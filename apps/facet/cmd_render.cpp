@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "engine/adaptive_render.h"
 #include "engine/image/image_io.h"
 #include "engine/image_memory.h"
 #include "engine/renderer.h"
@@ -25,14 +26,23 @@
 #include "preview_options.h"
 #include "progress_log.h"
 #include "render_summary.h"
+#include "sampling_options.h"
 #include "scene_options.h"
 #include "scene_warnings.h"
 #include "scenes/input_file.h"
+#include "scenes/sampling_choice.h"
 #include "scenes/scene_file.h"
 #include "watch.h"
 
 namespace facet::cli {
 namespace {
+
+// Adaptive sampling's flags (docs/rendering.md, "Converged by default").
+struct SamplingFlags {
+  std::optional<double> noiseThreshold;
+  std::optional<long long> maxSpp;
+  std::optional<double> timeLimit;
+};
 
 struct RenderCommandOptions {
   std::string scene;
@@ -44,6 +54,7 @@ struct RenderCommandOptions {
   PreviewFlags preview;
   SceneOverrides scene_overrides;
   SceneEdits edits;
+  SamplingFlags sampling;
   FarmOptions farm;
   std::string backend = "gpu";
   std::string adapter;
@@ -125,6 +136,45 @@ scene::Scene loadSceneOfOtherFiles(const RenderCommandOptions& o, const std::vec
   return scene;
 }
 
+// The scene's sampling in --json: its stated samples per pixel, or
+// "adaptive" or "chosen".
+nlohmann::json samplingJson(const scene::RenderSettings& render) {
+  switch (render.sampling) {
+    case scene::Sampling::OnePass:
+      return render.samplesPerPixel;
+    case scene::Sampling::Adaptive:
+      return "adaptive";
+    case scene::Sampling::Chosen:
+      return "chosen";
+  }
+  return nullptr;
+}
+
+// --noise-threshold and --max-spp ask for adaptive rounds, --spp for one
+// pass; either wins over the scene file's render block, and not both.
+void applySampling(const RenderCommandOptions& o, scene::Scene& scene) {
+  const SamplingFlags& f = o.sampling;
+  const std::optional<int>& spp = o.scene_overrides.spp;
+  if (spp && (f.noiseThreshold || f.maxSpp))
+    throw std::invalid_argument(std::string(f.noiseThreshold ? "--noise-threshold" : "--max-spp") +
+                                ": asks for adaptive rounds, and --spp for one pass of " + std::to_string(*spp) +
+                                " samples: give one or the other");
+  if (f.noiseThreshold) {
+    scene.render.noiseThreshold = checkedNoiseThreshold(*f.noiseThreshold);
+    scene.render.sampling = scene::Sampling::Adaptive;
+  }
+  if (f.maxSpp) {
+    scene.render.maxSamplesPerPixel = checkedMaxSpp(*f.maxSpp);
+    scene.render.sampling = scene::Sampling::Adaptive;
+  }
+  if (!f.timeLimit) return;
+  checkedTimeLimit(*f.timeLimit);
+  if (scene.render.sampling == scene::Sampling::OnePass)
+    throw std::invalid_argument("--time-limit: caps adaptive rounds, and " +
+                                std::string(spp ? "--spp" : "the scene's render.spp") +
+                                " asks for one pass: leave the samples unsaid, or drop --time-limit");
+}
+
 // A job's EXR and PNG of `image`, the pixels of `window`, as a set.
 void writeOutputs(const RenderCommandOptions& o, const RenderJob& job, const scene::Scene& scene, const Image& image,
                   const PixelRect& window, const PreviewOptions& preview, const std::string& settingsNote = {}) {
@@ -138,13 +188,14 @@ void writeOutputs(const RenderCommandOptions& o, const RenderJob& job, const sce
   writeAllOrNothing(outputs);
 }
 
-// The outputs record what was rendered, the chosen light transport too; the
-// next frame chooses again, its camera its own.
+// The outputs record what was rendered, the chosen light transport and
+// sampling too; the next frame chooses again, its camera its own.
 void writeRendered(const RenderCommandOptions& o, const RenderJob& job, scene::Scene& scene,
                    const RenderReport& report, const PreviewOptions& preview) {
   const scene::RenderSettings render = scene.render;
   const std::optional<scene::Environment> environment = scene.environment;
   scene::applyLightTransport(report.lightTransport, scene);
+  scene::chooseSampling(scene);
   writeOutputs(o, job, scene, report.image, report.window, preview);
   scene.render = render;
   scene.environment = environment;
@@ -163,6 +214,8 @@ void runWatch(const RenderCommandOptions& o) {
   watched.load = [&] {
     scene::Scene scene = loadSceneOfOtherFiles(o, {job});
     applySceneOverrides(o.scene_overrides, scene);
+    // The watch refines each picture by its own passes (watch.h).
+    scene.render.sampling = scene::Sampling::OnePass;
     checkImagesFitInMemory(scene, 1, o.scene_overrides.size.empty() ? o.scene + ": image size" : "--size");
     std::vector<std::string> fresh;
     for (const std::string& warning : sceneWarnings(scene))
@@ -185,6 +238,7 @@ void runRender(const RenderCommandOptions& o) {
   chosenExrLayers(o.exrFlags);
   scene::Scene scene = loadSceneOfOtherFiles(o, jobs);
   applySceneOverrides(o.scene_overrides, scene);
+  applySampling(o, scene);
   const int width = scene.render.width, height = scene.render.height;
   const std::optional<PixelRect> crop = chosenCrop(o.farm, width, height);
   checkImagesFitInMemory(scene, 1, o.scene_overrides.size.empty() ? o.scene + ": image size" : "--size", crop);
@@ -201,7 +255,7 @@ void runRender(const RenderCommandOptions& o) {
   nlohmann::json summary = {{"backend", o.backend},
                             {"width", width},
                             {"height", height},
-                            {"spp", scene.render.samplesPerPixel},
+                            {"spp", samplingJson(scene.render)},
                             {"lighting", lightingName(scene)},
                             {"warnings", warnings},
                             {"renders", nlohmann::json::array()}};
@@ -210,20 +264,23 @@ void runRender(const RenderCommandOptions& o) {
     const auto start = std::chrono::steady_clock::now();
     ProgressLog progress(job.frame ? "frame " + std::to_string(*job.frame) : std::string("rendering"),
                          o.farm.quiet || o.farm.json);
-    const RenderReport report = renderer.render(scene, backend, std::ref(progress), {crop, threads});
+    AdaptiveReport rounds;
+    const RenderReport report = renderPicture(renderer, scene, backend, std::ref(progress), {crop, threads},
+                                              o.sampling.timeLimit.value_or(kNoTimeLimit), &rounds);
     progress.finish();
+    const AdaptiveReport* adaptive = report.samplesPerPixel == 0 ? &rounds : nullptr;
     const double wallMilliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
     writeRendered(o, job, scene, report, preview);
 
     summary["adapter"] = report.device;
-    summary["renders"].push_back(renderJson(report, job, wallMilliseconds));
+    summary["renders"].push_back(renderJson(report, adaptive, job, wallMilliseconds));
     if (o.farm.quiet || o.farm.json) continue;
     if (o.verbose)
-      printSummary(scene, report, job, wallMilliseconds);
+      printSummary(scene, report, adaptive, job, wallMilliseconds);
     else
-      printSummaryLine(scene, report, job, wallMilliseconds);
+      printSummaryLine(scene, report, adaptive, job, wallMilliseconds);
   }
   summary["peak_resident_bytes"] = peakResidentBytes();
   if (o.farm.json) std::printf("%s\n", summary.dump(2).c_str());
@@ -242,6 +299,15 @@ void addRenderCommand(CLI::App& app) {
   addPreviewOptions(*c, o->preview);
   addSceneEditOptions(*c, o->edits);
   addSceneOverrideOptions(*c, o->scene_overrides);
+  c->add_option("--noise-threshold", o->sampling.noiseThreshold,
+                "Adaptive rounds stop a tile once its relative standard error is below this (default: the scene's "
+                "render.noise_threshold, else 0.02; the default sampling where --spp and render.spp are unsaid)");
+  c->add_option("--max-spp", o->sampling.maxSpp,
+                "Adaptive rounds take at most this many camera samples per pixel (default: the scene's "
+                "render.max_spp, else 256)");
+  c->add_option("--time-limit", o->sampling.timeLimit,
+                "Seconds of adaptive rounds after which no round starts (default: none, so the picture follows from "
+                "the scene alone)");
   addFarmOptions(*c, o->farm);
   addExrOptions(*c, o->exrFlags);
   addWatchOptions(*c, o->watch);

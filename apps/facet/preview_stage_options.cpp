@@ -1,20 +1,11 @@
 #include "preview_stage_options.h"
 
-#include <sstream>
 #include <stdexcept>
 
 #include "engine/image/movie.h"
+#include "sampling_options.h"
 
 namespace facet::cli {
-namespace {
-
-std::string text(double value) {
-  std::ostringstream s;
-  s << value;
-  return s.str();
-}
-
-}  // namespace
 
 void addPreviewStageOptions(CLI::App& c, PreviewStageFlags& f) {
   c.add_option("materials", f.materials, "Material files (.json), presets (see `facet presets`) or names of the shipped "
@@ -49,15 +40,10 @@ void addPreviewStageOptions(CLI::App& c, PreviewStageFlags& f) {
 }
 
 AdaptiveSettings chosenAdaptiveSettings(const PreviewStageFlags& f) {
-  if (!validNoiseThreshold(f.noiseThreshold))
-    throw std::invalid_argument("--noise-threshold '" + text(f.noiseThreshold) + "': " + kNoiseThresholdRule);
-  if (!validMaxSpp(f.maxSpp)) throw std::invalid_argument("--max-spp '" + text(double(f.maxSpp)) + "': " + kMaxSppRule);
-  if (!validTimeLimit(f.timeLimit))
-    throw std::invalid_argument("--time-limit '" + text(f.timeLimit) + "': " + kTimeLimitRule);
   AdaptiveSettings settings;
-  settings.noiseThreshold = f.noiseThreshold;
-  settings.maxSpp = int(f.maxSpp);
-  settings.timeLimitSeconds = f.timeLimit;
+  settings.noiseThreshold = checkedNoiseThreshold(f.noiseThreshold);
+  settings.maxSpp = checkedMaxSpp(f.maxSpp);
+  settings.timeLimitSeconds = checkedTimeLimit(f.timeLimit);
   return settings;
 }
 

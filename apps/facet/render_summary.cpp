@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -51,6 +52,17 @@ void printReportWarnings(const RenderReport& report) {
 
 }  // namespace
 
+std::string describeSampling(const RenderReport& report, const AdaptiveReport* adaptive) {
+  const std::string why = report.samplingNote.empty() ? "" : " (" + report.samplingNote + ")";
+  if (!adaptive) return std::to_string(report.samplesPerPixel) + " spp" + why;
+  const auto [fewest, most] = std::minmax_element(adaptive->tileSpp.begin(), adaptive->tileSpp.end());
+  char text[200];
+  std::snprintf(text, sizeof text, "adaptive %d-%d spp (mean %.1f, %d rounds), noise %.3g (threshold %.3g), %s",
+                *fewest, *most, adaptive->sppMean, adaptive->rounds, adaptive->maxError, adaptive->noiseThreshold,
+                toString(adaptive->stop));
+  return text + why;
+}
+
 std::string lightingName(const scene::Scene& scene) {
   return scene.environment && scene::isStudioEnvironment(*scene.environment) ? scene::kStudioEnvironmentName : "scene";
 }
@@ -61,15 +73,15 @@ std::uint64_t peakResidentBytes() {
   return std::uint64_t(usage.ru_maxrss) * 1024;  // Linux reports KiB
 }
 
-void printSummaryLine(const scene::Scene& scene, const RenderReport& report, const RenderJob& job,
-                      double wallMilliseconds) {
+void printSummaryLine(const scene::Scene& scene, const RenderReport& report, const AdaptiveReport* adaptive,
+                      const RenderJob& job, double wallMilliseconds) {
   printReportWarnings(report);
   double startupMilliseconds = 0, stageMilliseconds = 0;
   for (const StageTime& stage : report.stages)
     (isStartup(stage.stage) ? startupMilliseconds : stageMilliseconds) += stage.milliseconds;
   std::string line = "wrote " + CLI::detail::join(outputPaths(job), " and ") + ": " +
                      std::to_string(report.window.width()) + "x" + std::to_string(report.window.height()) + ", " +
-                     std::to_string(scene.render.samplesPerPixel) + " spp, " +
+                     describeSampling(report, adaptive) + ", " +
                      (scene.render.method == scene::IntersectionMethod::Exact ? "exact" : "tessellated");
   const int bounces = report.lightTransport.bounces;
   if (bounces > 0) line += ", " + std::to_string(bounces) + (bounces == 1 ? " bounce" : " bounces");
@@ -91,15 +103,15 @@ void printSummaryLine(const scene::Scene& scene, const RenderReport& report, con
   std::printf("%s\n", line.c_str());
 }
 
-void printSummary(const scene::Scene& scene, const RenderReport& report, const RenderJob& job,
-                  double wallMilliseconds) {
+void printSummary(const scene::Scene& scene, const RenderReport& report, const AdaptiveReport* adaptive,
+                  const RenderJob& job, double wallMilliseconds) {
   printReportWarnings(report);
   std::printf("%s\n", report.geometrySummary.c_str());
   if (scene.environment && scene::isStudioEnvironment(*scene.environment))
     std::printf("lighting: %s (the scene has no lights or environment)\n", scene::kStudioEnvironmentName);
   if (scene.environment) std::printf("%s\n", describeEnvironment(*scene.environment).c_str());
-  std::printf("backend: %s; %dx%d, %d spp, %s intersection\n", report.device.c_str(), scene.render.width,
-              scene.render.height, scene.render.samplesPerPixel,
+  std::printf("backend: %s; %dx%d, %s, %s intersection\n", report.device.c_str(), scene.render.width,
+              scene.render.height, describeSampling(report, adaptive).c_str(),
               scene.render.method == scene::IntersectionMethod::Exact ? "exact" : "tessellated");
   if (!(report.window == PixelRect::whole(scene.render.width, scene.render.height)))
     std::printf("crop: %s (%dx%d pixels)\n", report.window.text().c_str(), report.window.width(),
@@ -118,7 +130,16 @@ void printSummary(const scene::Scene& scene, const RenderReport& report, const R
   std::printf("wrote %s\n", CLI::detail::join(paths, " and ").c_str());
 }
 
-nlohmann::json renderJson(const RenderReport& report, const RenderJob& job, double wallMilliseconds) {
+nlohmann::json adaptiveJson(const AdaptiveReport& r) {
+  const auto [fewest, most] = std::minmax_element(r.tileSpp.begin(), r.tileSpp.end());
+  return {{"rounds", r.rounds},         {"samples", r.samples},
+          {"spp_mean", r.sppMean},      {"spp_min", *fewest},
+          {"spp_max", *most},           {"max_tile_error", r.maxError},
+          {"noise_threshold", r.noiseThreshold}, {"stop", toString(r.stop)}};
+}
+
+nlohmann::json renderJson(const RenderReport& report, const AdaptiveReport* adaptive, const RenderJob& job,
+                          double wallMilliseconds) {
   nlohmann::json stages = nlohmann::json::object();
   for (const StageTime& stage : report.stages) stages[std::string(stageName(stage.stage))] = stage.milliseconds;
   nlohmann::json render = {{"frame", job.frame ? nlohmann::json(*job.frame) : nlohmann::json()},
@@ -130,6 +151,11 @@ nlohmann::json renderJson(const RenderReport& report, const RenderJob& job, doub
                            {"rays_per_second", raysPerSecond(report)},
                            {"gpu_bytes", report.gpuBytes},
                            {"outputs", outputPaths(job)}};
+  if (adaptive)
+    render["adaptive"] = adaptiveJson(*adaptive);
+  else
+    render["spp"] = report.samplesPerPixel;
+  if (!report.samplingNote.empty()) render["sampling"] = report.samplingNote;
   render["bounces"] = report.lightTransport.bounces;
   if (!report.lightTransport.note.empty()) render["light_transport"] = report.lightTransport.note;
   if (!report.warnings.empty()) render["warnings"] = report.warnings;

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "engine/adaptive_render.h"
 #include "engine/renderer.h"
 #include "scenes/scene.h"
 
@@ -24,16 +25,28 @@ struct RenderJob {
 // (scenes/studio_environment.h), else "scene".
 std::string lightingName(const scene::Scene& scene);
 
-// One line per render (the default): outputs, size, method, device, time
-// and rate, and whatever facet added or left out.
-void printSummaryLine(const scene::Scene& scene, const RenderReport& report, const RenderJob& job,
-                      double wallMilliseconds);
+// How the pixels were sampled: "16 spp", or for adaptive rounds (`adaptive`
+// not null) their samples, the noise left and why they stopped; and why,
+// where facet chose.
+std::string describeSampling(const RenderReport& report, const AdaptiveReport* adaptive);
+
+// One line per render (the default): outputs, size, sampling and noise,
+// method, device, time and rate, and whatever facet added or left out.
+void printSummaryLine(const scene::Scene& scene, const RenderReport& report, const AdaptiveReport* adaptive,
+                      const RenderJob& job, double wallMilliseconds);
 // --verbose: the per-object statistics, the lighting, every stage's time
 // and the rays per bounce.
-void printSummary(const scene::Scene& scene, const RenderReport& report, const RenderJob& job, double wallMilliseconds);
+void printSummary(const scene::Scene& scene, const RenderReport& report, const AdaptiveReport* adaptive,
+                  const RenderJob& job, double wallMilliseconds);
+
+// Adaptive rounds in --json, alike for facet render and facet preview:
+// rounds, samples, the spread of samples per pixel, the largest tile error,
+// the threshold and why they stopped.
+nlohmann::json adaptiveJson(const AdaptiveReport& adaptive);
 
 // One entry of --json's "renders".
-nlohmann::json renderJson(const RenderReport& report, const RenderJob& job, double wallMilliseconds);
+nlohmann::json renderJson(const RenderReport& report, const AdaptiveReport* adaptive, const RenderJob& job,
+                          double wallMilliseconds);
 
 std::uint64_t peakResidentBytes();
 

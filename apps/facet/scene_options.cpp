@@ -76,6 +76,7 @@ void applySceneOverrides(const SceneOverrides& o, scene::Scene& scene) {
     if (!scene::isSquare(*o.spp))
       throw std::invalid_argument("--spp " + std::to_string(*o.spp) + ": " + scene::kSamplesPerPixelRule);
     scene.render.samplesPerPixel = *o.spp;
+    scene.render.sampling = scene::Sampling::OnePass;
   }
   if (o.bounces) {
     scene.render.bounces = *o.bounces;
@@ -142,7 +143,7 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& o) {
       ->check(CLI::IsMember({"exact", "tess"}));
   command.add_option("--tess-level", o.tessLevel, "Dicing rate k (k x k per patch) for --method tess")
       ->check(CLI::Range(1, 256));
-  command.add_option("--spp", o.spp, "Samples per pixel (a square number)")->check(CLI::Range(1, 4096));
+  command.add_option("--spp", o.spp, "Samples per pixel in one pass (a square number)")->check(CLI::Range(1, 4096));
   command
       .add_option("--bounces", o.bounces,
                   "Continuations of each camera sample's path (0: direct light only; above 0: --ibl sampled or "

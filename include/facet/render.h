@@ -22,7 +22,7 @@ struct RenderSettings {
   Backend backend = Backend::Gpu;
   std::optional<int> width, height;
   std::optional<Method> method;
-  std::optional<int> samplesPerPixel;   // a square number
+  std::optional<int> samplesPerPixel;   // one pass of a square number; none: the scene file's, or chosen (docs/api.md)
   std::optional<int> tessellationRate;  // tessellated method
   // Continuations of each camera sample's path, in [0, 64]; 0 is direct light
   // only. Above 0: an environment, if any, sampled or filtered with

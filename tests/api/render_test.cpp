@@ -35,9 +35,11 @@ facet::Scene cubeOnSlab(facet::IblMethod method) {
   return facet::buildScene(description);
 }
 
+// One pass of one sample per pixel: these tests count its rays.
 facet::RenderSettings onCpu(int bounces) {
   facet::RenderSettings settings;
   settings.backend = facet::Backend::Cpu;
+  settings.samplesPerPixel = 1;
   settings.bounces = bounces;
   return settings;
 }

@@ -19,6 +19,7 @@ facet::RenderSettings small() {
   facet::RenderSettings settings;
   settings.backend = facet::Backend::Cpu;
   settings.width = settings.height = 24;
+  settings.samplesPerPixel = 1;
   return settings;
 }
 

@@ -25,7 +25,7 @@ TEST(GroundPlane, CatchesTheBlobsShadowAndIsOtherwiseUnseen) {
   settings.tileSize = 8;
   Renderer renderer;
   const AdaptiveReport bareReport = renderAdaptive(renderer, model, Backend::Gpu, settings);
-  const AdaptiveReport caughtReport = renderAdaptive(renderer, model, Backend::Gpu, settings, 0, &ground);
+  const AdaptiveReport caughtReport = renderAdaptive(renderer, model, Backend::Gpu, settings, {}, {}, &ground);
   for (const AdaptiveReport* r : {&bareReport, &caughtReport}) {
     ASSERT_EQ(r->stop, AdaptiveStop::SampleCap);
     ASSERT_EQ(r->rounds, 2);

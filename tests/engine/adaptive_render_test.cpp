@@ -100,6 +100,71 @@ TEST(AdaptiveRender, RefusesSettingsOutsideTheRules) {
   EXPECT_THROW(renderAdaptive(renderer, s, Backend::Cpu, noTime), std::invalid_argument);
 }
 
+// A farm's tile is a crop: its tiles start at its corner, so a crop on the
+// whole image's tile lines takes each tile's rounds, samples and pixels.
+TEST(AdaptiveRender, ACropOnTheTilesLinesRendersTheWholeImagesPixels) {
+  Renderer renderer;
+  const scene::Scene s = studioBlob(scene::IblMethod::Sampled, 1);
+  const AdaptiveReport whole = renderAdaptive(renderer, s, Backend::Cpu, settings(0.05, 4096));
+  const PixelRect crop{8, 16, 24, 32};
+  const AdaptiveReport part = renderAdaptive(renderer, s, Backend::Cpu, settings(0.05, 4096), {crop, 0});
+  ASSERT_EQ(part.image.width, 16);
+  ASSERT_EQ(part.image.height, 16);
+  EXPECT_EQ(part.render.window, crop);
+  ASSERT_EQ(part.tileSpp.size(), 4u);
+  EXPECT_EQ(part.tileSpp[0], whole.tileSpp[2 * 4 + 1]);
+  EXPECT_EQ(part.tileSpp[3], whole.tileSpp[3 * 4 + 2]);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) {
+      const std::size_t in = part.image.index(x, y), of = whole.image.index(x + crop.x0, y + crop.y0);
+      ASSERT_EQ(part.image.beauty[in], whole.image.beauty[of]) << x << "," << y;
+      ASSERT_EQ(part.image.faceId[in], whole.image.faceId[of]) << x << "," << y;
+    }
+  EXPECT_THROW(renderAdaptive(renderer, s, Backend::Cpu, settings(0.03, 64), {PixelRect{0, 0, 40, 8}, 0}),
+               std::invalid_argument);
+}
+
+// renderPicture: one pass where the scene states its samples, adaptive
+// rounds to the scene's own threshold and cap where it states them; where
+// it leaves them to choose, one pass of 16 where no light is sampled at
+// random, else adaptive rounds, and the report says why.
+TEST(AdaptiveRender, APictureSamplesAsTheSceneSays) {
+  Renderer renderer;
+  scene::Scene s = studioBlob(scene::IblMethod::Sampled, 1);
+  s.render.samplesPerPixel = 4;
+  AdaptiveReport rounds;
+  const RenderReport pass = renderPicture(renderer, s, Backend::Cpu, {}, {}, kNoTimeLimit, &rounds);
+  EXPECT_EQ(rounds.rounds, 0);
+  s.render.sampling = scene::Sampling::Adaptive;
+  s.render.noiseThreshold = 0.2;
+  s.render.maxSamplesPerPixel = 64;
+  const RenderReport adaptive = renderPicture(renderer, s, Backend::Cpu, {}, {}, kNoTimeLimit, &rounds);
+  EXPECT_EQ(rounds.noiseThreshold, 0.2);
+  EXPECT_EQ(rounds.rounds, AdaptiveSettings{}.minRounds) << "so loose a threshold is met once the spread is trusted";
+  EXPECT_EQ(adaptive.primaryRays, 4 * pass.primaryRays) << "the report counts every round's rays";
+  EXPECT_EQ(adaptive.image.beauty.size(), 32u * 32u);
+  EXPECT_TRUE(rounds.image.beauty.empty()) << "the image is the report's";
+  EXPECT_EQ(adaptive.samplesPerPixel, 0);
+  EXPECT_TRUE(adaptive.samplingNote.empty()) << "stated, not chosen";
+
+  s.render.sampling = scene::Sampling::Chosen;
+  AdaptiveReport chosenRounds;
+  const RenderReport random = renderPicture(renderer, s, Backend::Cpu, {}, {}, kNoTimeLimit, &chosenRounds);
+  EXPECT_EQ(random.samplesPerPixel, 0);
+  EXPECT_EQ(chosenRounds.rounds, AdaptiveSettings{}.minRounds);
+  EXPECT_EQ(random.samplingNote, "the environment is sampled at random");
+
+  scene::Scene exact = studioBlob(scene::IblMethod::Prefiltered, 1);
+  exact.render.sampling = scene::Sampling::Chosen;
+  const RenderReport pass16 = renderPicture(renderer, exact, Backend::Cpu);
+  EXPECT_EQ(pass16.samplesPerPixel, 16);
+  EXPECT_EQ(pass16.samplingNote, "no light is sampled at random");
+  exact.render.sampling = scene::Sampling::OnePass;
+  exact.render.samplesPerPixel = 16;
+  EXPECT_EQ(renderPicture(renderer, exact, Backend::Cpu).image.beauty, pass16.image.beauty)
+      << "the chosen pass is the stated one";
+}
+
 TEST(AdaptiveRender, EachRoundsPixelsSeeWhatTheImagesPixelsSee) {
   scene::Scene s = studioBlob(scene::IblMethod::Sampled, 1);
   s.render.width = 48;

@@ -137,14 +137,14 @@ TEST(LightTransport, AStatedPrefilteredEnvironmentKeepsDirectLightAndSaysWhichOp
 
 TEST(LightTransport, ParityStatesWhatWasUnsaid) {
   Scene s = torus();
-  stateLightTransport(s);
+  leaveNothingToChoose(s);
   EXPECT_TRUE(s.render.bouncesStated);
   EXPECT_EQ(s.render.bounces, 0);
   EXPECT_EQ(s.environment->method, IblMethod::Prefiltered);
 
   Scene paths = torus();
   paths.render.bounces = 4;
-  stateLightTransport(paths);
+  leaveNothingToChoose(paths);
   EXPECT_EQ(paths.environment->method, IblMethod::Sampled);  // the stated bounces need it
   EXPECT_TRUE(paths.environment->methodStated);
 }

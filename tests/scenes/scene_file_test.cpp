@@ -119,6 +119,32 @@ TEST_F(SceneFiles, RenderBouncesDefaultToNone) {
             3);
 }
 
+// Unsaid samples are facet's to choose, with the default threshold and cap;
+// spp states one pass, noise_threshold and max_spp state adaptive rounds.
+TEST_F(SceneFiles, UnsaidSamplingIsChosen) {
+  const RenderSettings unsaid = loadScene(write("unsaid.json", R"({"objects": [{"mesh": "ball.obj"}]})")).render;
+  EXPECT_EQ(unsaid.sampling, Sampling::Chosen);
+  EXPECT_EQ(unsaid.noiseThreshold, kDefaultNoiseThreshold);
+  EXPECT_EQ(unsaid.maxSamplesPerPixel, kDefaultMaxSamplesPerPixel);
+  EXPECT_EQ(loadScene(dir_ / "ball.obj").render.sampling, Sampling::Chosen) << "a model file says nothing of it";
+  const RenderSettings pass =
+      loadScene(write("pass.json", R"({"objects": [{"mesh": "ball.obj"}], "render": {"spp": 9}})")).render;
+  EXPECT_EQ(pass.sampling, Sampling::OnePass);
+  EXPECT_EQ(pass.samplesPerPixel, 9);
+  const RenderSettings rounds = loadScene(write("rounds.json", R"({"objects": [{"mesh": "ball.obj"}],
+      "render": {"noise_threshold": 0.01, "max_spp": 1024}})"))
+                                    .render;
+  EXPECT_EQ(rounds.sampling, Sampling::Adaptive);
+  EXPECT_EQ(rounds.noiseThreshold, 0.01);
+  EXPECT_EQ(rounds.maxSamplesPerPixel, 1024);
+  EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj"}], "render": {"spp": 4, "max_spp": 64}})"),
+              AllOf(HasSubstr("render.spp"), HasSubstr("not both")));
+  EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj"}], "render": {"noise_threshold": 0}})"),
+              AllOf(HasSubstr("render.noise_threshold"), HasSubstr("(0, 1]")));
+  EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj"}], "render": {"max_spp": 4}})"),
+              AllOf(HasSubstr("render.max_spp"), HasSubstr("[8, 65536]")));
+}
+
 TEST_F(SceneFiles, ObjectsChooseTheirSubdivision) {
   Scene scene = loadScene(write("schemes.json", R"({"objects": [
       {"mesh": "ball.obj"},

@@ -50,18 +50,21 @@ same_pixels keys_2.exr keys_alone.exr || fail "keyed frame 2 alone differs from 
 same_pixels keys_1.exr keys_2.exr && fail "the keyed camera does not move"
 
 "$facet" render "$ball" --size 40x34 --backend cpu --crop 0,17,40,34 --frames 0-1 --turntable 4 -o 'json_#.exr' --png 'json_#.png' \
-  --json >summary.json
+  --noise-threshold 0.05 --json >summary.json
 python3 - summary.json <<'PY' || fail "render --json is not the documented summary"
 import json, sys
 s = json.load(open(sys.argv[1]))
-assert s["backend"] == "cpu" and s["width"] == 40 and s["height"] == 34 and s["spp"] == 1, s
+assert s["backend"] == "cpu" and s["width"] == 40 and s["height"] == 34 and s["spp"] == "adaptive", s
 assert "CPU reference" in s["adapter"], s["adapter"]
 assert s["peak_resident_bytes"] > 0
 assert [r["frame"] for r in s["renders"]] == [0, 1]
 for r in s["renders"]:
     assert r["crop"] == [0, 17, 40, 34], r["crop"]
     assert r["outputs"] == ["json_%d.exr" % r["frame"], "json_%d.png" % r["frame"]], r["outputs"]
-    assert r["primary_rays"] == 40 * 17 and r["rays_per_second"] > 0
+    a = r["adaptive"]
+    assert a["stop"] == "converged" and a["max_tile_error"] <= a["noise_threshold"] == 0.05, a
+    assert 16 <= a["spp_min"] <= a["spp_mean"] <= a["spp_max"] <= 256 and a["rounds"] >= 4, a
+    assert a["samples"] == 40 * 17 * a["spp_mean"] <= r["primary_rays"] and r["rays_per_second"] > 0
     assert set(r["stages_ms"]) == {"refine + BVH", "environment", "trace + shade"} and r["wall_ms"] > 0
     assert r["gpu_bytes"] == 0
 PY
