@@ -53,15 +53,24 @@ struct Outputs {
   bool alpha = false;
 };
 
+// Both files as a set, as the command line writes them: neither is
+// replaced unless both can be.
 void writeOutputs(const Outputs& o, const facet::RenderResult& result, const facet::Scene& scene,
                   const facet::RenderSettings& settings) {
-  if (o.exr) facet::writeExr(*o.exr, result, scene, settings, {o.aovs, o.half});
-  if (!o.png) return;
+  const facet::ExrSettings exr{o.aovs, o.half};
+  if (!o.png) {
+    if (o.exr) facet::writeExr(*o.exr, result, scene, settings, exr);
+    return;
+  }
   const facet::ToneCurve curve = choice<facet::ToneCurve>(o.tonemap, "tonemap",
                                                           {{"pbr-neutral", facet::ToneCurve::PbrNeutral},
                                                            {"aces", facet::ToneCurve::Aces},
                                                            {"clamp", facet::ToneCurve::Clamp}});
-  facet::writePng(*o.png, result.image, {o.exposure, curve, o.background, o.alpha});
+  const facet::PngSettings png{o.exposure, curve, o.background, o.alpha};
+  if (o.exr)
+    facet::writeExrAndPng(*o.exr, *o.png, result, scene, settings, exr, png);
+  else
+    facet::writePng(*o.png, result.image, png);
 }
 
 py::dict renderDict(facet::Renderer& renderer, const py::object& sceneOrPath, const facet::RenderSettings& settings,

@@ -224,6 +224,7 @@ void runWatch(const RenderCommandOptions& o) {
     return scene;
   };
   watched.write = [&](const scene::Scene& scene, const Image& image, int passes, int samples) {
+    checkOutputs(job, o);  // again before each write: an output may have become a link meanwhile
     writeOutputs(o, job, scene, image, PixelRect::whole(image.width, image.height), preview,
                  " watchPasses=" + std::to_string(passes) + " watchSpp=" + std::to_string(samples));
   };

@@ -86,9 +86,14 @@ void applySceneOverrides(const SceneOverrides& o, scene::Scene& scene) {
   if (o.glossyBounces) scene.render.glossyBounces = *o.glossyBounces;
   if (o.transmissionBounces) scene.render.transmissionBounces = *o.transmissionBounces;
   applyEnvironmentOverrides(o, scene);
-  if (scene::bouncesContradictEnvironment(scene.render, scene.environment))
-    throw std::invalid_argument("bounces " + std::to_string(scene.render.bounces) + " (--bounces or the scene's " +
-                                "render.bounces): " + scene::kBouncesNeedOcclusionRule);
+  if (scene::bouncesContradictEnvironment(scene.render, scene.environment)) {
+    // Named by the flags that set them, so a command without --bounces (preview) names what it has.
+    const std::string bounces = std::to_string(scene.render.bounces);
+    const std::string given = (o.bounces ? "--bounces " + bounces : "the scene's render.bounces " + bounces) +
+                              (o.ibl.empty() ? "" : " with --ibl " + o.ibl) +
+                              (o.occlusion.empty() ? "" : " with --occlusion " + o.occlusion);
+    throw std::invalid_argument(given + ": " + scene::kBouncesNeedOcclusionRule);
+  }
   applyEnergyCompensation(o.energyCompensation, scene);
 }
 

@@ -38,6 +38,14 @@ void writeExr(const std::string& path, const RenderResult& result, const Scene& 
               const RenderSettings& settings = {}, const ExrSettings& exr = {});
 void writePng(const std::string& path, const Image& image, const PngSettings& png = {});
 
+// Both files of one render, as `facet render -o a.exr --png b.png` writes
+// them: every path and setting checked first, then the two replaced
+// together, or neither where either cannot be written (OutputFailed, with
+// both files as they were).
+void writeExrAndPng(const std::string& exrPath, const std::string& pngPath, const RenderResult& result,
+                    const Scene& scene, const RenderSettings& settings = {}, const ExrSettings& exr = {},
+                    const PngSettings& png = {});
+
 }  // namespace v0
 
 #ifndef FACET_IMPLEMENTATION

@@ -95,4 +95,37 @@ TEST_F(ApiOutput, BadImagesAndSettingsAreRefusedWithNothingWritten) {
   refused([&] { facet::writeExr(exr, result, scene, smallOnCpu()); }, facet::ErrorKind::BadInput, "no AOV named 'uv'");
 }
 
+// As the command line writes -o and --png: both replaced, or neither where
+// either cannot be written.
+TEST_F(ApiOutput, BothFilesAreReplacedTogetherOrNeither) {
+  const facet::Scene scene = facet::loadScene(kScene);
+  facet::Renderer renderer;
+  const facet::RenderResult result = renderer.render(scene, smallOnCpu());
+  const fs::path exr = folder_ / "keep.exr", png = folder_ / "keep.png";
+  std::ofstream(exr) << "an earlier EXR";
+  std::ofstream(png) << "an earlier PNG";
+  const auto refused = [&](const fs::path& pngPath, const std::string& expected) {
+    try {
+      facet::writeExrAndPng(exr.string(), pngPath.string(), result, scene, smallOnCpu());
+      ADD_FAILURE() << "nothing refused; expected " << expected;
+    } catch (const facet::Error& e) {
+      EXPECT_EQ(e.kind(), facet::ErrorKind::OutputFailed) << e.what();
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(bytesOf(exr), "an earlier EXR") << "the EXR was replaced although the PNG could not be written";
+    EXPECT_EQ(bytesOf(png), "an earlier PNG");
+  };
+  refused(folder_ / "no_such_folder" / "keep.png", "pngPath");
+  fs::create_hard_link(exr, folder_ / "link.png");
+  refused(folder_ / "link.png", "names the same file as exrPath");
+  refused(folder_ / "keep.jpg", ".png");
+
+  facet::writeExrAndPng(exr.string(), png.string(), result, scene, smallOnCpu());
+  const fs::path alone = folder_ / "alone.exr", alonePng = folder_ / "alone.png";
+  facet::writeExr(alone.string(), result, scene, smallOnCpu());
+  facet::writePng(alonePng.string(), result.image);
+  EXPECT_EQ(bytesOf(exr), bytesOf(alone));
+  EXPECT_EQ(bytesOf(png), bytesOf(alonePng));
+}
+
 }  // namespace

@@ -102,6 +102,12 @@ class Render(unittest.TestCase):
             for kind in ("exr", "png"):
                 self.assertEqual((WORK / f"api.{kind}").read_bytes(), (WORK / f"cli.{kind}").read_bytes(),
                                  f"{scene.name} {kind}")
+        # Written as a set: a PNG that cannot be written leaves the EXR as it was.
+        (WORK / "keep.exr").write_bytes(b"an earlier EXR")
+        with self.assertRaisesRegex(facet.Error, "pngPath '.*no_such_folder/keep.png'"):
+            self.renderer.render(str(EXAMPLES / "gold_cube.gltf"), size=(8, 8), backend="cpu", spp=1,
+                                 exr=str(WORK / "keep.exr"), png=str(WORK / "no_such_folder" / "keep.png"))
+        self.assertEqual((WORK / "keep.exr").read_bytes(), b"an earlier EXR")
         with self.assertRaisesRegex(facet.Error, "tonemap 'filmic': expected one of: pbr-neutral, aces, clamp"):
             self.renderer.render(str(scene), size=(8, 8), backend="cpu", png=str(WORK / "bad.png"), tonemap="filmic")
         self.assertFalse((WORK / "bad.png").exists())

@@ -6,7 +6,8 @@
 #   - a broken material file: an error line, the process still running and
 #     the picture untouched; fixed (blue), it renders again;
 #   - SIGTERM: exit 0, the outputs complete, no temporaries;
-#   - --watch-limit ends it by itself; --watch with --frames,
+#   - --watch-limit ends it by itself; an output swapped for a symbolic
+#     link is refused before the next write; --watch with --frames,
 #     --watch-limit without --watch, and a scene broken from the start are
 #     refused.
 # No wait decides the result by how long it took: each waits for its event
@@ -106,6 +107,22 @@ wait $pid || status=$?
 pid=
 [ $status -eq 0 ] || fail "--watch-limit 1: exit status $status after one change, expected 0 (137: it did not end)"
 [ ! -s log.txt ] || fail "--quiet printed: $(cat log.txt)"
+
+# An output swapped for a symbolic link while the watch runs: the next write
+# is refused (exit 2) and the link's target is kept.
+"$facet" render scene.json --watch --watch-passes 1 -o link.png --quiet >log.txt 2>err.txt &
+pid=$!
+watchdog $pid
+await '[ -f link.png ]' || fail "no first picture before the output became a link"
+echo "not a picture" >target.txt
+ln -sf target.txt link.png
+material "0.3, 0.3, 0.6"
+status=0
+wait $pid || status=$?
+pid=
+[ $status -eq 2 ] || fail "an output swapped for a link: exit status $status, expected 2"
+grep -q "facet: error: -o '.*link.png': .*symbolic link" err.txt || fail "an output swapped for a link: $(cat err.txt)"
+[ "$(cat target.txt)" = "not a picture" ] || fail "the watch wrote through a symbolic link"
 
 # Refusals, one line each.
 refused() {
