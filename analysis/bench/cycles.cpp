@@ -133,16 +133,11 @@ RenderReport renderPreview(Renderer& renderer, scene::Scene scene, scene::IblMet
 // gets the image of the largest sample count.
 std::vector<Point> cyclesPoints(const fs::path& directory, const Sizes& sizes, const Image& reference,
                                 Image& converged) {
-  const std::map<int, double> seconds = peers::readCyclesTimes(directory / "cycles_times.csv");
+  const std::map<int, double> seconds =
+      peers::readCyclesTimes(directory / "cycles_times.csv", sizes.cyclesSamples);
   std::vector<Point> points;
   for (int samples : sizes.cyclesSamples) {
-    const Image written = readExr(directory / ("cycles_" + std::to_string(samples) + "spp.exr"));
-    if (written.width != reference.width || written.height != reference.height)
-      throw std::runtime_error("cycles: Cycles' image is not " + std::to_string(sizes.size) + " square");
-    // Cycles writes beauty alone; its surface is facet's, so the reference's
-    // AOVs (coverage, depth, normals) stand for its own.
-    converged = reference;
-    converged.beauty = written.beauty;
+    converged = peers::readCyclesImage(directory / ("cycles_" + std::to_string(samples) + "spp.exr"), reference);
     points.push_back(
         {"Cycles", samples, 1000 * seconds.at(samples), compareToReference(converged, reference).relativeRmse});
     std::printf("  cycles %4d spp          %9.1f ms  relative RMSE %.3g\n", samples, points.back().milliseconds,

@@ -121,17 +121,6 @@ std::pair<Image, Image> facetHalves(Renderer& renderer, const scene::Scene& scen
   return {halves[0], halves[1]};
 }
 
-// Cycles writes beauty alone; its surfaces are facet's, so the reference's
-// AOVs (coverage above all) stand for its own.
-Image cyclesImage(const fs::path& exr, const Image& reference) {
-  const Image written = readExr(exr);
-  if (written.width != reference.width || written.height != reference.height)
-    throw std::runtime_error("bounces: " + exr.string() + " is not the size facet rendered");
-  Image image = reference;
-  image.beauty = written.beauty;
-  return image;
-}
-
 // One scale of the comparison.
 struct Difference {
   double relativeRmse;  // facet's converged image against Cycles'
@@ -205,8 +194,9 @@ void runCyclesPaths(Renderer& renderer, const BenchOptions& options, Report& rep
                                  sizes.cyclesConverged};
     peers::renderInCycles(peer->blender, peer->script, peers::describeForCycles(c.scene, directory), renders,
                           directory);
-    const std::pair<Image, Image> cycles{cyclesImage(directory / "cycles_converged_seed1.exr", facetConverged),
-                                         cyclesImage(directory / "cycles_converged_seed2.exr", facetConverged)};
+    const std::pair<Image, Image> cycles{
+        peers::readCyclesImage(directory / "cycles_converged_seed1.exr", facetConverged),
+        peers::readCyclesImage(directory / "cycles_converged_seed2.exr", facetConverged)};
     const float exposure = middleGreyExposure(facetConverged);
     writePng(directory / "facet.png", facetConverged, exposure);
     writePng(directory / "cycles.png", average(cycles.first, cycles.second), exposure);
@@ -226,10 +216,12 @@ void runCyclesPaths(Renderer& renderer, const BenchOptions& options, Report& rep
     if (!c.timed) continue;
 
     // Time to Cycles' error, both against facet's converged image.
-    const std::map<int, double> seconds = peers::readCyclesTimes(directory / "cycles_times.csv");
+    const std::map<int, double> seconds =
+        peers::readCyclesTimes(directory / "cycles_times.csv", sizes.cyclesSamples);
     std::vector<std::vector<Point>> curves(1);
     for (int n : sizes.cyclesSamples) {
-      const Image image = cyclesImage(directory / ("cycles_" + std::to_string(n) + "spp.exr"), facetConverged);
+      const Image image =
+          peers::readCyclesImage(directory / ("cycles_" + std::to_string(n) + "spp.exr"), facetConverged);
       curves[0].push_back({"Cycles", n, 1000 * seconds.at(n), compareToReference(image, facetConverged).relativeRmse});
     }
     const std::vector<std::vector<Point>> facetCurves =

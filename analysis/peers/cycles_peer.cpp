@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -17,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/timing.h"
+#include "engine/image/exr_file.h"
 #include "rules/rules.h"
 
 extern char** environ;
@@ -44,8 +46,12 @@ void runLogged(const std::vector<std::string>& argv, const fs::path& log) {
   if (spawnError != 0) throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(spawnError));
   int status = 0;
   waitpid(pid, &status, 0);
+  if (WIFSIGNALED(status))
+    throw std::runtime_error(argv[0] + " was ended by signal " + std::to_string(WTERMSIG(status)) + "; see " +
+                             log.string());
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw std::runtime_error(argv[0] + " failed (status " + std::to_string(status) + "); see " + log.string());
+    throw std::runtime_error(argv[0] + " exited with status " + std::to_string(WEXITSTATUS(status)) + "; see " +
+                             log.string());
 }
 
 void writeObj(const fs::path& path, const scene::ControlCage& cage) {
@@ -183,7 +189,7 @@ void renderInCycles(const fs::path& blender, const fs::path& script, const fs::p
             directory / "blender.log");
 }
 
-std::map<int, double> readCyclesTimes(const fs::path& csv) {
+std::map<int, double> readCyclesTimes(const fs::path& csv, const std::vector<int>& samples) {
   std::ifstream in(csv);
   std::map<int, std::vector<double>> runs;
   std::string line;
@@ -191,8 +197,30 @@ std::map<int, double> readCyclesTimes(const fs::path& csv) {
   for (int samples; std::getline(in, line);)
     if (double seconds; std::sscanf(line.c_str(), "%d,%lf", &samples, &seconds) == 2) runs[samples].push_back(seconds);
   std::map<int, double> medians;
-  for (const auto& [samples, seconds] : runs) medians[samples] = analysis::median(seconds);
+  for (const auto& [count, seconds] : runs) medians[count] = analysis::median(seconds);
+  for (int count : samples)
+    if (!medians.count(count))
+      throw std::runtime_error(csv.string() + ": no time for Cycles' render at " + std::to_string(count) +
+                               " samples; see blender.log beside it");
   return medians;
+}
+
+Image readCyclesImage(const fs::path& exr, const Image& reference) {
+  const Image written = readExr(exr);
+  if (written.width != reference.width || written.height != reference.height)
+    throw std::runtime_error(exr.string() + ": Cycles' image is " + std::to_string(written.width) + " x " +
+                             std::to_string(written.height) + ", facet rendered " + std::to_string(reference.width) +
+                             " x " + std::to_string(reference.height));
+  const auto broken = std::count_if(written.beauty.begin(), written.beauty.end(), [](const glm::vec4& p) {
+    return !std::isfinite(p.r) || !std::isfinite(p.g) || !std::isfinite(p.b);
+  });
+  if (broken > 0)
+    throw std::runtime_error(exr.string() + ": " + std::to_string(broken) +
+                             " of Cycles' pixels are not finite (NaN or infinite): its render failed, and is not "
+                             "measured; see blender.log beside it");
+  Image image = reference;
+  image.beauty = written.beauty;
+  return image;
 }
 
 }  // namespace facet::peers

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/image/image.h"
 #include "scenes/scene.h"
 
 namespace facet::peers {
@@ -48,7 +49,14 @@ void renderInCycles(const std::filesystem::path& blender, const std::filesystem:
                     const std::filesystem::path& description, const CyclesRenders& renders,
                     const std::filesystem::path& directory);
 
-// Per sample count, the median of Cycles' timed render calls (seconds).
-std::map<int, double> readCyclesTimes(const std::filesystem::path& csv);
+// Per sample count, the median of Cycles' timed render calls (seconds);
+// throws naming the file where a count of `samples` has no time.
+std::map<int, double> readCyclesTimes(const std::filesystem::path& csv, const std::vector<int>& samples);
+
+// Cycles' image at `exr`, which holds beauty alone: its surfaces are
+// facet's, so the `reference`'s AOVs (coverage, depth, normals) stand for
+// its own. Throws where it is not the reference's size or holds a pixel that
+// is not finite: a render that failed is never measured.
+Image readCyclesImage(const std::filesystem::path& exr, const Image& reference);
 
 }  // namespace facet::peers
