@@ -65,14 +65,15 @@ struct AdaptiveReport {
 };
 
 // Renders `scene` (its size; its spp and seed are the rounds') by rounds,
-// telling `progress` the share of tiles finished after each,
-// over `options.crop` of the image where given: its tiles start at the
+// telling `progress` after each the share of tiles finished. With
+// `options.crop`, over that part of the image only: its tiles start at the
 // crop's corner, so a crop on the tiles' lines renders the whole image's
-// pixels there. With `ground` (scenes/ground_plane.h, of the same camera and size), each
-// round renders its two scenes over the same pixels too; the rounds stop on
-// the model's noise, and the beauty is the shadow catcher's composite of the
-// three renders' means (engine/image/catcher_composite.h).
-// Throws std::invalid_argument for settings that break the rules above.
+// pixels there. With `ground` (scenes/ground_plane.h, of the same camera
+// and size, the whole image), each round renders its two scenes over the
+// same pixels too; the rounds stop on the model's noise, and the beauty is
+// the shadow catcher's composite of the three renders' means
+// (engine/image/catcher_composite.h). Throws std::invalid_argument for
+// settings that break the rules above, or a crop outside the image.
 AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Backend backend,
                               const AdaptiveSettings& settings, const RenderOptions& options = {},
                               const std::function<void(double)>& progress = {},
