@@ -30,9 +30,9 @@ OutputFile exrOutput(const std::string& flag, const std::string& path, const fac
   // the choice follows from the scene and the settings alone, and changes
   // the record only where the render's bounces differ or its paths sample
   // an unsaid environment; the sampling follows from the light transport.
-  if (result.bounces != rendered.render.bounces ||
-      (result.bounces > 0 && scene::leavesLightTransportUnsaid(rendered)))
-    rendered = scene::withLightTransport(rendered, scene::chooseLightTransport(rendered, scene::buildGeometry(rendered)));
+  if (result.bounces != rendered.render.bounces || (result.bounces > 0 && scene::leavesLightTransportUnsaid(rendered)))
+    rendered =
+        scene::withLightTransport(rendered, scene::chooseLightTransport(rendered, scene::buildGeometry(rendered)));
   scene::chooseSampling(rendered);
   if (image.width != rendered.render.width || image.height != rendered.render.height)
     throw Error(ErrorKind::BadInput, "image: " + std::to_string(image.width) + " x " + std::to_string(image.height) +
@@ -88,8 +88,7 @@ void writeExrAndPng(const std::string& exrPath, const std::string& pngPath, cons
     const facet::Image image = engineImage(result.image);
     const OutputFile exrOutputFile = exrOutput("exrPath", exrPath, image, result, scene, settings, exr);
     const OutputFile pngOutputFile = pngOutput("pngPath", pngPath, image, png);
-    if (namesSameFile(exrPath, pngPath))
-      throw OutputError("pngPath '" + pngPath + "': names the same file as exrPath");
+    if (namesSameFile(exrPath, pngPath)) throw OutputError("pngPath '" + pngPath + "': names the same file as exrPath");
     writeAllOrNothing({exrOutputFile, pngOutputFile});
   });
 }

@@ -23,8 +23,10 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 
 void checkSettings(const AdaptiveSettings& s) {
   if (!scene::validNoiseThreshold(s.noiseThreshold))
-    throw std::invalid_argument("noise threshold " + std::to_string(s.noiseThreshold) + ": " + scene::kNoiseThresholdRule);
-  if (!scene::validMaxSpp(s.maxSpp)) throw std::invalid_argument("max spp " + std::to_string(s.maxSpp) + ": " + scene::kMaxSppRule);
+    throw std::invalid_argument("noise threshold " + std::to_string(s.noiseThreshold) + ": " +
+                                scene::kNoiseThresholdRule);
+  if (!scene::validMaxSpp(s.maxSpp))
+    throw std::invalid_argument("max spp " + std::to_string(s.maxSpp) + ": " + scene::kMaxSppRule);
   if (s.timeLimitSeconds != kNoTimeLimit && !validTimeLimit(s.timeLimitSeconds))
     throw std::invalid_argument("time limit " + std::to_string(s.timeLimitSeconds) + ": " + kTimeLimitRule);
   if (s.roundSpp < 1 || !scene::isSquare(s.roundSpp) || s.minRounds < 2 || s.tileSize < 1)
@@ -72,7 +74,9 @@ std::vector<RoundWindow> roundWindows(const TileGrid& grid, const std::vector<in
 }
 
 // `rect` moved by (dx, dy).
-PixelRect moved(const PixelRect& rect, int dx, int dy) { return {rect.x0 + dx, rect.y0 + dy, rect.x1 + dx, rect.y1 + dy}; }
+PixelRect moved(const PixelRect& rect, int dx, int dy) {
+  return {rect.x0 + dx, rect.y0 + dy, rect.x1 + dx, rect.y1 + dy};
+}
 
 // Round `round` of `scene` over `window` of the full image.
 RenderReport renderRound(Renderer& renderer, const scene::Scene& scene, int round, const PixelRect& window,

@@ -92,7 +92,8 @@ PreviewSheet PreviewStage::render(Renderer& renderer, int frame, const PreviewPr
   for (std::size_t i = 0; i < scenes_.size(); ++i) {
     scene::Scene scene = scenes_[i];
     scene.camera = camera;
-    PreviewPicture picture{labels_[i], frame,
+    PreviewPicture picture{labels_[i],
+                           frame,
                            renderAdaptive(renderer, scene, settings_.backend, settings_.adaptive,
                                           {std::nullopt, settings_.threads}, {}, ground ? &*ground : nullptr),
                            {}};

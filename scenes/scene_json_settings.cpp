@@ -15,14 +15,15 @@
 namespace facet::scene::detail {
 
 void readRender(const Field& f, RenderSettings& r) {
-  f.object({"width", "height", "spp", "noise_threshold", "max_spp", "bounces", "diffuse_bounces", "glossy_bounces", "transmission_bounces", "method",
-            "tess_level", "pixel_tolerance"});
+  f.object({"width", "height", "spp", "noise_threshold", "max_spp", "bounces", "diffuse_bounces", "glossy_bounces",
+            "transmission_bounces", "method", "tess_level", "pixel_tolerance"});
   if (f.has("width")) r.width = f["width"].integer(1, 16384);
   if (f.has("height")) r.height = f["height"].integer(1, 16384);
   if (f.has("spp")) {
     if (f.has("noise_threshold") || f.has("max_spp"))
-      f["spp"].fail("give spp (one pass of that many samples) or noise_threshold and max_spp (adaptive rounds), "
-                    "not both");
+      f["spp"].fail(
+          "give spp (one pass of that many samples) or noise_threshold and max_spp (adaptive rounds), "
+          "not both");
     r.samplesPerPixel = f["spp"].integer(1, 4096);
     if (!isSquare(r.samplesPerPixel)) f["spp"].fail(kSamplesPerPixelRule);
     r.sampling = Sampling::OnePass;

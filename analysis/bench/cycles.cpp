@@ -133,8 +133,7 @@ RenderReport renderPreview(Renderer& renderer, scene::Scene scene, scene::IblMet
 // gets the image of the largest sample count.
 std::vector<Point> cyclesPoints(const fs::path& directory, const Sizes& sizes, const Image& reference,
                                 Image& converged) {
-  const std::map<int, double> seconds =
-      peers::readCyclesTimes(directory / "cycles_times.csv", sizes.cyclesSamples);
+  const std::map<int, double> seconds = peers::readCyclesTimes(directory / "cycles_times.csv", sizes.cyclesSamples);
   std::vector<Point> points;
   for (int samples : sizes.cyclesSamples) {
     converged = peers::readCyclesImage(directory / ("cycles_" + std::to_string(samples) + "spp.exr"), reference);

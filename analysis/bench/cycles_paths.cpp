@@ -216,8 +216,7 @@ void runCyclesPaths(Renderer& renderer, const BenchOptions& options, Report& rep
     if (!c.timed) continue;
 
     // Time to Cycles' error, both against facet's converged image.
-    const std::map<int, double> seconds =
-        peers::readCyclesTimes(directory / "cycles_times.csv", sizes.cyclesSamples);
+    const std::map<int, double> seconds = peers::readCyclesTimes(directory / "cycles_times.csv", sizes.cyclesSamples);
     std::vector<std::vector<Point>> curves(1);
     for (int n : sizes.cyclesSamples) {
       const Image image =

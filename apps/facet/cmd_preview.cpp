@@ -95,8 +95,7 @@ void runPreview(const PreviewStageFlags& f) {
                             {"ground", settings.ground}, {"renders", nlohmann::json::array()}};
   const auto progress = [&](const PreviewPicture& picture) {
     summary["adapter"] = picture.report.render.device;
-    summary["renders"].push_back(
-        renderJson(picture.label, picture.frame, picture.report));
+    summary["renders"].push_back(renderJson(picture.label, picture.frame, picture.report));
     if (!f.quiet && !f.json) printRender(summary["renders"].back(), stage.turntable());
   };
   writePreviewStage(renderer, stage, written, f.fps, path, progress);

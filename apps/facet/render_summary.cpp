@@ -132,10 +132,14 @@ void printSummary(const scene::Scene& scene, const RenderReport& report, const A
 
 nlohmann::json adaptiveJson(const AdaptiveReport& r) {
   const auto [fewest, most] = std::minmax_element(r.tileSpp.begin(), r.tileSpp.end());
-  return {{"rounds", r.rounds},         {"samples", r.samples},
-          {"spp_mean", r.sppMean},      {"spp_min", *fewest},
-          {"spp_max", *most},           {"max_tile_error", r.maxError},
-          {"noise_threshold", r.noiseThreshold}, {"stop", toString(r.stop)}};
+  return {{"rounds", r.rounds},
+          {"samples", r.samples},
+          {"spp_mean", r.sppMean},
+          {"spp_min", *fewest},
+          {"spp_max", *most},
+          {"max_tile_error", r.maxError},
+          {"noise_threshold", r.noiseThreshold},
+          {"stop", toString(r.stop)}};
 }
 
 nlohmann::json renderJson(const RenderReport& report, const AdaptiveReport* adaptive, const RenderJob& job,
