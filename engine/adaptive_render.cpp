@@ -33,44 +33,15 @@ void checkSettings(const AdaptiveSettings& s) {
     throw std::invalid_argument("adaptive rounds need a square spp, two rounds or more and a positive tile size");
 }
 
-// What a round renders in one render: a rectangle of the grid's pixels and
-// the active tiles inside it.
-struct RoundWindow {
-  PixelRect pixels;
-  std::vector<int> tiles;
-};
-
-// The windows of a round over the `active` tiles (in the grid's order): the
-// active tiles of each row of tiles spanned by one rectangle, and
-// neighbouring rows joined where their union renders at most a quarter more
-// pixels than they hold. The first round is one window, the whole image;
-// later ones render little that has already stopped, in few renders.
-std::vector<RoundWindow> roundWindows(const TileGrid& grid, const std::vector<int>& active) {
-  std::vector<RoundWindow> rows;
-  for (int t : active) {
-    const PixelRect tile = grid.tile(t);
-    if (!rows.empty() && rows.back().pixels.y0 == tile.y0) {
-      rows.back().pixels.x1 = tile.x1;
-      rows.back().tiles.push_back(t);
-    } else {
-      rows.push_back({tile, {t}});
-    }
+// The smallest rectangle holding every tile listed.
+PixelRect boundsOf(const TileGrid& grid, const std::vector<int>& tiles) {
+  PixelRect bounds = grid.tile(tiles.front());
+  for (int t : tiles) {
+    const PixelRect r = grid.tile(t);
+    bounds = {std::min(bounds.x0, r.x0), std::min(bounds.y0, r.y0), std::max(bounds.x1, r.x1),
+              std::max(bounds.y1, r.y1)};
   }
-  std::vector<RoundWindow> windows;
-  for (RoundWindow& row : rows) {
-    if (!windows.empty() && windows.back().pixels.y1 == row.pixels.y0) {
-      RoundWindow& last = windows.back();
-      const PixelRect joined{std::min(last.pixels.x0, row.pixels.x0), last.pixels.y0,
-                             std::max(last.pixels.x1, row.pixels.x1), row.pixels.y1};
-      if (4 * joined.pixelCount() <= 5 * (last.pixels.pixelCount() + row.pixels.pixelCount())) {
-        last.pixels = joined;
-        last.tiles.insert(last.tiles.end(), row.tiles.begin(), row.tiles.end());
-        continue;
-      }
-    }
-    windows.push_back(std::move(row));
-  }
-  return windows;
+  return bounds;
 }
 
 // `rect` moved by (dx, dy).
@@ -251,22 +222,20 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
     // rules/sampling/random.h), and its seed are its own, so the rounds'
     // spread is an unbiased estimate of their variance (L'Ecuyer & Lemieux
     // 2002). The first is the scene itself: its centre samples give the AOVs.
-    for (const RoundWindow& window : roundWindows(grid, active)) {
-      // The window's pixels of the full image.
-      RenderReport rendered =
-          renderRound(renderer, round, report.rounds, moved(window.pixels, area.x0, area.y0), backend, threads);
-      // The ground takes the first rounds only: its shadow, averaged over a
-      // window of pixels, is smooth by then, and a tile the model keeps going
-      // (a bright edge, a noisy lobe) does not make it pay three renders a round.
-      if (groundRound && report.rounds < settings.minRounds)
-        addGroundRound(renderer, *groundRound, report.rounds, window.pixels, grid, window.tiles, backend, threads,
-                       groundSums);
-      rounds.add(rendered.image, window.pixels, window.tiles);
-      report.samples += std::uint64_t(settings.roundSpp) * window.pixels.pixelCount();
-      if (report.rounds > 0) {
-        addRoundCost(report.render, rendered);
-        continue;
-      }
+    // The grid's pixels of the round, and the same pixels of the full image.
+    const PixelRect window = boundsOf(grid, active);
+    RenderReport rendered =
+        renderRound(renderer, round, report.rounds, moved(window, area.x0, area.y0), backend, threads);
+    // The ground takes the first rounds only: its shadow, averaged over a
+    // window of pixels, is smooth by then, and a tile the model keeps going
+    // (a bright edge, a noisy lobe) does not make it pay three renders a round.
+    if (groundRound && report.rounds < settings.minRounds)
+      addGroundRound(renderer, *groundRound, report.rounds, window, grid, active, backend, threads, groundSums);
+    rounds.add(rendered.image, window, active);
+    report.samples += std::uint64_t(settings.roundSpp) * window.pixelCount();
+    if (report.rounds > 0) {
+      addRoundCost(report.render, rendered);
+    } else {
       report.render = std::move(rendered);
       if (transport) {
         report.render.lightTransport = *transport;
