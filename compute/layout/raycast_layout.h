@@ -362,7 +362,13 @@ struct FrameParams {
   float upY;
   float upZ;
   float height;
-  uint firstPixel;  // the band of pixels this pass renders
+  // The window of the image a render covers (a crop, or the whole image),
+  // and the band of its pixels this pass renders, counted along the
+  // window's rows (compute/raycast/common/band_pixels.glsl).
+  uint windowX;
+  uint windowY;
+  uint windowWidth;
+  uint firstPixel;
   uint pixelCount;
   uint strata;        // samples per pixel = strata^2
   uint raysPerPixel;  // 1 when strata == 1, else the centre ray plus strata^2

@@ -149,6 +149,9 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   const int width = scene.render.width;
   const PixelRect window = crop.value_or(PixelRect::whole(width, scene.render.height));
   const std::uint64_t pixels = window.pixelCount();
+  frame.windowX = std::uint32_t(window.x0);
+  frame.windowY = std::uint32_t(window.y0);
+  frame.windowWidth = std::uint32_t(window.width());
   const int bounces = scene.render.bounces;
   const std::uint64_t bandPixels = bandPixelCount({frame.raysPerPixel, frame.slotsPerRay, bounces > 0}, pixels,
                                                   kBandBytes, d.limits(), d.adapterInfo().name, bandAdvice(scene));
@@ -171,27 +174,23 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   if (!reused) dice(d, diceK, packed, table, clock);
 
   result.image = Image(window.width(), window.height());
-  std::uint64_t finished = 0;
-  for (const PixelRun& run : pixelRuns(window, width)) {
-    for (std::uint64_t first = run.first, end = run.first + run.count; first < end;) {
-      const std::uint64_t count = std::min(bandPixels, end - first);
-      frame.firstPixel = std::uint32_t(first);
-      frame.pixelCount = std::uint32_t(count);
-      d.queue().writeBuffer(band.frame, 0, &frame, sizeof(frame));
-      const BandCounts counts = traceBand(d, k, table, band, frame, bounces, count * frame.raysPerPixel, count, clock);
-      const std::uint32_t needed = counts.neededFallbacks;
-      if (needed > frame.fallbackCapacity) {
-        frame.fallbackCapacity = needed;
-        band = allocateBands(d, bandPixels, bandPixels * frame.raysPerPixel, frame.slotsPerRay, needed, bounces > 0);
-        table = bindingTable(geometryBuffers, shadingBuffers, band);
-        continue;
-      }
-      readBand(band, first, count, width, window, origin, result.image);
-      addBandCounts(result, counts, count * frame.raysPerPixel);
-      first += count;
-      finished += count;
-      if (progress) progress(double(finished) / double(pixels));
+  for (std::uint64_t first = 0; first < pixels;) {
+    const std::uint64_t count = std::min(bandPixels, pixels - first);
+    frame.firstPixel = std::uint32_t(first);
+    frame.pixelCount = std::uint32_t(count);
+    d.queue().writeBuffer(band.frame, 0, &frame, sizeof(frame));
+    const BandCounts counts = traceBand(d, k, table, band, frame, bounces, count * frame.raysPerPixel, count, clock);
+    const std::uint32_t needed = counts.neededFallbacks;
+    if (needed > frame.fallbackCapacity) {
+      frame.fallbackCapacity = needed;
+      band = allocateBands(d, bandPixels, bandPixels * frame.raysPerPixel, frame.slotsPerRay, needed, bounces > 0);
+      table = bindingTable(geometryBuffers, shadingBuffers, band);
+      continue;
     }
+    readBand(band, first, count, origin, result.image);
+    addBandCounts(result, counts, count * frame.raysPerPixel);
+    first += count;
+    if (progress) progress(double(first) / double(pixels));
   }
   result.gpuBytes = geometryBuffers.bytes + band.bytes;
   const double pipelineMilliseconds = pipelineStageMilliseconds(pipelines_, d);

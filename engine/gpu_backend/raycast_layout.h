@@ -42,5 +42,5 @@ static_assert(sizeof(facet::gpu_layout::HitRecord) == 32);
 static_assert(sizeof(facet::gpu_layout::LightRecord) == 48);
 static_assert(sizeof(facet::gpu_layout::TextureSlotRecord) == 32);
 static_assert(sizeof(facet::gpu_layout::MaterialRecord) == 548);
-static_assert(sizeof(facet::gpu_layout::FrameParams) == 192);
+static_assert(sizeof(facet::gpu_layout::FrameParams) == 204);
 static_assert(sizeof(facet::gpu_layout::PixelAovs) == 64);

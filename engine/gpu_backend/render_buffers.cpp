@@ -225,22 +225,12 @@ BandBuffers allocateBands(gpu::Device& d, std::uint64_t bandPixels, std::uint64_
   return b;
 }
 
-std::vector<PixelRun> pixelRuns(const PixelRect& window, int width) {
-  const auto index = [&](int x, int y) { return std::uint64_t(y) * std::uint64_t(width) + std::uint64_t(x); };
-  if (window.width() == width) return {{index(0, window.y0), window.pixelCount()}};
-  std::vector<PixelRun> runs;
-  for (int y = window.y0; y < window.y1; ++y) runs.push_back({index(window.x0, y), std::uint64_t(window.width())});
-  return runs;
-}
-
-void readBand(BandBuffers& band, std::uint64_t first, std::uint64_t count, int width, const PixelRect& window,
-              const glm::dvec3& origin, Image& image) {
+void readBand(BandBuffers& band, std::uint64_t first, std::uint64_t count, const glm::dvec3& origin, Image& image) {
   const auto pixelAovs = band.aovsHost.mapped<layout::PixelAovs>();
   const auto pixelBeauty = band.beautyHost.mapped<glm::vec4>();
   for (std::uint64_t i = 0; i < count; ++i) {
     const layout::PixelAovs& a = pixelAovs[i];
-    const int x = int((first + i) % std::uint64_t(width)), y = int((first + i) / std::uint64_t(width));
-    const std::size_t p = image.index(x - window.x0, y - window.y0);
+    const std::size_t p = std::size_t(first + i);
     image.beauty[p] = pixelBeauty[i];
     image.depth[p] = a.depth;
     image.position[p] = a.patchId == layout::FACET_NO_HIT

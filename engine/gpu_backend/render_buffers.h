@@ -85,18 +85,9 @@ std::string bandAdvice(const scene::Scene& scene);
 BandBuffers allocateBands(gpu::Device& d, std::uint64_t bandPixels, std::uint64_t bandRays, std::uint32_t slots,
                           std::uint32_t fallbackCapacity, bool paths);
 
-// The runs of consecutive pixels (indices of the full image, the kernels'
-// firstPixel) that cover a window: one run when it spans whole rows, else
-// one per row.
-struct PixelRun {
-  std::uint64_t first, count;
-};
-
-std::vector<PixelRun> pixelRuns(const PixelRect& window, int width);
-
-// A band's pixels, the `count` from full-image pixel `first`, read back into
-// the window's image; positions return to world space in double.
-void readBand(BandBuffers& band, std::uint64_t first, std::uint64_t count, int width, const PixelRect& window,
-              const glm::dvec3& origin, Image& image);
+// A band's pixels, the `count` from the window's pixel `first` along its
+// rows (compute/raycast/common/band_pixels.glsl), read back into the
+// window's image; positions return to world space in double.
+void readBand(BandBuffers& band, std::uint64_t first, std::uint64_t count, const glm::dvec3& origin, Image& image);
 
 }  // namespace facet::gpu_backend

@@ -7,11 +7,12 @@
 #define FACET_RAYCAST_CAMERA_RAYS_GLSL
 
 #include "rules/language.glsl"
+#include "compute/raycast/common/band_pixels.glsl"
 #include "rules/camera/camera.h"
 #include "rules/camera/camera_samples.h"
 
 Ray camera_ray(uint index) {
-  uint pixel = frame.firstPixel + index / frame.raysPerPixel, sampleIndex = index % frame.raysPerPixel;
+  uint pixel = image_pixel(index / frame.raysPerPixel), sampleIndex = index % frame.raysPerPixel;
   // Camera rays are cast only while the frame holds the scene's own seed
   // (band_passes.cpp gives each bounce a vertex seed after them).
   vec2 offset = sample_offset(pixel, sampleIndex, frame.strata, frame.environmentSeed);

@@ -27,6 +27,7 @@ layout(set = 0, binding = 33, std430) writeonly buffer PathRays { PathRayRecord 
 layout(set = 0, binding = 34, std430) readonly buffer LivePaths { uint livePaths[]; };
 
 #include "compute/raycast/common/path_state.glsl"
+#include "compute/raycast/common/band_pixels.glsl"
 
 void main() {
   uint index = invocation_index();
@@ -38,8 +39,7 @@ void main() {
   TransmissionParams transmission;
   if (transmissive) transmission = transmission_params(materials[medium.material]);
   PathSampleKey key =
-      PathSampleKey(frame.firstPixel + path / frame.raysPerPixel, path % frame.raysPerPixel, frame.raysPerPixel,
-                    frame.pathSeed);
+      PathSampleKey(image_pixel(path / frame.raysPerPixel), path % frame.raysPerPixel, frame.raysPerPixel, frame.pathSeed);
   PathCarry carry = PathCarry(path_throughput(state), medium.sigma, path_lobes_taken(state));
   PathStep step = path_step(path_vertex(state, transmissive, transmission), carry, key, frame.pathVertex,
                             LOBE_LIMITS == 1, ivec3(frame.diffuseBounces, frame.glossyBounces, frame.transmissionBounces),

@@ -394,7 +394,7 @@ void main() {
     // of one invocation count against lavapipe's limit of 65535.
     uint first = firstSlot + uint(LIGHT_COUNT);
     if (shaded)
-      shade_environment(first, frame.firstPixel + pixel, sample_index, range.material, s.params, specular_scale,
+      shade_environment(first, image_pixel(pixel), sample_index, range.material, s.params, specular_scale,
                         position, s.n, s.ng, v, s.occlusion);
     else
       for (uint slot = first; slot < firstSlot + frame.slotsPerRay; ++slot) write_unshadowed(slot, vec3(0.0));

@@ -362,6 +362,8 @@ TEST(GpuLayout, GlslLayoutOfTheSharedHeadersIsTheCppLayout) {
   FACET_EXPECT_MEMBER(RenderCounters, liveZ);
   FACET_EXPECT_MEMBER(FallbackRecord, cell);
   FACET_EXPECT_MEMBER(FallbackRecord, tParam);
+  FACET_EXPECT_MEMBER(FrameParams, windowWidth);
+  FACET_EXPECT_MEMBER(FrameParams, firstPixel);
   FACET_EXPECT_MEMBER(FrameParams, fallbackCapacity);
   FACET_EXPECT_MEMBER(FrameParams, patchCount);
   FACET_EXPECT_MEMBER(FrameParams, tolerance);
