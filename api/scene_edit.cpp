@@ -76,7 +76,8 @@ const char* methodName(IblMethod method) {
 // The file is named only when it is not the map the scene holds, which the
 // block then keeps.
 json environmentBlock(const Environment& e, const std::optional<scene::Environment>& current) {
-  json block = {{"intensity", e.intensity}, {"rotation", e.rotationDegrees}, {"samples", e.samples}};
+  json block = {{"intensity", e.intensity}, {"rotation", e.rotationDegrees}};
+  if (e.samples) block["samples"] = *e.samples;
   if (e.method) {
     block["method"] = methodName(*e.method);
     block["occlusion"] = e.occlusion;
@@ -141,7 +142,7 @@ std::optional<Environment> Scene::environment() const {
                      e->intensity,
                      e->rotationDegrees,
                      e->methodStated ? std::optional(method) : std::nullopt,
-                     e->samples,
+                     e->samplesStated ? std::optional(e->samples) : std::nullopt,
                      e->occlusion};
 }
 

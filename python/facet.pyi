@@ -95,10 +95,10 @@ class Environment:
     intensity: float
     rotation: float
     method: Optional[str]  # sampled, prefiltered or filtered; None: chosen, sampled where paths run
-    samples: int
+    samples: Optional[int]  # pairs per camera sample; None: chosen, 16 unless paths run
     occlusion: bool
     def __init__(self, file: Union[str, PathLike[str]], *, intensity: float = 1.0, rotation: float = 0.0,
-                 method: Optional[str] = None, samples: int = 16, occlusion: bool = True) -> None: ...
+                 method: Optional[str] = None, samples: Optional[int] = None, occlusion: bool = True) -> None: ...
     def replace(self, *, file: Optional[Union[str, PathLike[str]]] = None, intensity: Optional[float] = None,
                 rotation: Optional[float] = None, method: Optional[str] = None, samples: Optional[int] = None,
                 occlusion: Optional[bool] = None) -> Environment: ...

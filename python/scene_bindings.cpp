@@ -169,13 +169,13 @@ void bindCamera(py::module_& m) {
 void bindEnvironment(py::module_& m) {
   py::class_<facet::Environment>(m, "Environment",
                                  "An equirectangular .exr or .hdr map, with a scene file's environment fields")
-      .def(py::init([](const py::object& file, double intensity, double rotation, OptText method, int samples,
-                       bool occlusion) {
+      .def(py::init([](const py::object& file, double intensity, double rotation, OptText method,
+                       std::optional<int> samples, bool occlusion) {
              return facet::Environment{fspath(file), intensity, rotation,
                                        method ? std::optional(iblMethod(*method)) : std::nullopt, samples, occlusion};
            }),
            py::arg("file"), py::kw_only(), py::arg("intensity") = 1.0, py::arg("rotation") = 0.0,
-           py::arg("method") = py::none(), py::arg("samples") = 16, py::arg("occlusion") = true)
+           py::arg("method") = py::none(), py::arg("samples") = py::none(), py::arg("occlusion") = true)
       .def_readonly("file", &facet::Environment::file,
                     "The map (a loaded scene's may be the default studio map's name, or empty for a uniform colour)")
       .def_readonly("intensity", &facet::Environment::intensity, "What the map is scaled by")
@@ -186,7 +186,8 @@ void bindEnvironment(py::module_& m) {
             return e.method ? OptText(iblMethodName(*e.method)) : std::nullopt;
           },
           "The lighting method: sampled, prefiltered or filtered; None: chosen, sampled where paths run")
-      .def_readonly("samples", &facet::Environment::samples, "sampled, filtered: pairs per camera sample")
+      .def_readonly("samples", &facet::Environment::samples,
+                    "Sampled, filtered: pairs per camera sample; None: chosen, 16 unless paths run")
       .def_readonly("occlusion", &facet::Environment::occlusion, "sampled, filtered: shadow rays on")
       .def(
           "replace",
@@ -196,7 +197,7 @@ void bindEnvironment(py::module_& m) {
             e.intensity = intensity.value_or(e.intensity);
             e.rotationDegrees = rotation.value_or(e.rotationDegrees);
             if (method) e.method = iblMethod(*method);
-            e.samples = samples.value_or(e.samples);
+            if (samples) e.samples = samples;
             e.occlusion = occlusion.value_or(e.occlusion);
             return e;
           },

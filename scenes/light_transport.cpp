@@ -8,13 +8,19 @@ namespace facet::scene {
 namespace {
 
 LightTransport asStated(const RenderSettings& r) {
-  return {r.bounces, r.diffuseBounces, r.glossyBounces, r.transmissionBounces, false, {}, {}};
+  return {r.bounces, r.diffuseBounces, r.glossyBounces, r.transmissionBounces, false, 0, {}, {}};
 }
 
 std::string bounceLimits(const LightTransport& t) {
   return "paths: " + std::to_string(t.bounces) + " bounces (diffuse " + std::to_string(t.diffuseBounces) +
          ", glossy " + std::to_string(t.glossyBounces) + ", transmission " + std::to_string(t.transmissionBounces) +
          ")";
+}
+
+std::string environmentPairsNote(const LightTransport& t) {
+  if (t.environmentPairs == 0) return "";
+  return " (" + std::to_string(t.environmentPairs) + (t.environmentPairs == 1 ? " pair" : " pairs") +
+         " per camera sample)";
 }
 
 // Unless the scene stated otherwise, a limit of its own per lobe kind.
@@ -68,7 +74,9 @@ LightTransport chooseLightTransport(const Scene& scene, const SceneGeometry& geo
   t.glossyBounces = chosenLimit(scene.render.glossyBounces, kChosenGlossyBounces);
   t.transmissionBounces = chosenLimit(scene.render.transmissionBounces, kChosenTransmissionBounces);
   t.samplesEnvironment = !environmentCarriesPaths(scene);
-  t.note = bounceLimits(t) + (t.samplesEnvironment ? ", environment sampled" : "") + ": " + reach.why;
+  if (scene.environment && !scene.environment->samplesStated) t.environmentPairs = kChosenEnvironmentPairs;
+  t.note = bounceLimits(t) + (t.samplesEnvironment ? ", environment sampled" : "") + environmentPairsNote(t) + ": " +
+           reach.why;
   return t;
 }
 
@@ -97,14 +105,18 @@ bool leavesLightTransportUnsaid(const Scene& scene) {
 Scene withLightTransport(Scene scene, const LightTransport& transport) {
   applyLightTransport(transport, scene);
   scene.render.bouncesStated = true;
-  if (scene.environment) scene.environment->methodStated = true;
+  if (scene.environment) {
+    scene.environment->methodStated = true;
+    scene.environment->samplesStated = true;
+  }
   return scene;
 }
 
 bool changesScene(const LightTransport& t, const Scene& scene) {
   const RenderSettings& r = scene.render;
   return t.bounces != r.bounces || t.diffuseBounces != r.diffuseBounces || t.glossyBounces != r.glossyBounces ||
-         t.transmissionBounces != r.transmissionBounces || t.samplesEnvironment;
+         t.transmissionBounces != r.transmissionBounces || t.samplesEnvironment ||
+         (t.environmentPairs > 0 && t.environmentPairs != scene.environment->samples);
 }
 
 void applyLightTransport(const LightTransport& t, Scene& scene) {
@@ -116,6 +128,7 @@ void applyLightTransport(const LightTransport& t, Scene& scene) {
     scene.environment->method = IblMethod::Sampled;
     scene.environment->occlusion = true;
   }
+  if (t.environmentPairs > 0) scene.environment->samples = t.environmentPairs;
 }
 
 }  // namespace facet::scene

@@ -2,7 +2,8 @@
 // transport chosen by the scene"). Where the scene leaves the bounces unsaid,
 // paths run with Cycles' default limits wherever a continuation can meet a
 // surface, and direct light alone where none can; where they run, an
-// environment whose method is unsaid is sampled with its shadow rays. Stated
+// environment whose method is unsaid is sampled with its shadow rays, and
+// one whose samples are unsaid takes kChosenEnvironmentPairs. Stated
 // settings always win: paths that cannot continue are still cast as none.
 #pragma once
 
@@ -20,6 +21,11 @@ inline constexpr int kChosenBounces = 12;
 inline constexpr int kChosenDiffuseBounces = 4;
 inline constexpr int kChosenGlossyBounces = 4;
 inline constexpr int kChosenTransmissionBounces = 12;
+// The environment's pairs per camera sample where facet chooses paths and
+// nothing said the samples: the split between camera samples and pairs
+// that reached a given error soonest on the bouncing scenes
+// (BENCHMARKS.md, "Environment pairs chosen with the paths").
+inline constexpr int kChosenEnvironmentPairs = 2;
 
 struct LightTransport {
   int bounces = 0;
@@ -27,6 +33,7 @@ struct LightTransport {
   int glossyBounces = -1;
   int transmissionBounces = -1;
   bool samplesEnvironment = false;  // the environment switched to sampled, occlusion on
+  int environmentPairs = 0;         // chosen pairs per camera sample; 0: as the scene has them
   // What was chosen and why, for the summary line ("paths: 12 bounces ...:
   // 'teacup' is concave"); empty where the scene stated it all and nothing
   // was dropped.

@@ -133,6 +133,9 @@ struct Environment {
   // facet samples the environment with its shadow rays
   // (scenes/light_transport.h).
   bool methodStated = true;
+  // False where nothing said the samples: where facet chooses paths, it
+  // chooses the pairs too (scenes/light_transport.h).
+  bool samplesStated = true;
   // Sampled, filtered: which random numbers (rules/environment/sampled_environment.h); renders
   // with different seeds are statistically independent.
   std::uint32_t seed = 0;

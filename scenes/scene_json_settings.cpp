@@ -67,7 +67,7 @@ Environment readEnvironment(const Field& f, const std::filesystem::path& sceneFi
   f.object({"file", "color", "intensity", "rotation", "method", "samples", "occlusion"});
   if (f.has("file") && f.has("color")) f.fail("give exactly one of file (an .exr or .hdr map) and color");
   if (!f.has("file") && !f.has("color") && !start) f.fail("give exactly one of file (an .exr or .hdr map) and color");
-  Environment environment = start.value_or(Environment{.methodStated = false});
+  Environment environment = start.value_or(Environment{.methodStated = false, .samplesStated = false});
   if (f.has("file")) {
     const Field file = f["file"];
     try {
@@ -90,7 +90,10 @@ Environment readEnvironment(const Field& f, const std::filesystem::path& sceneFi
   if (f.has("method"))
     environment.method = f["method"].choice<IblMethod>(
         {{"sampled", IblMethod::Sampled}, {"prefiltered", IblMethod::Prefiltered}, {"filtered", IblMethod::Filtered}});
-  if (f.has("samples")) environment.samples = f["samples"].integer(1, 16384);
+  if (f.has("samples")) {
+    environment.samples = f["samples"].integer(1, 16384);
+    environment.samplesStated = true;
+  }
   if (f.has("occlusion")) environment.occlusion = f["occlusion"].boolean();
   if (f.has("method") || f.has("occlusion")) environment.methodStated = true;
   return environment;

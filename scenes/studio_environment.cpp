@@ -56,6 +56,7 @@ Environment studioEnvironment() {
   Environment environment;
   environment.map = map;
   environment.methodStated = false;
+  environment.samplesStated = false;
   return environment;
 }
 

@@ -37,7 +37,7 @@ glm::dvec3 vector3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
 // environment flags need an environment from either.
 void applyEnvironmentOverrides(const SceneOverrides& o, scene::Scene& scene) {
   if (!o.environment.empty()) {
-    if (!scene.environment) scene.environment = scene::Environment{.methodStated = false};
+    if (!scene.environment) scene.environment = scene::Environment{.methodStated = false, .samplesStated = false};
     scene.environment->map = std::make_shared<const scene::EnvironmentMap>(scene::loadEnvironmentMap(o.environment));
   }
   const bool anyEnvironmentFlag =
@@ -54,7 +54,10 @@ void applyEnvironmentOverrides(const SceneOverrides& o, scene::Scene& scene) {
     e.method = o.ibl == "sampled"    ? scene::IblMethod::Sampled
                : o.ibl == "filtered" ? scene::IblMethod::Filtered
                                      : scene::IblMethod::Prefiltered;
-  if (o.iblSamples) e.samples = *o.iblSamples;
+  if (o.iblSamples) {
+    e.samples = *o.iblSamples;
+    e.samplesStated = true;
+  }
   if (!o.occlusion.empty()) e.occlusion = o.occlusion == "on";
   if (!o.ibl.empty() || !o.occlusion.empty()) e.methodStated = true;
 }
@@ -173,7 +176,8 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& o) {
       ->check(CLI::IsMember({"sampled", "prefiltered", "filtered"}));
   command
       .add_option("--ibl-samples", o.iblSamples,
-                  "Sampled and filtered IBL: sample pairs per camera sample (--spp camera samples per pixel)")
+                  "Sampled and filtered IBL: sample pairs per camera sample (--spp camera samples per pixel); "
+                  "default 16, or 2 where facet chooses paths")
       ->check(CLI::Range(1, 16384));
   command.add_option("--occlusion", o.occlusion, "Sampled and filtered IBL: shadow rays towards the environment")
       ->check(CLI::IsMember({"on", "off"}));

@@ -109,7 +109,9 @@ struct Environment {
   // None: chosen, prefiltered unless paths run, then sampled with occlusion
   // (docs/rendering.md, "Light transport chosen by the scene").
   std::optional<IblMethod> method;
-  int samples = 16;       // sampled: pairs per camera sample
+  // Sampled, filtered: pairs per camera sample. None: chosen, 16 unless
+  // facet chooses paths (docs/rendering.md, "Light transport chosen by the scene").
+  std::optional<int> samples;
   bool occlusion = true;  // sampled, filtered, with a method given
 };
 

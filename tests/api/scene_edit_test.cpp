@@ -189,6 +189,7 @@ TEST(ApiSceneEdit, AChangeIsRefusedWithTheSceneFilesRuleAndLeavesTheSceneAsItWas
   EXPECT_NE(errorOf([&] { scene.setEnvironment(missing); }).find("scene: environment.file: "), std::string::npos);
   ASSERT_TRUE(scene.environment().has_value());
   EXPECT_EQ(scene.environment()->file, map);
+  EXPECT_FALSE(scene.environment()->samples.has_value());  // unsaid: chosen with the paths
 
   EXPECT_NE(errorOf([&] { scene.setMaterial(1, redDiffuse()); }).find("objects[1]: no such object"), std::string::npos);
   EXPECT_EQ(scene.materialName(0), material);

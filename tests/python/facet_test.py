@@ -469,6 +469,11 @@ class ChangedScenes(unittest.TestCase):
         scene.camera = scene.camera.replace(fov=20)
         self.assertEqual(scene.camera.fov, 20)
         self.assertEqual(scene.environment.replace(method="sampled", samples=2).method, "sampled")
+        # Unsaid samples stay unsaid, so that facet chooses them with the paths.
+        self.assertIsNone(scene.environment.samples)
+        self.assertEqual(scene.environment.replace(samples=3).samples, 3)
+        scene.environment = scene.environment.replace(samples=3)
+        self.assertEqual(scene.environment.samples, 3)
         self.assertEqual(facet.Light("spot").replace(outer_cone=60).outer_cone, 60)
         with self.assertRaisesRegex(facet.Error, "method 'cheap': expected one of: prefiltered, sampled, filtered"):
             scene.environment.replace(method="cheap")

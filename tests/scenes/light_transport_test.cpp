@@ -60,13 +60,34 @@ TEST(LightTransport, AConcaveObjectGetsCyclesLimitsAndASampledEnvironment) {
   EXPECT_EQ(t.glossyBounces, kChosenGlossyBounces);
   EXPECT_EQ(t.transmissionBounces, kChosenTransmissionBounces);
   EXPECT_TRUE(t.samplesEnvironment);
+  EXPECT_EQ(t.environmentPairs, kChosenEnvironmentPairs);
   EXPECT_EQ(t.note,
-            "paths: 12 bounces (diffuse 4, glossy 4, transmission 12), environment sampled: 'torus' has holes, handles or open edges");
+            "paths: 12 bounces (diffuse 4, glossy 4, transmission 12), environment sampled (2 pairs per camera "
+            "sample): 'torus' has holes, handles or open edges");
   ASSERT_TRUE(changesScene(t, s));
   applyLightTransport(t, s);
   EXPECT_EQ(s.environment->method, IblMethod::Sampled);
   EXPECT_TRUE(s.environment->occlusion);
+  EXPECT_EQ(s.environment->samples, kChosenEnvironmentPairs);
   EXPECT_TRUE(pathsCountEnvironmentOnce(s.render.bounces, s.environment));
+}
+
+// The pairs are chosen with the paths, and only where nothing said them.
+TEST(LightTransport, StatedEnvironmentSamplesAreKept) {
+  Scene s = torus();
+  s.environment->samples = 5;
+  s.environment->samplesStated = true;
+  const LightTransport t = choose(s);
+  EXPECT_EQ(t.bounces, kChosenBounces);
+  EXPECT_EQ(t.environmentPairs, 0);
+  EXPECT_EQ(t.note.find("per camera sample"), std::string::npos) << t.note;
+  applyLightTransport(t, s);
+  EXPECT_EQ(s.environment->samples, 5);
+
+  Scene stated = withStatedBounces(torus(), 3);
+  const int samples = stated.environment->samples;
+  applyLightTransport(choose(stated), stated);
+  EXPECT_EQ(stated.environment->samples, samples);
 }
 
 TEST(LightTransport, AStatedLobeLimitIsKept) {
@@ -113,7 +134,8 @@ TEST(LightTransport, GlassIsNeverSilentlyBlack) {
   const LightTransport chosen = choose(s);
   EXPECT_EQ(chosen.bounces, kChosenBounces);  // a convex glass cube still bounces: its inside
   EXPECT_EQ(chosen.note,
-            "paths: 12 bounces (diffuse 4, glossy 4, transmission 12), environment sampled: 'glass' transmits");
+            "paths: 12 bounces (diffuse 4, glossy 4, transmission 12), environment sampled (2 pairs per camera "
+            "sample): 'glass' transmits");
   EXPECT_TRUE(chosen.warnings.empty());
 
   s.render.bouncesStated = true;
@@ -154,6 +176,7 @@ TEST(LightTransport, AModelFileLeavesItToChoose) {
   EXPECT_FALSE(s.render.bouncesStated);
   ASSERT_TRUE(s.environment);
   EXPECT_FALSE(s.environment->methodStated);
+  EXPECT_FALSE(s.environment->samplesStated);
 }
 
 // What facet bench and facet ibl-chart measure is what they set.
