@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "engine/image/image_io.h"
+#include "engine/image/output_folder.h"
 
 extern char** environ;
 
@@ -54,9 +55,8 @@ void runGnuplot(std::string script, const std::string& data, const fs::path& out
     throw std::invalid_argument("--out: must end in .svg or .png, got '" + out.string() + "'");
   checkOutputPath("--out", out);
 
-  fs::path work = fs::temp_directory_path() / ("facet-plot-" + std::to_string(getpid()));
-  fs::create_directories(work);
-  fs::path data_file = work / "data.txt", script_file = work / "plot.gp";
+  const ScratchFolder work("--out", "gnuplot's script and data", "plot");
+  fs::path data_file = work.path() / "data.txt", script_file = work.path() / "plot.gp";
   fs::path partial = out;
   partial += ".partial";
   writeWhole(data_file, data);
@@ -73,7 +73,6 @@ void runGnuplot(std::string script, const std::string& data, const fs::path& out
   int spawn_error = posix_spawnp(&pid, "gnuplot", nullptr, nullptr, argv, environ);
   int status = 0;
   if (spawn_error == 0) waitpid(pid, &status, 0);
-  fs::remove_all(work);
   if (spawn_error == ENOENT) throw std::runtime_error("gnuplot not found on PATH; install it (Debian: gnuplot-nox)");
   if (spawn_error != 0) throw std::runtime_error(std::string("cannot start gnuplot: ") + std::strerror(spawn_error));
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !endsAsItMust(partial, out.extension() == ".png")) {

@@ -1,14 +1,12 @@
 #include "engine/preview_stage.h"
 
-#include <unistd.h>
-
-#include <random>
 #include <stdexcept>
 #include <utility>
 
 #include "engine/camera/camera_path.h"
 #include "engine/image/image_io.h"
 #include "engine/image/movie.h"
+#include "engine/image/output_folder.h"
 #include "scenes/input_error.h"
 #include "scenes/scene_file.h"
 #include "scenes/studio_environment.h"
@@ -17,28 +15,6 @@ namespace facet {
 namespace {
 
 namespace fs = std::filesystem;
-
-// A turntable's frames, in a folder of their own that goes when the movie
-// is made or abandoned, whichever way that ends.
-class FrameFolder {
- public:
-  FrameFolder() {
-    std::random_device entropy;
-    path_ =
-        fs::temp_directory_path() / ("facet-preview-" + std::to_string(::getpid()) + "-" + std::to_string(entropy()));
-    fs::create_directory(path_);
-  }
-  ~FrameFolder() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  FrameFolder(const FrameFolder&) = delete;
-  FrameFolder& operator=(const FrameFolder&) = delete;
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
 
 // The model with `reference` on every object, and the material's name.
 std::pair<scene::Scene, std::string> withMaterial(const scene::Scene& model, const std::string& reference) {
@@ -114,7 +90,8 @@ void writePreviewStage(Renderer& renderer, const PreviewStage& stage, const fs::
     writeAllOrNothing({rgbaPngFile(output, layout.width(), layout.height(), sheet.rgba)});
     return;
   }
-  const FrameFolder folder;
+  // The frames go when the movie is made or abandoned, whichever way that ends.
+  const ScratchFolder folder("--movie", "the turntable's frames", "preview");
   for (int frame = 0; frame < stage.frames(); ++frame) {
     const fs::path file = framePath(folder.path(), frame);
     rgbaPngFile(file, layout.width(), layout.height(), stage.render(renderer, frame, progress).rgba).write(file);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 namespace facet {
 
@@ -28,6 +29,27 @@ class StagedOutputFolder {
 
  private:
   std::filesystem::path destination_, staging_;
+};
+
+// A folder of its own in the temporary folder (TMPDIR, else /tmp) for a
+// command's intermediate files (a turntable's frames, gnuplot's script and
+// data): removed with whatever it holds when the command ends, and where a
+// killed run left one of the same kind, by the next run that makes one.
+class ScratchFolder {
+ public:
+  // Throws OutputError "<flag>: cannot make a folder for <what> in the
+  // temporary folder '<folder>' (TMPDIR): <reason>; ..." where the temporary
+  // folder is missing, not a folder or not writable: checked before the
+  // work that fills it.
+  ScratchFolder(const std::string& flag, const std::string& what, const std::string& kind);
+  ~ScratchFolder();
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
 };
 
 }  // namespace facet

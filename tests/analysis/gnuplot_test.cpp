@@ -7,10 +7,12 @@
 #include <stdlib.h>
 
 #include <filesystem>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
 #include "engine/image/image_io.h"
+#include "tests/support/scoped_env.h"
 #include "tests/support/temp_dir.h"
 
 namespace facet::analysis {
@@ -36,16 +38,27 @@ TEST_F(Gnuplot, AQuoteInTheOutputNameRunsNothing) {
 TEST_F(Gnuplot, NamesThatSpellThePlaceholdersAreKeptAsTheyAre) {
   const fs::path folder = dir_ / "DATA OUTPUT";
   fs::create_directories(folder);
-  const char* old = getenv("TMPDIR");
-  const std::string kept = old ? old : "";
-  setenv("TMPDIR", folder.c_str(), 1);
+  const facet::testing::ScopedEnv tmpdir("TMPDIR", folder.string());
   const fs::path out = folder / "OUTPUT DATA.svg";
   EXPECT_NO_THROW(runGnuplot("set output OUTPUT\n" + kLine, kData, out, 200, 120));
-  if (old)
-    setenv("TMPDIR", kept.c_str(), 1);
-  else
-    unsetenv("TMPDIR");
   EXPECT_TRUE(fs::is_regular_file(out));
+  EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()), 1) << "gnuplot's files stayed";
+}
+
+// gnuplot's script and data go to a folder of their own in TMPDIR: an
+// unusable one is one error naming it, before gnuplot runs.
+TEST_F(Gnuplot, AnUnusableTemporaryFolderIsOneErrorNamingIt) {
+  const facet::testing::ScopedEnv tmpdir("TMPDIR", (dir_ / "no_such_folder").string());
+  const fs::path out = dir_ / "chart.svg";
+  try {
+    runGnuplot("set output OUTPUT\n" + kLine, kData, out, 200, 120);
+    ADD_FAILURE() << "no error";
+  } catch (const OutputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "--out: cannot make a folder for gnuplot's script and data in the temporary folder '" +
+                  (dir_ / "no_such_folder").string() + "' (TMPDIR): no such folder; set TMPDIR to a writable folder");
+  }
+  EXPECT_FALSE(fs::exists(out));
 }
 
 TEST_F(Gnuplot, AnImageGnuplotDoesNotFinishIsAnErrorAndNoFile) {

@@ -10,7 +10,8 @@
 #     background right under the ball and leaves the ball and the backdrop
 #     above it as --no-ground renders them;
 #   - one error line for each bad adaptive flag;
-#   - --movie: without ffmpeg on PATH, one error naming it and exit code 2,
+#   - --movie: without ffmpeg on PATH, or with a TMPDIR that cannot hold the
+#     frames, one error naming it and exit code 2,
 #     nothing written; with a fake ffmpeg that records its arguments, the
 #     frames in order, a quoted name written as given; a failing ffmpeg
 #     leaves no movie.
@@ -169,6 +170,18 @@ for i in range(4):
     differences = [float(np.abs(cell - r).mean()) for r in rendered]
     assert int(np.argmin(differences)) == i, (i, differences)
 PY
+# An unusable TMPDIR for the frames: one error naming it, exit code 2, no movie.
+set +e
+TMPDIR=$work/no_such_folder PATH=$work/bin:$PATH preview gold "${common[@]}" --turntable 2 --movie tmpdir.mp4 \
+  --quiet >out.txt 2>err.txt
+code=$?
+set -e
+[ "$code" = 2 ] || fail "a bad TMPDIR: exit code $code: $(cat err.txt)"
+[ "$(wc -l <err.txt)" = 1 ] || fail "a bad TMPDIR: not one line: $(cat err.txt)"
+grep -qF "facet: error: --movie: cannot make a folder for the turntable's frames in the temporary folder \
+'$work/no_such_folder' (TMPDIR): no such folder; set TMPDIR to a writable folder" err.txt ||
+  fail "a bad TMPDIR: $(cat err.txt)"
+[ ! -e tmpdir.mp4 ] || fail "a bad TMPDIR: a movie was written"
 # ffmpeg fails: one error line, exit code 2, no movie and no temporary left.
 set +e
 FAKE_FFMPEG=fail PATH=$work/bin:$PATH preview gold "${common[@]}" --turntable 2 --movie failed.mp4 \

@@ -10,6 +10,8 @@
 #include <iterator>
 #include <string>
 
+#include "engine/image/image_io.h"
+#include "tests/support/scoped_env.h"
 #include "tests/support/temp_dir.h"
 
 namespace facet {
@@ -68,6 +70,47 @@ TEST_F(OutputFolder, AKilledRunsStagingIsRemovedByTheNextRun) {
   StagedOutputFolder folder(out);
   EXPECT_FALSE(fs::exists(orphan));
   EXPECT_TRUE(fs::is_directory(folder.path()));
+}
+
+// A scratch folder goes with its command whatever it holds, and one a
+// killed run left (its process ended) goes with the next of its kind; a
+// running process's and another kind's stay.
+TEST_F(OutputFolder, AScratchFolderLeavesNothingAndClearsWhatAKilledRunLeft) {
+  const facet::testing::ScopedEnv tmpdir("TMPDIR", dir_.string());
+  // pid_max is at most 2^22, so no process has this id.
+  const fs::path killed = dir_ / "facet-preview-4194305-7", running = dir_ / ("facet-preview-1-7"),
+                 other = dir_ / "facet-plot-4194305-7";
+  for (const fs::path& left : {killed, running, other}) fs::create_directories(left / "frames");
+  fs::path made;
+  {
+    const ScratchFolder folder("--movie", "the turntable's frames", "preview");
+    made = folder.path();
+    EXPECT_EQ(made.parent_path(), dir_);
+    std::ofstream(made / "frame_00000.png") << "png";
+    EXPECT_FALSE(fs::exists(killed));
+  }
+  EXPECT_FALSE(fs::exists(made));
+  EXPECT_TRUE(fs::exists(running));
+  EXPECT_TRUE(fs::exists(other));
+}
+
+TEST_F(OutputFolder, AnUnusableTemporaryFolderIsOneErrorNamingItAndWhy) {
+  const fs::path file = dir_ / "a_file";
+  std::ofstream(file) << "x";
+  const std::pair<fs::path, std::string> cases[] = {{dir_ / "no_such_folder", "no such folder"},
+                                                    {file, "it is not a folder"}};
+  for (const auto& [folder, why] : cases) {
+    const facet::testing::ScopedEnv tmpdir("TMPDIR", folder.string());
+    try {
+      const ScratchFolder scratch("--movie", "the turntable's frames", "preview");
+      ADD_FAILURE() << folder << ": no error";
+    } catch (const OutputError& e) {
+      EXPECT_EQ(std::string(e.what()),
+                "--movie: cannot make a folder for the turntable's frames in the temporary "
+                "folder '" +
+                    folder.string() + "' (TMPDIR): " + why + "; set TMPDIR to a writable folder");
+    }
+  }
 }
 
 }  // namespace
