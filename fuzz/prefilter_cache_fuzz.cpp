@@ -20,9 +20,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   settings.levels = 2;
   settings.dfgSize = 2;
   const facet::ibl::ModelPairs models{{0, 4}, {1, 6}};
+  facet::scene::EnvironmentMap map;
+  map.width = 32;
+  map.height = 16;
 
   if (const auto payload = format::unseal(bytes, key)) format::environmentFromPayload(*payload);
-  if (const auto env = format::environmentFromPayload(bytes)) format::environmentFits(*env, models, settings);
+  if (const auto env = format::environmentFromPayload(bytes)) format::environmentFits(*env, map, models, settings);
   if (const auto table = format::tableFromPayload(bytes)) format::tableFits(*table, 0, 4, settings);
   // Whatever a payload holds, sealing it and reading it back gives it again.
   const auto back = format::unseal(format::seal(key, bytes), key);

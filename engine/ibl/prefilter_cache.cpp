@@ -73,7 +73,8 @@ PrefilteredEnvironment cachedPrefilter(const scene::EnvironmentMap& map, const M
   return cached<PrefilteredEnvironment>(
       "prefiltered", keyText(map, models, settings, builder), cache_format::environmentPayload,
       cache_format::environmentFromPayload,
-      [&](const PrefilteredEnvironment& env) { return cache_format::environmentFits(env, models, settings); }, build);
+      [&](const PrefilteredEnvironment& env) { return cache_format::environmentFits(env, map, models, settings); },
+      build);
 }
 
 DfgTable cachedDfgTable(int distribution, int geometry, const PrefilterSettings& settings) {

@@ -6,6 +6,9 @@
 #include <cmath>
 #include <cstring>
 
+#include "engine/ibl/prefilter_steps.h"
+#include "rules/rules.h"
+
 namespace facet::ibl::cache_format {
 
 namespace {
@@ -205,6 +208,24 @@ bool allFinite(const std::vector<float>& values) {
 
 bool levelFits(const RadianceLevel& level) { return std::isfinite(level.alpha) && allFinite(level.rgb); }
 
+bool sized(const RadianceLevel& level, LevelSize size) {
+  return level.width == size.width && level.height == size.height;
+}
+
+// The levels' shape as the prefilter makes it for `map`: a sealed file of
+// another shape (a 1 x 1 level) would light the scene wrongly without a word.
+bool shapeFits(const PrefilteredEnvironment& env, const scene::EnvironmentMap& map, const PrefilterSettings& settings) {
+  if (!sized(env.levels.front(), {map.width, map.height}) || env.levels.front().alpha != 0.0) return false;
+  if (!sized(env.irradianceMap, irradianceMapSize(settings))) return false;
+  for (int i = 1; i < settings.levels; ++i) {
+    const RadianceLevel& level = env.levels[std::size_t(i)];
+    if (!sized(level, prefilteredLevelSize(map, settings, i)) ||
+        level.alpha != rules::f64::prefiltered_level_alpha(i, settings.levels))
+      return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool tableFits(const DfgTable& table, int distribution, int geometry, const PrefilterSettings& settings) {
@@ -212,8 +233,10 @@ bool tableFits(const DfgTable& table, int distribution, int geometry, const Pref
          allFinite(table.scaleBias);
 }
 
-bool environmentFits(const PrefilteredEnvironment& env, const ModelPairs& models, const PrefilterSettings& settings) {
+bool environmentFits(const PrefilteredEnvironment& env, const scene::EnvironmentMap& map, const ModelPairs& models,
+                     const PrefilterSettings& settings) {
   if (env.levels.size() != std::size_t(settings.levels) || env.dfg.size() != models.size()) return false;
+  if (!shapeFits(env, map, settings)) return false;
   for (std::size_t i = 0; i < models.size(); ++i)
     if (!tableFits(env.dfg[i], models[i].first, models[i].second, settings)) return false;
   for (const glm::dvec3& c : env.irradianceSh)

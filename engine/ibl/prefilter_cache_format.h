@@ -34,9 +34,12 @@ std::vector<char> tablePayload(const DfgTable& table);
 std::optional<DfgTable> tableFromPayload(const std::vector<char>& payload);
 
 // Whether what a file held fits the request, as the renderers index it
-// without a check: the table's pair and size, or a level per setting and a
-// table per model pair in request order; finite values everywhere.
+// without a check: the table's pair and size, or the levels the prefilter
+// gives `map` (its size, then each ladder level's size and roughness,
+// prefilter_steps.h), the irradiance map's size and a table per model pair
+// in request order; finite values everywhere.
 bool tableFits(const DfgTable& table, int distribution, int geometry, const PrefilterSettings& settings);
-bool environmentFits(const PrefilteredEnvironment& env, const ModelPairs& models, const PrefilterSettings& settings);
+bool environmentFits(const PrefilteredEnvironment& env, const scene::EnvironmentMap& map, const ModelPairs& models,
+                     const PrefilterSettings& settings);
 
 }  // namespace facet::ibl::cache_format

@@ -128,16 +128,25 @@ TEST_F(PrefilterCache, AChangedValueInsideTheFileIsRebuilt) {
 }
 
 // A whole file whose contents do not fit the request (written by a faulty
-// build: no DFG tables, a NaN texel) is rebuilt, never used.
+// build: no DFG tables, a NaN texel, a level or the irradiance map 1 x 1, a
+// level at another roughness) is rebuilt, never used.
 TEST_F(PrefilterCache, AFileThatDoesNotFitTheRequestIsRebuilt) {
   const PrefilteredEnvironment reference = prefilterOnCpu(map_, models_, settings_);
-  for (int fault = 0; fault < 2; ++fault) {
+  const auto oneTexel = [](RadianceLevel& level) {
+    level.width = level.height = 1;
+    level.rgb.resize(3);
+  };
+  for (int fault = 0; fault < 6; ++fault) {
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     cachedPrefilter(map_, models_, settings_, "cpu", [&] {
       PrefilteredEnvironment broken = reference;
       if (fault == 0) broken.dfg.clear();
       if (fault == 1) broken.levels[1].rgb[4] = std::nanf("");
+      if (fault == 2) oneTexel(broken.levels[2]);
+      if (fault == 3) oneTexel(broken.levels[0]);
+      if (fault == 4) oneTexel(broken.irradianceMap);
+      if (fault == 5) broken.levels[1].alpha = broken.levels[2].alpha;
       return broken;
     });
     builds_ = 0;
