@@ -2,6 +2,7 @@
 #include "facet/render.h"
 
 #include <mutex>
+#include <tuple>
 
 #include "analysis/parity.h"
 #include "api/errors.h"
@@ -23,6 +24,25 @@ const Aov& Image::aov(const std::string& name) const {
   return found->second;
 }
 
+namespace {
+
+// What `facet render --json` says of the sampling (`spp`, `adaptive`, `sampling`).
+SamplingReport samplingReport(const RenderReport& report, const AdaptiveReport& rounds) {
+  SamplingReport s;
+  s.samplesPerPixel = report.samplesPerPixel;
+  s.why = report.samplingNote;
+  if (report.samplesPerPixel > 0) return s;
+  s.rounds = rounds.rounds;
+  s.meanSamplesPerPixel = rounds.sppMean;
+  std::tie(s.fewestSamplesPerPixel, s.mostSamplesPerPixel) = tileSppRange(rounds);
+  s.noise = rounds.maxError;
+  s.noiseThreshold = rounds.noiseThreshold;
+  s.stop = toString(rounds.stop);
+  return s;
+}
+
+}  // namespace
+
 struct Renderer::State {
   explicit State(const std::string& adapter) : engine(adapter) {}
   // The engine's renderer holds one GPU context and its buffers: one render at a time.
@@ -39,10 +59,12 @@ RenderResult Renderer::render(const Scene& input, const RenderSettings& settings
     const scene::Scene s = withSettings(input, settings);
     checkImagesFitInMemory(s, 1, "render settings: width x height");
     const facet::Backend backend = settings.backend == Backend::Cpu ? facet::Backend::Cpu : facet::Backend::Gpu;
-    const RenderReport report = renderPicture(state_->engine, s, backend);
-    RenderResult result{
-        publicImage(report.image), report.device, report.totalMilliseconds(), report.lightTransport.bounces,
-        report.lightTransport.note, {}};
+    AdaptiveReport rounds;
+    const RenderReport report = renderPicture(state_->engine, s, backend, {}, {}, kNoTimeLimit, &rounds);
+    RenderResult result{publicImage(report.image),     report.device,
+                        report.totalMilliseconds(),    report.lightTransport.bounces,
+                        report.lightTransport.note,    {},
+                        samplingReport(report, rounds)};
     for (const cpu::BounceRays& rays : report.raysPerBounce)
       result.raysPerBounce.push_back({rays.rays, rays.hits, rays.shadowRays});
     return result;

@@ -127,6 +127,11 @@ scene::Scene withRoundSpp(scene::Scene scene, int spp) {
 
 }  // namespace
 
+std::pair<int, int> tileSppRange(const AdaptiveReport& report) {
+  const auto [fewest, most] = std::minmax_element(report.tileSpp.begin(), report.tileSpp.end());
+  return {*fewest, *most};
+}
+
 const char* toString(AdaptiveStop stop) {
   switch (stop) {
     case AdaptiveStop::Converged:

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "engine/image/sample_rounds.h"
@@ -63,6 +64,9 @@ struct AdaptiveReport {
   double maxError = 0;         // the largest of `errors`
   double seconds = 0;          // wall clock of every round
 };
+
+// The fewest and the most camera samples per pixel a tile took.
+std::pair<int, int> tileSppRange(const AdaptiveReport& report);
 
 // Renders `scene` (its size; its spp and seed are the rounds') by rounds,
 // telling `progress` after each the share of tiles finished. With

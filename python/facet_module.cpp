@@ -85,6 +85,16 @@ py::dict renderDict(facet::Renderer& renderer, const py::object& sceneOrPath, co
   py::dict out = imageDict(std::move(result.image));
   out["bounces"] = result.bounces;
   out["light_transport"] = result.lightTransport;
+  // The sampling as `facet render --json` reports it: `spp`, or `adaptive`; `sampling` where chosen.
+  const facet::SamplingReport& s = result.sampling;
+  if (s.samplesPerPixel > 0)
+    out["spp"] = s.samplesPerPixel;
+  else
+    out["adaptive"] = py::dict(py::arg("rounds") = s.rounds, py::arg("spp_mean") = s.meanSamplesPerPixel,
+                               py::arg("spp_min") = s.fewestSamplesPerPixel, py::arg("spp_max") = s.mostSamplesPerPixel,
+                               py::arg("max_tile_error") = s.noise, py::arg("noise_threshold") = s.noiseThreshold,
+                               py::arg("stop") = s.stop);
+  if (!s.why.empty()) out["sampling"] = s.why;
   // As `facet render --json` reports it: only paths of bounces above 0 have it.
   if (result.raysPerBounce.empty()) return out;
   py::list bounces;

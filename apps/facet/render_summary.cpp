@@ -55,10 +55,10 @@ void printReportWarnings(const RenderReport& report) {
 std::string describeSampling(const RenderReport& report, const AdaptiveReport* adaptive) {
   const std::string why = report.samplingNote.empty() ? "" : " (" + report.samplingNote + ")";
   if (!adaptive) return std::to_string(report.samplesPerPixel) + " spp" + why;
-  const auto [fewest, most] = std::minmax_element(adaptive->tileSpp.begin(), adaptive->tileSpp.end());
+  const auto [fewest, most] = tileSppRange(*adaptive);
   char text[200];
-  std::snprintf(text, sizeof text, "adaptive %d-%d spp (mean %.1f, %d rounds), noise %.3g (threshold %.3g), %s",
-                *fewest, *most, adaptive->sppMean, adaptive->rounds, adaptive->maxError, adaptive->noiseThreshold,
+  std::snprintf(text, sizeof text, "adaptive %d-%d spp (mean %.1f, %d rounds), noise %.3g (threshold %.3g), %s", fewest,
+                most, adaptive->sppMean, adaptive->rounds, adaptive->maxError, adaptive->noiseThreshold,
                 toString(adaptive->stop));
   return text + why;
 }
@@ -131,12 +131,12 @@ void printSummary(const scene::Scene& scene, const RenderReport& report, const A
 }
 
 nlohmann::json adaptiveJson(const AdaptiveReport& r) {
-  const auto [fewest, most] = std::minmax_element(r.tileSpp.begin(), r.tileSpp.end());
+  const auto [fewest, most] = tileSppRange(r);
   return {{"rounds", r.rounds},
           {"samples", r.samples},
           {"spp_mean", r.sppMean},
-          {"spp_min", *fewest},
-          {"spp_max", *most},
+          {"spp_min", fewest},
+          {"spp_max", most},
           {"max_tile_error", r.maxError},
           {"noise_threshold", r.noiseThreshold},
           {"stop", toString(r.stop)}};

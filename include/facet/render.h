@@ -39,6 +39,23 @@ struct BounceRays {
   std::uint64_t shadowRays = 0;
 };
 
+// The camera samples a render took (docs/rendering.md, "Converged by
+// default"): one pass, or adaptive rounds and the noise they left.
+struct SamplingReport {
+  int samplesPerPixel = 0;  // one pass of this many; 0: adaptive rounds
+  // Adaptive rounds: how many ran, the samples per pixel they left over the
+  // image (mean, fewest, most), the largest tile's relative standard error
+  // against the threshold, and what stopped them: "converged", "sample cap"
+  // or "time limit".
+  int rounds = 0;
+  double meanSamplesPerPixel = 0;
+  int fewestSamplesPerPixel = 0, mostSamplesPerPixel = 0;
+  double noise = 0, noiseThreshold = 0;
+  std::string stop;
+  // Where facet chose the sampling, why; empty where it was stated.
+  std::string why;
+};
+
 struct RenderResult {
   Image image;
   std::string device;  // what ran it
@@ -48,6 +65,7 @@ struct RenderResult {
   // settings stated it.
   std::string lightTransport;
   std::vector<BounceRays> raysPerBounce;  // bounce 0 to the last; empty unless bounces > 0
+  SamplingReport sampling;
 };
 
 struct AovParity {

@@ -99,9 +99,24 @@ TEST(ApiRender, UnsaidBouncesAreChosenFromTheScene) {
             "paths: 12 bounces (diffuse 4, glossy 4, transmission 12): 2 objects can see each other");
   ASSERT_GT(chosen.raysPerBounce.size(), 1u);
   EXPECT_GT(chosen.raysPerBounce[1].hits, 0u);
+  // Nor is the sampling said: adaptive rounds, reported as `facet render` reports them.
+  const facet::SamplingReport& rounds = chosen.sampling;
+  EXPECT_EQ(rounds.samplesPerPixel, 0);
+  EXPECT_GE(rounds.rounds, 4);
+  EXPECT_LE(rounds.fewestSamplesPerPixel, rounds.meanSamplesPerPixel);
+  EXPECT_LE(rounds.meanSamplesPerPixel, rounds.mostSamplesPerPixel);
+  EXPECT_EQ(rounds.noiseThreshold, 0.02);
+  if (rounds.stop == "converged")
+    EXPECT_LE(rounds.noise, rounds.noiseThreshold);
+  else
+    EXPECT_EQ(rounds.stop, "sample cap");
+  EXPECT_EQ(rounds.why, "paths and the environment's samples are random");
   const facet::RenderResult stated = renderer.render(cubeOnSlab(facet::IblMethod::Sampled), onCpu(0));
   EXPECT_EQ(stated.bounces, 0);
   EXPECT_TRUE(stated.lightTransport.empty());
+  EXPECT_EQ(stated.sampling.samplesPerPixel, 1);
+  EXPECT_EQ(stated.sampling.rounds, 0);
+  EXPECT_TRUE(stated.sampling.why.empty());
 }
 
 TEST(ApiRender, TheGpuTracesTheCpusPathsRayForRay) {

@@ -227,6 +227,26 @@ class Render(unittest.TestCase):
         stated = self.renderer.render(scene, backend="cpu", spp=1, bounces=0)
         self.assertEqual((stated["bounces"], stated["light_transport"]), (0, ""))
         self.assertNotIn("rays_per_bounce", stated)
+        # The sampling, as `facet render --json` reports it: stated, or chosen and why.
+        self.assertEqual(stated["spp"], 1)
+        self.assertNotIn("sampling", stated)
+        one_pass = self.renderer.render(scene, backend="cpu", bounces=0)
+        self.assertEqual((one_pass["spp"], one_pass["sampling"]), (16, "no light is sampled at random"))
+        self.assertNotIn("adaptive", one_pass)
+        sampled = facet.Scene(objects, camera=facet.Camera(eye=(3, 2.5, 4), target=(0, -0.5, 0), fov=50),
+                              environment=environment.replace(method="sampled"), size=(12, 12))
+        rounds = self.renderer.render(sampled, backend="cpu", bounces=0)
+        self.assertNotIn("spp", rounds)
+        self.assertIn("random", rounds["sampling"])
+        adaptive = rounds["adaptive"]
+        self.assertGreaterEqual(adaptive["rounds"], 4)
+        self.assertLessEqual(adaptive["spp_min"], adaptive["spp_mean"])
+        self.assertLessEqual(adaptive["spp_mean"], adaptive["spp_max"])
+        self.assertEqual(adaptive["noise_threshold"], 0.02)
+        if adaptive["stop"] == "converged":
+            self.assertLessEqual(adaptive["max_tile_error"], 0.02)
+        else:
+            self.assertEqual(adaptive["stop"], "sample cap")
 
     def test_render_settings_are_checked(self):
         with self.assertRaisesRegex(facet.Error, r"render settings: width: must be in \[1, 16384\]"):
