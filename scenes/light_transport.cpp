@@ -17,10 +17,12 @@ std::string bounceLimits(const LightTransport& t) {
          ")";
 }
 
+// After "environment sampled" where facet sampled it, else on its own.
 std::string environmentPairsNote(const LightTransport& t) {
   if (t.environmentPairs == 0) return "";
-  return " (" + std::to_string(t.environmentPairs) + (t.environmentPairs == 1 ? " pair" : " pairs") +
-         " per camera sample)";
+  const std::string pairs = std::to_string(t.environmentPairs) + (t.environmentPairs == 1 ? " pair" : " pairs");
+  return t.samplesEnvironment ? " (" + pairs + " per camera sample)"
+                              : ", " + pairs + " of the environment per camera sample";
 }
 
 // Unless the scene stated otherwise, a limit of its own per lobe kind.

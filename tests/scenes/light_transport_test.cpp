@@ -84,6 +84,13 @@ TEST(LightTransport, StatedEnvironmentSamplesAreKept) {
   applyLightTransport(t, s);
   EXPECT_EQ(s.environment->samples, 5);
 
+  Scene sampled = torus();
+  sampled.environment->method = IblMethod::Sampled;
+  sampled.environment->methodStated = true;
+  EXPECT_EQ(choose(sampled).note,
+            "paths: 12 bounces (diffuse 4, glossy 4, transmission 12), 2 pairs of the "
+            "environment per camera sample: 'torus' has holes, handles or open edges");
+
   Scene stated = withStatedBounces(torus(), 3);
   const int samples = stated.environment->samples;
   applyLightTransport(choose(stated), stated);
