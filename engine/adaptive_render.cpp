@@ -199,12 +199,19 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
   std::optional<scene::LightTransport> transport;
   if (scene::leavesLightTransportUnsaid(scene))
     transport = scene::chooseLightTransport(scene, scene::buildGeometry(scene));
-  const scene::Scene round =
+  scene::Scene round =
       withRoundSpp(transport ? scene::withLightTransport(scene, *transport) : scene, settings.roundSpp);
   std::optional<scene::GroundScenes> groundRound;
-  if (ground)
-    groundRound = scene::GroundScenes{withRoundSpp(ground->holdout, settings.roundSpp),
-                                      withRoundSpp(ground->ground, settings.roundSpp)};
+  if (ground) {
+    // Where paths run, they see the ground they stand on, and the ground
+    // receives what they send onto it (docs/preview-stage.md, "The ground in the paths").
+    const bool paths = round.render.bounces > 0;
+    groundRound = *ground;
+    groundRound->holdout =
+        withRoundSpp(paths ? scene::holdoutWithPaths(*ground, round) : ground->holdout, settings.roundSpp);
+    groundRound->ground = withRoundSpp(ground->ground, settings.roundSpp);
+    if (paths) round = scene::withShadowCatcher(std::move(round), *ground);
+  }
   SampleRounds rounds(width, height, settings.tileSize);
   const TileGrid& grid = rounds.grid();
   AdaptiveReport report;

@@ -34,6 +34,7 @@
 #include "rules/shading/microfacet.h"
 #include "rules/shading/path_continuation.h"
 #include "rules/shading/path_step.h"
+#include "rules/shading/shadow_catcher.h"
 #include "rules/shading/sheen.h"
 #include "rules/shading/surface_at_hit.h"
 #include "rules/shading/textured_material.h"
@@ -76,6 +77,7 @@
 #undef FACET_RULE_SHADING_MICROFACET
 #undef FACET_RULE_SHADING_PATH_CONTINUATION
 #undef FACET_RULE_SHADING_PATH_STEP
+#undef FACET_RULE_SHADING_SHADOW_CATCHER
 #undef FACET_RULE_SHADING_SHEEN
 #undef FACET_RULE_SHADING_SURFACE_AT_HIT
 #undef FACET_RULE_SHADING_TEXTURED_MATERIAL

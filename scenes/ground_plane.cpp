@@ -88,7 +88,34 @@ GroundScenes groundScenes(const Scene& model) {
   }
   scenes.holdout.objects.push_back(ground);
   scenes.holdout.objects.back().material = 1;
+
+  scenes.catcher = ground;
+  scenes.catcher.shadowCatcher = true;
+  scenes.catcherMaterial = lambertian("ground", 1.0);
   return scenes;
+}
+
+Scene holdoutWithPaths(const GroundScenes& ground, const Scene& model) {
+  Scene holdout = ground.holdout;
+  holdout.materials = model.materials;
+  holdout.textures = model.textures;
+  holdout.objects = model.objects;
+  holdout.objects.push_back(ground.catcher);
+  holdout.objects.back().shadowCatcher = false;
+  holdout.objects.back().material = int(holdout.materials.size());
+  holdout.materials.push_back(ground.catcherMaterial);
+  holdout.render.bounces = model.render.bounces;
+  holdout.render.diffuseBounces = model.render.diffuseBounces;
+  holdout.render.glossyBounces = model.render.glossyBounces;
+  holdout.render.transmissionBounces = model.render.transmissionBounces;
+  return holdout;
+}
+
+Scene withShadowCatcher(Scene scene, const GroundScenes& ground) {
+  scene.objects.push_back(ground.catcher);
+  scene.objects.back().material = int(scene.materials.size());
+  scene.materials.push_back(ground.catcherMaterial);
+  return scene;
 }
 
 }  // namespace facet::scene

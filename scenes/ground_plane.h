@@ -16,6 +16,10 @@ inline constexpr double kGroundHalfWidth = 10.0;
 struct GroundScenes {
   Scene holdout;  // the model, black, standing on the ground
   Scene ground;   // the ground alone
+  // The ground as the model's paths see it, a shadow catcher
+  // (rules/shading/shadow_catcher.h), and its white Lambertian material.
+  Object catcher;
+  materials::Material catcherMaterial;
 };
 
 // Both lit by the model's environment with shadow rays: its own method
@@ -25,6 +29,18 @@ struct GroundScenes {
 // and touching its lowest point. Camera and render settings are the model's.
 // Throws std::invalid_argument for a scene without an environment or objects.
 GroundScenes groundScenes(const Scene& model);
+
+// `scene` (the model's, with paths) with the ground's catcher added: the
+// model's continuation rays see the ground its shadows fall on, its camera
+// rays the background as before.
+Scene withShadowCatcher(Scene scene, const GroundScenes& ground);
+
+// The holdout of a model whose paths run (`model`: its scene with the light
+// transport chosen): the model in its own materials on the ground, the
+// paths' bounces and limits, the holdout's environment. Its ground then
+// also receives what the model sends onto it: light through glass, gold's
+// reflection. Only the ground's share of its pixels is read.
+Scene holdoutWithPaths(const GroundScenes& ground, const Scene& model);
 
 // The lowest height (y) of the limit surface, each patch evaluated on a
 // 9 x 9 grid of its (u, v).

@@ -176,6 +176,10 @@ struct Object {
   double alphaCutoff = 0.0;
   double alphaFactor = 1.0;
   materials::TextureSlot alphaTexture;
+  // The preview's ground in its paths (rules/shading/shadow_catcher.h):
+  // camera rays pass over it; continuation rays see the background it
+  // catches shadows on. No scene file sets it.
+  bool shadowCatcher = false;
 };
 
 // Whether rays pass over part of an object's surface by its alpha.

@@ -15,7 +15,9 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     f.channels |= !object.cage.faceVertexTexcoords1.empty() || !object.cage.faceVertexColors.empty();
     f.culling |= cullsBackFaces(object, m);
     f.cutouts |= hasCutout(object);
+    f.shadowCatcher |= object.shadowCatcher;
   }
+  f.emission |= f.shadowCatcher;
   f.textures = f.perHitMaterials || !scene.textures.empty();
   f.paths = scene.render.bounces > 0;
   f.lobeLimits = f.paths && limitsLobes(scene.render);

@@ -49,6 +49,10 @@ struct ObjectRange {
 const uint FACET_OBJECT_CULL_BACK_FACES = 1u;
 // The object passes over where its alpha is below its cutoff.
 const uint FACET_OBJECT_CUTOUT = 2u;
+// The preview's ground in the paths (rules/shading/shadow_catcher.h): camera
+// rays pass over it, continuation rays find the background it catches
+// shadows on.
+const uint FACET_OBJECT_SHADOW_CATCHER = 4u;
 
 // A ray from `origin` along `direction`, over [tMin, tMax).
 struct RayRecord {

@@ -19,5 +19,6 @@ const int FACET_FEATURE_ANISOTROPY = 8;           // hits evaluate the tangent f
 const int FACET_FEATURE_CLEARCOAT = 9;
 const int FACET_FEATURE_SHEEN = 10;
 const int FACET_FEATURE_CHANNELS = 11;  // vertex colours or a second set of texture coordinates
+const int FACET_FEATURE_SHADOW_CATCHER = 12;  // an object catches shadows for the paths (FACET_OBJECT_SHADOW_CATCHER)
 
 #endif

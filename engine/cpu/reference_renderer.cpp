@@ -28,6 +28,13 @@ namespace {
 
 namespace m = rules::f64;
 
+// The environment's light at a hit: what its samples offer above the
+// surface, and what of it arrives past their shadow rays.
+struct EnvironmentLight {
+  glm::dvec3 offered{0.0};
+  glm::dvec3 arriving{0.0};
+};
+
 struct SceneHit {
   SurfaceHit surface;
   int object = -1;
@@ -72,6 +79,13 @@ class ReferenceScene final : public PathScene {
     return nearest;
   }
 
+  // The nearest hit a camera ray sees: it passes over a shadow catcher.
+  std::optional<SceneHit> cameraHit(const Ray& ray) const {
+    std::optional<SceneHit> hit = closestHit(ray);
+    if (hit && scene_.objects[std::size_t(hit->object)].shadowCatcher && !m::catcher_seen_at(1u)) return std::nullopt;
+    return hit;
+  }
+
   // Radiance leaving the hit towards -direction, from every punctual light
   // and the environment; (pixel, sample) name the sample's random numbers.
   glm::dvec3 shade(const SceneHit& hit, const glm::dvec3& direction, std::uint32_t pixel, std::uint32_t sample,
@@ -89,30 +103,40 @@ class ReferenceScene final : public PathScene {
     const int material = scene_.objects[std::size_t(hit.object)].material;
     const m::FacingNormals facing = m::facing_normals(hit.surface.shadingNormal, hit.surface.geometricNormal, v);
     const m::HitMaterial fetched = hitMaterial(hit, facing.ng, direction);
-    const m::SurfaceAtHit s = m::surface_at_hit(fetched, facing, v, hitPartials(hit));
+    m::SurfaceAtHit s = m::surface_at_hit(fetched, facing, v, hitPartials(hit));
+    // The catcher is lit by the environment alone, whose share it measures.
+    const bool catcher = scene_.objects[std::size_t(hit.object)].shadowCatcher && environment_;
     const glm::dvec3& position = hit.surface.position;
     const glm::dvec3 specularScale = ibl::specularScale(compensation_, material, s.params, glm::dot(s.n, v));
     glm::dvec3 radiance = s.emission;
     if (environment_) {
-      glm::dvec3 environment(0.0);
+      EnvironmentLight environment;
       switch (environment_->environment->method) {
         case scene::IblMethod::Sampled:
           environment =
               sampledEnvironment(s.params, specularScale, position, s.n, s.ng, v, pixel, sample, seed, shadowRays);
           break;
         case scene::IblMethod::Prefiltered:
-          environment = prefilteredEnvironment(s.params, specularScale, material, s.n, v);
+          environment.arriving = environment.offered =
+              prefilteredEnvironment(s.params, specularScale, material, s.n, v);
           break;
         case scene::IblMethod::Filtered:
           environment =
               filteredEnvironment(s.params, specularScale, position, s.n, s.ng, v, pixel, sample, seed, shadowRays);
           break;
       }
-      radiance += s.occlusion * environment;
+      if (catcher) {
+        const glm::dvec3 behind = background(direction), offered = s.occlusion * environment.offered;
+        radiance += m::catcher_slot_scale(behind, offered) * (s.occlusion * environment.arriving) +
+                    m::catcher_unshadowed(behind, offered);
+        s.params = m::catcher_path_params(s.params);
+      } else {
+        radiance += s.occlusion * environment.arriving;
+      }
     }
     for (const scene::Light& light : scene_.lights) {
       const m::LightIncidence incidence = m::light_incidence(punctualLight(light), position);
-      if (!m::light_arrives(incidence, s.n, s.ng)) continue;
+      if (catcher || !m::light_arrives(incidence, s.n, s.ng)) continue;
       if (occluded(position, s.ng, incidence.direction, incidence.distance, shadowRays)) continue;
       radiance += m::punctual_radiance(s.params, s.n, incidence.direction, v, incidence.color, specularScale);
     }
@@ -219,70 +243,75 @@ class ReferenceScene final : public PathScene {
            ibl::bilinearLookup(map.rgb.data(), map.width, map.height, m::environment_uv(toMap(world)));
   }
 
-  // Whether a sample of either technique carries light: above the surface
-  // and, with occlusion, unshadowed.
-  bool sampleArrives(const m::MisSample& s, const glm::dvec3& position, const glm::dvec3& n, const glm::dvec3& ng,
-                     std::uint64_t& shadowRays) const {
-    return m::mis_sample_arrives(s, n, ng) &&
-           !(environment_->environment->occlusion && occluded(position, ng, s.direction, INFINITY, shadowRays));
+  // A sample of either technique, of `share` above the surface: offered,
+  // and arriving where, with occlusion, its shadow ray is not blocked.
+  template <class Share>
+  void addSample(EnvironmentLight& light, const m::MisSample& s, const glm::dvec3& position, const glm::dvec3& n,
+                 const glm::dvec3& ng, std::uint64_t& shadowRays, const Share& share) const {
+    if (!m::mis_sample_arrives(s, n, ng)) return;
+    const glm::dvec3 radiance = share();
+    light.offered += radiance;
+    if (!(environment_->environment->occlusion && occluded(position, ng, s.direction, INFINITY, shadowRays)))
+      light.arriving += radiance;
   }
 
   // The sampled method (rules/environment/sampled_environment.h), with the
   // environment's distribution in vectors.
-  glm::dvec3 sampledEnvironment(const m::BrdfParams& params, const glm::dvec3& specularScale,
-                                const glm::dvec3& position, const glm::dvec3& n, const glm::dvec3& ng,
-                                const glm::dvec3& v, std::uint32_t pixel, std::uint32_t sample, std::uint32_t seed,
-                                std::uint64_t& shadowRays) const {
+  EnvironmentLight sampledEnvironment(const m::BrdfParams& params, const glm::dvec3& specularScale,
+                                      const glm::dvec3& position, const glm::dvec3& n, const glm::dvec3& ng,
+                                      const glm::dvec3& v, std::uint32_t pixel, std::uint32_t sample,
+                                      std::uint32_t seed, std::uint64_t& shadowRays) const {
     const scene::Environment& environment = *environment_->environment;
     const ibl::EnvironmentDistribution& distribution = environment_->distribution;
     const auto pairs = std::uint32_t(environment.samples);
-    auto share = [&](const m::MisSample& s) {
-      return sampleArrives(s, position, n, ng, shadowRays)
-                 ? m::mis_sample_share(params, n, v, s, environmentRadiance(s.direction), pairs, specularScale)
-                 : glm::dvec3(0.0);
+    EnvironmentLight light;
+    auto add = [&](const m::MisSample& s) {
+      addSample(light, s, position, n, ng, shadowRays, [&] {
+        return m::mis_sample_share(params, n, v, s, environmentRadiance(s.direction), pairs, specularScale);
+      });
     };
-    glm::dvec3 sum(0.0);
     for (std::uint32_t k = 0; k < pairs; ++k) {
       const m::EnvironmentPair pair = m::environment_pair(params, n, v, pixel, sample, seed, k, pairs);
       const ibl::EnvironmentSample e = ibl::sampleEnvironment(distribution, pair.texel_bits, pair.environment_u);
-      sum += share(m::environment_technique_sample(params, n, v, fromMap(e.direction), e.pdf));
-      sum += share(m::brdf_technique_sample(params, n, v, pair.brdf_direction,
-                                            ibl::environmentPdf(distribution, toMap(pair.brdf_direction))));
+      add(m::environment_technique_sample(params, n, v, fromMap(e.direction), e.pdf));
+      add(m::brdf_technique_sample(params, n, v, pair.brdf_direction,
+                                   ibl::environmentPdf(distribution, toMap(pair.brdf_direction))));
     }
-    return sum;
+    return light;
   }
 
   // The filtered method (rules/environment/filtered_environment.h): the
   // sampled method's pairs, BRDF samples read from the mip chain.
-  glm::dvec3 filteredEnvironment(const m::BrdfParams& params, const glm::dvec3& specularScale,
-                                 const glm::dvec3& position, const glm::dvec3& n, const glm::dvec3& ng,
-                                 const glm::dvec3& v, std::uint32_t pixel, std::uint32_t sample, std::uint32_t seed,
-                                 std::uint64_t& shadowRays) const {
+  EnvironmentLight filteredEnvironment(const m::BrdfParams& params, const glm::dvec3& specularScale,
+                                       const glm::dvec3& position, const glm::dvec3& n, const glm::dvec3& ng,
+                                       const glm::dvec3& v, std::uint32_t pixel, std::uint32_t sample,
+                                       std::uint32_t seed, std::uint64_t& shadowRays) const {
     const scene::Environment& environment = *environment_->environment;
     const std::vector<ibl::MipLevel>& chain = environment_->mipChain;
     const bool withEnvironment = environment_->environmentSamples;
     const ibl::EnvironmentDistribution& distribution = environment_->distribution;
     const auto pairs = std::uint32_t(environment.samples);
-    auto share = [&](const m::MisSample& s, double lod) {
-      if (!sampleArrives(s, position, n, ng, shadowRays)) return glm::dvec3(0.0);
-      const glm::dvec3 radiance =
-          environment.intensity * ibl::mipChainRadiance(chain, m::environment_uv(toMap(s.direction)), lod);
-      return m::mis_sample_share(params, n, v, s, radiance, pairs, specularScale);
+    EnvironmentLight light;
+    auto add = [&](const m::MisSample& s, double lod) {
+      addSample(light, s, position, n, ng, shadowRays, [&] {
+        const glm::dvec3 radiance =
+            environment.intensity * ibl::mipChainRadiance(chain, m::environment_uv(toMap(s.direction)), lod);
+        return m::mis_sample_share(params, n, v, s, radiance, pairs, specularScale);
+      });
     };
-    glm::dvec3 sum(0.0);
     for (std::uint32_t k = 0; k < pairs; ++k) {
       const m::EnvironmentPair pair = m::environment_pair(params, n, v, pixel, sample, seed, k, pairs);
       if (withEnvironment) {
         const ibl::EnvironmentSample e = ibl::sampleEnvironment(distribution, pair.texel_bits, pair.environment_u);
-        sum += share(m::environment_technique_sample(params, n, v, fromMap(e.direction), e.pdf), 0.0);
+        add(m::environment_technique_sample(params, n, v, fromMap(e.direction), e.pdf), 0.0);
       }
       m::MisSample s = m::brdf_technique_sample(params, n, v, pair.brdf_direction, 0.0);
       const double lod = m::filtered_sample_lod(s, pairs, chain.front().width, chain.front().height, int(chain.size()));
       if (withEnvironment)
         s.other_pdf = ibl::mipChainRadiance(environment_->pdfChain, m::environment_uv(toMap(s.direction)), lod).x;
-      sum += share(s, lod);
+      add(s, lod);
     }
-    return sum;
+    return light;
   }
 
   glm::dvec3 prefilteredEnvironment(const m::BrdfParams& params, const glm::dvec3& specularScale, int material,
@@ -370,7 +399,7 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
           const glm::dvec3 direction =
               rules::f64::camera_ray_direction(frame, x + offset.x, y + offset.y, width, height);
           ++primary;
-          const auto hit = reference.closestHit(Ray{frame.eye, direction});
+          const auto hit = reference.cameraHit(Ray{frame.eye, direction});
           if (hit && !bounceRays.empty()) ++bounceRays[0].hits;
           if (sample == 0 && hit) reference.writeAovs(image, pixel, *hit, direction);
           if (!rules::f64::is_shaded_sample(sample, strata)) continue;

@@ -71,11 +71,12 @@ std::vector<TopLevelObject> topLevelObjects(const scene::SceneGeometry& geometry
   return tops;
 }
 
-// Back-face culling and the alpha cutout, from the object and its material.
+// Back-face culling, the shadow catcher and the alpha cutout, from the object and its material.
 void setObjectFlags(layout::ObjectRange& range, const scene::Scene& scene, const scene::Object& sceneObject) {
   range.flags = scene::cullsBackFaces(sceneObject, scene.materials[std::size_t(sceneObject.material)])
                     ? layout::FACET_OBJECT_CULL_BACK_FACES
                     : 0u;
+  if (sceneObject.shadowCatcher) range.flags |= layout::FACET_OBJECT_SHADOW_CATCHER;
   if (scene::hasCutout(sceneObject)) {
     range.flags |= layout::FACET_OBJECT_CUTOUT;
     range.alphaCutoff = float(sceneObject.alphaCutoff);

@@ -10,7 +10,10 @@
 // Specialization: LIGHT_COUNT; the BRDF models D_MODEL, G_MODEL, F_MODEL (-1
 // where the scene's materials use several: read per material); ENVIRONMENT
 // (0 none, 1 sampled, 2 prefiltered, 3 filtered); FEATURES, the scene's
-// features as bits (compute/layout/surface_features.h).
+// features as bits (compute/layout/surface_features.h). With SHADOW_CATCHER
+// (rules/shading/shadow_catcher.h) a camera ray passes over the catcher and
+// a continuation finds it lit by the environment alone, its slots scaled to
+// sum to the background behind it.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -29,6 +32,7 @@
 #include "rules/shading/domain.h"
 #include "rules/shading/lights.h"
 #include "rules/shading/path_step.h"
+#include "rules/shading/shadow_catcher.h"
 #include "rules/shading/surface_at_hit.h"
 #include "rules/shading/textured_material.h"
 #include "rules/shading/transmissive_continuation.h"
@@ -52,13 +56,16 @@ const int ANISOTROPY = (FEATURES >> FACET_FEATURE_ANISOTROPY) & 1;
 const int CLEARCOAT = (FEATURES >> FACET_FEATURE_CLEARCOAT) & 1;
 const int SHEEN = (FEATURES >> FACET_FEATURE_SHEEN) & 1;
 const int CHANNELS = (FEATURES >> FACET_FEATURE_CHANNELS) & 1;
+const int SHADOW_CATCHER = (FEATURES >> FACET_FEATURE_SHADOW_CATCHER) & 1;
 
-layout(set = 0, binding = 9, std430) readonly buffer Hits { HitRecord hits[]; };
+// Written only where a camera ray passes over a shadow catcher.
+layout(set = 0, binding = 9, std430) buffer Hits { HitRecord hits[]; };
 layout(set = 0, binding = 11, std430) readonly buffer Materials { MaterialRecord materials[]; };
 layout(set = 0, binding = 12, std430) readonly buffer Lights { LightRecord lights[]; };
 layout(set = 0, binding = 13, std430) writeonly buffer Aovs { PixelAovs aovs[]; };
 layout(set = 0, binding = 14, std430) writeonly buffer ShadowRays { ShadowRayRecord shadowRays[]; };
-layout(set = 0, binding = 15, std430) writeonly buffer Contributions { vec4 contributions[]; };
+// Read back only where a shadow catcher scales its environment slots.
+layout(set = 0, binding = 15, std430) buffer Contributions { vec4 contributions[]; };
 layout(set = 0, binding = 27) uniform samplerBuffer authoredNormals;
 layout(set = 0, binding = 10, std430) buffer Counters { RenderCounters counters; };
 layout(set = 0, binding = 32, std430) buffer PathStates { PathState pathStates[]; };
@@ -180,28 +187,30 @@ MaterialTexels material_texels(MaterialRecord m, PatchRecord record, uint channe
 }
 
 // Sampled or filtered method, one sample of either technique: its share for
-// radiance `incoming`, and with OCCLUSION its shadow ray for `slot`.
+// radiance `incoming`, added to `offered`, and with OCCLUSION its shadow ray
+// for `slot`.
 void environment_sample(uint slot, BrdfParams params, vec3 specular_scale, vec3 position, vec3 n, vec3 ng, vec3 v,
-                        MisSample s, vec3 incoming, inout vec3 unshadowed) {
+                        MisSample s, vec3 incoming, inout vec3 offered) {
   bool arrives = mis_sample_arrives(s, n, ng);
   vec3 radiance =
       arrives ? mis_sample_share(params, n, v, s, incoming, frame.environmentSamples, specular_scale) : vec3(0.0);
-  if (OCCLUSION == 0)
-    unshadowed += radiance;
-  else if (arrives)
+  offered += radiance;
+  if (OCCLUSION == 0) return;
+  if (arrives)
     write_shadowed(slot, radiance, position, ng, s.direction, INFINITE_DISTANCE);
   else
     write_unshadowed(slot, vec3(0.0));
 }
 
-// The environment's slots from `first` on, its light scaled by `occlusion`.
-void shade_environment(uint first, uint pixel, uint sample_index, uint material, BrdfParams params,
+// The environment's slots from `first` on, its light scaled by `occlusion`;
+// returns what they hold before their shadow rays.
+vec3 shade_environment(uint first, uint pixel, uint sample_index, uint material, BrdfParams params,
                        vec3 specular_scale, vec3 position, vec3 n, vec3 ng, vec3 v, float occlusion) {
   if (ENVIRONMENT == 2) {
     SplitSumLookups l = split_sum_lookups(params, n, v);
     if (!l.visible) {
       write_unshadowed(first, vec3(0.0));
-      return;
+      return vec3(0.0);
     }
     vec3 prefiltered = prefiltered_radiance(to_map(l.lobe), l.alpha);
     vec2 dfg = dfg_lookup(materials[material].dfgTable, l.nv, l.alpha);
@@ -213,13 +222,14 @@ void shade_environment(uint first, uint pixel, uint sample_index, uint material,
     }
     vec3 radiance = environment_split_sum(params, l, prefiltered, dfg, irradiance_over_pi(to_map(n)), specular_scale,
                                           coat_prefiltered, coat_dfg);
-    write_unshadowed(first, occlusion * frame.environmentIntensity * radiance);
-    return;
+    vec3 offered = occlusion * frame.environmentIntensity * radiance;
+    write_unshadowed(first, offered);
+    return offered;
   }
   // Per pair, the environment technique's slot (if drawn), then the BRDF technique's.
   bool with_environment = ENVIRONMENT == 1 || ENVIRONMENT_SAMPLES == 1;
   uint stride = with_environment ? 2u : 1u;
-  vec3 unshadowed = vec3(0.0);
+  vec3 offered = vec3(0.0);
   for (uint k = 0u; k < frame.environmentSamples; ++k) {
     EnvironmentPair pair = environment_pair(params, n, v, pixel, sample_index, frame.environmentSeed, k,
                                          frame.environmentSamples);
@@ -228,7 +238,7 @@ void shade_environment(uint first, uint pixel, uint sample_index, uint material,
       vec4 e = sample_environment(pair.texel_bits, pair.environment_u);
       MisSample s = environment_technique_sample(params, n, v, from_map(e.xyz), e.w);
       environment_sample(slot, params, specular_scale, position, n, ng, v, s,
-                         occlusion * environment_radiance(s.direction), unshadowed);
+                         occlusion * environment_radiance(s.direction), offered);
     }
     MisSample s = brdf_technique_sample(params, n, v, pair.brdf_direction, 0.0);
     vec3 incoming;
@@ -243,9 +253,10 @@ void shade_environment(uint first, uint pixel, uint sample_index, uint material,
       incoming = environment_radiance(s.direction);
     }
     environment_sample(slot + stride - 1u, params, specular_scale, position, n, ng, v, s, occlusion * incoming,
-                       unshadowed);
+                       offered);
   }
-  if (OCCLUSION == 0) write_unshadowed(first, unshadowed);
+  if (OCCLUSION == 0) write_unshadowed(first, offered);
+  return offered;
 }
 
 PunctualLight punctual_light(LightRecord record) {
@@ -361,6 +372,12 @@ void main() {
   uint firstSlot = camera * frame.slotsPerRay;
   Ray ray = continuation ? to_ray(pathRays[index].ray) : camera_ray(index);
   vec3 direction = ray.direction, v = -direction;
+  if (SHADOW_CATCHER == 1 && hit.patchIndex != FACET_NO_HIT && !catcher_seen_at(frame.pathVertex + 1u) &&
+      (objects[hit.object].flags & FACET_OBJECT_SHADOW_CATCHER) != 0u) {
+    // The camera ray passes over the catcher; gather reads a miss.
+    hits[index].patchIndex = FACET_NO_HIT;
+    hit.patchIndex = FACET_NO_HIT;
+  }
   if (hit.patchIndex == FACET_NO_HIT) {
     shade_miss(camera, firstSlot, centre, shaded, continuation, direction);
     return;
@@ -368,6 +385,7 @@ void main() {
   if (PATHS == 1) atomicAdd(counters.pathHits, 1u);
 
   ObjectRange range = objects[hit.object];
+  bool catcher = SHADOW_CATCHER == 1 && (range.flags & FACET_OBJECT_SHADOW_CATCHER) != 0u;
   PatchRecord record = load_patch_record(hit.patchIndex);
   uvec4 header = texelFetch(patchHeaders, int(hit.patchIndex * FACET_HEADER_TEXELS));
   ControlPoints c = load_control_points(header[FACET_HEADER_FIRST_POINT], header[FACET_HEADER_KIND]);
@@ -387,19 +405,30 @@ void main() {
   if ((TEXTURES == 1 && m.textured == 1u) || anisotropic) p = evaluate_patch(c, hit.s, hit.tParam);
   SurfaceAtHit s = surface_at_hit(hit_material(m, record, range.channels, p, hit, facing.ng, direction), facing, v,
                                   hit_partials(anisotropic, record, range.channels, p, hit));
+  // The catcher is lit by the environment alone, whose share it measures.
+  vec3 background = catcher && ENVIRONMENT != 0 ? environment_radiance(direction) : vec3(0.0);
   vec3 specular_scale = material_specular_scale(m.compensationTable, s.params, dot(s.n, v));
-  shade_lights(firstSlot, shaded, s, position, v, specular_scale);
+  shade_lights(firstSlot, shaded && !catcher, s, position, v, specular_scale);
+  vec3 offered = vec3(0.0);
   if (ENVIRONMENT != 0) {
     // Every environment slot is written exactly once either way: the loops
     // of one invocation count against lavapipe's limit of 65535.
     uint first = firstSlot + uint(LIGHT_COUNT);
     if (shaded)
-      shade_environment(first, image_pixel(pixel), sample_index, range.material, s.params, specular_scale,
-                        position, s.n, s.ng, v, s.occlusion);
+      offered = shade_environment(first, image_pixel(pixel), sample_index, range.material, s.params, specular_scale,
+                                  position, s.n, s.ng, v, s.occlusion);
     else
       for (uint slot = first; slot < firstSlot + frame.slotsPerRay; ++slot) write_unshadowed(slot, vec3(0.0));
   }
-  if (EMISSION == 1) write_unshadowed(firstSlot + frame.slotsPerRay - 1u, shaded ? s.emission : vec3(0.0));
+  vec3 emitted = s.emission;
+  if (catcher) {
+    vec3 scale = catcher_slot_scale(background, offered);
+    for (uint slot = firstSlot + uint(LIGHT_COUNT); slot < firstSlot + frame.slotsPerRay - 1u; ++slot)
+      contributions[slot].xyz *= scale;
+    emitted = catcher_unshadowed(background, offered);
+    s.params = catcher_path_params(s.params);
+  }
+  if (EMISSION == 1) write_unshadowed(firstSlot + frame.slotsPerRay - 1u, shaded ? emitted : vec3(0.0));
   if (PATHS == 1)
     store_path_state(camera, continuation, shaded,
                      PathVertex(position, s.n, s.ng, v, s.params, specular_scale,

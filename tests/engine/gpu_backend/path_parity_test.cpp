@@ -9,19 +9,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <memory>
 #include <vector>
 
 #include "engine/cpu/reference_renderer.h"
 #include "engine/gpu_backend/gpu_renderer.h"
-#include "scenes/environment_map.h"
-#include "scenes/scene_file.h"
 #include "scenes/scene_geometry.h"
 #include "tests/support/gpu_device.h"
 #include "tests/support/relative_errors.h"
 #include "tests/support/inside_sphere.h"
 #include "tests/support/path_parity.h"
+#include "tests/support/preview_objects.h"
 
 namespace facet {
 namespace {
@@ -31,6 +28,7 @@ using testing::relativeErrors;
 using testing::geometricSum;
 using testing::insideDiffuseSphere;
 using testing::meanRadiance;
+using testing::previewWithPaths;
 
 using GpuPaths = testing::GpuRenderTest;
 
@@ -76,24 +74,6 @@ TEST_F(GpuPaths, ADiffuseLimitEndsPathsWhereTheCpuReferenceEndsThem) {
   // The limit ends the paths as two bounces would.
   const Image two = render(insideDiffuseSphere(0.5, 2, 16, 4)).image;
   for (std::size_t p = 0; p < two.pixelCount(); ++p) ASSERT_EQ(r.gpu.image.beauty[p], two.beauty[p]) << p;
-}
-
-// The preview's objects, close enough to light each other, under the
-// courtyard with its shadow rays, small.
-scene::Scene previewWithPaths(scene::IntersectionMethod method, int bounces) {
-  scene::Scene s = scene::loadScene(std::filesystem::path(FACET_EXAMPLES_DIR) / "preview.json");
-  s.lights.clear();
-  s.render.width = 48;
-  s.render.height = 24;
-  s.render.method = method;
-  s.render.bounces = bounces;
-  s.environment.emplace();
-  s.environment->map = std::make_shared<const scene::EnvironmentMap>(
-      scene::loadEnvironmentMap(std::filesystem::path(FACET_ENVIRONMENTS_DIR) / "courtyard_256x128.hdr"));
-  s.environment->method = scene::IblMethod::Sampled;
-  s.environment->occlusion = true;
-  s.environment->samples = 2;
-  return s;
 }
 
 class GpuPathParity : public GpuPaths, public ::testing::WithParamInterface<scene::IntersectionMethod> {};
