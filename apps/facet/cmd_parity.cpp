@@ -1,9 +1,12 @@
 // facet parity: render scenes on the GPU (one adapter, or every one) and the
 // CPU reference and judge them AOV by AOV (analysis/parity.h,
-// docs/parity.md); exits with kCheckFailed when any run does not pass.
+// docs/parity.md); exits with kCheckFailed when any run does not pass, or
+// with the first error of a scene that could not be judged, after the
+// reports of every scene.
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <exception>
 #include <memory>
 #include <string>
 #include <vector>
@@ -12,6 +15,7 @@
 #include "analysis/parity_statistics.h"
 #include "commands.h"
 #include "engine/image_memory.h"
+#include "exit_codes.h"
 #include "engine/render_record.h"
 #include "engine/renderer.h"
 #include "material_options.h"
@@ -111,9 +115,27 @@ void runParity(const ParityCommandOptions& o) {
   std::vector<std::unique_ptr<Renderer>> renderers;
   // Adapters are named by their full name: a substring of itself.
   for (const gpu::AdapterInfo& info : adapters) renderers.push_back(std::make_unique<Renderer>(info.name));
+  // A scene that errors does not stop the others: the reports hold every
+  // scene, and the command then ends with the first error.
   std::vector<ParityCase> cases;
-  for (const std::string& scene : o.scenes) cases.push_back(judgeScene(scene, o, tolerances, adapters, renderers));
-  reportParity(o.flags, cases, "parity");
+  std::exception_ptr firstError;
+  for (const std::string& scene : o.scenes) {
+    try {
+      cases.push_back(judgeScene(scene, o, tolerances, adapters, renderers));
+    } catch (const std::exception& e) {
+      if (!firstError) firstError = std::current_exception();
+      ParityCase errored;
+      errored.scene = scene;
+      errored.error = e.what();
+      cases.push_back(std::move(errored));
+    }
+  }
+  try {
+    reportParity(o.flags, cases, "parity");
+  } catch (const CheckFailed&) {
+    if (!firstError) throw;
+  }
+  if (firstError) std::rethrow_exception(firstError);
 }
 
 }  // namespace

@@ -90,7 +90,8 @@ void reportParity(const ParityFlags& flags, const std::vector<ParityCase>& cases
     outputs.push_back({flags.junit, [&](const std::filesystem::path& path) {
                          writeBytes(path, std::vector<std::uint8_t>(junit.begin(), junit.end()), flags.junit);
                        }});
-  if (!flags.heatmap.empty()) {
+  // One run, checked before any render; none where its scene errored.
+  if (!flags.heatmap.empty() && !cases.front().runs.empty()) {
     const analysis::ParityReport& report = cases.front().runs.front().report;
     outputs.push_back(analysis::heatmapFile(flags.heatmap, report, flags.heatmapAov));
   }
@@ -99,6 +100,7 @@ void reportParity(const ParityFlags& flags, const std::vector<ParityCase>& cases
     std::printf("%s\n", parityJson(cases).dump(2).c_str());
   } else {
     for (const ParityCase& c : cases) {
+      if (!c.error.empty()) std::printf("%s: error: %s\n", c.scene.c_str(), c.error.c_str());
       // The line a CI log needs to tell two runs' settings apart.
       if (c.settings.contains("digest"))
         std::printf("%s: settings %s, %d render(s) per backend (digest %s)\n", c.scene.c_str(),

@@ -153,18 +153,31 @@ nlohmann::json parityJson(const std::vector<ParityCase>& cases) {
       runs.push_back(entry);
       pass = pass && run.report.pass;
     }
-    scenes.push_back({{"scene", c.scene},
-                      {"reference", {{"name", c.reference}, {"milliseconds", c.referenceMilliseconds}}},
-                      {"settings", c.settings},
-                      {"runs", runs}});
+    nlohmann::json scene = {{"scene", c.scene},
+                            {"reference", {{"name", c.reference}, {"milliseconds", c.referenceMilliseconds}}},
+                            {"settings", c.settings},
+                            {"runs", runs}};
+    if (!c.error.empty()) {
+      scene["error"] = c.error;
+      pass = false;
+    }
+    scenes.push_back(scene);
   }
   return {{"facetVersion", FACET_VERSION_STRING}, {"pass", pass}, {"scenes", scenes}};
 }
 
 std::string junitXml(const std::vector<ParityCase>& cases) {
   std::string suites;
-  std::size_t tests = 0, failures = 0, skipped = 0;
-  for (const ParityCase& c : cases)
+  std::size_t tests = 0, failures = 0, errors = 0, skipped = 0;
+  for (const ParityCase& c : cases) {
+    if (!c.error.empty()) {
+      const std::string name = escaped(c.scene);
+      suites += "  <testsuite name=\"" + name + "\" tests=\"1\" failures=\"0\" errors=\"1\" skipped=\"0\">\n" +
+                "    <testcase classname=\"" + name + "\" name=\"render\">\n      <error message=\"" +
+                escaped(c.error) + "\" type=\"error\"/>\n    </testcase>\n  </testsuite>\n";
+      ++tests;
+      ++errors;
+    }
     for (const ParityRun& run : c.runs) {
       const std::vector<JunitCase> judged = junitCases(run.report);
       std::size_t suiteFailures = 0, suiteSkipped = 0;
@@ -197,9 +210,10 @@ std::string junitXml(const std::vector<ParityCase>& cases) {
       failures += suiteFailures;
       skipped += suiteSkipped;
     }
+  }
   return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" +
-         format("<testsuites name=\"facet parity %s\" tests=\"%zu\" failures=\"%zu\" errors=\"0\" skipped=\"%zu\">\n",
-                FACET_VERSION_STRING, tests, failures, skipped) +
+         format("<testsuites name=\"facet parity %s\" tests=\"%zu\" failures=\"%zu\" errors=\"%zu\" skipped=\"%zu\">\n",
+                FACET_VERSION_STRING, tests, failures, errors, skipped) +
          suites + "</testsuites>\n";
 }
 

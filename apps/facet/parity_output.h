@@ -34,6 +34,9 @@ struct ParityCase {
   double referenceMilliseconds = 0;
   nlohmann::json settings = nlohmann::json::object();  // digest, text and renders per backend
   std::vector<ParityRun> runs;
+  // What stopped the scene before it was judged (facet's message: a file
+  // that does not load, a device lost); it then has no runs.
+  std::string error;
 };
 
 // `passRule`'s numbers as JSON, and the whole run with the facet version.
@@ -41,6 +44,8 @@ nlohmann::json parityJson(const std::vector<ParityCase>& cases);
 
 // A JUnit XML document: a <testsuite> per scene and adapter, a <testcase>
 // per AOV and one for coverage; AOVs reported but not gated are <skipped>.
+// A scene that errored is a suite of one <testcase name="render"> holding
+// an <error> with its message.
 std::string junitXml(const std::vector<ParityCase>& cases);
 
 // "runs failed: a.json on llvmpipe (out of tolerance), ..." for the error

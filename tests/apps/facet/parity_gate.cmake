@@ -45,13 +45,19 @@ add_test(NAME cli.parity_junit_pass
                  --tolerance depth=0,2e-4 --tolerance beauty=1e-4,1e-3)
 add_test(NAME cli.parity_junit_fail
          COMMAND ${check_reports} 5 ${work}/micro.xml fail ${facet} parity ${work}/micro_cube.json --size 16x12)
+# A scene that does not load is an <error> in the reports, the scenes around
+# it are judged, and the command exits with its error.
+add_test(NAME cli.parity_junit_error
+         COMMAND ${check_reports} 1 ${work}/errored.xml none ${facet} parity ${gold} ${work}/bad_scene.json ${gold}
+                 --size 16x12 --tolerance depth=0,2e-4 --tolerance beauty=1e-4,1e-3)
 # Sampled lighting: paired renders judged by the t-test.
 add_test(NAME cli.parity_sampled_t_test
          COMMAND ${facet} parity ${gold} --size 16x12 --env ${courtyard} --ibl sampled --renders 4
                  --heatmap ${work}/sampled_heat.png --heatmap-aov beauty)
 set_tests_properties(cli.parity_sampled_t_test PROPERTIES PASS_REGULAR_EXPRESSION
                      "paired t-test over 4 renders.*parity: within tolerance")
-set_tests_properties(cli.parity_junit_pass cli.parity_junit_fail cli.parity_sampled_t_test PROPERTIES LABELS "cli;gpu")
+set_tests_properties(cli.parity_junit_pass cli.parity_junit_fail cli.parity_junit_error cli.parity_sampled_t_test
+                     PROPERTIES LABELS "cli;gpu")
 
 # facet compare: a stored render against itself passes; against the same
 # scene under a 5% brighter environment it fails.
