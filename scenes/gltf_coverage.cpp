@@ -83,6 +83,16 @@ void collectExtensions(const tinygltf::Model& model, std::vector<std::pair<std::
   add(model.extensions, "");
 }
 
+// Whether material `index` would take a tangent: a normal map (its own or
+// its clear coat's) or an anisotropic lobe.
+bool usesTangents(const tinygltf::Model& model, int index) {
+  if (index < 0 || std::size_t(index) >= model.materials.size()) return false;
+  const tinygltf::Material& m = model.materials[std::size_t(index)];
+  if (m.normalTexture.index >= 0 || m.extensions.count("KHR_materials_anisotropy") > 0) return true;
+  const auto coat = m.extensions.find("KHR_materials_clearcoat");
+  return coat != m.extensions.end() && coat->second.Has("clearcoatNormalTexture");
+}
+
 }  // namespace
 
 void checkExtensions(const tinygltf::Model& model, const GltfReader& reader) {
@@ -110,7 +120,7 @@ void warnOfIgnoredFeatures(const tinygltf::Model& model, const GltfReader& reade
         const std::string where = at + ".attributes." + name;
         if (name.rfind("COLOR_", 0) == 0 && name != "COLOR_0")
           reader.warn(where, "only COLOR_0 is read; this set of vertex colours is not");
-        else if (name == "TANGENT")
+        else if (name == "TANGENT" && usesTangents(model, primitive.material))
           reader.warn(where,
                       "tangents are not read; a normal map's and an anisotropic lobe's tangent is dP/du of the "
                       "texture coordinates");

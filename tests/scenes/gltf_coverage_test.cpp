@@ -85,6 +85,26 @@ TEST_F(GltfCoverage, IgnoredCoreFeaturesAreWarnings) {
                           HasSubstr("materials[0].alphaMode: BLEND is read as MASK at alphaCutoff 0.5")));
 }
 
+// A mesh's tangents are not read: warned where a normal map or an
+// anisotropic lobe would take one, and not on a material that takes none.
+TEST_F(GltfCoverage, UnreadTangentsAreWarnedOnlyWhereATangentIsUsed) {
+  nlohmann::json parts;
+  parts["meshes"] = {
+      {{"primitives",
+        {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}, {"TANGENT", 0}}}, {"indices", 2}, {"material", 0}}}}}};
+  EXPECT_THAT(load("plain_tangents", nlohmann::json::object(), parts).warnings, IsEmpty());
+  EXPECT_THAT(load("anisotropic_tangents",
+                   {{"extensions", {{"KHR_materials_anisotropy", {{"anisotropyStrength", 0.5}}}}}}, parts)
+                  .warnings,
+              ElementsAre(HasSubstr("meshes[0].primitives[0].attributes.TANGENT: tangents are not read")));
+  ASSERT_TRUE(
+      facet::testing::writePng(dir_ / "flat.png", 2, 2, std::vector<facet::testing::Rgba8>(4, {128, 128, 255, 255})));
+  parts["textures"] = {{{"source", 0}}};
+  parts["images"] = {{{"uri", "flat.png"}}};
+  EXPECT_THAT(load("mapped_tangents", {{"normalTexture", {{"index", 0}}}}, parts).warnings,
+              ElementsAre(HasSubstr("meshes[0].primitives[0].attributes.TANGENT: tangents are not read")));
+}
+
 TEST_F(GltfCoverage, AlphaModesAreCutouts) {
   // MASK is read: no warning; the object carries the cutoff, the factor's
   // alpha and the base colour slot.
