@@ -38,6 +38,14 @@ Object groundSquare(const Aabb& bounds, double height) {
   return ground;
 }
 
+// The ground's square appended to `scene` in its own material.
+Object& addSquare(Scene& scene, const GroundScenes& ground) {
+  scene.objects.push_back(ground.square);
+  scene.objects.back().material = int(scene.materials.size());
+  scene.materials.push_back(ground.squareMaterial);
+  return scene.objects.back();
+}
+
 }  // namespace
 
 double lowestPoint(const SceneGeometry& geometry) {
@@ -89,9 +97,8 @@ GroundScenes groundScenes(const Scene& model) {
   scenes.holdout.objects.push_back(ground);
   scenes.holdout.objects.back().material = 1;
 
-  scenes.catcher = ground;
-  scenes.catcher.shadowCatcher = true;
-  scenes.catcherMaterial = lambertian("ground", 1.0);
+  scenes.square = ground;
+  scenes.squareMaterial = lambertian("ground", 1.0);
   return scenes;
 }
 
@@ -100,10 +107,7 @@ Scene holdoutWithPaths(const GroundScenes& ground, const Scene& model) {
   holdout.materials = model.materials;
   holdout.textures = model.textures;
   holdout.objects = model.objects;
-  holdout.objects.push_back(ground.catcher);
-  holdout.objects.back().shadowCatcher = false;
-  holdout.objects.back().material = int(holdout.materials.size());
-  holdout.materials.push_back(ground.catcherMaterial);
+  addSquare(holdout, ground);
   holdout.render.bounces = model.render.bounces;
   holdout.render.diffuseBounces = model.render.diffuseBounces;
   holdout.render.glossyBounces = model.render.glossyBounces;
@@ -112,9 +116,7 @@ Scene holdoutWithPaths(const GroundScenes& ground, const Scene& model) {
 }
 
 Scene withShadowCatcher(Scene scene, const GroundScenes& ground) {
-  scene.objects.push_back(ground.catcher);
-  scene.objects.back().material = int(scene.materials.size());
-  scene.materials.push_back(ground.catcherMaterial);
+  addSquare(scene, ground).shadowCatcher = true;
   return scene;
 }
 

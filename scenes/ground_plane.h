@@ -16,10 +16,10 @@ inline constexpr double kGroundHalfWidth = 10.0;
 struct GroundScenes {
   Scene holdout;  // the model, black, standing on the ground
   Scene ground;   // the ground alone
-  // The ground as the model's paths see it, a shadow catcher
-  // (rules/shading/shadow_catcher.h), and its white Lambertian material.
-  Object catcher;
-  materials::Material catcherMaterial;
+  // The ground's square and its white Lambertian material, for the scenes
+  // of a model whose paths run (below).
+  Object square;
+  materials::Material squareMaterial;
 };
 
 // Both lit by the model's environment with shadow rays: its own method
