@@ -1,4 +1,4 @@
-// The irradiance map: per texel, the cosine-weighted mean radiance around its
+// The irradiance map: per node, the cosine-weighted mean radiance around its
 // direction over every texel of one level of the source map's mip chain
 // (rules/environment/irradiance_map.h, as in the CPU reference).
 #version 460
@@ -13,7 +13,7 @@ layout(local_size_x = FACET_IBL_TILE_SIZE, local_size_y = FACET_IBL_TILE_SIZE) i
 
 layout(set = 0, binding = 0, std140) uniform Params {
   int width;  // of the irradiance map
-  int height;
+  int height;  // its rows of nodes, pole to pole
   int sourceWidth;  // of the chain level read
   int sourceHeight;
   uint sourceOffset;  // in floats
@@ -25,7 +25,7 @@ void main() {
   int x = int(gl_GlobalInvocationID.x);
   int y = int(gl_GlobalInvocationID.y);
   if (x >= width || y >= height) return;
-  vec3 n = irradiance_texel_direction(x, y, width, height);
+  vec3 n = irradiance_node_direction(x, y, width, height);
   vec3 sum = vec3(0.0);
   float weight = 0.0;
   for (int j = 0; j < sourceHeight; ++j) {

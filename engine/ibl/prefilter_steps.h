@@ -21,7 +21,8 @@ struct LevelSize {
 // Level i >= 1 of the ladder: max(16, min(map width, firstLevelWidth) >> (i - 1)) wide, 2:1.
 LevelSize prefilteredLevelSize(const scene::EnvironmentMap& map, const PrefilterSettings& settings, int level);
 
-// The irradiance map: irradianceWidth x irradianceWidth / 2.
+// The irradiance map: irradianceWidth x (irradianceWidth / 2 + 1) nodes,
+// its rows from pole to pole (irradiance_node_direction).
 LevelSize irradianceMapSize(const PrefilterSettings& settings);
 
 // The 2x2-box mip chain of a map: levels while both sides halve evenly,

@@ -24,7 +24,7 @@ LevelSize prefilteredLevelSize(const scene::EnvironmentMap& map, const Prefilter
 }
 
 LevelSize irradianceMapSize(const PrefilterSettings& settings) {
-  return {settings.irradianceWidth, settings.irradianceWidth / 2};
+  return {settings.irradianceWidth, settings.irradianceWidth / 2 + 1};
 }
 
 std::vector<LevelSize> sourceChainSizes(int width, int height) {
@@ -118,7 +118,7 @@ RadianceLevel prefilterLevel(const std::vector<MipLevel>& chain, LevelSize size,
   return level;
 }
 
-// Per texel of the irradiance map, the cosine-weighted mean radiance around
+// Per node of the irradiance map, the cosine-weighted mean radiance around
 // its direction over every texel of the chain level irradiance_source_level picks.
 RadianceLevel convolveIrradiance(const std::vector<MipLevel>& chain, LevelSize size) {
   const MipLevel& source = chain[m::irradiance_source_level(chain.front().width, int(chain.size()))];
@@ -137,7 +137,7 @@ RadianceLevel convolveIrradiance(const std::vector<MipLevel>& chain, LevelSize s
   map.rgb.resize(3 * std::size_t(size.width) * std::size_t(size.height));
   forEachRow(size.height, [&](int y) {
     for (int x = 0; x < size.width; ++x) {
-      const glm::dvec3 n = m::irradiance_texel_direction(x, y, size.width, size.height);
+      const glm::dvec3 n = m::irradiance_node_direction(x, y, size.width, size.height);
       glm::dvec3 sum(0.0);
       double weight = 0;
       for (const SourceTexel& t : texels) {
@@ -283,9 +283,9 @@ glm::dvec3 irradianceOverPi(const PrefilteredEnvironment& env, const glm::dvec3&
 double shIrradianceError(const std::array<glm::dvec3, 9>& sh, const RadianceLevel& irradianceMap) {
   double difference = 0, total = 0;
   for (int y = 0; y < irradianceMap.height; ++y) {
-    const double solidAngle = m::environment_texel_solid_angle(y, irradianceMap.width, irradianceMap.height);
+    const double solidAngle = m::irradiance_node_solid_angle(y, irradianceMap.width, irradianceMap.height);
     for (int x = 0; x < irradianceMap.width; ++x) {
-      const glm::dvec3 n = m::irradiance_texel_direction(x, y, irradianceMap.width, irradianceMap.height);
+      const glm::dvec3 n = m::irradiance_node_direction(x, y, irradianceMap.width, irradianceMap.height);
       const glm::dvec3 convolved = texelAt(irradianceMap.rgb.data(), irradianceMap.width, x, y);
       const glm::dvec3 error = shIrradianceOverPi(sh, n) - convolved;
       difference += solidAngle * glm::dot(error, error);

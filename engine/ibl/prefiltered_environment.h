@@ -33,7 +33,7 @@ struct PrefilterSettings {
   int samples = 256;          // GGX samples per prefiltered texel
   int dfgSize = 64;           // DFG table: dfgSize x dfgSize over (n.v, sqrt(alpha))
   int dfgSamples = 4096;      // samples per DFG entry
-  int irradianceWidth = 64;   // the irradiance map: irradianceWidth x irradianceWidth / 2 (even)
+  int irradianceWidth = 64;   // the irradiance map: irradianceWidth x (irradianceWidth / 2 + 1) nodes (even)
 };
 
 struct RadianceLevel {
@@ -57,7 +57,7 @@ struct DfgTable {
 struct PrefilteredEnvironment {
   std::vector<RadianceLevel> levels;
   std::array<glm::dvec3, 9> irradianceSh{};  // radiance projected on SH bands 0-2
-  RadianceLevel irradianceMap;               // E / pi, cosine-convolved (alpha unused)
+  RadianceLevel irradianceMap;               // E / pi at irradiance_node_direction (alpha unused)
   bool irradianceFromMap = false;            // the rule's choice (usesIrradianceMap)
   std::vector<DfgTable> dfg;                 // one per requested (D, G) pair, in request order
 };

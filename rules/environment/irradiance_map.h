@@ -17,10 +17,27 @@ FACET_FN int irradiance_sh_texel(int i) { return 1 + i; }
 
 FACET_FN int irradiance_map_texel(int texel) { return 10 + texel; }
 
-// Bilinear taps of the map at uv, as texel indices y * width + x, continued
-// across the poles: the row beyond a pole is its first row half a turn
-// round (width is even). Clamping there instead would read a normal at the
-// pole from one side of a ring half a texel away.
+// The map's nodes: columns at texel centres, u = (x + 1/2) / width, and
+// rows from pole to pole, v = y / (rows - 1), so that its first and last
+// rows are the poles themselves. Every node of a pole row is the same
+// direction, so a lookup near a pole tends to one value whatever the
+// azimuth, which a normal at a pole does not define (the flat top of a
+// cube, a floor): rows of texel centres there would read two points
+// of a ring a few degrees away, and the float and double azimuths of the
+// same normal would pick different points.
+FACET_FN vec3 irradiance_node_direction(int x, int y, int width, int rows) {
+  return environment_direction(vec2((real(x) + real(0.5)) / real(width), real(y) / real(rows - 1)));
+}
+
+// The band of directions a row of nodes stands for, per node: the solid
+// angle between the half-way latitudes to its neighbouring rows.
+FACET_FN real irradiance_node_solid_angle(int y, int width, int rows) {
+  real above = max(real(y) - real(0.5), real(0)) / real(rows - 1);
+  real below = min(real(y) + real(0.5), real(rows - 1)) / real(rows - 1);
+  return real(2) * PI / real(width) * (cos(PI * above) - cos(PI * below));
+}
+
+// Bilinear taps of the map's nodes at uv, as indices y * width + x.
 struct IrradianceTaps {
   int t00;  // (x0, y0)
   int t10;  // (x1, y0)
@@ -30,33 +47,28 @@ struct IrradianceTaps {
   real fy;
 };
 
-FACET_FN IrradianceTaps irradiance_map_taps(vec2 uv, int width, int height) {
+FACET_FN IrradianceTaps irradiance_map_taps(vec2 uv, int width, int rows) {
   real x = uv.x * real(width) - real(0.5);
-  real y = clamp(uv.y * real(height) - real(0.5), real(-0.5), real(height) - real(0.5));
+  real y = clamp(uv.y, real(0), real(1)) * real(rows - 1);
   real xf = floor(x);
-  real yf = floor(y);
   int x0 = int(xf);  // >= -1: uv.x >= 0
   x0 = x0 < 0 ? x0 + width : x0 % width;
   int x1 = (x0 + 1) % width;
-  int y0 = int(yf);
-  int y1 = y0 + 1;
-  int top_turn = y0 < 0 ? width / 2 : 0;
-  int bottom_turn = y1 >= height ? width / 2 : 0;
-  int top = max(y0, 0) * width;
-  int bottom = min(y1, height - 1) * width;
+  int y0 = min(int(y), rows - 2);
   IrradianceTaps t;
-  t.t00 = top + (x0 + top_turn) % width;
-  t.t10 = top + (x1 + top_turn) % width;
-  t.t01 = bottom + (x0 + bottom_turn) % width;
-  t.t11 = bottom + (x1 + bottom_turn) % width;
+  t.t00 = y0 * width + x0;
+  t.t10 = y0 * width + x1;
+  t.t01 = (y0 + 1) * width + x0;
+  t.t11 = (y0 + 1) * width + x1;
   t.fx = x - xf;
-  t.fy = y - yf;
+  t.fy = y - real(y0);
   return t;
 }
 
 // Source texel (x, y) of a width x height map weighs n.l at its centre
 // times its solid angle in the cosine-weighted mean of the radiance around
-// n. The mean over these weights is E(n) / pi, exact for a constant map.
+// n, a node's direction. The mean over these weights is E(n) / pi, exact
+// for a constant map.
 FACET_FN vec3 irradiance_texel_direction(int x, int y, int width, int height) {
   return environment_direction(vec2((real(x) + real(0.5)) / real(width), (real(y) + real(0.5)) / real(height)));
 }
