@@ -366,8 +366,8 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
     environment =
         ibl::prepareEnvironmentLighting(scene, [](const scene::EnvironmentMap& map, const ibl::ModelPairs& models) {
           const ibl::PrefilterSettings settings;
-          return ibl::cachedPrefilter(map, models, settings, "cpu",
-                                      [&] { return ibl::prefilterOnCpu(map, models, settings); });
+          return ibl::rememberedPrefilter(map, models, settings, "cpu",
+                                          [&] { return ibl::prefilterOnCpu(map, models, settings); });
         });
   const double environmentMilliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - environmentStart).count();

@@ -40,8 +40,8 @@ ibl::EnvironmentLighting prepareEnvironment(gpu::Device& d, const scene::Scene& 
   return ibl::prepareEnvironmentLighting(scene, [&](const scene::EnvironmentMap& map, const ibl::ModelPairs& models) {
     const ibl::PrefilterSettings settings;
     // Keyed by the device too: its limits decide how large a map it prefilters whole.
-    return ibl::cachedPrefilter(map, models, settings, "gpu " + d.adapterInfo().name,
-                                [&] { return prefilterOnGpu(d, map, models, settings); });
+    return ibl::rememberedPrefilter(map, models, settings, "gpu " + d.adapterInfo().name,
+                                    [&] { return prefilterOnGpu(d, map, models, settings); });
   });
 }
 

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <mutex>
 
 namespace facet::ibl {
 
@@ -24,6 +26,28 @@ bool filteredUsesEnvironmentSamples(const scene::EnvironmentMap& map) {
   return m::filtered_uses_environment_samples(largest, weighted / (4 * m::PI));
 }
 
+namespace {
+
+// The distribution of the last map asked for, kept with the map itself (so
+// that its address cannot be another map's): the rounds, frames and cells
+// of one scene build it once.
+EnvironmentDistribution distributionOf(const std::shared_ptr<const scene::EnvironmentMap>& map) {
+  static std::mutex mutex;
+  static std::shared_ptr<const scene::EnvironmentMap> lastMap;
+  static std::shared_ptr<const EnvironmentDistribution> last;
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (lastMap == map) return *last;
+  }
+  auto built = std::make_shared<const EnvironmentDistribution>(buildDistribution(*map));
+  const std::lock_guard<std::mutex> lock(mutex);
+  lastMap = map;
+  last = built;
+  return *built;
+}
+
+}  // namespace
+
 EnvironmentLighting prepareEnvironmentLighting(const scene::Scene& scene, const PrefilterBuilder& prefilter) {
   EnvironmentLighting lighting;
   const scene::Environment& environment = *scene.environment;
@@ -32,7 +56,7 @@ EnvironmentLighting prepareEnvironmentLighting(const scene::Scene& scene, const 
   lighting.sinRotation = std::sin(glm::radians(environment.rotationDegrees));
   switch (environment.method) {
     case scene::IblMethod::Sampled:
-      lighting.distribution = buildDistribution(*environment.map);
+      lighting.distribution = distributionOf(environment.map);
       break;
     case scene::IblMethod::Prefiltered: {
       ModelPairs pairs;
@@ -52,7 +76,7 @@ EnvironmentLighting prepareEnvironmentLighting(const scene::Scene& scene, const 
       lighting.mipChain = mipChain(*environment.map);
       lighting.environmentSamples = filteredUsesEnvironmentSamples(*environment.map);
       if (lighting.environmentSamples) {
-        lighting.distribution = buildDistribution(*environment.map);
+        lighting.distribution = distributionOf(environment.map);
         scene::EnvironmentMap density;
         density.width = environment.map->width;
         density.height = environment.map->height;

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -75,6 +77,27 @@ PrefilteredEnvironment cachedPrefilter(const scene::EnvironmentMap& map, const M
       cache_format::environmentFromPayload,
       [&](const PrefilteredEnvironment& env) { return cache_format::environmentFits(env, map, models, settings); },
       build);
+}
+
+PrefilteredEnvironment rememberedPrefilter(const scene::EnvironmentMap& map, const ModelPairs& models,
+                                           const PrefilterSettings& settings, const std::string& builder,
+                                           const std::function<PrefilteredEnvironment()>& build) {
+  struct Last {
+    std::mutex mutex;
+    std::string key;
+    std::shared_ptr<const PrefilteredEnvironment> value;
+  };
+  static Last last;
+  const std::string key = keyText(map, models, settings, builder);
+  {
+    const std::lock_guard<std::mutex> lock(last.mutex);
+    if (last.value && last.key == key) return *last.value;
+  }
+  auto value = std::make_shared<const PrefilteredEnvironment>(cachedPrefilter(map, models, settings, builder, build));
+  const std::lock_guard<std::mutex> lock(last.mutex);
+  last.key = key;
+  last.value = value;
+  return *value;
 }
 
 DfgTable cachedDfgTable(int distribution, int geometry, const PrefilterSettings& settings) {

@@ -110,6 +110,11 @@ std::vector<glm::vec4> irradianceTable(const PrefilteredEnvironment& env);
 PrefilteredEnvironment cachedPrefilter(const scene::EnvironmentMap& map, const ModelPairs& models,
                                        const PrefilterSettings& settings, const std::string& builder,
                                        const std::function<PrefilteredEnvironment()>& build);
+// cachedPrefilter behind the last result this process got, kept in memory:
+// the rounds, frames and cells of one scene read the file once.
+PrefilteredEnvironment rememberedPrefilter(const scene::EnvironmentMap& map, const ModelPairs& models,
+                                           const PrefilterSettings& settings, const std::string& builder,
+                                           const std::function<PrefilteredEnvironment()>& build);
 // dfgTable through the same cache, keyed by the pair and the table's settings.
 DfgTable cachedDfgTable(int distribution, int geometry, const PrefilterSettings& settings = {});
 
