@@ -16,6 +16,8 @@ double luminance(const glm::vec4& rgba) {
   return 0.2126 * double(rgba.r) + 0.7152 * double(rgba.g) + 0.0722 * double(rgba.b);
 }
 
+double judgedLuminance(const glm::vec4& rgba) { return std::min(luminance(rgba), kDisplayWhite); }
+
 SampleRounds::SampleRounds(int width, int height, int tileSize)
     : grid_{width, height, tileSize},
       rounds_(std::size_t(grid_.count()), 0),
@@ -38,7 +40,7 @@ void SampleRounds::add(const Image& round, const PixelRect& window, const std::v
       for (int x = r.x0; x < r.x1; ++x) {
         const glm::vec4 v = round.beauty[round.index(x - window.x0, y - window.y0)];
         const std::size_t p = std::size_t(y) * std::size_t(grid_.width) + std::size_t(x);
-        const double l = luminance(v);
+        const double l = judgedLuminance(v);
         sum_[p] += glm::dvec4(v);
         luminanceSum_[p] += l;
         luminanceSquares_[p] += l * l;

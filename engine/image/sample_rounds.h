@@ -30,6 +30,12 @@ struct TileGrid {
 // less than this: dark tiles are judged by their absolute error there.
 inline constexpr double kLuminanceFloor = 0.05;
 
+// The luminance a picture shows as white. A round's pixel brighter than
+// this counts as this: the spread of a lamp's edge, 100 times white, or of
+// a highlight that the tone curve shows white anyway, is noise nobody sees,
+// and judged unclipped it would keep a tile running to the sample cap.
+inline constexpr double kDisplayWhite = 1.0;
+
 class SampleRounds {
  public:
   SampleRounds(int width, int height, int tileSize);
@@ -45,8 +51,8 @@ class SampleRounds {
 
   // The standard error of the tile's pixels' means, as the root mean square
   // over the tile of each pixel's s / sqrt(n) (s the sample standard
-  // deviation of its n rounds' luminance), relative to the tile's mean
-  // luminance or kLuminanceFloor, whichever is larger. Infinite below two
+  // deviation of its n rounds' judgedLuminance), relative to the tile's
+  // mean of it or kLuminanceFloor, whichever is larger. Infinite below two
   // rounds.
   double error(int tile) const;
 
@@ -63,5 +69,8 @@ class SampleRounds {
 
 // Rec. 709 luminance of linear RGB.
 double luminance(const glm::vec4& rgba);
+
+// The luminance a tile's noise is judged by: clipped at kDisplayWhite.
+double judgedLuminance(const glm::vec4& rgba);
 
 }  // namespace facet

@@ -90,6 +90,24 @@ TEST(SampleRounds, ANoiselessTileHasNoErrorAndDarkTilesAreJudgedAgainstTheFloor)
   EXPECT_NEAR(rounds.error(0), 0.01 / 3.0 / kLuminanceFloor, 1e-6);
 }
 
+// A lamp 100 times white beside a pixel that sees it only in some rounds:
+// what the picture shows of that pixel is white or nearly, and it is judged
+// by its rounds clipped at white; spread above white is no noise at all.
+TEST(SampleRounds, NoiseAboveWhiteIsJudgedAsTheWhiteItShows) {
+  SampleRounds rounds(16, 16, 16);
+  const PixelRect whole = PixelRect::whole(16, 16);
+  Image lamp(16, 16), brighter(16, 16), edge(16, 16);
+  for (glm::vec4& p : lamp.beauty) p = glm::vec4(100.0f);
+  for (glm::vec4& p : brighter.beauty) p = glm::vec4(120.0f);
+  rounds.add(lamp, whole, {0});
+  rounds.add(brighter, whole, {0});
+  EXPECT_EQ(rounds.error(0), 0.0) << "both rounds show white";
+  for (glm::vec4& p : edge.beauty) p = glm::vec4(0.0f);
+  rounds.add(edge, whole, {0});
+  // Each pixel judged as 1, 1, 0: mean 2/3, s = 1 / sqrt(3), mean's error s / sqrt(3).
+  EXPECT_NEAR(rounds.error(0), (1.0 / 3.0) / (2.0 / 3.0), 1e-6);
+}
+
 TEST(SampleRounds, RefusesTilesOutsideTheRound) {
   SampleRounds rounds(32, 16, 16);
   Image half(16, 16);
