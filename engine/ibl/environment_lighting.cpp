@@ -2,12 +2,12 @@
 
 #include <glm/trigonometric.hpp>
 
+#include "engine/ibl/last_result.h"
 #include "rules/rules.h"
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <mutex>
 
 namespace facet::ibl {
 
@@ -28,22 +28,11 @@ bool filteredUsesEnvironmentSamples(const scene::EnvironmentMap& map) {
 
 namespace {
 
-// The distribution of the last map asked for, kept with the map itself (so
-// that its address cannot be another map's): the rounds, frames and cells
-// of one scene build it once.
+// The distribution of the last map asked for, keyed by the map itself, whose
+// pointer held here keeps its address from becoming another map's.
 EnvironmentDistribution distributionOf(const std::shared_ptr<const scene::EnvironmentMap>& map) {
-  static std::mutex mutex;
-  static std::shared_ptr<const scene::EnvironmentMap> lastMap;
-  static std::shared_ptr<const EnvironmentDistribution> last;
-  {
-    const std::lock_guard<std::mutex> lock(mutex);
-    if (lastMap == map) return *last;
-  }
-  auto built = std::make_shared<const EnvironmentDistribution>(buildDistribution(*map));
-  const std::lock_guard<std::mutex> lock(mutex);
-  lastMap = map;
-  last = built;
-  return *built;
+  static LastResult<std::shared_ptr<const scene::EnvironmentMap>, EnvironmentDistribution> last;
+  return last.get(map, [&] { return buildDistribution(*map); });
 }
 
 }  // namespace

@@ -5,14 +5,13 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <memory>
-#include <mutex>
 #include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "engine/ibl/cache_folder.h"
+#include "engine/ibl/last_result.h"
 #include "engine/ibl/prefilter_cache_format.h"
 #include "engine/ibl/prefiltered_environment.h"
 
@@ -82,22 +81,9 @@ PrefilteredEnvironment cachedPrefilter(const scene::EnvironmentMap& map, const M
 PrefilteredEnvironment rememberedPrefilter(const scene::EnvironmentMap& map, const ModelPairs& models,
                                            const PrefilterSettings& settings, const std::string& builder,
                                            const std::function<PrefilteredEnvironment()>& build) {
-  struct Last {
-    std::mutex mutex;
-    std::string key;
-    std::shared_ptr<const PrefilteredEnvironment> value;
-  };
-  static Last last;
-  const std::string key = keyText(map, models, settings, builder);
-  {
-    const std::lock_guard<std::mutex> lock(last.mutex);
-    if (last.value && last.key == key) return *last.value;
-  }
-  auto value = std::make_shared<const PrefilteredEnvironment>(cachedPrefilter(map, models, settings, builder, build));
-  const std::lock_guard<std::mutex> lock(last.mutex);
-  last.key = key;
-  last.value = value;
-  return *value;
+  static LastResult<std::string, PrefilteredEnvironment> last;
+  return last.get(keyText(map, models, settings, builder),
+                  [&] { return cachedPrefilter(map, models, settings, builder, build); });
 }
 
 DfgTable cachedDfgTable(int distribution, int geometry, const PrefilterSettings& settings) {
