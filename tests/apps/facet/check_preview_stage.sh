@@ -27,7 +27,9 @@ preview() { "$facet" preview --time-limit 86400 "$@"; }
 common=(--size 32x32 --backend cpu --no-ground)
 
 # The sheet: two cells side by side, labelled; every render's verdict checked.
-preview gold "$library/red_plastic.json" "${common[@]}" --noise-threshold 0.03 --json -o sheet.png >sheet.json
+# At 64 spp a cell: the gold ball's highlight of the studio's lamp keeps its
+# tiles short of the threshold, and the CPU reference is slow.
+preview gold "$library/red_plastic.json" "${common[@]}" --noise-threshold 0.03 --max-spp 64 --json -o sheet.png >sheet.json
 /usr/bin/python3 - sheet.json sheet.png <<'PY' || fail "the sheet's report or size"
 import json, struct, sys
 report = json.load(open(sys.argv[1]))
@@ -40,7 +42,7 @@ for r in report["renders"]:
     assert r["stop"] in ("converged", "sample cap", "time limit"), r["stop"]
     if r["stop"] == "converged":
         assert max(r["tile_errors"]) <= r["noise_threshold"], r
-    assert r["spp_max"] <= 256
+    assert r["spp_max"] <= 64
 PY
 
 # A noisier estimator of the same picture takes more samples.
