@@ -4,7 +4,6 @@
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
-#include <ImfStdIO.h>
 
 // stb_image's Radiance reader, static so that no stbi symbol leaves the
 // binary: a shared library that links Debian's full stb_image (tinygltf
@@ -89,61 +88,49 @@ void zeroBadTexels(EnvironmentMap& map) {
   }
 }
 
-// The pixels of an opened OpenEXR image, which `source` names in errors.
-EnvironmentMap readExrPixels(Imf::InputFile& in, const fs::path& source) {
-  const Imath::Box2i window = in.header().dataWindow();
-  const std::int64_t width = std::int64_t(window.max.x) - window.min.x + 1;
-  const std::int64_t height = std::int64_t(window.max.y) - window.min.y + 1;
-  checkSize(source.string(), width, height);
-
-  const Imf::ChannelList& channels = in.header().channels();
-  const bool rgb = channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
-  const bool grey = !rgb && channels.findChannel("Y");
-  if (!rgb && !grey) {
-    std::string found;
-    for (auto c = channels.begin(); c != channels.end(); ++c)
-      found += (found.empty() ? "" : ", ") + std::string(c.name());
-    throw InputError(source.string(), 0, "an OpenEXR environment map needs channels R, G and B (or Y)",
-                     "the file has " + (found.empty() ? std::string("no channels") : found));
-  }
-
-  EnvironmentMap map = allocate(source, width, height);
-  Imf::FrameBuffer frame;
-  const std::size_t stride = 3 * sizeof(float);
-  if (rgb) {
-    frame.insert("R", Imf::Slice::Make(Imf::FLOAT, &map.rgb[0], window, stride));
-    frame.insert("G", Imf::Slice::Make(Imf::FLOAT, &map.rgb[1], window, stride));
-    frame.insert("B", Imf::Slice::Make(Imf::FLOAT, &map.rgb[2], window, stride));
-  } else {
-    frame.insert("Y", Imf::Slice::Make(Imf::FLOAT, &map.rgb[0], window, stride));
-  }
-  in.setFrameBuffer(frame);
-  in.readPixels(window.min.y, window.max.y);
-  if (grey)
-    for (std::size_t i = 0; i < map.rgb.size(); i += 3) map.rgb[i + 1] = map.rgb[i + 2] = map.rgb[i];
-  return map;
-}
-
-// OpenEXR's own errors, and running out of memory, as facet's.
-template <class Read>
-EnvironmentMap readingExr(const fs::path& source, Read read) {
+EnvironmentMap readExr(const fs::path& file) {
+  const std::string source = file.string();
+  checkExrHeaders(file, [&](const std::string& window, std::int64_t width, std::int64_t height) {
+    if (window == "dataWindow") checkSize(source, width, height);
+  });
   try {
-    return read();
+    Imf::InputFile in(source.c_str());
+    const Imath::Box2i window = in.header().dataWindow();
+    const std::int64_t width = std::int64_t(window.max.x) - window.min.x + 1;
+    const std::int64_t height = std::int64_t(window.max.y) - window.min.y + 1;
+    checkSize(source, width, height);
+
+    const Imf::ChannelList& channels = in.header().channels();
+    const bool rgb = channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
+    const bool grey = !rgb && channels.findChannel("Y");
+    if (!rgb && !grey) {
+      std::string found;
+      for (auto c = channels.begin(); c != channels.end(); ++c)
+        found += (found.empty() ? "" : ", ") + std::string(c.name());
+      throw InputError(source, 0, "an OpenEXR environment map needs channels R, G and B (or Y)",
+                       "the file has " + (found.empty() ? std::string("no channels") : found));
+    }
+
+    EnvironmentMap map = allocate(file, width, height);
+    Imf::FrameBuffer frame;
+    const std::size_t stride = 3 * sizeof(float);
+    if (rgb) {
+      frame.insert("R", Imf::Slice::Make(Imf::FLOAT, &map.rgb[0], window, stride));
+      frame.insert("G", Imf::Slice::Make(Imf::FLOAT, &map.rgb[1], window, stride));
+      frame.insert("B", Imf::Slice::Make(Imf::FLOAT, &map.rgb[2], window, stride));
+    } else {
+      frame.insert("Y", Imf::Slice::Make(Imf::FLOAT, &map.rgb[0], window, stride));
+    }
+    in.setFrameBuffer(frame);
+    in.readPixels(window.min.y, window.max.y);
+    if (grey)
+      for (std::size_t i = 0; i < map.rgb.size(); i += 3) map.rgb[i + 1] = map.rgb[i + 2] = map.rgb[i];
+    return map;
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {  // Iex::BaseExc and std::bad_alloc alike
-    throw InputError(source.string(), 0, "cannot read the OpenEXR file", e.what());
+    throw InputError(source, 0, "cannot read the OpenEXR file", e.what());
   }
-}
-
-EnvironmentMap readExr(const fs::path& file) {
-  checkExrHeaders(file, [&](const std::string& window, std::int64_t width, std::int64_t height) {
-    if (window == "dataWindow") checkSize(file.string(), width, height);
-  });
-  return readingExr(file, [&] {
-    Imf::InputFile in(file.c_str());
-    return readExrPixels(in, file);
-  });
 }
 
 struct RadianceImage {
@@ -283,18 +270,6 @@ EnvironmentMap loadEnvironmentMap(const fs::path& file) {
   checkInputFile(file, "the environment map");
 
   EnvironmentMap map = extension == ".exr" ? readExr(file) : readHdr(file);
-  zeroBadTexels(map);
-  checkRadiance(map);
-  return map;
-}
-
-EnvironmentMap decodeExrEnvironmentMap(std::span<const unsigned char> exr, const std::string& source) {
-  EnvironmentMap map = readingExr(source, [&] {
-    Imf::StdISStream stream;
-    stream.str(std::string(reinterpret_cast<const char*>(exr.data()), exr.size()));
-    Imf::InputFile in(stream);
-    return readExrPixels(in, source);
-  });
   zeroBadTexels(map);
   checkRadiance(map);
   return map;

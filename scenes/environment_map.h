@@ -12,8 +12,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
-#include <span>
-#include <string>
 #include <vector>
 
 namespace facet::scene {
@@ -48,11 +46,6 @@ struct EnvironmentMap {
 // 16384 x 8192, or holds a radiance above 1e30 (after negative, NaN and Inf
 // texels are set to 0).
 EnvironmentMap loadEnvironmentMap(const std::filesystem::path& file);
-
-// An OpenEXR image held in memory, a map the program carries, named
-// `source`: the same rules as loadEnvironmentMap's, except the header walk
-// that guards against hostile files.
-EnvironmentMap decodeExrEnvironmentMap(std::span<const unsigned char> exr, const std::string& source);
 
 // A uniform environment of radiance `color` (8 x 4 equal texels, so that
 // every method treats it like any other map).

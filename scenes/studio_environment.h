@@ -1,9 +1,9 @@
-// The lighting of a scene that brings neither lights nor an environment:
-// the shipped photographic studio (scenes/environments/studio.exr: two
-// bright lamps over a pale floor and dark walls), built into the program
-// and turned so that, from the default view, the lamps light the model
-// from above and behind its left shoulder and show in a glossy material's
-// highlights (docs/preview.md, "The default light").
+// The lighting of a scene that brings neither lights nor an environment: a
+// neutral grey studio, a soft gradient from a dark floor to a lighter
+// ceiling with three broad soft boxes (key, fill, rim), built in memory.
+// Its dynamic range is kept near 50:1, broad lobes on a smooth ground, so
+// that the prefiltered method, the default, lights it accurately
+// (docs/preview.md).
 #pragma once
 
 #include "scenes/scene.h"
@@ -11,16 +11,12 @@
 namespace facet::scene {
 
 // The map's `source`, which is how summaries name it.
-inline constexpr const char* kStudioEnvironmentName = "default studio environment, studio.exr turned 90 degrees";
+inline constexpr const char* kStudioEnvironmentName = "default studio environment";
 
-// The turn about +y that places the lamps for the default view.
-inline constexpr double kStudioRotationDegrees = 90.0;
-
-// 1024 x 512 texels, decoded from the program's copy of studio.exr.
+// 256 x 128 texels, equal in R, G and B.
 EnvironmentMap studioEnvironmentMap();
 
-// The map, turned, decoded once and shared by every scene that gets it;
-// its method and samples are facet's to choose.
+// The map, prefiltered, shared by every scene that gets it.
 Environment studioEnvironment();
 
 bool isStudioEnvironment(const Environment& environment);

@@ -79,9 +79,8 @@ INCLUDING_SUFFIXES = (".h", ".cpp", ".glsl", ".comp")
 COUNTED_SUFFIXES = INCLUDING_SUFFIXES + (".py",)
 
 # Include roots other than the repository root: the public API is included as
-# "facet/...", and the build generates the headers that embed SPIR-V and
-# data (cmake/FacetShaders.cmake, cmake/FacetEmbed.cmake), which exist in no
-# source folder.
+# "facet/...", and the build generates the headers that embed SPIR-V
+# (cmake/FacetShaders.cmake), which exist in no source folder.
 PUBLIC_API = ("facet/", "include/facet/")
 GENERATED_HEADER_LAYERS = {
     "facet_kernels/": "compute",
@@ -89,7 +88,6 @@ GENERATED_HEADER_LAYERS = {
     "facet_ibl_kernels/": "compute",
     "facet_materials_spirv/": "compute",
     "ceiling_kernels/": "benchmarks",
-    "facet_studio_map/": "scenes",
 }
 
 INCLUDE_PATTERN = re.compile(r'^[ \t]*#[ \t]*include[ \t]*"([^"]+)"', re.MULTILINE)

@@ -11,16 +11,15 @@
 #include <memory>
 
 #include "engine/camera/camera.h"
+#include "scenes/studio_environment.h"
 #include "tests/support/blob_scene.h"
-#include "tests/support/environment_maps.h"
 
 namespace facet {
 namespace {
 
 scene::Scene studioBlob(scene::IblMethod method, int pairs) {
-  scene::Scene s = testing::blobUnder(
-      testing::lambertian(0.7),
-      std::make_shared<const scene::EnvironmentMap>(ibl::testing::mapOf(256, 128, ibl::testing::softStudio)), 32);
+  scene::Scene s = testing::blobUnder(testing::lambertian(0.7),
+                                      std::make_shared<const scene::EnvironmentMap>(scene::studioEnvironmentMap()), 32);
   s.environment->method = method;
   s.environment->samples = pairs;
   return s;

@@ -35,25 +35,6 @@ inline glm::dvec3 skyWithSun(const glm::dvec3& d) {
   return glm::dot(d, sun) > 0.995 ? glm::dvec3(120.0, 100.0, 80.0) : sky;
 }
 
-// A grey studio of modest range (about 50:1): a gradient from a dark floor
-// to a lighter ceiling and three broad soft boxes, each a von Mises-Fisher
-// lobe peak x exp((cos(angle to centre) - 1) / width). Smooth enough that
-// sampled estimates converge in a few rounds.
-inline glm::dvec3 softStudio(const glm::dvec3& d) {
-  struct SoftBox {
-    glm::dvec3 centre;
-    double peak, width;
-  };
-  static const SoftBox boxes[] = {
-      {glm::normalize(glm::dvec3(-0.3, 0.8, 0.6)), 4.0, 0.06},
-      {glm::normalize(glm::dvec3(0.9, 0.25, 0.3)), 1.0, 0.08},
-      {glm::normalize(glm::dvec3(0.1, 0.45, -0.9)), 2.5, 0.03},
-  };
-  double radiance = 0.08 + 0.11 * (1.0 + d.y);
-  for (const SoftBox& box : boxes) radiance += box.peak * std::exp((glm::dot(d, box.centre) - 1.0) / box.width);
-  return glm::dvec3(radiance);
-}
-
 // Integral over the map's texels (each piecewise constant) of
 // radiance x weight(direction) d omega, each texel split into sub x sub
 // cells of exact solid angle.
