@@ -68,22 +68,33 @@ T cached(const std::string& prefix, const std::string& key, ToPayload toPayload,
 
 }  // namespace
 
+namespace {
+
+// cachedPrefilter under its key, which hashes every texel of the map: worked
+// out once per call.
+PrefilteredEnvironment cachedPrefilterOfKey(const std::string& key, const scene::EnvironmentMap& map,
+                                            const ModelPairs& models, const PrefilterSettings& settings,
+                                            const std::function<PrefilteredEnvironment()>& build) {
+  return cached<PrefilteredEnvironment>(
+      "prefiltered", key, cache_format::environmentPayload, cache_format::environmentFromPayload,
+      [&](const PrefilteredEnvironment& env) { return cache_format::environmentFits(env, map, models, settings); },
+      build);
+}
+
+}  // namespace
+
 PrefilteredEnvironment cachedPrefilter(const scene::EnvironmentMap& map, const ModelPairs& models,
                                        const PrefilterSettings& settings, const std::string& builder,
                                        const std::function<PrefilteredEnvironment()>& build) {
-  return cached<PrefilteredEnvironment>(
-      "prefiltered", keyText(map, models, settings, builder), cache_format::environmentPayload,
-      cache_format::environmentFromPayload,
-      [&](const PrefilteredEnvironment& env) { return cache_format::environmentFits(env, map, models, settings); },
-      build);
+  return cachedPrefilterOfKey(keyText(map, models, settings, builder), map, models, settings, build);
 }
 
 PrefilteredEnvironment rememberedPrefilter(const scene::EnvironmentMap& map, const ModelPairs& models,
                                            const PrefilterSettings& settings, const std::string& builder,
                                            const std::function<PrefilteredEnvironment()>& build) {
   static LastResult<std::string, PrefilteredEnvironment> last;
-  return last.get(keyText(map, models, settings, builder),
-                  [&] { return cachedPrefilter(map, models, settings, builder, build); });
+  const std::string key = keyText(map, models, settings, builder);
+  return last.get(key, [&] { return cachedPrefilterOfKey(key, map, models, settings, build); });
 }
 
 DfgTable cachedDfgTable(int distribution, int geometry, const PrefilterSettings& settings) {
