@@ -3,7 +3,6 @@
 #include <stdexcept>
 #include <utility>
 
-#include "engine/camera/camera_path.h"
 #include "engine/image/image_io.h"
 #include "engine/image/movie.h"
 #include "engine/image/output_folder.h"
@@ -53,21 +52,23 @@ PreviewStage::PreviewStage(const scene::Scene& model, const std::vector<std::str
   if (settings.ground) ground_ = scene::groundScenes(model);
 }
 
+scene::Scene PreviewStage::turned(const scene::Scene& scene, int frame) const {
+  return settings_.turntable ? scene::turntableFrame(scene, frame, *settings_.turntable, settings_.turn) : scene;
+}
+
 PreviewSheet PreviewStage::render(Renderer& renderer, int frame, const PreviewProgress& progress) const {
   if (frame < 0 || frame >= frames())
     throw std::invalid_argument("preview frame " + std::to_string(frame) + ": expected one of the " +
                                 std::to_string(frames()) + " frames");
   const int width = model_.render.width, height = model_.render.height;
-  const scene::Camera camera =
-      settings_.turntable ? camera::turntableCamera(model_.camera, frame, *settings_.turntable) : model_.camera;
+  // The ground turns with what turns: it stays under the model, and is lit as the model is.
   std::optional<scene::GroundScenes> ground = ground_;
-  if (ground) ground->holdout.camera = ground->ground.camera = camera;
+  if (ground) ground->holdout = turned(ground->holdout, frame), ground->ground = turned(ground->ground, frame);
   PreviewSheet sheet;
   sheet.frame = frame;
   std::vector<ContactCell> cells;
   for (std::size_t i = 0; i < scenes_.size(); ++i) {
-    scene::Scene scene = scenes_[i];
-    scene.camera = camera;
+    const scene::Scene scene = turned(scenes_[i], frame);
     PreviewPicture picture{labels_[i],
                            frame,
                            renderAdaptive(renderer, scene, settings_.backend, settings_.adaptive,
@@ -92,9 +93,14 @@ void writePreviewStage(Renderer& renderer, const PreviewStage& stage, const fs::
   }
   // The frames go when the movie is made or abandoned, whichever way that ends.
   const ScratchFolder folder("--movie", "the turntable's frames", "preview");
+  const bool pictureAlone = layout.count == 1;
   for (int frame = 0; frame < stage.frames(); ++frame) {
     const fs::path file = framePath(folder.path(), frame);
-    rgbaPngFile(file, layout.width(), layout.height(), stage.render(renderer, frame, progress).rgba).write(file);
+    const PreviewSheet sheet = stage.render(renderer, frame, progress);
+    if (pictureAlone)
+      rgbaPngFile(file, layout.cellWidth, layout.cellHeight, sheet.pictures.front().rgba).write(file);
+    else
+      rgbaPngFile(file, layout.width(), layout.height(), sheet.rgba).write(file);
   }
   writeMovie(folder.path(), stage.frames(), fps, output, searchPath);
 }

@@ -1,7 +1,8 @@
 // The preview stage (docs/preview-stage.md): materials on a model under one
 // environment, each rendered by adaptive sampling over a shadow-catching
 // ground and laid out as a labelled contact sheet, one sheet per frame of an
-// optional turntable, written as a PNG or handed to ffmpeg as a movie. The
+// optional turntable that turns the model (or the environment) before a
+// fixed camera, written as a PNG or handed to ffmpeg as a movie. The
 // command line (`facet preview`) and the APIs call it alike.
 #pragma once
 
@@ -17,6 +18,7 @@
 #include "engine/image/preview.h"
 #include "engine/renderer.h"
 #include "scenes/ground_plane.h"
+#include "scenes/placement.h"
 #include "scenes/scene.h"
 
 namespace facet {
@@ -25,7 +27,8 @@ struct PreviewStageSettings {
   AdaptiveSettings adaptive;
   PreviewOptions look;             // how each cell's beauty becomes 8-bit pixels
   int columns = 0;                 // of the sheet; 0: a grid about as wide as tall
-  std::optional<int> turntable;    // frames of a full orbit of the camera about its target
+  std::optional<int> turntable;    // frames of a full turn (scenes/placement.h)
+  scene::TurntableTurn turn = scene::TurntableTurn::Model;  // what the turntable turns
   bool ground = true;              // a ground that catches the model's shadow and is otherwise unseen
   Backend backend = Backend::Gpu;
   unsigned threads = 0;            // the CPU reference's; 0: every core
@@ -77,10 +80,15 @@ class PreviewStage {
   PreviewStageSettings settings_;
   ContactSheetLayout layout_;
   std::optional<scene::GroundScenes> ground_;  // the same under every material
+
+  // `scene` as frame `frame` shows it.
+  scene::Scene turned(const scene::Scene& scene, int frame) const;
 };
 
 // Every frame of `stage`, written as the sheet `output` (a .png) without a
-// turntable, or with one as the movie `output` (.mp4 or .gif) at `fps`, made
+// turntable, or with one as the movie `output` (.mp4 or .gif) at `fps`,
+// whose frames are the picture alone for one material and the sheet for
+// several (labels belong to sheets), made
 // by the ffmpeg found on `searchPath` (PATH's syntax) from frames in a
 // temporary folder that goes whichever way this ends. Throws OutputError
 // (engine/image/image_io.h) where a file cannot be written or ffmpeg fails.

@@ -18,6 +18,7 @@
 #include "scenes/json_field.h"
 #include "scenes/json_overrides.h"
 #include "scenes/obj_cage.h"
+#include "scenes/placement.h"
 #include "scenes/scene_file.h"
 #include "scenes/texture.h"
 #include "scenes/value_rules.h"
@@ -116,20 +117,6 @@ glm::dmat4 readTransform(const Field& f) {
     matrix = glm::scale(matrix, scale);
   }
   return matrix;
-}
-
-// Both subdivision schemes are affine invariant: transforming the cage
-// transforms the surface exactly. A mirroring transform would turn faces
-// inside out, so their winding is reversed to keep normals pointing outwards.
-void transformCage(ControlCage& cage, const glm::dmat4& matrix) {
-  for (glm::dvec3& p : cage.positions) p = glm::dvec3(matrix * glm::dvec4(p, 1.0));
-  if (glm::determinant(glm::dmat3(matrix)) >= 0) return;
-  std::size_t first = 0;
-  for (int count : cage.faceVertexCounts) {
-    std::reverse(cage.faceVertexIndices.begin() + std::ptrdiff_t(first) + 1,
-                 cage.faceVertexIndices.begin() + std::ptrdiff_t(first + std::size_t(count)));
-    first += std::size_t(count);
-  }
 }
 
 // A scheme by name, or an object of Catmull-Clark's settings.

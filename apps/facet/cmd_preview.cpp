@@ -17,6 +17,7 @@
 #include "engine/image/movie.h"
 #include "engine/image_memory.h"
 #include "engine/preview_stage.h"
+#include "farm_options.h"
 #include "material_options.h"
 #include "preview_stage_options.h"
 #include "render_summary.h"
@@ -66,6 +67,7 @@ void runPreview(const PreviewStageFlags& f) {
   settings.look = chosenPreview(f.preview);
   settings.columns = f.columns;
   settings.turntable = f.turntable;
+  settings.turn = chosenTurn(f.turn);
   settings.ground = !f.noGround;
   settings.backend = f.backend == "cpu" ? Backend::Cpu : Backend::Gpu;
   const char* searchPath = std::getenv("PATH");

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cstdio>
@@ -249,9 +250,11 @@ void runRender(const RenderCommandOptions& o) {
   const unsigned threads = chosenThreads(o.farm);
   if (backend == Backend::Gpu) limitLavapipeThreads(threads);
 
-  const scene::Camera still = scene.camera;
+  // Every frame is made from the scene as loaded; a still renders it as it is.
+  const bool frames = std::any_of(jobs.begin(), jobs.end(), [](const RenderJob& job) { return job.frame; });
+  const std::optional<scene::Scene> still = frames ? std::optional(scene) : std::nullopt;
   for (const RenderJob& job : jobs)  // every frame's camera before the first render
-    if (job.frame) frameCamera(still, scene.cameraKeys, o.farm, *job.frame);
+    if (job.frame) frameCamera(still->camera, still->cameraKeys, *job.frame);
   Renderer renderer(o.adapter);
   nlohmann::json summary = {{"backend", o.backend},
                             {"width", width},
@@ -261,7 +264,7 @@ void runRender(const RenderCommandOptions& o) {
                             {"warnings", warnings},
                             {"renders", nlohmann::json::array()}};
   for (const RenderJob& job : jobs) {
-    scene.camera = job.frame ? frameCamera(still, scene.cameraKeys, o.farm, *job.frame) : still;
+    if (job.frame) scene = frameScene(*still, o.farm, *job.frame);
     const auto start = std::chrono::steady_clock::now();
     ProgressLog progress(job.frame ? "frame " + std::to_string(*job.frame) : std::string("rendering"),
                          o.farm.quiet || o.farm.json);

@@ -24,8 +24,12 @@ void addFarmOptions(CLI::App& command, FarmOptions& o) {
       "Render frames A to B (every STEP): A-B or A-B:STEP; '#' in -o and "
       "--png stands for the frame number, zero-padded");
   command.add_option("--frame", o.frame, "Render frame N alone")->excludes(frames)->check(CLI::NonNegativeNumber);
-  command.add_option("--turntable", o.turntable, "Orbit the eye about the target: frame f of N at 2 pi f / N")
+  command
+      .add_option("--turntable", o.turntable,
+                  "Turn the model (see --turn) about the vertical through the camera's target: frame f of N at "
+                  "2 pi f / N")
       ->check(CLI::Range(1, 1000000));
+  addTurnOption(command, o.turn);
   command
       .add_option("--threads", o.threads,
                   "CPU backend's threads, lavapipe's workers (default: "
@@ -101,16 +105,33 @@ std::vector<int> chosenFrames(const FarmOptions& o) {
   return frames;
 }
 
-scene::Camera frameCamera(const scene::Camera& still, const std::vector<scene::CameraKey>& keys, const FarmOptions& o,
-                          int frame) {
+scene::Camera frameCamera(const scene::Camera& still, const std::vector<scene::CameraKey>& keys, int frame) {
   scene::Camera camera = keys.empty() ? still : camera::keyedCamera(keys, frame);
-  if (o.turntable) camera = camera::turntableCamera(camera, frame, *o.turntable);
   // Each key is a valid camera, but the line between two may pass through
   // one that is not (the eye through the target, up through zero).
   if (const char* problem = scene::cameraProblem(camera))
     throw std::invalid_argument("frame " + std::to_string(frame) + ": the camera keys interpolate to a camera that " +
                                 "cannot render (" + problem + "); add a key in between");
   return camera;
+}
+
+scene::Scene frameScene(const scene::Scene& still, const FarmOptions& o, int frame) {
+  scene::Scene scene = still;
+  scene.camera = frameCamera(still.camera, still.cameraKeys, frame);
+  if (!o.turntable) return scene;
+  return scene::turntableFrame(scene, frame, *o.turntable, chosenTurn(o.turn));
+}
+
+void addTurnOption(CLI::App& command, std::string& turn) {
+  command
+      .add_option("--turn", turn,
+                  "What --turntable turns before the fixed camera: the model (lights and environment fixed) or the "
+                  "environment (default: model)")
+      ->check(CLI::IsMember({"model", "environment"}));
+}
+
+scene::TurntableTurn chosenTurn(const std::string& turn) {
+  return turn == "environment" ? scene::TurntableTurn::Environment : scene::TurntableTurn::Model;
 }
 
 std::string framePath(const std::string& flag, const std::string& pattern, int frame) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/image/pixel_rect.h"
+#include "scenes/placement.h"
 #include "scenes/scene.h"
 
 namespace facet::cli {
@@ -20,7 +21,8 @@ struct FarmOptions {
   std::string frames;  // A-B or A-B:step
   bool framesGiven = false;
   std::optional<int> frame;
-  std::optional<int> turntable;  // frames in a full orbit
+  std::optional<int> turntable;  // frames in a full turn
+  std::string turn = "model";    // what it turns: model or environment
   std::optional<unsigned> threads;
   bool quiet = false;
   bool json = false;
@@ -40,9 +42,16 @@ constexpr long long kMostFrames = 1000000;
 std::vector<int> chosenFrames(const FarmOptions& options);
 
 // The camera of `frame`: the keys interpolated, or the still camera where
-// there are none, then turned about the target for --turntable.
-scene::Camera frameCamera(const scene::Camera& still, const std::vector<scene::CameraKey>& keys,
-                          const FarmOptions& options, int frame);
+// there are none.
+scene::Camera frameCamera(const scene::Camera& still, const std::vector<scene::CameraKey>& keys, int frame);
+
+// `still` as frame `frame` shows it: its camera keyed, then, for
+// --turntable, its model or environment turned (scenes/placement.h).
+scene::Scene frameScene(const scene::Scene& still, const FarmOptions& options, int frame);
+
+// --turn model|environment, what a turntable turns: render's and preview's.
+void addTurnOption(CLI::App& command, std::string& turn);
+scene::TurntableTurn chosenTurn(const std::string& turn);
 
 // `pattern` with its run of '#' replaced by the frame, zero-padded to the
 // run's length (Blender's convention); `flag` names it in errors.

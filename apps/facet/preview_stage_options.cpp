@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "engine/image/movie.h"
+#include "farm_options.h"
 #include "sampling_options.h"
 
 namespace facet::cli {
@@ -27,8 +28,11 @@ void addPreviewStageOptions(CLI::App& c, PreviewStageFlags& f) {
                "Stop a tile once its relative standard error is below this (default 0.02)");
   c.add_option("--max-spp", f.maxSpp, "At most this many camera samples per pixel (default 256)");
   c.add_option("--time-limit", f.timeLimit, "Seconds per image after which no round starts (default 60)");
-  c.add_option("--turntable", f.turntable, "Frames of a full orbit of the camera about its target, for --movie")
+  c.add_option("--turntable", f.turntable,
+               "Frames of a full turn of the model (see --turn) about the vertical through the camera's target, "
+               "for --movie")
       ->check(CLI::Range(2, 3600));
+  addTurnOption(c, f.turn);
   c.add_option("--movie", f.movie, "The turntable as an .mp4 or a .gif, made by ffmpeg (found on PATH)");
   c.add_option("--fps", f.fps, "The movie's frames per second (default 24)")->check(CLI::Range(1.0, 120.0));
   addPreviewOptions(c, f.preview);

@@ -25,7 +25,8 @@ struct PreviewStageFlags {
   double noiseThreshold = AdaptiveSettings{}.noiseThreshold;
   long long maxSpp = AdaptiveSettings{}.maxSpp;
   double timeLimit = 60;  // seconds per image: a preview answers while one waits, where the API renders to the end
-  std::optional<int> turntable;  // frames of a full orbit
+  std::optional<int> turntable;  // frames of a full turn
+  std::string turn = "model";    // what it turns
   std::string movie;             // .mp4 or .gif
   double fps = 24;
   bool noGround = false;  // no shadow-catching ground under the model

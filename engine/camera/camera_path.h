@@ -1,12 +1,9 @@
-// The camera of frame f of an animation: keyframes interpolated, and a
-// turntable orbit about the target.
+// The camera of frame f of an animation: keyframes interpolated.
 #pragma once
 
 #include <glm/geometric.hpp>
-#include <glm/gtc/constants.hpp>
 
 #include <algorithm>
-#include <cmath>
 #include <vector>
 
 #include "scenes/scene.h"
@@ -30,17 +27,6 @@ inline scene::Camera keyedCamera(const std::vector<scene::CameraKey>& keys, doub
   c.up = glm::mix(a.camera.up, b.camera.up, t);
   c.verticalFovDegrees = a.camera.verticalFovDegrees + t * (b.camera.verticalFovDegrees - a.camera.verticalFovDegrees);
   return c;
-}
-
-// Frame f of an n-frame turntable: the eye turned by 2πf/n about the axis
-// through the target along the camera's up (Rodrigues' rotation formula).
-inline scene::Camera turntableCamera(const scene::Camera& camera, int frame, int frames) {
-  const double angle = glm::two_pi<double>() * double(frame) / double(frames);
-  const glm::dvec3 k = glm::normalize(camera.up), v = camera.eye - camera.target;
-  const double c = std::cos(angle), s = std::sin(angle);
-  scene::Camera turned = camera;
-  turned.eye = camera.target + v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1 - c);
-  return turned;
 }
 
 }  // namespace facet::camera

@@ -1,12 +1,13 @@
 // The preview stage on the CPU reference: one picture per material, in the
 // materials' order, labelled with the material's name and of the model's
-// size, laid out on a sheet of the layout's size; a turntable's frames look
-// from different places; a material that does not load is named; the sheet
+// size, laid out on a sheet of the layout's size; a turntable turns the
+// model before a fixed camera and light, or the environment; a material that does not load is named; the sheet
 // is written as a PNG.
 #include "engine/preview_stage.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -62,19 +63,44 @@ TEST(PreviewStage, OnePictureAMaterialWithItsNameAndTheModelsSize) {
   EXPECT_EQ(sheet.rgba.size(), std::size_t(layout.width()) * std::size_t(layout.height()) * 4u);
 }
 
-TEST(PreviewStage, ATurntablesFramesLookFromDifferentPlaces) {
+double meanOf(const std::vector<glm::vec4>& beauty) {
+  double sum = 0;
+  for (const glm::vec4& v : beauty) sum += double(v.r) + double(v.g) + double(v.b);
+  return sum / double(beauty.size());
+}
+
+// The blob is the cube cage's limit surface, centred on the camera's target:
+// a quarter turn brings it onto itself, an eighth does not.
+TEST(PreviewStage, ATurntableTurnsTheModelBeforeAFixedCameraAndLight) {
   PreviewStageSettings settings = quickSettings();
-  settings.turntable = 4;
-  settings.ground = false;
+  settings.turntable = 8;
   const PreviewStage stage(smallModel(), {"gold"}, settings);
   ASSERT_TRUE(stage.turntable());
-  ASSERT_EQ(stage.frames(), 4);
+  ASSERT_EQ(stage.frames(), 8);
   Renderer renderer;
-  const PreviewSheet first = stage.render(renderer, 0), second = stage.render(renderer, 1);
-  EXPECT_EQ(second.frame, 1);
-  EXPECT_EQ(second.pictures.at(0).frame, 1);
-  EXPECT_NE(first.pictures.at(0).rgba, second.pictures.at(0).rgba);
-  EXPECT_THROW(stage.render(renderer, 4), std::invalid_argument);
+  const PreviewSheet first = stage.render(renderer, 0), eighth = stage.render(renderer, 1),
+                     quarter = stage.render(renderer, 2);
+  EXPECT_EQ(eighth.frame, 1);
+  EXPECT_EQ(eighth.pictures.at(0).frame, 1);
+  const double still = meanOf(first.pictures.at(0).report.image.beauty);
+  // Within 0.1%: the turned patches are diced and split into triangles in
+  // another order; turning the light instead moves the mean by several percent.
+  EXPECT_NEAR(meanOf(quarter.pictures.at(0).report.image.beauty), still, 1e-3 * still)
+      << "a quarter turn of the cube under the same light is the same picture";
+  EXPECT_NE(first.pictures.at(0).rgba, eighth.pictures.at(0).rgba) << "an eighth turn shows the cube otherwise";
+  EXPECT_THROW(stage.render(renderer, 8), std::invalid_argument);
+}
+
+TEST(PreviewStage, ATurntableOfTheEnvironmentChangesTheLightOnTheModel) {
+  PreviewStageSettings settings = quickSettings();
+  settings.turntable = 4;
+  settings.turn = scene::TurntableTurn::Environment;
+  settings.ground = false;
+  const PreviewStage stage(smallModel(), {"gold"}, settings);
+  Renderer renderer;
+  const double still = meanOf(stage.render(renderer, 0).pictures.at(0).report.image.beauty);
+  const double quarter = meanOf(stage.render(renderer, 1).pictures.at(0).report.image.beauty);
+  EXPECT_GT(std::abs(quarter - still), 0.02 * still) << "the studio's lamps swing round the cube";
 }
 
 TEST(PreviewStage, AMaterialThatDoesNotLoadIsNamed) {

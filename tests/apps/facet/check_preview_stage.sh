@@ -13,8 +13,8 @@
 #   - --movie: without ffmpeg on PATH, or with a TMPDIR that cannot hold the
 #     frames, one error naming it and exit code 2,
 #     nothing written; with a fake ffmpeg that records its arguments, the
-#     frames in order, a quoted name written as given; a failing ffmpeg
-#     leaves no movie.
+#     frames in order, each the picture alone, a quoted name written as
+#     given; a failing ffmpeg leaves no movie.
 #   check_preview_stage.sh FACET REPOSITORY WORK_FOLDER
 set -euo pipefail
 facet=$1 repo=$2 work=$3
@@ -149,16 +149,18 @@ SH
 chmod +x bin/ffmpeg
 export RECORD=$work/recorded
 movie="it's \"quoted\" \$(touch injected).gif"
-PATH=$work/bin:$PATH preview gold "${common[@]}" --turntable 4 --movie "$movie" --quiet
+PATH=$work/bin:$PATH preview gold "${common[@]}" --turntable 4 --turn environment --movie "$movie" --quiet
 [ -f "$movie" ] || fail "the fake ffmpeg's movie is not at the name given"
 [ ! -e injected ] || fail "a file name ran a command"
 grep -qx -- "-frames:v" recorded/args.txt || fail "no -frames:v in $(cat recorded/args.txt)"
 [ "$(ls recorded/*.png | wc -l)" = 4 ] || fail "ffmpeg was handed $(ls recorded/*.png | wc -l) frames, not 4"
-# Frame k handed over is frame k: each recorded sheet's cell is nearest to
-# `facet render --turntable 4 --frame k` of the same ball and material.
+# Frame k handed over is frame k, the picture alone (one material: no
+# border, no label): each is nearest to `facet render --turntable 4 --frame k`
+# of the same ball, material and turn. The ball has the symmetry of a quarter
+# turn, so its environment turns.
 for k in 0 1 2 3; do
   "$facet" render "$repo/scenes/examples/superball.obj" --material gold --size 32x32 --backend cpu --spp 16 \
-    --turntable 4 --frame "$k" -o "turn_$k.png" --quiet
+    --turntable 4 --turn environment --frame "$k" -o "turn_$k.png" --quiet
 done
 /usr/bin/python3 - <<'PY' || fail "the frames reached ffmpeg out of order"
 import OpenImageIO as oiio, numpy as np
@@ -166,7 +168,8 @@ def pixels(path):
     return oiio.ImageInput.open(path).read_image(format="float")[..., :3]
 rendered = [pixels(f"turn_{k}.png") for k in range(4)]
 for i in range(4):
-    cell = pixels(f"recorded/{i}.png")[2:34, 2:34]  # the first cell, inside its gap
+    cell = pixels(f"recorded/{i}.png")
+    assert cell.shape[:2] == (32, 32), cell.shape
     differences = [float(np.abs(cell - r).mean()) for r in rendered]
     assert int(np.argmin(differences)) == i, (i, differences)
 PY

@@ -1,4 +1,4 @@
-// Frames' cameras: keys interpolated and held, and the turntable's orbit.
+// Frames' cameras: keys interpolated and held.
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -29,25 +29,6 @@ TEST(CameraPath, KeysFurtherApartThanAnIntHoldsInterpolate) {
   const std::vector<scene::CameraKey> keys = {key(-2000000000, {0, 0, 4}, 30), key(2000000000, {8, 0, 4}, 50)};
   EXPECT_EQ(keyedCamera(keys, 0).eye, glm::dvec3(4, 0, 4));
   EXPECT_DOUBLE_EQ(keyedCamera(keys, 1000000000).verticalFovDegrees, 45);
-}
-
-TEST(CameraPath, TheTurntableOrbitsTheTargetAboutUp) {
-  scene::Camera c;
-  c.eye = {1, 2, 5};
-  c.target = {1, 0, 0};
-  const double distance = glm::length(c.eye - c.target);
-  for (int f = 0; f < 8; ++f) {
-    const scene::Camera turned = turntableCamera(c, f, 8);
-    EXPECT_NEAR(glm::length(turned.eye - turned.target), distance, 1e-12);
-    EXPECT_NEAR(turned.eye.y, 2, 1e-12) << "the eye keeps its height along up";
-    EXPECT_EQ(turned.target, c.target);
-  }
-  EXPECT_EQ(turntableCamera(c, 0, 8).eye, c.eye);
-  const glm::dvec3 quarter = turntableCamera(c, 2, 8).eye, half = turntableCamera(c, 4, 8).eye;
-  EXPECT_NEAR(quarter.x, 6, 1e-12);  // a right-handed turn about +y takes +z to +x
-  EXPECT_NEAR(quarter.z, 0, 1e-12);
-  EXPECT_NEAR(half.z, -5, 1e-12);
-  EXPECT_NEAR(half.x, 1, 1e-12);
 }
 
 }  // namespace
