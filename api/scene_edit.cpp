@@ -1,6 +1,7 @@
 // Changing a Scene: each value is written as the scene file's JSON block of
 // the same name and read by the scene file's own readers, so that an edit
 // obeys exactly the file's rules and its errors read as the file's do.
+#include <glm/matrix.hpp>
 #include <nlohmann/json.hpp>
 
 #include <memory>
@@ -9,9 +10,12 @@
 
 #include "api/errors.h"
 #include "api/material.h"
+#include "api/scene_blocks.h"
 #include "api/scene_data.h"
+#include "api/scene_objects.h"
 #include "scenes/input_error.h"
 #include "scenes/obj_cage.h"
+#include "scenes/placement.h"
 #include "scenes/scene_file.h"
 
 namespace facet::v0 {
@@ -19,30 +23,21 @@ namespace {
 
 using nlohmann::json;
 
-constexpr const char* kSource = "scene";  // what errors name for a change made in code
-
-json vec(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
 Vec3 vec(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
-
-// `data` with `change` applied to a copy: copies of the Scene made before keep what they had.
-template <class Change>
-std::shared_ptr<const detail::SceneData> changed(const detail::SceneData& data, Change&& change) {
-  auto copy = std::make_shared<detail::SceneData>(data);
-  change(copy->scene);
-  return copy;
-}
 
 const scene::Object& objectAt(const scene::Scene& s, int object) {
   if (object < 0 || std::size_t(object) >= s.objects.size())
-    throw scene::InputError(kSource, 0, "objects[" + std::to_string(object) + "]",
+    throw scene::InputError(api::kCodeSource, 0, "objects[" + std::to_string(object) + "]",
                             "no such object (the scene has " + std::to_string(s.objects.size()) + ")");
   return s.objects[std::size_t(object)];
 }
 
-// The object's material becomes `material`: in its place when no other
-// object shares it, so that the scene's materials stay as a file that names
-// this material would have them.
-void replaceMaterial(scene::Scene& s, int object, materials::Material material) {
+}  // namespace
+}  // namespace facet::v0
+
+namespace facet::api {
+
+void wearMaterial(scene::Scene& s, int object, materials::Material material) {
   scene::Object& target = s.objects[std::size_t(object)];
   int users = 0;
   for (const scene::Object& o : s.objects) users += o.material == target.material;
@@ -54,39 +49,18 @@ void replaceMaterial(scene::Scene& s, int object, materials::Material material) 
   s.materials.push_back(std::move(material));
 }
 
-json cameraBlock(const Camera& c) {
-  return {{"eye", vec(c.eye)}, {"target", vec(c.target)}, {"up", vec(c.up)}, {"fov", c.verticalFovDegrees}};
+void placeObject(v0::detail::SceneData& data, int object, const nlohmann::json& transform) {
+  const std::string field = "objects[" + std::to_string(object) + "].transform";
+  // The cage holds the authored one placed by the old transform: undone, then placed by the new.
+  const glm::dmat4 old = transformMatrix(data.transforms[std::size_t(object)], field);
+  const glm::dmat4 change = transformMatrix(transform, field) * glm::inverse(old);
+  scene::transformCage(data.scene.objects[std::size_t(object)].cage, change);
+  data.transforms[std::size_t(object)] = transform;
 }
 
-json lightBlock(const Light& l) {
-  json block = {{"type", l.type == LightType::Point  ? "point"
-                         : l.type == LightType::Spot ? "spot"
-                                                     : "directional"},
-                {"color", vec(l.color)}};
-  if (l.type != LightType::Directional) block["position"] = vec(l.position);
-  if (l.type != LightType::Point) block["direction"] = vec(l.direction);
-  if (l.type == LightType::Spot) block["inner_cone"] = l.innerConeDegrees, block["outer_cone"] = l.outerConeDegrees;
-  return block;
-}
+}  // namespace facet::api
 
-const char* methodName(IblMethod method) {
-  return method == IblMethod::Sampled ? "sampled" : method == IblMethod::Filtered ? "filtered" : "prefiltered";
-}
-
-// The file is named only when it is not the map the scene holds, which the
-// block then keeps.
-json environmentBlock(const Environment& e, const std::optional<scene::Environment>& current) {
-  json block = {{"intensity", e.intensity}, {"rotation", e.rotationDegrees}};
-  if (e.samples) block["samples"] = *e.samples;
-  if (e.method) {
-    block["method"] = methodName(*e.method);
-    block["occlusion"] = e.occlusion;
-  }
-  if (!current || current->map->source.string() != e.file) block["file"] = e.file;
-  return block;
-}
-
-}  // namespace
+namespace facet::v0 {
 
 std::vector<std::string> Scene::warnings() const { return data_->scene.warnings; }
 
@@ -99,11 +73,17 @@ std::string Scene::materialName(int object) const {
       [&] { return data_->scene.materials[std::size_t(objectAt(data_->scene, object).material)].name; });
 }
 
+std::vector<std::string> Scene::materialNames() const {
+  std::vector<std::string> names;
+  for (const materials::Material& m : data_->scene.materials) names.push_back(m.name);
+  return names;
+}
+
 void Scene::setMaterial(int object, const Material& material) {
   data_ = api::translateErrors([&] {
     objectAt(data_->scene, object);
     materials::Material m = api::toEngineMaterial(material, "objects[" + std::to_string(object) + "].material");
-    return changed(*data_, [&](scene::Scene& s) { replaceMaterial(s, object, std::move(m)); });
+    return api::changed(*data_, [&](detail::SceneData& d) { api::wearMaterial(d.scene, object, std::move(m)); });
   });
 }
 
@@ -111,70 +91,102 @@ void Scene::setMaterial(int object, const std::string& reference) {
   data_ = api::translateErrors([&] {
     objectAt(data_->scene, object);
     std::vector<scene::Texture> textures = data_->scene.textures;
-    materials::Material m = scene::readObjectMaterial(json(reference), object, kSource, textures);
+    materials::Material m = scene::readObjectMaterial(json(reference), object, api::kCodeSource,
+                                                      std::filesystem::current_path() / "", textures);
     m.name = std::filesystem::path(reference).stem().string();
-    return changed(*data_, [&](scene::Scene& s) {
-      s.textures = std::move(textures);
-      replaceMaterial(s, object, std::move(m));
+    return api::changed(*data_, [&](detail::SceneData& d) {
+      d.scene.textures = std::move(textures);
+      api::wearMaterial(d.scene, object, std::move(m));
     });
   });
 }
 
-Camera Scene::camera() const {
-  const scene::Camera& c = data_->scene.camera;
-  return {vec(c.eye), vec(c.target), vec(c.up), c.verticalFovDegrees};
+int Scene::addObject(const Object& object) {
+  const int index = objectCount();
+  data_ = api::translateErrors([&] {
+    scene::Object o = api::engineObject(object, index, int(data_->scene.materials.size()));
+    return api::changed(*data_, [&](detail::SceneData& d) {
+      d.scene.objects.push_back(std::move(o));
+      d.transforms.push_back(api::transformBlock(object.transform));
+    });
+  });
+  return index;
 }
 
-void Scene::setCamera(const Camera& camera) {
+void Scene::removeObject(int object) {
   data_ = api::translateErrors([&] {
-    const scene::Camera c = scene::readCameraBlock(cameraBlock(camera), kSource);
-    return changed(*data_, [&](scene::Scene& s) { s.camera = c; });
+    objectAt(data_->scene, object);
+    if (data_->scene.objects.size() == 1)
+      throw scene::InputError(api::kCodeSource, 0, "objects[" + std::to_string(object) + "]",
+                              "is the scene's last object, and a scene needs at least one");
+    return api::changed(*data_, [&](detail::SceneData& d) {
+      d.scene.objects.erase(d.scene.objects.begin() + object);
+      d.transforms.erase(d.transforms.begin() + object);
+    });
   });
 }
 
-std::optional<Environment> Scene::environment() const {
-  const std::optional<scene::Environment>& e = data_->scene.environment;
-  if (!e) return std::nullopt;
-  const IblMethod method = e->method == scene::IblMethod::Sampled    ? IblMethod::Sampled
-                           : e->method == scene::IblMethod::Filtered ? IblMethod::Filtered
-                                                                     : IblMethod::Prefiltered;
-  return Environment{e->map->source.string(),
-                     e->intensity,
-                     e->rotationDegrees,
-                     e->methodStated ? std::optional(method) : std::nullopt,
-                     e->samplesStated ? std::optional(e->samples) : std::nullopt,
-                     e->occlusion};
+void Scene::moveObject(int object, int to) {
+  data_ = api::translateErrors([&] {
+    objectAt(data_->scene, object);
+    objectAt(data_->scene, to);
+    return api::changed(*data_, [&](detail::SceneData& d) {
+      auto move = [&](auto& items) {
+        auto moved = std::move(items[std::size_t(object)]);
+        items.erase(items.begin() + object);
+        items.insert(items.begin() + to, std::move(moved));
+      };
+      move(d.scene.objects);
+      move(d.transforms);
+    });
+  });
 }
+
+Transform Scene::transform(int object) const {
+  return api::translateErrors([&] {
+    objectAt(data_->scene, object);
+    return api::apiTransform(data_->transforms[std::size_t(object)],
+                             "objects[" + std::to_string(object) + "].transform");
+  });
+}
+
+void Scene::setTransform(int object, const Transform& transform) {
+  data_ = api::translateErrors([&] {
+    objectAt(data_->scene, object);
+    return api::changed(*data_,
+                        [&](detail::SceneData& d) { api::placeObject(d, object, api::transformBlock(transform)); });
+  });
+}
+
+Camera Scene::camera() const { return api::apiCamera(data_->scene.camera); }
+
+void Scene::setCamera(const Camera& camera) {
+  data_ = api::translateErrors([&] {
+    const scene::Camera c = scene::readCameraBlock(api::cameraBlock(camera), api::kCodeSource);
+    return api::changed(*data_, [&](detail::SceneData& d) { d.scene.camera = c; });
+  });
+}
+
+std::optional<Environment> Scene::environment() const { return api::apiEnvironment(data_->scene.environment); }
 
 void Scene::setEnvironment(const std::optional<Environment>& environment) {
   data_ = api::translateErrors([&] {
     std::optional<scene::Environment> e;
     if (environment)
-      e = scene::readEnvironmentBlock(environmentBlock(*environment, data_->scene.environment), kSource,
-                                      data_->scene.environment);
+      e = scene::readEnvironmentBlock(api::environmentBlock(*environment, data_->scene.environment), api::kCodeSource,
+                                      std::filesystem::current_path() / "", data_->scene.environment);
     if (scene::bouncesContradictEnvironment(data_->scene.render, e))
-      throw scene::InputError(kSource, 0, "render.bounces", scene::kBouncesNeedOcclusionRule);
-    return changed(*data_, [&](scene::Scene& s) { s.environment = std::move(e); });
+      throw scene::InputError(api::kCodeSource, 0, "render.bounces", scene::kBouncesNeedOcclusionRule);
+    return api::changed(*data_, [&](detail::SceneData& d) { d.scene.environment = std::move(e); });
   });
 }
 
-std::vector<Light> Scene::lights() const {
-  std::vector<Light> out;
-  for (const scene::Light& l : data_->scene.lights) {
-    const LightType type = l.type == scene::LightType::Point  ? LightType::Point
-                           : l.type == scene::LightType::Spot ? LightType::Spot
-                                                              : LightType::Directional;
-    out.push_back({type, vec(l.color), vec(l.position), vec(l.direction), l.innerConeDegrees, l.outerConeDegrees});
-  }
-  return out;
-}
+std::vector<Light> Scene::lights() const { return api::apiLights(data_->scene.lights); }
 
 void Scene::setLights(const std::vector<Light>& lights) {
   data_ = api::translateErrors([&] {
-    json blocks = json::array();
-    for (const Light& l : lights) blocks.push_back(lightBlock(l));
-    std::vector<scene::Light> ls = scene::readLightsBlock(blocks, kSource);
-    return changed(*data_, [&](scene::Scene& s) { s.lights = std::move(ls); });
+    std::vector<scene::Light> ls = scene::readLightsBlock(api::lightsBlock(lights), api::kCodeSource);
+    return api::changed(*data_, [&](detail::SceneData& d) { d.scene.lights = std::move(ls); });
   });
 }
 

@@ -206,13 +206,37 @@ void bindEnvironment(py::module_& m) {
           py::arg("occlusion") = py::none(), "A copy with the fields given changed");
 }
 
+// A Python value as the JSON text --set and scene files take: json.dumps,
+// with paths as the strings os.fspath makes of them.
+std::string jsonText(const py::object& value) {
+  const py::module_ json = py::module_::import("json");
+  return json.attr("dumps")(value, py::arg("default") = py::module_::import("os").attr("fspath")).cast<std::string>();
+}
+
+void bindTransform(py::module_& m) {
+  py::class_<facet::Transform>(m, "Transform",
+                               "Where an object stands, as a scene file's objects[].transform: scaled, then rotated "
+                               "(degrees about x, then y, then z), then translated")
+      .def(py::init([](Vec3 translate, Vec3 rotate, Vec3 scale) {
+             return facet::Transform{translate, rotate, scale};
+           }),
+           py::kw_only(), py::arg("translate") = Vec3{0, 0, 0}, py::arg("rotate") = Vec3{0, 0, 0},
+           py::arg("scale") = Vec3{1, 1, 1})
+      .def_readonly("translate", &facet::Transform::translate, "The move, last")
+      .def_readonly("rotate", &facet::Transform::rotateDegrees, "Degrees about x, then y, then z")
+      .def_readonly("scale", &facet::Transform::scale, "Per axis, first");
+}
+
 // Objects, and the Scene that holds them with its materials, camera, environment and lights.
 void bindScene(py::module_& m) {
+  bindTransform(m);
   py::class_<facet::Object>(m, "Object", "A cage with the index of its material in the scene's materials")
-      .def(py::init([](facet::Cage cage, int material, const std::string& name, bool subdivided) {
-             return facet::Object{name, std::move(cage), material, subdivided};
+      .def(py::init([](facet::Cage cage, int material, const std::string& name, bool subdivided,
+                       const std::optional<facet::Transform>& transform) {
+             return facet::Object{name, std::move(cage), material, subdivided, transform.value_or(facet::Transform{})};
            }),
-           py::arg("cage"), py::kw_only(), py::arg("material") = 0, py::arg("name") = "", py::arg("subdivided") = true);
+           py::arg("cage"), py::kw_only(), py::arg("material") = 0, py::arg("name") = "", py::arg("subdivided") = true,
+           py::arg("transform") = py::none());
 
   py::class_<SceneObject>(m, "SceneObject", "One object of a Scene, as scene.objects lists them")
       .def_property_readonly(
@@ -225,7 +249,11 @@ void bindScene(py::module_& m) {
             else
               o.scene().setMaterial(o.index, material.cast<facet::Material>());
           },
-          "Its material's name; assign a Material, a preset name or a material file (.json) to change it");
+          "Its material's name; assign a Material, a preset name or a material file (.json) to change it")
+      .def_property(
+          "transform", [](const SceneObject& o) { return o.scene().transform(o.index); },
+          [](SceneObject& o, const facet::Transform& t) { o.scene().setTransform(o.index, t); },
+          "The Transform that places its cage, as its scene file's transform; assign one to move it");
 
   py::class_<facet::Scene>(m, "Scene",
                            "A validated scene, built here or loaded with facet.load_scene; its objects' materials, "
@@ -249,11 +277,38 @@ void bindScene(py::module_& m) {
       .def_property_readonly(
           "objects",
           [](const py::object& self) {
-            std::vector<SceneObject> out;
-            for (int i = 0; i < self.cast<const facet::Scene&>().objectCount(); ++i) out.push_back({self, i});
+            py::tuple out(self.cast<const facet::Scene&>().objectCount());
+            for (int i = 0; i < int(out.size()); ++i) out[std::size_t(i)] = py::cast(SceneObject{self, i});
             return out;
           },
-          "Its objects, in file order")
+          "Its objects, in order: a tuple, changed through add_object, remove_object and move_object")
+      .def_property_readonly("material_names", &facet::Scene::materialNames,
+                             "Its materials' names, in the order an Object's material index counts them")
+      .def(
+          "add_object",
+          [](facet::Scene& s, const facet::Object& object, const py::object& material) {
+            facet::Scene changed = s;
+            const int index = changed.addObject(object);
+            if (py::isinstance<py::str>(material) || py::hasattr(material, "__fspath__"))
+              changed.setMaterial(index, fspath(material));
+            else if (!material.is_none())
+              changed.setMaterial(index, material.cast<facet::Material>());
+            s = changed;
+            return index;
+          },
+          py::arg("object"), py::kw_only(), py::arg("material") = py::none(),
+          "Adds an Object after the others and returns its index; material (a Material, a preset name or a "
+          "material file) in place of the object's material index")
+      .def("remove_object", &facet::Scene::removeObject, py::arg("index"),
+           "Removes an object; the scene keeps at least one")
+      .def("move_object", &facet::Scene::moveObject, py::arg("index"), py::arg("to"),
+           "Puts an object at index `to`, the others keeping their order")
+      .def(
+          "set",
+          [](facet::Scene& s, const std::string& path, const py::object& value) { s.set(path, jsonText(value)); },
+          py::arg("path"), py::arg("value"),
+          "What `facet render --set PATH=VALUE` does to a scene file: set(\"materials.gold.roughness\", 0.5); "
+          "PATH in render, camera, lights, environment, materials.NAME or objects[N]")
       .def_property("camera", &facet::Scene::camera, &facet::Scene::setCamera, "The camera (assign a Camera)")
       .def_property("environment", &facet::Scene::environment, &facet::Scene::setEnvironment,
                     "The environment, or None (assign an Environment or None)")
@@ -263,6 +318,13 @@ void bindScene(py::module_& m) {
   m.def(
       "load_scene", [](const py::object& path) { return sceneOf(path); }, py::arg("path"),
       "A .json scene, an .obj cage or a .gltf/.glb file");
+  m.def(
+      "load_dict",
+      [](const py::dict& scene, const py::object& folder) {
+        return facet::sceneFromJson(jsonText(scene), fspath(folder));
+      },
+      py::arg("scene"), py::kw_only(), py::arg("folder") = ".",
+      "A scene file's JSON as a dict (docs/scene-format.md); the files it names are relative to folder");
 }
 
 }  // namespace

@@ -14,6 +14,8 @@
 // and environment only (docs/scene-format.md, "The command line: --material and --set").
 #pragma once
 
+#include <glm/mat4x4.hpp>
+
 #include <filesystem>
 #include <optional>
 #include <span>
@@ -29,6 +31,11 @@ namespace facet::scene {
 Scene loadScene(const std::filesystem::path& path, std::span<const JsonOverride> overrides = {});
 
 Scene loadJsonScene(const std::filesystem::path& path, std::span<const JsonOverride> overrides = {});
+// A scene file's JSON, parsed; errors name the file.
+nlohmann::json readSceneDocument(const std::filesystem::path& path);
+// A document read as a scene file is, its files relative to `folder`, its
+// errors naming `source` in place of a file (the APIs' dict form).
+Scene sceneFromJson(const nlohmann::json& document, const std::filesystem::path& folder, const std::string& source);
 Scene loadGltfScene(const std::filesystem::path& path);
 Scene sceneFromCage(ControlCage cage);
 
@@ -51,16 +58,29 @@ void assignMaterial(Scene& scene, const std::string& objectName, materials::Mate
 // Blocks of a scene file read from JSON values by the file's rules, each
 // error naming the field as the file does and `source` in place of the file:
 // the API's scene edits go through them, so that an edit obeys exactly what
-// a file does. Files they name are relative to the working folder.
+// a file does. Files they name are relative to the folder of `relativeTo`,
+// as a scene file's are to the file's.
 Camera readCameraBlock(const nlohmann::json& camera, const std::string& source);
 std::vector<Light> readLightsBlock(const nlohmann::json& lights, const std::string& source);
 // A block that names neither file nor color keeps `start`'s map.
 Environment readEnvironmentBlock(const nlohmann::json& environment, const std::string& source,
-                                 const std::optional<Environment>& start);
+                                 const std::filesystem::path& relativeTo, const std::optional<Environment>& start);
 // objects[object].material: a preset name, a material file (.json) or the
 // fields of a material; the textures it reads are appended to `textures`.
 materials::Material readObjectMaterial(const nlohmann::json& material, int object, const std::string& source,
-                                       std::vector<Texture>& textures);
+                                       const std::filesystem::path& relativeTo, std::vector<Texture>& textures);
+// materials.NAME: a material of the scene's named materials.
+materials::Material readNamedMaterial(const nlohmann::json& material, const std::string& name,
+                                      const std::string& source, const std::filesystem::path& relativeTo,
+                                      std::vector<Texture>& textures);
+// The render block's fields over `start`.
+RenderSettings readRenderBlock(const nlohmann::json& render, const std::string& source, RenderSettings start);
+// objects[i].transform, named `field`: translate, rotate (degrees about x,
+// then y, then z) and scale, or a matrix.
+glm::dmat4 readTransformBlock(const nlohmann::json& transform, const std::string& field, const std::string& source);
+// objects[i].subdivision, named `field`, onto `object`.
+void readSubdivisionBlock(const nlohmann::json& subdivision, const std::string& field, const std::string& source,
+                          Object& object);
 
 // Subdivision as scene files and the command line spell it, nothing for any
 // other name; kSubdivisionNames lists the spellings for error messages.

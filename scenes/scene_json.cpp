@@ -131,19 +131,20 @@ void readSubdivision(const Field& f, Object& object) {
   if (!f.value().is_object())
     f.fail(std::string("expected one of: ") + kSubdivisionNames + ", or an object of Catmull-Clark settings");
   f.object({"isolation", "end_caps"});
+  object.subdivision = Subdivision::CatmullClark;
   if (f.has("isolation")) object.isolationLevel = f["isolation"].integer(1, 10);
   if (f.has("end_caps"))
     object.endCaps =
         f["end_caps"].choice<EndCapBasis>({{"gregory", EndCapBasis::Gregory}, {"bspline", EndCapBasis::BSpline}});
 }
 
-Scene sceneFromDocument(const json& document, const std::filesystem::path& path) {
-  const std::string source = path.string();
+// `path`: a file in the folder the document's files are relative to.
+Scene sceneFromDocument(const json& document, const std::filesystem::path& path, const std::string& source) {
   const Field root(document, "", source);
   root.object({"camera", "camera_keys", "materials", "objects", "lights", "render", "environment"});
 
   Scene scene;
-  scene.source = path;
+  scene.source = source;
   scene.render.bouncesStated = false;  // unless the render block states them
   scene.render.sampling = Sampling::Chosen;
   std::map<std::string, int> materialIndex;
@@ -219,20 +220,28 @@ Scene sceneFromDocument(const json& document, const std::filesystem::path& path)
 
 }  // namespace
 
-Scene loadJsonScene(const std::filesystem::path& path, std::span<const JsonOverride> overrides) {
+nlohmann::json readSceneDocument(const std::filesystem::path& path) {
   const std::string source = path.string();
   std::ifstream in(path);
   if (!in) throw InputError(source, 0, "cannot open the scene file", "check the path and permissions");
-  json document;
   try {
-    document = json::parse(in);
+    return json::parse(in);
   } catch (const json::exception& e) {  // syntax errors, and numbers beyond double's range
     throw InputError(source, 0, "not valid JSON", e.what());
   }
+}
+
+Scene sceneFromJson(const nlohmann::json& document, const std::filesystem::path& folder, const std::string& source) {
+  return sceneFromDocument(document, folder / "", source);
+}
+
+Scene loadJsonScene(const std::filesystem::path& path, std::span<const JsonOverride> overrides) {
+  const std::string source = path.string();
+  json document = readSceneDocument(path);
   expandMaterialFiles(document, overrides);
   for (const JsonOverride& o : overrides) applyJsonOverride(document, o);
   try {
-    return sceneFromDocument(document, path);
+    return sceneFromDocument(document, path, source);
   } catch (const InputError& e) {
     // A field an override set is named with the override.
     for (const JsonOverride& o : overrides)
@@ -252,14 +261,38 @@ std::vector<Light> readLightsBlock(const nlohmann::json& lights, const std::stri
 }
 
 Environment readEnvironmentBlock(const nlohmann::json& environment, const std::string& source,
-                                 const std::optional<Environment>& start) {
-  return readEnvironment(Field(environment, "environment", source), std::filesystem::current_path() / "", start);
+                                 const std::filesystem::path& relativeTo, const std::optional<Environment>& start) {
+  return readEnvironment(Field(environment, "environment", source), relativeTo, start);
 }
 
 materials::Material readObjectMaterial(const nlohmann::json& material, int object, const std::string& source,
-                                       std::vector<Texture>& textures) {
+                                       const std::filesystem::path& relativeTo, std::vector<Texture>& textures) {
   const Field f(material, "objects[" + std::to_string(object) + "].material", source);
-  return objectMaterial(f, std::filesystem::current_path() / "", textures);
+  return objectMaterial(f, relativeTo, textures);
+}
+
+materials::Material readNamedMaterial(const nlohmann::json& material, const std::string& name,
+                                      const std::string& source, const std::filesystem::path& relativeTo,
+                                      std::vector<Texture>& textures) {
+  const Field f(material, "materials." + name, source);
+  if (namesMaterialFile(name)) f.fail("a material's name must not end in .json, which names a material file");
+  materials::Material m = readMaterial(f, relativeTo, textures);
+  m.name = name;
+  return m;
+}
+
+RenderSettings readRenderBlock(const nlohmann::json& render, const std::string& source, RenderSettings start) {
+  readRender(Field(render, "render", source), start);
+  return start;
+}
+
+glm::dmat4 readTransformBlock(const nlohmann::json& transform, const std::string& field, const std::string& source) {
+  return readTransform(Field(transform, field, source));
+}
+
+void readSubdivisionBlock(const nlohmann::json& subdivision, const std::string& field, const std::string& source,
+                          Object& object) {
+  readSubdivision(Field(subdivision, field, source), object);
 }
 
 }  // namespace facet::scene

@@ -1,7 +1,7 @@
-// Scenes: loaded from a file (.json, .obj cage, .gltf/.glb) or described in
-// code as plain data, validated into a Scene whose materials, camera,
-// environment and lights can then be changed, each change validated by the
-// scene file's rules.
+// Scenes: loaded from a file (.json, .obj cage, .gltf/.glb), given as a
+// scene file's JSON, or described in code as plain data, validated into a
+// Scene whose objects, materials, camera, environment and lights can then be
+// added, removed and changed, each change validated by the scene file's rules.
 #pragma once
 
 #include <memory>
@@ -74,11 +74,23 @@ struct Cage {
   std::vector<Crease> creases;
 };
 
+// Where an object stands over its cage, as a scene file's
+// objects[].transform writes it: scaled, then rotated (degrees about x, then
+// y, then z), then translated. The identity leaves the cage where it is.
+struct Transform {
+  Vec3 translate{0, 0, 0};
+  Vec3 rotateDegrees{0, 0, 0};
+  Vec3 scale{1, 1, 1};
+};
+
 struct Object {
   std::string name;
   Cage cage;
-  int material = 0;        // index into SceneDescription::materials
+  // Index into SceneDescription::materials, or a Scene's materialNames()
+  // for Scene::addObject.
+  int material = 0;
   bool subdivided = true;  // false: the polygons as authored
+  Transform transform;
 };
 
 enum class LightType { Directional, Point, Spot };
@@ -151,6 +163,34 @@ class Scene {
   // The material's name: its key in the file's materials, a preset's or
   // material file's name, or empty for one written inline.
   std::string materialName(int object) const;
+  // Every material of the scene, named as materialName names them, in the
+  // order an Object's `material` counts them.
+  std::vector<std::string> materialNames() const;
+
+  // Adds `object` after the others, validated as buildScene validates
+  // objects (errors name objects[N], N its index), and returns its index.
+  int addObject(const Object& object);
+  // Refuses to leave the scene without objects.
+  void removeObject(int object);
+  // Puts `object` at index `to`, the others keeping their order.
+  void moveObject(int object, int to);
+  // The transform that places the object's cage: its scene file's
+  // objects[].transform or its Object's, the identity where neither gave
+  // one; one its file writes as a matrix, which a Transform cannot hold,
+  // throws. setTransform replaces it: the cage is placed as the file's
+  // transform would place it.
+  Transform transform(int object) const;
+  void setTransform(int object, const Transform& transform);
+
+  // What `facet render --set PATH=VALUE` does to a scene file
+  // (docs/scene-format.md, "The command line: --material and --set"), done
+  // to this scene: VALUE is JSON where it parses as JSON (16, true,
+  // [0, 1, 2], {"preset": "gold"}), else a string. PATH names a field of
+  // render, camera, lights, environment, materials.NAME (a material of the
+  // file's materials block, or one set before) or objects[N] (its material,
+  // transform, name or subdivision). Files are relative to the scene file's
+  // folder, as there; to the working folder for a scene built in code.
+  void set(const std::string& path, const std::string& value);
   void setMaterial(int object, const Material& material);
   // A preset name or a material file (.json, relative to the working
   // folder), as a scene file's objects[].material names them.
@@ -171,9 +211,13 @@ class Scene {
 // An OpenSubdiv-style .obj control cage, read as a scene file's mesh is.
 Cage loadCage(const std::string& path);
 
-// Both throw Error (BadInput) naming the file or the field and the rule.
+// All throw Error (BadInput) naming the file or the field and the rule.
 Scene loadScene(const std::string& path);
 Scene buildScene(const SceneDescription& description);
+// A scene file's JSON document as text (docs/scene-format.md): the Python
+// module's dict form. Its files are relative to `folder`; errors name
+// "scene" in place of a file.
+Scene sceneFromJson(const std::string& json, const std::string& folder = ".");
 
 }  // namespace v0
 #ifndef FACET_IMPLEMENTATION  // inside libfacet, facet:: is also the engine's

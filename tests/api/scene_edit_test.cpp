@@ -7,73 +7,13 @@
 #include <facet/facet.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
+
+#include "api_scenes.h"
 
 namespace {
 
-const std::string kCube = std::string(FACET_CAGE_DIR) + "/cube.obj";
-const std::string kCourtyard = std::string(FACET_ENVIRONMENTS_DIR) + "/courtyard_256x128.hdr";
-
-facet::RenderSettings small() {
-  facet::RenderSettings settings;
-  settings.backend = facet::Backend::Cpu;
-  settings.width = settings.height = 24;
-  settings.samplesPerPixel = 1;
-  return settings;
-}
-
-facet::Renderer& renderer() {
-  static facet::Renderer shared;
-  return shared;
-}
-
-facet::Image render(const facet::Scene& scene) { return renderer().render(scene, small()).image; }
-
-// Mean beauty (r, g, b) over the pixels the object covers.
-facet::Vec3 meanCovered(const facet::Image& image) {
-  const std::vector<float>& rgba = image.aov("beauty").values;
-  facet::Vec3 sum;
-  int covered = 0;
-  for (std::size_t i = 0; i < rgba.size(); i += 4) {
-    if (rgba[i + 3] == 0) continue;
-    sum.x += rgba[i], sum.y += rgba[i + 1], sum.z += rgba[i + 2];
-    ++covered;
-  }
-  EXPECT_GT(covered, 24 * 24 / 8);
-  return {sum.x / covered, sum.y / covered, sum.z / covered};
-}
-
-void expectSameImage(const facet::Image& a, const facet::Image& b) {
-  ASSERT_EQ(a.aovs.size(), b.aovs.size());
-  for (const auto& [name, aov] : a.aovs) EXPECT_EQ(aov.values, b.aov(name).values) << name;
-  EXPECT_EQ(a.ids, b.ids);
-}
-
-std::filesystem::path writeScene(const std::string& name, const std::string& json) {
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "facet_scene_edit_test";
-  std::filesystem::create_directories(folder);
-  const std::filesystem::path file = folder / name;
-  std::ofstream(file) << json;
-  return file;
-}
-
-// The message after "SOURCE: ", which names the field and the rule.
-std::string fieldAndRule(const std::string& message, const std::string& source) {
-  EXPECT_EQ(message.rfind(source + ": ", 0), 0u) << message;
-  return message.substr(source.size() + 2);
-}
-
-template <class F>
-std::string errorOf(F&& change) {
-  try {
-    change();
-  } catch (const facet::Error& e) {
-    EXPECT_EQ(e.kind(), facet::ErrorKind::BadInput);
-    return e.what();
-  }
-  return "no error";
-}
+using namespace facet::testing;
 
 facet::Material redDiffuse() {
   facet::Material red;

@@ -403,9 +403,6 @@ class Brdf(unittest.TestCase):
             facet.brdf([0, 0, 1], [0, 0, 1], alpha=-1)
 
 
-if __name__ == "__main__":
-    unittest.main()
-
 
 class ChangedScenes(unittest.TestCase):
     """A loaded scene changed by attribute renders as the scene file that says the same."""
@@ -511,3 +508,7 @@ class ChangedScenes(unittest.TestCase):
         warnings = facet.load_scene(gltf).warnings
         self.assertTrue(any("only COLOR_0 is read" in w for w in warnings), warnings)
         self.assertEqual(facet.load_scene(self.CUBE).warnings, [])
+
+
+if __name__ == "__main__":
+    unittest.main()
