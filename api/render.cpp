@@ -1,13 +1,13 @@
 // Rendering and parity through the engine's Renderer.
 #include "facet/render.h"
 
-#include <mutex>
 #include <tuple>
 
 #include "analysis/parity.h"
 #include "api/errors.h"
 #include "api/image_planes.h"
 #include "api/render_settings.h"
+#include "api/renderer_state.h"
 #include "api/scene_data.h"
 #include "engine/adaptive_render.h"
 #include "engine/image_memory.h"
@@ -24,32 +24,6 @@ const Aov& Image::aov(const std::string& name) const {
   return found->second;
 }
 
-namespace {
-
-// What `facet render --json` says of the sampling (`spp`, `adaptive`, `sampling`).
-SamplingReport samplingReport(const RenderReport& report, const AdaptiveReport& rounds) {
-  SamplingReport s;
-  s.samplesPerPixel = report.samplesPerPixel;
-  s.why = report.samplingNote;
-  if (report.samplesPerPixel > 0) return s;
-  s.rounds = rounds.rounds;
-  s.meanSamplesPerPixel = rounds.sppMean;
-  std::tie(s.fewestSamplesPerPixel, s.mostSamplesPerPixel) = tileSppRange(rounds);
-  s.noise = rounds.maxError;
-  s.noiseThreshold = rounds.noiseThreshold;
-  s.stop = toString(rounds.stop);
-  return s;
-}
-
-}  // namespace
-
-struct Renderer::State {
-  explicit State(const std::string& adapter) : engine(adapter) {}
-  // The engine's renderer holds one GPU context and its buffers: one render at a time.
-  std::mutex rendering;
-  facet::Renderer engine;
-};
-
 Renderer::Renderer(const std::string& adapter) : state_(std::make_unique<State>(adapter)) {}
 Renderer::~Renderer() = default;
 
@@ -61,10 +35,10 @@ RenderResult Renderer::render(const Scene& input, const RenderSettings& settings
     const facet::Backend backend = settings.backend == Backend::Cpu ? facet::Backend::Cpu : facet::Backend::Gpu;
     AdaptiveReport rounds;
     const RenderReport report = renderPicture(state_->engine, s, backend, {}, {}, kNoTimeLimit, &rounds);
-    RenderResult result{publicImage(report.image),     report.device,
-                        report.totalMilliseconds(),    report.lightTransport.bounces,
-                        report.lightTransport.note,    {},
-                        samplingReport(report, rounds)};
+    RenderResult result{publicImage(report.image),          report.device,
+                        report.totalMilliseconds(),         report.lightTransport.bounces,
+                        report.lightTransport.note,         {},
+                        api::samplingReport(report, rounds)};
     for (const cpu::BounceRays& rays : report.raysPerBounce)
       result.raysPerBounce.push_back({rays.rays, rays.hits, rays.shadowRays});
     return result;
@@ -98,3 +72,26 @@ ParityReport Renderer::parity(const Scene& input, const RenderSettings& settings
 const char* version() { return FACET_VERSION_STRING; }
 
 }  // namespace facet::v0
+
+namespace facet::api {
+
+v0::SamplingReport samplingReport(const RenderReport& report, const AdaptiveReport& rounds) {
+  v0::SamplingReport s;
+  if (report.samplesPerPixel == 0) s = adaptiveSampling(rounds);
+  s.samplesPerPixel = report.samplesPerPixel;
+  s.why = report.samplingNote;
+  return s;
+}
+
+v0::SamplingReport adaptiveSampling(const AdaptiveReport& rounds) {
+  v0::SamplingReport s;
+  s.rounds = rounds.rounds;
+  s.meanSamplesPerPixel = rounds.sppMean;
+  std::tie(s.fewestSamplesPerPixel, s.mostSamplesPerPixel) = tileSppRange(rounds);
+  s.noise = rounds.maxError;
+  s.noiseThreshold = rounds.noiseThreshold;
+  s.stop = toString(rounds.stop);
+  return s;
+}
+
+}  // namespace facet::api

@@ -91,4 +91,11 @@ void bindMaterial(py::module_& m);
 // load_scene and load_cage (scene_bindings.cpp).
 void bindScenes(py::module_& m);
 
+// An Image as {aov name: numpy array (height, width[, channels])}, each a view of the render's own plane.
+py::dict imageDict(facet::Image&& image);
+// Adaptive rounds as `facet render --json`'s `adaptive`.
+py::dict adaptiveDict(const facet::SamplingReport& sampling);
+// Renderer.preview and Renderer.write_preview.
+void bindPreview(py::class_<facet::Renderer>& renderer);
+
 }  // namespace facet_python

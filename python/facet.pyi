@@ -163,6 +163,19 @@ class Renderer:
                background: Optional[Vec3] = None, alpha: bool = False) -> dict: ...
     def parity(self, scene: SceneOrPath, *, size: Optional[tuple[int, int]] = None,
                method: Optional[str] = None) -> dict: ...
+    # The preview stage: {"frame", "pictures": [{"label", "rgba", "image", "adaptive"}], "sheet"}.
+    def preview(self, model: SceneOrPath, materials: list[Union[str, PathLike[str]]], *, frame: int = 0,
+                size: tuple[int, int] = (256, 256), columns: int = 0, ground: bool = True,
+                environment: Optional[Environment] = None, noise_threshold: float = 0.02, max_spp: int = 256,
+                time_limit: Optional[float] = None, turntable: Optional[int] = None, turn: str = "model",
+                backend: str = "gpu", exposure: float = 0.0, tonemap: str = "pbr-neutral") -> dict: ...
+    # What facet preview writes: the sheet (.png), or with a turntable the movie (.mp4, .gif) by ffmpeg.
+    def write_preview(self, model: SceneOrPath, materials: list[Union[str, PathLike[str]]],
+                      output: Union[str, PathLike[str]], *, fps: float = 24.0, size: tuple[int, int] = (256, 256),
+                      columns: int = 0, ground: bool = True, environment: Optional[Environment] = None,
+                      noise_threshold: float = 0.02, max_spp: int = 256, time_limit: Optional[float] = None,
+                      turntable: Optional[int] = None, turn: str = "model", backend: str = "gpu",
+                      exposure: float = 0.0, tonemap: str = "pbr-neutral") -> None: ...
 
 def render(scene: SceneOrPath, *, size: Optional[tuple[int, int]] = None, backend: str = "gpu",
            method: Optional[str] = None, spp: Optional[int] = None, tess_level: Optional[int] = None,

@@ -11,18 +11,6 @@ namespace {
 
 using namespace facet_python;
 
-py::dict imageDict(facet::Image&& image) {
-  py::dict out;
-  const py::ssize_t h = image.height, w = image.width;
-  for (auto& [name, aov] : image.aovs) {
-    std::vector<py::ssize_t> shape{h, w};
-    if (aov.channels > 1) shape.push_back(aov.channels);
-    out[py::str(name)] = ownedArray(std::move(aov.values), shape);
-  }
-  for (auto& [name, ids] : image.ids) out[py::str(name)] = ownedArray(std::move(ids), {h, w});
-  return out;
-}
-
 facet::RenderSettings settingsOf(std::optional<std::pair<int, int>> size, const std::string& backend,
                                  std::optional<std::string> method, std::optional<int> spp,
                                  std::optional<int> tessLevel, std::optional<int> bounces) {
@@ -90,10 +78,7 @@ py::dict renderDict(facet::Renderer& renderer, const py::object& sceneOrPath, co
   if (s.samplesPerPixel > 0)
     out["spp"] = s.samplesPerPixel;
   else
-    out["adaptive"] = py::dict(py::arg("rounds") = s.rounds, py::arg("spp_mean") = s.meanSamplesPerPixel,
-                               py::arg("spp_min") = s.fewestSamplesPerPixel, py::arg("spp_max") = s.mostSamplesPerPixel,
-                               py::arg("max_tile_error") = s.noise, py::arg("noise_threshold") = s.noiseThreshold,
-                               py::arg("stop") = s.stop);
+    out["adaptive"] = adaptiveDict(s);
   if (!s.why.empty()) out["sampling"] = s.why;
   // As `facet render --json` reports it: only paths of bounces above 0 have it.
   if (result.raysPerBounce.empty()) return out;
@@ -149,6 +134,29 @@ py::dict brdfDict(const facet::Material& material, const py::object& l, const py
 
 }  // namespace
 
+namespace facet_python {
+
+py::dict imageDict(facet::Image&& image) {
+  py::dict out;
+  const py::ssize_t h = image.height, w = image.width;
+  for (auto& [name, aov] : image.aovs) {
+    std::vector<py::ssize_t> shape{h, w};
+    if (aov.channels > 1) shape.push_back(aov.channels);
+    out[py::str(name)] = ownedArray(std::move(aov.values), shape);
+  }
+  for (auto& [name, ids] : image.ids) out[py::str(name)] = ownedArray(std::move(ids), {h, w});
+  return out;
+}
+
+py::dict adaptiveDict(const facet::SamplingReport& s) {
+  return py::dict(py::arg("rounds") = s.rounds, py::arg("spp_mean") = s.meanSamplesPerPixel,
+                  py::arg("spp_min") = s.fewestSamplesPerPixel, py::arg("spp_max") = s.mostSamplesPerPixel,
+                  py::arg("max_tile_error") = s.noise, py::arg("noise_threshold") = s.noiseThreshold,
+                  py::arg("stop") = s.stop);
+}
+
+}  // namespace facet_python
+
 PYBIND11_MODULE(facet, m) {
   m.doc() = "facet: physically based materials on subdivision surfaces, rendered on the GPU and a CPU reference";
   m.attr("__version__") = facet::version();
@@ -167,8 +175,9 @@ PYBIND11_MODULE(facet, m) {
 
   bindScenes(m);
 
-  py::class_<facet::Renderer>(m, "Renderer", "Keeps the GPU device and its compiled kernels between renders")
-      .def(py::init<const std::string&>(), py::arg("adapter") = "")
+  py::class_<facet::Renderer> renderer(m, "Renderer", "Keeps the GPU device and its compiled kernels between renders");
+  bindPreview(renderer);
+  renderer.def(py::init<const std::string&>(), py::arg("adapter") = "")
       .def(
           "render",
           [](facet::Renderer& r, const py::object& scene, std::optional<std::pair<int, int>> size,

@@ -87,6 +87,9 @@ struct ParityReport {
   std::string summary;  // the table `facet parity` prints
 };
 
+struct PreviewSettings;
+struct PreviewSheet;
+
 // Keeps the GPU device and its compiled kernels between renders. Safe to
 // share between threads: its renders run one at a time. `adapter`: a substring of the adapter's name (default:
 // $FACET_ADAPTER, else the first hardware GPU, else lavapipe).
@@ -100,6 +103,15 @@ class Renderer {
   RenderResult render(const Scene& scene, const RenderSettings& settings = {});
   // Renders on both backends (settings.backend is ignored).
   ParityReport parity(const Scene& scene, const RenderSettings& settings = {});
+
+  // The preview stage (<facet/preview.h>): frame `frame` (0 without a
+  // turntable) of each material on `model`. writePreview writes every frame
+  // as `facet preview` does: the sheet to `output` (.png), or with a
+  // turntable the movie (.mp4 or .gif) by the ffmpeg found on PATH, whose
+  // frames are the picture alone for one material; the output is checked,
+  // and ffmpeg found, before the first render.
+  PreviewSheet preview(const Scene& model, const PreviewSettings& settings, int frame = 0);
+  void writePreview(const Scene& model, const PreviewSettings& settings, const std::string& output, double fps = 24);
 
  private:
   struct State;
