@@ -29,4 +29,8 @@ void rethrowAsError() {
   }
 }
 
+void refuse(const std::string& source, const std::string& field, const std::string& rule) {
+  throw scene::InputError(source, 0, field, rule);
+}
+
 }  // namespace facet::api

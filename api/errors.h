@@ -2,6 +2,7 @@
 // the kind the `facet` command maps it to (apps/facet/main.cpp).
 #pragma once
 
+#include <string>
 #include <utility>
 
 #include "facet/error.h"
@@ -9,6 +10,10 @@
 namespace facet::api {
 
 [[noreturn]] void rethrowAsError();
+
+// A value that breaks its rule: an InputError "<source>: <field>: <rule>",
+// `source` naming what holds the value ("scene", "preview settings").
+[[noreturn]] void refuse(const std::string& source, const std::string& field, const std::string& rule);
 
 template <class F>
 auto translateErrors(F&& work) {

@@ -22,8 +22,8 @@ namespace {
 
 constexpr const char* kSettings = "preview settings";  // what errors name for a bad setting
 
-[[noreturn]] void refuse(const std::string& field, const std::string& rule) {
-  throw scene::InputError(kSettings, 0, field, rule);
+[[noreturn]] void refuseSetting(const std::string& field, const std::string& rule) {
+  api::refuse(kSettings, field, rule);
 }
 
 facet::ToneCurve engineCurve(v0::ToneCurve curve) {
@@ -33,12 +33,13 @@ facet::ToneCurve engineCurve(v0::ToneCurve curve) {
 }
 
 PreviewStageSettings stageSettings(const PreviewSettings& s) {
-  if (s.materials.empty()) refuse("materials", "give at least one material (a preset or a material file)");
-  if (!scene::validNoiseThreshold(s.noiseThreshold)) refuse("noiseThreshold", scene::kNoiseThresholdRule);
-  if (!scene::validMaxSpp(s.maxSpp)) refuse("maxSpp", scene::kMaxSppRule);
-  if (s.timeLimitSeconds && !validTimeLimit(*s.timeLimitSeconds)) refuse("timeLimitSeconds", kTimeLimitRule);
-  if (s.turntable && (*s.turntable < 2 || *s.turntable > 3600)) refuse("turntable", "expected frames in [2, 3600]");
-  if (const auto rule = scene::rangeRule(s.exposure, -64, 64)) refuse("exposure", *rule);
+  if (s.materials.empty()) refuseSetting("materials", "give at least one material (a preset or a material file)");
+  if (!scene::validNoiseThreshold(s.noiseThreshold)) refuseSetting("noiseThreshold", scene::kNoiseThresholdRule);
+  if (!scene::validMaxSpp(s.maxSpp)) refuseSetting("maxSpp", scene::kMaxSppRule);
+  if (s.timeLimitSeconds && !validTimeLimit(*s.timeLimitSeconds)) refuseSetting("timeLimitSeconds", kTimeLimitRule);
+  if (s.turntable && (*s.turntable < 2 || *s.turntable > 3600))
+    refuseSetting("turntable", "expected frames in [2, 3600]");
+  if (const auto rule = scene::rangeRule(s.exposure, -64, 64)) refuseSetting("exposure", *rule);
   PreviewStageSettings out;
   out.adaptive.noiseThreshold = s.noiseThreshold;
   out.adaptive.maxSpp = s.maxSpp;
@@ -55,10 +56,10 @@ PreviewStageSettings stageSettings(const PreviewSettings& s) {
 
 // The model lit as the stage lights it, at the pictures' size.
 scene::Scene litModel(const Scene& model, const PreviewSettings& s) {
-  if (const auto rule = scene::rangeRule(s.width, 1, 16384)) refuse("width", *rule);
-  if (const auto rule = scene::rangeRule(s.height, 1, 16384)) refuse("height", *rule);
+  if (const auto rule = scene::rangeRule(s.width, 1, 16384)) refuseSetting("width", *rule);
+  if (const auto rule = scene::rangeRule(s.height, 1, 16384)) refuseSetting("height", *rule);
   if (s.columns < 0 || s.columns > int(s.materials.size()))
-    refuse("columns", "expected 0 (chosen) up to one per material");
+    refuseSetting("columns", "expected 0 (chosen) up to one per material");
   scene::Scene lit = studioLitModel(model.data().scene);
   if (s.environment) {
     Scene withMap = model;
@@ -84,7 +85,7 @@ PreviewSheet Renderer::preview(const Scene& model, const PreviewSettings& settin
   return api::translateErrors([&] {
     const PreviewStage stage(litModel(model, settings), settings.materials, stageSettings(settings));
     if (frame < 0 || frame >= stage.frames())
-      refuse("frame", "expected one of the " + std::to_string(stage.frames()) + " frames, from 0");
+      refuseSetting("frame", "expected one of the " + std::to_string(stage.frames()) + " frames, from 0");
     const std::scoped_lock oneAtATime(state_->rendering);
     return publicSheet(stage.render(state_->engine, frame), stage.layout());
   });
@@ -93,7 +94,7 @@ PreviewSheet Renderer::preview(const Scene& model, const PreviewSettings& settin
 void Renderer::writePreview(const Scene& model, const PreviewSettings& settings, const std::string& output,
                             double fps) {
   api::translateErrors([&] {
-    if (!(fps >= 1 && fps <= 120)) refuse("fps", "expected frames per second in [1, 120]");
+    if (!(fps >= 1 && fps <= 120)) refuseSetting("fps", "expected frames per second in [1, 120]");
     const char* searchPath = std::getenv("PATH");
     const std::string path = searchPath ? searchPath : "";
     checkOutputPath("output", output);

@@ -24,10 +24,6 @@ namespace {
 using nlohmann::json;
 using Data = std::shared_ptr<const detail::SceneData>;
 
-[[noreturn]] void refuse(const std::string& field, const std::string& rule) {
-  throw scene::InputError(api::kCodeSource, 0, field, rule);
-}
-
 // `o` applied to a document that holds `block` alone under `root`, and the block it leaves.
 json overridden(const std::string& root, json block, const scene::JsonOverride& o) {
   json document = {{root, std::move(block)}};
@@ -39,7 +35,7 @@ Data setRenderField(const detail::SceneData& d, const scene::JsonOverride& o) {
   const scene::RenderSettings r =
       scene::readRenderBlock(overridden("render", json::object(), o), api::kCodeSource, d.scene.render);
   if (scene::bouncesContradictEnvironment(r, d.scene.environment))
-    refuse("render.bounces", scene::kBouncesNeedOcclusionRule);
+    api::refuse(api::kCodeSource, "render.bounces", scene::kBouncesNeedOcclusionRule);
   return api::changed(d, [&](detail::SceneData& c) { c.scene.render = r; });
 }
 
@@ -49,7 +45,7 @@ Data setEnvironmentField(const detail::SceneData& d, const scene::JsonOverride& 
   const scene::Environment e =
       scene::readEnvironmentBlock(overridden("environment", block, o), api::kCodeSource, d.relativeTo, now);
   if (scene::bouncesContradictEnvironment(d.scene.render, e))
-    refuse("render.bounces", scene::kBouncesNeedOcclusionRule);
+    api::refuse(api::kCodeSource, "render.bounces", scene::kBouncesNeedOcclusionRule);
   return api::changed(d, [&](detail::SceneData& c) { c.scene.environment = e; });
 }
 
@@ -59,7 +55,7 @@ Data setEnvironmentField(const detail::SceneData& d, const scene::JsonOverride& 
 Data setNamedMaterial(const detail::SceneData& d, const scene::JsonOverride& o) {
   const std::size_t end = o.path.find_first_of(".[", std::string("materials.").size());
   if (o.path.rfind("materials.", 0) != 0)
-    refuse(o.path, "set one material, materials.NAME, or a field of one, materials.NAME.FIELD");
+    api::refuse(api::kCodeSource, o.path, "set one material, materials.NAME, or a field of one, materials.NAME.FIELD");
   const std::string name = o.path.substr(10, end == std::string::npos ? std::string::npos : end - 10);
   const json block = overridden("materials", json(d.namedMaterials), o);
   std::vector<scene::Texture> textures = d.scene.textures;
@@ -111,18 +107,20 @@ Data setObjectField(const detail::SceneData& d, const scene::JsonOverride& o) {
   const std::size_t close = o.path.find(']');
   const int object = objectNumber(o.path, close);
   if (object < 0 || close + 1 >= o.path.size() || o.path[close + 1] != '.')
-    refuse(o.path, "set a field of one object: objects[N].material, .transform, .name or .subdivision");
+    api::refuse(api::kCodeSource, o.path,
+                "set a field of one object: objects[N].material, .transform, .name or .subdivision");
   const std::string where = o.path.substr(0, close + 1), field = o.path.substr(close + 2);
   const std::string key = field.substr(0, field.find_first_of(".["));
   const int count = int(d.scene.objects.size());
-  if (object >= count) refuse(where, "no such object (the scene has " + std::to_string(count) + ")");
+  if (object >= count)
+    api::refuse(api::kCodeSource, where, "no such object (the scene has " + std::to_string(count) + ")");
   const json value = overridden("value", nullptr, {"value", o.value});
   if (key == "material") {
     if (field != "material")
-      refuse(o.path,
-             "give the whole material (a preset, a material file or its fields), or change a named "
-             "material with materials.NAME." +
-                 field.substr(9));
+      api::refuse(api::kCodeSource, o.path,
+                  "give the whole material (a preset, a material file or its fields), or change a named "
+                  "material with materials.NAME." +
+                      field.substr(9));
     return setObjectMaterial(d, object, value);
   }
   if (key == "transform") {
@@ -131,7 +129,7 @@ Data setObjectField(const detail::SceneData& d, const scene::JsonOverride& o) {
     return api::changed(d, [&](detail::SceneData& c) { api::placeObject(c, object, block); });
   }
   if (key == "name" && field == "name") {
-    if (!value.is_string()) refuse(o.path, "expected a string");
+    if (!value.is_string()) api::refuse(api::kCodeSource, o.path, "expected a string");
     return api::changed(d, [&](detail::SceneData& c) { c.scene.objects[std::size_t(object)].name = value; });
   }
   if (key == "subdivision") {
@@ -141,8 +139,9 @@ Data setObjectField(const detail::SceneData& d, const scene::JsonOverride& o) {
     return api::changed(d, [&](detail::SceneData& c) { c.scene.objects[std::size_t(object)] = std::move(changed); });
   }
   if (key == "mesh")
-    refuse(o.path, "an object's mesh is not changed in place: remove the object and add one (removeObject, addObject)");
-  refuse(o.path, "set changes an object's material, transform, name and subdivision");
+    api::refuse(api::kCodeSource, o.path,
+                "an object's mesh is not changed in place: remove the object and add one (removeObject, addObject)");
+  api::refuse(api::kCodeSource, o.path, "set changes an object's material, transform, name and subdivision");
 }
 
 }  // namespace
@@ -166,7 +165,8 @@ void Scene::set(const std::string& path, const std::string& value) {
       return api::changed(d, [&](detail::SceneData& s) { s.scene.lights = std::move(ls); });
     }
     if (root == "objects") return setObjectField(d, o);
-    refuse(path, "set changes render, camera, lights, environment, materials.NAME and objects[N]");
+    api::refuse(api::kCodeSource, path,
+                "set changes render, camera, lights, environment, materials.NAME and objects[N]");
   });
 }
 

@@ -81,6 +81,11 @@ inline std::vector<Vec3> vectors(const Doubles& a) {
   return out;
 }
 
+// A path (str or os.PathLike) as os.fspath gives it.
+inline std::string fspath(const py::object& path) {
+  return py::module_::import("os").attr("fspath")(path).cast<std::string>();
+}
+
 // A Scene, or the scene file at a path (str or os.PathLike).
 facet::Scene sceneOf(const py::object& sceneOrPath);
 

@@ -1,7 +1,7 @@
 # Type stubs of the `facet` module (python/facet_module.cpp), installed beside
 # it; tests/python/stub_test.py holds every signature here to the module's.
 from os import PathLike
-from typing import Optional, Union
+from typing import Callable, Optional, Union
 
 import numpy
 import numpy.typing
@@ -163,6 +163,12 @@ class Renderer:
                background: Optional[Vec3] = None, alpha: bool = False) -> dict: ...
     def parity(self, scene: SceneOrPath, *, size: Optional[tuple[int, int]] = None,
                method: Optional[str] = None) -> dict: ...
+    # facet render --watch: callback({"picture", "passes", "spp", "image"}) after each pass, False to stop;
+    # on_bad_input(message) for a later load refused, which otherwise ends the watch.
+    def watch(self, scene: Union[str, PathLike[str]], callback: Callable[[dict], Optional[bool]], *,
+              passes: int = 16, changes: int = 0, size: Optional[tuple[int, int]] = None, backend: str = "gpu",
+              method: Optional[str] = None, spp: Optional[int] = None, tess_level: Optional[int] = None,
+              bounces: Optional[int] = None, on_bad_input: Optional[Callable[[str], None]] = None) -> None: ...
     # The preview stage: {"frame", "pictures": [{"label", "rgba", "image", "adaptive"}], "sheet"}.
     def preview(self, model: SceneOrPath, materials: list[Union[str, PathLike[str]]], *, frame: int = 0,
                 size: tuple[int, int] = (256, 256), columns: int = 0, ground: bool = True,

@@ -90,6 +90,41 @@ py::dict renderDict(facet::Renderer& renderer, const py::object& sceneOrPath, co
   return out;
 }
 
+// Renderer.watch: the callbacks run with the interpreter held; an exception
+// one raises stops the watch and is raised again when it returns.
+void watchScene(facet::Renderer& renderer, const std::string& scene, const py::function& callback,
+                const facet::WatchSettings& settings, const py::object& onBadInput) {
+  std::optional<py::error_already_set> raised;
+  const auto onPass = [&](const facet::WatchPass& pass) {
+    py::gil_scoped_acquire held;
+    try {
+      facet::Image image = pass.image;
+      const py::object goOn =
+          callback(py::dict(py::arg("picture") = pass.picture, py::arg("passes") = pass.passes,
+                            py::arg("spp") = pass.samplesPerPixel, py::arg("image") = imageDict(std::move(image))));
+      return goOn.is_none() || goOn.cast<bool>();
+    } catch (py::error_already_set& e) {
+      raised = std::move(e);
+      return false;
+    }
+  };
+  std::function<void(const facet::Error&)> badInput;
+  if (!onBadInput.is_none())
+    badInput = [&](const facet::Error& e) {
+      py::gil_scoped_acquire held;
+      try {
+        onBadInput(e.what());
+      } catch (py::error_already_set& error) {
+        raised = std::move(error);
+      }
+    };
+  {
+    py::gil_scoped_release unlocked;
+    renderer.watch(scene, onPass, settings, badInput);
+  }
+  if (raised) throw std::move(*raised);
+}
+
 py::dict parityDict(facet::Renderer& renderer, const py::object& sceneOrPath, const facet::RenderSettings& settings) {
   const facet::Scene scene = sceneOf(sceneOrPath);
   const facet::ParityReport r = [&] {
@@ -130,6 +165,51 @@ py::dict brdfDict(const facet::Material& material, const py::object& l, const py
                   py::arg("diffuse") = ownedArray(std::move(diffuse), rgbShape),
                   py::arg("F") = ownedArray(std::move(F), rgbShape), py::arg("D") = ownedArray(std::move(D), shape),
                   py::arg("G") = ownedArray(std::move(G), shape));
+}
+
+// facet.Renderer: render, watch, parity and the preview stage on one device.
+void bindRenderer(py::module_& m) {
+  py::class_<facet::Renderer> renderer(m, "Renderer", "Keeps the GPU device and its compiled kernels between renders");
+  bindPreview(renderer);
+  renderer.def(py::init<const std::string&>(), py::arg("adapter") = "")
+      .def(
+          "render",
+          [](facet::Renderer& r, const py::object& scene, std::optional<std::pair<int, int>> size,
+             const std::string& backend, OptText method, std::optional<int> spp, std::optional<int> tessLevel,
+             std::optional<int> bounces, OptText exr, OptText png, const std::string& aovs, bool half, double exposure,
+             const std::string& tonemap, OptVec background, bool alpha) {
+            return renderDict(r, scene, settingsOf(size, backend, method, spp, tessLevel, bounces),
+                              {exr, png, aovs, half, exposure, tonemap, background, alpha});
+          },
+          py::arg("scene"), py::kw_only(), py::arg("size") = py::none(), py::arg("backend") = "gpu",
+          py::arg("method") = py::none(), py::arg("spp") = py::none(), py::arg("tess_level") = py::none(),
+          py::arg("bounces") = py::none(), py::arg("exr") = py::none(), py::arg("png") = py::none(),
+          py::arg("aovs") = "all", py::arg("half") = false, py::arg("exposure") = 0.0,
+          py::arg("tonemap") = "pbr-neutral", py::arg("background") = py::none(), py::arg("alpha") = false,
+          "As facet.render, with this renderer's device and kernels kept between calls")
+      .def(
+          "watch",
+          [](facet::Renderer& r, const py::object& scene, const py::function& callback, int passes, int changes,
+             std::optional<std::pair<int, int>> size, const std::string& backend, OptText method,
+             std::optional<int> spp, std::optional<int> tessLevel, std::optional<int> bounces,
+             const py::object& onBadInput) {
+            watchScene(r, fspath(scene), callback,
+                       {settingsOf(size, backend, method, spp, tessLevel, bounces), passes, changes}, onBadInput);
+          },
+          py::arg("scene"), py::arg("callback"), py::kw_only(), py::arg("passes") = 16, py::arg("changes") = 0,
+          py::arg("size") = py::none(), py::arg("backend") = "gpu", py::arg("method") = py::none(),
+          py::arg("spp") = py::none(), py::arg("tess_level") = py::none(), py::arg("bounces") = py::none(),
+          py::arg("on_bad_input") = py::none(),
+          "Watches a scene file as facet render --watch: callback({picture, passes, spp, image}) after each pass of "
+          "each picture, False to stop; changes: return after that many (0: until stopped); on_bad_input(error) "
+          "for a later load refused, which otherwise ends the watch")
+      .def(
+          "parity",
+          [](facet::Renderer& r, const py::object& scene, std::optional<std::pair<int, int>> size, OptText method) {
+            return parityDict(r, scene, settingsOf(size, "gpu", method, std::nullopt, std::nullopt, std::nullopt));
+          },
+          py::arg("scene"), py::kw_only(), py::arg("size") = py::none(), py::arg("method") = py::none(),
+          "As facet.parity, with this renderer's device and kernels");
 }
 
 }  // namespace
@@ -175,31 +255,7 @@ PYBIND11_MODULE(facet, m) {
 
   bindScenes(m);
 
-  py::class_<facet::Renderer> renderer(m, "Renderer", "Keeps the GPU device and its compiled kernels between renders");
-  bindPreview(renderer);
-  renderer.def(py::init<const std::string&>(), py::arg("adapter") = "")
-      .def(
-          "render",
-          [](facet::Renderer& r, const py::object& scene, std::optional<std::pair<int, int>> size,
-             const std::string& backend, OptText method, std::optional<int> spp, std::optional<int> tessLevel,
-             std::optional<int> bounces, OptText exr, OptText png, const std::string& aovs, bool half, double exposure,
-             const std::string& tonemap, OptVec background, bool alpha) {
-            return renderDict(r, scene, settingsOf(size, backend, method, spp, tessLevel, bounces),
-                              {exr, png, aovs, half, exposure, tonemap, background, alpha});
-          },
-          py::arg("scene"), py::kw_only(), py::arg("size") = py::none(), py::arg("backend") = "gpu",
-          py::arg("method") = py::none(), py::arg("spp") = py::none(), py::arg("tess_level") = py::none(),
-          py::arg("bounces") = py::none(), py::arg("exr") = py::none(), py::arg("png") = py::none(),
-          py::arg("aovs") = "all", py::arg("half") = false, py::arg("exposure") = 0.0,
-          py::arg("tonemap") = "pbr-neutral", py::arg("background") = py::none(), py::arg("alpha") = false,
-          "As facet.render, with this renderer's device and kernels kept between calls")
-      .def(
-          "parity",
-          [](facet::Renderer& r, const py::object& scene, std::optional<std::pair<int, int>> size, OptText method) {
-            return parityDict(r, scene, settingsOf(size, "gpu", method, std::nullopt, std::nullopt, std::nullopt));
-          },
-          py::arg("scene"), py::kw_only(), py::arg("size") = py::none(), py::arg("method") = py::none(),
-          "As facet.parity, with this renderer's device and kernels");
+  bindRenderer(m);
 
   m.def(
       "render",

@@ -23,9 +23,7 @@ facet::PreviewSettings previewSettings(const std::vector<py::object>& materials,
                                        std::optional<int> turntable, const std::string& turn,
                                        const std::string& backend, double exposure, const std::string& tonemap) {
   facet::PreviewSettings s;
-  for (const py::object& m : materials)
-    s.materials.push_back(py::isinstance<py::str>(m) ? m.cast<std::string>()
-                                                     : py::module_::import("os").attr("fspath")(m).cast<std::string>());
+  for (const py::object& m : materials) s.materials.push_back(fspath(m));
   std::tie(s.width, s.height) = size;
   s.columns = columns;
   s.ground = ground;
@@ -101,7 +99,7 @@ void bindPreview(py::class_<facet::Renderer>& renderer) {
               const facet::PreviewSettings s =
                   previewSettings(materials, size, columns, ground, std::move(environment), noiseThreshold, maxSpp,
                                   timeLimit, turntable, turn, backend, exposure, tonemap);
-              const std::string path = py::module_::import("os").attr("fspath")(output).cast<std::string>();
+              const std::string path = fspath(output);
               py::gil_scoped_release unlocked;
               r.writePreview(scene, s, path, fps);
             },

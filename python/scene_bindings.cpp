@@ -42,10 +42,6 @@ std::vector<int> indexArray(const py::handle& values, const char* name) {
                                                      py::str(array.dtype()).cast<std::string>());
 }
 
-std::string fspath(const py::object& path) {
-  return py::module_::import("os").attr("fspath")(path).cast<std::string>();
-}
-
 constexpr std::initializer_list<std::pair<const char*, facet::LightType>> kLightTypes = {
     {"directional", facet::LightType::Directional},
     {"point", facet::LightType::Point},

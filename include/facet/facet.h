@@ -13,3 +13,4 @@
 #include "facet/render.h"
 #include "facet/scene.h"
 #include "facet/version.h"
+#include "facet/watch.h"

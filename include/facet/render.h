@@ -3,11 +3,13 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "facet/error.h"
 #include "facet/image.h"
 #include "facet/scene.h"
 
@@ -89,6 +91,8 @@ struct ParityReport {
 
 struct PreviewSettings;
 struct PreviewSheet;
+struct WatchSettings;
+struct WatchPass;
 
 // Keeps the GPU device and its compiled kernels between renders. Safe to
 // share between threads: its renders run one at a time. `adapter`: a substring of the adapter's name (default:
@@ -112,6 +116,14 @@ class Renderer {
   // and ffmpeg found, before the first render.
   PreviewSheet preview(const Scene& model, const PreviewSettings& settings, int frame = 0);
   void writePreview(const Scene& model, const PreviewSettings& settings, const std::string& output, double fps = 24);
+
+  // Watches the scene file `scene` (<facet/watch.h>): onPass after each
+  // pass of each picture, returning whether to go on. A later load or
+  // render refused on bad input goes to onBadInput, and the watch keeps the
+  // last picture and waits for the next change; without onBadInput it ends
+  // the watch, thrown. The first picture's errors are thrown.
+  void watch(const std::string& scene, const std::function<bool(const WatchPass&)>& onPass,
+             const WatchSettings& settings, const std::function<void(const Error&)>& onBadInput = {});
 
  private:
   struct State;

@@ -1,0 +1,32 @@
+// Watching a scene file as `facet render --watch` does (README.md,
+// "Watching a scene"): a picture refined pass by pass, then a new one each
+// time a file the scene reads changes (the scene, material files, cages,
+// glTF files, images, environment maps), on one Renderer, which keeps the
+// device, the compiled kernels and the diced geometry while it is the same.
+#pragma once
+
+#include "facet/image.h"
+#include "facet/render.h"
+
+namespace facet {
+namespace v0 {
+
+struct WatchSettings {
+  RenderSettings render;  // over each load of the scene, as Renderer::render applies them
+  int passes = 16;        // of each picture, in [1, 4096], each adding its samples (at least 4 after the first)
+  int changes = 0;        // changes handled before watch returns, in [0, 1000000]; 0: until onPass stops it
+};
+
+// A picture after one of its passes.
+struct WatchPass {
+  int picture = 0;  // 0: the first; then one more for each change that rendered
+  int passes = 0;   // in the image
+  int samplesPerPixel = 0;
+  Image image;
+};
+
+}  // namespace v0
+#ifndef FACET_IMPLEMENTATION
+using namespace v0;
+#endif
+}  // namespace facet
