@@ -36,14 +36,14 @@ PreviewStageSettings stageSettings(const PreviewSettings& s) {
   if (s.materials.empty()) refuseSetting("materials", "give at least one material (a preset or a material file)");
   if (!scene::validNoiseThreshold(s.noiseThreshold)) refuseSetting("noiseThreshold", scene::kNoiseThresholdRule);
   if (!scene::validMaxSpp(s.maxSpp)) refuseSetting("maxSpp", scene::kMaxSppRule);
-  if (s.timeLimitSeconds && !validTimeLimit(*s.timeLimitSeconds)) refuseSetting("timeLimitSeconds", kTimeLimitRule);
+  if (s.timeLimit && !validTimeLimit(*s.timeLimit)) refuseSetting("timeLimit", kTimeLimitRule);
   if (s.turntable && (*s.turntable < 2 || *s.turntable > 3600))
     refuseSetting("turntable", "expected frames in [2, 3600]");
   if (const auto rule = scene::rangeRule(s.exposure, -64, 64)) refuseSetting("exposure", *rule);
   PreviewStageSettings out;
   out.adaptive.noiseThreshold = s.noiseThreshold;
   out.adaptive.maxSpp = s.maxSpp;
-  out.adaptive.timeLimitSeconds = s.timeLimitSeconds.value_or(kNoTimeLimit);
+  out.adaptive.timeLimitSeconds = s.timeLimit.value_or(kNoTimeLimit);
   out.look.exposure = float(s.exposure);
   out.look.curve = engineCurve(s.toneCurve);
   out.columns = s.columns;

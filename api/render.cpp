@@ -78,7 +78,7 @@ namespace facet::api {
 v0::SamplingReport samplingReport(const RenderReport& report, const AdaptiveReport& rounds) {
   v0::SamplingReport s;
   if (report.samplesPerPixel == 0) s = adaptiveSampling(rounds);
-  s.samplesPerPixel = report.samplesPerPixel;
+  s.spp = report.samplesPerPixel;
   s.why = report.samplingNote;
   return s;
 }
@@ -86,9 +86,9 @@ v0::SamplingReport samplingReport(const RenderReport& report, const AdaptiveRepo
 v0::SamplingReport adaptiveSampling(const AdaptiveReport& rounds) {
   v0::SamplingReport s;
   s.rounds = rounds.rounds;
-  s.meanSamplesPerPixel = rounds.sppMean;
-  std::tie(s.fewestSamplesPerPixel, s.mostSamplesPerPixel) = tileSppRange(rounds);
-  s.noise = rounds.maxError;
+  s.sppMean = rounds.sppMean;
+  std::tie(s.sppMin, s.sppMax) = tileSppRange(rounds);
+  s.maxTileError = rounds.maxError;
   s.noiseThreshold = rounds.noiseThreshold;
   s.stop = toString(rounds.stop);
   return s;

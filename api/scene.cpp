@@ -20,7 +20,7 @@ namespace {
 scene::Scene engineScene(const SceneDescription& d) {
   scene::Scene s;
   s.source = api::kCodeSource;
-  s.render.bouncesStated = false;  // RenderSettings::bounces and samplesPerPixel state them
+  s.render.bouncesStated = false;  // RenderSettings::bounces and spp state them
   s.render.sampling = scene::Sampling::Chosen;
   for (std::size_t i = 0; i < d.materials.size(); ++i)
     s.materials.push_back(api::toEngineMaterial(d.materials[i], "materials[" + std::to_string(i) + "]"));

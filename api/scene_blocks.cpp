@@ -20,7 +20,7 @@ const char* methodName(v0::IblMethod method) {
 }  // namespace
 
 json cameraBlock(const v0::Camera& c) {
-  return {{"eye", vec(c.eye)}, {"target", vec(c.target)}, {"up", vec(c.up)}, {"fov", c.verticalFovDegrees}};
+  return {{"eye", vec(c.eye)}, {"target", vec(c.target)}, {"up", vec(c.up)}, {"fov", c.fov}};
 }
 
 json lightsBlock(const std::vector<v0::Light>& lights) {
@@ -32,15 +32,14 @@ json lightsBlock(const std::vector<v0::Light>& lights) {
                   {"color", vec(l.color)}};
     if (l.type != v0::LightType::Directional) block["position"] = vec(l.position);
     if (l.type != v0::LightType::Point) block["direction"] = vec(l.direction);
-    if (l.type == v0::LightType::Spot)
-      block["inner_cone"] = l.innerConeDegrees, block["outer_cone"] = l.outerConeDegrees;
+    if (l.type == v0::LightType::Spot) block["inner_cone"] = l.innerCone, block["outer_cone"] = l.outerCone;
     blocks.push_back(std::move(block));
   }
   return blocks;
 }
 
 json environmentBlock(const v0::Environment& e, const std::optional<scene::Environment>& current) {
-  json block = {{"intensity", e.intensity}, {"rotation", e.rotationDegrees}};
+  json block = {{"intensity", e.intensity}, {"rotation", e.rotation}};
   if (e.samples) block["samples"] = *e.samples;
   if (e.method) {
     block["method"] = methodName(*e.method);
@@ -51,7 +50,7 @@ json environmentBlock(const v0::Environment& e, const std::optional<scene::Envir
 }
 
 json transformBlock(const v0::Transform& t) {
-  return {{"translate", vec(t.translate)}, {"rotate", vec(t.rotateDegrees)}, {"scale", vec(t.scale)}};
+  return {{"translate", vec(t.translate)}, {"rotate", vec(t.rotate)}, {"scale", vec(t.scale)}};
 }
 
 v0::Camera apiCamera(const scene::Camera& c) { return {vec(c.eye), vec(c.target), vec(c.up), c.verticalFovDegrees}; }
@@ -93,7 +92,7 @@ v0::Transform apiTransform(const json& block, const std::string& field) {
   auto vec = [](const json& v) { return Vec3{v[0].get<double>(), v[1].get<double>(), v[2].get<double>()}; };
   v0::Transform t;
   if (block.contains("translate")) t.translate = vec(block["translate"]);
-  if (block.contains("rotate")) t.rotateDegrees = vec(block["rotate"]);
+  if (block.contains("rotate")) t.rotate = vec(block["rotate"]);
   if (block.contains("scale"))
     t.scale = block["scale"].is_array() ? vec(block["scale"]) : Vec3{block["scale"], block["scale"], block["scale"]};
   return t;

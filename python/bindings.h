@@ -100,6 +100,10 @@ void bindScenes(py::module_& m);
 py::dict imageDict(facet::Image&& image);
 // Adaptive rounds as `facet render --json`'s `adaptive`.
 py::dict adaptiveDict(const facet::SamplingReport& sampling);
+// Every public function, method and constructor of `m` wrapped so that a
+// call pybind11 cannot match names the unknown keyword as a facet.Error.
+void nameUnknownKeywords(py::module_& m, const py::object& error);
+
 // Renderer.preview and Renderer.write_preview.
 void bindPreview(py::class_<facet::Renderer>& renderer);
 

@@ -23,8 +23,8 @@ facet::RenderSettings settingsOf(std::optional<std::pair<int, int>> size, const 
   if (method)
     s.method = choice<facet::Method>(*method, "method",
                                      {{"exact", facet::Method::Exact}, {"tess", facet::Method::Tessellated}});
-  s.samplesPerPixel = spp;
-  s.tessellationRate = tessLevel;
+  s.spp = spp;
+  s.tessLevel = tessLevel;
   s.bounces = bounces;
   return s;
 }
@@ -75,8 +75,8 @@ py::dict renderDict(facet::Renderer& renderer, const py::object& sceneOrPath, co
   out["light_transport"] = result.lightTransport;
   // The sampling as `facet render --json` reports it: `spp`, or `adaptive`; `sampling` where chosen.
   const facet::SamplingReport& s = result.sampling;
-  if (s.samplesPerPixel > 0)
-    out["spp"] = s.samplesPerPixel;
+  if (s.spp > 0)
+    out["spp"] = s.spp;
   else
     out["adaptive"] = adaptiveDict(s);
   if (!s.why.empty()) out["sampling"] = s.why;
@@ -101,7 +101,7 @@ void watchScene(facet::Renderer& renderer, const std::string& scene, const py::f
       facet::Image image = pass.image;
       const py::object goOn =
           callback(py::dict(py::arg("picture") = pass.picture, py::arg("passes") = pass.passes,
-                            py::arg("spp") = pass.samplesPerPixel, py::arg("image") = imageDict(std::move(image))));
+                            py::arg("spp") = pass.spp, py::arg("image") = imageDict(std::move(image))));
       return goOn.is_none() || goOn.cast<bool>();
     } catch (py::error_already_set& e) {
       raised = std::move(e);
@@ -229,10 +229,9 @@ py::dict imageDict(facet::Image&& image) {
 }
 
 py::dict adaptiveDict(const facet::SamplingReport& s) {
-  return py::dict(py::arg("rounds") = s.rounds, py::arg("spp_mean") = s.meanSamplesPerPixel,
-                  py::arg("spp_min") = s.fewestSamplesPerPixel, py::arg("spp_max") = s.mostSamplesPerPixel,
-                  py::arg("max_tile_error") = s.noise, py::arg("noise_threshold") = s.noiseThreshold,
-                  py::arg("stop") = s.stop);
+  return py::dict(py::arg("rounds") = s.rounds, py::arg("spp_mean") = s.sppMean, py::arg("spp_min") = s.sppMin,
+                  py::arg("spp_max") = s.sppMax, py::arg("max_tile_error") = s.maxTileError,
+                  py::arg("noise_threshold") = s.noiseThreshold, py::arg("stop") = s.stop);
 }
 
 }  // namespace facet_python
@@ -298,4 +297,5 @@ PYBIND11_MODULE(facet, m) {
       py::arg("ior") = py::none(), py::arg("eta") = py::none(), py::arg("k") = py::none(),
       py::arg("diffuse") = py::none(),
       "f, specular, diffuse, F (..., 3) and D, G (...) for directions l, v of shape (..., 3), n = +z");
+  nameUnknownKeywords(m, error);
 }

@@ -30,7 +30,7 @@ facet::PreviewSettings previewSettings(const std::vector<py::object>& materials,
   s.environment = std::move(environment);
   s.noiseThreshold = noiseThreshold;
   s.maxSpp = maxSpp;
-  s.timeLimitSeconds = timeLimit;
+  s.timeLimit = timeLimit;
   s.turntable = turntable;
   s.turn =
       choice<facet::Turn>(turn, "turn", {{"model", facet::Turn::Model}, {"environment", facet::Turn::Environment}});

@@ -122,8 +122,8 @@ void bindLight(py::module_& m) {
       .def_readonly("color", &facet::Light::color, "c_light")
       .def_readonly("position", &facet::Light::position, "point and spot lights")
       .def_readonly("direction", &facet::Light::direction, "the way the light travels: directional and spot lights")
-      .def_readonly("inner_cone", &facet::Light::innerConeDegrees, "spot: half-angle in degrees of full light")
-      .def_readonly("outer_cone", &facet::Light::outerConeDegrees, "spot: half-angle in degrees beyond which none")
+      .def_readonly("inner_cone", &facet::Light::innerCone, "spot: half-angle in degrees of full light")
+      .def_readonly("outer_cone", &facet::Light::outerCone, "spot: half-angle in degrees beyond which none")
       .def(
           "replace",
           [](facet::Light l, OptText type, OptVec color, OptVec position, OptVec direction, OptReal inner,
@@ -132,8 +132,8 @@ void bindLight(py::module_& m) {
             l.color = color.value_or(l.color);
             l.position = position.value_or(l.position);
             l.direction = direction.value_or(l.direction);
-            l.innerConeDegrees = inner.value_or(l.innerConeDegrees);
-            l.outerConeDegrees = outer.value_or(l.outerConeDegrees);
+            l.innerCone = inner.value_or(l.innerCone);
+            l.outerCone = outer.value_or(l.outerCone);
             return l;
           },
           py::kw_only(), py::arg("type") = py::none(), py::arg("color") = py::none(), py::arg("position") = py::none(),
@@ -151,12 +151,12 @@ void bindCamera(py::module_& m) {
       .def_readonly("eye", &facet::Camera::eye, "Where the camera is")
       .def_readonly("target", &facet::Camera::target, "What it looks at")
       .def_readonly("up", &facet::Camera::up, "Which way is up in the image")
-      .def_readonly("fov", &facet::Camera::verticalFovDegrees, "Vertical field of view in degrees, (0, 179]")
+      .def_readonly("fov", &facet::Camera::fov, "Vertical field of view in degrees, (0, 179]")
       .def(
           "replace",
           [](facet::Camera c, OptVec eye, OptVec target, OptVec up, OptReal fov) {
             return facet::Camera{eye.value_or(c.eye), target.value_or(c.target), up.value_or(c.up),
-                                 fov.value_or(c.verticalFovDegrees)};
+                                 fov.value_or(c.fov)};
           },
           py::kw_only(), py::arg("eye") = py::none(), py::arg("target") = py::none(), py::arg("up") = py::none(),
           py::arg("fov") = py::none(), "A copy with the fields given changed");
@@ -175,7 +175,7 @@ void bindEnvironment(py::module_& m) {
       .def_readonly("file", &facet::Environment::file,
                     "The map (a loaded scene's may be the default studio map's name, or empty for a uniform colour)")
       .def_readonly("intensity", &facet::Environment::intensity, "What the map is scaled by")
-      .def_readonly("rotation", &facet::Environment::rotationDegrees, "Degrees about +y")
+      .def_readonly("rotation", &facet::Environment::rotation, "Degrees about +y")
       .def_property_readonly(
           "method",
           [](const facet::Environment& e) -> OptText {
@@ -191,7 +191,7 @@ void bindEnvironment(py::module_& m) {
              std::optional<int> samples, std::optional<bool> occlusion) {
             if (!file.is_none()) e.file = fspath(file);
             e.intensity = intensity.value_or(e.intensity);
-            e.rotationDegrees = rotation.value_or(e.rotationDegrees);
+            e.rotation = rotation.value_or(e.rotation);
             if (method) e.method = iblMethod(*method);
             if (samples) e.samples = samples;
             e.occlusion = occlusion.value_or(e.occlusion);
@@ -219,7 +219,7 @@ void bindTransform(py::module_& m) {
            py::kw_only(), py::arg("translate") = Vec3{0, 0, 0}, py::arg("rotate") = Vec3{0, 0, 0},
            py::arg("scale") = Vec3{1, 1, 1})
       .def_readonly("translate", &facet::Transform::translate, "The move, last")
-      .def_readonly("rotate", &facet::Transform::rotateDegrees, "Degrees about x, then y, then z")
+      .def_readonly("rotate", &facet::Transform::rotate, "Degrees about x, then y, then z")
       .def_readonly("scale", &facet::Transform::scale, "Per axis, first");
 }
 

@@ -32,7 +32,7 @@ struct PreviewSettings {
   std::optional<Environment> environment;
   double noiseThreshold = 0.02;            // a tile's relative standard error, in (0, 1]
   int maxSpp = 256;                        // in [8, 65536]
-  std::optional<double> timeLimitSeconds;  // per picture, in (0, 86400]; none: no limit
+  std::optional<double> timeLimit;         // seconds per picture, in (0, 86400]; none: no limit
   std::optional<int> turntable;            // frames of a full turn, in [2, 3600]
   Turn turn = Turn::Model;
   Backend backend = Backend::Gpu;

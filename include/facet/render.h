@@ -24,8 +24,8 @@ struct RenderSettings {
   Backend backend = Backend::Gpu;
   std::optional<int> width, height;
   std::optional<Method> method;
-  std::optional<int> samplesPerPixel;   // one pass of a square number; none: the scene file's, or chosen (docs/api.md)
-  std::optional<int> tessellationRate;  // tessellated method
+  std::optional<int> spp;        // one pass of a square number; none: the scene file's, or chosen (docs/api.md)
+  std::optional<int> tessLevel;  // tessellated method
   // Continuations of each camera sample's path, in [0, 64]; 0 is direct light
   // only. Above 0: an environment, if any, sampled or filtered with
   // occlusion on (docs/rendering.md, "Paths"). None: the scene's, or where
@@ -44,15 +44,15 @@ struct BounceRays {
 // The camera samples a render took (docs/rendering.md, "Converged by
 // default"): one pass, or adaptive rounds and the noise they left.
 struct SamplingReport {
-  int samplesPerPixel = 0;  // one pass of this many; 0: adaptive rounds
+  int spp = 0;  // one pass of this many; 0: adaptive rounds
   // Adaptive rounds: how many ran, the samples per pixel they left over the
   // image (mean, fewest, most), the largest tile's relative standard error
   // against the threshold, and what stopped them: "converged", "sample cap"
   // or "time limit".
   int rounds = 0;
-  double meanSamplesPerPixel = 0;
-  int fewestSamplesPerPixel = 0, mostSamplesPerPixel = 0;
-  double noise = 0, noiseThreshold = 0;
+  double sppMean = 0;
+  int sppMin = 0, sppMax = 0;
+  double maxTileError = 0, noiseThreshold = 0;
   std::string stop;
   // Where facet chose the sampling, why; empty where it was stated.
   std::string why;

@@ -79,7 +79,7 @@ struct Cage {
 // y, then z), then translated. The identity leaves the cage where it is.
 struct Transform {
   Vec3 translate{0, 0, 0};
-  Vec3 rotateDegrees{0, 0, 0};
+  Vec3 rotate{0, 0, 0};  // degrees
   Vec3 scale{1, 1, 1};
 };
 
@@ -100,15 +100,15 @@ struct Light {
   Vec3 color{1, 1, 1};
   Vec3 position{0, 0, 0};
   Vec3 direction{0, -1, 0};  // the way the light travels
-  double innerConeDegrees = 30;
-  double outerConeDegrees = 45;
+  double innerCone = 30;     // degrees
+  double outerCone = 45;
 };
 
 struct Camera {
   Vec3 eye{0, 0, 5};
   Vec3 target{0, 0, 0};
   Vec3 up{0, 1, 0};
-  double verticalFovDegrees = 40;
+  double fov = 40;  // vertical, degrees
 };
 
 enum class IblMethod { Sampled, Prefiltered, Filtered };
@@ -117,7 +117,7 @@ struct Environment {
   // studio map's name, or empty for a uniform colour.
   std::string file;
   double intensity = 1;
-  double rotationDegrees = 0;
+  double rotation = 0;  // degrees about +y
   // None: chosen, prefiltered unless paths run, then sampled with occlusion
   // (docs/rendering.md, "Light transport chosen by the scene").
   std::optional<IblMethod> method;

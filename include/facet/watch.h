@@ -21,7 +21,7 @@ struct WatchSettings {
 struct WatchPass {
   int picture = 0;  // 0: the first; then one more for each change that rendered
   int passes = 0;   // in the image
-  int samplesPerPixel = 0;
+  int spp = 0;
   Image image;
 };
 

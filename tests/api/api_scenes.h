@@ -23,7 +23,7 @@ inline facet::RenderSettings small() {
   facet::RenderSettings settings;
   settings.backend = facet::Backend::Cpu;
   settings.width = settings.height = 24;
-  settings.samplesPerPixel = 1;
+  settings.spp = 1;
   return settings;
 }
 

@@ -46,7 +46,7 @@ TEST(ApiPreview, EachMaterialsPictureAndTheLabelledSheet) {
     EXPECT_EQ(p.image.height, 16);
     EXPECT_EQ(p.rgba.size(), 24u * 16u * 4u);
     EXPECT_GE(p.sampling.rounds, 2) << "adaptive rounds";
-    EXPECT_LE(p.sampling.mostSamplesPerPixel, 8);
+    EXPECT_LE(p.sampling.sppMax, 8);
   }
   EXPECT_NE(sheet.pictures[0].rgba, sheet.pictures[1].rgba);
   EXPECT_GT(sheet.width, 2 * 24);

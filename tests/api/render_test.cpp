@@ -39,7 +39,7 @@ facet::Scene cubeOnSlab(facet::IblMethod method) {
 facet::RenderSettings onCpu(int bounces) {
   facet::RenderSettings settings;
   settings.backend = facet::Backend::Cpu;
-  settings.samplesPerPixel = 1;
+  settings.spp = 1;
   settings.bounces = bounces;
   return settings;
 }
@@ -101,20 +101,20 @@ TEST(ApiRender, UnsaidBouncesAreChosenFromTheScene) {
   EXPECT_GT(chosen.raysPerBounce[1].hits, 0u);
   // Nor is the sampling said: adaptive rounds, reported as `facet render` reports them.
   const facet::SamplingReport& rounds = chosen.sampling;
-  EXPECT_EQ(rounds.samplesPerPixel, 0);
+  EXPECT_EQ(rounds.spp, 0);
   EXPECT_GE(rounds.rounds, 4);
-  EXPECT_LE(rounds.fewestSamplesPerPixel, rounds.meanSamplesPerPixel);
-  EXPECT_LE(rounds.meanSamplesPerPixel, rounds.mostSamplesPerPixel);
+  EXPECT_LE(rounds.sppMin, rounds.sppMean);
+  EXPECT_LE(rounds.sppMean, rounds.sppMax);
   EXPECT_EQ(rounds.noiseThreshold, 0.02);
   if (rounds.stop == "converged")
-    EXPECT_LE(rounds.noise, rounds.noiseThreshold);
+    EXPECT_LE(rounds.maxTileError, rounds.noiseThreshold);
   else
     EXPECT_EQ(rounds.stop, "sample cap");
   EXPECT_EQ(rounds.why, "paths and the environment's samples are random");
   const facet::RenderResult stated = renderer.render(cubeOnSlab(facet::IblMethod::Sampled), onCpu(0));
   EXPECT_EQ(stated.bounces, 0);
   EXPECT_TRUE(stated.lightTransport.empty());
-  EXPECT_EQ(stated.sampling.samplesPerPixel, 1);
+  EXPECT_EQ(stated.sampling.spp, 1);
   EXPECT_EQ(stated.sampling.rounds, 0);
   EXPECT_TRUE(stated.sampling.why.empty());
 }

@@ -48,13 +48,13 @@ TEST(ApiSceneEdit, AChangedSceneRendersAsTheSceneFileThatSaysTheSame) {
   spot.type = facet::LightType::Spot;
   spot.position = {0, 4, 0};
   spot.color = {5, 5, 5};
-  spot.innerConeDegrees = 10;
-  spot.outerConeDegrees = 20;
+  spot.innerCone = 10;
+  spot.outerCone = 20;
   edited.setLights({key, spot});
   facet::Environment environment;
   environment.file = kCourtyard;
   environment.intensity = 0.5;
-  environment.rotationDegrees = 30;
+  environment.rotation = 30;
   edited.setEnvironment(environment);
 
   // A material written inline, and a preset by name.
@@ -96,15 +96,15 @@ TEST(ApiSceneEdit, AChangeIsRefusedWithTheSceneFilesRuleAndLeavesTheSceneAsItWas
   const std::string mesh = R"("objects": [{"mesh": ")" + kCube + R"("}])";
 
   facet::Camera wide = before;
-  wide.verticalFovDegrees = 500;
+  wide.fov = 500;
   EXPECT_EQ(fieldAndRule(errorOf([&] { scene.setCamera(wide); }), "scene"),
             fileError("fov.json", R"({"camera": {"fov": 500}, )" + mesh + "}"));
-  EXPECT_EQ(scene.camera().verticalFovDegrees, before.verticalFovDegrees);
+  EXPECT_EQ(scene.camera().fov, before.fov);
 
   facet::Light spot;
   spot.type = facet::LightType::Spot;
-  spot.innerConeDegrees = 50;
-  spot.outerConeDegrees = 20;
+  spot.innerCone = 50;
+  spot.outerCone = 20;
   EXPECT_EQ(fieldAndRule(errorOf([&] { scene.setLights({spot}); }), "scene"),
             fileError("cone.json", R"({"lights": [{"type": "spot", "position": [0, 0, 0], "direction": [0, -1, 0],
                                       "inner_cone": 50, "outer_cone": 20}], )" +
@@ -139,8 +139,8 @@ TEST(ApiSceneEdit, CopiesKeepWhatTheyHad) {
   const facet::Scene original = facet::loadScene(kCube);
   facet::Scene changed = original;
   changed.setCamera({{0, 0, 9}, {0, 0, 0}, {0, 1, 0}, 20});
-  EXPECT_EQ(changed.camera().verticalFovDegrees, 20);
-  EXPECT_NE(original.camera().verticalFovDegrees, 20);
+  EXPECT_EQ(changed.camera().fov, 20);
+  EXPECT_NE(original.camera().fov, 20);
 }
 
 TEST(ApiSceneEdit, ALoadedCageBuildsTheSceneItsFileLoadsAs) {

@@ -17,7 +17,7 @@ using namespace facet::testing;
 facet::Transform turnedAndMoved() {
   facet::Transform t;
   t.translate = {0.4, -0.2, 0};
-  t.rotateDegrees = {10, 35, 0};
+  t.rotate = {10, 35, 0};
   t.scale = {0.6, 0.8, 0.6};
   return t;
 }
@@ -37,7 +37,7 @@ TEST(ApiSceneObjects, ATransformPlacesTheCageAsTheSceneFileDoes) {
   const facet::Image still = render(scene);
   scene.setTransform(0, turnedAndMoved());
   expectSameImage(render(scene), placedByFile);
-  EXPECT_EQ(scene.transform(0).rotateDegrees.y, 35);
+  EXPECT_EQ(scene.transform(0).rotate.y, 35);
 
   // A transform replaces the one before; the identity puts the cage back.
   scene.setTransform(0, turnedAndMoved());

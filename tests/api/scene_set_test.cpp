@@ -77,7 +77,7 @@ TEST(ApiSceneSet, EachChangeRendersAsTheFileThatSaysTheSame) {
 TEST(ApiSceneSet, ATransformFieldPlacesTheObjectAsTheFileDoes) {
   facet::Scene scene = sceneOf(baseDocument(), "base.json");
   scene.set("objects[0].transform.rotate", "[0, 40, 0]");
-  EXPECT_EQ(scene.transform(0).rotateDegrees.y, 40);
+  EXPECT_EQ(scene.transform(0).rotate.y, 40);
   EXPECT_EQ(scene.transform(0).translate.x, 0.6) << "the file's transform, changed";
   json changed = baseDocument();
   changed["objects"][0]["transform"]["rotate"] = {0, 40, 0};

@@ -107,5 +107,27 @@ class SceneValues(unittest.TestCase):
             objects[0] = None
 
 
+class Keywords(unittest.TestCase):
+    """A keyword facet does not take is named, with the one meant, as a facet.Error."""
+
+    def test_a_typo_names_the_keyword_and_the_one_meant(self):
+        cases = [
+            (lambda: facet.Material(roughnes=0.5), "facet.Material: unknown keyword 'roughnes'; did you mean 'roughness'?"),
+            (lambda: facet.Camera().replace(fv=30), "facet.Camera.replace: unknown keyword 'fv'; did you mean 'fov'?"),
+            (lambda: facet.Transform(rotation=(0, 1, 0)), "facet.Transform: unknown keyword 'rotation'; did you mean 'rotate'?"),
+            (lambda: facet.render(CUBE, sppp=4), "facet.render: unknown keyword 'sppp'; did you mean 'spp'?"),
+        ]
+        for call, message in cases:
+            with self.assertRaises(facet.Error) as raised:
+                call()
+            self.assertTrue(str(raised.exception).startswith(message), str(raised.exception))
+            self.assertEqual(raised.exception.exit_code, 1)
+
+    def test_a_value_of_the_wrong_type_stays_a_type_error_naming_the_call(self):
+        with self.assertRaisesRegex(TypeError, r"^facet\.Material: an argument is not of the type"):
+            facet.Material(roughness="high")
+        self.assertEqual(facet.Material(roughness=0.25).roughness, 0.25)
+
+
 if __name__ == "__main__":
     unittest.main()
