@@ -7,6 +7,7 @@
 #include "api/errors.h"
 #include "api/image_planes.h"
 #include "api/render_settings.h"
+#include "api/scene_data.h"
 #include "engine/image/exr_file.h"
 #include "engine/image/image_io.h"
 #include "engine/render_record.h"
@@ -25,6 +26,7 @@ OutputFile exrOutput(const std::string& flag, const std::string& path, const fac
                      const ExrSettings& exr) {
   checkOutputPath(flag, path);
   checkOutputExtension(flag, path, ".exr");
+  checkNotAnInput(flag, path, scene.data().inputs);
   scene::Scene rendered = withSettings(scene, settings);
   // The file records what the render chose, as `facet render` records it:
   // the choice follows from the scene and the settings alone, and changes
@@ -81,6 +83,14 @@ void writePng(const std::string& path, const Image& image, const PngSettings& pn
   });
 }
 
+void writePng(const std::string& path, const Image& image, const Scene& scene, const PngSettings& png) {
+  api::translateErrors([&] {
+    checkNotAnInput("path", path, scene.data().inputs);
+    const facet::Image pixels = engineImage(image);
+    writeAllOrNothing({pngOutput("path", path, pixels, png)});
+  });
+}
+
 void writeExrAndPng(const std::string& exrPath, const std::string& pngPath, const RenderResult& result,
                     const Scene& scene, const RenderSettings& settings, const ExrSettings& exr,
                     const PngSettings& png) {
@@ -88,6 +98,7 @@ void writeExrAndPng(const std::string& exrPath, const std::string& pngPath, cons
     const facet::Image image = engineImage(result.image);
     const OutputFile exrOutputFile = exrOutput("exrPath", exrPath, image, result, scene, settings, exr);
     const OutputFile pngOutputFile = pngOutput("pngPath", pngPath, image, png);
+    checkNotAnInput("pngPath", pngPath, scene.data().inputs);
     if (namesSameFile(exrPath, pngPath)) throw OutputError("pngPath '" + pngPath + "': names the same file as exrPath");
     writeAllOrNothing({exrOutputFile, pngOutputFile});
   });

@@ -15,6 +15,7 @@
 #include "engine/image_memory.h"
 #include "engine/preview_stage.h"
 #include "scenes/input_error.h"
+#include "scenes/input_file.h"
 #include "scenes/value_rules.h"
 
 namespace facet::v0 {
@@ -104,7 +105,11 @@ void Renderer::writePreview(const Scene& model, const PreviewSettings& settings,
       if (!movieFormat(output)) throw OutputError("output '" + output + "': a turntable is a movie: .mp4 or .gif");
       if (!findOnPath("ffmpeg", path)) throw OutputError("output '" + output + "': " + kFfmpegMissing);
     }
+    std::vector<std::filesystem::path> inputs = model.data().inputs;
+    const scene::InputFileLog read;  // the material files and the environment map
     const PreviewStage stage(litModel(model, settings), settings.materials, stageSettings(settings));
+    inputs.insert(inputs.end(), read.files().begin(), read.files().end());
+    checkNotAnInput("output", output, inputs);
     const std::scoped_lock oneAtATime(state_->rendering);
     writePreviewStage(state_->engine, stage, output, fps, path);
   });

@@ -68,8 +68,9 @@ int Scene::objectCount() const { return int(data_->scene.objects.size()); }
 
 Scene loadScene(const std::string& path) {
   return api::translateErrors([&] {
+    const scene::InputFileLog read;
     scene::Scene s = scene::loadScene(path);
-    return api::sceneOf(std::move(s), path, isJsonScene(path) ? scene::readSceneDocument(path) : nullptr);
+    return api::sceneOf(std::move(s), path, isJsonScene(path) ? scene::readSceneDocument(path) : nullptr, read.files());
   });
 }
 
@@ -85,8 +86,9 @@ Scene sceneFromJson(const std::string& json, const std::string& folder) {
     } catch (const nlohmann::json::exception& e) {
       throw scene::InputError(api::kCodeSource, 0, "not valid JSON", e.what());
     }
-    return api::sceneOf(scene::sceneFromJson(document, folder, api::kCodeSource), std::filesystem::path(folder) / "",
-                        document);
+    const scene::InputFileLog read;
+    scene::Scene s = scene::sceneFromJson(document, folder, api::kCodeSource);
+    return api::sceneOf(std::move(s), std::filesystem::path(folder) / "", document, read.files());
   });
 }
 

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "facet/scene.h"
+#include "scenes/input_file.h"
 #include "scenes/scene.h"
 
 namespace facet::v0::detail {
@@ -23,6 +25,9 @@ struct SceneData {
   // The file's materials block as written, by name: what
   // set("materials.NAME...") changes, as --set changes the file.
   std::map<std::string, nlohmann::json> namedMaterials;
+  // The files it was read from, and those its edits read: what no output
+  // written from it may replace.
+  std::vector<std::filesystem::path> inputs;
   // Each object's transform block as its file wrote it (an empty object
   // where it has none), in the objects' order: what its cage was placed by.
   std::vector<nlohmann::json> transforms;
@@ -37,7 +42,22 @@ inline constexpr const char* kCodeSource = "scene";
 
 // `scene` as a Scene; `document`: the JSON it was read from, whose
 // materials block and objects' transforms its edits start from.
-v0::Scene sceneOf(scene::Scene scene, std::filesystem::path relativeTo, const nlohmann::json& document = nullptr);
+v0::Scene sceneOf(scene::Scene scene, std::filesystem::path relativeTo, const nlohmann::json& document = nullptr,
+                  std::vector<std::filesystem::path> inputs = {});
+
+// `edit`, which returns the changed data, run with an InputFileLog open:
+// the files it read join the changed data's inputs.
+template <class Edit>
+std::shared_ptr<const v0::detail::SceneData> readingInputs(Edit&& edit) {
+  const scene::InputFileLog log;
+  std::shared_ptr<const v0::detail::SceneData> result = edit();
+  if (log.files().empty()) return result;
+  auto withInputs = std::make_shared<v0::detail::SceneData>(*result);
+  for (const std::filesystem::path& file : log.files())
+    if (std::find(withInputs->inputs.begin(), withInputs->inputs.end(), file) == withInputs->inputs.end())
+      withInputs->inputs.push_back(file);
+  return withInputs;
+}
 
 // The object's material becomes `material`: in its place when no other
 // object shares it, so that the scene's materials stay as a file that names

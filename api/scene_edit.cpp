@@ -89,14 +89,16 @@ void Scene::setMaterial(int object, const Material& material) {
 
 void Scene::setMaterial(int object, const std::string& reference) {
   data_ = api::translateErrors([&] {
-    objectAt(data_->scene, object);
-    std::vector<scene::Texture> textures = data_->scene.textures;
-    materials::Material m = scene::readObjectMaterial(json(reference), object, api::kCodeSource,
-                                                      std::filesystem::current_path() / "", textures);
-    m.name = std::filesystem::path(reference).stem().string();
-    return api::changed(*data_, [&](detail::SceneData& d) {
-      d.scene.textures = std::move(textures);
-      api::wearMaterial(d.scene, object, std::move(m));
+    return api::readingInputs([&] {
+      objectAt(data_->scene, object);
+      std::vector<scene::Texture> textures = data_->scene.textures;
+      materials::Material m = scene::readObjectMaterial(json(reference), object, api::kCodeSource,
+                                                        std::filesystem::current_path() / "", textures);
+      m.name = std::filesystem::path(reference).stem().string();
+      return api::changed(*data_, [&](detail::SceneData& d) {
+        d.scene.textures = std::move(textures);
+        api::wearMaterial(d.scene, object, std::move(m));
+      });
     });
   });
 }
@@ -171,13 +173,15 @@ std::optional<Environment> Scene::environment() const { return api::apiEnvironme
 
 void Scene::setEnvironment(const std::optional<Environment>& environment) {
   data_ = api::translateErrors([&] {
-    std::optional<scene::Environment> e;
-    if (environment)
-      e = scene::readEnvironmentBlock(api::environmentBlock(*environment, data_->scene.environment), api::kCodeSource,
-                                      std::filesystem::current_path() / "", data_->scene.environment);
-    if (scene::bouncesContradictEnvironment(data_->scene.render, e))
-      throw scene::InputError(api::kCodeSource, 0, "render.bounces", scene::kBouncesNeedOcclusionRule);
-    return api::changed(*data_, [&](detail::SceneData& d) { d.scene.environment = std::move(e); });
+    return api::readingInputs([&] {
+      std::optional<scene::Environment> e;
+      if (environment)
+        e = scene::readEnvironmentBlock(api::environmentBlock(*environment, data_->scene.environment), api::kCodeSource,
+                                        std::filesystem::current_path() / "", data_->scene.environment);
+      if (scene::bouncesContradictEnvironment(data_->scene.render, e))
+        throw scene::InputError(api::kCodeSource, 0, "render.bounces", scene::kBouncesNeedOcclusionRule);
+      return api::changed(*data_, [&](detail::SceneData& d) { d.scene.environment = std::move(e); });
+    });
   });
 }
 

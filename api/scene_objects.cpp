@@ -80,7 +80,8 @@ scene::Object engineObject(const v0::Object& o, int index, int materialCount) {
   return object;
 }
 
-v0::Scene sceneOf(scene::Scene s, std::filesystem::path relativeTo, const nlohmann::json& document) {
+v0::Scene sceneOf(scene::Scene s, std::filesystem::path relativeTo, const nlohmann::json& document,
+                  std::vector<std::filesystem::path> inputs) {
   std::map<std::string, nlohmann::json> namedMaterials;
   std::vector<nlohmann::json> transforms(s.objects.size(), nlohmann::json::object());
   if (document.is_object()) {
@@ -90,8 +91,8 @@ v0::Scene sceneOf(scene::Scene s, std::filesystem::path relativeTo, const nlohma
     for (std::size_t i = 0; i < transforms.size(); ++i)
       transforms[i] = document["objects"][i].value("transform", nlohmann::json::object());
   }
-  return v0::Scene(std::make_shared<const v0::detail::SceneData>(
-      v0::detail::SceneData{std::move(s), std::move(relativeTo), std::move(namedMaterials), std::move(transforms)}));
+  return v0::Scene(std::make_shared<const v0::detail::SceneData>(v0::detail::SceneData{
+      std::move(s), std::move(relativeTo), std::move(namedMaterials), std::move(inputs), std::move(transforms)}));
 }
 
 }  // namespace facet::api

@@ -147,26 +147,28 @@ Data setObjectField(const detail::SceneData& d, const scene::JsonOverride& o) {
 }  // namespace
 
 void Scene::set(const std::string& path, const std::string& value) {
-  data_ = api::translateErrors([&]() -> Data {
-    const scene::JsonOverride o{path, value};
-    const std::string root = path.substr(0, path.find_first_of(".["));
-    const detail::SceneData& d = *data_;
-    if (root == "render") return setRenderField(d, o);
-    if (root == "environment") return setEnvironmentField(d, o);
-    if (root == "materials") return setNamedMaterial(d, o);
-    if (root == "camera") {
-      const scene::Camera c =
-          scene::readCameraBlock(overridden("camera", api::cameraBlock(camera()), o), api::kCodeSource);
-      return api::changed(d, [&](detail::SceneData& s) { s.scene.camera = c; });
-    }
-    if (root == "lights") {
-      std::vector<scene::Light> ls =
-          scene::readLightsBlock(overridden("lights", api::lightsBlock(lights()), o), api::kCodeSource);
-      return api::changed(d, [&](detail::SceneData& s) { s.scene.lights = std::move(ls); });
-    }
-    if (root == "objects") return setObjectField(d, o);
-    api::refuse(api::kCodeSource, path,
-                "set changes render, camera, lights, environment, materials.NAME and objects[N]");
+  data_ = api::translateErrors([&] {
+    return api::readingInputs([&]() -> Data {
+      const scene::JsonOverride o{path, value};
+      const std::string root = path.substr(0, path.find_first_of(".["));
+      const detail::SceneData& d = *data_;
+      if (root == "render") return setRenderField(d, o);
+      if (root == "environment") return setEnvironmentField(d, o);
+      if (root == "materials") return setNamedMaterial(d, o);
+      if (root == "camera") {
+        const scene::Camera c =
+            scene::readCameraBlock(overridden("camera", api::cameraBlock(camera()), o), api::kCodeSource);
+        return api::changed(d, [&](detail::SceneData& s) { s.scene.camera = c; });
+      }
+      if (root == "lights") {
+        std::vector<scene::Light> ls =
+            scene::readLightsBlock(overridden("lights", api::lightsBlock(lights()), o), api::kCodeSource);
+        return api::changed(d, [&](detail::SceneData& s) { s.scene.lights = std::move(ls); });
+      }
+      if (root == "objects") return setObjectField(d, o);
+      api::refuse(api::kCodeSource, path,
+                  "set changes render, camera, lights, environment, materials.NAME and objects[N]");
+    });
   });
 }
 

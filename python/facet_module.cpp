@@ -58,7 +58,7 @@ void writeOutputs(const Outputs& o, const facet::RenderResult& result, const fac
   if (o.exr)
     facet::writeExrAndPng(*o.exr, *o.png, result, scene, settings, exr, png);
   else
-    facet::writePng(*o.png, result.image, png);
+    facet::writePng(*o.png, result.image, scene, png);
 }
 
 py::dict renderDict(facet::Renderer& renderer, const py::object& sceneOrPath, const facet::RenderSettings& settings,

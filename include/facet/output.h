@@ -37,6 +37,10 @@ struct PngSettings {
 void writeExr(const std::string& path, const RenderResult& result, const Scene& scene,
               const RenderSettings& settings = {}, const ExrSettings& exr = {});
 void writePng(const std::string& path, const Image& image, const PngSettings& png = {});
+// As writePng, refusing (OutputFailed) a path that `scene` was read from:
+// its file, a material file, cage, texture or environment map it reads.
+// writeExr and writeExrAndPng refuse those too.
+void writePng(const std::string& path, const Image& image, const Scene& scene, const PngSettings& png = {});
 
 // Both files of one render, as `facet render -o a.exr --png b.png` writes
 // them: every path and setting checked first, then the two replaced

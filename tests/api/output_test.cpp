@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <string>
 
@@ -20,6 +21,15 @@ namespace fs = std::filesystem;
 std::string bytesOf(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), {}};
+}
+
+std::string refusalOf(const std::function<void()>& work) {
+  try {
+    work();
+  } catch (const facet::Error& e) {
+    return e.what();
+  }
+  return "no error";
 }
 
 class ApiOutput : public ::testing::Test {
@@ -126,6 +136,43 @@ TEST_F(ApiOutput, BothFilesAreReplacedTogetherOrNeither) {
   facet::writePng(alonePng.string(), result.image);
   EXPECT_EQ(bytesOf(exr), bytesOf(alone));
   EXPECT_EQ(bytesOf(png), bytesOf(alonePng));
+}
+
+TEST_F(ApiOutput, AnOutputNeverReplacesAFileTheSceneReads) {
+  // An environment map the scene reads, and one that a later edit reads.
+  const fs::path map = folder_ / "map.exr", later = folder_ / "later.exr";
+  fs::copy_file(std::string(FACET_ENVIRONMENTS_DIR) + "/studio.exr", map);
+  fs::copy_file(std::string(FACET_ENVIRONMENTS_DIR) + "/studio.exr", later);
+  const fs::path file = folder_ / "scene.json";
+  std::ofstream(file) << R"({"objects": [{"mesh": ")" << FACET_CAGE_DIR << R"(/cube.obj"}],
+                             "environment": {"file": "map.exr"}})";
+  facet::Scene scene = facet::loadScene(file.string());
+  scene.set("environment.file", "later.exr");
+  facet::Renderer renderer;
+  const facet::RenderResult result = renderer.render(scene, smallOnCpu());
+  const std::string original = bytesOf(map);
+  for (const fs::path& input : {map, later}) {
+    try {
+      facet::writeExr(input.string(), result, scene, smallOnCpu());
+      ADD_FAILURE() << "an input was replaced: " << input;
+    } catch (const facet::Error& e) {
+      EXPECT_EQ(e.kind(), facet::ErrorKind::OutputFailed);
+      EXPECT_NE(std::string(e.what()).find("which this command reads: an output never replaces an input"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  EXPECT_EQ(bytesOf(map), original);
+  // The scene file under another name is still the scene file; a copy of it is not.
+  fs::create_hard_link(file, folder_ / "scene_link.png");
+  const std::string linked = bytesOf(file);
+  EXPECT_NE(refusalOf([&] {
+              facet::writePng((folder_ / "scene_link.png").string(), result.image, scene);
+            }).find("an output never replaces an input"),
+            std::string::npos);
+  EXPECT_EQ(bytesOf(file), linked);
+  fs::copy_file(file, folder_ / "scene_copy.png");
+  facet::writePng((folder_ / "scene_copy.png").string(), result.image, scene);
 }
 
 }  // namespace
