@@ -20,7 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Point {
+struct ChartPoint {
   std::string setup;
   double alpha = 0;
   scene::IblMethod method = scene::IblMethod::Sampled;
@@ -82,9 +82,9 @@ void writeAntialiasing(Renderer& renderer, const scene::Scene& scene, const IblC
            {"samples_per_pixel", "silhouette_relative_rmse", "smooth_relative_rmse"}, rows);
 }
 
-void writePointsCsv(const fs::path& path, const std::vector<Point>& points) {
+void writePointsCsv(const fs::path& path, const std::vector<ChartPoint>& points) {
   std::vector<std::vector<std::string>> rows;
-  for (const Point& p : points)
+  for (const ChartPoint& p : points)
     rows.push_back({p.setup, formatNumber(p.alpha), methodName(p.method),
                     p.method == scene::IblMethod::Prefiltered ? "" : std::to_string(p.samples),
                     formatNumber(p.milliseconds), formatNumber(p.prepMilliseconds), formatNumber(p.relativeRmse),
@@ -98,9 +98,10 @@ void writePointsCsv(const fs::path& path, const std::vector<Point>& points) {
 // The log-log slope of error against N over a curve's points with N >= 16,
 // where the pixel's own strata have begun to resolve: -0.5 for independent
 // samples, steeper for stratified ones. NaN with fewer than two points.
-double errorSlope(const std::vector<Point>& points, const std::string& setup, double alpha, scene::IblMethod method) {
+double errorSlope(const std::vector<ChartPoint>& points, const std::string& setup, double alpha,
+                  scene::IblMethod method) {
   std::vector<std::pair<double, double>> xy;
-  for (const Point& p : points)
+  for (const ChartPoint& p : points)
     if (p.setup == setup && p.alpha == alpha && p.method == method && p.samples >= 16)
       xy.emplace_back(std::log(double(p.samples)), std::log(p.relativeRmse));
   if (xy.size() < 2) return NAN;
@@ -119,13 +120,13 @@ std::string slopeLabel(double slope) {
 // its N points (N written beside the first alpha's), filtered as a dashed
 // one, the split sum as one large marker of the same colour.
 void writeChart(const fs::path& directory, const std::vector<std::string>& setups, const std::vector<double>& alphas,
-                const std::vector<Point>& points, const std::string& subtitle) {
+                const std::vector<ChartPoint>& points, const std::string& subtitle) {
   std::ostringstream data, script;
   for (const std::string& setup : setups)
     for (double alpha : alphas)
       for (scene::IblMethod method :
            {scene::IblMethod::Sampled, scene::IblMethod::Filtered, scene::IblMethod::Prefiltered}) {
-        for (const Point& p : points)
+        for (const ChartPoint& p : points)
           if (p.setup == setup && p.alpha == alpha && p.method == method)
             data << p.milliseconds << " " << p.relativeRmse << " " << p.samples << "\n";
         data << "\n\n";
@@ -184,7 +185,7 @@ void writeIblChart(Renderer& renderer, const IblChartSettings& settings) {
   fs::create_directories(output);
 
   std::vector<std::string> setups;
-  std::vector<Point> points;
+  std::vector<ChartPoint> points;
   for (const fs::path& file : settings.environments) {
     scene::Scene scene = base;
     scene.environment->map = std::make_shared<const scene::EnvironmentMap>(scene::loadEnvironmentMap(file));
@@ -220,7 +221,7 @@ void writeIblChart(Renderer& renderer, const IblChartSettings& settings) {
         }
         const ImageError error = compareToReference(image, reference.image);
         if (error.compared == 0) throw std::runtime_error("ibl-chart: the reference image covers no pixel");
-        Point p{
+        ChartPoint p{
             setup, alpha, method, samples, median(times), median(preparations), error.relativeRmse, error.maxAbsolute};
         const std::string name = method == scene::IblMethod::Prefiltered
                                      ? std::string("prefiltered")

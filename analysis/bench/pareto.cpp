@@ -52,7 +52,7 @@ void runPareto(Renderer& renderer, const BenchOptions& options, Report& report) 
     std::printf("pareto %s %dx%d: reference %.0f ms\n", s.name.c_str(), s.scene.render.width, s.scene.render.height,
                 traceMilliseconds(reference));
     const double floor = gpuToleranceFloor(s.scene);
-    std::vector<Point> points;
+    std::vector<pareto::Point> points;
     std::vector<std::string> skipped;
     for (Backend backend : {Backend::Gpu, Backend::Cpu}) {
       bool floorMeasured = false;
@@ -66,7 +66,7 @@ void runPareto(Renderer& renderer, const BenchOptions& options, Report& report) 
           floorMeasured = true;
         }
         points.push_back(measure(renderer, s, setting, backend, reference.image, options));
-        const Point& p = points.back();
+        const pareto::Point& p = points.back();
         std::printf("  %-4s %-22s %9.1f ms  %s %.3g\n", p.backend.c_str(), p.setting.label().c_str(), p.milliseconds,
                     axisName(s.axis).c_str(), chartedError(p.error, s.axis));
         std::fflush(stdout);
@@ -77,7 +77,7 @@ void runPareto(Renderer& renderer, const BenchOptions& options, Report& report) 
     if (s.embreePeer) {
       EmbreeRun run = measureEmbree(s, sizes, reference.image, options);
       embreeNotes = "; Embree: primary rays alone" + (run.notes.empty() ? "" : ", " + run.notes);
-      for (Point& p : run.points) {
+      for (pareto::Point& p : run.points) {
         std::printf("  %-4s %-22s %9.1f ms  %s %.3g\n", p.backend.c_str(), p.setting.label().c_str(), p.milliseconds,
                     axisName(s.axis).c_str(), chartedError(p.error, s.axis));
         points.push_back(std::move(p));

@@ -12,10 +12,8 @@
 #include <vector>
 
 #include "analysis/parity.h"
-#include "analysis/parity_statistics.h"
+#include "analysis/parity_run.h"
 #include "commands.h"
-#include "engine/image_memory.h"
-#include "engine/render_record.h"
 #include "engine/renderer.h"
 #include "exit_codes.h"
 #include "material_options.h"
@@ -54,12 +52,6 @@ nlohmann::json adapterJson(const gpu::AdapterInfo& info) {
           {"type", gpu::toString(info.type)}};
 }
 
-// Whether the beauty is a Monte Carlo estimate whose random numbers the
-// environment's seed chooses: sampled or filtered lighting, and paths.
-bool seededEstimate(const scene::Scene& scene) {
-  return scene.environment && (scene.environment->method != scene::IblMethod::Prefiltered || scene.render.bounces > 0);
-}
-
 ParityCase judgeScene(const std::string& file, const ParityCommandOptions& o,
                       const analysis::ParityTolerances& tolerances, const std::vector<gpu::AdapterInfo>& adapters,
                       std::vector<std::unique_ptr<Renderer>>& renderers) {
@@ -67,45 +59,11 @@ ParityCase judgeScene(const std::string& file, const ParityCommandOptions& o,
   printWarnings(sceneWarnings(scene), false);
   applySceneOverrides(o.sceneOverrides, scene);
   scene::leaveNothingToChoose(scene);
-  // The reference's render; per adapter its render, the first pair, the
-  // pairs' sums (about an image and a half) and the two mean images.
-  checkImagesFitInMemory(scene, 1 + 6 * int(adapters.size()),
-                         o.sceneOverrides.size.empty() ? file + ": image size" : "--size");
-  const bool statistical = seededEstimate(scene) && o.renders > 1;
-  const int renders = statistical ? o.renders : 1;
-  const std::uint32_t firstSeed = scene.environment ? scene.environment->seed : 0u;
-
-  ParityCase out;
-  out.scene = file;
-  out.settings = {{"digest", facet::settingsDigest(scene, "parity")},
-                  {"text", facet::renderSettingsText(scene, "parity")},
-                  {"rendersPerBackend", renders},
-                  {"seeds", statistical ? nlohmann::json::array({firstSeed, firstSeed + std::uint32_t(renders - 1)})
-                                        : nlohmann::json::array({firstSeed})}};
-  std::vector<analysis::PairedRenders> pairs(adapters.size());
-  for (std::size_t a = 0; a < adapters.size(); ++a) out.runs.push_back({adapters[a].name, adapterJson(adapters[a])});
-  // Render i of every backend draws the same random numbers (seed i), so
-  // that their difference is the backends' and not the estimators' noise.
-  // The GPU first: it refuses what it cannot render (a scene beyond float's
-  // range) before the CPU spends a render on it.
-  for (int i = 0; i < renders; ++i) {
-    if (scene.environment) scene.environment->seed = firstSeed + std::uint32_t(i);
-    std::vector<Image> gpuImages;
-    for (std::size_t a = 0; a < adapters.size(); ++a) {
-      RenderReport gpu = renderers[a]->render(scene, Backend::Gpu);
-      out.runs[a].milliseconds += gpu.totalMilliseconds();
-      out.runs[a].adapterInfo["device"] = gpu.device;
-      gpuImages.push_back(std::move(gpu.image));
-    }
-    const RenderReport cpu = renderers.front()->render(scene, Backend::Cpu);
-    out.reference = cpu.device;
-    out.referenceMilliseconds += cpu.totalMilliseconds();
-    for (std::size_t a = 0; a < adapters.size(); ++a) pairs[a].add(cpu.image, gpuImages[a]);
-  }
+  std::vector<analysis::ParityCandidate> candidates;
   for (std::size_t a = 0; a < adapters.size(); ++a)
-    out.runs[a].report = analysis::compareImages(pairs[a].referenceMean(), pairs[a].candidateMean(), tolerances,
-                                                 statistical ? &pairs[a] : nullptr);
-  return out;
+    candidates.push_back({renderers[a].get(), adapters[a].name, adapterJson(adapters[a])});
+  return analysis::judgeParity(file, std::move(scene), candidates, *renderers.front(), o.renders, tolerances,
+                               o.sceneOverrides.size.empty() ? file + ": image size" : "--size");
 }
 
 void runParity(const ParityCommandOptions& o) {

@@ -9,24 +9,6 @@
 #include "exit_codes.h"
 
 namespace facet::cli {
-namespace {
-
-constexpr const char* kToleranceRule =
-    "expected AOV=ABS,REL with AOV one of depth, normal, beauty and ABS, REL finite numbers >= 0";
-
-double nonNegative(const std::string& text, const std::string& flagText) {
-  std::size_t end = 0;
-  double value = NAN;
-  try {
-    value = std::stod(text, &end);
-  } catch (const std::exception&) {
-  }
-  if (end != text.size() || !std::isfinite(value) || value < 0)
-    throw std::invalid_argument("--tolerance '" + flagText + "': " + kToleranceRule);
-  return value;
-}
-
-}  // namespace
 
 void addParityFlags(CLI::App& command, ParityFlags& flags) {
   command
@@ -47,25 +29,7 @@ void addParityFlags(CLI::App& command, ParityFlags& flags) {
 }
 
 analysis::ParityTolerances chosenTolerances(const ParityFlags& flags) {
-  analysis::ParityTolerances t;
-  t.minCoverage = flags.minCoverage;
-  for (const std::string& text : flags.tolerances) {
-    const std::size_t equals = text.find('='), comma = text.find(',', equals == std::string::npos ? 0 : equals);
-    if (equals == std::string::npos || comma == std::string::npos)
-      throw std::invalid_argument("--tolerance '" + text + "': " + kToleranceRule);
-    const std::string aov = text.substr(0, equals);
-    const double absolute = nonNegative(text.substr(equals + 1, comma - equals - 1), text);
-    const double relative = nonNegative(text.substr(comma + 1), text);
-    analysis::Tolerance* tolerance = aov == "depth"    ? &t.depth
-                                     : aov == "normal" ? &t.normal
-                                     : aov == "beauty" ? &t.beauty
-                                                       : nullptr;
-    if (!tolerance) throw std::invalid_argument("--tolerance '" + text + "': " + kToleranceRule);
-    // Beauty's default absolute part is derived from the image; a given one is in radiance units.
-    (aov == "beauty" ? t.beautyAbsolute.emplace() : tolerance->absolute) = absolute;
-    tolerance->relative = relative;
-  }
-  return t;
+  return analysis::parityTolerances(flags.tolerances, flags.minCoverage, "--tolerance");
 }
 
 void checkParityOutputs(const ParityFlags& flags, std::size_t runs) {

@@ -11,57 +11,6 @@ using analysis::AovParity;
 using analysis::ParityReport;
 using analysis::Verdict;
 
-nlohmann::json aovJson(const AovParity& a) {
-  nlohmann::json worst = nlohmann::json::array();
-  for (const analysis::WorstPixel& w : a.worst)
-    worst.push_back(
-        {{"x", w.x}, {"y", w.y}, {"reference", w.reference}, {"candidate", w.candidate}, {"error", w.error}});
-  nlohmann::json out = {{"name", a.name},
-                        {"relative", a.unit},
-                        {"gated", a.gated},
-                        {"maxAbsolute", a.maxAbsolute},
-                        {"meanAbsolute", a.meanAbsolute},
-                        {"maxRelative", a.maxRelative},
-                        {"meanRelative", a.meanRelative},
-                        {"worstPixels", worst}};
-  if (!a.gated) return out;  // no tolerance, no verdict: nothing was judged
-  out["test"] = a.test;
-  out["tolerance"] = {{"absolute", a.tolerance.absolute},
-                      {"relative", a.tolerance.relative},
-                      {"passShare", a.tolerance.passShare},
-                      {"pixels", a.tolerance.interiorOnly ? "interior" : "covered"},
-                      {"rule", analysis::passRule(a)}};
-  if (a.test != "tolerance")
-    out["tTest"] = {
-        {"renders", a.renders}, {"significance", a.significance}, {"alpha", a.alpha}, {"minPValue", a.minPValue}};
-  out["judged"] = a.judged;
-  out["overSilhouette"] = a.overSilhouette;
-  out["overInterior"] = a.overInterior;
-  out["allowed"] = a.allowed;
-  out["shareOver"] = a.shareOver;
-  out["pass"] = a.pass;
-  return out;
-}
-
-nlohmann::json reportJson(const ParityReport& r) {
-  nlohmann::json aovs = nlohmann::json::array();
-  for (const AovParity& a : r.aovs) aovs.push_back(aovJson(a));
-  return {{"verdict", analysis::toString(r.verdict)},
-          {"pass", r.pass},
-          {"width", r.width},
-          {"height", r.height},
-          {"pixels", r.pixels},
-          {"coveredOnBoth", r.covered},
-          {"minCoverage", r.minCoverage},
-          {"silhouettePixels", r.silhouettePixels},
-          {"coverage",
-           {{"mismatches", r.coverageMismatches},
-            {"mismatchesOffSilhouette", r.coverageMismatchesInterior},
-            {"allowed", r.coverageAllowed},
-            {"pass", r.coveragePass}}},
-          {"aovs", aovs}};
-}
-
 std::string escaped(const std::string& text) {
   std::string out;
   for (char c : text) {
@@ -135,33 +84,13 @@ std::vector<JunitCase> junitCases(const ParityReport& r) {
 
 }  // namespace
 
-std::string runName(const ParityCase& c, const ParityRun& run) { return c.scene + c.joiner + run.adapter; }
-
 nlohmann::json parityJson(const std::vector<ParityCase>& cases) {
   nlohmann::json scenes = nlohmann::json::array();
   bool pass = true;
   for (const ParityCase& c : cases) {
-    nlohmann::json runs = nlohmann::json::array();
-    for (const ParityRun& run : c.runs) {
-      nlohmann::json entry = reportJson(run.report);
-      entry["name"] = runName(c, run);
-      if (!run.adapterInfo.empty()) {
-        entry["adapter"] = run.adapterInfo;
-        entry["adapter"]["name"] = run.adapter;
-      }
-      entry["milliseconds"] = run.milliseconds;
-      runs.push_back(entry);
-      pass = pass && run.report.pass;
-    }
-    nlohmann::json scene = {{"scene", c.scene},
-                            {"reference", {{"name", c.reference}, {"milliseconds", c.referenceMilliseconds}}},
-                            {"settings", c.settings},
-                            {"runs", runs}};
-    if (!c.error.empty()) {
-      scene["error"] = c.error;
-      pass = false;
-    }
-    scenes.push_back(scene);
+    scenes.push_back(analysis::parityCaseJson(c));
+    pass = pass && c.error.empty();
+    for (const ParityRun& run : c.runs) pass = pass && run.report.pass;
   }
   return {{"facetVersion", FACET_VERSION_STRING}, {"pass", pass}, {"scenes", scenes}};
 }

@@ -8,36 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "analysis/parity.h"
+#include "analysis/parity_run.h"
 
 namespace facet::cli {
 
-// "<scene> on <adapter>", or "<candidate> against <reference>": a JUnit
-// suite's name and how an error line names a run.
-struct ParityCase;
-struct ParityRun;
-std::string runName(const ParityCase& c, const ParityRun& run);
-
-// One candidate judged against the reference: a GPU adapter's renders
-// against the CPU's, or one stored image against another.
-struct ParityRun {
-  std::string adapter;                                    // the adapter's name, or the candidate file
-  nlohmann::json adapterInfo = nlohmann::json::object();  // driver, its version, API version
-  double milliseconds = 0;                                // the candidate's renders, all of them
-  analysis::ParityReport report;
-};
-
-struct ParityCase {
-  std::string scene;            // the scene file, or the candidate image
-  std::string reference;        // what rendered the reference: the CPU's device, or the reference image
-  std::string joiner = " on ";  // between the scene and a run's adapter in a run's name
-  double referenceMilliseconds = 0;
-  nlohmann::json settings = nlohmann::json::object();  // digest, text and renders per backend
-  std::vector<ParityRun> runs;
-  // What stopped the scene before it was judged (facet's message: a file
-  // that does not load, a device lost); it then has no runs.
-  std::string error;
-};
+using analysis::ParityCase;
+using analysis::ParityRun;
+using analysis::runName;
 
 // `passRule`'s numbers as JSON, and the whole run with the facet version.
 nlohmann::json parityJson(const std::vector<ParityCase>& cases);
