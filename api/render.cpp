@@ -4,6 +4,7 @@
 #include <tuple>
 
 #include "analysis/parity.h"
+#include "analysis/parity_run.h"
 #include "api/errors.h"
 #include "api/image_planes.h"
 #include "api/render_settings.h"
@@ -45,25 +46,36 @@ RenderResult Renderer::render(const Scene& input, const RenderSettings& settings
   });
 }
 
-ParityReport Renderer::parity(const Scene& input, const RenderSettings& settings) {
+ParityReport Renderer::parity(const Scene& input, const RenderSettings& settings, const ParityOptions& options) {
   return api::translateErrors([&] {
+    if (options.renders < 1 || options.renders > 1024)
+      api::refuse("parity options", "renders", "expected renders per backend in [1, 1024]");
+    const analysis::ParityTolerances tolerances =
+        analysis::parityTolerances(options.tolerances, options.minCoverage, "parity options: tolerances");
     const std::scoped_lock oneAtATime(state_->rendering);
     scene::Scene s = withSettings(input, settings);
     scene::leaveNothingToChoose(s);
-    checkImagesFitInMemory(s, 2, "render settings: width x height");
-    // The GPU first: it refuses what it cannot render (a scene beyond float's range) before the CPU spends a
-    // render on it.
-    const RenderReport gpu = state_->engine.render(s, facet::Backend::Gpu);
-    const RenderReport cpu = state_->engine.render(s, facet::Backend::Cpu);
-    const analysis::ParityReport r = analysis::compareImages(cpu.image, gpu.image);
-    ParityReport out{r.width,        r.height, r.covered, r.coverageMismatches,
-                     r.coveragePass, {},       r.pass,    analysis::describe(r)};
-    // The public struct keeps one number per tolerance (docs/api.md: its layout is
-    // the ABI): the relative part, or the absolute one where there is none
-    // (normals); the summary states both and the pass rule.
+    analysis::ParityCase judged =
+        analysis::judgeParity(api::kCodeSource, std::move(s), {{&state_->engine, "gpu", {}}}, state_->engine,
+                              options.renders, tolerances, "render settings: width x height");
+    // The run is named by the device that rendered it, as the command line names its adapter.
+    judged.runs.front().adapter = judged.runs.front().adapterInfo.value("device", "gpu");
+    const analysis::ParityReport& r = judged.runs.front().report;
+    ParityReport out{r.width,
+                     r.height,
+                     r.covered,
+                     r.coverageMismatches,
+                     r.coveragePass,
+                     {},
+                     analysis::toString(r.verdict),
+                     r.pass,
+                     judged.settings["rendersPerBackend"].get<int>(),
+                     analysis::describe(r),
+                     analysis::parityCaseJson(judged).dump()};
     for (const analysis::AovParity& a : r.aovs) {
       const double tolerance = !a.gated ? 0 : a.tolerance.relative > 0 ? a.tolerance.relative : a.tolerance.absolute;
-      out.aovs.push_back({a.name, a.maxRelative, a.meanRelative, tolerance, a.shareOver, a.pass});
+      out.aovs.push_back({a.name, a.gated, a.gated ? a.test : "", a.gated ? analysis::passRule(a) : "", a.maxRelative,
+                          a.meanRelative, tolerance, a.shareOver, a.over(), a.allowed, a.minPValue, a.pass});
     }
     return out;
   });

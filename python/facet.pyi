@@ -162,7 +162,8 @@ class Renderer:
                aovs: str = "all", half: bool = False, exposure: float = 0.0, tonemap: str = "pbr-neutral",
                background: Optional[Vec3] = None, alpha: bool = False) -> dict: ...
     def parity(self, scene: SceneOrPath, *, size: Optional[tuple[int, int]] = None,
-               method: Optional[str] = None) -> dict: ...
+               method: Optional[str] = None, renders: int = 16, tolerances: list[str] = [],
+               min_coverage: int = 16) -> dict: ...
     # facet render --watch: callback({"picture", "passes", "spp", "image"}) after each pass, False to stop;
     # on_bad_input(message) for a later load refused, which otherwise ends the watch.
     def watch(self, scene: Union[str, PathLike[str]], callback: Callable[[dict], Optional[bool]], *,
@@ -189,8 +190,9 @@ def render(scene: SceneOrPath, *, size: Optional[tuple[int, int]] = None, backen
            aovs: str = "all", half: bool = False, exposure: float = 0.0, tonemap: str = "pbr-neutral",
            background: Optional[Vec3] = None, alpha: bool = False) -> dict: ...
 
+# facet parity's --json entry of the scene, with verdict, pass, renders and summary.
 def parity(scene: SceneOrPath, *, size: Optional[tuple[int, int]] = None, method: Optional[str] = None,
-           adapter: str = "") -> dict: ...
+           adapter: str = "", renders: int = 16, tolerances: list[str] = [], min_coverage: int = 16) -> dict: ...
 
 def brdf(l: numpy.typing.ArrayLike, v: numpy.typing.ArrayLike, *, material: Optional[Material] = None,
          distribution: Optional[str] = None, geometry: Optional[str] = None, fresnel: Optional[str] = None,

@@ -125,20 +125,21 @@ void watchScene(facet::Renderer& renderer, const std::string& scene, const py::f
   if (raised) throw std::move(*raised);
 }
 
-py::dict parityDict(facet::Renderer& renderer, const py::object& sceneOrPath, const facet::RenderSettings& settings) {
+// The scene's entry of `facet parity --json`, with its verdict, whether it
+// passed, the renders per backend and the table at the top.
+py::dict parityDict(facet::Renderer& renderer, const py::object& sceneOrPath, const facet::RenderSettings& settings,
+                    const facet::ParityOptions& options) {
   const facet::Scene scene = sceneOf(sceneOrPath);
   const facet::ParityReport r = [&] {
     py::gil_scoped_release unlocked;
-    return renderer.parity(scene, settings);
+    return renderer.parity(scene, settings, options);
   }();
-  py::dict aovs;
-  for (const facet::AovParity& a : r.aovs)
-    aovs[py::str(a.name)] =
-        py::dict(py::arg("max_relative") = a.maxRelative, py::arg("mean_relative") = a.meanRelative,
-                 py::arg("tolerance") = a.tolerance, py::arg("share_over") = a.shareOver, py::arg("pass") = a.pass);
-  return py::dict(py::arg("pass") = r.pass, py::arg("width") = r.width, py::arg("height") = r.height,
-                  py::arg("covered") = r.covered, py::arg("coverage_mismatches") = r.coverageMismatches,
-                  py::arg("coverage_pass") = r.coveragePass, py::arg("aovs") = aovs, py::arg("summary") = r.summary);
+  py::dict out = py::module_::import("json").attr("loads")(r.json);
+  out["verdict"] = r.verdict;
+  out["pass"] = r.pass;
+  out["renders"] = r.renders;
+  out["summary"] = r.summary;
+  return out;
 }
 
 py::dict brdfDict(const facet::Material& material, const py::object& l, const py::object& v) {
@@ -205,10 +206,13 @@ void bindRenderer(py::module_& m) {
           "for a later load refused, which otherwise ends the watch")
       .def(
           "parity",
-          [](facet::Renderer& r, const py::object& scene, std::optional<std::pair<int, int>> size, OptText method) {
-            return parityDict(r, scene, settingsOf(size, "gpu", method, std::nullopt, std::nullopt, std::nullopt));
+          [](facet::Renderer& r, const py::object& scene, std::optional<std::pair<int, int>> size, OptText method,
+             int renders, const std::vector<std::string>& tolerances, std::size_t minCoverage) {
+            return parityDict(r, scene, settingsOf(size, "gpu", method, std::nullopt, std::nullopt, std::nullopt),
+                              {renders, tolerances, minCoverage});
           },
           py::arg("scene"), py::kw_only(), py::arg("size") = py::none(), py::arg("method") = py::none(),
+          py::arg("renders") = 16, py::arg("tolerances") = std::vector<std::string>{}, py::arg("min_coverage") = 16,
           "As facet.parity, with this renderer's device and kernels");
 }
 
@@ -276,12 +280,18 @@ PYBIND11_MODULE(facet, m) {
       "--aovs, --half, --exposure, --tonemap, --background and --alpha");
   m.def(
       "parity",
-      [](const py::object& scene, std::optional<std::pair<int, int>> size, OptText method, const std::string& adapter) {
+      [](const py::object& scene, std::optional<std::pair<int, int>> size, OptText method, const std::string& adapter,
+         int renders, const std::vector<std::string>& tolerances, std::size_t minCoverage) {
         facet::Renderer renderer(adapter);
-        return parityDict(renderer, scene, settingsOf(size, "gpu", method, std::nullopt, std::nullopt, std::nullopt));
+        return parityDict(renderer, scene, settingsOf(size, "gpu", method, std::nullopt, std::nullopt, std::nullopt),
+                          {renders, tolerances, minCoverage});
       },
       py::arg("scene"), py::kw_only(), py::arg("size") = py::none(), py::arg("method") = py::none(),
-      py::arg("adapter") = "", "GPU against the CPU reference, AOV by AOV; returns the report as a dict");
+      py::arg("adapter") = "", py::arg("renders") = 16, py::arg("tolerances") = std::vector<std::string>{},
+      py::arg("min_coverage") = 16,
+      "GPU against the CPU reference, AOV by AOV, as facet parity judges it (renders, tolerances and min_coverage "
+      "as its --renders, --tolerance and --min-coverage); returns its --json entry of the scene, with verdict, "
+      "pass, renders and summary");
   m.def(
       "brdf",
       [](const py::object& l, const py::object& v, std::optional<facet::Material> material, OptText d, OptText g,

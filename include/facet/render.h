@@ -72,21 +72,40 @@ struct RenderResult {
 
 struct AovParity {
   std::string name;
+  bool gated = false;
+  std::string test;  // gated: "tolerance" or "paired t-test"
+  std::string rule;  // gated: the pass rule in words, with its numbers
   double maxRelative = 0, meanRelative = 0;
-  double tolerance = 0;  // 0: reported, not gated
-  double shareOver = 0;  // of the compared pixels
+  double tolerance = 0;               // its relative part, or the absolute one where there is none; 0: not gated
+  double shareOver = 0;               // of the judged pixels
+  std::size_t over = 0, allowed = 0;  // gated: judged pixels over tolerance, and how many the rule allows
+  double minPValue = 1;               // the paired t-test's smallest p-value
   bool pass = true;
 };
 
-// GPU against the CPU reference, AOV by AOV (docs/rendering.md, "Parity").
+// `facet parity`'s options (docs/parity.md), under its rules.
+struct ParityOptions {
+  // A Monte Carlo beauty's (sampled or filtered lighting, paths) renders per
+  // backend, seeds apart, judged by the paired t-test; 1: one render each,
+  // judged by tolerance alone. In [1, 1024].
+  int renders = 16;
+  std::vector<std::string> tolerances;  // "AOV=ABS,REL" as --tolerance (AOV: depth, normal, beauty)
+  std::size_t minCoverage = 16;         // pixels covered on both below which nothing is judged
+};
+
+// GPU against the CPU reference, AOV by AOV (docs/parity.md), as `facet
+// parity` judges it: one implementation.
 struct ParityReport {
   int width = 0, height = 0;
   std::size_t covered = 0;  // on both images
   std::size_t coverageMismatches = 0;
   bool coveragePass = true;
   std::vector<AovParity> aovs;
-  bool pass = true;
+  std::string verdict;  // "pass", "fail" or "insufficient coverage"
+  bool pass = true;     // verdict "pass"
+  int renders = 1;      // per backend
   std::string summary;  // the table `facet parity` prints
+  std::string json;     // the scene's entry of `facet parity --json`
 };
 
 struct PreviewSettings;
@@ -106,7 +125,7 @@ class Renderer {
 
   RenderResult render(const Scene& scene, const RenderSettings& settings = {});
   // Renders on both backends (settings.backend is ignored).
-  ParityReport parity(const Scene& scene, const RenderSettings& settings = {});
+  ParityReport parity(const Scene& scene, const RenderSettings& settings = {}, const ParityOptions& options = {});
 
   // The preview stage (<facet/preview.h>): frame `frame` (0 without a
   // turntable) of each material on `model`. writePreview writes every frame

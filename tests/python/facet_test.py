@@ -131,9 +131,12 @@ class Render(unittest.TestCase):
         self.assertTrue((image["face_id"][~covered] == 0xFFFFFFFF).all())
         report = self.renderer.parity(scene)
         self.assertTrue(report["pass"], report["summary"])
-        self.assertLessEqual(abs(report["covered"] - int(covered.sum())), report["coverage_mismatches"])
-        self.assertIn("beauty", report["aovs"])
-        self.assertLessEqual(report["aovs"]["depth"]["max_relative"], report["aovs"]["depth"]["tolerance"])
+        self.assertEqual(report["verdict"], "pass")
+        run = report["runs"][0]
+        self.assertLessEqual(abs(run["coveredOnBoth"] - int(covered.sum())), run["coverage"]["mismatches"])
+        aovs = {aov["name"]: aov for aov in run["aovs"]}
+        self.assertIn("beauty", aovs)
+        self.assertLessEqual(aovs["depth"]["maxRelative"], aovs["depth"]["tolerance"]["relative"])
 
     def test_one_renderer_shared_by_threads_renders_each_scene_as_alone(self):
         scene = facet.Scene([facet.Object(cube(), name="cube")], materials=[facet.Material(preset="copper", roughness=0.4)],
