@@ -1,7 +1,6 @@
 #include "engine/image/image_io.h"
 
 #include <fcntl.h>
-#include <pthread.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -13,6 +12,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iterator>
+#include <mutex>
 #include <random>
 #include <stdexcept>
 #include <system_error>
@@ -99,14 +100,35 @@ void removeOrphanedTemporaries(const std::filesystem::path& destination) {
 
 }  // namespace
 
+namespace {
+
+constexpr int kHeldSignals[] = {SIGINT, SIGTERM, SIGHUP};
+std::mutex heldMutex;
+int heldCount = 0;  // SignalsHeld alive
+struct sigaction handlingBefore[std::size(kHeldSignals)];
+volatile sig_atomic_t heldSignal = 0;  // the last held back, to raise again
+
+extern "C" void holdSignal(int signal) { heldSignal = signal; }
+
+}  // namespace
+
 SignalsHeld::SignalsHeld() {
-  sigset_t held;
-  sigemptyset(&held);
-  for (int signal : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&held, signal);
-  pthread_sigmask(SIG_BLOCK, &held, &previous_);
+  const std::scoped_lock lock(heldMutex);
+  if (heldCount++ > 0) return;
+  heldSignal = 0;
+  struct sigaction hold {};
+  hold.sa_handler = holdSignal;
+  hold.sa_flags = SA_RESTART;
+  sigemptyset(&hold.sa_mask);
+  for (std::size_t i = 0; i < std::size(kHeldSignals); ++i) sigaction(kHeldSignals[i], &hold, &handlingBefore[i]);
 }
 
-SignalsHeld::~SignalsHeld() { pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
+SignalsHeld::~SignalsHeld() {
+  const std::scoped_lock lock(heldMutex);
+  if (--heldCount > 0) return;
+  for (std::size_t i = 0; i < std::size(kHeldSignals); ++i) sigaction(kHeldSignals[i], &handlingBefore[i], nullptr);
+  if (heldSignal != 0) raise(heldSignal);
+}
 
 void writeAllOrNothing(const std::vector<OutputFile>& files) {
   std::random_device entropy;

@@ -63,17 +63,17 @@ void writeAllOrNothing(const std::vector<OutputFile>& files);
 
 // Holds SIGINT, SIGTERM and SIGHUP back while it lives, so that the renames
 // that put a set of outputs in place are not cut short: an interrupted
-// command ends with the old set or the new one. The signals are delivered
-// when it ends.
+// command ends with the old set or the new one. It holds them for the whole
+// process, whichever thread the kernel hands a signal to (a driver's worker
+// threads included): while one lives, a handler of its own notes the signal,
+// and when the last ends the previous handling comes back and the signal is
+// raised again.
 class SignalsHeld {
  public:
   SignalsHeld();
   ~SignalsHeld();
   SignalsHeld(const SignalsHeld&) = delete;
   SignalsHeld& operator=(const SignalsHeld&) = delete;
-
- private:
-  sigset_t previous_;
 };
 
 // Removes what ended processes left in `folder`: the entries named
