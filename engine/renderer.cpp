@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "engine/cpu/reference_renderer.h"
+#include "engine/gpu_fault.h"
 #include "engine/gpu_backend/gpu_renderer.h"
 #include "engine/gpu_backend/pipeline_cache_file.h"
 #include "scenes/light_transport.h"
@@ -139,6 +140,10 @@ RenderReport Renderer::render(const scene::Scene& scene, Backend backend, const 
       report.image = std::move(result.image);
       report.stages.insert(report.stages.end(), result.stageMilliseconds.begin(), result.stageMilliseconds.end());
       report.device = context.device.adapterInfo().name + " (GPU, float)";
+      if (const std::optional<GpuFault> fault = gpuFaultFromEnvironment()) {
+        injectFault(*fault, report.image);
+        report.device += std::string(" with FACET_FAULT=") + toString(*fault);
+      }
       report.primaryRays = result.primaryRays;
       report.shadowRays = result.shadowRays;
       report.newtonFallbacks = result.newtonFallbacks;
