@@ -1,8 +1,5 @@
 #include "analysis/peers/cycles_peer.h"
 
-#include <spawn.h>
-#include <sys/wait.h>
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -18,10 +15,9 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/timing.h"
+#include "engine/image/child_process.h"
 #include "engine/image/exr_file.h"
 #include "rules/rules.h"
-
-extern char** environ;
 
 namespace facet::peers {
 namespace {
@@ -29,30 +25,11 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-bool isExecutable(const fs::path& path) { return fs::is_regular_file(path) && access(path.c_str(), X_OK) == 0; }
+// What Blender may take for one section's renders before it is ended: far
+// beyond the longest the bench asks for (BENCHMARKS.md).
+constexpr double kBlenderTimeLimit = 4 * 3600;
 
-// Runs `argv` with stdout and stderr into `log`; throws unless it exits 0.
-void runLogged(const std::vector<std::string>& argv, const fs::path& log) {
-  std::vector<char*> pointers;
-  for (const std::string& a : argv) pointers.push_back(const_cast<char*>(a.c_str()));
-  pointers.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-  pid_t pid = 0;
-  const int spawnError = posix_spawn(&pid, pointers[0], &actions, nullptr, pointers.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawnError != 0) throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(spawnError));
-  int status = 0;
-  waitpid(pid, &status, 0);
-  if (WIFSIGNALED(status))
-    throw std::runtime_error(argv[0] + " was ended by signal " + std::to_string(WTERMSIG(status)) + "; see " +
-                             log.string());
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw std::runtime_error(argv[0] + " exited with status " + std::to_string(WEXITSTATUS(status)) + "; see " +
-                             log.string());
-}
+bool isExecutable(const fs::path& path) { return fs::is_regular_file(path) && access(path.c_str(), X_OK) == 0; }
 
 void writeObj(const fs::path& path, const scene::ControlCage& cage) {
   std::ofstream obj(path);
@@ -164,7 +141,7 @@ void renderInCycles(const fs::path& blender, const fs::path& script, const fs::p
     samples += std::to_string(n);
   }
   const std::string threads = std::to_string(cyclesThreads());
-  runLogged({blender.string(),
+  runChild({{blender.string(),
              "-b",
              "--factory-startup",
              "--python-exit-code",  // a script that raises fails the run, not only its log
@@ -186,7 +163,8 @@ void renderInCycles(const fs::path& blender, const fs::path& script, const fs::p
              std::to_string(renders.converged),
              "--output",
              directory.string()},
-            directory / "blender.log");
+            directory / "blender.log",
+            kBlenderTimeLimit});
 }
 
 std::map<int, double> readCyclesTimes(const fs::path& csv, const std::vector<int>& samples) {

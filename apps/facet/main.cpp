@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -12,6 +13,7 @@
 #include "commands.h"
 #include "engine/gpu/gpu.h"
 #include "engine/image/image_io.h"
+#include "engine/image/child_process.h"
 #include "exit_codes.h"
 #include "facet/version.h"
 #include "scenes/input_error.h"
@@ -77,6 +79,13 @@ int main(int argc, char** argv) {
     return fail(kGpuFailed, e.what());
   } catch (const CheckFailed& e) {
     return fail(kCheckFailed, e.what());
+  } catch (const facet::Interrupted& e) {
+    // The program it ran has ended and the command has cleaned up as it
+    // unwound: it now ends as the signal would have ended it.
+    fail(kInternal, e.what());
+    std::signal(e.signal(), SIG_DFL);
+    std::raise(e.signal());
+    return kInternal;
   } catch (const std::bad_alloc&) {
     return fail(kInternal, "out of memory");
   } catch (const std::exception& e) {

@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "engine/image/signal_handlers.h"
+
 namespace facet::cli {
 namespace {
 
@@ -23,26 +25,11 @@ extern "C" void requestStop(int) { stopRequested = 1; }
 // last are in place; the previous handlers come back when it ends.
 class StopOnSignals {
  public:
-  StopOnSignals() {
-    stopRequested = 0;
-    struct sigaction action {};
-    action.sa_handler = requestStop;
-    action.sa_flags = SA_RESTART;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &previous_[0]);
-    sigaction(SIGTERM, &action, &previous_[1]);
-  }
-  ~StopOnSignals() {
-    sigaction(SIGINT, &previous_[0], nullptr);
-    sigaction(SIGTERM, &previous_[1], nullptr);
-  }
-  StopOnSignals(const StopOnSignals&) = delete;
-  StopOnSignals& operator=(const StopOnSignals&) = delete;
-
+  StopOnSignals() { stopRequested = 0; }
   bool stopped() const { return stopRequested != 0; }
 
  private:
-  struct sigaction previous_[2];
+  const SignalHandlers handlers_{{SIGINT, SIGTERM}, requestStop};
 };
 
 // "a.json, b.png and 3 more"

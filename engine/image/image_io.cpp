@@ -12,13 +12,14 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <mutex>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <system_error>
 
 #include "engine/image/png_chunks.h"
+#include "engine/image/signal_handlers.h"
 #include "engine/image/stb_image_write_hidden.h"
 
 namespace facet {
@@ -102,10 +103,9 @@ void removeOrphanedTemporaries(const std::filesystem::path& destination) {
 
 namespace {
 
-constexpr int kHeldSignals[] = {SIGINT, SIGTERM, SIGHUP};
 std::mutex heldMutex;
 int heldCount = 0;  // SignalsHeld alive
-struct sigaction handlingBefore[std::size(kHeldSignals)];
+std::optional<SignalHandlers> holding;
 volatile sig_atomic_t heldSignal = 0;  // the last held back, to raise again
 
 extern "C" void holdSignal(int signal) { heldSignal = signal; }
@@ -116,17 +116,13 @@ SignalsHeld::SignalsHeld() {
   const std::scoped_lock lock(heldMutex);
   if (heldCount++ > 0) return;
   heldSignal = 0;
-  struct sigaction hold {};
-  hold.sa_handler = holdSignal;
-  hold.sa_flags = SA_RESTART;
-  sigemptyset(&hold.sa_mask);
-  for (std::size_t i = 0; i < std::size(kHeldSignals); ++i) sigaction(kHeldSignals[i], &hold, &handlingBefore[i]);
+  holding.emplace(std::initializer_list<int>{SIGINT, SIGTERM, SIGHUP}, holdSignal);
 }
 
 SignalsHeld::~SignalsHeld() {
   const std::scoped_lock lock(heldMutex);
   if (--heldCount > 0) return;
-  for (std::size_t i = 0; i < std::size(kHeldSignals); ++i) sigaction(kHeldSignals[i], &handlingBefore[i], nullptr);
+  holding.reset();
   if (heldSignal != 0) raise(heldSignal);
 }
 

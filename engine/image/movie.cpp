@@ -1,7 +1,5 @@
 #include "engine/image/movie.h"
 
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -11,9 +9,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "engine/image/child_process.h"
 #include "engine/image/image_io.h"
-
-extern char** environ;
 
 namespace facet {
 
@@ -78,22 +75,6 @@ std::vector<std::string> ffmpegArguments(const fs::path& ffmpeg, const fs::path&
   return a;
 }
 
-void runProgram(const std::vector<std::string>& arguments) {
-  std::vector<char*> pointers;
-  for (const std::string& a : arguments) pointers.push_back(const_cast<char*>(a.c_str()));
-  pointers.push_back(nullptr);
-  pid_t pid = 0;
-  const int spawnError = posix_spawn(&pid, pointers[0], nullptr, nullptr, pointers.data(), environ);
-  if (spawnError != 0) throw std::runtime_error("cannot start " + arguments[0] + ": " + std::strerror(spawnError));
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return;
-  throw std::runtime_error(arguments[0] + (WIFEXITED(status)
-                                               ? " exited with status " + std::to_string(WEXITSTATUS(status))
-                                               : std::string(" was killed by a signal")));
-}
-
 void writeMovie(const fs::path& folder, int frames, double fps, const fs::path& output, const std::string& path) {
   const std::optional<MovieFormat> format = movieFormat(output);
   if (!format) throw OutputError("--movie '" + output.string() + "': expected an .mp4 or .gif file");
@@ -101,7 +82,7 @@ void writeMovie(const fs::path& folder, int frames, double fps, const fs::path& 
   if (!ffmpeg) throw OutputError("--movie '" + output.string() + "': " + kFfmpegMissing);
   writeAtomically(output, [&](const fs::path& temporary) {
     try {
-      runProgram(ffmpegArguments(*ffmpeg, folder, frames, fps, temporary, *format));
+      runChild({ffmpegArguments(*ffmpeg, folder, frames, fps, temporary, *format), std::nullopt, kFfmpegTimeLimit});
     } catch (const std::runtime_error& e) {
       throw OutputError("--movie '" + output.string() + "': " + e.what());
     }

@@ -21,6 +21,10 @@ std::optional<std::filesystem::path> findOnPath(const std::string& name, const s
 // What to do where ffmpeg is missing, for the error that says so.
 inline constexpr const char* kFfmpegMissing = "ffmpeg is not on PATH; install it (Debian: apt-get install ffmpeg)";
 
+// What ffmpeg may take to make a movie before it is ended: far beyond a
+// turntable's few thousand frames (engine/image/child_process.h).
+inline constexpr double kFfmpegTimeLimit = 600;
+
 // The numbered frames: `folder`/frame_00000.png, frame_00001.png, ...
 std::filesystem::path framePath(const std::filesystem::path& folder, int frame);
 
@@ -31,10 +35,6 @@ std::filesystem::path framePath(const std::filesystem::path& folder, int frame);
 std::vector<std::string> ffmpegArguments(const std::filesystem::path& ffmpeg, const std::filesystem::path& folder,
                                          int frames, double fps, const std::filesystem::path& output,
                                          MovieFormat format);
-
-// Runs `arguments` (argv[0] a path) and waits; throws std::runtime_error
-// naming the program unless it exits 0.
-void runProgram(const std::vector<std::string>& arguments);
 
 // The movie of `frames` frames in `folder` written to `output`, through a
 // temporary file renamed into place: where ffmpeg fails, no `output` is left

@@ -14,7 +14,8 @@
 #     frames, one error naming it and exit code 2,
 #     nothing written; with a fake ffmpeg that records its arguments, the
 #     frames in order, each the picture alone, a quoted name written as
-#     given; a failing ffmpeg leaves no movie.
+#     given; a failing ffmpeg leaves no movie; a hung one is ended at the
+#     time limit, and SIGTERM to facet ends it too, nothing left behind.
 #   check_preview_stage.sh FACET REPOSITORY WORK_FOLDER
 set -euo pipefail
 facet=$1 repo=$2 work=$3
@@ -135,6 +136,11 @@ grep -q "^facet: error: --movie 'turn.mp4': ffmpeg is not on PATH; install it (D
 mkdir -p bin recorded
 cat >bin/ffmpeg <<'SH'
 #!/bin/bash
+if [ "${FAKE_FFMPEG:-}" = hang ]; then
+  echo $$ >"$RECORD/hung.pid"
+  [ ! -p "$RECORD/started" ] || echo started >"$RECORD/started"
+  exec tail -f /dev/null  # never returns
+fi
 printf '%s\n' "$@" >"$RECORD/args.txt"
 pattern= frames= previous=
 for a in "$@"; do
@@ -195,4 +201,37 @@ set -e
 grep -q "^facet: error: --movie 'failed.mp4': .*ffmpeg exited with status 3$" err.txt || fail "$(cat err.txt)"
 [ ! -e failed.mp4 ] || fail "a failing ffmpeg left a movie"
 ! ls failed.mp4.tmp-* >/dev/null 2>&1 || fail "a failing ffmpeg left a temporary"
+
+# An ffmpeg that never returns: ended at the time limit, one error line, exit
+# code 2, no movie, no frames and no ffmpeg left behind.
+mkdir -p tmp
+set +e
+FAKE_FFMPEG=hang FACET_CHILD_TIME_LIMIT=1 TMPDIR=$work/tmp PATH=$work/bin:$PATH preview gold "${common[@]}" \
+  --turntable 2 --movie hung.mp4 --quiet >out.txt 2>err.txt
+code=$?
+set -e
+[ "$code" = 2 ] || fail "a hung ffmpeg: exit code $code: $(cat err.txt)"
+grep -q "^facet: error: --movie 'hung.mp4': .*ffmpeg did not finish within 1 s, and was ended$" err.txt ||
+  fail "a hung ffmpeg: $(cat err.txt)"
+! kill -0 "$(cat recorded/hung.pid)" 2>/dev/null || fail "a hung ffmpeg was left running"
+[ ! -e hung.mp4 ] && [ -z "$(ls tmp)" ] || fail "a hung ffmpeg left a movie or frames: $(ls tmp)"
+
+# SIGTERM to facet while ffmpeg runs: passed on to ffmpeg, the frames removed,
+# and facet ends by the signal (exit status 128 + 15).
+rm -f recorded/hung.pid
+mkfifo recorded/started
+exec 3<>recorded/started  # opened both ways, so that neither side waits to open it
+FAKE_FFMPEG=hang TMPDIR=$work/tmp PATH=$work/bin:$PATH "$facet" preview --time-limit 86400 gold "${common[@]}" \
+  --turntable 2 --movie killed.mp4 --quiet >out.txt 2>err.txt &
+facet_pid=$!
+read -r -t 600 _ <&3 || fail "the fake ffmpeg never started: $(cat err.txt)"
+kill -TERM "$facet_pid"
+set +e
+wait "$facet_pid"
+code=$?
+set -e
+[ "$code" = 143 ] || fail "SIGTERM during ffmpeg: exit status $code: $(cat err.txt)"
+grep -q "^facet: error: Terminated while .*ffmpeg ran: it was ended$" err.txt || fail "SIGTERM: $(cat err.txt)"
+! kill -0 "$(cat recorded/hung.pid)" 2>/dev/null || fail "SIGTERM left ffmpeg running"
+[ ! -e killed.mp4 ] && [ -z "$(ls tmp)" ] || fail "SIGTERM left a movie or frames: $(ls tmp)"
 echo "check_preview_stage: ok"
