@@ -120,9 +120,9 @@ TEST(ApiSceneSet, ARefusedChangeNamesTheFieldAndLeavesTheSceneAsItWas) {
       {"camera_keys", "camera_keys: set changes render, camera, lights, environment, materials.NAME and objects[N]"},
       {"objects[0].transform.matrix", "objects[0].transform: give either matrix or translate/rotate/scale, not both"},
   };
-  for (const auto& [path, message] : refusals) {
-    const std::string refused = errorOf([&] { scene.set(path, "[1, 0, 0]"); });
-    EXPECT_EQ(refused.rfind("scene: " + message, 0), 0u) << refused;
+  for (const auto& refusal : refusals) {
+    const std::string refused = errorOf([&] { scene.set(refusal.first, "[1, 0, 0]"); });
+    EXPECT_EQ(refused.rfind("scene: " + refusal.second, 0), 0u) << refused;
   }
   EXPECT_EQ(scene.objectName(0), "left");
   expectSameImage(render(scene), before);
