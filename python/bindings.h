@@ -48,6 +48,15 @@ py::array ownedArray(std::vector<T>&& values, std::vector<py::ssize_t> shape) {
   return py::array_t<T>(shape, owned->data(), owner);
 }
 
+// A scene's values handed out as a tuple, so that an append or an item
+// assignment, which could change only a copy, is refused instead of ignored.
+template <class T>
+py::tuple tupleOf(const std::vector<T>& values) {
+  py::tuple out(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) out[i] = py::cast(values[i]);
+  return out;
+}
+
 // The value `name` names among `options`; anything else is an Error listing them.
 template <class T>
 T choice(const std::string& name, const char* argument, std::initializer_list<std::pair<const char*, T>> options) {

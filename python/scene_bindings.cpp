@@ -83,21 +83,23 @@ void bindCage(py::module_& m) {
           [](const facet::Cage& c) {
             std::vector<double> flat;
             for (const Vec3& p : c.positions) flat.insert(flat.end(), {p.x, p.y, p.z});
-            return ownedArray(std::move(flat), {py::ssize_t(c.positions.size()), 3});
+            py::array array = ownedArray(std::move(flat), {py::ssize_t(c.positions.size()), 3});
+            array.attr("setflags")(py::arg("write") = false);  // a copy: writing to it would change nothing
+            return array;
           },
-          "The control points, an (n, 3) array")
+          "The control points, a read-only (n, 3) array")
       .def_property_readonly(
-          "face_vertex_counts", [](const facet::Cage& c) { return std::vector<int>(c.faceVertexCounts); },
+          "face_vertex_counts", [](const facet::Cage& c) { return tupleOf(c.faceVertexCounts); },
           "How many vertices each face has")
       .def_property_readonly(
-          "face_vertex_indices", [](const facet::Cage& c) { return std::vector<int>(c.faceVertexIndices); },
+          "face_vertex_indices", [](const facet::Cage& c) { return tupleOf(c.faceVertexIndices); },
           "Each face's vertices in turn, counter-clockwise seen from outside")
       .def_property_readonly(
           "creases",
           [](const facet::Cage& c) {
             std::vector<std::tuple<int, int, double>> out;
             for (const facet::Crease& e : c.creases) out.emplace_back(e.v0, e.v1, e.sharpness);
-            return out;
+            return tupleOf(out);
           },
           "(v0, v1, sharpness) of each creased edge; sharpness >= 10 is infinitely sharp");
   m.def(
@@ -278,8 +280,9 @@ void bindScene(py::module_& m) {
             return out;
           },
           "Its objects, in order: a tuple, changed through add_object, remove_object and move_object")
-      .def_property_readonly("material_names", &facet::Scene::materialNames,
-                             "Its materials' names, in the order an Object's material index counts them")
+      .def_property_readonly(
+          "material_names", [](const facet::Scene& s) { return tupleOf(s.materialNames()); },
+          "Its materials' names, in the order an Object's material index counts them")
       .def(
           "add_object",
           [](facet::Scene& s, const facet::Object& object, const py::object& material) {
@@ -308,9 +311,12 @@ void bindScene(py::module_& m) {
       .def_property("camera", &facet::Scene::camera, &facet::Scene::setCamera, "The camera (assign a Camera)")
       .def_property("environment", &facet::Scene::environment, &facet::Scene::setEnvironment,
                     "The environment, or None (assign an Environment or None)")
-      .def_property("lights", &facet::Scene::lights, &facet::Scene::setLights, "The lights (assign a list of Light)")
-      .def_property_readonly("warnings", &facet::Scene::warnings,
-                             "What the file says that facet renders otherwise, one line each");
+      .def_property(
+          "lights", [](const facet::Scene& s) { return tupleOf(s.lights()); }, &facet::Scene::setLights,
+          "The lights, a tuple (assign a list of Light)")
+      .def_property_readonly(
+          "warnings", [](const facet::Scene& s) { return tupleOf(s.warnings()); },
+          "What the file says that facet renders otherwise, one line each");
   m.def(
       "load_scene", [](const py::object& path) { return sceneOf(path); }, py::arg("path"),
       "A .json scene, an .obj cage or a .gltf/.glb file");

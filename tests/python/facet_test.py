@@ -483,7 +483,7 @@ class ChangedScenes(unittest.TestCase):
             scene.lights = [facet.Light("spot", outer_cone=200)]
         with self.assertRaisesRegex(facet.Error, r"^scene: environment\.file: "):
             scene.environment = facet.Environment(WORK / "no_such_map.exr")
-        self.assertEqual(scene.lights, [])
+        self.assertEqual(scene.lights, ())
         with self.assertRaises(AttributeError):
             scene.camera.fov = 20
         scene.camera = scene.camera.replace(fov=20)
@@ -510,7 +510,7 @@ class ChangedScenes(unittest.TestCase):
         gltf = pathlib.Path(__file__).resolve().parents[1] / "scenes" / "data" / "ignored_features.gltf"
         warnings = facet.load_scene(gltf).warnings
         self.assertTrue(any("only COLOR_0 is read" in w for w in warnings), warnings)
-        self.assertEqual(facet.load_scene(self.CUBE).warnings, [])
+        self.assertEqual(facet.load_scene(self.CUBE).warnings, ())
 
 
 if __name__ == "__main__":

@@ -97,14 +97,23 @@ class SceneValues(unittest.TestCase):
             scene.add_object(facet.Object(facet.load_cage(CUBE)), material="unobtainium")
         self.assertEqual(len(scene.objects), 2, "a refused add leaves the scene as it was")
 
-    def test_the_objects_container_refuses_edits_it_would_ignore(self):
+    def test_every_container_refuses_edits_it_would_ignore(self):
         scene = facet.load_dict(document(), folder=CAGES)
-        objects = scene.objects
-        self.assertIsInstance(objects, tuple)
-        with self.assertRaises(AttributeError):
-            objects.append(facet.Object(facet.load_cage(CUBE)))
+        for name in ("objects", "lights", "material_names", "warnings"):
+            values = getattr(scene, name)
+            self.assertIsInstance(values, tuple, name)
+            with self.assertRaises(AttributeError, msg=name):
+                values.append(None)
         with self.assertRaises(TypeError):
-            objects[0] = None
+            scene.objects[0] = None
+        cage = facet.load_cage(CUBE)
+        with self.assertRaisesRegex(ValueError, "read-only"):
+            cage.positions[0, 0] = 5.0
+        for name in ("face_vertex_counts", "face_vertex_indices", "creases"):
+            self.assertIsInstance(getattr(cage, name), tuple, name)
+        # What does change them: assignment, and the scene's own edits.
+        scene.lights = list(scene.lights) + [facet.Light("point", position=(0, 3, 0), color=(4, 4, 4))]
+        self.assertEqual([light.type for light in scene.lights], ["directional", "point"])
 
 
 class Keywords(unittest.TestCase):
