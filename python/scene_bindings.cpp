@@ -225,8 +225,8 @@ void bindTransform(py::module_& m) {
       .def_readonly("scale", &facet::Transform::scale, "Per axis, first");
 }
 
-// Objects, and the Scene that holds them with its materials, camera, environment and lights.
-void bindScene(py::module_& m) {
+// Objects as a Scene is given them, and as it hands them out.
+void bindObjects(py::module_& m) {
   bindTransform(m);
   py::class_<facet::Object>(m, "Object", "A cage with the index of its material in the scene's materials")
       .def(py::init([](facet::Cage cage, int material, const std::string& name, bool subdivided,
@@ -252,7 +252,11 @@ void bindScene(py::module_& m) {
           "transform", [](const SceneObject& o) { return o.scene().transform(o.index); },
           [](SceneObject& o, const facet::Transform& t) { o.scene().setTransform(o.index, t); },
           "The Transform that places its cage, as its scene file's transform; assign one to move it");
+}
 
+// The Scene that holds the objects with their materials, camera, environment and lights.
+void bindScene(py::module_& m) {
+  bindObjects(m);
   py::class_<facet::Scene>(m, "Scene",
                            "A validated scene, built here or loaded with facet.load_scene; its objects' materials, "
                            "camera, environment and lights can be changed, and the next render renders the change")
