@@ -1,9 +1,11 @@
 #include "api/errors.h"
 
+#include <csignal>
 #include <new>
 #include <stdexcept>
 
 #include "engine/gpu/gpu.h"
+#include "engine/image/child_process.h"
 #include "engine/image/image_io.h"
 #include "scenes/input_error.h"
 
@@ -22,6 +24,11 @@ void rethrowAsError() {
     throw v0::Error(v0::ErrorKind::OutputFailed, e.what());
   } catch (const gpu::Error& e) {
     throw v0::Error(v0::ErrorKind::GpuFailed, e.what());
+  } catch (const Interrupted& e) {
+    // The program facet ran has ended; the caller's process gets the signal
+    // it would have had (Python: KeyboardInterrupt for SIGINT).
+    raise(e.signal());
+    throw v0::Error(v0::ErrorKind::Internal, e.what());
   } catch (const std::bad_alloc&) {
     throw v0::Error(v0::ErrorKind::Internal, "out of memory");
   } catch (const std::exception& e) {

@@ -12,6 +12,7 @@
 #include "api/scene_data.h"
 #include "api/scene_objects.h"
 #include "scenes/input_error.h"
+#include "scenes/input_file.h"
 #include "scenes/scene_file.h"
 
 namespace facet::v0 {
@@ -69,8 +70,15 @@ int Scene::objectCount() const { return int(data_->scene.objects.size()); }
 Scene loadScene(const std::string& path) {
   return api::translateErrors([&] {
     const scene::InputFileLog read;
-    scene::Scene s = scene::loadScene(path);
-    return api::sceneOf(std::move(s), path, isJsonScene(path) ? scene::readSceneDocument(path) : nullptr, read.files());
+    if (!isJsonScene(path)) {
+      scene::Scene s = scene::loadScene(path);
+      return api::sceneOf(std::move(s), path, nullptr, read.files());
+    }
+    // Read once: the document its edits start from is the one it was loaded from.
+    scene::checkInputFile(path, "the scene");
+    const nlohmann::json document = scene::readSceneDocument(path);
+    scene::Scene s = scene::sceneFromJson(document, std::filesystem::path(path).parent_path(), path);
+    return api::sceneOf(std::move(s), path, document, read.files());
   });
 }
 

@@ -88,8 +88,9 @@ v0::Scene sceneOf(scene::Scene s, std::filesystem::path relativeTo, const nlohma
     if (const auto block = document.find("materials"); block != document.end() && block->is_object())
       for (const auto& [name, material] : block->items()) namedMaterials[name] = material;
     // The loader read every object, so objects is an array of one per object.
+    const nlohmann::json& objects = document.at("objects");
     for (std::size_t i = 0; i < transforms.size(); ++i)
-      transforms[i] = document["objects"][i].value("transform", nlohmann::json::object());
+      transforms[i] = objects.at(i).value("transform", nlohmann::json::object());
   }
   return v0::Scene(std::make_shared<const v0::detail::SceneData>(v0::detail::SceneData{
       std::move(s), std::move(relativeTo), std::move(namedMaterials), std::move(inputs), std::move(transforms)}));

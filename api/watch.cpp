@@ -18,7 +18,7 @@
 
 namespace facet::v0 {
 void Renderer::watch(const std::string& path, const std::function<bool(const WatchPass&)>& onPass,
-                     const WatchSettings& settings, const std::function<void(const Error&)>& onBadInput) {
+                     const WatchSettings& settings, const std::function<bool(const Error&)>& onBadInput) {
   api::translateErrors([&] {
     if (settings.passes < 1 || settings.passes > 4096)
       api::refuse("watch settings", "passes", "expected passes in [1, 4096]");
@@ -45,7 +45,10 @@ void Renderer::watch(const std::string& path, const std::function<bool(const Wat
       try {
         api::translateErrors([&] { std::rethrow_exception(error); });
       } catch (const Error& e) {
-        if (onBadInput) return onBadInput(e);
+        if (onBadInput) {
+          stop = stop || !onBadInput(e);
+          return;
+        }
         ended = std::current_exception();
         stop = true;
       }

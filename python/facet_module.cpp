@@ -108,14 +108,16 @@ void watchScene(facet::Renderer& renderer, const std::string& scene, const py::f
       return false;
     }
   };
-  std::function<void(const facet::Error&)> badInput;
+  std::function<bool(const facet::Error&)> badInput;
   if (!onBadInput.is_none())
     badInput = [&](const facet::Error& e) {
       py::gil_scoped_acquire held;
       try {
-        onBadInput(e.what());
+        const py::object goOn = onBadInput(e.what());
+        return goOn.is_none() || goOn.cast<bool>();
       } catch (py::error_already_set& error) {
         raised = std::move(error);
+        return false;
       }
     };
   {

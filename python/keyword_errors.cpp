@@ -24,7 +24,7 @@ def diagnosed(function, owner):
         try:
             return function(*args, **kwargs)
         except TypeError as e:
-            if "incompatible" not in str(e):
+            if not re.match(r"^[\w.]+\(\): incompatible (function|constructor) arguments", str(e)):
                 raise
             names = keywords(function.__doc__)
             for given in kwargs:

@@ -99,6 +99,9 @@ glm::dmat4 readTransform(const Field& f) {
       for (int r = 0; r < 4; ++r) matrix[c][r] = m[std::size_t(4 * c + r)].number();
     if (matrix[0][3] != 0 || matrix[1][3] != 0 || matrix[2][3] != 0 || matrix[3][3] != 1)
       m.fail("must be affine (last row 0, 0, 0, 1)");
+    // A flattening matrix leaves a surface without area and normals without a direction.
+    const double determinant = glm::determinant(glm::dmat3(matrix));
+    if (!std::isfinite(determinant) || determinant == 0) m.fail("must be invertible (its determinant is 0)");
     return matrix;
   }
   glm::dmat4 matrix(1.0);

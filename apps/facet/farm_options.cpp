@@ -29,7 +29,7 @@ void addFarmOptions(CLI::App& command, FarmOptions& o) {
                   "Turn the model (see --turn) about the vertical through the camera's target: frame f of N at "
                   "2 pi f / N")
       ->check(CLI::Range(1, 1000000));
-  addTurnOption(command, o.turn);
+  addTurnOption(command, o.turn)->needs(command.get_option("--turntable"));
   command
       .add_option("--threads", o.threads,
                   "CPU backend's threads, lavapipe's workers (default: "
@@ -122,8 +122,8 @@ scene::Scene frameScene(const scene::Scene& still, const FarmOptions& o, int fra
   return scene::turntableFrame(scene, frame, *o.turntable, chosenTurn(o.turn));
 }
 
-void addTurnOption(CLI::App& command, std::string& turn) {
-  command
+CLI::Option* addTurnOption(CLI::App& command, std::string& turn) {
+  return command
       .add_option("--turn", turn,
                   "What --turntable turns before the fixed camera: the model (lights and environment fixed) or the "
                   "environment (default: model)")

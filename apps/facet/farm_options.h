@@ -50,7 +50,7 @@ scene::Camera frameCamera(const scene::Camera& still, const std::vector<scene::C
 scene::Scene frameScene(const scene::Scene& still, const FarmOptions& options, int frame);
 
 // --turn model|environment, what a turntable turns: render's and preview's.
-void addTurnOption(CLI::App& command, std::string& turn);
+CLI::Option* addTurnOption(CLI::App& command, std::string& turn);
 scene::TurntableTurn chosenTurn(const std::string& turn);
 
 // `pattern` with its run of '#' replaced by the frame, zero-padded to the

@@ -32,7 +32,7 @@ void addPreviewStageOptions(CLI::App& c, PreviewStageFlags& f) {
                "Frames of a full turn of the model (see --turn) about the vertical through the camera's target, "
                "for --movie")
       ->check(CLI::Range(2, 3600));
-  addTurnOption(c, f.turn);
+  addTurnOption(c, f.turn)->needs(c.get_option("--turntable"));
   c.add_option("--movie", f.movie, "The turntable as an .mp4 or a .gif, made by ffmpeg (found on PATH)");
   c.add_option("--fps", f.fps, "The movie's frames per second (default 24)")->check(CLI::Range(1.0, 120.0));
   addPreviewOptions(c, f.preview);

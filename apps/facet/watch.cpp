@@ -6,6 +6,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -25,11 +26,14 @@ extern "C" void requestStop(int) { stopRequested = 1; }
 // last are in place; the previous handlers come back when it ends.
 class StopOnSignals {
  public:
-  StopOnSignals() { stopRequested = 0; }
+  StopOnSignals() {
+    stopRequested = 0;  // before the handlers, so that a signal from then on counts
+    handlers_.emplace(std::initializer_list<int>{SIGINT, SIGTERM}, requestStop);
+  }
   bool stopped() const { return stopRequested != 0; }
 
  private:
-  const SignalHandlers handlers_{{SIGINT, SIGTERM}, requestStop};
+  std::optional<SignalHandlers> handlers_;
 };
 
 // "a.json, b.png and 3 more"

@@ -8,8 +8,10 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <stdexcept>
 #include <thread>
 
 #include "engine/image/signal_handlers.h"
@@ -88,11 +90,14 @@ void runChild(const ChildRun& run) {
   const Clock::time_point deadline =
       Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit));
   int status = 0;
+  const auto interrupted = [&] {
+    const int signal = received;
+    return Interrupted(signal, std::string(strsignal(signal)) + " while " + program + " ran: it was ended");
+  };
   while (!endedWithin(pid, kPoll, status)) {
     if (received != 0) {
-      const int signal = received;
       end(pid);
-      throw Interrupted(signal, std::string(strsignal(signal)) + " while " + program + " ran: it was ended");
+      throw interrupted();
     }
     if (Clock::now() >= deadline) {
       end(pid);
@@ -101,6 +106,8 @@ void runChild(const ChildRun& run) {
       throw std::runtime_error(program + " did not finish within " + seconds + " s, and was ended" + see);
     }
   }
+  // A Ctrl-C reaches the program too, which may end on it first.
+  if (received != 0) throw interrupted();
   if (WIFSIGNALED(status))
     throw std::runtime_error(program + " was ended by signal " + std::to_string(WTERMSIG(status)) + see);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)

@@ -1,9 +1,9 @@
 // The programs facet runs for its images (ffmpeg for movies, Blender for the
-// bench's Cycles renders, gnuplot for charts) under control: each within a time limit, after which
-// it is ended, and ended with facet: SIGINT or SIGTERM sent to facet while
-// one runs is passed on to it, facet waits for it to end, and the command
-// then ends, cleaning up as it unwinds (docs/reliability.md, "Programs facet
-// runs").
+// bench's Cycles renders) under control: each within a time limit, after
+// which it is ended, and ended with facet: where SIGINT or SIGTERM reaches
+// facet while one runs, facet ends it (SIGTERM, then SIGKILL), waits for
+// it, and the command then ends, cleaning up as it unwinds
+// (docs/reliability.md, "Programs facet runs").
 #pragma once
 
 #include <filesystem>
@@ -18,7 +18,7 @@ namespace facet {
 struct ChildRun {
   std::vector<std::string> arguments;        // arguments[0]: the program's path
   std::optional<std::filesystem::path> log;  // its stdout and stderr; none: facet's own
-  double timeLimitSeconds = 600;             // FACET_CHILD_TIME_LIMIT, where set, overrides it
+  double timeLimitSeconds = 0;               // > 0; FACET_CHILD_TIME_LIMIT, where set, overrides it
 };
 
 // SIGINT or SIGTERM reached facet while a program ran: the program has

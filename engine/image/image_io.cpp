@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <mutex>
 #include <optional>
 #include <random>
@@ -103,19 +104,23 @@ void removeOrphanedTemporaries(const std::filesystem::path& destination) {
 
 namespace {
 
+constexpr int kHeldSignals[] = {SIGINT, SIGTERM, SIGHUP};
 std::mutex heldMutex;
 int heldCount = 0;  // SignalsHeld alive
 std::optional<SignalHandlers> holding;
-volatile sig_atomic_t heldSignal = 0;  // the last held back, to raise again
+volatile sig_atomic_t held[std::size(kHeldSignals)] = {};  // each signal held back, to raise again
 
-extern "C" void holdSignal(int signal) { heldSignal = signal; }
+extern "C" void holdSignal(int signal) {
+  for (std::size_t i = 0; i < std::size(kHeldSignals); ++i)
+    if (kHeldSignals[i] == signal) held[i] = 1;
+}
 
 }  // namespace
 
 SignalsHeld::SignalsHeld() {
   const std::scoped_lock lock(heldMutex);
   if (heldCount++ > 0) return;
-  heldSignal = 0;
+  for (volatile sig_atomic_t& signal : held) signal = 0;
   holding.emplace(std::initializer_list<int>{SIGINT, SIGTERM, SIGHUP}, holdSignal);
 }
 
@@ -123,7 +128,8 @@ SignalsHeld::~SignalsHeld() {
   const std::scoped_lock lock(heldMutex);
   if (--heldCount > 0) return;
   holding.reset();
-  if (heldSignal != 0) raise(heldSignal);
+  for (std::size_t i = 0; i < std::size(kHeldSignals); ++i)
+    if (held[i] != 0) raise(kHeldSignals[i]);
 }
 
 void writeAllOrNothing(const std::vector<OutputFile>& files) {

@@ -9,7 +9,9 @@ SignalHandlers::SignalHandlers(std::initializer_list<int> signals, void (*handle
   sigemptyset(&action.sa_mask);
   for (int signal : signals) {
     struct sigaction before {};
-    sigaction(signal, &action, &before);
+    sigaction(signal, nullptr, &before);
+    if (before.sa_handler == SIG_IGN) continue;  // ignored on purpose (nohup, a background job): it stays so
+    sigaction(signal, &action, nullptr);
     before_.emplace_back(signal, before);
   }
 }

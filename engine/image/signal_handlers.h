@@ -1,5 +1,5 @@
 // A handler for some signals while it lives, the handling before restored
-// when it ends: what holds signals back while outputs are renamed
+// when it ends; a signal ignored before stays ignored: what holds signals back while outputs are renamed
 // (image_io.h), passes them on to a program facet runs (child_process.h)
 // and ends a watch between passes.
 #pragma once

@@ -138,11 +138,12 @@ class Renderer {
 
   // Watches the scene file `scene` (<facet/watch.h>): onPass after each
   // pass of each picture, returning whether to go on. A later load or
-  // render refused on bad input goes to onBadInput, and the watch keeps the
-  // last picture and waits for the next change; without onBadInput it ends
-  // the watch, thrown. The first picture's errors are thrown.
+  // render refused on bad input goes to onBadInput, which returns whether
+  // to go on: the watch keeps the last picture and waits for the next
+  // change; without onBadInput it ends the watch, thrown. The first
+  // picture's errors are thrown.
   void watch(const std::string& scene, const std::function<bool(const WatchPass&)>& onPass,
-             const WatchSettings& settings, const std::function<void(const Error&)>& onBadInput = {});
+             const WatchSettings& settings, const std::function<bool(const Error&)>& onBadInput = {});
 
  private:
   struct State;

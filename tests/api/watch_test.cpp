@@ -64,6 +64,7 @@ TEST(ApiWatch, ARefusedLoadGoesToOnBadInputAndTheWatchGoesOn) {
       [&](const facet::Error& e) {
         refusals.push_back(e.what());
         writeScene("refused.json", watchedScene(30));
+        return true;
       });
   ASSERT_EQ(refusals.size(), 1u);
   EXPECT_EQ(refusals[0].rfind(file + ": not valid JSON", 0), 0u) << refusals[0];

@@ -59,6 +59,18 @@ class Watch(unittest.TestCase):
         self.assertEqual(len(refusals), 1)
         self.assertTrue(refusals[0].startswith(f"{path}: not valid JSON"), refusals[0])
 
+    def test_an_exception_in_on_bad_input_stops_the_watch(self):
+        path = scene_file("raising.json", 40)
+
+        def on_pass(p):
+            path.write_text("{\"objects\": [")
+
+        def on_bad_input(message):
+            raise RuntimeError("from on_bad_input")
+
+        with self.assertRaisesRegex(RuntimeError, "from on_bad_input"):
+            self.renderer.watch(path, on_pass, passes=1, on_bad_input=on_bad_input, **QUICK)
+
     def test_the_callback_stops_it_or_raises_through_it(self):
         path = scene_file("stopped.json", 40)
         passes = []

@@ -103,6 +103,10 @@ TEST_F(SceneFiles, ErrorsNameTheFileTheFieldAndTheRule) {
   EXPECT_THAT(errorOf("{}"), HasSubstr("scene.json: the document: a scene needs objects"));
   EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj", "material": {"alpha": 2}}]})"),
               AllOf(HasSubstr("objects[0].material.alpha"), HasSubstr("[0, 1]")));
+  // A matrix that flattens the cage onto a plane.
+  EXPECT_THAT(errorOf(R"({"objects": [{"mesh": "ball.obj", "transform": {"matrix":
+                          [1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]}}]})"),
+              AllOf(HasSubstr("objects[0].transform.matrix"), HasSubstr("must be invertible")));
 }
 
 TEST_F(SceneFiles, RenderBouncesDefaultToNone) {
