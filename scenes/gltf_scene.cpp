@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iterator>
 #include <optional>
+#include <utility>
 #include <string_view>
 #include <system_error>
 
@@ -269,6 +270,25 @@ tinygltf::Model parseGltf(const std::filesystem::path& path, std::string& warnin
   return model;
 }
 
+// The first of `textures`' slots that reads TEXCOORD_1, by the name its
+// material in the file gives it; none where no slot does.
+std::optional<std::string> slotOnSecondTexcoords(const materials::MaterialTextures& t) {
+  const std::pair<const char*, const materials::TextureSlot*> slots[] = {
+      {"pbrMetallicRoughness.baseColorTexture", &t.baseColorTexture},
+      {"pbrMetallicRoughness.metallicRoughnessTexture", &t.metallicRoughnessTexture},
+      {"normalTexture", &t.normalTexture},
+      {"occlusionTexture", &t.occlusionTexture},
+      {"emissiveTexture", &t.emissiveTexture},
+      {"extensions.KHR_materials_clearcoat.clearcoatTexture", &t.clearcoatTexture},
+      {"extensions.KHR_materials_clearcoat.clearcoatRoughnessTexture", &t.clearcoatRoughnessTexture},
+      {"extensions.KHR_materials_clearcoat.clearcoatNormalTexture", &t.clearcoatNormalTexture},
+      {"extensions.KHR_materials_sheen.sheenColorTexture", &t.sheenColorTexture},
+      {"extensions.KHR_materials_anisotropy.anisotropyTexture", &t.anisotropyTexture}};
+  for (const auto& slot : slots)
+    if (slot.second->texture >= 0 && slot.second->texCoord == 1) return slot.first;
+  return std::nullopt;
+}
+
 // The objects of the mesh instance at `node` (nodes[index] as `where`), one
 // per material of its primitives, at `world`.
 void addMeshObjects(Scene& scene, const tinygltf::Model& model, const tinygltf::Node& node, const std::string& where,
@@ -288,6 +308,12 @@ void addMeshObjects(Scene& scene, const tinygltf::Model& model, const tinygltf::
     // glTF culls the back faces of a material that is not doubleSided,
     // its default material's included.
     object.oneSided = material == defaultMaterialIndex || !model.materials[std::size_t(material)].doubleSided;
+    const std::optional<materials::MaterialTextures>& textures = scene.materials[std::size_t(material)].textures;
+    if (textures && object.cage.texcoords1.empty())
+      if (const std::optional<std::string> slot = slotOnSecondTexcoords(*textures))
+        reader.fail(meshWhere, "materials[" + std::to_string(material) + "]." + *slot +
+                                   ".texCoord is 1, but not every primitive of this mesh in that material has "
+                                   "TEXCOORD_1, which it reads");
     if (material != defaultMaterialIndex) {
       object.alphaCutoff = cutouts[std::size_t(material)].cutoff;
       object.alphaFactor = cutouts[std::size_t(material)].factor;

@@ -28,14 +28,20 @@ using ::testing::ThrowsMessage;
 class GltfMaterialExtensions : public facet::testing::TempDirTest {
  protected:
   // The textured quad of one black dielectric, double-sided, with `members` added.
-  // The file has one texture, a grey 2 x 2 PNG, for the slots that name it.
-  std::filesystem::path write(const std::string& name, const nlohmann::json& members) {
+  // The file has one texture, a grey 2 x 2 PNG, for the slots that name it;
+  // with `secondTexcoords` the quad has TEXCOORD_1 too (TEXCOORD_0's values).
+  std::filesystem::path write(const std::string& name, const nlohmann::json& members, bool secondTexcoords = false) {
     nlohmann::json m = {{"doubleSided", true},
                         {"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 1}}, {"metallicFactor", 0.0}}}};
     m.update(members);
     facet::testing::writePng(dir_ / "grey.png", 2, 2, std::vector<facet::testing::Rgba8>(4, {128, 128, 128, 255}));
-    return facet::testing::writeTexturedQuad(
-        dir_, name, {{"materials", {m}}, {"textures", {{{"source", 0}}}}, {"images", {{{"uri", "grey.png"}}}}});
+    nlohmann::json parts = {{"materials", {m}}, {"textures", {{{"source", 0}}}}, {"images", {{{"uri", "grey.png"}}}}};
+    if (secondTexcoords)
+      parts["meshes"] = {{{"primitives",
+                           {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}, {"TEXCOORD_1", 1}}},
+                             {"indices", 2},
+                             {"material", 0}}}}}};
+    return facet::testing::writeTexturedQuad(dir_, name, parts);
   }
   static nlohmann::json strength(double s) { return {{"KHR_materials_emissive_strength", {{"emissiveStrength", s}}}}; }
 };
@@ -130,7 +136,7 @@ TEST_F(GltfMaterialExtensions, ClearcoatFactorsAndTexturesAreRead) {
   textured["clearcoatTexture"] = {{"index", 0}};
   textured["clearcoatRoughnessTexture"] = {{"index", 0}, {"texCoord", 1}};
   textured["clearcoatNormalTexture"] = {{"index", 0}, {"scale", 0.5}};
-  const Scene read = loadScene(write("textured", {{"extensions", {{"KHR_materials_clearcoat", textured}}}}));
+  const Scene read = loadScene(write("textured", {{"extensions", {{"KHR_materials_clearcoat", textured}}}}, true));
   EXPECT_EQ(read.materials.at(0).clearcoat, 0.75);
   EXPECT_THAT(read.warnings, IsEmpty());
   ASSERT_TRUE(read.materials.at(0).textures.has_value());

@@ -129,6 +129,16 @@ TEST_F(GltfTextures, AMissingImageFileIsNamed) {
       ThrowsMessage<InputError>(AllOf(HasSubstr("missing.gltf"), HasSubstr("images[0]"), HasSubstr("nowhere.png"))));
 }
 
+// The backends would read different values for coordinates the mesh does
+// not have, so a slot on TEXCOORD_1 of a mesh without it is refused.
+TEST_F(GltfTextures, ASlotOnTexcoordsTheMeshLacksIsNamed) {
+  const auto file =
+      facet::testing::writeTexturedQuad(dir_, "uv1", parts({{"normalTexture", {{"index", 1}, {"texCoord", 1}}}}));
+  EXPECT_THAT([&] { loadScene(file); },
+              ThrowsMessage<InputError>(
+                  AllOf(HasSubstr("meshes[0]: materials[0].normalTexture.texCoord is 1"), HasSubstr("TEXCOORD_1"))));
+}
+
 TEST_F(GltfTextures, ABadTextureIndexIsNamed) {
   const auto file = facet::testing::writeTexturedQuad(dir_, "index", parts({{"normalTexture", {{"index", 7}}}}));
   EXPECT_THAT([&] { loadScene(file); },
