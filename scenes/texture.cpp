@@ -58,9 +58,10 @@ Texture makeTexture(std::string source, int width, int height, int components, c
     base.texels[i] =
         grey ? glm::vec4(glm::vec3(colour(c[0])), alpha) : glm::vec4(colour(c[0]), colour(c[1]), colour(c[2]), alpha);
   }
-  texture.levels.push_back(std::move(base));
-  while (texture.levels.back().width > 1 || texture.levels.back().height > 1)
-    texture.levels.push_back(halve(texture.levels.back()));
+  std::vector<TextureLevel> levels;
+  levels.push_back(std::move(base));
+  while (levels.back().width > 1 || levels.back().height > 1) levels.push_back(halve(levels.back()));
+  texture.levels = TextureChain(std::move(levels));
   return texture;
 }
 
@@ -97,6 +98,12 @@ glm::dvec4 sampleSlot(const std::vector<Texture>& textures, const materials::Tex
   const m::SlotLookup l = m::slot_lookup(f, slot.offset, std::cos(slot.rotation), std::sin(slot.rotation), slot.scale,
                                          texture.levels[0].width, texture.levels[0].height);
   return sampleTexture(texture, l.uv, l.lod);
+}
+
+bool sameTextures(const std::vector<Texture>& a, const std::vector<Texture>& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const Texture& x, const Texture& y) {
+    return x.levels.sameChain(y.levels) && x.sampler == y.sampler;
+  });
 }
 
 }  // namespace facet::scene

@@ -8,7 +8,9 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "materials/material.h"
@@ -31,11 +33,35 @@ struct TextureSampler {
   std::uint32_t magFilter = rules::f64::FACET_FILTER_LINEAR;
   std::uint32_t minFilter = rules::f64::FACET_FILTER_LINEAR;
   std::uint32_t mipMode = rules::f64::FACET_MIP_LINEAR;
+
+  bool operator==(const TextureSampler&) const = default;
+};
+
+// A texture's levels: level 0, then each half the size, down to 1 x 1.
+// Immutable once built and shared by every copy of its scene (the adaptive
+// rounds', the ground's, the APIs' scene values), so that copying a scene
+// copies no texel, and a backend can keep what it made of a chain for as
+// long as the same chain is rendered (sameChain).
+class TextureChain {
+ public:
+  TextureChain() = default;
+  explicit TextureChain(std::vector<TextureLevel> levels)
+      : levels_(std::make_shared<const std::vector<TextureLevel>>(std::move(levels))) {}
+
+  std::size_t size() const { return levels_ ? levels_->size() : 0; }
+  const TextureLevel& operator[](std::size_t level) const { return (*levels_)[level]; }
+  std::vector<TextureLevel>::const_iterator begin() const { return levels_->begin(); }
+  std::vector<TextureLevel>::const_iterator end() const { return levels_->end(); }
+  // Whether both are the same chain, not merely equal texels.
+  bool sameChain(const TextureChain& other) const { return levels_ == other.levels_; }
+
+ private:
+  std::shared_ptr<const std::vector<TextureLevel>> levels_;
 };
 
 struct Texture {
-  std::string source;                // the image file, or what named it
-  std::vector<TextureLevel> levels;  // level 0, then each half the size, down to 1 x 1
+  std::string source;  // the image file, or what named it
+  TextureChain levels;
   TextureSampler sampler;
 };
 
@@ -78,5 +104,9 @@ glm::dvec4 sampleTexture(const Texture& texture, const glm::dvec2& uv, double lo
 // scene's `textures`; 1 for an empty slot.
 glm::dvec4 sampleSlot(const std::vector<Texture>& textures, const materials::TextureSlot& slot,
                       const rules::f64::TextureFootprint& f);
+
+// Whether `a` and `b` are the same chains under the same samplers, in the
+// same order: what a backend made of `a` serves `b`.
+bool sameTextures(const std::vector<Texture>& a, const std::vector<Texture>& b);
 
 }  // namespace facet::scene

@@ -27,6 +27,7 @@ struct FacetRays::State {
   layout::FrameParams frame{};
   gb::GeometryBuffers geometry;
   gb::ShadingBuffers shading;
+  gb::TextureBuffers textures;
   gb::BandBuffers band;
   gb::BindingTable table;
   gpu::Buffer rays, hits, counts;
@@ -53,8 +54,9 @@ FacetRays::FacetRays(gpu::Device& device, const scene::Scene& scene, const scene
   s.geometry = gb::uploadGeometry(s.d, packed);
   s.shading =
       gb::uploadShading(s.d, scene, nullptr, gb::EnvironmentData{}, compensation, compensationTexels, scene.camera.eye);
+  s.textures = gb::uploadTextures(s.d, scene.textures);
   s.band = gb::allocateBands(s.d, 1, 1, 1, 0, true);
-  s.table = gb::bindingTable(s.geometry, s.shading, s.band);
+  s.table = gb::bindingTable(s.geometry, s.shading, s.textures, s.band);
   s.d.queue().writeBuffer(s.band.frame, 0, &s.frame, sizeof(s.frame));
 
   // GpuRenderer's dicing stage: the micro-grid, the quadtrees, the top levels refitted.

@@ -5,7 +5,8 @@
 
 namespace facet::gpu_backend {
 
-BindingTable bindingTable(const GeometryBuffers& g, const ShadingBuffers& s, const BandBuffers& b) {
+BindingTable bindingTable(const GeometryBuffers& g, const ShadingBuffers& s, const TextureBuffers& t,
+                          const BandBuffers& b) {
   return {{0, &b.frame},
           {1, &g.nodes},
           {2, &g.patches},
@@ -34,9 +35,9 @@ BindingTable bindingTable(const GeometryBuffers& g, const ShadingBuffers& s, con
           {26, &g.refitOrder},
           {27, &g.normals},
           {28, &g.texcoords},
-          {29, &s.textureTexels},
-          {30, &s.textureLevels},
-          {31, &s.textureTable},
+          {29, &t.texels},
+          {30, &t.levels},
+          {31, &t.table},
           // Without paths no kernel that runs reads or writes these: they
           // name a buffer that is there, so that nothing is allocated.
           {32, b.pathStates ? &b.pathStates : &b.hits},

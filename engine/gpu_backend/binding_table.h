@@ -15,7 +15,8 @@ namespace facet::gpu_backend {
 
 using BindingTable = std::map<std::uint32_t, const gpu::Buffer*>;
 
-BindingTable bindingTable(const GeometryBuffers& g, const ShadingBuffers& s, const BandBuffers& b);
+BindingTable bindingTable(const GeometryBuffers& g, const ShadingBuffers& s, const TextureBuffers& t,
+                          const BandBuffers& b);
 
 // The pipeline's bind group: the table's buffer for each binding its layout has.
 gpu::BindGroup bindGroup(gpu::Device& d, const gpu::ComputePipeline& pipeline, const std::string& label,

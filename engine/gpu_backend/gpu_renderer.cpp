@@ -129,7 +129,8 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   }
 
   // Stage: the BVH's top levels and the patches, packed and uploaded unless
-  // the last render diced the same geometry (wall clock).
+  // the last render diced the same geometry, and the textures unless the last
+  // render's are the same (wall clock).
   start = std::chrono::steady_clock::now();
   layout::FrameParams frame = frameParams(scene, geometry, strata, packed);
   const scene::SceneFeatures features = scene::sceneFeatures(scene);
@@ -144,6 +145,10 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   const GeometryBuffers& geometryBuffers = diced_->buffers;
   const ShadingBuffers shadingBuffers = uploadShading(d, scene, lighting ? &*lighting : nullptr, environment,
                                                       compensation, compensationTexelData, origin);
+  if (!textures_ || !scene::sameTextures(textures_->textures, scene.textures)) {
+    textures_.reset();  // the old upload's memory is free before the new one's is taken
+    textures_ = uploadTextures(d, scene.textures);
+  }
   result.stageMilliseconds.push_back({Stage::TopLevels, packMilliseconds + millisecondsSince(start)});
 
   const int width = scene.render.width;
@@ -160,7 +165,7 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   frame.fallbackCapacity = tessellated ? 0 : std::uint32_t(bandPixels * frame.raysPerPixel / 16 + 1024);
   BandBuffers band = allocateBands(d, bandPixels, bandPixels * frame.raysPerPixel, frame.slotsPerRay,
                                    frame.fallbackCapacity, bounces > 0);
-  BindingTable table = bindingTable(geometryBuffers, shadingBuffers, band);
+  BindingTable table = bindingTable(geometryBuffers, shadingBuffers, *textures_, band);
   result.cells = packed.cells;
 
   StageClock clock(d);
@@ -184,7 +189,7 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
     if (needed > frame.fallbackCapacity) {
       frame.fallbackCapacity = needed;
       band = allocateBands(d, bandPixels, bandPixels * frame.raysPerPixel, frame.slotsPerRay, needed, bounces > 0);
-      table = bindingTable(geometryBuffers, shadingBuffers, band);
+      table = bindingTable(geometryBuffers, shadingBuffers, *textures_, band);
       continue;
     }
     readBand(band, first, count, origin, result.image);

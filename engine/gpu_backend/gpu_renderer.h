@@ -9,8 +9,8 @@
 // Large images are rendered in bands of pixels, so that one band's buffers
 // stay far below the storage binding limit. The diced geometry is kept for
 // the next render while its packed scene, method and tolerance hash the
-// same. Specialization constants keep each pipeline to what the scene uses,
-// and pipelines are kept, so each variant is compiled once per renderer.
+// same, and the textures while they are the same chains. Specialization constants keep each pipeline to what the scene
+// uses, and pipelines are kept, so each variant is compiled once per renderer.
 #pragma once
 
 #include <cstdint>
@@ -22,6 +22,7 @@
 #include "engine/gpu/gpu.h"
 #include "engine/gpu_backend/band_passes.h"
 #include "engine/gpu_backend/pipeline_cache.h"
+#include "engine/gpu_backend/render_buffers.h"
 #include "engine/image/image.h"
 #include "engine/image/pixel_rect.h"
 #include "engine/stages/stages.h"
@@ -57,6 +58,8 @@ class GpuRenderer {
   // rates, eye, method and tolerance are the same.
   struct DicedGeometry;
   std::shared_ptr<DicedGeometry> diced_;
+  // The last render's textures, reused while the scene's are the same.
+  std::optional<TextureBuffers> textures_;
 
   gpu::Device& device_;
   PipelineCache pipelines_;

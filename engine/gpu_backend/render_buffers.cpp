@@ -152,12 +152,10 @@ GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed) {
 ShadingBuffers uploadShading(gpu::Device& d, const scene::Scene& scene, const ibl::EnvironmentLighting* lighting,
                              const EnvironmentData& environment, const ibl::CompensationTables& compensation,
                              const std::vector<glm::vec4>& compensationTexels, const glm::dvec3& origin) {
-  const TextureData textures = textureData(scene.textures);
-  checkTexelBuffers(d.limits(), d.adapterInfo().name,
-                    {{"the environment map", environment.texels.size()},
-                     {"the environment's tables", environment.tables.size()},
-                     {"the textures", textures.texels.size()}},
-                    "use a smaller map");
+  checkTexelBuffers(
+      d.limits(), d.adapterInfo().name,
+      {{"the environment map", environment.texels.size()}, {"the environment's tables", environment.tables.size()}},
+      "use a smaller map");
   const BufferUsage in = BufferUsage::Storage, texel = BufferUsage::Texel;
   ShadingBuffers b;
   b.materials = upload(d, "materials", materialRecords(scene, lighting, compensation), in);
@@ -166,11 +164,16 @@ ShadingBuffers uploadShading(gpu::Device& d, const scene::Scene& scene, const ib
   b.environmentTables = upload(d, "environment tables", environment.tables, texel);
   b.environmentLevels = upload(d, "environment levels", environment.levels, texel);
   b.environmentSampling = upload(d, "environment sampling", environment.sampling, texel);
-  b.textureTexels = upload(d, "texture texels", textures.texels, texel);
-  b.textureLevels = upload(d, "texture levels", textures.levels, texel);
-  b.textureTable = upload(d, "texture table", textures.textures, texel);
   b.compensationTables = upload(d, "compensation tables", compensationTexels, texel);
   return b;
+}
+
+TextureBuffers uploadTextures(gpu::Device& d, const std::vector<scene::Texture>& textures) {
+  const TextureData data = textureData(textures);
+  checkTexelBuffers(d.limits(), d.adapterInfo().name, {{"the textures", data.texels.size()}}, "use smaller textures");
+  const BufferUsage texel = BufferUsage::Texel;
+  return {textures, upload(d, "texture texels", data.texels, texel), upload(d, "texture levels", data.levels, texel),
+          upload(d, "texture table", data.textures, texel)};
 }
 
 std::uint64_t geometryKey(const GpuScene& packed, bool tessellated, float tolerance) {

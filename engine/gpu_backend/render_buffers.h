@@ -30,7 +30,15 @@ struct GeometryBuffers {
 
 struct ShadingBuffers {
   gpu::Buffer materials, lights, environmentTexels, environmentTables, environmentLevels, environmentSampling;
-  gpu::Buffer textureTexels, textureLevels, textureTable, compensationTables;
+  gpu::Buffer compensationTables;
+};
+
+// A scene's textures on the device (texture_data.h), often its largest
+// arrays: kept by the renderer while the textures rendered are the same
+// (scene::sameTextures), as they are round after round of an adaptive render.
+struct TextureBuffers {
+  std::vector<scene::Texture> textures;  // what the buffers hold
+  gpu::Buffer texels, levels, table;
 };
 
 // What one band of pixels needs, reused band after band.
@@ -53,6 +61,9 @@ GeometryBuffers uploadGeometry(gpu::Device& d, const GpuScene& packed);
 ShadingBuffers uploadShading(gpu::Device& d, const scene::Scene& scene, const ibl::EnvironmentLighting* lighting,
                              const EnvironmentData& environment, const ibl::CompensationTables& compensation,
                              const std::vector<glm::vec4>& compensationTexels, const glm::dvec3& origin);
+
+// Throws gpu::Error, naming the limit, where the texels pass the device's.
+TextureBuffers uploadTextures(gpu::Device& d, const std::vector<scene::Texture>& textures);
 
 // FNV-1a over the packed arrays: the diced geometry (and the attributes
 // uploaded with it) is reused while the packed scene (rebased, with its

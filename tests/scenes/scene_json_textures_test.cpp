@@ -62,12 +62,12 @@ TEST_F(JsonTextures, ADiffuseTextureIsTheBaseColourOfADielectric) {
   EXPECT_EQ(t.roughness, 1.0);
   EXPECT_EQ(t.baseColorTexture.texture, 0);
   EXPECT_EQ(t.metallicRoughnessTexture.texture, 1);
-  const glm::vec4 albedo = scene.textures[0].levels.at(0).texels.at(0);
+  const glm::vec4 albedo = scene.textures[0].levels[0].texels.at(0);
   EXPECT_NEAR(albedo.r, m::srgb_to_linear(128.0 / 255.0), 1e-6);  // sRGB-decoded
   EXPECT_EQ(albedo.a, 1.0f);
   EXPECT_EQ(scene.textures[0].levels[0].width, 4);
   // Roughness in G as the file holds it; metallic (B) 1 times the factor 0.
-  EXPECT_EQ(scene.textures[1].levels.at(0).texels.at(0), glm::vec4(1.0f, 51.0f / 255.0f, 1.0f, 1.0f));
+  EXPECT_EQ(scene.textures[1].levels[0].texels.at(0), glm::vec4(1.0f, 51.0f / 255.0f, 1.0f, 1.0f));
   EXPECT_EQ(scene.textures[0].sampler.wrapS, m::FACET_WRAP_REPEAT);
   EXPECT_EQ(scene.textures[0].sampler.mipMode, m::FACET_MIP_LINEAR);
 }

@@ -44,12 +44,15 @@ TEST(TextureSampling, NearestFilteringReadsTheTexelUnderTheCoordinate) {
 }
 
 TEST(TextureSampling, MipLevelsAreChosenFromTheLevelOfDetail) {
-  // An 8 x 8 texture of value 1 whose level l is overwritten by l, so that a
-  // lookup shows which levels it read.
-  Texture texture = makeTexture("levels", 8, 8, 1, std::vector<float>(64, 1.0f), TextureEncoding::Linear, {});
-  ASSERT_EQ(texture.levels.size(), 4u);
-  for (std::size_t l = 0; l < texture.levels.size(); ++l)
-    for (glm::vec4& texel : texture.levels[l].texels) texel = glm::vec4(float(l));
+  // An 8 x 8 texture whose level l holds the value l, so that a lookup shows
+  // which levels it read.
+  const Texture built = makeTexture("levels", 8, 8, 1, std::vector<float>(64, 1.0f), TextureEncoding::Linear, {});
+  ASSERT_EQ(built.levels.size(), 4u);
+  std::vector<TextureLevel> levels(built.levels.begin(), built.levels.end());
+  for (std::size_t l = 0; l < levels.size(); ++l)
+    for (glm::vec4& texel : levels[l].texels) texel = glm::vec4(float(l));
+  Texture texture = built;
+  texture.levels = TextureChain(std::move(levels));
   const glm::dvec2 uv(0.3, 0.6);
   EXPECT_DOUBLE_EQ(sampleTexture(texture, uv, -1.0).r, 0.0);  // magnified
   EXPECT_DOUBLE_EQ(sampleTexture(texture, uv, 1.25).r, 1.25);
@@ -75,6 +78,15 @@ TEST(TextureSampling, TheChainAveragesLinearValues) {
   ASSERT_EQ(texture.levels.size(), 2u);
   EXPECT_FLOAT_EQ(texture.levels[1].texels[0].g, 0.5f);
   EXPECT_EQ(texture.levels[1].width, 1);
+}
+
+TEST(TextureSampling, ACopiedTextureSharesItsChain) {
+  const Texture texture = makeTexture("pair", 2, 1, 3, {0, 0, 0, 1, 1, 1}, TextureEncoding::Srgb, {});
+  const Texture copy = texture;
+  EXPECT_TRUE(copy.levels.sameChain(texture.levels));
+  EXPECT_EQ(&copy.levels[0].texels[0], &texture.levels[0].texels[0]);
+  const Texture again = makeTexture("pair", 2, 1, 3, {0, 0, 0, 1, 1, 1}, TextureEncoding::Srgb, {});
+  EXPECT_FALSE(again.levels.sameChain(texture.levels)) << "equal texels, another chain";
 }
 
 }  // namespace

@@ -3,7 +3,8 @@
 // degrees so that the ray cone picks mip levels across the image, within the
 // tolerances of analysis/parity.h (beauty 1e-3 relative on 99.9% of covered
 // pixels), under its key light and under a white environment (occlusion);
-// and a JSON scene's c_diff and roughness textures on a subdivided cage.
+// and a JSON scene's c_diff and roughness textures on a subdivided cage; and
+// a renderer that keeps its textures' upload still shows each scene's own.
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
@@ -12,11 +13,13 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "analysis/parity.h"
 #include "engine/cpu/reference_renderer.h"
 #include "engine/gpu_backend/gpu_renderer.h"
+#include "rules/rules.h"
 #include "scenes/environment_map.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_geometry.h"
@@ -98,6 +101,39 @@ TEST_P(TextureParity, MatchesTheCpuReferenceWithinTolerance) {
     if (glm::length(reference.beauty[p] - untextured.beauty[p]) > 0.05f * glm::length(untextured.beauty[p]))
       ++differing;
   EXPECT_GT(differing, parity.covered / 2);
+}
+
+// A renderer keeps its upload of the textures between renders; each render
+// must still show its own scene's textures: the same image as a fresh
+// renderer's for a scene whose textures are new chains, reordered, or read
+// through another sampler, and the first image again for the first scene.
+TEST_F(TextureParity, AKeptRendererShowsEachScenesOwnTextures) {
+  scene::Scene first = scene::loadScene(facet::testing::writeTexturedScene(dir_, "quad", 8, 2.0, 9987));
+  first.render.width = 32;
+  first.render.height = 24;
+  const scene::SceneGeometry geometry = scene::buildGeometry(first);
+
+  scene::Scene newChain = first;
+  std::vector<scene::TextureLevel> inverted(first.textures[0].levels.begin(), first.textures[0].levels.end());
+  for (scene::TextureLevel& level : inverted)
+    for (glm::vec4& texel : level.texels) texel = glm::vec4(glm::vec3(1.0f) - glm::vec3(texel), texel.a);
+  newChain.textures[0].levels = scene::TextureChain(std::move(inverted));
+  scene::Scene reordered = first;
+  std::swap(reordered.textures[0], reordered.textures[1]);
+  scene::Scene resampled = first;
+  resampled.textures[0].sampler.magFilter = rules::f64::FACET_FILTER_NEAREST;
+  resampled.textures[0].sampler.minFilter = rules::f64::FACET_FILTER_NEAREST;
+
+  gpu_backend::GpuRenderer kept(device_);
+  const Image firstImage = kept.render(first, geometry).image;
+  for (const scene::Scene* other : {&newChain, &reordered, &resampled}) {
+    const Image keptImage = kept.render(*other, geometry).image;
+    gpu_backend::GpuRenderer fresh(device_);
+    const Image freshImage = fresh.render(*other, geometry).image;
+    EXPECT_EQ(keptImage.beauty, freshImage.beauty);
+    EXPECT_NE(keptImage.beauty, firstImage.beauty) << "the change shows in the image";
+  }
+  EXPECT_EQ(kept.render(first, geometry).image.beauty, firstImage.beauty);
 }
 
 INSTANTIATE_TEST_SUITE_P(BothMethods, TextureParity,
