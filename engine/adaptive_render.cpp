@@ -5,9 +5,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "engine/image/catcher_composite.h"
 #include "scenes/light_transport.h"
@@ -49,13 +52,38 @@ PixelRect moved(const PixelRect& rect, int dx, int dy) {
   return {rect.x0 + dx, rect.y0 + dy, rect.x1 + dx, rect.y1 + dy};
 }
 
-// Round `round` of `scene` over `window` of the full image.
-RenderReport renderRound(Renderer& renderer, const scene::Scene& scene, int round, const PixelRect& window,
-                         Backend backend, unsigned threads) {
-  RoundFrame frame = roundFrame(scene, round);
-  if (frame.scene.environment) frame.scene.environment->seed = scene.environment->seed + std::uint32_t(round);
-  return renderer.render(frame.scene, backend, {}, {moved(window, frame.dx, frame.dy), threads});
+// A scene and its geometry, built once for all its rounds: a round's frame
+// widens the image by whole pixels of the same size, which changes neither
+// the objects nor their refinement (scenes/scene_geometry.h).
+struct RoundScene {
+  scene::Scene scene;
+  std::shared_ptr<const scene::SceneGeometry> geometry;
+};
+
+// `scene` with its geometry: `built` where given, else built, and the time
+// that took added to `milliseconds`.
+RoundScene withGeometry(scene::Scene scene, double& milliseconds,
+                        std::shared_ptr<const scene::SceneGeometry> built = nullptr) {
+  if (!built) {
+    const Clock::time_point start = Clock::now();
+    built = std::make_shared<const scene::SceneGeometry>(scene::buildGeometry(scene));
+    milliseconds += 1000.0 * secondsSince(start);
+  }
+  return {std::move(scene), std::move(built)};
 }
+
+// Round `round` of `scene` over `window` of the full image.
+RenderReport renderRound(Renderer& renderer, const RoundScene& scene, int round, const PixelRect& window,
+                         Backend backend, unsigned threads) {
+  RoundFrame frame = roundFrame(scene.scene, round);
+  if (frame.scene.environment) frame.scene.environment->seed = scene.scene.environment->seed + std::uint32_t(round);
+  return renderer.render(frame.scene, backend, {}, {moved(window, frame.dx, frame.dy), threads, scene.geometry});
+}
+
+// The ground's two scenes (scene::GroundScenes) and their geometry.
+struct GroundRoundScenes {
+  RoundScene holdout, ground;
+};
 
 // The ground's two renders, summed over the rounds each pixel took: the
 // same rounds, camera samples and random numbers as the model's, so that
@@ -67,7 +95,7 @@ struct GroundSums {
 
 // Round `round` of the ground's scenes over `window`, added to the pixels
 // of the `active` tiles.
-void addGroundRound(Renderer& renderer, const scene::GroundScenes& scenes, int round, const PixelRect& window,
+void addGroundRound(Renderer& renderer, const GroundRoundScenes& scenes, int round, const PixelRect& window,
                     const TileGrid& grid, const std::vector<int>& active, Backend backend, unsigned threads,
                     GroundSums& sums) {
   const Image holdout = renderRound(renderer, scenes.holdout, round, window, backend, threads).image;
@@ -98,15 +126,16 @@ std::vector<glm::vec4> caughtBeauty(int width, int height, const std::vector<glm
 }
 
 // What a later round cost, added to the first's report.
+void addStageTime(std::vector<StageTime>& stages, const StageTime& stage) {
+  auto same = std::find_if(stages.begin(), stages.end(), [&](const StageTime& s) { return s.stage == stage.stage; });
+  if (same == stages.end())
+    stages.push_back(stage);
+  else
+    same->milliseconds += stage.milliseconds;
+}
+
 void addRoundCost(RenderReport& total, const RenderReport& round) {
-  for (const StageTime& stage : round.stages) {
-    auto same = std::find_if(total.stages.begin(), total.stages.end(),
-                             [&](const StageTime& s) { return s.stage == stage.stage; });
-    if (same == total.stages.end())
-      total.stages.push_back(stage);
-    else
-      same->milliseconds += stage.milliseconds;
-  }
+  for (const StageTime& stage : round.stages) addStageTime(total.stages, stage);
   total.primaryRays += round.primaryRays;
   total.shadowRays += round.shadowRays;
   if (total.raysPerBounce.size() < round.raysPerBounce.size()) total.raysPerBounce.resize(round.raysPerBounce.size());
@@ -196,21 +225,22 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
   const int width = area.width(), height = area.height();
   const unsigned threads = options.threads;
   // Chosen once for every round, not per round (scenes/light_transport.h).
+  double geometryMilliseconds = 0;
+  RoundScene model = withGeometry(scene, geometryMilliseconds, options.geometry);
   std::optional<scene::LightTransport> transport;
-  if (scene::leavesLightTransportUnsaid(scene))
-    transport = scene::chooseLightTransport(scene, scene::buildGeometry(scene));
-  scene::Scene round =
-      withRoundSpp(transport ? scene::withLightTransport(scene, *transport) : scene, settings.roundSpp);
-  std::optional<scene::GroundScenes> groundRound;
+  if (scene::leavesLightTransportUnsaid(scene)) transport = scene::chooseLightTransport(scene, *model.geometry);
+  model.scene = withRoundSpp(transport ? scene::withLightTransport(scene, *transport) : scene, settings.roundSpp);
+  std::optional<GroundRoundScenes> groundRound;
   if (ground) {
     // Where paths run, they see the ground they stand on, and the ground
     // receives what they send onto it (docs/preview-stage.md, "The ground in the paths").
-    const bool paths = round.render.bounces > 0;
-    groundRound = *ground;
-    groundRound->holdout =
-        withRoundSpp(paths ? scene::holdoutWithPaths(*ground, round) : ground->holdout, settings.roundSpp);
-    groundRound->ground = withRoundSpp(ground->ground, settings.roundSpp);
-    if (paths) round = scene::withShadowCatcher(std::move(round), *ground);
+    const bool paths = model.scene.render.bounces > 0;
+    groundRound = GroundRoundScenes{
+        withGeometry(
+            withRoundSpp(paths ? scene::holdoutWithPaths(*ground, model.scene) : ground->holdout, settings.roundSpp),
+            geometryMilliseconds),
+        withGeometry(withRoundSpp(ground->ground, settings.roundSpp), geometryMilliseconds)};
+    if (paths) model = withGeometry(scene::withShadowCatcher(std::move(model.scene), *ground), geometryMilliseconds);
   }
   SampleRounds rounds(width, height, settings.tileSize);
   const TileGrid& grid = rounds.grid();
@@ -237,7 +267,7 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
     // The grid's pixels of the round, and the same pixels of the full image.
     const PixelRect window = boundsOf(grid, active);
     RenderReport rendered =
-        renderRound(renderer, round, report.rounds, moved(window, area.x0, area.y0), backend, threads);
+        renderRound(renderer, model, report.rounds, moved(window, area.x0, area.y0), backend, threads);
     // The ground takes the first rounds only: its shadow, averaged over a
     // window of pixels, is smooth by then, and a tile the model keeps going
     // (a bright edge, a noisy lobe) does not make it pay three renders a round.
@@ -264,6 +294,7 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
       break;
     }
   }
+  addStageTime(report.render.stages, {Stage::RefineBvh, geometryMilliseconds});
   report.image = std::move(report.render.image);
   if (report.image.width != width || report.image.height != height)
     throw std::logic_error("the first adaptive round must cover the whole image or crop");
@@ -282,26 +313,32 @@ RenderReport renderPicture(Renderer& renderer, const scene::Scene& scene, Backen
   scene::Scene sampled = scene;
   std::optional<scene::LightTransport> transport;
   std::string samplingNote;
+  RenderOptions built = options;
+  double geometryMilliseconds = 0;
   if (scene.render.sampling == scene::Sampling::Chosen) {
     // The choice rests on the light transport's: chosen once, here, for the
-    // renders below.
-    if (scene::leavesLightTransportUnsaid(scene))
-      transport = scene::chooseLightTransport(scene, scene::buildGeometry(scene));
+    // renders below, which take the geometry it was chosen on.
+    if (scene::leavesLightTransportUnsaid(scene)) {
+      RoundScene chosen = withGeometry(scene, geometryMilliseconds, options.geometry);
+      built.geometry = chosen.geometry;
+      transport = scene::chooseLightTransport(scene, *built.geometry);
+    }
     if (transport) sampled = scene::withLightTransport(scene, *transport);
     samplingNote = scene::chooseSampling(sampled);
   }
   RenderReport report;
   if (sampled.render.sampling == scene::Sampling::OnePass) {
-    report = renderer.render(sampled, backend, progress, options);
+    report = renderer.render(sampled, backend, progress, built);
   } else {
-    AdaptiveReport adaptive = renderAdaptive(renderer, sampled, backend,
-                                             adaptiveSettings(sampled.render, timeLimitSeconds), options, progress);
+    AdaptiveReport adaptive =
+        renderAdaptive(renderer, sampled, backend, adaptiveSettings(sampled.render, timeLimitSeconds), built, progress);
     report = std::move(adaptive.render);
     report.image = std::move(adaptive.image);
     report.samplesPerPixel = 0;
     if (rounds) *rounds = std::move(adaptive);
   }
   if (transport) report.lightTransport = *transport;
+  addStageTime(report.stages, {Stage::RefineBvh, geometryMilliseconds});
   report.samplingNote = samplingNote;
   return report;
 }

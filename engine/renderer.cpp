@@ -103,7 +103,9 @@ RenderReport Renderer::render(const scene::Scene& scene, Backend backend, const 
                                 std::to_string(scene.render.width) + "x" + std::to_string(scene.render.height) +
                                 " image");
   Stopwatch clock;
-  scene::SceneGeometry geometry = scene::buildGeometry(scene);
+  const std::shared_ptr<const scene::SceneGeometry> built =
+      options.geometry ? options.geometry : std::make_shared<const scene::SceneGeometry>(scene::buildGeometry(scene));
+  const scene::SceneGeometry& geometry = *built;
   // Decided once, here, so that both backends render the same scene.
   const scene::LightTransport transport = scene::chooseLightTransport(scene, geometry);
   std::optional<scene::Scene> chosen;

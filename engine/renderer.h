@@ -16,6 +16,7 @@
 #include "engine/stages/stages.h"
 #include "scenes/light_transport.h"
 #include "scenes/scene.h"
+#include "scenes/scene_geometry.h"
 
 namespace facet {
 
@@ -26,6 +27,10 @@ const char* toString(Backend backend);
 struct RenderOptions {
   std::optional<PixelRect> crop;  // of the full image; none: all of it
   unsigned threads = 0;           // CPU backend's workers; 0: every core
+  // The scene's refined objects and their BVHs, built by the caller from
+  // this scene's objects, camera and image size (an adaptive render's rounds
+  // share one, and count its time); none: built here.
+  std::shared_ptr<const scene::SceneGeometry> geometry;
 };
 
 struct RenderReport {

@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -121,7 +122,9 @@ std::size_t SceneGeometry::bytes() const {
 }
 
 SceneGeometry buildGeometry(const Scene& scene) {
+  static std::atomic<std::uint64_t> serials{0};
   SceneGeometry geometry;
+  geometry.serial = ++serials;
   for (const Object& object : scene.objects) {
     RefinementChoice choice = chooseRefinement(object, scene.camera, scene.render);
     RefinementSettings settings;

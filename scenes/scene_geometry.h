@@ -6,6 +6,7 @@
 // render `tess_level` override them.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,10 @@ struct ObjectGeometry {
 struct SceneGeometry {
   std::vector<ObjectGeometry> objects;  // parallel to Scene::objects
   Aabb bounds;
+  // Unique to one buildGeometry call, and kept when it moves: what a backend
+  // made of a geometry serves another with the same serial. 0: not made by
+  // buildGeometry, so never taken for another.
+  std::uint64_t serial = 0;
   int patchCount() const;
   std::size_t bytes() const;  // OpenSubdiv data + patch BVHs
 };

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "engine/gpu_backend/band_passes.h"
 #include "engine/gpu_backend/binding_table.h"
@@ -23,6 +26,27 @@ namespace facet::gpu_backend {
 struct GpuRenderer::DicedGeometry {
   std::uint64_t key = 0;
   GeometryBuffers buffers;
+  // What was packed from geometry `serial` about `origin` with `margin`, for
+  // the next render of the same: the counts, the patch records and the
+  // object ranges (the other arrays are on the device only).
+  std::uint64_t serial = 0;
+  glm::dvec3 origin{0.0};
+  double margin = 0;
+  bool tessellated = false;
+  GpuScene shape;
+
+  // Whether this packing serves `scene`'s render of `geometry`: the same
+  // geometry, eye, margin and method, and its objects' ranges the same
+  // under `scene`'s materials.
+  bool serves(const scene::Scene& scene, const scene::SceneGeometry& geometry, const glm::dvec3& eye, double rootMargin,
+              bool tessellatedMethod) const {
+    if (geometry.serial == 0 || geometry.serial != serial || eye != origin || rootMargin != margin ||
+        tessellatedMethod != tessellated)
+      return false;
+    std::vector<layout::ObjectRange> ranges = shape.objects;
+    for (std::size_t i = 0; i < ranges.size(); ++i) setObjectShading(ranges[i], scene, i);
+    return std::memcmp(ranges.data(), shape.objects.data(), ranges.size() * sizeof(layout::ObjectRange)) == 0;
+  }
 };
 
 GpuRenderer::GpuRenderer(gpu::Device& device) : device_(device), pipelines_(device) {}
@@ -58,6 +82,17 @@ DiceKernels diceKernels(PipelineCache& pipelines, bool tessellated) {
 
 // Stage: dicing, the micro-grid and every patch's quadtree, then the top
 // levels refitted to them.
+// `packed` without the arrays that, once uploaded, the device alone needs.
+GpuScene shapeOf(GpuScene packed) {
+  packed.topNodes = {};
+  packed.refitOrder = {};
+  packed.headers = {};
+  packed.points = {};
+  packed.normals = {};
+  packed.texcoords = {};
+  return packed;
+}
+
 void dice(gpu::Device& d, const DiceKernels& k, const GpuScene& packed, const BindingTable& table, StageClock& clock) {
   gpu::CommandEncoder encoder = d.createCommandEncoder({"dice"});
   if (k.grid)
@@ -104,6 +139,24 @@ double pipelineStageMilliseconds(PipelineCache& pipelines, gpu::Device& d) {
 
 }  // namespace
 
+bool GpuRenderer::keepGeometry(const scene::Scene& scene, const scene::SceneGeometry& geometry, bool tessellated) {
+  const glm::dvec3& origin = scene.camera.eye;
+  const double margin = rootTolerance(scene, geometry);
+  if (diced_ && diced_->serves(scene, geometry, origin, margin, tessellated)) return false;
+  GpuScene packed = packScene(scene, geometry, origin, margin, tessellated);
+  checkGeometryLimits(packed, device_.limits(), device_.adapterInfo().name);
+  // The frame's tolerance is the margin in float (frame_params.h).
+  const std::uint64_t key = geometryKey(packed, tessellated, float(margin));
+  const bool diced = !diced_ || diced_->key != key;
+  if (diced) diced_ = std::make_shared<DicedGeometry>(DicedGeometry{key, uploadGeometry(device_, packed)});
+  diced_->serial = geometry.serial;
+  diced_->origin = origin;
+  diced_->margin = margin;
+  diced_->tessellated = tessellated;
+  diced_->shape = shapeOf(std::move(packed));
+  return diced;
+}
+
 GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::SceneGeometry& geometry,
                                     const std::function<void(double)>& progress, const std::optional<PixelRect>& crop) {
   const std::uint32_t strata = rules::f64::sample_strata(std::uint32_t(scene.render.samplesPerPixel));
@@ -116,8 +169,8 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   // The packed geometry first, checked against the device's limits before
   // anything else takes time (its wall clock counts to the top levels).
   auto start = std::chrono::steady_clock::now();
-  const GpuScene packed = packScene(scene, geometry, origin, rootTolerance(scene, geometry), tessellated);
-  checkGeometryLimits(packed, d.limits(), d.adapterInfo().name);
+  const bool diced = keepGeometry(scene, geometry, tessellated);
+  const GpuScene& packed = diced_->shape;
   const double packMilliseconds = millisecondsSince(start);
 
   // Stage: the environment's tables or prefiltered maps (wall clock).
@@ -139,9 +192,6 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   const EnvironmentData environment = lighting ? environmentData(*lighting, frame) : EnvironmentData{};
   const ibl::CompensationTables compensation = ibl::compensationTables(scene);
   const std::vector<glm::vec4> compensationTexelData = compensationTexels(compensation, frame);
-  const std::uint64_t key = geometryKey(packed, tessellated, frame.tolerance);
-  const bool reused = diced_ && diced_->key == key;
-  if (!reused) diced_ = std::make_shared<DicedGeometry>(DicedGeometry{key, uploadGeometry(d, packed)});
   const GeometryBuffers& geometryBuffers = diced_->buffers;
   const ShadingBuffers shadingBuffers = uploadShading(d, scene, lighting ? &*lighting : nullptr, environment,
                                                       compensation, compensationTexelData, origin);
@@ -173,10 +223,10 @@ GpuRenderResult GpuRenderer::render(const scene::Scene& scene, const scene::Scen
   // Stage: the pipelines this render runs and no earlier one compiled, all
   // at once before the first dispatch (wall clock).
   pipelines_.defer();
-  const DiceKernels diceK = reused ? DiceKernels{} : diceKernels(pipelines_, tessellated);
+  const DiceKernels diceK = diced ? diceKernels(pipelines_, tessellated) : DiceKernels{};
   const Kernels k = kernels(pipelines_, scene, features, lighting ? &*lighting : nullptr, compensation, tessellated);
   pipelines_.createDeferred();
-  if (!reused) dice(d, diceK, packed, table, clock);
+  if (diced) dice(d, diceK, packed, table, clock);
 
   result.image = Image(window.width(), window.height());
   for (std::uint64_t first = 0; first < pixels;) {

@@ -54,6 +54,12 @@ class GpuRenderer {
                          const std::function<void(double)>& progress = {}, const std::optional<PixelRect>& crop = {});
 
  private:
+  // Makes diced_ the geometry of `scene`'s render: kept where the last
+  // render's serves it, else packed (checked against the device's limits)
+  // and uploaded, unless its packing hashes as the last one's did. Returns
+  // whether it must be diced.
+  bool keepGeometry(const scene::Scene& scene, const scene::SceneGeometry& geometry, bool tessellated);
+
   // The last render's diced geometry, reused while the scene's geometry,
   // rates, eye, method and tolerance are the same.
   struct DicedGeometry;

@@ -71,25 +71,6 @@ std::vector<TopLevelObject> topLevelObjects(const scene::SceneGeometry& geometry
   return tops;
 }
 
-// Back-face culling, the shadow catcher and the alpha cutout, from the object and its material.
-void setObjectFlags(layout::ObjectRange& range, const scene::Scene& scene, const scene::Object& sceneObject) {
-  range.flags = scene::cullsBackFaces(sceneObject, scene.materials[std::size_t(sceneObject.material)])
-                    ? layout::FACET_OBJECT_CULL_BACK_FACES
-                    : 0u;
-  if (sceneObject.shadowCatcher) range.flags |= layout::FACET_OBJECT_SHADOW_CATCHER;
-  if (scene::hasCutout(sceneObject)) {
-    range.flags |= layout::FACET_OBJECT_CUTOUT;
-    range.alphaCutoff = float(sceneObject.alphaCutoff);
-    range.alphaFactor = float(sceneObject.alphaFactor);
-    const layout::TextureSlotRecord slot = textureSlotRecord(sceneObject.alphaTexture);
-    range.alphaTexture = slot.texture;
-    range.alphaOffsetX = slot.offsetX, range.alphaOffsetY = slot.offsetY;
-    range.alphaCosRotation = slot.cosRotation, range.alphaSinRotation = slot.sinRotation;
-    range.alphaScaleX = slot.scaleX, range.alphaScaleY = slot.scaleY;
-    range.alphaTexCoord = slot.texCoord;
-  }
-}
-
 // The patch in leaf slot `slot` of object `object` (its range as far as
 // set): its record, authored normals, face-varying texels, control points
 // and two header texels, whose cells, grid vertices and edge midpoints start
@@ -182,7 +163,6 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
     range.patchCount = std::uint32_t(patchCount);
     range.patchIdOffset = patchIds;
     range.faceIdOffset = faceIds;
-    range.material = std::uint32_t(scene.objects[i].material);
     range.rate = rate;
     range.quadtreeLevels = levels;
     range.firstQuadtreeNode = std::uint32_t(quadtreeNodes);  // relative to the quadtrees until all are placed
@@ -194,7 +174,7 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
     range.channels = 0;
     for (int c = 0; c < scene::kChannelCount; ++c)
       if (surface.hasChannel(scene::Channel(c))) range.channels |= 1u << c;
-    setObjectFlags(range, scene, scene.objects[i]);
+    setObjectShading(range, scene, i);
     packed.objects.push_back(range);
 
     for (std::size_t slot = 0; slot < bvh.leafPatches().size(); ++slot)
@@ -217,6 +197,27 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
   placeQuadtrees(packed, top, topNodes);
   packed.refitOrder = refitOrder(packed, topNodes);
   return packed;
+}
+
+void setObjectShading(layout::ObjectRange& range, const scene::Scene& scene, std::size_t index) {
+  const scene::Object& sceneObject = scene.objects[index];
+  const bool cutout = scene::hasCutout(sceneObject);
+  range.material = std::uint32_t(sceneObject.material);
+  range.flags = (scene::cullsBackFaces(sceneObject, scene.materials[std::size_t(sceneObject.material)])
+                     ? layout::FACET_OBJECT_CULL_BACK_FACES
+                     : 0u) |
+                (sceneObject.shadowCatcher ? layout::FACET_OBJECT_SHADOW_CATCHER : 0u) |
+                (cutout ? layout::FACET_OBJECT_CUTOUT : 0u);
+  // Without a cut-out its fields are zero, whatever the range held before.
+  const layout::TextureSlotRecord slot =
+      cutout ? textureSlotRecord(sceneObject.alphaTexture) : layout::TextureSlotRecord{};
+  range.alphaCutoff = cutout ? float(sceneObject.alphaCutoff) : 0.0f;
+  range.alphaFactor = cutout ? float(sceneObject.alphaFactor) : 0.0f;
+  range.alphaTexture = slot.texture;
+  range.alphaOffsetX = slot.offsetX, range.alphaOffsetY = slot.offsetY;
+  range.alphaCosRotation = slot.cosRotation, range.alphaSinRotation = slot.sinRotation;
+  range.alphaScaleX = slot.scaleX, range.alphaScaleY = slot.scaleY;
+  range.alphaTexCoord = slot.texCoord;
 }
 
 }  // namespace facet::gpu_backend

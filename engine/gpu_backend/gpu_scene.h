@@ -46,4 +46,9 @@ struct GpuScene {
 GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geometry, const glm::dvec3& origin,
                    double margin, bool tessellated);
 
+// The fields of object `index`'s range that its scene object and material
+// decide (its material, its flags and cut-out), as packScene sets them:
+// ranges whose geometry is packed already take another scene's materials.
+void setObjectShading(gpu_layout::ObjectRange& range, const scene::Scene& scene, std::size_t index);
+
 }  // namespace facet::gpu_backend
