@@ -60,16 +60,20 @@ struct RoundScene {
   std::shared_ptr<const scene::SceneGeometry> geometry;
 };
 
-// `scene` with its geometry: `built` where given, else built, and the time
-// that took added to `milliseconds`.
-RoundScene withGeometry(scene::Scene scene, double& milliseconds,
-                        std::shared_ptr<const scene::SceneGeometry> built = nullptr) {
-  if (!built) {
-    const Clock::time_point start = Clock::now();
-    built = std::make_shared<const scene::SceneGeometry>(scene::buildGeometry(scene));
-    milliseconds += 1000.0 * secondsSince(start);
-  }
-  return {std::move(scene), std::move(built)};
+// The geometry of `scene`: `given` where there is one, else built, and the
+// time that took added to `milliseconds`.
+std::shared_ptr<const scene::SceneGeometry> geometryOf(const scene::Scene& scene, double& milliseconds,
+                                                       std::shared_ptr<const scene::SceneGeometry> given = nullptr) {
+  if (given) return given;
+  const Clock::time_point start = Clock::now();
+  auto built = std::make_shared<const scene::SceneGeometry>(scene::buildGeometry(scene));
+  milliseconds += 1000.0 * secondsSince(start);
+  return built;
+}
+
+RoundScene withGeometry(scene::Scene scene, double& milliseconds) {
+  std::shared_ptr<const scene::SceneGeometry> geometry = geometryOf(scene, milliseconds);
+  return {std::move(scene), std::move(geometry)};
 }
 
 // Round `round` of `scene` over `window` of the full image.
@@ -125,7 +129,7 @@ std::vector<glm::vec4> caughtBeauty(int width, int height, const std::vector<glm
   return catchShadows(width, height, model, holdout, ground);
 }
 
-// What a later round cost, added to the first's report.
+// `stage`'s time added to the same stage's in `stages`, or a stage of its own.
 void addStageTime(std::vector<StageTime>& stages, const StageTime& stage) {
   auto same = std::find_if(stages.begin(), stages.end(), [&](const StageTime& s) { return s.stage == stage.stage; });
   if (same == stages.end())
@@ -134,6 +138,7 @@ void addStageTime(std::vector<StageTime>& stages, const StageTime& stage) {
     same->milliseconds += stage.milliseconds;
 }
 
+// What a later round cost, added to the first's report.
 void addRoundCost(RenderReport& total, const RenderReport& round) {
   for (const StageTime& stage : round.stages) addStageTime(total.stages, stage);
   total.primaryRays += round.primaryRays;
@@ -226,7 +231,7 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
   const unsigned threads = options.threads;
   // Chosen once for every round, not per round (scenes/light_transport.h).
   double geometryMilliseconds = 0;
-  RoundScene model = withGeometry(scene, geometryMilliseconds, options.geometry);
+  RoundScene model{scene, geometryOf(scene, geometryMilliseconds, options.geometry)};
   std::optional<scene::LightTransport> transport;
   if (scene::leavesLightTransportUnsaid(scene)) transport = scene::chooseLightTransport(scene, *model.geometry);
   model.scene = withRoundSpp(transport ? scene::withLightTransport(scene, *transport) : scene, settings.roundSpp);
@@ -319,8 +324,7 @@ RenderReport renderPicture(Renderer& renderer, const scene::Scene& scene, Backen
     // The choice rests on the light transport's: chosen once, here, for the
     // renders below, which take the geometry it was chosen on.
     if (scene::leavesLightTransportUnsaid(scene)) {
-      RoundScene chosen = withGeometry(scene, geometryMilliseconds, options.geometry);
-      built.geometry = chosen.geometry;
+      built.geometry = geometryOf(scene, geometryMilliseconds, options.geometry);
       transport = scene::chooseLightTransport(scene, *built.geometry);
     }
     if (transport) sampled = scene::withLightTransport(scene, *transport);

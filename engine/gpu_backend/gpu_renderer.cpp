@@ -41,7 +41,7 @@ struct GpuRenderer::DicedGeometry {
   bool serves(const scene::Scene& scene, const scene::SceneGeometry& geometry, const glm::dvec3& eye, double rootMargin,
               bool tessellatedMethod) const {
     if (geometry.serial == 0 || geometry.serial != serial || eye != origin || rootMargin != margin ||
-        tessellatedMethod != tessellated)
+        tessellatedMethod != tessellated || scene.objects.size() != shape.objects.size())
       return false;
     std::vector<layout::ObjectRange> ranges = shape.objects;
     for (std::size_t i = 0; i < ranges.size(); ++i) setObjectShading(ranges[i], scene, i);
@@ -80,8 +80,6 @@ DiceKernels diceKernels(PipelineCache& pipelines, bool tessellated) {
           &pipelines.get("refit_top_levels", {})};
 }
 
-// Stage: dicing, the micro-grid and every patch's quadtree, then the top
-// levels refitted to them.
 // `packed` without the arrays that, once uploaded, the device alone needs.
 GpuScene shapeOf(GpuScene packed) {
   packed.topNodes = {};
@@ -92,6 +90,9 @@ GpuScene shapeOf(GpuScene packed) {
   packed.texcoords = {};
   return packed;
 }
+
+// Stage: dicing, the micro-grid and every patch's quadtree, then the top
+// levels refitted to them.
 
 void dice(gpu::Device& d, const DiceKernels& k, const GpuScene& packed, const BindingTable& table, StageClock& clock) {
   gpu::CommandEncoder encoder = d.createCommandEncoder({"dice"});
