@@ -5,6 +5,7 @@
 
 #include "engine/adaptive_render.h"
 #include "rules/rules.h"
+#include "scenes/scene_geometry.h"
 
 namespace facet {
 namespace {
@@ -41,6 +42,13 @@ std::optional<ProgressivePicture::Pass> ProgressivePicture::render(const scene::
   round.width = roundWidth;
   round.height = height;
   Pass timing;
+  if (pass == 0) {
+    // Built once for the picture: its passes widen the image by pixels of
+    // the same size, and its strips are crops (scenes/scene_geometry.h).
+    const Clock::time_point start = Clock::now();
+    geometry_ = std::make_shared<const scene::SceneGeometry>(scene::buildGeometry(scene));
+    timing.renderMilliseconds += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  }
   for (int y0 = 0; y0 < height; y0 += rows) {
     if (y0 > 0 && stale()) return std::nullopt;
     // Whole rows of the round's larger image: a crop narrower than the
@@ -48,7 +56,7 @@ std::optional<ProgressivePicture::Pass> ProgressivePicture::render(const scene::
     const int y1 = std::min(height, y0 + rows);
     const PixelRect crop{0, frame.dy + y0, roundWidth, frame.dy + y1};
     const Clock::time_point start = Clock::now();
-    RenderReport report = renderer_.render(frame.scene, backend_, {}, {crop, threads_});
+    RenderReport report = renderer_.render(frame.scene, backend_, {}, {crop, threads_, geometry_});
     timing.renderMilliseconds += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     // By the stages: the wall clock of the first render holds the pipelines' compilation too.
     millisecondsPerRay_ = std::max(report.totalMilliseconds(), 0.01) / (rays * (y1 - y0));

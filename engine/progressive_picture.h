@@ -6,12 +6,14 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 
 #include "engine/image/image.h"
 #include "engine/image/sample_rounds.h"
 #include "engine/renderer.h"
 #include "scenes/scene.h"
+#include "scenes/scene_geometry.h"
 
 namespace facet {
 
@@ -44,6 +46,7 @@ class ProgressivePicture {
   Backend backend_;
   unsigned threads_;
   std::optional<SampleRounds> rounds_;
+  std::shared_ptr<const scene::SceneGeometry> geometry_;  // of the picture pass 0 began
   int samples_ = 0, passes_ = 0;
   double millisecondsPerRay_ = 0;  // of the last render's stages, their fixed costs included
   Image first_;
