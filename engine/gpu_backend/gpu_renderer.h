@@ -64,7 +64,8 @@ class GpuRenderer {
   // rates, eye, method and tolerance are the same.
   struct DicedGeometry;
   std::shared_ptr<DicedGeometry> diced_;
-  // The last render's textures, reused while the scene's are the same.
+  // The last render's textures, reused while the scene's are the same; it
+  // holds their texels until a render with other textures or its own end.
   std::optional<TextureBuffers> textures_;
 
   gpu::Device& device_;
