@@ -48,14 +48,19 @@ class TextureChain {
   explicit TextureChain(std::vector<TextureLevel> levels)
       : levels_(std::make_shared<const std::vector<TextureLevel>>(std::move(levels))) {}
 
-  std::size_t size() const { return levels_ ? levels_->size() : 0; }
-  const TextureLevel& operator[](std::size_t level) const { return (*levels_)[level]; }
-  std::vector<TextureLevel>::const_iterator begin() const { return levels_->begin(); }
-  std::vector<TextureLevel>::const_iterator end() const { return levels_->end(); }
+  std::size_t size() const { return all().size(); }
+  const TextureLevel& operator[](std::size_t level) const { return all()[level]; }
+  std::vector<TextureLevel>::const_iterator begin() const { return all().begin(); }
+  std::vector<TextureLevel>::const_iterator end() const { return all().end(); }
   // Whether both are the same chain, not merely equal texels.
   bool sameChain(const TextureChain& other) const { return levels_ == other.levels_; }
 
  private:
+  const std::vector<TextureLevel>& all() const {
+    static const std::vector<TextureLevel> none;
+    return levels_ ? *levels_ : none;
+  }
+
   std::shared_ptr<const std::vector<TextureLevel>> levels_;
 };
 
