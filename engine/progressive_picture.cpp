@@ -27,8 +27,9 @@ bool dicedCells(const RenderReport& report) {
 
 }  // namespace
 
-std::optional<ProgressivePicture::Pass> ProgressivePicture::render(const scene::Scene& scene, int pass,
-                                                                  const std::function<bool()>& stale) {
+std::optional<ProgressivePicture::Pass> ProgressivePicture::render(
+    const scene::Scene& scene, int pass, const std::function<bool()>& stale,
+    std::shared_ptr<const scene::SceneGeometry> geometry) {
   const int width = scene.render.width, height = scene.render.height;
   const bool quickLook = scene.render.samplesPerPixel == 1;
   RoundFrame frame = roundFrame(scene, pass);
@@ -43,10 +44,11 @@ std::optional<ProgressivePicture::Pass> ProgressivePicture::render(const scene::
   round.height = height;
   Pass timing;
   if (pass == 0) {
-    // Built once for the picture: its passes widen the image by pixels of
-    // the same size, and its strips are crops (scenes/scene_geometry.h).
+    // One for the picture: its passes widen the image by pixels of the same
+    // size, and its strips are crops (scenes/scene_geometry.h).
     const Clock::time_point start = Clock::now();
-    geometry_ = std::make_shared<const scene::SceneGeometry>(scene::buildGeometry(scene));
+    geometry_ =
+        geometry ? std::move(geometry) : std::make_shared<const scene::SceneGeometry>(scene::buildGeometry(scene));
     timing.renderMilliseconds += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   }
   for (int y0 = 0; y0 < height; y0 += rows) {

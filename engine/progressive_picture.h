@@ -34,8 +34,11 @@ class ProgressivePicture {
   // A refining pass is rendered in strips of whole rows, each of about
   // kStripMilliseconds of the last render's stages, and ends unfinished,
   // returning nothing and the picture as it was, when `stale` says so
-  // between two: a change waits for a strip, not a pass.
-  std::optional<Pass> render(const scene::Scene& scene, int pass, const std::function<bool()>& stale);
+  // between two: a change waits for a strip, not a pass. Pass 0 takes
+  // `geometry` for the picture where one is given (built from `scene`), else
+  // builds it; the later passes keep it.
+  std::optional<Pass> render(const scene::Scene& scene, int pass, const std::function<bool()>& stale,
+                             std::shared_ptr<const scene::SceneGeometry> geometry = nullptr);
 
   Image image() const;                      // as the passes so far make it
   int passes() const { return passes_; }    // in image()

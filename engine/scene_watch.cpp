@@ -1,6 +1,7 @@
 #include "engine/scene_watch.h"
 
 #include <algorithm>
+#include <memory>
 #include <stdexcept>
 #include <thread>
 #include <utility>
@@ -114,9 +115,12 @@ void SceneWatch::render() {
 }
 
 void SceneWatch::renderPasses(scene::Scene scene, WatchPicture& begun, Clock::time_point start) {
-  // Chosen once for the picture's passes and strips (scenes/light_transport.h).
+  // Chosen once for the picture's passes and strips (scenes/light_transport.h),
+  // on the geometry they then take.
+  std::shared_ptr<const scene::SceneGeometry> geometry;
   if (scene::leavesLightTransportUnsaid(scene)) {
-    const scene::LightTransport transport = scene::chooseLightTransport(scene, scene::buildGeometry(scene));
+    geometry = std::make_shared<const scene::SceneGeometry>(scene::buildGeometry(scene));
+    const scene::LightTransport transport = scene::chooseLightTransport(scene, *geometry);
     scene = scene::withLightTransport(std::move(scene), transport);
     begun.lightTransport = transport.note;
   }
@@ -124,7 +128,7 @@ void SceneWatch::renderPasses(scene::Scene scene, WatchPicture& begun, Clock::ti
   for (int pass = 0; pass < settings_.passes && !stopped(); ++pass) {
     try {
       const auto stale = [&] { return stopped() || !changedFiles().empty(); };
-      const std::optional<ProgressivePicture::Pass> rendered = picture_.render(scene, pass, stale);
+      const std::optional<ProgressivePicture::Pass> rendered = picture_.render(scene, pass, stale, geometry);
       // A refining pass of a picture whose files changed meanwhile is not worth writing.
       if (!rendered || (pass > 0 && stale())) break;
       const Clock::time_point writing = Clock::now();
