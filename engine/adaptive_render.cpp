@@ -84,6 +84,15 @@ RenderReport renderRound(Renderer& renderer, const RoundScene& scene, int round,
   return renderer.render(frame.scene, backend, {}, {moved(window, frame.dx, frame.dy), threads, scene.geometry});
 }
 
+// `stage`'s time added to the same stage's in `stages`, or a stage of its own.
+void addStageTime(std::vector<StageTime>& stages, const StageTime& stage) {
+  auto same = std::find_if(stages.begin(), stages.end(), [&](const StageTime& s) { return s.stage == stage.stage; });
+  if (same == stages.end())
+    stages.push_back(stage);
+  else
+    same->milliseconds += stage.milliseconds;
+}
+
 // The ground's two scenes (scene::GroundScenes) and their geometry.
 struct GroundRoundScenes {
   RoundScene holdout, ground;
@@ -99,11 +108,16 @@ struct GroundSums {
 
 // Round `round` of the ground's scenes over `window`, added to the pixels
 // of the `active` tiles.
+// Their stages are added to `stages`.
 void addGroundRound(Renderer& renderer, const GroundRoundScenes& scenes, int round, const PixelRect& window,
                     const TileGrid& grid, const std::vector<int>& active, Backend backend, unsigned threads,
-                    GroundSums& sums) {
-  const Image holdout = renderRound(renderer, scenes.holdout, round, window, backend, threads).image;
-  const Image alone = renderRound(renderer, scenes.ground, round, window, backend, threads).image;
+                    GroundSums& sums, std::vector<StageTime>& stages) {
+  const RenderReport holdoutRender = renderRound(renderer, scenes.holdout, round, window, backend, threads);
+  const RenderReport groundRender = renderRound(renderer, scenes.ground, round, window, backend, threads);
+  for (const RenderReport* render : {&holdoutRender, &groundRender})
+    for (const StageTime& stage : render->stages) addStageTime(stages, stage);
+  const Image& holdout = holdoutRender.image;
+  const Image& alone = groundRender.image;
   for (int t : active) {
     const PixelRect tile = grid.tile(t);
     for (int y = tile.y0; y < tile.y1; ++y)
@@ -127,15 +141,6 @@ std::vector<glm::vec4> caughtBeauty(int width, int height, const std::vector<glm
     ground[i] = sums.ground[i] / float(sums.rounds[i]);
   }
   return catchShadows(width, height, model, holdout, ground);
-}
-
-// `stage`'s time added to the same stage's in `stages`, or a stage of its own.
-void addStageTime(std::vector<StageTime>& stages, const StageTime& stage) {
-  auto same = std::find_if(stages.begin(), stages.end(), [&](const StageTime& s) { return s.stage == stage.stage; });
-  if (same == stages.end())
-    stages.push_back(stage);
-  else
-    same->milliseconds += stage.milliseconds;
 }
 
 // What a later round cost, added to the first's report.
@@ -256,6 +261,7 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
   std::vector<int> active(std::size_t(grid.count()));
   for (int t = 0; t < grid.count(); ++t) active[std::size_t(t)] = t;
   GroundSums groundSums;
+  std::vector<StageTime> groundStages;
   if (groundRound) {
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
     groundSums = {std::vector<glm::vec4>(pixels, glm::vec4(0)), std::vector<glm::vec4>(pixels, glm::vec4(0)),
@@ -277,7 +283,8 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
     // window of pixels, is smooth by then, and a tile the model keeps going
     // (a bright edge, a noisy lobe) does not make it pay three renders a round.
     if (groundRound && report.rounds < settings.minRounds)
-      addGroundRound(renderer, *groundRound, report.rounds, window, grid, active, backend, threads, groundSums);
+      addGroundRound(renderer, *groundRound, report.rounds, window, grid, active, backend, threads, groundSums,
+                     groundStages);
     rounds.add(rendered.image, window, active);
     report.samples += std::uint64_t(settings.roundSpp) * window.pixelCount();
     if (report.rounds > 0) {
@@ -299,6 +306,7 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
       break;
     }
   }
+  for (const StageTime& stage : groundStages) addStageTime(report.render.stages, stage);
   addStageTime(report.render.stages, {Stage::RefineBvh, geometryMilliseconds});
   report.image = std::move(report.render.image);
   if (report.image.width != width || report.image.height != height)

@@ -52,7 +52,7 @@ struct AdaptiveReport {
   // round, which passes through each pixel's centre.
   Image image;
   // The first round's device, geometry and light transport; every round's
-  // stages and rays.
+  // rays, and the stages of every render a round made (the ground's too).
   RenderReport render;
   AdaptiveStop stop = AdaptiveStop::Converged;
   int rounds = 0;              // renders made

@@ -45,6 +45,7 @@ nlohmann::json renderJson(const std::string& label, int frame, const AdaptiveRep
   render["frame"] = frame;
   render["tile_errors"] = r.errors;
   render["milliseconds"] = r.seconds * 1000.0;
+  render["stages_ms"] = stagesJson(r.render);
   render["bounces"] = r.render.lightTransport.bounces;
   render["light_transport"] = r.render.lightTransport.note;
   return render;

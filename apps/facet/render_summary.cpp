@@ -142,13 +142,17 @@ nlohmann::json adaptiveJson(const AdaptiveReport& r) {
           {"stop", toString(r.stop)}};
 }
 
-nlohmann::json renderJson(const RenderReport& report, const AdaptiveReport* adaptive, const RenderJob& job,
-                          double wallMilliseconds) {
+nlohmann::json stagesJson(const RenderReport& report) {
   nlohmann::json stages = nlohmann::json::object();
   for (const StageTime& stage : report.stages) stages[std::string(stageName(stage.stage))] = stage.milliseconds;
+  return stages;
+}
+
+nlohmann::json renderJson(const RenderReport& report, const AdaptiveReport* adaptive, const RenderJob& job,
+                          double wallMilliseconds) {
   nlohmann::json render = {{"frame", job.frame ? nlohmann::json(*job.frame) : nlohmann::json()},
                            {"crop", {report.window.x0, report.window.y0, report.window.x1, report.window.y1}},
-                           {"stages_ms", stages},
+                           {"stages_ms", stagesJson(report)},
                            {"wall_ms", wallMilliseconds},
                            {"primary_rays", report.primaryRays},
                            {"shadow_rays", report.shadowRays},

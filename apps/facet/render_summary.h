@@ -44,6 +44,9 @@ void printSummary(const scene::Scene& scene, const RenderReport& report, const A
 // the threshold and why they stopped.
 nlohmann::json adaptiveJson(const AdaptiveReport& adaptive);
 
+// Every stage's milliseconds by the stage's name, as --json's "stages_ms".
+nlohmann::json stagesJson(const RenderReport& report);
+
 // One entry of --json's "renders".
 nlohmann::json renderJson(const RenderReport& report, const AdaptiveReport* adaptive, const RenderJob& job,
                           double wallMilliseconds);
