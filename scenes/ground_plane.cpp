@@ -87,11 +87,12 @@ GroundScenes groundScenes(const Scene& model) {
   scenes.ground.objects = {ground};
   scenes.ground.objects.back().material = 0;
 
-  // The holdout reflects nothing: the ground's share of its pixels is all
-  // the holdout's radiance.
+  // The holdout is black to the camera and reflects nothing: the ground's
+  // share of its pixels is all the holdout's radiance.
   scenes.holdout.materials = {lambertian("holdout", 0.0), lambertian("ground", 1.0)};
   for (Object object : model.objects) {
     object.material = 0;
+    object.holdout = true;
     scenes.holdout.objects.push_back(std::move(object));
   }
   scenes.holdout.objects.push_back(ground);
@@ -107,6 +108,7 @@ Scene holdoutWithPaths(const GroundScenes& ground, const Scene& model) {
   holdout.materials = model.materials;
   holdout.textures = model.textures;
   holdout.objects = model.objects;
+  for (Object& object : holdout.objects) object.holdout = true;
   addSquare(holdout, ground);
   holdout.render.bounces = model.render.bounces;
   holdout.render.diffuseBounces = model.render.diffuseBounces;

@@ -14,7 +14,7 @@ namespace facet::scene {
 inline constexpr double kGroundHalfWidth = 10.0;
 
 struct GroundScenes {
-  Scene holdout;  // the model, black, standing on the ground
+  Scene holdout;  // the model, black and held out of the camera rays (Object::holdout), standing on the ground
   Scene ground;   // the ground alone
   // The ground's square and its white Lambertian material, for the scenes
   // of a model whose paths run (below).
@@ -37,9 +37,10 @@ Scene withShadowCatcher(Scene scene, const GroundScenes& ground);
 
 // The holdout of a model whose paths run (`model`: its scene with the light
 // transport chosen): the model in its own materials on the ground, the
-// paths' bounces and limits, the holdout's environment. Its ground then
-// also receives what the model sends onto it: light through glass, gold's
-// reflection. Only the ground's share of its pixels is read.
+// paths' bounces and limits, the holdout's environment, and held out of
+// the camera rays: black where they hit it, as the composite reads it. Its
+// ground then also receives what the model sends onto it: light through
+// glass, gold's reflection.
 Scene holdoutWithPaths(const GroundScenes& ground, const Scene& model);
 
 // The lowest height (y) of the limit surface, each patch evaluated on a

@@ -6,20 +6,12 @@
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
-#include <unordered_map>
 #include <vector>
 
 #include "materials/material.h"
 
 namespace facet::scene {
 namespace {
-
-std::uint64_t edgeKey(int from, int to) { return (std::uint64_t(std::uint32_t(from)) << 32) | std::uint32_t(to); }
-
-int findRoot(std::vector<int>& parent, int i) {
-  while (parent[std::size_t(i)] != i) i = parent[std::size_t(i)] = parent[std::size_t(parent[std::size_t(i)])];
-  return i;
-}
 
 // The limit points of every patch on an (n + 1)^2 grid, with their outward
 // unit normals (zero where the derivatives give none).
@@ -89,39 +81,6 @@ double heightAbovePlane(const SurfaceSamples& s, const PatchBvh& bvh, const glm:
 }
 
 }  // namespace
-
-bool closesIntoSphere(const ControlCage& cage) {
-  if (!cage.holes.empty() || cage.faceCount() == 0) return false;
-  std::unordered_map<std::uint64_t, int> faceOfEdge;
-  std::vector<char> used(cage.positions.size(), 0);
-  std::size_t first = 0;
-  for (int f = 0; f < cage.faceCount(); ++f) {
-    const int count = cage.faceVertexCounts[std::size_t(f)];
-    const auto begin = cage.faceVertexIndices.begin() + std::ptrdiff_t(first);
-    std::vector<int> corners(begin, begin + count);
-    std::sort(corners.begin(), corners.end());
-    if (std::adjacent_find(corners.begin(), corners.end()) != corners.end()) return false;
-    for (int k = 0; k < count; ++k) {
-      const int a = cage.faceVertexIndices[first + std::size_t(k)];
-      const int b = cage.faceVertexIndices[first + std::size_t((k + 1) % count)];
-      used[std::size_t(a)] = 1;
-      if (!faceOfEdge.emplace(edgeKey(a, b), f).second) return false;
-    }
-    first += std::size_t(count);
-  }
-  std::vector<int> parent(std::size_t(cage.faceCount()));
-  std::iota(parent.begin(), parent.end(), 0);
-  for (const auto& [key, face] : faceOfEdge) {
-    const auto twin = faceOfEdge.find((key << 32) | (key >> 32));
-    if (twin == faceOfEdge.end()) return false;
-    parent[std::size_t(findRoot(parent, face))] = findRoot(parent, twin->second);
-  }
-  for (int f = 0; f < cage.faceCount(); ++f)
-    if (findRoot(parent, f) != findRoot(parent, 0)) return false;
-  const auto vertices = std::ptrdiff_t(std::count(used.begin(), used.end(), 1));
-  const auto edges = std::ptrdiff_t(faceOfEdge.size() / 2);
-  return vertices - edges + cage.faceCount() == 2;
-}
 
 ConvexityCheck checkConvexity(const SubdivisionSurface& surface, const PatchBvh& bvh, const glm::dvec3& eye,
                               double stopAbove) {

@@ -12,17 +12,11 @@
 #include <limits>
 #include <string>
 
+#include "scenes/cage_topology.h"
 #include "scenes/scene.h"
 #include "scenes/scene_geometry.h"
 
 namespace facet::scene {
-
-// Whether the cage's faces close into one oriented surface with a sphere's
-// topology: no holes, no face repeating a vertex, every directed edge once
-// and its reverse once (so every edge borders two faces, oriented alike),
-// the faces connected through their edges, and V - E + F = 2 (which, with
-// the faces connected, also excludes pinched vertices).
-bool closesIntoSphere(const ControlCage& cage);
 
 // Limit points per patch edge at which a Catmull-Clark surface's convexity
 // is checked: a grid of (n + 1)^2 points over every patch (a bilinear one

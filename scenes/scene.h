@@ -146,9 +146,14 @@ inline bool limitsLobes(const RenderSettings& r) {
   return r.diffuseBounces >= 0 || r.glossyBounces >= 0 || r.transmissionBounces >= 0;
 }
 
+// Whether the environment's light at a surface is decided by shadow rays.
+inline bool castsShadowRays(const Environment& environment) {
+  return environment.occlusion && environment.method != IblMethod::Prefiltered;
+}
+
 // Whether paths of `bounces` count the environment once (kBouncesNeedOcclusionRule).
 inline bool pathsCountEnvironmentOnce(int bounces, const std::optional<Environment>& environment) {
-  return bounces == 0 || !environment || (environment->occlusion && environment->method != IblMethod::Prefiltered);
+  return bounces == 0 || !environment || castsShadowRays(*environment);
 }
 
 // Whether the stated bounces and the stated environment method contradict
@@ -180,6 +185,10 @@ struct Object {
   // camera rays pass over it; continuation rays see the background it
   // catches shadows on. No scene file sets it.
   bool shadowCatcher = false;
+  // The preview's holdout (scenes/ground_plane.h): camera rays that hit it
+  // see black and end there, counted as covered; continuation rays see it
+  // in its material. No scene file sets it.
+  bool holdout = false;
 };
 
 // Whether rays pass over part of an object's surface by its alpha.

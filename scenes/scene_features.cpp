@@ -16,6 +16,7 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     f.culling |= cullsBackFaces(object, m);
     f.cutouts |= hasCutout(object);
     f.shadowCatcher |= object.shadowCatcher;
+    f.holdout |= object.holdout;
   }
   f.emission |= f.shadowCatcher;
   f.textures = f.perHitMaterials || !scene.textures.empty();

@@ -24,6 +24,7 @@ struct SceneFeatures {
   bool culling = false;  // some object culls its back faces (cullsBackFaces)
   bool cutouts = false;  // some object has a cutout (hasCutout)
   bool shadowCatcher = false;  // some object catches shadows (Object::shadowCatcher): emission's slot holds its rest
+  bool holdout = false;        // some object is held out of the camera rays (Object::holdout)
   bool paths = false;    // paths continue past the camera rays' hits
   bool lobeLimits = false;  // paths, and some lobe kind has a limit of its own
 };

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "scenes/cage_topology.h"
 #include "scenes/input_error.h"
 
 namespace facet::scene {
@@ -134,7 +135,7 @@ SceneGeometry buildGeometry(const Scene& scene) {
     SubdivisionSurface surface = SubdivisionSurface::create(object.cage, settings);
     PatchBvh bvh = PatchBvh::build(surface);
     geometry.bounds.extend(surface.bounds());
-    geometry.objects.push_back({choice, std::move(surface), std::move(bvh)});
+    geometry.objects.push_back({choice, std::move(surface), std::move(bvh), enclosesSolid(object.cage)});
   }
   return geometry;
 }

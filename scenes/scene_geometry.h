@@ -29,7 +29,15 @@ struct ObjectGeometry {
   RefinementChoice refinement;
   SubdivisionSurface surface;
   PatchBvh bvh;
+  bool enclosesSolid = false;  // its cage's (scenes/cage_topology.h)
 };
+
+// Whether every ray from inside `object` crosses its surface before it
+// reaches anything outside: its cage encloses solids and no cut-out lets a
+// ray through (a transmissive material culls no back face).
+inline bool sealsInside(const Object& object, const ObjectGeometry& geometry) {
+  return geometry.enclosesSolid && !hasCutout(object);
+}
 
 struct SceneGeometry {
   std::vector<ObjectGeometry> objects;  // parallel to Scene::objects

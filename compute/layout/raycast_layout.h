@@ -53,6 +53,13 @@ const uint FACET_OBJECT_CUTOUT = 2u;
 // rays pass over it, continuation rays find the background it catches
 // shadows on.
 const uint FACET_OBJECT_SHADOW_CATCHER = 4u;
+// Every ray from inside the object crosses its surface (scene::sealsInside):
+// where its material is a solid's, the environment cannot reach its inside
+// (environment_sealed_off).
+const uint FACET_OBJECT_SEALED = 8u;
+// The preview's holdout (scene::Object::holdout): camera rays that hit the
+// object see black and end there; continuation rays see it as it is.
+const uint FACET_OBJECT_HOLDOUT = 16u;
 
 // A ray from `origin` along `direction`, over [tMin, tMax).
 struct RayRecord {

@@ -15,6 +15,7 @@
 #include "engine/camera/camera.h"
 #include "engine/cpu/intersector.h"
 #include "engine/cpu/path_tracer.h"
+#include "engine/cpu/punctual_light.h"
 #include "engine/cpu/textured_hit.h"
 #include "engine/ibl/compensation_tables.h"
 #include "engine/ibl/environment_lighting.h"
@@ -44,7 +45,11 @@ class ReferenceScene final : public PathScene {
  public:
   ReferenceScene(const scene::Scene& scene, const scene::SceneGeometry& geometry,
                  const ibl::EnvironmentLighting* environment)
-      : scene_(scene), geometry_(geometry), environment_(environment), compensation_(ibl::compensationTables(scene)) {
+      : scene_(scene),
+        geometry_(geometry),
+        environment_(environment),
+        compensation_(ibl::compensationTables(scene)),
+        castsShadowRays_(environment && scene::castsShadowRays(*environment->environment)) {
     ExactSettings exactSettings;
     if (scene.render.exactTolerance)
       exactSettings.tolerance = *scene.render.exactTolerance * geometry.bounds.diagonal();
@@ -64,6 +69,7 @@ class ReferenceScene final : public PathScene {
       transmission_.push_back(materials::isTransmissive(material)
                                   ? std::optional(materials::transmissionParams64(material))
                                   : std::nullopt);
+      sealed_.push_back(scene::sealsInside(scene.objects[i], object));
     }
   }
 
@@ -109,7 +115,9 @@ class ReferenceScene final : public PathScene {
     const glm::dvec3& position = hit.surface.position;
     const glm::dvec3 specularScale = ibl::specularScale(compensation_, material, s.params, glm::dot(s.n, v));
     glm::dvec3 radiance = s.emission;
-    if (environment_) {
+    // Inside a sealed solid each of the environment's shadow rays would be blocked.
+    if (environment_ && !(castsShadowRays_ && m::environment_sealed_off(fetched.transmissive, fetched.transmission,
+                                                                        s.outside, sealed_[std::size_t(hit.object)]))) {
       EnvironmentLight environment;
       switch (environment_->environment->method) {
         case scene::IblMethod::Sampled:
@@ -215,18 +223,6 @@ class ReferenceScene final : public PathScene {
     for (const std::unique_ptr<Intersector>& object : intersectors_)
       if (object->anyHit(ray)) return true;
     return false;
-  }
-
-  static m::PunctualLight punctualLight(const scene::Light& light) {
-    m::PunctualLight p;
-    p.directional = light.type == scene::LightType::Directional;
-    p.spot = light.type == scene::LightType::Spot;
-    p.position = light.position;
-    p.direction = light.direction;
-    p.color = light.color;
-    p.cos_inner = std::cos(glm::radians(light.innerConeDegrees));
-    p.cos_outer = std::cos(glm::radians(light.outerConeDegrees));
-    return p;
   }
 
   glm::dvec3 toMap(const glm::dvec3& world) const {
@@ -343,6 +339,8 @@ class ReferenceScene final : public PathScene {
   std::vector<std::unique_ptr<Intersector>> intersectors_;  // parallel to the scene's objects
   std::vector<rules::f64::BrdfParams> params_;
   std::vector<std::optional<rules::f64::TransmissionParams>> transmission_;  // transmissive materials only
+  const bool castsShadowRays_;  // the environment's light is decided by shadow rays
+  std::vector<char> sealed_;    // per object: scene::sealsInside
 };
 
 }  // namespace
@@ -408,6 +406,7 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
             continue;
           }
           coverage += 1;
+          if (scene.objects[std::size_t(hit->object)].holdout) continue;  // black to the camera
           if (bounces == 0) {
             radiance += reference.shade(*hit, direction, pixelId, sample, shadow);
             continue;

@@ -44,7 +44,7 @@ struct GpuRenderer::DicedGeometry {
         tessellatedMethod != tessellated || scene.objects.size() != shape.objects.size())
       return false;
     std::vector<layout::ObjectRange> ranges = shape.objects;
-    for (std::size_t i = 0; i < ranges.size(); ++i) setObjectShading(ranges[i], scene, i);
+    for (std::size_t i = 0; i < ranges.size(); ++i) setObjectShading(ranges[i], scene, geometry, i);
     return std::memcmp(ranges.data(), shape.objects.data(), ranges.size() * sizeof(layout::ObjectRange)) == 0;
   }
 };

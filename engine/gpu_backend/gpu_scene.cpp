@@ -174,7 +174,7 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
     range.channels = 0;
     for (int c = 0; c < scene::kChannelCount; ++c)
       if (surface.hasChannel(scene::Channel(c))) range.channels |= 1u << c;
-    setObjectShading(range, scene, i);
+    setObjectShading(range, scene, geometry, i);
     packed.objects.push_back(range);
 
     for (std::size_t slot = 0; slot < bvh.leafPatches().size(); ++slot)
@@ -199,7 +199,8 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
   return packed;
 }
 
-void setObjectShading(layout::ObjectRange& range, const scene::Scene& scene, std::size_t index) {
+void setObjectShading(layout::ObjectRange& range, const scene::Scene& scene, const scene::SceneGeometry& geometry,
+                      std::size_t index) {
   const scene::Object& sceneObject = scene.objects[index];
   const bool cutout = scene::hasCutout(sceneObject);
   range.material = std::uint32_t(sceneObject.material);
@@ -207,6 +208,8 @@ void setObjectShading(layout::ObjectRange& range, const scene::Scene& scene, std
                      ? layout::FACET_OBJECT_CULL_BACK_FACES
                      : 0u) |
                 (sceneObject.shadowCatcher ? layout::FACET_OBJECT_SHADOW_CATCHER : 0u) |
+                (sceneObject.holdout ? layout::FACET_OBJECT_HOLDOUT : 0u) |
+                (scene::sealsInside(sceneObject, geometry.objects[index]) ? layout::FACET_OBJECT_SEALED : 0u) |
                 (cutout ? layout::FACET_OBJECT_CUTOUT : 0u);
   // Without a cut-out its fields are zero, whatever the range held before.
   const layout::TextureSlotRecord slot =

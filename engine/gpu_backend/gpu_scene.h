@@ -49,6 +49,7 @@ GpuScene packScene(const scene::Scene& scene, const scene::SceneGeometry& geomet
 // The fields of object `index`'s range that its scene object and material
 // decide (its material, its flags and cut-out), as packScene sets them:
 // ranges whose geometry is packed already take another scene's materials.
-void setObjectShading(gpu_layout::ObjectRange& range, const scene::Scene& scene, std::size_t index);
+void setObjectShading(gpu_layout::ObjectRange& range, const scene::Scene& scene, const scene::SceneGeometry& geometry,
+                      std::size_t index);
 
 }  // namespace facet::gpu_backend

@@ -40,6 +40,16 @@ FACET_FN BrdfParams transmissive_brdf_params(BrdfParams p, TransmissionParams t,
   return p;
 }
 
+// Whether no shadow ray from a vertex can reach the environment: v lies
+// inside a solid, a transmissive material that is no thin wall seen from the
+// inside of a surface that every ray from inside crosses (`sealed`,
+// scenes/scene_geometry.h's sealsInside), and glass blocks shadow rays. D(x)
+// then draws no environment pairs there: each would be blocked. Lights are
+// still tried, for one may stand inside.
+FACET_FN bool environment_sealed_off(bool transmissive, TransmissionParams t, bool outside, bool sealed) {
+  return sealed && transmissive && !t.thin_walled && !outside;
+}
+
 // Probability of the diffuse lobe: its albedo against the dielectric lobes'
 // energy at normal incidence, within [0.1, 0.9] when both are present.
 FACET_FN real transmissive_diffuse_probability(BrdfParams p, TransmissionParams t) {

@@ -146,24 +146,5 @@ TEST(PathReach, AnythingElseTraces) {
   EXPECT_TRUE(pathReach(tessellated, buildGeometry(tessellated)).continues);
 }
 
-TEST(PathReach, OnlyASphereOfFacesCloses) {
-  EXPECT_TRUE(closesIntoSphere(cubeCage()));
-  ControlCage flipped = cubeCage();  // one face wound against its neighbours
-  std::swap(flipped.faceVertexIndices[1], flipped.faceVertexIndices[3]);
-  EXPECT_FALSE(closesIntoSphere(flipped));
-  ControlCage missing = cubeCage();
-  missing.faceVertexCounts.pop_back();
-  missing.faceVertexIndices.resize(missing.faceVertexIndices.size() - 4);
-  EXPECT_FALSE(closesIntoSphere(missing));
-  ControlCage twoCubes = cubeCage();  // two closed pieces
-  const int offset = twoCubes.vertexCount();
-  const ControlCage other = cubeCage();
-  twoCubes.positions.insert(twoCubes.positions.end(), other.positions.begin(), other.positions.end());
-  twoCubes.faceVertexCounts.insert(twoCubes.faceVertexCounts.end(), other.faceVertexCounts.begin(),
-                                   other.faceVertexCounts.end());
-  for (int v : other.faceVertexIndices) twoCubes.faceVertexIndices.push_back(v + offset);
-  EXPECT_FALSE(closesIntoSphere(twoCubes));
-}
-
 }  // namespace
 }  // namespace facet::scene

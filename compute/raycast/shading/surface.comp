@@ -13,7 +13,8 @@
 // features as bits (compute/layout/surface_features.h). With SHADOW_CATCHER
 // (rules/shading/shadow_catcher.h) a camera ray passes over the catcher and
 // a continuation finds it lit by the environment alone, its slots scaled to
-// sum to the background behind it.
+// sum to the background behind it. With HOLDOUT a camera ray that hits a
+// held-out object leaves its slots black and ends its path there.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -57,6 +58,7 @@ const int CLEARCOAT = (FEATURES >> FACET_FEATURE_CLEARCOAT) & 1;
 const int SHEEN = (FEATURES >> FACET_FEATURE_SHEEN) & 1;
 const int CHANNELS = (FEATURES >> FACET_FEATURE_CHANNELS) & 1;
 const int SHADOW_CATCHER = (FEATURES >> FACET_FEATURE_SHADOW_CATCHER) & 1;
+const int HOLDOUT = (FEATURES >> FACET_FEATURE_HOLDOUT) & 1;
 
 // Written only where a camera ray passes over a shadow catcher.
 layout(set = 0, binding = 9, std430) buffer Hits { HitRecord hits[]; };
@@ -386,6 +388,7 @@ void main() {
 
   ObjectRange range = objects[hit.object];
   bool catcher = SHADOW_CATCHER == 1 && (range.flags & FACET_OBJECT_SHADOW_CATCHER) != 0u;
+  if (HOLDOUT == 1 && !continuation && (range.flags & FACET_OBJECT_HOLDOUT) != 0u) shaded = false;
   PatchRecord record = load_patch_record(hit.patchIndex);
   uvec4 header = texelFetch(patchHeaders, int(hit.patchIndex * FACET_HEADER_TEXELS));
   ControlPoints c = load_control_points(header[FACET_HEADER_FIRST_POINT], header[FACET_HEADER_KIND]);
@@ -414,7 +417,10 @@ void main() {
     // Every environment slot is written exactly once either way: the loops
     // of one invocation count against lavapipe's limit of 65535.
     uint first = firstSlot + uint(LIGHT_COUNT);
-    if (shaded)
+    bool sealedOff = TRANSMISSION == 1 && ENVIRONMENT != 2 && OCCLUSION == 1 &&
+                     environment_sealed_off(m.transmissive == 1u, transmission_params(m), s.outside,
+                                            (range.flags & FACET_OBJECT_SEALED) != 0u);
+    if (shaded && !sealedOff)
       offered = shade_environment(first, image_pixel(pixel), sample_index, range.material, s.params, specular_scale,
                                   position, s.n, s.ng, v, s.occlusion);
     else

@@ -63,6 +63,29 @@ TEST(TransmissionRender, GlassBallInAWhiteFurnaceRendersTheEnvironment) {
   EXPECT_GT(roughMean.x, 0.9);
 }
 
+// The environment's shadow rays of a vertex inside a sealed glass solid
+// would all be blocked, so none is cast; an open glass surface's inside sees
+// the environment through its opening, and its vertices cast theirs.
+TEST(TransmissionRender, NoEnvironmentShadowRayLeavesTheInsideOfASealedSolid) {
+  const materials::Material glass = build(glassSpec(1.5));
+  scene::ControlCage open = testing::uvSphereCage(16, 32);
+  open.faceVertexCounts.pop_back();  // the last triangle at the south pole
+  open.faceVertexIndices.resize(open.faceVertexIndices.size() - 3);
+  for (const bool sealed : {true, false}) {
+    const scene::Scene s = underWhite(glass, sealed ? testing::uvSphereCage(16, 32) : open, 1, 16, 35);
+    const scene::SceneGeometry geometry = scene::buildGeometry(s);
+    EXPECT_EQ(scene::sealsInside(s.objects.front(), geometry.objects.front()), sealed);
+    cpu::ReferenceStatistics statistics;
+    cpu::renderReference(s, geometry, &statistics);
+    const cpu::BounceRays& inside = statistics.raysPerBounce.at(1);  // the refracted camera rays
+    EXPECT_GT(inside.hits, 0u);
+    if (sealed)
+      EXPECT_EQ(inside.shadowRays, 0u);
+    else
+      EXPECT_GT(inside.shadowRays, inside.hits);
+  }
+}
+
 TEST(TransmissionRender, ThinAndThickSlabsOfOneGlassTransmitBeerLambert) {
   const double depth = 0.25;
   for (double ior : {1.0, 1.5}) {

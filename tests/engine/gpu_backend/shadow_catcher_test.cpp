@@ -1,11 +1,12 @@
 // The preview's ground in the paths (docs/preview-stage.md, "The ground in
-// the paths"): camera rays pass over the shadow catcher on both backends, a
-// mirror ball shows the share of the open sky its own shadow leaves the
-// ground, as the form factor of a sphere gives it, and the GPU traces the
-// CPU reference's paths through the catcher.
+// the paths"): camera rays pass over the shadow catcher and see a held-out
+// model black on both backends, a mirror ball shows the share of the open
+// sky its own shadow leaves the ground, as the form factor of a sphere gives
+// it, and the GPU traces the CPU reference's paths through the catcher.
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -69,6 +70,43 @@ TEST_F(GpuShadowCatcher, TracesTheCpuReferencesPathsThroughIt) {
   // part there more often than at the model's silhouettes, and a parted path
   // moves its pixel (of one sample) by all it carries. The means agree.
   testing::expectPathParity(r, {.median = 1e-4, .p98 = 2e-2, .mean = 3e-3});
+}
+
+// The holdout with paths (scene::holdoutWithPaths) against the same scene
+// with nothing held out: camera rays that hit the model see black and count
+// as covered, and every pixel of the ground alone is unchanged, since its
+// continuations still find the model in its materials.
+void expectHeldOut(const Image& shown, const Image& heldOut) {
+  ASSERT_EQ(shown.pixelCount(), heldOut.pixelCount());
+  int black = 0, same = 0;
+  for (std::size_t p = 0; p < shown.pixelCount(); ++p) {
+    ASSERT_EQ(heldOut.beauty[p].a, shown.beauty[p].a) << p;
+    const glm::vec3 h(heldOut.beauty[p]), s(shown.beauty[p]);
+    if (h == s) {
+      ++same;
+      continue;
+    }
+    // A pixel whose samples met the model: only what they brought is gone.
+    ASSERT_TRUE(glm::all(glm::lessThanEqual(h, s + 1e-6f))) << p;
+    if (h == glm::vec3(0.0f) && heldOut.beauty[p].a == 1.0f) ++black;
+  }
+  EXPECT_GT(black, int(shown.pixelCount() / 20));
+  EXPECT_GT(same, int(shown.pixelCount() / 2));
+}
+
+TEST_F(GpuShadowCatcher, AHeldOutModelIsBlackToTheCameraAndSeenByThePaths) {
+  const scene::Scene model = testing::previewWithPaths(scene::IntersectionMethod::Tessellated, 2);
+  const scene::Scene heldOut = scene::holdoutWithPaths(scene::groundScenes(model), model);
+  scene::Scene shown = heldOut;
+  for (scene::Object& object : shown.objects) object.holdout = false;
+  {
+    SCOPED_TRACE("cpu");
+    expectHeldOut(cpu::renderReference(shown, scene::buildGeometry(shown)),
+                  cpu::renderReference(heldOut, scene::buildGeometry(heldOut)));
+  }
+  SCOPED_TRACE("gpu");
+  expectHeldOut(render(shown).image, render(heldOut).image);
+  testing::expectPathParity(testing::renderBoth(device_, heldOut), {.median = 1e-4, .p98 = 2e-2, .mean = 3e-3});
 }
 
 // A mirror ball standing on the catcher under a uniform white sky. The
