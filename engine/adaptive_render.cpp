@@ -106,18 +106,26 @@ struct GroundSums {
   std::vector<int> rounds;
 };
 
-// Round `round` of the ground's scenes over `window`, added to the pixels
-// of the `active` tiles.
-// Their stages are added to `stages`.
-void addGroundRound(Renderer& renderer, const GroundRoundScenes& scenes, int round, const PixelRect& window,
-                    const TileGrid& grid, const std::vector<int>& active, Backend backend, unsigned threads,
-                    GroundSums& sums, std::vector<StageTime>& stages) {
-  const RenderReport holdoutRender = renderRound(renderer, scenes.holdout, round, window, backend, threads);
-  const RenderReport groundRender = renderRound(renderer, scenes.ground, round, window, backend, threads);
-  for (const RenderReport* render : {&holdoutRender, &groundRender})
+// Round `round` of the ground's scenes over `window`: the one `kept` holds
+// for that round and window, else rendered (its stages added to `stages`)
+// and kept.
+const GroundRound& groundRound(Renderer& renderer, const GroundRoundScenes& scenes, int round, const PixelRect& window,
+                               Backend backend, unsigned threads, std::vector<StageTime>& stages,
+                               std::vector<GroundRound>& kept) {
+  if (std::size_t(round) < kept.size() && kept[std::size_t(round)].window == window) return kept[std::size_t(round)];
+  RenderReport holdout = renderRound(renderer, scenes.holdout, round, window, backend, threads);
+  RenderReport ground = renderRound(renderer, scenes.ground, round, window, backend, threads);
+  for (const RenderReport* render : {&holdout, &ground})
     for (const StageTime& stage : render->stages) addStageTime(stages, stage);
-  const Image& holdout = holdoutRender.image;
-  const Image& alone = groundRender.image;
+  kept.resize(std::max(kept.size(), std::size_t(round) + 1));
+  return kept[std::size_t(round)] = {window, std::move(holdout.image), std::move(ground.image)};
+}
+
+// A round of the ground's renders, added to the pixels of the `active` tiles.
+void addGroundRound(const GroundRound& round, const TileGrid& grid, const std::vector<int>& active, GroundSums& sums) {
+  const Image& holdout = round.holdout;
+  const Image& alone = round.ground;
+  const PixelRect& window = round.window;
   for (int t : active) {
     const PixelRect tile = grid.tile(t);
     for (int y = tile.y0; y < tile.y1; ++y)
@@ -220,11 +228,46 @@ std::vector<int> tilesGoingOn(const std::vector<int>& active, const SampleRounds
   return next;
 }
 
+// The ground's part of an adaptive render: its two scenes, the rounds they
+// rendered (kept in `shared`, else its own), their sums and their stages.
+struct GroundState {
+  GroundRoundScenes scenes;
+  SharedGroundRenders* shared = nullptr;
+  std::vector<GroundRound> own;
+  GroundSums sums;
+  std::vector<StageTime> stages;
+
+  std::vector<GroundRound>& kept() { return shared ? shared->rounds : own; }
+};
+
+// The ground's part of the rounds of `model` (its scene with the light
+// transport chosen), whose scene takes the catcher where paths run: they see
+// the ground they stand on, and the ground receives what they send onto it
+// (docs/preview-stage.md, "The ground in the paths"). Without paths the
+// ground's renders hold nothing of the model's materials, and `shared`'s
+// rounds serve.
+GroundState groundStateOf(const scene::GroundScenes& ground, RoundScene& model, int roundSpp, std::size_t pixels,
+                          SharedGroundRenders* shared, double& geometryMilliseconds) {
+  const bool paths = model.scene.render.bounces > 0;
+  GroundState state{
+      {withGeometry(withRoundSpp(paths ? scene::holdoutWithPaths(ground, model.scene) : ground.holdout, roundSpp),
+                    geometryMilliseconds),
+       withGeometry(withRoundSpp(ground.ground, roundSpp), geometryMilliseconds)},
+      paths ? nullptr : shared,
+      {},
+      {std::vector<glm::vec4>(pixels, glm::vec4(0)), std::vector<glm::vec4>(pixels, glm::vec4(0)),
+       std::vector<int>(pixels, 0)},
+      {}};
+  if (paths) model = withGeometry(scene::withShadowCatcher(std::move(model.scene), ground), geometryMilliseconds);
+  return state;
+}
+
 }  // namespace
 
 AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Backend backend,
                               const AdaptiveSettings& settings, const RenderOptions& options,
-                              const std::function<void(double)>& progress, const scene::GroundScenes* ground) {
+                              const std::function<void(double)>& progress, const scene::GroundScenes* ground,
+                              SharedGroundRenders* sharedGround) {
   checkSettings(settings);
   const Clock::time_point start = Clock::now();
   const PixelRect area = options.crop.value_or(PixelRect::whole(scene.render.width, scene.render.height));
@@ -240,18 +283,10 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
   std::optional<scene::LightTransport> transport;
   if (scene::leavesLightTransportUnsaid(scene)) transport = scene::chooseLightTransport(scene, *model.geometry);
   model.scene = withRoundSpp(transport ? scene::withLightTransport(scene, *transport) : scene, settings.roundSpp);
-  std::optional<GroundRoundScenes> groundRound;
-  if (ground) {
-    // Where paths run, they see the ground they stand on, and the ground
-    // receives what they send onto it (docs/preview-stage.md, "The ground in the paths").
-    const bool paths = model.scene.render.bounces > 0;
-    groundRound = GroundRoundScenes{
-        withGeometry(
-            withRoundSpp(paths ? scene::holdoutWithPaths(*ground, model.scene) : ground->holdout, settings.roundSpp),
-            geometryMilliseconds),
-        withGeometry(withRoundSpp(ground->ground, settings.roundSpp), geometryMilliseconds)};
-    if (paths) model = withGeometry(scene::withShadowCatcher(std::move(model.scene), *ground), geometryMilliseconds);
-  }
+  std::optional<GroundState> groundState;
+  if (ground)
+    groundState = groundStateOf(*ground, model, settings.roundSpp, std::size_t(width) * std::size_t(height),
+                                sharedGround, geometryMilliseconds);
   SampleRounds rounds(width, height, settings.tileSize);
   const TileGrid& grid = rounds.grid();
   AdaptiveReport report;
@@ -260,13 +295,6 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
   report.errors.assign(std::size_t(grid.count()), 0.0);
   std::vector<int> active(std::size_t(grid.count()));
   for (int t = 0; t < grid.count(); ++t) active[std::size_t(t)] = t;
-  GroundSums groundSums;
-  std::vector<StageTime> groundStages;
-  if (groundRound) {
-    const std::size_t pixels = std::size_t(width) * std::size_t(height);
-    groundSums = {std::vector<glm::vec4>(pixels, glm::vec4(0)), std::vector<glm::vec4>(pixels, glm::vec4(0)),
-                  std::vector<int>(pixels, 0)};
-  }
 
   while (!active.empty()) {
     // Each round is an independent randomization of the same estimator:
@@ -282,9 +310,10 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
     // The ground takes the first rounds only: its shadow, averaged over a
     // window of pixels, is smooth by then, and a tile the model keeps going
     // (a bright edge, a noisy lobe) does not make it pay three renders a round.
-    if (groundRound && report.rounds < settings.minRounds)
-      addGroundRound(renderer, *groundRound, report.rounds, window, grid, active, backend, threads, groundSums,
-                     groundStages);
+    if (groundState && report.rounds < settings.minRounds)
+      addGroundRound(groundRound(renderer, groundState->scenes, report.rounds, window, backend, threads,
+                                 groundState->stages, groundState->kept()),
+                     grid, active, groundState->sums);
     rounds.add(rendered.image, window, active);
     report.samples += std::uint64_t(settings.roundSpp) * window.pixelCount();
     if (report.rounds > 0) {
@@ -306,12 +335,13 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
       break;
     }
   }
-  for (const StageTime& stage : groundStages) addStageTime(report.render.stages, stage);
+  if (groundState)
+    for (const StageTime& stage : groundState->stages) addStageTime(report.render.stages, stage);
   addStageTime(report.render.stages, {Stage::RefineBvh, geometryMilliseconds});
   report.image = std::move(report.render.image);
   if (report.image.width != width || report.image.height != height)
     throw std::logic_error("the first adaptive round must cover the whole image or crop");
-  report.image.beauty = groundRound ? caughtBeauty(width, height, rounds.beauty(), groundSums) : rounds.beauty();
+  report.image.beauty = groundState ? caughtBeauty(width, height, rounds.beauty(), groundState->sums) : rounds.beauty();
   report.maxError = *std::max_element(report.errors.begin(), report.errors.end());
   for (int t = 0; t < grid.count(); ++t)
     report.sppMean += double(report.tileSpp[std::size_t(t)]) * double(grid.tile(t).pixelCount());

@@ -68,6 +68,21 @@ struct AdaptiveReport {
 // The fewest and the most camera samples per pixel a tile took.
 std::pair<int, int> tileSppRange(const AdaptiveReport& report);
 
+// One round of a ground's two renders (scenes/ground_plane.h): the holdout
+// and the ground alone, over `window` of the full image.
+struct GroundRound {
+  PixelRect window;
+  Image holdout, ground;
+};
+
+// The ground's rounds of pictures without paths, which hold nothing of the
+// model's materials: pictures of one model in several materials, with the
+// same ground, camera, light and settings (a contact sheet's cells), render
+// them once.
+struct SharedGroundRenders {
+  std::vector<GroundRound> rounds;  // by round number
+};
+
 // Renders `scene` (its size; its spp and seed are the rounds') by rounds,
 // telling `progress` after each the share of tiles finished. With
 // `options.crop`, over that part of the image only: its tiles start at the
@@ -76,12 +91,14 @@ std::pair<int, int> tileSppRange(const AdaptiveReport& report);
 // and size, the whole image), each round renders its two scenes over the
 // same pixels too; the rounds stop on the model's noise, and the beauty is
 // the shadow catcher's composite of the three renders' means
-// (engine/image/catcher_composite.h). Throws std::invalid_argument for
-// settings that break the rules above, or a crop outside the image.
+// (engine/image/catcher_composite.h). A picture without paths takes the
+// ground's rounds `sharedGround` holds, and keeps there those it renders.
+// Throws std::invalid_argument for settings that break the rules above, or
+// a crop outside the image.
 AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Backend backend,
                               const AdaptiveSettings& settings, const RenderOptions& options = {},
                               const std::function<void(double)>& progress = {},
-                              const scene::GroundScenes* ground = nullptr);
+                              const scene::GroundScenes* ground = nullptr, SharedGroundRenders* sharedGround = nullptr);
 
 // A picture of `scene` as its sampling says (RenderSettings::sampling): one
 // pass of its samples per pixel, or adaptive rounds to its noise threshold

@@ -67,13 +67,15 @@ PreviewSheet PreviewStage::render(Renderer& renderer, int frame, const PreviewPr
   PreviewSheet sheet;
   sheet.frame = frame;
   std::vector<ContactCell> cells;
+  SharedGroundRenders sharedGround;
   for (std::size_t i = 0; i < scenes_.size(); ++i) {
     const scene::Scene scene = turned(scenes_[i], frame);
-    PreviewPicture picture{labels_[i],
-                           frame,
-                           renderAdaptive(renderer, scene, settings_.backend, settings_.adaptive,
-                                          {std::nullopt, settings_.threads}, {}, ground ? &*ground : nullptr),
-                           {}};
+    PreviewPicture picture{
+        labels_[i],
+        frame,
+        renderAdaptive(renderer, scene, settings_.backend, settings_.adaptive, {std::nullopt, settings_.threads}, {},
+                       ground ? &*ground : nullptr, &sharedGround),
+        {}};
     picture.rgba = previewPixels(picture.report.image.beauty, width, height, settings_.look);
     cells.push_back({picture.rgba, picture.label});
     if (progress) progress(picture);

@@ -1,6 +1,7 @@
 // The preview stage on the CPU reference: one picture per material, in the
 // materials' order, labelled with the material's name and of the model's
-// size, laid out on a sheet of the layout's size; a turntable turns the
+// size, laid out on a sheet of the layout's size, each what its material
+// alone shows; a turntable turns the
 // model before a fixed camera and light, or the environment; a material that does not load is named; the sheet
 // is written as a PNG.
 #include "engine/preview_stage.h"
@@ -61,6 +62,25 @@ TEST(PreviewStage, OnePictureAMaterialWithItsNameAndTheModelsSize) {
   EXPECT_EQ(layout.cellWidth, 24);
   EXPECT_EQ(layout.cellHeight, 16);
   EXPECT_EQ(sheet.rgba.size(), std::size_t(layout.width()) * std::size_t(layout.height()) * 4u);
+}
+
+// The ground's renders of a cell without paths are the next such cell's
+// too; a cell whose material runs paths (a glass) renders its own. Either way
+// each cell is what its material alone would show.
+TEST(PreviewStage, CellsShowWhatEachMaterialAloneShows) {
+  Renderer renderer;
+  const std::string glass = (std::filesystem::path(FACET_EXAMPLES_DIR) / "materials" / "glass.json").string();
+  const std::vector<std::string> materials = {"gold", glass, "silver"};
+  scene::Scene model = smallModel();
+  model.render.bouncesStated = false;                      // facet chooses: paths for the glass only
+  model.render.method = scene::IntersectionMethod::Exact;  // whose convexity it checks
+  const PreviewSheet sheet = PreviewStage(model, materials, quickSettings()).render(renderer, 0);
+  for (std::size_t i = 0; i < materials.size(); ++i) {
+    const PreviewSheet alone = PreviewStage(model, {materials[i]}, quickSettings()).render(renderer, 0);
+    EXPECT_EQ(sheet.pictures[i].report.image.beauty, alone.pictures[0].report.image.beauty) << materials[i];
+  }
+  EXPECT_EQ(sheet.pictures[0].report.render.lightTransport.bounces, 0);
+  EXPECT_GT(sheet.pictures[1].report.render.lightTransport.bounces, 0);
 }
 
 double meanOf(const std::vector<glm::vec4>& beauty) {
