@@ -108,8 +108,9 @@ struct RenderSettings {
   std::optional<int> tessellationRate;  // overrides the choice from pixelTolerance
   // Exact method: the largest distance from the ray at which a root is
   // accepted, as a fraction of the scene's bounding-box diagonal. Unset: 1e-9
-  // of each object's diagonal on the CPU; the GPU never goes below 8 float
-  // ulps of the scene's largest coordinate (docs/rendering.md).
+  // of each object's diagonal on the CPU. The CPU never goes below 8 double
+  // ulps of the geometry's largest coordinate, the GPU below 8 float ulps of
+  // its largest coordinate relative to the eye (docs/rendering.md).
   std::optional<double> exactTolerance;
 };
 

@@ -87,7 +87,7 @@ class ExactPatchIntersector {
                         const HitFilter& filter)
       : surface_(surface), ray_(ray), settings_(settings), filter_(filter) {
     const double diagonal = surface.bounds().diagonal();
-    tolerance_ = settings.tolerance > 0.0 ? settings.tolerance : 1e-9 * diagonal;
+    tolerance_ = std::max(settings.tolerance > 0.0 ? settings.tolerance : 1e-9 * diagonal, settings.precisionFloor);
     minimumPieceSize_ =
         std::max(tolerance_, settings.minimumPieceSize > 0.0 ? settings.minimumPieceSize : 1e-6 * diagonal);
   }

@@ -37,6 +37,8 @@
 #include "scenes/patch_bvh.h"
 #include "scenes/subdivision_surface.h"
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -47,6 +49,9 @@ struct ExactSettings {
   // Largest distance allowed between the hit point on the surface and the
   // ray; 0 means 1e-9 x the surface's bounding-box diagonal.
   double tolerance = 0.0;
+  // The tolerance never goes below this: far from the origin double
+  // resolves no finer (the reference renderer's precisionFloor).
+  double precisionFloor = 0.0;
   double flatness = 1e-3;
   // Pieces smaller than this are not split further, Newton decides alone;
   // 0 means 1e-6 x the bounding-box diagonal. Splitting finer only
@@ -55,6 +60,17 @@ struct ExactSettings {
   double minimumPieceSize = 0.0;
   int maxDepth = 30;
 };
+
+// 8 ulps of double at the largest coordinate of `bounds`: a hit's residual
+// there is a few ulps of its terms however well Newton converges, and the
+// default tolerance of 1e-9 diagonals lies below it once the geometry is
+// more than about 1e6 diagonals from the origin.
+inline double precisionFloor(const scene::Aabb& bounds) {
+  double largest = 0.0;
+  for (int axis = 0; axis < 3; ++axis)
+    largest = std::max({largest, std::abs(bounds.lo[axis]), std::abs(bounds.hi[axis])});
+  return std::ldexp(largest, -49);
+}
 
 // Whether a hit counts; empty: every hit does.
 using HitFilter = std::function<bool(const Ray& ray, const SurfaceHit& hit)>;

@@ -53,7 +53,9 @@ class ReferenceScene final : public PathScene {
     ExactSettings exactSettings;
     if (scene.render.exactTolerance)
       exactSettings.tolerance = *scene.render.exactTolerance * geometry.bounds.diagonal();
-    shadowOffset_ = m::shadow_ray_offset(geometry.bounds.diagonal(), exactSettings.tolerance);
+    exactSettings.precisionFloor = precisionFloor(geometry.bounds);
+    shadowOffset_ = m::shadow_ray_offset(geometry.bounds.diagonal(),
+                                         std::max(exactSettings.tolerance, exactSettings.precisionFloor));
     coneSpread_ = m::camera_cone_spread(std::tan(glm::radians(0.5 * scene.camera.verticalFovDegrees)),
                                         double(scene.render.height));
     int patches = 0, faces = 0;

@@ -12,6 +12,8 @@
 #include "engine/renderer.h"
 #include "scenes/obj_cage.h"
 #include "scenes/scene_file.h"
+#include "scenes/environment_map.h"
+#include "tests/support/blob_scene.h"
 
 namespace facet {
 namespace {
@@ -126,6 +128,39 @@ TEST_P(ReferenceRenderer, AovsAgreeWithEachOtherAndWithTheCamera) {
   // The framing puts the object in the middle and leaves a margin around it.
   EXPECT_GT(covered, image.width * image.height / 8);
   EXPECT_LT(covered, image.width * image.height);
+}
+
+// Far from the origin double resolves less than the default tolerance of
+// 1e-9 diagonals: the exact method's tolerance and the shadow rays' offset
+// follow the coordinates' precision (cpu::precisionFloor), so the convex
+// blob 1e12 away renders under a white sky as it does near the origin: no
+// ray slips through it and none of its shadow rays finds it again.
+TEST(ReferenceRendererFar, ABlobFarFromTheOriginRendersAsNearIt) {
+  scene::Scene near = testing::blobUnder(
+      testing::lambertian(0.8),
+      std::make_shared<const scene::EnvironmentMap>(scene::constantEnvironment(glm::dvec3(1.0))), 24);
+  near.render.method = scene::IntersectionMethod::Exact;
+  near.environment->method = scene::IblMethod::Sampled;
+  near.environment->samples = 4;
+  scene::Scene far = near;
+  const glm::dvec3 away(1e12, -3e11, 0.0);
+  for (glm::dvec3& p : far.objects.front().cage.positions) p += away;
+  far.camera.eye += away;
+  far.camera.target += away;
+  Renderer renderer;
+  const Image a = renderer.render(near, Backend::Cpu).image, b = renderer.render(far, Backend::Cpu).image;
+  int covered = 0, differ = 0;
+  double nearSum = 0, farSum = 0;
+  for (std::size_t p = 0; p < a.pixelCount(); ++p) {
+    differ += a.beauty[p].a != b.beauty[p].a;
+    if (a.beauty[p].a < 1.0f || b.beauty[p].a < 1.0f) continue;
+    ++covered;
+    nearSum += a.beauty[p].g;
+    farSum += b.beauty[p].g;
+  }
+  ASSERT_GT(covered, 100);
+  EXPECT_LE(differ, int(a.pixelCount() / 50)) << "coverage changed";
+  EXPECT_NEAR(farSum / covered, nearSum / covered, 0.01 * nearSum / covered);
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, ReferenceRenderer,
