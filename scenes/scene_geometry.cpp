@@ -135,7 +135,9 @@ SceneGeometry buildGeometry(const Scene& scene) {
     SubdivisionSurface surface = SubdivisionSurface::create(object.cage, settings);
     PatchBvh bvh = PatchBvh::build(surface);
     geometry.bounds.extend(surface.bounds());
-    geometry.objects.push_back({choice, std::move(surface), std::move(bvh), enclosesSolid(object.cage)});
+    // Only a solid's inside is sealed off (sealsInside); other objects skip the walk of their edges.
+    const bool transmits = materials::isTransmissive(scene.materials[std::size_t(object.material)]);
+    geometry.objects.push_back({choice, std::move(surface), std::move(bvh), transmits && enclosesSolid(object.cage)});
   }
   return geometry;
 }

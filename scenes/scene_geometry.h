@@ -29,7 +29,9 @@ struct ObjectGeometry {
   RefinementChoice refinement;
   SubdivisionSurface surface;
   PatchBvh bvh;
-  bool enclosesSolid = false;  // its cage's (scenes/cage_topology.h)
+  // Its cage's (scenes/cage_topology.h), found where its material transmits;
+  // false elsewhere.
+  bool enclosesSolid = false;
 };
 
 // Whether every ray from inside `object` crosses its surface before it
