@@ -93,7 +93,9 @@ void addStageTime(std::vector<StageTime>& stages, const StageTime& stage) {
     same->milliseconds += stage.milliseconds;
 }
 
-// The ground's two scenes (scene::GroundScenes) and their geometry.
+// The ground's two scenes (scene::GroundScenes) and their geometry, built
+// by the first round that renders them: rounds a sheet's cells share need
+// none.
 struct GroundRoundScenes {
   RoundScene holdout, ground;
 };
@@ -107,12 +109,15 @@ struct GroundSums {
 };
 
 // Round `round` of the ground's scenes over `window`: the one `kept` holds
-// for that round and window, else rendered (its stages added to `stages`)
-// and kept.
-const GroundRound& groundRound(Renderer& renderer, const GroundRoundScenes& scenes, int round, const PixelRect& window,
+// for that round and window, else rendered (its stages added to `stages`,
+// the scenes' geometry built where it is not yet, its time added to
+// `geometryMilliseconds`) and kept.
+const GroundRound& groundRound(Renderer& renderer, GroundRoundScenes& scenes, int round, const PixelRect& window,
                                Backend backend, unsigned threads, std::vector<StageTime>& stages,
-                               std::vector<GroundRound>& kept) {
+                               double& geometryMilliseconds, std::vector<GroundRound>& kept) {
   if (std::size_t(round) < kept.size() && kept[std::size_t(round)].window == window) return kept[std::size_t(round)];
+  for (RoundScene* scene : {&scenes.holdout, &scenes.ground})
+    scene->geometry = geometryOf(scene->scene, geometryMilliseconds, scene->geometry);
   RenderReport holdout = renderRound(renderer, scenes.holdout, round, window, backend, threads);
   RenderReport ground = renderRound(renderer, scenes.ground, round, window, backend, threads);
   for (const RenderReport* render : {&holdout, &ground})
@@ -250,9 +255,8 @@ GroundState groundStateOf(const scene::GroundScenes& ground, RoundScene& model, 
                           SharedGroundRenders* shared, double& geometryMilliseconds) {
   const bool paths = model.scene.render.bounces > 0;
   GroundState state{
-      {withGeometry(withRoundSpp(paths ? scene::holdoutWithPaths(ground, model.scene) : ground.holdout, roundSpp),
-                    geometryMilliseconds),
-       withGeometry(withRoundSpp(ground.ground, roundSpp), geometryMilliseconds)},
+      {{withRoundSpp(paths ? scene::holdoutWithPaths(ground, model.scene) : ground.holdout, roundSpp), nullptr},
+       {withRoundSpp(ground.ground, roundSpp), nullptr}},
       paths ? nullptr : shared,
       {},
       {std::vector<glm::vec4>(pixels, glm::vec4(0)), std::vector<glm::vec4>(pixels, glm::vec4(0)),
@@ -312,7 +316,7 @@ AdaptiveReport renderAdaptive(Renderer& renderer, const scene::Scene& scene, Bac
     // (a bright edge, a noisy lobe) does not make it pay three renders a round.
     if (groundState && report.rounds < settings.minRounds)
       addGroundRound(groundRound(renderer, groundState->scenes, report.rounds, window, backend, threads,
-                                 groundState->stages, groundState->kept()),
+                                 groundState->stages, geometryMilliseconds, groundState->kept()),
                      grid, active, groundState->sums);
     rounds.add(rendered.image, window, active);
     report.samples += std::uint64_t(settings.roundSpp) * window.pixelCount();
