@@ -28,6 +28,7 @@ Params toParams(const Material& m) {
   p.f0 = Vec3(m.f0);
   p.eta = Vec3(m.eta);
   p.k = Vec3(m.k);
+  p.metallic = 0;  // a textured transmissive material's, set per hit
   p.diffuse = Vec3(m.diffuse);
   // The tangent in the frame n = z (what facet brdf evaluates in); the
   // renderers replace it by the surface's tangent field, rotated alike.

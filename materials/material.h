@@ -54,6 +54,8 @@ struct MaterialTextures {
   double clearcoatNormalScale = 1.0;
   TextureSlot sheenColorTexture;
   TextureSlot anisotropyTexture;
+  // KHR_materials_transmission's texture: R scales the transmission factor.
+  TextureSlot transmissionTexture;
 };
 
 struct Material {

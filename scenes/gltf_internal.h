@@ -133,7 +133,8 @@ void applySheen(const tinygltf::Material& gltf, const std::string& material, con
                 materials::Material& m);
 void applyAnisotropy(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
                      materials::Material& m);
-// The same extensions' textures into `t`: whether it reads any.
+// The same extensions' textures, and KHR_materials_transmission's, into
+// `t`: whether it reads any.
 bool readLayerTextures(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
                        TextureTable& textures, materials::MaterialTextures& t);
 

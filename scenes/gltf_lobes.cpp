@@ -1,6 +1,6 @@
 // The glTF extensions that add a lobe to the base or shape its lobe:
 // KHR_materials_clearcoat, KHR_materials_sheen and KHR_materials_anisotropy
-// (docs/gltf.md).
+// (docs/gltf.md), and the textures of every extension.
 #include <optional>
 #include <string>
 
@@ -133,8 +133,12 @@ bool readLayerTextures(const tinygltf::Material& gltf, const std::string& materi
   if (const tinygltf::Value* a = extension(gltf, "KHR_materials_anisotropy"))
     t.anisotropyTexture = extensionSlot(*a, "anisotropyTexture", TextureEncoding::Linear,
                                         at("KHR_materials_anisotropy"), reader, textures);
-  for (const materials::TextureSlot* slot : {&t.clearcoatTexture, &t.clearcoatRoughnessTexture,
-                                             &t.clearcoatNormalTexture, &t.sheenColorTexture, &t.anisotropyTexture})
+  if (const tinygltf::Value* x = extension(gltf, "KHR_materials_transmission"))
+    t.transmissionTexture = extensionSlot(*x, "transmissionTexture", TextureEncoding::Linear,
+                                          at("KHR_materials_transmission"), reader, textures);
+  for (const materials::TextureSlot* slot :
+       {&t.clearcoatTexture, &t.clearcoatRoughnessTexture, &t.clearcoatNormalTexture, &t.sheenColorTexture,
+        &t.anisotropyTexture, &t.transmissionTexture})
     if (slot->texture >= 0) return true;
   return false;
 }

@@ -251,7 +251,9 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
   for (const materials::TextureSlot* s :
        {&t.baseColorTexture, &t.metallicRoughnessTexture, &t.normalTexture, &t.occlusionTexture, &t.emissiveTexture})
     if (s->texture >= 0) m.textures = t;
-  if (vertexColours || layered) m.textures = t;
+  // A transmissive material's base colour tints what it transmits and its
+  // metallic mixes a metal over it, per hit (docs/gltf.md).
+  if (vertexColours || layered || materials::isTransmissive(m)) m.textures = t;
   // The textured rule derives F(0) per hit from the base colour and metallic alone.
   for (const char* name : {"KHR_materials_ior", "KHR_materials_specular"})
     if (m.textures && !materials::isTransmissive(m) && extension(gltf, name))

@@ -77,8 +77,6 @@ void applyTransmission(const tinygltf::Material& gltf, const std::string& materi
   const tinygltf::Value* t = extension(gltf, "KHR_materials_transmission");
   if (!t) return;
   const std::string where = at + "KHR_materials_transmission";
-  if (t->Has("transmissionTexture"))
-    reader.fail(where + ".transmissionTexture", "is not read: give transmissionFactor alone");
   m.transmission = member(*t, "transmissionFactor", 0.0, where, reader);
   if (const std::optional<std::string> rule =
           factorRule(m.transmission, materials::bounded(&materials::MaterialSpec::transmission)))
@@ -87,11 +85,6 @@ void applyTransmission(const tinygltf::Material& gltf, const std::string& materi
   if (specular)
     reader.warn(at + "KHR_materials_specular",
                 "is not applied to a transmissive material: its Fresnel is the dielectric's of its index");
-  if (metallic != 0.0)
-    reader.fail(material + ".pbrMetallicRoughness.metallicFactor",
-                "a transmissive material (KHR_materials_transmission) must be a dielectric here: metallicFactor 0, "
-                "is " +
-                    formatNumber(metallic));
   m.fresnel = rules::f64::F_DIELECTRIC;
   m.eta = glm::dvec3(ior);
   m.thinWalled = true;  // glTF: without a volume, the surface is thin-walled

@@ -39,12 +39,30 @@ void warnOfDarkTransmission(const Scene& scene, const std::string& why, LightTra
   }
 }
 
+// A volume of glass must be closed for light to leave it as it entered
+// (docs/rendering.md, "Transmission and absorption"): said, never silent.
+void warnOfOpenVolumes(const Scene& scene, const SceneGeometry& geometry, LightTransport& t) {
+  std::vector<std::string> open;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const materials::Material& material = scene.materials.at(std::size_t(scene.objects[i].material));
+    if (materials::isTransmissive(material) && !material.thinWalled && !geometry.objects.at(i).enclosesSolid)
+      open.push_back(scene.objects[i].name);
+  }
+  if (open.empty()) return;
+  t.warnings.push_back("'" + open.front() + "'" +
+                       (open.size() > 1 ? " (and " + std::to_string(open.size() - 1) + " more)" : "") +
+                       " transmits into a volume, but its surface does not close around a solid (an open edge, a "
+                       "hole or a face wound inward): light that enters may never leave; close it, wound outward, "
+                       "or make its material thin-walled");
+}
+
 bool environmentCarriesPaths(const Scene& scene) { return pathsCountEnvironmentOnce(1, scene.environment); }
 
 }  // namespace
 
 LightTransport chooseLightTransport(const Scene& scene, const SceneGeometry& geometry) {
   LightTransport t = asStated(scene.render);
+  warnOfOpenVolumes(scene, geometry, t);
   const bool methodStated = !scene.environment || scene.environment->methodStated;
   if (scene.render.bouncesStated) {
     if (t.bounces > 0 && !environmentCarriesPaths(scene) && !methodStated) {

@@ -38,7 +38,8 @@ struct LightTransport {
   // 'teacup' is concave"); empty where the scene stated it all and nothing
   // was dropped.
   std::string note;
-  // A transmissive material that no path passes through.
+  // A transmissive material that no path passes through, a volume of glass
+  // that is not closed.
   std::vector<std::string> warnings;
 };
 

@@ -148,6 +148,7 @@ struct PathState {
   float kR;
   float kG;
   float kB;
+  float metallic;
   float diffuseR;
   float diffuseG;
   float diffuseB;
@@ -155,10 +156,12 @@ struct PathState {
   float specularG;
   float specularB;
   // Transmission (docs/rendering.md, "Transmission and absorption"): the
-  // vertex's material, FACET_PATH_* flags, and the absorption coefficient of
-  // the medium the path travels in (0 in air).
+  // vertex's material, FACET_PATH_* flags, its transmission after any
+  // texture, and the absorption coefficient of the medium the path travels
+  // in (0 in air).
   uint material;
   uint flags;
+  float transmission;
   float sigmaR;
   float sigmaG;
   float sigmaB;
@@ -319,6 +322,7 @@ struct MaterialRecord {
   float sigmaG;
   float sigmaB;
   float thickness;
+  TextureSlotRecord transmissionTexture;  // R scales `transmission` where `textured`
   // Anisotropy (docs/shading.md, "Anisotropy"): the strength, and the
   // tangent's rotation about the normal as cos and sin.
   float anisotropy;

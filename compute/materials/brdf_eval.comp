@@ -59,6 +59,7 @@ void main() {
   p.f0 = parameters.f0_alpha.xyz;
   p.eta = parameters.eta.xyz;
   p.k = parameters.k.xyz;
+  p.metallic = 0.0;
   p.diffuse = parameters.diffuse.xyz;
   p.anisotropy = parameters.tangent_anisotropy.w;
   p.tangent = parameters.tangent_anisotropy.xyz;

@@ -118,8 +118,8 @@ class ReferenceScene final : public PathScene {
     const glm::dvec3 specularScale = ibl::specularScale(compensation_, material, s.params, glm::dot(s.n, v));
     glm::dvec3 radiance = s.emission;
     // Inside a sealed solid each of the environment's shadow rays would be blocked.
-    if (environment_ && !(castsShadowRays_ && m::environment_sealed_off(fetched.transmissive, fetched.transmission,
-                                                                        s.outside, sealed_[std::size_t(hit.object)]))) {
+    if (environment_ && !(castsShadowRays_ && m::environment_sealed_off(fetched.transmissive, s.transmission, s.outside,
+                                                                        sealed_[std::size_t(hit.object)]))) {
       EnvironmentLight environment;
       switch (environment_->environment->method) {
         case scene::IblMethod::Sampled:
@@ -151,7 +151,7 @@ class ReferenceScene final : public PathScene {
       radiance += m::punctual_radiance(s.params, s.n, incidence.direction, v, incidence.color, specularScale);
     }
     return {radiance,
-            {position, s.n, s.ng, v, s.params, specularScale, fetched.transmissive, fetched.transmission, s.outside}};
+            {position, s.n, s.ng, v, s.params, specularScale, fetched.transmissive, s.transmission, s.outside}};
   }
 
   std::optional<ShadedVertex> shadeNearest(const Ray& ray, std::uint32_t pixel, std::uint32_t sample, std::uint32_t seed,

@@ -33,6 +33,7 @@ m::MaterialTexels materialTexels(const scene::SubdivisionSurface& surface, const
   texels.coat_normal_frame = footprint(t.clearcoatNormalTexture);
   texels.sheen = glm::dvec3(value(t.sheenColorTexture));
   texels.anisotropy = glm::dvec3(value(t.anisotropyTexture));
+  texels.transmission = value(t.transmissionTexture).r;
   return texels;
 }
 

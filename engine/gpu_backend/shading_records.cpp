@@ -74,6 +74,7 @@ std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
     r.clearcoatNormalScale = t ? float(t->clearcoatNormalScale) : 1.0f;
     r.sheenColorTexture = textureSlotRecord(t ? t->sheenColorTexture : none);
     r.anisotropyTexture = textureSlotRecord(t ? t->anisotropyTexture : none);
+    r.transmissionTexture = textureSlotRecord(t ? t->transmissionTexture : none);
     const int table = compensation.tableOfMaterial[i];
     r.compensationTable =
         table == ibl::CompensationTables::kNone ? layout::FACET_NO_COMPENSATION : std::uint32_t(table);

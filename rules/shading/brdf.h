@@ -14,6 +14,10 @@
 // Which fields are read depends on the models: f0 for F_SCHLICK, eta for
 // F_DIELECTRIC (per channel, so dispersion is possible), eta and k for
 // F_CONDUCTOR. alpha is the microfacet alpha, not perceptual roughness.
+// metallic in [0, 1] is glTF's metallic share of a transmissive material,
+// a metal of F(0) = f0 mixed over its dielectric interface (F_DIELECTRIC
+// only, docs/shading.md, "Transmission"): 0 is the bare interface (and its
+// code path, bit for bit).
 // anisotropy in [0, 1] is KHR_materials_anisotropy's strength: 0 is the
 // isotropic lobe (and its code path, bit for bit); above, alpha_t along
 // `tangent` (made orthogonal to n where used) is mix(alpha, 1, strength^2).
@@ -32,6 +36,7 @@ struct BrdfParams {
   vec3 f0;
   vec3 eta;
   vec3 k;
+  real metallic;
   vec3 diffuse;
   real anisotropy;
   vec3 tangent;
@@ -69,9 +74,13 @@ FACET_FN vec3 fresnel_F(BrdfParams p, real cos_i) {
   switch (p.f_model) {
     case F_SCHLICK:
       return fresnel_schlick(p.f0, cos_i);
-    case F_DIELECTRIC:
-      return vec3(fresnel_dielectric(p.eta.x, cos_i), fresnel_dielectric(p.eta.y, cos_i),
-                  fresnel_dielectric(p.eta.z, cos_i));
+    case F_DIELECTRIC: {
+      vec3 F = vec3(fresnel_dielectric(p.eta.x, cos_i), fresnel_dielectric(p.eta.y, cos_i),
+                    fresnel_dielectric(p.eta.z, cos_i));
+      // glTF: mix(dielectric, metal, metallic), the metal's F Schlick's.
+      if (p.metallic != real(0)) F = mix(F, fresnel_schlick(p.f0, cos_i), p.metallic);
+      return F;
+    }
     case F_CONDUCTOR:
       return fresnel_conductor(p.eta, p.k, cos_i);
     case F_BLENDER_METALLIC:

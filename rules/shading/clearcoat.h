@@ -34,6 +34,7 @@ FACET_FN BrdfParams coat_lobe_params(BrdfParams p) {
   c.f0 = vec3(COAT_F0);
   c.eta = vec3(real(1));
   c.k = vec3(real(0));
+  c.metallic = real(0);
   c.diffuse = vec3(real(0));
   c.anisotropy = real(0);
   c.tangent = p.tangent;

@@ -49,6 +49,7 @@ FACET_FN vec2 dfg_integrals(int d_model, int g_model, real nv, real alpha, int s
   p.f0 = vec3(real(1));
   p.eta = vec3(real(1));
   p.k = vec3(real(0));
+  p.metallic = real(0);
   p.diffuse = vec3(real(0));
   p.anisotropy = real(0);
   p.tangent = vec3(real(1), real(0), real(0));

@@ -60,6 +60,7 @@ struct MaterialTexels {
   TextureFootprint coat_normal_frame;
   vec3 sheen;
   vec3 anisotropy;
+  real transmission;
 };
 
 // What a backend fetched of the material at a hit.
@@ -92,10 +93,12 @@ struct SurfaceAtHit {
   bool outside;
   real occlusion;  // the share of the environment's light that reaches it
   vec3 emission;   // what leaves towards v, under any coat
+  TransmissionParams transmission;  // a transmissive material's, after its texture
 };
 
 // Parameters, then the textures (which may map the normal), then the side a
-// transmissive interface is seen from, then the tangent about the final
+// transmissive interface is seen from, with a textured material's base
+// colour and metallic mix (glTF), then the tangent about the final
 // normal, then the coat over the emission (KHR_materials_clearcoat). The
 // coat keeps the surface's own normal: no normal map applies to it.
 FACET_FN SurfaceAtHit surface_at_hit(HitMaterial m, FacingNormals facing, vec3 v, HitPartials partials) {
@@ -107,6 +110,7 @@ FACET_FN SurfaceAtHit surface_at_hit(HitMaterial m, FacingNormals facing, vec3 v
   s.outside = facing.outside;
   s.occlusion = real(1);
   s.emission = m.emission;
+  s.transmission = m.transmission;
   vec2 anisotropy_direction = vec2(real(1), real(0));
   if (m.textured) {
     TexturedFactors f = m.factors;
@@ -122,7 +126,16 @@ FACET_FN SurfaceAtHit surface_at_hit(HitMaterial m, FacingNormals facing, vec3 v
     s.emission = textured.emission;
     anisotropy_direction = textured.anisotropy_direction;
   }
-  if (m.transmissive) s.params = transmissive_brdf_params(s.params, m.transmission, s.outside);
+  if (m.transmissive) {
+    vec3 base = vec3(real(1), real(1), real(1));
+    real metallic = real(0);
+    if (m.textured) {
+      base = m.factors.base * m.texels.base;
+      metallic = m.factors.metallic * m.texels.metallic_roughness.z;
+      s.transmission.transmission *= m.texels.transmission;
+    }
+    s.params = transmissive_brdf_params(s.params, s.transmission, s.outside, base, metallic);
+  }
   if (s.params.anisotropy != real(0)) {
     vec2 rotation = turned_rotation(m.anisotropy_rotation, anisotropy_direction);
     s.params.tangent = texcoord_tangent(s.n, partials.dp_ds, partials.dp_dt, partials.duv_ds, partials.duv_dt,

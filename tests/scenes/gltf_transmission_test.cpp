@@ -53,6 +53,32 @@ TEST_F(GltfTransmission, WithoutAVolumeTheSurfaceIsThinWalled) {
   EXPECT_TRUE(std::isinf(m.attenuationDistance));
 }
 
+// KHR_materials_transmission: the texture scales the factor, the base colour
+// tints and the metallic mix keeps a metal's share opaque, each per hit, so
+// the material keeps its glTF parameters even without a texture.
+TEST_F(GltfTransmission, TheTextureTheBaseColourAndAMetallicMixAreReadPerHit) {
+  ASSERT_TRUE(facet::testing::writePng(dir_ / "mask.png", 2, 2,
+                                       facet::testing::checkerTexels(2, 2, {255, 0, 0, 255}, {0, 0, 0, 255})));
+  nlohmann::json material = {
+      {"pbrMetallicRoughness", {{"baseColorFactor", {0.2, 0.5, 0.9, 1.0}}, {"metallicFactor", 0.25}}},
+      {"extensions",
+       {{"KHR_materials_transmission", {{"transmissionFactor", 0.75}, {"transmissionTexture", {{"index", 0}}}}}}}};
+  const Scene scene = loadScene(facet::testing::writeTexturedQuad(
+      dir_, "textured",
+      {{"materials", {material}}, {"textures", {{{"source", 0}}}}, {"images", {{{"uri", "mask.png"}}}}}));
+  const materials::Material& m = scene.materials.at(0);
+  EXPECT_EQ(m.transmission, 0.75);
+  ASSERT_TRUE(m.textures.has_value());
+  EXPECT_GE(m.textures->transmissionTexture.texture, 0);
+  EXPECT_EQ(m.textures->baseColor, glm::dvec3(0.2, 0.5, 0.9));
+  EXPECT_EQ(m.textures->metallic, 0.25);
+
+  const Scene plain = loadScene(quad("untextured", {{"KHR_materials_transmission", {{"transmissionFactor", 1}}}}, 1.0));
+  ASSERT_TRUE(plain.materials.at(0).textures.has_value());
+  EXPECT_EQ(plain.materials.at(0).textures->metallic, 1.0);
+  EXPECT_LT(plain.materials.at(0).textures->transmissionTexture.texture, 0);
+}
+
 TEST_F(GltfTransmission, AnIndexAloneSetsTheOpaqueDielectricsF0) {
   const Scene scene = loadScene(quad("ior", {{"KHR_materials_ior", {{"ior", 2.0}}}}));
   EXPECT_FALSE(materials::isTransmissive(scene.materials.at(0)));
@@ -68,10 +94,8 @@ TEST_F(GltfTransmission, WhatCannotBeRenderedIsNamed) {
     EXPECT_THAT([&] { loadScene(file); }, ThrowsMessage<InputError>(AllOf(HasSubstr(field), HasSubstr(rule)))) << name;
   };
   refused("texture",
-          {{"KHR_materials_transmission", {{"transmissionFactor", 1}, {"transmissionTexture", {{"index", 0}}}}}},
-          "materials[0].extensions.KHR_materials_transmission.transmissionTexture", "give transmissionFactor alone");
-  refused("metal", {{"KHR_materials_transmission", {{"transmissionFactor", 1}}}},
-          "materials[0].pbrMetallicRoughness.metallicFactor", "must be a dielectric here", 1.0);
+          {{"KHR_materials_transmission", {{"transmissionFactor", 1}, {"transmissionTexture", {{"index", 9}}}}}},
+          "materials[0].extensions.KHR_materials_transmission.transmissionTexture", "out of range");
   refused("factor", {{"KHR_materials_transmission", {{"transmissionFactor", 2}}}},
           "KHR_materials_transmission.transmissionFactor", "must be in [0, 1]");
   refused("index", {{"KHR_materials_ior", {{"ior", 0.5}}}}, "KHR_materials_ior.ior", "must be in [1, 1000], is 0.5");

@@ -153,6 +153,26 @@ TEST(LightTransport, GlassIsNeverSilentlyBlack) {
             "'glass' transmits, but the bounces are stated 0: no path passes through it and it shows nothing behind it");
 }
 
+// A single pane of glass with a volume behind it bends light in and never
+// out: said, whatever the bounces; a thin wall or a closed solid is not.
+TEST(LightTransport, AVolumeOfGlassThatIsNotClosedIsSaid) {
+  Scene s = unsaid(testing::singleFace({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}), "pane");
+  s.materials.front().transmission = 1.0;
+  for (bool stated : {false, true}) {
+    s.render.bouncesStated = stated;
+    const LightTransport t = choose(s);
+    ASSERT_FALSE(t.warnings.empty());
+    EXPECT_EQ(t.warnings.front().rfind("'pane' transmits into a volume, but its surface does not close around a "
+                                       "solid",
+                                       0),
+              0u)
+        << t.warnings.front();
+  }
+  s.render.bouncesStated = false;
+  s.materials.front().thinWalled = true;
+  EXPECT_TRUE(choose(s).warnings.empty());
+}
+
 TEST(LightTransport, AStatedPrefilteredEnvironmentKeepsDirectLightAndSaysWhichOptionTraces) {
   Scene s = torus();
   s.environment->methodStated = true;

@@ -31,7 +31,8 @@ inline double compensatedFurnaceError(const DfgTable& table, double minNv) {
   for (const double nv : nvs)
     for (const double roughness : roughnesses) {
       const m::BrdfParams params{table.distribution, table.geometry,  m::F_SCHLICK,    roughness * roughness,
-                                 glm::dvec3(1.0),    glm::dvec3(1.0), glm::dvec3(0.0), glm::dvec3(0.0)};
+                                 glm::dvec3(1.0),    glm::dvec3(1.0), glm::dvec3(0.0), 0.0,
+                                 glm::dvec3(0.0)};
       const double single = materials::directionalAlbedo(params, nv, 128).specular.x;
       const double factor = m::energy_compensation(params.f0, dfgLookup(table, nv, params.alpha)).x;
       const double error = std::abs(single * factor - 1);

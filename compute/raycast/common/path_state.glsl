@@ -10,8 +10,9 @@
 // What a path carries for transmission (PathState's last members).
 struct PathMedium {
   uint material;
-  uint flags;  // FACET_PATH_*
-  vec3 sigma;  // of the medium the path travels in
+  uint flags;          // FACET_PATH_*
+  float transmission;  // the vertex's, after any texture (TransmissionParams.transmission)
+  vec3 sigma;          // of the medium the path travels in
 };
 
 // The continuations of each lobe kind a path has taken, indexed by PATH_LOBE_*.
@@ -22,8 +23,8 @@ PathState pack_path_state(vec3 throughput, PathVertex x, PathMedium medium, uvec
   return PathState(throughput.x, throughput.y, throughput.z, x.position.x, x.position.y,
                    x.position.z, x.n.x, x.n.y, x.n.z, x.ng.x, x.ng.y, x.ng.z, x.v.x, x.v.y, x.v.z, p.d_model,
                    p.g_model, p.f_model, p.alpha, p.f0.x, p.f0.y, p.f0.z, p.eta.x, p.eta.y, p.eta.z, p.k.x, p.k.y,
-                   p.k.z, p.diffuse.x, p.diffuse.y, p.diffuse.z, x.specular_scale.x, x.specular_scale.y,
-                   x.specular_scale.z, medium.material, medium.flags, medium.sigma.x, medium.sigma.y,
+                   p.k.z, p.metallic, p.diffuse.x, p.diffuse.y, p.diffuse.z, x.specular_scale.x, x.specular_scale.y,
+                   x.specular_scale.z, medium.material, medium.flags, medium.transmission, medium.sigma.x, medium.sigma.y,
                    medium.sigma.z, taken.x, taken.y, taken.z, p.anisotropy, p.tangent.x, p.tangent.y,
                    p.tangent.z, p.clearcoat, p.clearcoat_alpha, p.clearcoat_normal.x, p.clearcoat_normal.y,
                    p.clearcoat_normal.z, p.sheen_color.x, p.sheen_color.y, p.sheen_color.z, p.sheen_alpha,
@@ -33,7 +34,9 @@ PathState pack_path_state(vec3 throughput, PathVertex x, PathMedium medium, uvec
 
 vec3 path_throughput(PathState s) { return vec3(s.throughputR, s.throughputG, s.throughputB); }
 
-PathMedium path_medium(PathState s) { return PathMedium(s.material, s.flags, vec3(s.sigmaR, s.sigmaG, s.sigmaB)); }
+PathMedium path_medium(PathState s) {
+  return PathMedium(s.material, s.flags, s.transmission, vec3(s.sigmaR, s.sigmaG, s.sigmaB));
+}
 
 // A material record's transmission as the shared rules take it.
 TransmissionParams transmission_params(MaterialRecord m) {
@@ -57,6 +60,7 @@ PathVertex path_vertex(PathState s, bool transmissive, TransmissionParams transm
   p.f0 = vec3(s.f0R, s.f0G, s.f0B);
   p.eta = vec3(s.etaR, s.etaG, s.etaB);
   p.k = vec3(s.kR, s.kG, s.kB);
+  p.metallic = s.metallic;
   p.diffuse = vec3(s.diffuseR, s.diffuseG, s.diffuseB);
   p.anisotropy = s.anisotropy;
   p.tangent = vec3(s.tangentX, s.tangentY, s.tangentZ);

@@ -37,7 +37,10 @@ void main() {
   PathMedium medium = path_medium(state);
   bool transmissive = TRANSMISSION == 1 && (medium.flags & FACET_PATH_TRANSMISSIVE) != 0u;
   TransmissionParams transmission;
-  if (transmissive) transmission = transmission_params(materials[medium.material]);
+  if (transmissive) {
+    transmission = transmission_params(materials[medium.material]);
+    transmission.transmission = medium.transmission;
+  }
   PathSampleKey key =
       PathSampleKey(image_pixel(path / frame.raysPerPixel), path % frame.raysPerPixel, frame.raysPerPixel, frame.pathSeed);
   PathCarry carry = PathCarry(path_throughput(state), medium.sigma, path_lobes_taken(state));

@@ -106,6 +106,7 @@ BrdfParams brdf_params(MaterialRecord m) {
   p.f0 = vec3(m.f0R, m.f0G, m.f0B);
   p.eta = vec3(m.etaR, m.etaG, m.etaB);
   p.k = vec3(m.kR, m.kG, m.kB);
+  p.metallic = 0.0;  // a textured transmissive material's, set per hit
   p.diffuse = vec3(m.diffuseR, m.diffuseG, m.diffuseB);
   p.anisotropy = ANISOTROPY == 1 ? m.anisotropy : 0.0;
   p.tangent = vec3(1.0, 0.0, 0.0);
@@ -178,6 +179,8 @@ MaterialTexels material_texels(MaterialRecord m, PatchRecord record, uint channe
   t.coat_normal_frame = f0;
   t.sheen = vec3(1.0);
   t.anisotropy = vec3(1.0);
+  t.transmission =
+      TRANSMISSION == 1 ? slot_value(m.transmissionTexture, slot_footprint(m.transmissionTexture, f0, f1)).r : 1.0;
   if (!LAYERS) return t;
   t.coat = slot_value(m.clearcoatTexture, slot_footprint(m.clearcoatTexture, f0, f1)).r;
   t.coat_roughness = slot_value(m.clearcoatRoughnessTexture, slot_footprint(m.clearcoatRoughnessTexture, f0, f1)).g;
@@ -348,7 +351,7 @@ void shade_lights(uint first, bool shaded, SurfaceAtHit s, vec3 position, vec3 v
 // vertex puts its path on the live list, which the next bounce continues.
 void store_path_state(uint camera, bool continuation, bool shaded, PathVertex x, uint material, vec3 origin) {
   vec3 throughput = continuation ? path_throughput(pathStates[camera]) : vec3(1.0);
-  PathMedium medium = PathMedium(material, 0u, vec3(0.0));
+  PathMedium medium = PathMedium(material, 0u, x.transmission.transmission, vec3(0.0));
   if (TRANSMISSION == 1) {
     if (continuation) {
       medium.sigma = path_medium(pathStates[camera]).sigma;
@@ -418,7 +421,7 @@ void main() {
     // of one invocation count against lavapipe's limit of 65535.
     uint first = firstSlot + uint(LIGHT_COUNT);
     bool sealedOff = TRANSMISSION == 1 && ENVIRONMENT != 2 && OCCLUSION == 1 &&
-                     environment_sealed_off(m.transmissive == 1u, transmission_params(m), s.outside,
+                     environment_sealed_off(m.transmissive == 1u, s.transmission, s.outside,
                                             (range.flags & FACET_OBJECT_SEALED) != 0u);
     if (shaded && !sealedOff)
       offered = shade_environment(first, image_pixel(pixel), sample_index, range.material, s.params, specular_scale,
@@ -438,6 +441,6 @@ void main() {
   if (PATHS == 1)
     store_path_state(camera, continuation, shaded,
                      PathVertex(position, s.n, s.ng, v, s.params, specular_scale,
-                                TRANSMISSION == 1 && m.transmissive == 1u, transmission_params(m), s.outside),
+                                TRANSMISSION == 1 && m.transmissive == 1u, s.transmission, s.outside),
                      range.material, ray.origin);
 }

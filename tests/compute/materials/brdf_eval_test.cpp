@@ -45,6 +45,7 @@ TEST_P(BrdfGpuParity, GlslFloatMatchesCppDouble) {
                            glm::dvec3(0.9, 0.6, 0.3),
                            glm::dvec3(1.5, 1.6, 1.7),
                            glm::dvec3(3.0, 2.5, 2.0),
+                           0.0,
                            glm::dvec3(0.2, 0.3, 0.4),
                            variant.anisotropy,
                            glm::normalize(glm::dvec3(0.8, 0.6, 0.3))};

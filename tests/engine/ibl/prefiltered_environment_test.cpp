@@ -239,7 +239,8 @@ DfgError dfgError(const DfgTable& table, double minNv) {
   for (double nv = 0.0113; nv < 0.99; nv += 0.0617)
     for (double roughness = 0.013; roughness < 1; roughness += 0.0571) {
       const m::BrdfParams params{table.distribution, table.geometry,  m::F_SCHLICK,    roughness * roughness,
-                                 glm::dvec3(1.0),    glm::dvec3(1.0), glm::dvec3(0.0), glm::dvec3(0.0)};
+                                 glm::dvec3(1.0),    glm::dvec3(1.0), glm::dvec3(0.0), 0.0,
+                                 glm::dvec3(0.0)};
       const double albedo = materials::directionalAlbedo(params, nv, 128).specular.x;
       const glm::dvec2 scaleBias = dfgLookup(table, nv, roughness * roughness);
       const double error = std::abs(scaleBias.x + scaleBias.y - albedo);
@@ -305,8 +306,9 @@ TEST(PrefilteredEnvironment, EnergyCompensationOnDemandMatchesTheTable) {
       const glm::dvec2 table = dfgLookup(env.dfg[0], nv, alpha);
       const glm::dvec2 onDemand = dfgLookupOnDemand(m::D_GGX, m::G_SMITH_GGX_CORRELATED, nv, alpha, settings);
       EXPECT_LT(testing::maxRelativeDifference(glm::dvec3(onDemand, 0.0), glm::dvec3(table, 0.0)), 1e-7);
-      m::BrdfParams params{m::D_GGX,       m::G_SMITH_GGX_CORRELATED, m::F_SCHLICK,   alpha, glm::dvec3(1.0, 0.0, 0.5),
-                           glm::dvec3(1.0), glm::dvec3(0.0),          glm::dvec3(0.0)};
+      m::BrdfParams params{
+          m::D_GGX,        m::G_SMITH_GGX_CORRELATED, m::F_SCHLICK, alpha,          glm::dvec3(1.0, 0.0, 0.5),
+          glm::dvec3(1.0), glm::dvec3(0.0),           0.0,          glm::dvec3(0.0)};
       const glm::dvec3 factor = energyCompensationOnDemand(params, nv, settings);
       EXPECT_NEAR(factor.x, 1 / (table.x + table.y), 1e-6) << nv << " " << alpha;
       EXPECT_EQ(factor.y, 1.0);

@@ -22,6 +22,20 @@ namespace m = rules::f64;
 
 glm::dvec3 viewAt(double cosTheta) { return {std::sqrt(std::max(0.0, 1 - cosTheta * cosTheta)), 0.0, cosTheta}; }
 
+// Calls sample(u, u_interface, share) at one jittered point u of each of
+// strata x strata cells of the unit square, share = 1 / their number.
+template <class Sample>
+void stratified(int strata, unsigned seed, Sample sample) {
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  const double share = 1 / (double(strata) * strata);
+  for (int i = 0; i < strata; ++i)
+    for (int j = 0; j < strata; ++j) {
+      const glm::dvec2 u((i + uniform(random)) / strata, (j + uniform(random)) / strata);
+      sample(u, uniform(random), share);
+    }
+}
+
 // Reflected and transmitted energy of the interface seen from v, over a
 // stratified grid of samples; the transmitted weight times eta^2 turns the
 // radiance BTDF back into energy.
@@ -34,20 +48,15 @@ struct Energy {
 Energy interfaceEnergy(double alpha, double eta, double transmission, bool thin, double cosTheta, int strata) {
   const glm::dvec3 v = viewAt(cosTheta);
   Energy e;
-  std::mt19937_64 random(7);
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  const double count = double(strata) * strata;
-  for (int i = 0; i < strata; ++i)
-    for (int j = 0; j < strata; ++j) {
-      const glm::dvec2 u((i + uniform(random)) / strata, (j + uniform(random)) / strata);
-      const m::DielectricSample s = m::sample_dielectric(alpha, eta, transmission, thin, kN, kN, v, u, uniform(random));
-      if (s.transmitted) {
-        e.transmitted += s.weight * (thin ? 1.0 : eta * eta) / count;
-        e.transmittedFraction += 1 / count;
-      } else {
-        e.reflected += s.weight / count;
-      }
+  stratified(strata, 7, [&](glm::dvec2 u, double uInterface, double share) {
+    const m::DielectricSample s = m::sample_dielectric(alpha, eta, transmission, thin, kN, kN, v, u, uInterface);
+    if (s.transmitted) {
+      e.transmitted += s.weight * (thin ? 1.0 : eta * eta) * share;
+      e.transmittedFraction += share;
+    } else {
+      e.reflected += s.weight * share;
     }
+  });
   return e;
 }
 
@@ -201,24 +210,67 @@ TEST(TransmissiveContinuation, DiffuseLobeAddsItsAlbedoOnTheReflectionSide) {
   p.eta = glm::dvec3(1.5);
   p.diffuse = glm::dvec3(0.6);
   m::TransmissionParams t{0.5, 1.5, false, glm::dvec3(0.0), 0.0};
-  p = m::transmissive_brdf_params(p, t, true);
+  p = m::transmissive_brdf_params(p, t, true, glm::dvec3(1.0), 0.0);
   EXPECT_EQ(p.diffuse, glm::dvec3(0.3));
   const glm::dvec3 v = viewAt(0.8);
   double reflected = 0, transmitted = 0;
-  const int strata = 700;
-  std::mt19937_64 random(5);
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  for (int i = 0; i < strata; ++i)
-    for (int j = 0; j < strata; ++j) {
-      const glm::dvec2 u((i + uniform(random)) / strata, (j + uniform(random)) / strata);
-      const m::TransmissiveContinuation c = m::continue_path_transmissive(p, t, kN, kN, v, u, uniform(random));
-      (c.transmitted ? transmitted : reflected) += c.weight.x / (double(strata) * strata);
-    }
+  stratified(700, 5, [&](glm::dvec2 u, double uInterface, double share) {
+    const m::TransmissiveContinuation c = m::continue_path_transmissive(p, t, kN, kN, v, u, uInterface);
+    (c.transmitted ? transmitted : reflected) += c.weight.x * share;
+  });
   const Energy dielectric = interfaceEnergy(0.2, 1.5, 0.5, false, 0.8, 700);
   std::printf("mixed: reflected %.5f (dielectric %.5f + diffuse 0.3), transmitted x eta^2 %.5f (dielectric %.5f)\n",
               reflected, dielectric.reflected, transmitted * 2.25, dielectric.transmitted);
   EXPECT_NEAR(reflected, dielectric.reflected + 0.3, 5e-3);
   EXPECT_NEAR(transmitted * 2.25, dielectric.transmitted, 5e-3);
+}
+
+// glTF's mix(dielectric, metal, metallic) over a transmissive material
+// (KHR_materials_transmission): each colour channel transmits (1 - metallic)
+// base of what the bare dielectric transmits, and a material all metal
+// reflects what the opaque metal of F(0) = base reflects, transmitting none.
+TEST(TransmissiveContinuation, TheBaseColourTintsTheTransmissionAndAMetalsShareStaysOpaque) {
+  const glm::dvec3 base(0.2, 0.5, 0.9);
+  const glm::dvec3 v = viewAt(0.8);
+  m::TransmissionParams t{1.0, 1.5, false, glm::dvec3(0.0), 0.0};
+  const auto integrate = [&](double metallic, bool transmissive) {
+    m::BrdfParams p{};
+    p.d_model = m::D_GGX;
+    p.g_model = m::G_SMITH_GGX_CORRELATED;
+    p.f_model = m::F_SCHLICK;
+    p.alpha = 0.2;
+    p.f0 = base;
+    p.eta = glm::dvec3(1.5);
+    p.diffuse = base * (1 - metallic);
+    if (transmissive) p = m::transmissive_brdf_params(p, t, true, base, metallic);
+    std::vector<Energy> e(3);
+    stratified(600, 11, [&](glm::dvec2 u, double uInterface, double share) {
+      glm::dvec3 weight;
+      bool transmitted = false;
+      if (transmissive) {
+        const m::TransmissiveContinuation c = m::continue_path_transmissive(p, t, kN, kN, v, u, uInterface);
+        weight = c.weight, transmitted = c.transmitted;
+      } else {
+        weight = m::continue_path(p, kN, kN, v, glm::dvec3(1.0), u).weight;
+      }
+      for (int c = 0; c < 3; ++c) {
+        Energy& channel = e[std::size_t(c)];
+        (transmitted ? channel.transmitted : channel.reflected) += weight[c] * share;
+      }
+    });
+    return e;
+  };
+  const Energy dielectric = interfaceEnergy(0.2, 1.5, 1.0, false, 0.8, 600);
+  const std::vector<Energy> half = integrate(0.5, true);
+  const std::vector<Energy> metal = integrate(1.0, true), opaque = integrate(1.0, false);
+  for (int c = 0; c < 3; ++c) {
+    std::printf("channel %d: transmitted x eta^2 %.5f (expected %.5f); all metal reflects %.5f, opaque metal %.5f\n", c,
+                half[std::size_t(c)].transmitted * 2.25, 0.5 * base[c] * dielectric.transmitted,
+                metal[std::size_t(c)].reflected, opaque[std::size_t(c)].reflected);
+    EXPECT_NEAR(half[std::size_t(c)].transmitted * 2.25, 0.5 * base[c] * dielectric.transmitted, 5e-3) << c;
+    EXPECT_EQ(metal[std::size_t(c)].transmitted, 0.0) << c;
+    EXPECT_NEAR(metal[std::size_t(c)].reflected, opaque[std::size_t(c)].reflected, 5e-3) << c;
+  }
 }
 
 }  // namespace

@@ -41,7 +41,7 @@ m::PathVertex glass(bool outside) {
   x.transmissive = true;
   x.transmission = {1.0, 1.5, false, glm::dvec3(0.5, 1.0, 2.0), 0.0};
   x.outside = outside;
-  x.params = m::transmissive_brdf_params(x.params, x.transmission, outside);
+  x.params = m::transmissive_brdf_params(x.params, x.transmission, outside, glm::dvec3(1.0), 0.0);
   return x;
 }
 

@@ -40,7 +40,7 @@ m::MaterialTexels emptyTexels() {
   const m::TextureFootprint frame{{0.5, 0.5}, {1, 0}, {0, 1}, {1, 0, 0}, {0, 1, 0}, 0.0, 1.0};
   m::MaterialTexels t{};
   t.base = t.metallic_roughness = t.normal = t.emission = t.coat_normal = t.sheen = t.anisotropy = glm::dvec3(1.0);
-  t.occlusion = t.coat = t.coat_roughness = 1.0;
+  t.occlusion = t.coat = t.coat_roughness = t.transmission = 1.0;
   t.normal_frame = t.coat_normal_frame = frame;
   return t;
 }
@@ -79,13 +79,43 @@ TEST(SurfaceAtHit, ATransmissiveInterfaceIsTakenFromTheSideTheEyeIsOn) {
     const m::FacingNormals facing = m::facing_normals(kN, kN, v);
     m::BrdfParams expected = h.params;
     expected.clearcoat_normal = facing.n;
-    expected = m::transmissive_brdf_params(expected, h.transmission, vz > 0);
+    expected = m::transmissive_brdf_params(expected, h.transmission, vz > 0, glm::dvec3(1.0), 0.0);
     const m::SurfaceAtHit s = m::surface_at_hit(h, facing, v, m::HitPartials{});
     EXPECT_EQ(s.outside, vz > 0);
     EXPECT_EQ(s.params.eta, expected.eta) << "v.z " << vz;
     EXPECT_EQ(s.params.diffuse, expected.diffuse) << "v.z " << vz;
     EXPECT_EQ(s.params.f_model, expected.f_model) << "v.z " << vz;
   }
+}
+
+// glTF: the transmission texture scales the factor; the base colour (factor
+// times texel) is the metal's F(0) and the tint; where the metallic texel is
+// 1 the surface reflects as the opaque metal does.
+TEST(SurfaceAtHit, ATexturedTransmissiveMaterialTakesItsShareTintAndMetalPerHit) {
+  const glm::dvec3 v = glm::normalize(glm::dvec3(0.1, 0.2, 1));
+  const glm::dvec3 l = glm::normalize(glm::dvec3(-0.4, 0.1, 1));
+  m::HitMaterial h = untextured(plastic());
+  h.textured = true;
+  h.factors = {{0.8, 0.6, 0.4}, 1.0, 0.5, false, 1.0, 1.0, false, false, 1.0, false};
+  h.texels = emptyTexels();
+  h.texels.base = glm::dvec3(0.5);
+  h.texels.transmission = 0.5;
+  h.texels.metallic_roughness = glm::dvec3(1.0, 1.0, 0.0);
+  h.transmissive = true;
+  h.transmission = {0.8, 1.5, false, glm::dvec3(0.0), 0.0};
+  const m::SurfaceAtHit glass = m::surface_at_hit(h, m::facing_normals(kN, kN, v), v, flatPartials());
+  EXPECT_EQ(glass.transmission.transmission, 0.4);
+  EXPECT_EQ(glass.params.f0, glm::dvec3(0.4, 0.3, 0.2));
+  EXPECT_EQ(glass.params.metallic, 0.0);
+  EXPECT_EQ(glass.params.f_model, m::F_DIELECTRIC);
+
+  h.texels.metallic_roughness = glm::dvec3(1.0);
+  const m::SurfaceAtHit metal = m::surface_at_hit(h, m::facing_normals(kN, kN, v), v, flatPartials());
+  EXPECT_EQ(metal.params.metallic, 1.0);
+  EXPECT_EQ(m::dielectric_transmission(metal.params, metal.transmission), 0.0);
+  const m::BrdfParams opaque = m::metallic_roughness_params(h.params, glm::dvec3(0.4, 0.3, 0.2), 1.0, 0.5);
+  const glm::dvec3 expected = m::brdf_evaluate(opaque, kN, l, v), got = m::brdf_evaluate(metal.params, kN, l, v);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], expected[c], 1e-15 * expected[c]) << c;
 }
 
 TEST(SurfaceAtHit, EmptySlotsLeaveTheGltfFactorsAndANormalMapTurnsTheBaseButNotTheCoat) {
