@@ -33,7 +33,7 @@ glm::dvec3 tracePath(const PathScene& scene, const ShadedVertex& first, const m:
       break;
     }
     ++counts.hits;
-    carry.throughput *= m::beer_lambert(carry.sigma, glm::length(hit->vertex.position - ray.origin));
+    carry.throughput *= m::segment_transmittance(carry.sigma, vertex.position, hit->vertex.position);
     radiance += carry.throughput * hit->radiance;
     vertex = hit->vertex;
   }

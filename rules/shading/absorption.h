@@ -23,4 +23,12 @@ FACET_FN vec3 beer_lambert(vec3 sigma, real distance) {
   return t;
 }
 
+// What a path keeps over its segment inside a medium of absorption sigma,
+// from the vertex it left to the one it reached: measured between the two
+// points, not from the ray's origin, which the leaving offset moved inside
+// by an amount that grows with the scene's distance from the eye.
+FACET_FN vec3 segment_transmittance(vec3 sigma, vec3 left, vec3 reached) {
+  return beer_lambert(sigma, length(reached - left));
+}
+
 #endif

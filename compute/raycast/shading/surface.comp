@@ -349,13 +349,14 @@ void shade_lights(uint first, bool shaded, SurfaceAtHit s, vec3 position, vec3 v
 // takes Beer-Lambert's factor of the medium it crossed; the counts per lobe
 // kind travel with the path (the camera ray's vertex has taken none). A shaded
 // vertex puts its path on the live list, which the next bounce continues.
-void store_path_state(uint camera, bool continuation, bool shaded, PathVertex x, uint material, vec3 origin) {
+void store_path_state(uint camera, bool continuation, bool shaded, PathVertex x, uint material) {
   vec3 throughput = continuation ? path_throughput(pathStates[camera]) : vec3(1.0);
   PathMedium medium = PathMedium(material, 0u, x.transmission.transmission, vec3(0.0));
   if (TRANSMISSION == 1) {
     if (continuation) {
       medium.sigma = path_medium(pathStates[camera]).sigma;
-      throughput *= beer_lambert(medium.sigma, length(x.position - origin));
+      PathState left = pathStates[camera];
+      throughput *= segment_transmittance(medium.sigma, vec3(left.positionX, left.positionY, left.positionZ), x.position);
     }
     medium.flags = (x.transmissive ? FACET_PATH_TRANSMISSIVE : 0u) | (x.outside ? FACET_PATH_OUTSIDE : 0u);
   }
@@ -442,5 +443,5 @@ void main() {
     store_path_state(camera, continuation, shaded,
                      PathVertex(position, s.n, s.ng, v, s.params, specular_scale,
                                 TRANSMISSION == 1 && m.transmissive == 1u, s.transmission, s.outside),
-                     range.material, ray.origin);
+                     range.material);
 }
