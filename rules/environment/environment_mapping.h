@@ -19,9 +19,12 @@ FACET_FN vec3 environment_from_map(vec3 d, real cos_rotation, real sin_rotation)
 }
 
 // theta from atan2 rather than acos(d.y): well conditioned at the poles,
-// and lavapipe's acos is far less accurate than its atan.
+// and lavapipe's acos is far less accurate than its atan. At a pole every
+// longitude is the same direction; GLSL leaves atan(0, 0) undefined and C++
+// takes it from the zeros' signs, so both read u = 1/2 there.
 FACET_FN vec2 environment_uv(vec3 d) {
-  real u = real(0.5) + atan(d.x, -d.z) * (real(0.5) * INV_PI);
+  bool pole = d.x == real(0) && d.z == real(0);
+  real u = pole ? real(0.5) : real(0.5) + atan(d.x, -d.z) * (real(0.5) * INV_PI);
   real v = atan(sqrt(d.x * d.x + d.z * d.z), d.y) * INV_PI;
   return vec2(u, v);
 }

@@ -24,6 +24,7 @@
 #include "scenes/scene_file.h"
 #include "scenes/input_error.h"
 #include "scenes/scene_geometry.h"
+#include "scenes/studio_environment.h"
 
 namespace facet {
 namespace {
@@ -119,6 +120,22 @@ Image expectParity(gpu::Device& device, const scene::Scene& scene) {
   EXPECT_TRUE(parity.pass) << describe(parity);
   EXPECT_GT(parity.covered, 50u);
   return gpu;
+}
+
+// A fully rough lobe reads the prefiltered environment about the normal
+// itself: on a floor facing exactly +Y, the map's pole, whose longitude
+// both backends must take alike (GLSL leaves atan(0, 0) undefined).
+class EnvironmentPole : public gpu::testing::GpuTest {};
+
+TEST_F(EnvironmentPole, AFullyRoughFloorFacingUpReadsItAsTheCpuReferenceDoes) {
+  scene::Scene scene = scene::loadScene(std::filesystem::path(FACET_TEST_DATA_DIR) / "rough_metal_floor.gltf");
+  ASSERT_EQ(scene.materials.front().alpha, 1.0);
+  scene.environment = scene::studioEnvironment();
+  scene.camera.eye = {0.3, 2.0, 3.0};
+  scene.camera.target = {0.0, 0.0, 0.0};
+  scene.render.width = 64;
+  scene.render.height = 48;
+  expectParity(device_, scene);
 }
 
 // Precise anywhere: the GPU works relative to the eye, so a scene far from
