@@ -56,6 +56,14 @@ struct MaterialTextures {
   TextureSlot anisotropyTexture;
   // KHR_materials_transmission's texture: R scales the transmission factor.
   TextureSlot transmissionTexture;
+  // The dielectric's F(0) (rules/shading/textured_material.h,
+  // dielectric_specular_f0): F(0) of KHR_materials_ior's index times
+  // KHR_materials_specular's colour factor, its factor, and its textures,
+  // specularColorTexture's RGB (sRGB) and specularTexture's A.
+  glm::dvec3 specularColor{0.04};
+  double specular = 1.0;
+  TextureSlot specularTexture;
+  TextureSlot specularColorTexture;
 };
 
 struct Material {

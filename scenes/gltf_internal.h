@@ -138,12 +138,22 @@ void applyAnisotropy(const tinygltf::Material& gltf, const std::string& material
 bool readLayerTextures(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
                        TextureTable& textures, materials::MaterialTextures& t);
 
+// The dielectric's F(0) factors of KHR_materials_ior and
+// KHR_materials_specular: F(0) of the index × specularColorFactor, and
+// specularFactor (rules/shading/textured_material.h, dielectric_specular_f0).
+struct DielectricSpecular {
+  glm::dvec3 color;
+  double factor;
+};
+
 // gltf_transmission.cpp: KHR_materials_ior, KHR_materials_specular,
 // KHR_materials_transmission and KHR_materials_volume of `gltf` (field
 // `material`) into `m`, whose base colour factor and metallic factor are
-// `base` and `metallic`.
-void applyTransmission(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
-                       const glm::dvec3& base, double metallic, materials::Material& m);
+// `base` and `metallic`; returns the dielectric's F(0) factors, which a
+// textured material applies per hit.
+DielectricSpecular applyTransmission(const tinygltf::Material& gltf, const std::string& material,
+                                     const GltfReader& reader, const glm::dvec3& base, double metallic,
+                                     materials::Material& m);
 
 // gltf_meshes.cpp: adds `primitives` (indices into the mesh's, which share
 // one material) of one mesh instance as one welded cage, with their NORMALs

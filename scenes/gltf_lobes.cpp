@@ -136,9 +136,14 @@ bool readLayerTextures(const tinygltf::Material& gltf, const std::string& materi
   if (const tinygltf::Value* x = extension(gltf, "KHR_materials_transmission"))
     t.transmissionTexture = extensionSlot(*x, "transmissionTexture", TextureEncoding::Linear,
                                           at("KHR_materials_transmission"), reader, textures);
+  if (const tinygltf::Value* s = extension(gltf, "KHR_materials_specular")) {
+    const std::string where = at("KHR_materials_specular");
+    t.specularTexture = extensionSlot(*s, "specularTexture", TextureEncoding::Linear, where, reader, textures);
+    t.specularColorTexture = extensionSlot(*s, "specularColorTexture", TextureEncoding::Srgb, where, reader, textures);
+  }
   for (const materials::TextureSlot* slot :
        {&t.clearcoatTexture, &t.clearcoatRoughnessTexture, &t.clearcoatNormalTexture, &t.sheenColorTexture,
-        &t.anisotropyTexture, &t.transmissionTexture})
+        &t.anisotropyTexture, &t.transmissionTexture, &t.specularTexture, &t.specularColorTexture})
     if (slot->texture >= 0) return true;
   return false;
 }

@@ -205,7 +205,7 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
   m.diffuse = base * (1.0 - metallic);
   m.f0 = glm::mix(glm::dvec3(0.04), base, metallic);
   m.alpha = roughness * roughness;
-  applyTransmission(gltf, material, reader, base, metallic, m);
+  const DielectricSpecular dielectric = applyTransmission(gltf, material, reader, base, metallic, m);
   applyClearcoat(gltf, material, reader, m);
   applySheen(gltf, material, reader, m);
   applyAnisotropy(gltf, material, reader, m);
@@ -228,6 +228,8 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
   t.baseColor = base;
   t.metallic = metallic;
   t.roughness = roughness;
+  t.specularColor = dielectric.color;
+  t.specular = dielectric.factor;
   const auto& b = pbr.baseColorTexture;
   t.baseColorTexture =
       textures.slot(b.extensions, b.index, b.texCoord, TextureEncoding::Srgb, where + ".baseColorTexture");
@@ -254,11 +256,6 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
   // A transmissive material's base colour tints what it transmits and its
   // metallic mixes a metal over it, per hit (docs/gltf.md).
   if (vertexColours || layered || materials::isTransmissive(m)) m.textures = t;
-  // The textured rule derives F(0) per hit from the base colour and metallic alone.
-  for (const char* name : {"KHR_materials_ior", "KHR_materials_specular"})
-    if (m.textures && !materials::isTransmissive(m) && extension(gltf, name))
-      reader.warn(material + ".extensions." + name,
-                  "is not applied to a material that reads textures or vertex colours: its dielectric F(0) is 0.04");
   return m;
 }
 

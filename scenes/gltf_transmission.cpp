@@ -32,10 +32,12 @@ const tinygltf::Value* extension(const tinygltf::Material& gltf, const char* nam
 
 namespace {
 
-// KHR_materials_specular: min(F(0) of the index × specularColorFactor, 1) ×
-// specularFactor, the specification's dielectric_f0. Its F(90) would be
-// specularFactor; facet's Schlick F keeps 1 (a warning below 1).
-glm::dvec3 specularF0(const tinygltf::Value& e, const std::string& at, const GltfReader& reader, glm::dvec3 f0) {
+// KHR_materials_specular's factors over F(0) of the index `f0`: their
+// dielectric_f0 is min(color, 1) × factor (times the textures per hit). Its
+// F(90) would be specularFactor; facet's Schlick F keeps 1 (a warning
+// below 1).
+DielectricSpecular specularFactors(const tinygltf::Value& e, const std::string& at, const GltfReader& reader,
+                                   glm::dvec3 f0) {
   const double factor = member(e, "specularFactor", 1.0, at, reader);
   if (const std::optional<std::string> rule = rangeRule(factor, 0.0, 1.0)) reader.fail(at + ".specularFactor", *rule);
   glm::dvec3 colour(1.0);
@@ -51,15 +53,14 @@ glm::dvec3 specularF0(const tinygltf::Value& e, const std::string& at, const Glt
   }
   if (factor < 1.0)
     reader.warn(at + ".specularFactor", "below 1 scales F(0) only; F(90) stays 1 (facet's Schlick F has no F(90))");
-  for (const char* slot : {"specularTexture", "specularColorTexture"})
-    if (e.Has(slot)) reader.warn(at + "." + slot, "is not read; the factors apply alone");
-  return glm::min(f0 * colour, glm::dvec3(1.0)) * factor;
+  return {f0 * colour, factor};
 }
 
 }  // namespace
 
-void applyTransmission(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
-                       const glm::dvec3& base, double metallic, materials::Material& m) {
+DielectricSpecular applyTransmission(const tinygltf::Material& gltf, const std::string& material,
+                                     const GltfReader& reader, const glm::dvec3& base, double metallic,
+                                     materials::Material& m) {
   const std::string at = material + ".extensions.";
   double ior = 1.5;
   const tinygltf::Value* iorExtension = extension(gltf, "KHR_materials_ior");
@@ -70,18 +71,18 @@ void applyTransmission(const tinygltf::Material& gltf, const std::string& materi
                   "must be in [1, " + formatNumber(materials::kMaxOpticalConstant) + "], is " + formatNumber(ior));
   }
   // The dielectric's F(0) from its index, in place of 0.04 (= index 1.5).
-  glm::dvec3 dielectricF0(std::pow((ior - 1) / (ior + 1), 2.0));
+  DielectricSpecular dielectric{glm::dvec3(std::pow((ior - 1) / (ior + 1), 2.0)), 1.0};
   const tinygltf::Value* specular = extension(gltf, "KHR_materials_specular");
-  if (specular) dielectricF0 = specularF0(*specular, at + "KHR_materials_specular", reader, dielectricF0);
-  if (iorExtension || specular) m.f0 = glm::mix(dielectricF0, base, metallic);
+  if (specular) dielectric = specularFactors(*specular, at + "KHR_materials_specular", reader, dielectric.color);
+  if (iorExtension || specular) m.f0 = glm::mix(glm::min(dielectric.color, 1.0) * dielectric.factor, base, metallic);
   const tinygltf::Value* t = extension(gltf, "KHR_materials_transmission");
-  if (!t) return;
+  if (!t) return dielectric;
   const std::string where = at + "KHR_materials_transmission";
   m.transmission = member(*t, "transmissionFactor", 0.0, where, reader);
   if (const std::optional<std::string> rule =
           factorRule(m.transmission, materials::bounded(&materials::MaterialSpec::transmission)))
     reader.fail(where + ".transmissionFactor", *rule);
-  if (!materials::isTransmissive(m)) return;
+  if (!materials::isTransmissive(m)) return dielectric;
   if (specular)
     reader.warn(at + "KHR_materials_specular",
                 "is not applied to a transmissive material: its Fresnel is the dielectric's of its index");
@@ -89,7 +90,7 @@ void applyTransmission(const tinygltf::Material& gltf, const std::string& materi
   m.eta = glm::dvec3(ior);
   m.thinWalled = true;  // glTF: without a volume, the surface is thin-walled
   const tinygltf::Value* v = extension(gltf, "KHR_materials_volume");
-  if (!v) return;
+  if (!v) return dielectric;
   const std::string volume = at + "KHR_materials_volume";
   // thicknessTexture only helps a rasterizer guess the path inside; facet traces it.
   const double thickness = member(*v, "thicknessFactor", 0.0, volume, reader);
@@ -109,6 +110,7 @@ void applyTransmission(const tinygltf::Material& gltf, const std::string& materi
       m.attenuationColor[i] = value;
     }
   }
+  return dielectric;
 }
 
 }  // namespace facet::scene::detail

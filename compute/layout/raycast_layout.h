@@ -49,13 +49,11 @@ struct ObjectRange {
 const uint FACET_OBJECT_CULL_BACK_FACES = 1u;
 // The object passes over where its alpha is below its cutoff.
 const uint FACET_OBJECT_CUTOUT = 2u;
-// The preview's ground in the paths (rules/shading/shadow_catcher.h): camera
-// rays pass over it, continuation rays find the background it catches
-// shadows on.
+// The preview's ground in the paths (rules/shading/shadow_catcher.h): camera rays pass over it,
+// continuation rays find the background it catches shadows on.
 const uint FACET_OBJECT_SHADOW_CATCHER = 4u;
-// Every ray from inside the object crosses its surface (scene::sealsInside):
-// where its material is a solid's, the environment cannot reach its inside
-// (environment_sealed_off).
+// Every ray from inside the object crosses its surface (scene::sealsInside): where its material
+// is a solid's, the environment cannot reach its inside (environment_sealed_off).
 const uint FACET_OBJECT_SEALED = 8u;
 // The preview's holdout (scene::Object::holdout): camera rays that hit the
 // object see black and end there; continuation rays see it as it is.
@@ -156,9 +154,8 @@ struct PathState {
   float specularG;
   float specularB;
   // Transmission (docs/rendering.md, "Transmission and absorption"): the
-  // vertex's material, FACET_PATH_* flags, its transmission after any
-  // texture, and the absorption coefficient of the medium the path travels
-  // in (0 in air).
+  // vertex's material, FACET_PATH_* flags and transmission after its
+  // texture, and the absorption coefficient of the medium the path is in (0 in air).
   uint material;
   uint flags;
   float transmission;
@@ -208,9 +205,8 @@ const uint FACET_PATH_TRANSMISSIVE = 1u;
 const uint FACET_PATH_OUTSIDE = 2u;
 const uint FACET_PATH_TRANSMITTED = 4u;
 
-// An exact cell that Newton did not settle, deferred to the fallback pass
-// (compute/raycast/finish/fallback.comp): the ray (camera or shadow ray index) and
-// the cell; for camera rays the fallback adds the closest root it found.
+// An exact cell that Newton did not settle, deferred to the fallback pass (compute/raycast/finish/fallback.comp):
+// the ray (camera or shadow ray index) and the cell; for camera rays the fallback adds the closest root it found.
 struct FallbackRecord {
   uint ray;
   uint cell;  // its reference (compute/layout/wide_bvh.h)
@@ -274,9 +270,8 @@ struct TextureSlotRecord {
   uint texCoord;  // the set of texture coordinates it reads, 0 or 1
 };
 
-// A material as BrdfParams wants it (rules/shading/brdf.h), the
-// radiance it emits, and, when `textured`, the glTF parameters its textures
-// modulate per hit (rules/shading/textured_material.h).
+// A material as BrdfParams wants it (rules/shading/brdf.h), the radiance it emits, and, when
+// `textured`, the glTF parameters its textures modulate per hit (rules/shading/textured_material.h).
 struct MaterialRecord {
   int dModel;
   int gModel;
@@ -306,6 +301,10 @@ struct MaterialRecord {
   float roughness;
   float normalScale;
   float occlusionStrength;
+  float specularR;  // KHR_materials_specular's, where `textured` is 1: F(0) of the index x specularColorFactor
+  float specularG;
+  float specularB;
+  float specular;  // specularFactor
   TextureSlotRecord baseColorTexture;
   TextureSlotRecord metallicRoughnessTexture;
   TextureSlotRecord normalTexture;
@@ -356,6 +355,8 @@ struct MaterialRecord {
   float clearcoatNormalScale;
   TextureSlotRecord sheenColorTexture;
   TextureSlotRecord anisotropyTexture;
+  TextureSlotRecord specularTexture;       // A scales `specular`
+  TextureSlotRecord specularColorTexture;  // RGB (sRGB) scales specularR, G, B
 };
 
 // What the camera-side kernels need, one uniform block (std140 agrees: all

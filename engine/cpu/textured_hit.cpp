@@ -34,6 +34,8 @@ m::MaterialTexels materialTexels(const scene::SubdivisionSurface& surface, const
   texels.sheen = glm::dvec3(value(t.sheenColorTexture));
   texels.anisotropy = glm::dvec3(value(t.anisotropyTexture));
   texels.transmission = value(t.transmissionTexture).r;
+  texels.specular_color = glm::dvec3(value(t.specularColorTexture));
+  texels.specular = value(t.specularTexture).a;
   return texels;
 }
 
@@ -49,6 +51,8 @@ m::TexturedFactors texturedFactors(const materials::MaterialTextures& t) {
   f.coat_normal_mapped = t.clearcoatNormalTexture.texture >= 0;
   f.coat_normal_scale = t.clearcoatNormalScale;
   f.anisotropy_mapped = t.anisotropyTexture.texture >= 0;
+  f.specular_color = t.specularColor;
+  f.specular = t.specular;
   return f;
 }
 

@@ -41,6 +41,6 @@ static_assert(sizeof(facet::gpu_layout::PathState) == 260);
 static_assert(sizeof(facet::gpu_layout::HitRecord) == 32);
 static_assert(sizeof(facet::gpu_layout::LightRecord) == 48);
 static_assert(sizeof(facet::gpu_layout::TextureSlotRecord) == 32);
-static_assert(sizeof(facet::gpu_layout::MaterialRecord) == 580);
+static_assert(sizeof(facet::gpu_layout::MaterialRecord) == 660);
 static_assert(sizeof(facet::gpu_layout::FrameParams) == 204);
 static_assert(sizeof(facet::gpu_layout::PixelAovs) == 64);

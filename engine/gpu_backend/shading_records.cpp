@@ -62,6 +62,9 @@ std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
       r.roughness = float(t->roughness);
       r.normalScale = float(t->normalScale);
       r.occlusionStrength = float(t->occlusionStrength);
+      r.specularR = float(t->specularColor.r), r.specularG = float(t->specularColor.g);
+      r.specularB = float(t->specularColor.b);
+      r.specular = float(t->specular);
     }
     r.baseColorTexture = textureSlotRecord(t ? t->baseColorTexture : none);
     r.metallicRoughnessTexture = textureSlotRecord(t ? t->metallicRoughnessTexture : none);
@@ -75,6 +78,8 @@ std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
     r.sheenColorTexture = textureSlotRecord(t ? t->sheenColorTexture : none);
     r.anisotropyTexture = textureSlotRecord(t ? t->anisotropyTexture : none);
     r.transmissionTexture = textureSlotRecord(t ? t->transmissionTexture : none);
+    r.specularTexture = textureSlotRecord(t ? t->specularTexture : none);
+    r.specularColorTexture = textureSlotRecord(t ? t->specularColorTexture : none);
     const int table = compensation.tableOfMaterial[i];
     r.compensationTable =
         table == ibl::CompensationTables::kNone ? layout::FACET_NO_COMPENSATION : std::uint32_t(table);

@@ -42,6 +42,8 @@ struct TexturedFactors {
   bool coat_normal_mapped;
   real coat_normal_scale;
   bool anisotropy_mapped;
+  vec3 specular_color;  // KHR_materials_specular: F(0) of the index x specularColorFactor
+  real specular;        // specularFactor
 };
 
 // Each texture slot's value at a hit (1 where the slot is empty, or where the
@@ -61,6 +63,8 @@ struct MaterialTexels {
   vec3 sheen;
   vec3 anisotropy;
   real transmission;
+  vec3 specular_color;  // sRGB
+  real specular;        // A of specularTexture
 };
 
 // What a backend fetched of the material at a hit.
@@ -115,9 +119,11 @@ FACET_FN SurfaceAtHit surface_at_hit(HitMaterial m, FacingNormals facing, vec3 v
   if (m.textured) {
     TexturedFactors f = m.factors;
     MaterialTexels t = m.texels;
-    TexturedSurface textured = textured_surface(
-        s.params, s.n, t.normal_frame, f.base, f.metallic, f.roughness, f.normal_scale, f.occlusion_strength,
-        m.emission, t.base, t.metallic_roughness, f.normal_mapped, t.normal, t.occlusion, t.emission, f.unlit);
+    TexturedSurface textured =
+        textured_surface(s.params, s.n, t.normal_frame, f.base, f.metallic, f.roughness,
+                         dielectric_specular_f0(f.specular_color, f.specular, t.specular_color, t.specular),
+                         f.normal_scale, f.occlusion_strength, m.emission, t.base, t.metallic_roughness,
+                         f.normal_mapped, t.normal, t.occlusion, t.emission, f.unlit);
     textured = textured_layers(textured, t.coat_normal_frame, t.coat, t.coat_roughness, f.coat_normal_mapped,
                                t.coat_normal, f.coat_normal_scale, t.sheen, f.anisotropy_mapped, t.anisotropy);
     s.params = textured.params;

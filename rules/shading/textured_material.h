@@ -51,12 +51,23 @@ FACET_FN SlotLookup slot_lookup(TextureFootprint f, vec2 offset, real cos_rotati
 }
 
 // glTF's metallic-roughness mapping (docs/shading.md): base colour and
-// metallic to c_diff and F(0), perceptual roughness to alpha.
-FACET_FN BrdfParams metallic_roughness_params(BrdfParams p, vec3 base, real metallic, real roughness) {
+// metallic to c_diff and F(0) = mix(the dielectric's, base, metallic),
+// perceptual roughness to alpha. The dielectric's F(0) is 0.04 unless
+// KHR_materials_ior or KHR_materials_specular say otherwise
+// (dielectric_specular_f0).
+FACET_FN BrdfParams metallic_roughness_params(BrdfParams p, vec3 base, real metallic, real roughness,
+                                              vec3 dielectric_f0) {
   p.diffuse = base * (real(1) - metallic);
-  p.f0 = mix(vec3(real(0.04), real(0.04), real(0.04)), base, metallic);
+  p.f0 = mix(dielectric_f0, base, metallic);
   p.alpha = roughness * roughness;
   return p;
+}
+
+// KHR_materials_specular's dielectric F(0) at a hit: min(F(0) of the index x
+// specularColorFactor x specularColorTexture, 1) x specularFactor x
+// specularTexture's alpha; `color_factor` is the first two's product.
+FACET_FN vec3 dielectric_specular_f0(vec3 color_factor, real factor, vec3 color_texel, real texel) {
+  return min(color_factor * color_texel, vec3(real(1), real(1), real(1))) * (factor * texel);
 }
 
 // The normal a tangent-space normal map's `texel` (RGB in [0, 1]) gives on a
@@ -103,13 +114,13 @@ struct TexturedSurface {
 // An `unlit` material (KHR_materials_unlit, docs/gltf.md) emits its base
 // colour instead; it reflects nothing by its models, not by this rule.
 FACET_FN TexturedSurface textured_surface(BrdfParams p, vec3 n, TextureFootprint f, vec3 base_factor,
-                                          real metallic_factor, real roughness_factor, real normal_scale,
-                                          real occlusion_strength, vec3 emission_factor, vec3 base,
+                                          real metallic_factor, real roughness_factor, vec3 dielectric_f0,
+                                          real normal_scale, real occlusion_strength, vec3 emission_factor, vec3 base,
                                           vec3 metallic_roughness, bool normal_mapped, vec3 normal_texel,
                                           real occlusion, vec3 emission, bool unlit) {
   TexturedSurface surface;
   surface.params = metallic_roughness_params(p, base_factor * base, metallic_factor * metallic_roughness.z,
-                                             roughness_factor * metallic_roughness.y);
+                                             roughness_factor * metallic_roughness.y, dielectric_f0);
   surface.n = normal_mapped ? mapped_normal(n, f.dp_ds, f.dp_dt, f.duv_ds, f.duv_dt, normal_texel, normal_scale) : n;
   surface.occlusion = occlusion_factor(occlusion, occlusion_strength);
   surface.emission = unlit ? base_factor * base : emission_factor * emission;

@@ -103,13 +103,36 @@ TEST_F(GltfMaterialExtensions, WhatSpecularCannotDoIsAWarning) {
   const nlohmann::json half = {
       {"KHR_materials_specular", {{"specularFactor", 0.5}, {"specularTexture", {{"index", 0}}}}}};
   EXPECT_THAT(loadScene(write("half", {{"extensions", half}})).warnings,
-              ElementsAre(HasSubstr("KHR_materials_specular.specularFactor: below 1 scales F(0) only; F(90) stays 1"),
-                          HasSubstr("KHR_materials_specular.specularTexture: is not read; the factors apply alone")));
+              ElementsAre(HasSubstr("KHR_materials_specular.specularFactor: below 1 scales F(0) only; F(90) stays 1")));
   nlohmann::json glass = {{"KHR_materials_specular", {{"specularFactor", 1.0}}},
                           {"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}};
   EXPECT_THAT(loadScene(write("glass", {{"extensions", glass}})).warnings,
               ElementsAre(HasSubstr("materials[0].extensions.KHR_materials_specular: is not applied to a transmissive "
                                     "material")));
+}
+
+// On a textured material the factors and the two textures give F(0) per hit:
+// the material keeps F(0) of the index times the colour factor, and the
+// factor, beside its slots.
+TEST_F(GltfMaterialExtensions, SpecularTexturesAndTheIndexShadeATexturedMaterial) {
+  nlohmann::json members = {{"extensions",
+                             {{"KHR_materials_ior", {{"ior", 2.0}}},
+                              {"KHR_materials_specular",
+                               {{"specularFactor", 1.0},
+                                {"specularColorFactor", {1.0, 0.5, 2.0}},
+                                {"specularTexture", {{"index", 0}}},
+                                {"specularColorTexture", {{"index", 0}}}}}}}};
+  members["pbrMetallicRoughness"] = {{"baseColorTexture", {{"index", 0}}}, {"metallicFactor", 0.0}};
+  const Scene scene = loadScene(write("textured", members));
+  EXPECT_THAT(scene.warnings, IsEmpty());
+  const materials::Material& m = scene.materials.at(0);
+  ASSERT_TRUE(m.textures.has_value());
+  EXPECT_NEAR(m.textures->specularColor.r, 1.0 / 9.0, 1e-15);
+  EXPECT_NEAR(m.textures->specularColor.g, 0.5 / 9.0, 1e-15);
+  EXPECT_NEAR(m.textures->specularColor.b, 2.0 / 9.0, 1e-15);
+  EXPECT_EQ(m.textures->specular, 1.0);
+  EXPECT_GE(m.textures->specularTexture.texture, 0);
+  EXPECT_GE(m.textures->specularColorTexture.texture, 0);
 }
 
 TEST_F(GltfMaterialExtensions, SpecularFactorsAreChecked) {

@@ -140,7 +140,8 @@ TexturedFactors textured_factors(MaterialRecord m) {
   return TexturedFactors(vec3(m.baseR, m.baseG, m.baseB), m.metallic, m.roughness,
                          m.normalTexture.texture != FACET_NO_TEXTURE, m.normalScale, m.occlusionStrength,
                          m.unlit == 1u, LAYERS && m.clearcoatNormalTexture.texture != FACET_NO_TEXTURE,
-                         m.clearcoatNormalScale, LAYERS && m.anisotropyTexture.texture != FACET_NO_TEXTURE);
+                         m.clearcoatNormalScale, LAYERS && m.anisotropyTexture.texture != FACET_NO_TEXTURE,
+                         vec3(m.specularR, m.specularG, m.specularB), m.specular);
 }
 
 // The footprint a slot reads: that of the coordinate set it names.
@@ -173,6 +174,8 @@ MaterialTexels material_texels(MaterialRecord m, PatchRecord record, uint channe
   t.normal = slot_value(m.normalTexture, t.normal_frame).rgb;
   t.occlusion = slot_value(m.occlusionTexture, slot_footprint(m.occlusionTexture, f0, f1)).r;
   t.emission = slot_value(m.emissiveTexture, slot_footprint(m.emissiveTexture, f0, f1)).rgb;
+  t.specular_color = slot_value(m.specularColorTexture, slot_footprint(m.specularColorTexture, f0, f1)).rgb;
+  t.specular = slot_value(m.specularTexture, slot_footprint(m.specularTexture, f0, f1)).a;
   t.coat = 1.0;
   t.coat_roughness = 1.0;
   t.coat_normal = vec3(1.0);

@@ -40,7 +40,8 @@ m::MaterialTexels emptyTexels() {
   const m::TextureFootprint frame{{0.5, 0.5}, {1, 0}, {0, 1}, {1, 0, 0}, {0, 1, 0}, 0.0, 1.0};
   m::MaterialTexels t{};
   t.base = t.metallic_roughness = t.normal = t.emission = t.coat_normal = t.sheen = t.anisotropy = glm::dvec3(1.0);
-  t.occlusion = t.coat = t.coat_roughness = t.transmission = 1.0;
+  t.occlusion = t.coat = t.coat_roughness = t.transmission = t.specular = 1.0;
+  t.specular_color = glm::dvec3(1.0);
   t.normal_frame = t.coat_normal_frame = frame;
   return t;
 }
@@ -96,7 +97,7 @@ TEST(SurfaceAtHit, ATexturedTransmissiveMaterialTakesItsShareTintAndMetalPerHit)
   const glm::dvec3 l = glm::normalize(glm::dvec3(-0.4, 0.1, 1));
   m::HitMaterial h = untextured(plastic());
   h.textured = true;
-  h.factors = {{0.8, 0.6, 0.4}, 1.0, 0.5, false, 1.0, 1.0, false, false, 1.0, false};
+  h.factors = {{0.8, 0.6, 0.4}, 1.0, 0.5, false, 1.0, 1.0, false, false, 1.0, false, glm::dvec3(0.04), 1.0};
   h.texels = emptyTexels();
   h.texels.base = glm::dvec3(0.5);
   h.texels.transmission = 0.5;
@@ -113,7 +114,8 @@ TEST(SurfaceAtHit, ATexturedTransmissiveMaterialTakesItsShareTintAndMetalPerHit)
   const m::SurfaceAtHit metal = m::surface_at_hit(h, m::facing_normals(kN, kN, v), v, flatPartials());
   EXPECT_EQ(metal.params.metallic, 1.0);
   EXPECT_EQ(m::dielectric_transmission(metal.params, metal.transmission), 0.0);
-  const m::BrdfParams opaque = m::metallic_roughness_params(h.params, glm::dvec3(0.4, 0.3, 0.2), 1.0, 0.5);
+  const m::BrdfParams opaque =
+      m::metallic_roughness_params(h.params, glm::dvec3(0.4, 0.3, 0.2), 1.0, 0.5, glm::dvec3(0.04));
   const glm::dvec3 expected = m::brdf_evaluate(opaque, kN, l, v), got = m::brdf_evaluate(metal.params, kN, l, v);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], expected[c], 1e-15 * expected[c]) << c;
 }
@@ -124,10 +126,10 @@ TEST(SurfaceAtHit, EmptySlotsLeaveTheGltfFactorsAndANormalMapTurnsTheBaseButNotT
   h.params.clearcoat = 1.0;
   h.params.clearcoat_alpha = 0.01;
   h.textured = true;
-  h.factors = {{0.8, 0.6, 0.4}, 0.25, 0.5, false, 1.0, 1.0, false, false, 1.0, false};
+  h.factors = {{0.8, 0.6, 0.4}, 0.25, 0.5, false, 1.0, 1.0, false, false, 1.0, false, glm::dvec3(0.04), 1.0};
   h.texels = emptyTexels();
   m::SurfaceAtHit s = m::surface_at_hit(h, m::facing_normals(kN, kN, v), v, flatPartials());
-  const m::BrdfParams expected = m::metallic_roughness_params(h.params, h.factors.base, 0.25, 0.5);
+  const m::BrdfParams expected = m::metallic_roughness_params(h.params, h.factors.base, 0.25, 0.5, glm::dvec3(0.04));
   EXPECT_EQ(s.params.diffuse, expected.diffuse);
   EXPECT_EQ(s.params.f0, expected.f0);
   EXPECT_EQ(s.params.alpha, expected.alpha);
@@ -146,7 +148,7 @@ TEST(SurfaceAtHit, TheTangentLiesAboutTheFinalNormalTurnedByTheRotation) {
   m::HitMaterial h = untextured(plastic());
   h.params.anisotropy = 0.8;
   h.textured = true;
-  h.factors = {{1, 1, 1}, 0.0, 0.5, true, 1.0, 1.0, false, false, 1.0, false};
+  h.factors = {{1, 1, 1}, 0.0, 0.5, true, 1.0, 1.0, false, false, 1.0, false, glm::dvec3(0.04), 1.0};
   h.texels = emptyTexels();
   h.texels.normal = {0.9, 0.5, 0.7};
   const double angle = std::numbers::pi / 2;

@@ -62,10 +62,20 @@ TEST(TextureShading, TheConesLevelOfDetailMatchesItsFootprintInTexels) {
 
 TEST(TextureShading, MetallicRoughnessMapsAsDocumented) {
   t::BrdfParams p{};
-  p = t::metallic_roughness_params(p, {0.8, 0.4, 0.2}, 0.25, 0.5);
+  p = t::metallic_roughness_params(p, {0.8, 0.4, 0.2}, 0.25, 0.5, glm::dvec3(0.04));
   EXPECT_DOUBLE_EQ(p.alpha, 0.25);
   EXPECT_NEAR(p.diffuse.r, 0.6, 1e-15);
   EXPECT_NEAR(p.f0.g, 0.04 * 0.75 + 0.4 * 0.25, 1e-15);
+}
+
+// KHR_materials_specular: the colour is capped at 1 before the factors scale it.
+TEST(TextureShading, TheSpecularTexturesScaleTheDielectricsF0) {
+  const glm::dvec3 f0 = t::dielectric_specular_f0({0.5, 0.1, 0.04}, 0.8, {4.0, 2.0, 0.5}, 0.5);
+  EXPECT_NEAR(f0.r, 0.4, 1e-15);  // min(2, 1) x 0.4
+  EXPECT_NEAR(f0.g, 0.08, 1e-15);
+  EXPECT_NEAR(f0.b, 0.008, 1e-15);
+  const t::BrdfParams p = t::metallic_roughness_params(t::BrdfParams{}, {0.8, 0.4, 0.2}, 0.5, 0.5, f0);
+  EXPECT_NEAR(p.f0.r, 0.5 * 0.4 + 0.5 * 0.8, 1e-15);
 }
 
 TEST(TextureShading, TheNormalMapsFrameFollowsTheTextureCoordinates) {
