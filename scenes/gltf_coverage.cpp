@@ -131,14 +131,6 @@ void warnOfIgnoredFeatures(const tinygltf::Model& model, const GltfReader& reade
         reader.warn(at + ".targets", "morph targets are not read; meshes render without them, whatever the weights");
     }
   if (!model.animations.empty()) reader.warn("animations", "animations are not read; the scene renders unanimated");
-  for (std::size_t i = 0; i < model.materials.size(); ++i) {
-    const tinygltf::Material& m = model.materials[i];
-    const std::string at = "materials[" + std::to_string(i) + "]";
-    if (m.alphaMode == "BLEND")
-      reader.warn(at + ".alphaMode",
-                  "BLEND is read as MASK at alphaCutoff 0.5: the surface is present where its alpha is at least 0.5 "
-                  "and absent elsewhere, never partly transparent");
-  }
 }
 
 void GltfReader::warn(const std::string& where, const std::string& what) const {

@@ -106,10 +106,11 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
                                TextureTable& textures, bool vertexColours = false);
 
 // gltf_materials.cpp: glTF's alphaMode of material `index` as an Object
-// carries it (scenes/scene.h): the cutoff (0: OPAQUE; MASK's alphaCutoff;
-// BLEND read as MASK at 0.5) and the base colour factor's alpha.
+// carries it (scenes/scene.h): the mode (MASK at a cutoff of 0 is opaque),
+// MASK's alphaCutoff and the base colour factor's alpha.
 struct GltfCutout {
-  double cutoff = 0.0;
+  AlphaMode mode = AlphaMode::Opaque;
+  double cutoff = 0.5;
   double factor = 1.0;
 };
 GltfCutout readCutout(const tinygltf::Material& gltf, std::size_t index, const GltfReader& reader);

@@ -266,7 +266,7 @@ GltfCutout readCutout(const tinygltf::Material& gltf, std::size_t index, const G
     cutout.factor = gltf.pbrMetallicRoughness.baseColorFactor[3];
   if (gltf.alphaMode == "OPAQUE") return cutout;
   if (gltf.alphaMode == "BLEND") {
-    cutout.cutoff = 0.5;
+    cutout.mode = AlphaMode::Blend;
     return cutout;
   }
   if (gltf.alphaMode != "MASK")
@@ -275,6 +275,7 @@ GltfCutout readCutout(const tinygltf::Material& gltf, std::size_t index, const G
   if (!(gltf.alphaCutoff >= 0.0 && std::isfinite(gltf.alphaCutoff)))
     reader.fail(material + ".alphaCutoff", "must be a number of at least 0, is " + formatNumber(gltf.alphaCutoff));
   cutout.cutoff = gltf.alphaCutoff;
+  if (cutout.cutoff > 0.0) cutout.mode = AlphaMode::Mask;
   return cutout;
 }
 

@@ -318,6 +318,7 @@ void addMeshObjects(Scene& scene, const tinygltf::Model& model, const tinygltf::
                                    ".texCoord is 1, but not every primitive of this mesh in that material has "
                                    "TEXCOORD_1, which it reads");
     if (material != defaultMaterialIndex) {
+      object.alphaMode = cutouts[std::size_t(material)].mode;
       object.alphaCutoff = cutouts[std::size_t(material)].cutoff;
       object.alphaFactor = cutouts[std::size_t(material)].factor;
       if (const auto& t = scene.materials[std::size_t(material)].textures) object.alphaTexture = t->baseColorTexture;

@@ -164,6 +164,9 @@ inline bool bouncesContradictEnvironment(const RenderSettings& r, const std::opt
   return environment && environment->methodStated && !pathsCountEnvironmentOnce(r.bounces, environment);
 }
 
+// How an object's alpha decides where rays find it (glTF's alphaMode).
+enum class AlphaMode { Opaque, Mask, Blend };
+
 struct Object {
   std::string name;
   ControlCage cage;  // world space
@@ -176,10 +179,12 @@ struct Object {
   EndCapBasis endCaps = EndCapBasis::Gregory;
   // glTF's doubleSided false: rays pass over the back faces (cullsBackFaces).
   bool oneSided = false;
-  // glTF's alphaMode MASK (BLEND is read as MASK at 0.5): rays pass over the
+  // glTF's alphaMode (rules/surface/cutout.h): with Mask, rays pass over the
   // surface where alphaFactor x the alpha of alphaTexture, the material's
-  // base colour slot, is below alphaCutoff (rules/surface/cutout.h); 0: opaque.
-  double alphaCutoff = 0.0;
+  // base colour slot, is below alphaCutoff; with Blend, at random with
+  // probability 1 - that alpha.
+  AlphaMode alphaMode = AlphaMode::Opaque;
+  double alphaCutoff = 0.5;
   double alphaFactor = 1.0;
   materials::TextureSlot alphaTexture;
   // The preview's ground in its paths (rules/shading/shadow_catcher.h):
@@ -193,7 +198,7 @@ struct Object {
 };
 
 // Whether rays pass over part of an object's surface by its alpha.
-inline bool hasCutout(const Object& object) { return object.alphaCutoff > 0.0; }
+inline bool hasCutout(const Object& object) { return object.alphaMode != AlphaMode::Opaque; }
 
 // Whether rays pass over an object's back faces (docs/rendering.md,
 // "One-sided surfaces"): a one-sided object's, unless its material transmits,

@@ -31,7 +31,7 @@ struct ObjectRange {
   uint firstEdgeMidpoint;  // tessellated: 4 k per patch (those of unsplit edges unused)
   uint channels;           // its face-varying channels, FACET_CHANNEL_* bits (patch_records.h)
   uint flags;              // FACET_OBJECT_* bits
-  // FACET_OBJECT_CUTOUT (rules/surface/cutout.h): the cutoff, the alpha
+  // FACET_OBJECT_CUTOUT (rules/surface/cutout.h): MASK's cutoff, the alpha
   // factor and the texture slot (a TextureSlotRecord's fields) of its alpha.
   float alphaCutoff;
   float alphaFactor;
@@ -47,16 +47,16 @@ struct ObjectRange {
 
 // The object passes over its back faces (rules/surface/back_face.h).
 const uint FACET_OBJECT_CULL_BACK_FACES = 1u;
-// The object passes over where its alpha is below its cutoff.
+// The object passes over where its alpha is below its cutoff; with FACET_OBJECT_BLEND, with probability 1 - alpha.
 const uint FACET_OBJECT_CUTOUT = 2u;
+const uint FACET_OBJECT_BLEND = 32u;
 // The preview's ground in the paths (rules/shading/shadow_catcher.h): camera rays pass over it,
 // continuation rays find the background it catches shadows on.
 const uint FACET_OBJECT_SHADOW_CATCHER = 4u;
 // Every ray from inside the object crosses its surface (scene::sealsInside): where its material
 // is a solid's, the environment cannot reach its inside (environment_sealed_off).
 const uint FACET_OBJECT_SEALED = 8u;
-// The preview's holdout (scene::Object::holdout): camera rays that hit the
-// object see black and end there; continuation rays see it as it is.
+// The preview's holdout (scene::Object::holdout): camera rays see black there and end; paths see it as it is.
 const uint FACET_OBJECT_HOLDOUT = 16u;
 
 // A ray from `origin` along `direction`, over [tMin, tMax).

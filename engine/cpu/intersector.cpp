@@ -32,12 +32,15 @@ std::unique_ptr<Intersector> objectIntersector(const scene::Scene& scene, std::s
   const bool culls = scene::cullsBackFaces(source, scene.materials[std::size_t(source.material)]);
   HitFilter filter;
   if (culls || scene::hasCutout(source))
-    filter = [culls, &source, &surface = object.surface, &textures = scene.textures](const Ray& ray,
-                                                                                     const SurfaceHit& hit) {
+    filter = [culls, index, &source, &surface = object.surface, &textures = scene.textures](const Ray& ray,
+                                                                                            const SurfaceHit& hit) {
       if (culls && rules::f64::is_back_face(ray.direction, hit.geometricNormal)) return false;
       if (!scene::hasCutout(source)) return true;
       const glm::dvec2 uv = surface.evaluateTexcoord(hit.patch, hit.u, hit.v, source.alphaTexture.texCoord).uv;
       const double alpha = scene::sampleSlot(textures, source.alphaTexture, rules::f64::cutout_footprint(uv)).a;
+      if (source.alphaMode == scene::AlphaMode::Blend)
+        return rules::f64::blend_present(source.alphaFactor * alpha, ray.passThroughKey, std::uint32_t(index),
+                                         std::uint32_t(hit.patch));
       return rules::f64::cutout_present(source.alphaFactor, alpha, source.alphaCutoff);
     };
   if (scene.render.method == scene::IntersectionMethod::Tessellated)

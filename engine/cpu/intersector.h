@@ -65,8 +65,8 @@ class TessellatedIntersector final : public Intersector {
 
 // The intersector of the scene's object `index` (its geometry `object`) by
 // the scene's method, with the filter of what its surface leaves out: a
-// one-sided object's back faces (scene::cullsBackFaces) and where its cutout's
-// alpha is below the cutoff (scene::hasCutout). The scene must outlive it.
+// one-sided object's back faces (scene::cullsBackFaces) and where its alpha
+// lets a ray through (scene::hasCutout). The scene must outlive it.
 std::unique_ptr<Intersector> objectIntersector(const scene::Scene& scene, std::size_t index,
                                                const scene::ObjectGeometry& object, const ExactSettings& settings);
 

@@ -3,6 +3,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstdint>
 #include <limits>
 
 namespace facet::cpu {
@@ -16,6 +17,9 @@ struct Ray {
   // surface they leave is not found again (tested).
   double tMin = 0.0;
   double tMax = std::numeric_limits<double>::infinity();
+  // Decides where a blended surface lets the ray through (pass_through_key,
+  // rules/surface/cutout.h).
+  std::uint32_t passThroughKey = 0;
 
   glm::dvec3 at(double t) const { return origin + t * direction; }
 };

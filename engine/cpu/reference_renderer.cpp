@@ -16,11 +16,10 @@
 #include "engine/cpu/intersector.h"
 #include "engine/cpu/path_tracer.h"
 #include "engine/cpu/punctual_light.h"
+#include "engine/cpu/reference_environment.h"
 #include "engine/cpu/textured_hit.h"
 #include "engine/ibl/compensation_tables.h"
 #include "engine/ibl/environment_lighting.h"
-#include "engine/ibl/environment_lookup.h"
-#include "engine/ibl/environment_mip_chain.h"
 #include "materials/material.h"
 #include "rules/rules.h"
 
@@ -28,13 +27,6 @@ namespace facet::cpu {
 namespace {
 
 namespace m = rules::f64;
-
-// The environment's light at a hit: what its samples offer above the
-// surface, and what of it arrives past their shadow rays.
-struct EnvironmentLight {
-  glm::dvec3 offered{0.0};
-  glm::dvec3 arriving{0.0};
-};
 
 struct SceneHit {
   SurfaceHit surface;
@@ -47,9 +39,10 @@ class ReferenceScene final : public PathScene {
                  const ibl::EnvironmentLighting* environment)
       : scene_(scene),
         geometry_(geometry),
-        environment_(environment),
+        lighting_(environment),
         compensation_(ibl::compensationTables(scene)),
         castsShadowRays_(environment && scene::castsShadowRays(*environment->environment)) {
+    if (environment) environment_.emplace(*environment);
     ExactSettings exactSettings;
     if (scene.render.exactTolerance)
       exactSettings.tolerance = *scene.render.exactTolerance * geometry.bounds.diagonal();
@@ -87,8 +80,9 @@ class ReferenceScene final : public PathScene {
     return nearest;
   }
 
-  // The nearest hit a camera ray sees: it passes over a shadow catcher.
-  std::optional<SceneHit> cameraHit(const Ray& ray) const {
+  // The nearest hit the camera ray of (pixel, sample) sees: it passes over a shadow catcher.
+  std::optional<SceneHit> cameraHit(Ray ray, std::uint32_t pixel, std::uint32_t sample) const {
+    ray.passThroughKey = m::pass_through_key(pixel, sample, environmentSeed(), m::PASS_THROUGH_NEAREST);
     std::optional<SceneHit> hit = closestHit(ray);
     if (hit && scene_.objects[std::size_t(hit->object)].shadowCatcher && !m::catcher_seen_at(1u)) return std::nullopt;
     return hit;
@@ -102,7 +96,7 @@ class ReferenceScene final : public PathScene {
   }
 
   // The scene's seed: vertex 1's environment pairs (rules/sampling/path_samples.h).
-  std::uint32_t environmentSeed() const { return environment_ ? environment_->environment->seed : 0u; }
+  std::uint32_t environmentSeed() const { return lighting_ ? lighting_->environment->seed : 0u; }
 
   // shade(), its environment pairs drawn with `seed`, and the vertex a path continues from.
   ShadedVertex shadeVertex(const SceneHit& hit, const glm::dvec3& direction, std::uint32_t pixel, std::uint32_t sample,
@@ -116,25 +110,16 @@ class ReferenceScene final : public PathScene {
     const bool catcher = scene_.objects[std::size_t(hit.object)].shadowCatcher && environment_;
     const glm::dvec3& position = hit.surface.position;
     const glm::dvec3 specularScale = ibl::specularScale(compensation_, material, s.params, glm::dot(s.n, v));
+    const VertexKey vertexKey{pixel, sample, seed, std::uint32_t(scene_.lights.size())};
     glm::dvec3 radiance = s.emission;
     // Inside a sealed solid each of the environment's shadow rays would be blocked.
     if (environment_ && !(castsShadowRays_ && m::environment_sealed_off(fetched.transmissive, s.transmission, s.outside,
                                                                         sealed_[std::size_t(hit.object)]))) {
-      EnvironmentLight environment;
-      switch (environment_->environment->method) {
-        case scene::IblMethod::Sampled:
-          environment =
-              sampledEnvironment(s.params, specularScale, position, s.n, s.ng, v, pixel, sample, seed, shadowRays);
-          break;
-        case scene::IblMethod::Prefiltered:
-          environment.arriving = environment.offered =
-              prefilteredEnvironment(s.params, specularScale, material, s.n, v);
-          break;
-        case scene::IblMethod::Filtered:
-          environment =
-              filteredEnvironment(s.params, specularScale, position, s.n, s.ng, v, pixel, sample, seed, shadowRays);
-          break;
-      }
+      const EnvironmentLight environment =
+          environment_->at(s.params, specularScale, material, s.n, s.ng, v, vertexKey,
+                           [&](const glm::dvec3& l, std::uint32_t passThroughKey) {
+                             return occluded(position, s.ng, l, INFINITY, passThroughKey, shadowRays);
+                           });
       if (catcher) {
         const glm::dvec3 behind = background(direction), offered = s.occlusion * environment.offered;
         radiance += m::catcher_slot_scale(behind, offered) * (s.occlusion * environment.arriving) +
@@ -144,10 +129,11 @@ class ReferenceScene final : public PathScene {
         radiance += s.occlusion * environment.arriving;
       }
     }
-    for (const scene::Light& light : scene_.lights) {
-      const m::LightIncidence incidence = m::light_incidence(punctualLight(light), position);
+    for (std::uint32_t slot = 0; slot < scene_.lights.size(); ++slot) {
+      const m::LightIncidence incidence = m::light_incidence(punctualLight(scene_.lights[slot]), position);
       if (catcher || !m::light_arrives(incidence, s.n, s.ng)) continue;
-      if (occluded(position, s.ng, incidence.direction, incidence.distance, shadowRays)) continue;
+      if (occluded(position, s.ng, incidence.direction, incidence.distance, vertexKey.shadowRay(slot), shadowRays))
+        continue;
       radiance += m::punctual_radiance(s.params, s.n, incidence.direction, v, incidence.color, specularScale);
     }
     return {radiance,
@@ -156,7 +142,9 @@ class ReferenceScene final : public PathScene {
 
   std::optional<ShadedVertex> shadeNearest(const Ray& ray, std::uint32_t pixel, std::uint32_t sample, std::uint32_t seed,
                                          std::uint64_t& shadowRays) const override {
-    const std::optional<SceneHit> hit = closestHit(ray);
+    Ray keyed = ray;
+    keyed.passThroughKey = m::pass_through_key(pixel, sample, seed, m::PASS_THROUGH_NEAREST);
+    const std::optional<SceneHit> hit = closestHit(keyed);
     if (!hit) return std::nullopt;
     return shadeVertex(*hit, ray.direction, pixel, sample, seed, shadowRays);
   }
@@ -182,7 +170,7 @@ class ReferenceScene final : public PathScene {
 
   // What a camera ray that hits nothing sees.
   glm::dvec3 background(const glm::dvec3& direction) const {
-    return environment_ ? environmentRadiance(direction) : glm::dvec3(0.0);
+    return environment_ ? environment_->radiance(direction) : glm::dvec3(0.0);
   }
 
  private:
@@ -219,121 +207,18 @@ class ReferenceScene final : public PathScene {
   }
 
   bool occluded(const glm::dvec3& position, const glm::dvec3& ng, const glm::dvec3& l, double distance,
-                std::uint64_t& shadowRays) const {
+                std::uint32_t passThroughKey, std::uint64_t& shadowRays) const {
     ++shadowRays;
-    const Ray ray{m::shadow_ray_origin(position, ng, shadowOffset_), l, shadowOffset_, distance};
+    const Ray ray{m::shadow_ray_origin(position, ng, shadowOffset_), l, shadowOffset_, distance, passThroughKey};
     for (const std::unique_ptr<Intersector>& object : intersectors_)
       if (object->anyHit(ray)) return true;
     return false;
   }
 
-  glm::dvec3 toMap(const glm::dvec3& world) const {
-    return m::environment_to_map(world, environment_->cosRotation, environment_->sinRotation);
-  }
-
-  glm::dvec3 fromMap(const glm::dvec3& map) const {
-    return m::environment_from_map(map, environment_->cosRotation, environment_->sinRotation);
-  }
-
-  glm::dvec3 environmentRadiance(const glm::dvec3& world) const {
-    const scene::EnvironmentMap& map = *environment_->environment->map;
-    return environment_->environment->intensity *
-           ibl::bilinearLookup(map.rgb.data(), map.width, map.height, m::environment_uv(toMap(world)));
-  }
-
-  // A sample of either technique, of `share` above the surface: offered,
-  // and arriving where, with occlusion, its shadow ray is not blocked.
-  template <class Share>
-  void addSample(EnvironmentLight& light, const m::MisSample& s, const glm::dvec3& position, const glm::dvec3& n,
-                 const glm::dvec3& ng, std::uint64_t& shadowRays, const Share& share) const {
-    if (!m::mis_sample_arrives(s, n, ng)) return;
-    const glm::dvec3 radiance = share();
-    light.offered += radiance;
-    if (!(environment_->environment->occlusion && occluded(position, ng, s.direction, INFINITY, shadowRays)))
-      light.arriving += radiance;
-  }
-
-  // The sampled method (rules/environment/sampled_environment.h), with the
-  // environment's distribution in vectors.
-  EnvironmentLight sampledEnvironment(const m::BrdfParams& params, const glm::dvec3& specularScale,
-                                      const glm::dvec3& position, const glm::dvec3& n, const glm::dvec3& ng,
-                                      const glm::dvec3& v, std::uint32_t pixel, std::uint32_t sample,
-                                      std::uint32_t seed, std::uint64_t& shadowRays) const {
-    const scene::Environment& environment = *environment_->environment;
-    const ibl::EnvironmentDistribution& distribution = environment_->distribution;
-    const auto pairs = std::uint32_t(environment.samples);
-    EnvironmentLight light;
-    auto add = [&](const m::MisSample& s) {
-      addSample(light, s, position, n, ng, shadowRays, [&] {
-        return m::mis_sample_share(params, n, v, s, environmentRadiance(s.direction), pairs, specularScale);
-      });
-    };
-    for (std::uint32_t k = 0; k < pairs; ++k) {
-      const m::EnvironmentPair pair = m::environment_pair(params, n, v, pixel, sample, seed, k, pairs);
-      const ibl::EnvironmentSample e = ibl::sampleEnvironment(distribution, pair.texel_bits, pair.environment_u);
-      add(m::environment_technique_sample(params, n, v, fromMap(e.direction), e.pdf));
-      add(m::brdf_technique_sample(params, n, v, pair.brdf_direction,
-                                   ibl::environmentPdf(distribution, toMap(pair.brdf_direction))));
-    }
-    return light;
-  }
-
-  // The filtered method (rules/environment/filtered_environment.h): the
-  // sampled method's pairs, BRDF samples read from the mip chain.
-  EnvironmentLight filteredEnvironment(const m::BrdfParams& params, const glm::dvec3& specularScale,
-                                       const glm::dvec3& position, const glm::dvec3& n, const glm::dvec3& ng,
-                                       const glm::dvec3& v, std::uint32_t pixel, std::uint32_t sample,
-                                       std::uint32_t seed, std::uint64_t& shadowRays) const {
-    const scene::Environment& environment = *environment_->environment;
-    const std::vector<ibl::MipLevel>& chain = environment_->mipChain;
-    const bool withEnvironment = environment_->environmentSamples;
-    const ibl::EnvironmentDistribution& distribution = environment_->distribution;
-    const auto pairs = std::uint32_t(environment.samples);
-    EnvironmentLight light;
-    auto add = [&](const m::MisSample& s, double lod) {
-      addSample(light, s, position, n, ng, shadowRays, [&] {
-        const glm::dvec3 radiance =
-            environment.intensity * ibl::mipChainRadiance(chain, m::environment_uv(toMap(s.direction)), lod);
-        return m::mis_sample_share(params, n, v, s, radiance, pairs, specularScale);
-      });
-    };
-    for (std::uint32_t k = 0; k < pairs; ++k) {
-      const m::EnvironmentPair pair = m::environment_pair(params, n, v, pixel, sample, seed, k, pairs);
-      if (withEnvironment) {
-        const ibl::EnvironmentSample e = ibl::sampleEnvironment(distribution, pair.texel_bits, pair.environment_u);
-        add(m::environment_technique_sample(params, n, v, fromMap(e.direction), e.pdf), 0.0);
-      }
-      m::MisSample s = m::brdf_technique_sample(params, n, v, pair.brdf_direction, 0.0);
-      const double lod = m::filtered_sample_lod(s, pairs, chain.front().width, chain.front().height, int(chain.size()));
-      if (withEnvironment)
-        s.other_pdf = ibl::mipChainRadiance(environment_->pdfChain, m::environment_uv(toMap(s.direction)), lod).x;
-      add(s, lod);
-    }
-    return light;
-  }
-
-  glm::dvec3 prefilteredEnvironment(const m::BrdfParams& params, const glm::dvec3& specularScale, int material,
-                                    const glm::dvec3& n, const glm::dvec3& v) const {
-    const ibl::PrefilteredEnvironment& prefiltered = environment_->prefiltered;
-    const m::SplitSumLookups l = m::split_sum_lookups(params, n, v);
-    if (!l.visible) return glm::dvec3(0.0);
-    const glm::dvec3 radiance = ibl::prefilteredRadiance(prefiltered, toMap(l.lobe), l.alpha);
-    const glm::dvec2 dfg =
-        ibl::dfgLookup(prefiltered.dfg[std::size_t(environment_->dfgTable[std::size_t(material)])], l.nv, l.alpha);
-    const glm::dvec3 irradiance = ibl::irradianceOverPi(prefiltered, toMap(n));
-    glm::dvec3 coatRadiance(0.0);
-    glm::dvec2 coatDfg(0.0);
-    if (l.coated) {
-      coatRadiance = ibl::prefilteredRadiance(prefiltered, toMap(l.coat_lobe), l.coat_alpha);
-      coatDfg = ibl::dfgLookup(prefiltered.dfg[std::size_t(environment_->coatDfgTable)], l.nv_coat, l.coat_alpha);
-    }
-    return environment_->environment->intensity *
-           m::environment_split_sum(params, l, radiance, dfg, irradiance, specularScale, coatRadiance, coatDfg);
-  }
-
   const scene::Scene& scene_;
   const scene::SceneGeometry& geometry_;
-  const ibl::EnvironmentLighting* environment_;
+  const ibl::EnvironmentLighting* lighting_;
+  std::optional<ReferenceEnvironment> environment_;
   const ibl::CompensationTables compensation_;
   double shadowOffset_;
   double coneSpread_;  // of camera rays: the angle of one pixel
@@ -399,7 +284,7 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
           const glm::dvec3 direction =
               rules::f64::camera_ray_direction(frame, x + offset.x, y + offset.y, width, height);
           ++primary;
-          const auto hit = reference.cameraHit(Ray{frame.eye, direction});
+          const auto hit = reference.cameraHit(Ray{frame.eye, direction}, pixelId, sample);
           if (hit && !bounceRays.empty()) ++bounceRays[0].hits;
           if (sample == 0 && hit) reference.writeAovs(image, pixel, *hit, direction);
           if (!rules::f64::is_shaded_sample(sample, strata)) continue;

@@ -210,11 +210,12 @@ void setObjectShading(layout::ObjectRange& range, const scene::Scene& scene, con
                 (sceneObject.shadowCatcher ? layout::FACET_OBJECT_SHADOW_CATCHER : 0u) |
                 (sceneObject.holdout ? layout::FACET_OBJECT_HOLDOUT : 0u) |
                 (scene::sealsInside(sceneObject, geometry.objects[index]) ? layout::FACET_OBJECT_SEALED : 0u) |
-                (cutout ? layout::FACET_OBJECT_CUTOUT : 0u);
+                (cutout ? layout::FACET_OBJECT_CUTOUT : 0u) |
+                (sceneObject.alphaMode == scene::AlphaMode::Blend ? layout::FACET_OBJECT_BLEND : 0u);
   // Without a cut-out its fields are zero, whatever the range held before.
   const layout::TextureSlotRecord slot =
       cutout ? textureSlotRecord(sceneObject.alphaTexture) : layout::TextureSlotRecord{};
-  range.alphaCutoff = cutout ? float(sceneObject.alphaCutoff) : 0.0f;
+  range.alphaCutoff = sceneObject.alphaMode == scene::AlphaMode::Mask ? float(sceneObject.alphaCutoff) : 0.0f;
   range.alphaFactor = cutout ? float(sceneObject.alphaFactor) : 0.0f;
   range.alphaTexture = slot.texture;
   range.alphaOffsetX = slot.offsetX, range.alphaOffsetY = slot.offsetY;

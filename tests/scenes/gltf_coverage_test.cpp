@@ -78,11 +78,10 @@ TEST_F(GltfCoverage, IgnoredCoreFeaturesAreWarnings) {
   parts["meshes"] = {
       {{"primitives",
         {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}, {"COLOR_1", 0}}}, {"indices", 2}, {"material", 0}}}}}};
-  const Scene blend = load("blend", {{"alphaMode", "BLEND"}}, parts);
-  EXPECT_THAT(blend.warnings,
-              ElementsAre(HasSubstr("blend.gltf: meshes[0].primitives[0].attributes.COLOR_1: only COLOR_0 is read"),
-                          HasSubstr("animations: animations are not read"),
-                          HasSubstr("materials[0].alphaMode: BLEND is read as MASK at alphaCutoff 0.5")));
+  const Scene ignored = load("ignored", nlohmann::json::object(), parts);
+  EXPECT_THAT(ignored.warnings,
+              ElementsAre(HasSubstr("ignored.gltf: meshes[0].primitives[0].attributes.COLOR_1: only COLOR_0 is read"),
+                          HasSubstr("animations: animations are not read")));
 }
 
 // A mesh's tangents are not read: warned where a normal map or an
@@ -105,7 +104,7 @@ TEST_F(GltfCoverage, UnreadTangentsAreWarnedOnlyWhereATangentIsUsed) {
               ElementsAre(HasSubstr("meshes[0].primitives[0].attributes.TANGENT: tangents are not read")));
 }
 
-TEST_F(GltfCoverage, AlphaModesAreCutouts) {
+TEST_F(GltfCoverage, AlphaModesAreRead) {
   // MASK is read: no warning; the object carries the cutoff, the factor's
   // alpha and the base colour slot.
   ASSERT_TRUE(facet::testing::writePng(dir_ / "alpha.png", 2, 2, std::vector<facet::testing::Rgba8>(4, {9, 9, 9, 9})));
@@ -121,8 +120,15 @@ TEST_F(GltfCoverage, AlphaModesAreCutouts) {
   EXPECT_EQ(mask.objects[0].alphaFactor, 0.75);
   EXPECT_EQ(mask.objects[0].alphaTexture.texture, 0);
   EXPECT_TRUE(hasCutout(mask.objects[0]));
+  EXPECT_EQ(mask.objects[0].alphaMode, AlphaMode::Mask);
   EXPECT_EQ(load("default_cutoff", {{"alphaMode", "MASK"}}).objects[0].alphaCutoff, 0.5);
-  EXPECT_EQ(load("blend_cutoff", {{"alphaMode", "BLEND"}}).objects[0].alphaCutoff, 0.5);
+  // MASK at a cutoff of 0 keeps every hit: opaque.
+  EXPECT_FALSE(hasCutout(load("zero_cutoff", {{"alphaMode", "MASK"}, {"alphaCutoff", 0.0}}).objects[0]));
+  // BLEND is read, without a warning: rays pass with probability 1 - alpha.
+  const Scene blend = load("blend", {{"alphaMode", "BLEND"}});
+  EXPECT_THAT(blend.warnings, IsEmpty());
+  EXPECT_EQ(blend.objects[0].alphaMode, AlphaMode::Blend);
+  EXPECT_TRUE(hasCutout(blend.objects[0]));
   EXPECT_FALSE(hasCutout(load("opaque", {{"alphaCutoff", 0.9}}).objects[0]));
 }
 

@@ -1,6 +1,7 @@
 // Which hits a ray passes over, as if the surface were not there: a
-// one-sided object's back faces (docs/rendering.md, "One-sided surfaces")
-// and where a cutout's alpha is below its cutoff ("Cutouts"). CULLING and
+// one-sided object's back faces (docs/rendering.md, "One-sided surfaces"),
+// where a cutout's alpha is below its cutoff ("Cutouts") and where a blended
+// surface lets the ray through ("Blending"). CULLING and
 // CUTOUTS are 1 only where some object needs them, so that other scenes run
 // exactly the kernels they did; the object's flags are read only at a
 // candidate hit. Included by trace_bindings.glsl, after scene_bindings.glsl.
@@ -13,9 +14,30 @@
 #include "compute/raycast/common/patch_eval.glsl"
 #include "compute/raycast/common/texcoord.glsl"
 #include "compute/raycast/common/textures.glsl"
+#include "compute/raycast/common/band_pixels.glsl"
 
 layout(constant_id = 2) const int CULLING = 0;
 layout(constant_id = 3) const int CUTOUTS = 0;
+
+// The key of the ray being traced (pass_through_key), which each kernel sets
+// before it traces, where CUTOUTS is 1.
+uint passThroughKey = 0u;
+
+// The key of camera ray `camera` of the band, or of the continuation ray of
+// its path: the numbers of the vertex the ray reaches (the frame's seed).
+uint nearest_ray_key(uint camera) {
+  return pass_through_key(image_pixel(camera / frame.raysPerPixel), camera % frame.raysPerPixel,
+                          frame.environmentSeed, PASS_THROUGH_NEAREST);
+}
+
+// The key of the shadow ray of contribution slot `slot`: the numbers of the
+// vertex it leaves (the frame's seed) and its place among its camera ray's
+// slots.
+uint shadow_ray_key(uint slot) {
+  uint camera = slot / frame.slotsPerRay;
+  return pass_through_key(image_pixel(camera / frame.raysPerPixel), camera % frame.raysPerPixel,
+                          frame.environmentSeed, slot % frame.slotsPerRay);
+}
 
 // Whether `object` passes over a hit at patch-local `st` of PatchRecord
 // `patchIndex`, of a ray along `direction`, where the surface's geometric
@@ -29,8 +51,12 @@ bool passes_over(uint object, vec3 direction, vec3 normal, uint patchIndex, vec2
   TextureSlotRecord slot = TextureSlotRecord(o.alphaTexture, o.alphaOffsetX, o.alphaOffsetY, o.alphaCosRotation,
                                              o.alphaSinRotation, o.alphaScaleX, o.alphaScaleY, o.alphaTexCoord);
   uint set = o.alphaTexCoord == 1u ? FACET_CHANNEL_TEXCOORD1 : FACET_CHANNEL_TEXCOORD0;
-  vec2 uv = surface_texcoord(channel_texel(load_patch_record(patchIndex).firstTexcoord, o.channels, set), st.x, st.y).uv;
-  return !cutout_present(o.alphaFactor, slot_value(slot, cutout_footprint(uv)).a, o.alphaCutoff);
+  PatchRecord record = load_patch_record(patchIndex);
+  vec2 uv = surface_texcoord(channel_texel(record.firstTexcoord, o.channels, set), st.x, st.y).uv;
+  float alpha = slot_value(slot, cutout_footprint(uv)).a;
+  if ((flags & FACET_OBJECT_BLEND) != 0u)
+    return !blend_present(o.alphaFactor * alpha, passThroughKey, object, record.sourcePatch);
+  return !cutout_present(o.alphaFactor, alpha, o.alphaCutoff);
 }
 
 #endif
