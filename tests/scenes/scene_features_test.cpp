@@ -55,11 +55,13 @@ TEST(SceneFeatures, AMaterialNoObjectUsesAddsNone) {
 TEST(SceneFeatures, ObjectsCullAndCutOutAndCarryChannels) {
   Scene s = plainCube();
   s.objects[0].oneSided = true;
-  s.objects[0].alphaCutoff = 0.5;
+  s.objects[0].alphaMode = AlphaMode::Mask;
   s.objects[0].cage.colors = {glm::dvec3(1.0)};
   s.objects[0].cage.faceVertexColors.assign(s.objects[0].cage.faceVertexIndices.size(), 0);
   SceneFeatures f = sceneFeatures(s);
   EXPECT_TRUE(f.culling && f.cutouts && f.channels);
+  s.objects[0].alphaMode = AlphaMode::Blend;  // a blended surface passes rays as a cutout does
+  EXPECT_TRUE(sceneFeatures(s).cutouts);
   s.materials[0].transmission = 1.0;  // glass is never culled: paths see its inside
   EXPECT_FALSE(sceneFeatures(s).culling);
 }
