@@ -6,13 +6,14 @@ namespace facet::cpu {
 
 namespace m = rules::f64;
 
-glm::dvec3 tracePath(const PathScene& scene, const ShadedVertex& first, const m::PathSampleKey& key, int bounces,
-                     std::vector<BounceRays>& rays, const LobeLimits& limits) {
+glm::dvec3 tracePath(const PathScene& scene, const ShadedVertex& first, const m::PathCarry& start,
+                     const m::PathSampleKey& key, int bounces, std::vector<BounceRays>& rays,
+                     const LobeLimits& limits) {
   const glm::ivec3 limit(limits.diffuse, limits.glossy, limits.transmission);
   const bool limited = glm::any(glm::greaterThanEqual(limit, glm::ivec3(0)));
   const double offset = scene.leavingOffset();
-  glm::dvec3 radiance = first.radiance;
-  m::PathCarry carry{glm::dvec3(1.0), glm::dvec3(0.0), glm::uvec3(0)};
+  glm::dvec3 radiance = start.throughput * first.radiance;
+  m::PathCarry carry = start;
   m::PathVertex vertex = first.vertex;
   for (int bounce = 1; bounce <= bounces; ++bounce) {
     const m::PathStep step = m::path_step(vertex, carry, key, std::uint32_t(bounce), limited, limit, offset);

@@ -62,9 +62,11 @@ struct LobeLimits {
 };
 
 // L of the path whose first vertex is `first` (shaded with the scene's
-// seed), with at most `bounces` continuations; `rays` (bounces + 1 entries)
-// counts each bounce's continuation and shadow rays.
-glm::dvec3 tracePath(const PathScene& scene, const ShadedVertex& first, const rules::f64::PathSampleKey& key, int bounces,
-                     std::vector<BounceRays>& rays, const LobeLimits& limits = {});
+// seed), reached as `start` says (camera_path_start), with at most `bounces`
+// continuations; `rays` (bounces + 1 entries) counts each bounce's
+// continuation and shadow rays.
+glm::dvec3 tracePath(const PathScene& scene, const ShadedVertex& first, const rules::f64::PathCarry& start,
+                     const rules::f64::PathSampleKey& key, int bounces, std::vector<BounceRays>& rays,
+                     const LobeLimits& limits = {});
 
 }  // namespace facet::cpu

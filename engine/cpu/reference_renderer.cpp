@@ -22,6 +22,7 @@
 #include "engine/ibl/environment_lighting.h"
 #include "materials/material.h"
 #include "rules/rules.h"
+#include "scenes/camera_medium.h"
 
 namespace facet::cpu {
 namespace {
@@ -260,6 +261,7 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
   const rules::f64::CameraFrame frame = camera::cameraFrame(scene.camera, width, height);
   const std::uint32_t strata = rules::f64::sample_strata(std::uint32_t(scene.render.samplesPerPixel));
   const std::uint32_t raysPerPixel = rules::f64::rays_per_pixel(strata);
+  const glm::dvec3 eyeSigma = scene::cameraMedium(scene, geometry).sigma;
 
   std::atomic<int> nextRow{window.y0}, finishedRows{0};
   std::atomic<std::uint64_t> primaryRays{0}, shadowRays{0};
@@ -294,14 +296,16 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
           }
           coverage += 1;
           if (scene.objects[std::size_t(hit->object)].holdout) continue;  // black to the camera
+          // The eye inside an absorbing solid sees the hit through it.
+          const m::PathCarry start = m::camera_path_start(eyeSigma, frame.eye, hit->surface.position);
           if (bounces == 0) {
-            radiance += reference.shade(*hit, direction, pixelId, sample, shadow);
+            radiance += start.throughput * reference.shade(*hit, direction, pixelId, sample, shadow);
             continue;
           }
           const ShadedVertex first = reference.shadeVertex(*hit, direction, pixelId, sample, reference.environmentSeed(),
                                                          bounceRays[0].shadowRays);
-          radiance += tracePath(reference, first, {pixelId, sample, raysPerPixel, reference.environmentSeed()}, bounces,
-                                bounceRays, lobeLimits);
+          radiance += tracePath(reference, first, start, {pixelId, sample, raysPerPixel, reference.environmentSeed()},
+                                bounces, bounceRays, lobeLimits);
         }
         const double samples = double(rules::f64::shaded_sample_count(strata));
         image.beauty[pixel] = glm::vec4(glm::vec3(radiance / samples), float(coverage / samples));

@@ -10,6 +10,7 @@
 
 #include "engine/camera/camera.h"
 #include "rules/rules.h"
+#include "scenes/camera_medium.h"
 #include "scenes/input_error.h"
 
 namespace facet::gpu_backend {
@@ -92,6 +93,8 @@ gpu_layout::FrameParams frameParams(const scene::Scene& scene, const scene::Scen
   f.diffuseBounces = scene.render.diffuseBounces;
   f.glossyBounces = scene.render.glossyBounces;
   f.transmissionBounces = scene.render.transmissionBounces;
+  const glm::dvec3 eyeSigma = scene::cameraMedium(scene, geometry).sigma;
+  f.eyeSigmaR = float(eyeSigma.x), f.eyeSigmaG = float(eyeSigma.y), f.eyeSigmaB = float(eyeSigma.z);
   return f;
 }
 

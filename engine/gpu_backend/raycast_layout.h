@@ -18,6 +18,7 @@ namespace facet::gpu_layout {
 using rules::f32::uint;
 #include "compute/layout/patch_records.h"
 #include "compute/layout/raycast_layout.h"
+#include "compute/layout/path_layout.h"
 #include "compute/layout/surface_features.h"
 #include "compute/layout/wide_bvh.h"
 }  // namespace facet::gpu_layout
@@ -42,5 +43,5 @@ static_assert(sizeof(facet::gpu_layout::HitRecord) == 32);
 static_assert(sizeof(facet::gpu_layout::LightRecord) == 48);
 static_assert(sizeof(facet::gpu_layout::TextureSlotRecord) == 32);
 static_assert(sizeof(facet::gpu_layout::MaterialRecord) == 660);
-static_assert(sizeof(facet::gpu_layout::FrameParams) == 204);
+static_assert(sizeof(facet::gpu_layout::FrameParams) == 216);
 static_assert(sizeof(facet::gpu_layout::PixelAovs) == 64);

@@ -43,6 +43,19 @@ struct PathCarry {
   uvec3 taken;  // continuations of each lobe kind (PATH_LOBE_*) so far
 };
 
+// What a camera ray's path carries to its first vertex: it starts in the
+// medium around the eye (scene::cameraMedium; sigma 0 in air), whose
+// absorption over the camera ray's segment scales all the vertex and the
+// path after it bring to the eye (docs/rendering.md, "The camera inside a
+// medium").
+FACET_FN PathCarry camera_path_start(vec3 eye_sigma, vec3 eye, vec3 first_vertex) {
+  PathCarry carry;
+  carry.throughput = segment_transmittance(eye_sigma, eye, first_vertex);
+  carry.sigma = eye_sigma;
+  carry.taken = uvec3(uint(0));
+  return carry;
+}
+
 struct PathStep {
   bool continues;  // false: roulette ended it, its lobe kind is over its limit, or it carries nothing
   PathCarry carry;

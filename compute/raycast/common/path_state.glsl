@@ -1,5 +1,5 @@
 // Paths (docs/rendering.md, "Paths"): a camera ray's path state as the
-// kernels pack and unpack it (compute/layout/raycast_layout.h's PathState).
+// kernels pack and unpack it (compute/layout/path_layout.h's PathState).
 #ifndef FACET_RAYCAST_PATH_STATE_GLSL
 #define FACET_RAYCAST_PATH_STATE_GLSL
 

@@ -5,6 +5,7 @@
 
 #include "compute/layout/patch_records.h"
 #include "compute/layout/raycast_layout.h"
+#include "compute/layout/path_layout.h"
 #include "compute/raycast/common/workgroup.glsl"
 
 layout(set = 0, binding = 0, std140) uniform FrameBlock { FrameParams frame; };

@@ -13,6 +13,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "compute/layout/raycast_layout.h"
+#include "compute/layout/path_layout.h"
 #include "compute/raycast/common/workgroup.glsl"
 
 layout(constant_id = 0) const int PATHS = 0;

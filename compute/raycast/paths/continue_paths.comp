@@ -11,6 +11,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "compute/layout/raycast_layout.h"
+#include "compute/layout/path_layout.h"
 #include "compute/raycast/common/workgroup.glsl"
 #include "compute/raycast/common/ray.glsl"
 #include "rules/language.glsl"

@@ -370,6 +370,7 @@ TEST(GpuLayout, GlslLayoutOfTheSharedHeadersIsTheCppLayout) {
   FACET_EXPECT_MEMBER(FrameParams, dfgSize);
   FACET_EXPECT_MEMBER(FrameParams, compensationSize);
   FACET_EXPECT_MEMBER(FrameParams, transmissionBounces);
+  FACET_EXPECT_MEMBER(FrameParams, eyeSigmaB);
   FACET_EXPECT_MEMBER(PathState, transmissionTaken);
 #undef FACET_EXPECT_MEMBER
 }

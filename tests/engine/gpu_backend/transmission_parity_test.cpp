@@ -4,6 +4,7 @@
 // thin absorbing wall trace the CPU reference's paths, ray for ray per
 // bounce and per pixel, a limit on transmissions too; the public renderer
 // no longer refuses them.
+#include <glm/exponential.hpp>
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -14,6 +15,7 @@
 
 #include "engine/gpu_backend/gpu_renderer.h"
 #include "engine/renderer.h"
+#include "materials/material.h"
 #include "scenes/environment_map.h"
 #include "scenes/obj_cage.h"
 #include "scenes/scene_file.h"
@@ -102,6 +104,44 @@ TEST_F(GpuTransmission, AnAbsorbingSlabFarFromTheEyeAbsorbsAsTheCpuReferenceDoes
   std::printf("absorbing slab 1000 away: covered mean GPU %.5f %.5f %.5f, CPU %.5f %.5f %.5f\n", gpu.x, gpu.y, gpu.z,
               cpu.x, cpu.y, cpu.z);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(gpu[c] / cpu[c], 1.0, 2e-3) << c;
+}
+
+// The camera inside an absorbing solid (docs/rendering.md, "The camera
+// inside a medium"): a sphere of radius 2 around the eye, in a uniform white
+// environment. Of index 1 it bends and reflects nothing, so each camera
+// ray leaves through the wall having crossed its distance d to it, and its
+// pixel is exp(-sigma d), d the depth AOV; of index 1.5 its paths still trace
+// the CPU reference's.
+TEST_F(GpuTransmission, AnEyeInsideAnAbsorbingSolidSeesThroughIt) {
+  materials::MaterialSpec spec = glassSpec(1.0);
+  spec.attenuationColor = glm::dvec3(0.3, 0.6, 0.9);
+  spec.attenuationDistance = 1.0;
+  scene::ControlCage sphere = testing::uvSphereCage(24, 48);
+  for (glm::dvec3& p : sphere.positions) p *= 2.0;
+  scene::Scene scene = underWhite(buildTestMaterial(spec), std::move(sphere), 2, 16, 60);
+  scene.camera.eye = {0.3, -0.2, 0.4};
+  scene.render.samplesPerPixel = 4;
+  const glm::dvec3 sigma = materials::transmissionParams64(scene.materials[0]).sigma;
+  const testing::PathRenders clear = testing::renderBoth(device_, scene);
+  for (const Image* image : {&clear.reference, &clear.gpu.image}) {
+    SCOPED_TRACE(image == &clear.reference ? "CPU" : "GPU");
+    glm::dvec3 rendered(0.0), expected(0.0);
+    for (std::size_t i = 0; i < image->pixelCount(); ++i) {
+      rendered += glm::dvec3(image->beauty[i]);
+      expected += glm::exp(-sigma * double(image->depth[i]));
+    }
+    const glm::dvec3 ratio = rendered / expected;
+    std::printf("eye inside absorbing glass of index 1: rendered / exp(-sigma d) = %.5f %.5f %.5f\n", ratio.x, ratio.y,
+                ratio.z);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(ratio[c], 1.0, 0.01) << c;
+  }
+  scene.materials[0] = buildTestMaterial([&] {
+    materials::MaterialSpec refracting = spec;
+    refracting.ior = glm::dvec3(1.5);
+    return refracting;
+  }());
+  scene.render.bounces = 6;
+  testing::expectPathParity(testing::renderBoth(device_, scene), {.median = 1e-4, .p98 = 2e-3, .parted = 5});
 }
 
 TEST_F(GpuTransmission, TheRendererRendersTransmissiveMaterialsOnTheGpu) {

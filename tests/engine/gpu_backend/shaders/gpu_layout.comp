@@ -4,6 +4,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "compute/layout/patch_records.h"
 #include "compute/layout/raycast_layout.h"
+#include "compute/layout/path_layout.h"
 #include "compute/layout/wide_bvh.h"
 
 layout(local_size_x = 1) in;
@@ -27,7 +28,7 @@ void main() {
                              uint(p.faceV0) + uint(p.faceSize) + p.ptexFace + o.firstPatch + frame.rootNode +
                              o.rate + o.firstQuadtreeNode + o.firstEdgeMidpoint + o.channels + uint(r.ray.tMax) + r.slot +
                              hits[0].patchIndex + frame.patchCount + uint(frame.tolerance) + frame.dfgSize + frame.compensationSize +
-                             pathStates[0].transmissionTaken + uint(frame.transmissionBounces) + FACET_BVH4_TEXELS;
+                             pathStates[0].transmissionTaken + uint(frame.transmissionBounces) + uint(frame.eyeSigmaB) + FACET_BVH4_TEXELS;
   counters.shadowX = 0u;
   counters.cameraFallbackX = 0u;
   counters.shadowFallbackZ = 0u;
