@@ -228,6 +228,11 @@ glm::dvec2 edgeMidpointStep(int edge, int i, int rate) {
 
 }  // namespace
 
+std::uint64_t TessellatedSurface::bytes(std::uint64_t patches, int rate) {
+  const auto k = std::uint64_t(std::max(1, rate));
+  return patches * ((k + 1) * (k + 1) * sizeof(glm::dvec3) + 4 * k * sizeof(glm::dvec3) + k * sizeof(scene::Aabb));
+}
+
 TessellatedSurface TessellatedSurface::dice(const SubdivisionSurface& surface, int rate) {
   TessellatedSurface result;
   result.rate_ = std::max(1, rate);

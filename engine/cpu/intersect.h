@@ -83,6 +83,8 @@ std::optional<SurfaceHit> intersectExact(const scene::SubdivisionSurface& surfac
 class TessellatedSurface {
  public:
   static TessellatedSurface dice(const scene::SubdivisionSurface& surface, int rate);
+  // What dice() keeps for `patches` patches at `rate`.
+  static std::uint64_t bytes(std::uint64_t patches, int rate);
 
   int rate() const { return rate_; }
   // Grid point (i, j) of a patch, i along u, j along v, 0 <= i, j <= rate.

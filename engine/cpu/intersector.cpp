@@ -1,8 +1,12 @@
 #include "engine/cpu/intersector.h"
 
+#include <algorithm>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "rules/rules.h"
+#include "scenes/memory_budget.h"
 #include "scenes/texture.h"
 
 namespace facet::cpu {
@@ -47,6 +51,27 @@ std::unique_ptr<Intersector> objectIntersector(const scene::Scene& scene, std::s
     return std::make_unique<TessellatedIntersector>(object.surface, object.bvh, object.refinement.tessellationRate,
                                                     std::move(filter));
   return std::make_unique<ExactIntersector>(object.surface, object.bvh, settings, std::move(filter));
+}
+
+void checkTessellationFitsInMemory(const scene::Scene& scene, const scene::SceneGeometry& geometry) {
+  if (scene.render.method != scene::IntersectionMethod::Tessellated) return;
+  std::uint64_t needed = 0, patches = 0;
+  int largestRate = 0;
+  for (const scene::ObjectGeometry& object : geometry.objects) {
+    const int rate = object.refinement.tessellationRate;
+    needed += TessellatedSurface::bytes(std::uint64_t(object.surface.patchCount()), rate);
+    patches += std::uint64_t(object.surface.patchCount());
+    largestRate = std::max(largestRate, rate);
+  }
+  const scene::MemoryLimit limit = scene::memoryLimit();
+  if (needed <= limit.bytes) return;
+  const std::string rate = std::to_string(largestRate);
+  throw std::invalid_argument(
+      (scene.render.tessellationRate ? "render.tess_level (--tess-level) " + rate
+                                     : "the dicing rate chosen for the image's size, up to " + rate) +
+      ": the CPU reference's grids of " + std::to_string(patches) + " patches at " + rate + " x " + rate +
+      " need about " + scene::gigabytes(needed) + " of memory and the limit is " + scene::gigabytes(limit.bytes) +
+      " (" + limit.source + "); lower the dicing rate, or use the exact method (--method exact)");
 }
 
 }  // namespace facet::cpu

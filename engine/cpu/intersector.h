@@ -70,4 +70,10 @@ class TessellatedIntersector final : public Intersector {
 std::unique_ptr<Intersector> objectIntersector(const scene::Scene& scene, std::size_t index,
                                                const scene::ObjectGeometry& object, const ExactSettings& settings);
 
+// Throws std::invalid_argument where the tessellated method's grids of every
+// object would not fit in the memory a process lets itself use
+// (scene::memoryLimit, docs/reliability.md "Limits"): checked before any
+// object is diced.
+void checkTessellationFitsInMemory(const scene::Scene& scene, const scene::SceneGeometry& geometry);
+
 }  // namespace facet::cpu

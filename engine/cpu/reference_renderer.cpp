@@ -243,6 +243,7 @@ Image renderReference(const scene::Scene& scene, const scene::SceneGeometry& geo
   if (!scene::pathsCountEnvironmentOnce(scene.render.bounces, scene.environment))
     throw std::invalid_argument("bounces " + std::to_string(scene.render.bounces) + ": " +
                                 scene::kBouncesNeedOcclusionRule);
+  checkTessellationFitsInMemory(scene, geometry);
   const int width = scene.render.width, height = scene.render.height;
   const PixelRect window = crop.value_or(PixelRect::whole(width, height));
   Image image(window.width(), window.height());

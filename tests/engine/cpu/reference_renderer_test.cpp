@@ -7,13 +7,17 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "engine/camera/camera.h"
+#include "engine/cpu/reference_renderer.h"
 #include "engine/renderer.h"
 #include "scenes/obj_cage.h"
 #include "scenes/scene_file.h"
+#include "scenes/scene_geometry.h"
 #include "scenes/environment_map.h"
 #include "tests/support/blob_scene.h"
+#include "tests/support/scoped_env.h"
 
 namespace facet {
 namespace {
@@ -161,6 +165,24 @@ TEST(ReferenceRendererFar, ABlobFarFromTheOriginRendersAsNearIt) {
   ASSERT_GT(covered, 100);
   EXPECT_LE(differ, int(a.pixelCount() / 50)) << "coverage changed";
   EXPECT_NEAR(farSum / covered, nearSum / covered, 0.01 * nearSum / covered);
+}
+
+// The tessellated method's grids are held to the process's memory limit
+// before any is diced: at 256 x 256 a patch's grid takes 1.6 MB.
+TEST(ReferenceRendererMemory, GridsPastTheMemoryLimitAreRefusedBeforeTheyAreDiced) {
+  scene::Scene s = scene::sceneFromCage(scene::loadObjCage(std::string(FACET_CAGE_DIR) + "/creased_box.obj"));
+  s.render.width = s.render.height = 8;
+  s.render.method = scene::IntersectionMethod::Tessellated;
+  s.render.tessellationRate = 256;
+  const scene::SceneGeometry geometry = scene::buildGeometry(s);
+  const testing::ScopedEnv limit("FACET_MEMORY_LIMIT", "64");
+  EXPECT_THAT([&] { cpu::renderReference(s, geometry); },
+              ::testing::ThrowsMessage<std::invalid_argument>(::testing::AllOf(
+                  ::testing::HasSubstr("render.tess_level (--tess-level) 256: the CPU reference's grids of "),
+                  ::testing::HasSubstr("the limit is 0.1 GB (FACET_MEMORY_LIMIT); lower the dicing rate"))));
+  // The same surface at a rate that fits renders.
+  s.render.tessellationRate = 8;
+  EXPECT_NO_THROW(cpu::renderReference(s, scene::buildGeometry(s)));
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, ReferenceRenderer,
