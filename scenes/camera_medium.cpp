@@ -18,9 +18,13 @@ namespace {
 // the wrong side, which for an eye means a camera within that of the glass.
 constexpr int kSamplesPerPatchEdge = 16;
 
-// The ray the crossings are counted along: off every axis and diagonal, so
-// that it meets no edge of a tessellation of an axis-aligned cage.
-const glm::dvec3 kDirection = glm::normalize(glm::dvec3(0.2371, 0.9132, 0.3317));
+// The rays the crossings are counted along, off every axis and diagonal so
+// that none meets an edge of a tessellation of an axis-aligned cage. Where
+// patches of different depths meet, their grids leave slivers between them
+// that a ray may slip through; the majority of three rays decides.
+const std::array<glm::dvec3, 3> kDirections = {glm::normalize(glm::dvec3(0.2371, 0.9132, 0.3317)),
+                                               glm::normalize(glm::dvec3(-0.8123, 0.1975, 0.5489)),
+                                               glm::normalize(glm::dvec3(0.4417, -0.3706, -0.8163))};
 
 bool rayMeetsBox(const glm::dvec3& origin, const glm::dvec3& inverse, const Aabb& box) {
   double near = 0.0, far = std::numeric_limits<double>::infinity();
@@ -35,8 +39,9 @@ bool rayMeetsBox(const glm::dvec3& origin, const glm::dvec3& inverse, const Aabb
 
 // The distance along the ray to triangle (a, b, c), if it meets it ahead
 // (Möller and Trumbore 1997).
-double triangleDistance(const glm::dvec3& origin, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
-  const glm::dvec3 e1 = b - a, e2 = c - a, p = glm::cross(kDirection, e2);
+double triangleDistance(const glm::dvec3& origin, const glm::dvec3& direction, const glm::dvec3& a, const glm::dvec3& b,
+                        const glm::dvec3& c) {
+  const glm::dvec3 e1 = b - a, e2 = c - a, p = glm::cross(direction, e2);
   const double det = glm::dot(e1, p);
   constexpr double kNone = -1.0;
   if (det == 0.0) return kNone;
@@ -44,7 +49,7 @@ double triangleDistance(const glm::dvec3& origin, const glm::dvec3& a, const glm
   const double u = glm::dot(s, p) / det;
   if (u < 0.0 || u > 1.0) return kNone;
   const glm::dvec3 q = glm::cross(s, e1);
-  const double v = glm::dot(kDirection, q) / det;
+  const double v = glm::dot(direction, q) / det;
   if (v < 0.0 || u + v > 1.0) return kNone;
   return glm::dot(e2, q) / det;
 }
@@ -54,7 +59,7 @@ struct Crossings {
   double nearest = std::numeric_limits<double>::infinity();
 };
 
-void crossPatch(const BezierPatch& patch, const glm::dvec3& origin, Crossings& crossings) {
+void crossPatch(const BezierPatch& patch, const glm::dvec3& origin, const glm::dvec3& direction, Crossings& crossings) {
   constexpr int n = kSamplesPerPatchEdge;
   std::array<glm::dvec3, (n + 1) * (n + 1)> grid;
   for (int j = 0; j <= n; ++j)
@@ -63,17 +68,17 @@ void crossPatch(const BezierPatch& patch, const glm::dvec3& origin, Crossings& c
   auto at = [&](int i, int j) { return grid[std::size_t(j * (n + 1) + i)]; };
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i)
-      for (double t : {triangleDistance(origin, at(i, j), at(i + 1, j), at(i + 1, j + 1)),
-                       triangleDistance(origin, at(i, j), at(i + 1, j + 1), at(i, j + 1))})
+      for (double t : {triangleDistance(origin, direction, at(i, j), at(i + 1, j), at(i + 1, j + 1)),
+                       triangleDistance(origin, direction, at(i, j), at(i + 1, j + 1), at(i, j + 1))})
         if (t > 0.0) {
           ++crossings.count;
           crossings.nearest = std::min(crossings.nearest, t);
         }
 }
 
-Crossings countCrossings(const ObjectGeometry& object, const glm::dvec3& origin) {
+Crossings countCrossings(const ObjectGeometry& object, const glm::dvec3& origin, const glm::dvec3& direction) {
   Crossings crossings;
-  const glm::dvec3 inverse = 1.0 / kDirection;
+  const glm::dvec3 inverse = 1.0 / direction;
   const std::vector<PatchBvh::Node>& nodes = object.bvh.nodes();
   std::vector<int> stack{0};
   while (!stack.empty()) {
@@ -87,7 +92,7 @@ Crossings countCrossings(const ObjectGeometry& object, const glm::dvec3& origin)
       continue;
     }
     for (int slot = node.next; slot < node.next + node.patchCount; ++slot)
-      crossPatch(object.surface.bezierPatch(object.bvh.leafPatches()[std::size_t(slot)]), origin, crossings);
+      crossPatch(object.surface.bezierPatch(object.bvh.leafPatches()[std::size_t(slot)]), origin, direction, crossings);
   }
   return crossings;
 }
@@ -105,10 +110,17 @@ int absorbingSolidAround(const Scene& scene, const SceneGeometry& geometry, cons
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const glm::dvec3 sigma = solidAbsorption(scene.materials[std::size_t(scene.objects[i].material)]);
     if (sigma == glm::dvec3(0.0) || !geometry.objects[i].enclosesSolid || hasCutout(scene.objects[i])) continue;
-    const Crossings crossings = countCrossings(geometry.objects[i], point);
-    if (crossings.count % 2 == 1 && crossings.nearest < nearest) {
+    int inside = 0;
+    double wall = std::numeric_limits<double>::infinity();  // the nearest crossing of a ray that finds it inside
+    for (const glm::dvec3& direction : kDirections) {
+      const Crossings crossings = countCrossings(geometry.objects[i], point, direction);
+      if (crossings.count % 2 == 0) continue;
+      ++inside;
+      wall = std::min(wall, crossings.nearest);
+    }
+    if (2 * inside > int(kDirections.size()) && wall < nearest) {
       innermost = int(i);
-      nearest = crossings.nearest;
+      nearest = wall;
     }
   }
   return innermost;

@@ -19,7 +19,7 @@ struct CameraMedium {
 
 // The innermost of the scene's absorbing solids (a transmissive material
 // that absorbs, not thin-walled, on a surface that encloses a solid) whose
-// inside holds `point`, by the parity of a ray's crossings of a fine
+// inside holds `point`, by the parity of three rays' crossings (their majority) of a fine
 // tessellation of each one's limit surface; -1 where none does. Free for a
 // scene without such a solid.
 int absorbingSolidAround(const Scene& scene, const SceneGeometry& geometry, const glm::dvec3& point);

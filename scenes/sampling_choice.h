@@ -16,9 +16,10 @@ namespace facet::scene {
 inline constexpr int kAntiAliasingSpp = 16;
 
 // Whether every camera sample of `scene` shades without random numbers:
-// no paths, and no environment sampled or filtered. Punctual lights, the
-// split sum, textures and cutouts are evaluated, not sampled. The scene's
-// light transport must be stated or chosen already (scenes/light_transport.h).
+// no paths, no environment sampled or filtered, and no blended surface
+// (glTF's BLEND is drawn per ray). Punctual lights, the split sum, textures
+// and MASK's cutouts are evaluated, not sampled. The scene's light transport
+// must be stated or chosen already (scenes/light_transport.h).
 bool shadesWithoutNoise(const Scene& scene);
 
 // The sampling chosen for `scene`, its light transport stated or chosen:

@@ -15,6 +15,7 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     f.channels |= !object.cage.faceVertexTexcoords1.empty() || !object.cage.faceVertexColors.empty();
     f.culling |= cullsBackFaces(object, m);
     f.cutouts |= hasCutout(object);
+    f.blends |= object.alphaMode == AlphaMode::Blend;
     f.shadowCatcher |= object.shadowCatcher;
     f.holdout |= object.holdout;
   }

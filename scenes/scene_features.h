@@ -23,6 +23,7 @@ struct SceneFeatures {
   bool channels = false;
   bool culling = false;  // some object culls its back faces (cullsBackFaces)
   bool cutouts = false;  // some object has a cutout (hasCutout)
+  bool blends = false;   // some object's cutout is glTF's BLEND, drawn per ray
   bool shadowCatcher = false;  // some object catches shadows (Object::shadowCatcher): emission's slot holds its rest
   bool holdout = false;        // some object is held out of the camera rays (Object::holdout)
   bool paths = false;    // paths continue past the camera rays' hits

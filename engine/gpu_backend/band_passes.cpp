@@ -84,7 +84,8 @@ Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const scene
   std::vector<gpu::ConstantEntry> cameraFallback{{"SHADOW", 0}}, shadowFallback{{"SHADOW", 1}};
   for (auto* constants : {&method, &cameraFallback, &shadowFallback}) {
     feature(*constants, features.culling, "CULLING");
-    feature(*constants, features.cutouts, "CUTOUTS");
+    // 2: some object blends, and the kernels draw each ray's key (hit_filter.glsl).
+    if (features.cutouts) constants->push_back({"CUTOUTS", features.blends ? 2.0 : 1.0});
   }
   auto surface = [&](bool paths) {
     return std::vector<gpu::ConstantEntry>{

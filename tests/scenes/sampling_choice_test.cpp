@@ -1,6 +1,7 @@
 // The sampling chosen by the scene (scenes/sampling_choice.h): one pass of
-// 16 where no light is sampled at random, adaptive rounds where paths or the
-// environment's samples are random, and stated sampling kept.
+// 16 where no light is sampled at random, adaptive rounds where paths, the
+// environment's samples or blended surfaces are random, and stated sampling
+// kept.
 #include "scenes/sampling_choice.h"
 
 #include <gtest/gtest.h>
@@ -46,6 +47,14 @@ TEST(SamplingChoice, AdaptiveRoundsWhereAnythingIsRandom) {
   Scene lampsOnly = chosen(std::nullopt, 12);
   EXPECT_EQ(chooseSampling(lampsOnly), "paths are random");
   EXPECT_EQ(lampsOnly.render.sampling, Sampling::Adaptive);
+  // glTF's BLEND draws each ray's pass at random; MASK decides it.
+  for (const AlphaMode mode : {AlphaMode::Mask, AlphaMode::Blend}) {
+    Scene cutout = chosen(IblMethod::Prefiltered, 0);
+    cutout.objects.emplace_back().alphaMode = mode;
+    EXPECT_EQ(shadesWithoutNoise(cutout), mode == AlphaMode::Mask);
+    EXPECT_EQ(chooseSampling(cutout),
+              mode == AlphaMode::Mask ? "no light is sampled at random" : "blended surfaces are drawn at random");
+  }
 }
 
 TEST(SamplingChoice, StatedSamplingIsKept) {

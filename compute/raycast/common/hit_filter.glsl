@@ -2,9 +2,9 @@
 // one-sided object's back faces (docs/rendering.md, "One-sided surfaces"),
 // where a cutout's alpha is below its cutoff ("Cutouts") and where a blended
 // surface lets the ray through ("Blending"). CULLING and
-// CUTOUTS are 1 only where some object needs them, so that other scenes run
-// exactly the kernels they did; the object's flags are read only at a
-// candidate hit. Included by trace_bindings.glsl, after scene_bindings.glsl.
+// CUTOUTS are 1 only where some object needs them, CUTOUTS 2 where some
+// object blends, so that other scenes run exactly the kernels they did; the
+// object's flags are read only at a candidate hit. Included by trace_bindings.glsl, after scene_bindings.glsl.
 #ifndef FACET_RAYCAST_HIT_FILTER_GLSL
 #define FACET_RAYCAST_HIT_FILTER_GLSL
 
@@ -20,7 +20,7 @@ layout(constant_id = 2) const int CULLING = 0;
 layout(constant_id = 3) const int CUTOUTS = 0;
 
 // The key of the ray being traced (pass_through_key), which each kernel sets
-// before it traces, where CUTOUTS is 1.
+// before it traces, where CUTOUTS is 2.
 uint passThroughKey = 0u;
 
 // The key of camera ray `camera` of the band, or of the continuation ray of
@@ -54,7 +54,7 @@ bool passes_over(uint object, vec3 direction, vec3 normal, uint patchIndex, vec2
   PatchRecord record = load_patch_record(patchIndex);
   vec2 uv = surface_texcoord(channel_texel(record.firstTexcoord, o.channels, set), st.x, st.y).uv;
   float alpha = slot_value(slot, cutout_footprint(uv)).a;
-  if ((flags & FACET_OBJECT_BLEND) != 0u)
+  if (CUTOUTS == 2 && (flags & FACET_OBJECT_BLEND) != 0u)
     return !blend_present(o.alphaFactor * alpha, passThroughKey, object, record.sourcePatch);
   return !cutout_present(o.alphaFactor, alpha, o.alphaCutoff);
 }

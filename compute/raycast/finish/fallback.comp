@@ -44,12 +44,12 @@ void main() {
   if (SHADOW == 1) {
     record = shadowFallbacks[index];
     ray = to_ray(shadowRays[record.ray].ray);
-    if (CUTOUTS == 1) passThroughKey = shadow_ray_key(shadowRays[record.ray].slot);
+    if (CUTOUTS == 2) passThroughKey = shadow_ray_key(shadowRays[record.ray].slot);
   } else {
     record = cameraFallbacks[index];
     ray = PATHS == 1 ? to_ray(pathRays[record.ray].ray) : camera_ray(record.ray);
     ray.tMax = uintBitsToFloat(hitWords[HIT_WORDS * record.ray]);
-    if (CUTOUTS == 1) passThroughKey = nearest_ray_key(PATHS == 1 ? pathRays[record.ray].path : record.ray);
+    if (CUTOUTS == 2) passThroughKey = nearest_ray_key(PATHS == 1 ? pathRays[record.ray].path : record.ray);
   }
   Cell cell = cell_of(record.cell);
   Hit best = no_hit(ray.tMax);

@@ -96,14 +96,20 @@ vec3 shading_normal(PatchRecord record, float s, float t, vec3 limit) {
   return dot(n, limit) < 0.0 ? -n : n;
 }
 
+// What of a slot's radiance reaches the eye: for a camera ray that starts
+// inside an absorbing solid, its segment's transmittance (camera_path_start);
+// 1 otherwise. Applied as each slot is written, so that no loop walks the
+// slots again (lavapipe ends an invocation's loops after 65535 iterations).
+vec3 slotScale = vec3(1.0);
+
 // A slot whose radiance arrives without a test.
-void write_unshadowed(uint slot, vec3 radiance) { contributions[slot] = vec4(radiance, 0.0); }
+void write_unshadowed(uint slot, vec3 radiance) { contributions[slot] = vec4(slotScale * radiance, 0.0); }
 
 // A slot whose radiance arrives from `direction` unless something lies
 // along the shadow ray from `position` up to tMax; the shadow pass clears it
 // then.
 void write_shadowed(uint slot, vec3 radiance, vec3 position, vec3 ng, vec3 direction, float tMax) {
-  contributions[slot] = vec4(radiance, 0.0);
+  contributions[slot] = vec4(slotScale * radiance, 0.0);
   vec3 origin = shadow_ray_origin(position, ng, frame.shadowOffset);
   shadowRays[atomicAdd(counters.shadowRays, 1u)] = ShadowRayRecord(
       RayRecord(origin.x, origin.y, origin.z, frame.shadowOffset, direction.x, direction.y, direction.z, tMax), slot);
@@ -298,6 +304,13 @@ void main() {
   FacingNormals facing = facing_normals(shading_normal(record, hit.s, hit.tParam, limit),
                                         onMicroTriangle ? triangleNormal : limit, v);
   if (centre) write_aovs(pixel, hit, range, record, position, facing);
+  PathCarry start = PathCarry(vec3(1.0), vec3(0.0), uvec3(0u));
+  vec3 eyeSigma = vec3(frame.eyeSigmaR, frame.eyeSigmaG, frame.eyeSigmaB);
+  if (TRANSMISSION == 1 && !continuation && eyeSigma != vec3(0.0)) {
+    // The eye inside an absorbing solid sees this vertex through it.
+    start = camera_path_start(eyeSigma, vec3(0.0), position);
+    slotScale = start.throughput;
+  }
 
   MaterialRecord m = materials[range.material];
   bool anisotropic = ANISOTROPY == 1 && m.anisotropy != 0.0;
@@ -332,14 +345,6 @@ void main() {
     s.params = catcher_path_params(s.params);
   }
   if (EMISSION == 1) write_unshadowed(firstSlot + frame.slotsPerRay - 1u, shaded ? emitted : vec3(0.0));
-  PathCarry start = PathCarry(vec3(1.0), vec3(0.0), uvec3(0u));
-  vec3 eyeSigma = vec3(frame.eyeSigmaR, frame.eyeSigmaG, frame.eyeSigmaB);
-  if (TRANSMISSION == 1 && !continuation && eyeSigma != vec3(0.0)) {
-    // The eye inside an absorbing solid sees this vertex through it.
-    start = camera_path_start(eyeSigma, vec3(0.0), position);
-    for (uint slot = firstSlot; slot < firstSlot + frame.slotsPerRay; ++slot)
-      contributions[slot].xyz *= start.throughput;
-  }
   if (PATHS == 1)
     store_path_state(camera, continuation, shaded,
                      PathVertex(position, s.n, s.ng, v, s.params, specular_scale,

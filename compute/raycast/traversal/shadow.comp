@@ -28,6 +28,6 @@ void main() {
   if (index >= counters.shadowRays) return;
   rayIndex = index;
   ShadowRayRecord record = shadowRays[index];
-  if (CUTOUTS == 1) passThroughKey = shadow_ray_key(record.slot);
+  if (CUTOUTS == 2) passThroughKey = shadow_ray_key(record.slot);
   if (trace(to_ray(record.ray), true).patchIndex != FACET_NO_HIT) contributions[record.slot] = vec4(0.0);
 }

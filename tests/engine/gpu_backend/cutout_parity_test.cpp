@@ -22,6 +22,7 @@
 #include "analysis/parity.h"
 #include "engine/cpu/reference_renderer.h"
 #include "engine/gpu_backend/gpu_renderer.h"
+#include "scenes/environment_map.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_geometry.h"
 #include "tests/support/cages.h"
@@ -214,10 +215,17 @@ TEST_P(Cutout, BlendCoversAlphaOfWhatLiesBehindAndPassesTheRestOfTheLight) {
 
 TEST_P(Cutout, BlendedPathsPassThroughAsTheCpuReferencesDo) {
   // Light the backdrop bounces back meets the quad's back and passes as the
-  // camera's rays and the shadow rays do, decided alike on both backends.
+  // camera's rays and the shadow rays do, decided alike on both backends;
+  // a sampled environment adds shadow rays of both techniques, keyed by the
+  // seed of their vertex.
   scene::Scene blended = makeScene("blend", "BLEND", 0.5);
   blended.render.samplesPerPixel = 4;
   blended.render.bounces = 3;
+  blended.environment.emplace();
+  blended.environment->map = std::make_shared<const scene::EnvironmentMap>(scene::constantEnvironment(glm::dvec3(0.5)));
+  blended.environment->method = scene::IblMethod::Sampled;
+  blended.environment->samples = 2;
+  blended.environment->seed = 11;
   facet::testing::expectPathParity(facet::testing::renderBoth(device_, blended),
                                    {.median = 1e-4, .p98 = 2e-3, .parted = 8});
 }

@@ -3,7 +3,7 @@
 // environment renders the environment (the furnace), and glass, ruby and a
 // thin absorbing wall trace the CPU reference's paths, ray for ray per
 // bounce and per pixel, a limit on transmissions too; the public renderer
-// no longer refuses them.
+// renders them.
 #include <glm/exponential.hpp>
 #include <gtest/gtest.h>
 
@@ -109,9 +109,9 @@ TEST_F(GpuTransmission, AnAbsorbingSlabFarFromTheEyeAbsorbsAsTheCpuReferenceDoes
 // The camera inside an absorbing solid (docs/rendering.md, "The camera
 // inside a medium"): a sphere of radius 2 around the eye, in a uniform white
 // environment. Of index 1 it bends and reflects nothing, so each camera
-// ray leaves through the wall having crossed its distance d to it, and its
-// pixel is exp(-sigma d), d the depth AOV; of index 1.5 its paths still trace
-// the CPU reference's.
+// ray leaves through the wall having crossed its distance d to it, and the
+// image sums to what exp(-sigma d) does over its pixels, d the centre ray's
+// depth; of index 1.5 its paths still trace the CPU reference's.
 TEST_F(GpuTransmission, AnEyeInsideAnAbsorbingSolidSeesThroughIt) {
   materials::MaterialSpec spec = glassSpec(1.0);
   spec.attenuationColor = glm::dvec3(0.3, 0.6, 0.9);
@@ -131,8 +131,8 @@ TEST_F(GpuTransmission, AnEyeInsideAnAbsorbingSolidSeesThroughIt) {
       expected += glm::exp(-sigma * double(image->depth[i]));
     }
     const glm::dvec3 ratio = rendered / expected;
-    std::printf("eye inside absorbing glass of index 1: rendered / exp(-sigma d) = %.5f %.5f %.5f\n", ratio.x, ratio.y,
-                ratio.z);
+    std::printf("eye inside absorbing glass of index 1: image sum / sum of exp(-sigma d) = %.5f %.5f %.5f\n", ratio.x,
+                ratio.y, ratio.z);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(ratio[c], 1.0, 0.01) << c;
   }
   scene.materials[0] = buildTestMaterial([&] {
