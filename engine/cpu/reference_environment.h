@@ -38,6 +38,9 @@ class ReferenceEnvironment {
   // The radiance arriving from world direction `world`.
   glm::dvec3 radiance(const glm::dvec3& world) const;
 
+  // The seed of its samples at a path's first vertex (rules/sampling/path_samples.h).
+  std::uint32_t seed() const { return lighting_.environment->seed; }
+
   // The light at a vertex of BRDF `params` (energy compensation's
   // `specularScale`), of scene material `material`, with normals n and ng
   // facing v.

@@ -40,7 +40,6 @@ class ReferenceScene final : public PathScene {
                  const ibl::EnvironmentLighting* environment)
       : scene_(scene),
         geometry_(geometry),
-        lighting_(environment),
         compensation_(ibl::compensationTables(scene)),
         castsShadowRays_(environment && scene::castsShadowRays(*environment->environment)) {
     if (environment) environment_.emplace(*environment);
@@ -97,7 +96,7 @@ class ReferenceScene final : public PathScene {
   }
 
   // The scene's seed: vertex 1's environment pairs (rules/sampling/path_samples.h).
-  std::uint32_t environmentSeed() const { return lighting_ ? lighting_->environment->seed : 0u; }
+  std::uint32_t environmentSeed() const { return environment_ ? environment_->seed() : 0u; }
 
   // shade(), its environment pairs drawn with `seed`, and the vertex a path continues from.
   ShadedVertex shadeVertex(const SceneHit& hit, const glm::dvec3& direction, std::uint32_t pixel, std::uint32_t sample,
@@ -218,7 +217,6 @@ class ReferenceScene final : public PathScene {
 
   const scene::Scene& scene_;
   const scene::SceneGeometry& geometry_;
-  const ibl::EnvironmentLighting* lighting_;
   std::optional<ReferenceEnvironment> environment_;
   const ibl::CompensationTables compensation_;
   double shadowOffset_;
