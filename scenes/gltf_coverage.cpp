@@ -127,8 +127,11 @@ void warnOfIgnoredFeatures(const tinygltf::Model& model, const GltfReader& reade
         else if (name.rfind("JOINTS_", 0) == 0 || name.rfind("WEIGHTS_", 0) == 0)
           reader.warn(where, "skinning is not read; meshes render in their bind pose");
       }
-      if (!primitive.targets.empty())
-        reader.warn(at + ".targets", "morph targets are not read; meshes render without them, whatever the weights");
+      for (std::size_t t = 0; t < primitive.targets.size(); ++t)
+        for (const auto& [name, accessor] : primitive.targets[t])
+          if (name != "POSITION" && name != "NORMAL" && name != "TANGENT")  // tangents are warned of above
+            reader.warn(at + ".targets[" + std::to_string(t) + "]." + name,
+                        "a morph target's " + name + " is not read; its POSITION and NORMAL are");
     }
   if (!model.animations.empty()) reader.warn("animations", "animations are not read; the scene renders unanimated");
 }

@@ -161,9 +161,16 @@ DielectricSpecular applyTransmission(const tinygltf::Material& gltf, const std::
 // per face corner when every one has them (shading normals of the mesh as
 // authored), and likewise their TEXCOORD_0 as a face-varying channel: one
 // value per welded vertex and coordinate, so corners that share both stay
-// joined and the rest form seams.
+// joined and the rest form seams. Each primitive's morph targets move its
+// POSITIONs and NORMALs by `weights` (one per target; morphWeights).
 ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& primitives, const glm::dmat4& world,
-                   const GltfReader& reader, const std::string& where);
+                   const std::vector<double>& weights, const GltfReader& reader, const std::string& where);
+
+// The weights of a mesh instance's morph targets (glTF 2.0, 3.7.2.2): the
+// node's, else the mesh's, else 0 each; checked against every primitive's
+// target count and for finite values.
+std::vector<double> morphWeights(const tinygltf::Node& node, const tinygltf::Mesh& mesh, const GltfReader& reader,
+                                 const std::string& nodeWhere, const std::string& meshWhere);
 
 // gltf_schema.cpp: the JSON type of every core property, as written; throws
 // InputError naming the property.

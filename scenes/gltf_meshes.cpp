@@ -113,8 +113,47 @@ struct Attribute {
 
 }  // namespace
 
+std::vector<double> morphWeights(const tinygltf::Node& node, const tinygltf::Mesh& mesh, const GltfReader& reader,
+                                 const std::string& nodeWhere, const std::string& meshWhere) {
+  const bool fromNode = !node.weights.empty();
+  const std::vector<double>& stated = fromNode ? node.weights : mesh.weights;
+  const std::string field = (fromNode ? nodeWhere : meshWhere) + ".weights";
+  for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+    const std::size_t targets = mesh.primitives[p].targets.size();
+    if (!stated.empty() && stated.size() != targets)
+      reader.fail(field, "has " + std::to_string(stated.size()) + " weights, but " + meshWhere + ".primitives[" +
+                             std::to_string(p) + "] has " + std::to_string(targets) + " morph targets");
+    if (targets != mesh.primitives.front().targets.size())
+      reader.fail(meshWhere + ".primitives[" + std::to_string(p) + "].targets",
+                  "every primitive of a mesh must have as many morph targets as the first");
+  }
+  for (double w : stated)
+    if (!std::isfinite(w)) reader.fail(field, "must be finite numbers, has " + formatNumber(w));
+  if (!stated.empty()) return stated;
+  return std::vector<double>(mesh.primitives.empty() ? 0 : mesh.primitives.front().targets.size(), 0.0);
+}
+
+namespace {
+
+// `values` (3 per vertex) moved by each morph target's `attribute` times its
+// weight; a target without it moves nothing.
+void morph(std::vector<double>& values, const tinygltf::Primitive& primitive, const char* attribute,
+           const std::vector<double>& weights, const GltfReader& reader, const std::string& at) {
+  for (std::size_t t = 0; t < primitive.targets.size(); ++t) {
+    const auto delta = primitive.targets[t].find(attribute);
+    if (weights[t] == 0.0 || delta == primitive.targets[t].end()) continue;
+    const std::string where = at + ".targets[" + std::to_string(t) + "]." + attribute;
+    const std::vector<double> d = reader.read(delta->second, where, kFloatVec3);
+    if (d.size() != values.size())
+      reader.fail(where, std::string("has another count than the primitive's ") + attribute);
+    for (std::size_t i = 0; i < d.size(); ++i) values[i] += weights[t] * d[i];
+  }
+}
+
+}  // namespace
+
 ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& primitives, const glm::dmat4& world,
-                   const GltfReader& reader, const std::string& where) {
+                   const std::vector<double>& weights, const GltfReader& reader, const std::string& where) {
   ControlCage cage;
   cage.source = where;
   std::map<std::tuple<double, double, double>, int> welded;
@@ -137,12 +176,14 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& p
     const std::string at = where + ".primitives[" + std::to_string(p) + "]";
     auto position = primitive.attributes.find("POSITION");
     if (position == primitive.attributes.end()) reader.fail(at, "has no POSITION attribute");
-    const std::vector<double> xyz = reader.read(position->second, at + ".POSITION", kFloatVec3);
+    std::vector<double> xyz = reader.read(position->second, at + ".POSITION", kFloatVec3);
+    morph(xyz, primitive, "POSITION", weights, reader, at);
     std::vector<int> remap(xyz.size() / 3, -1);
     std::vector<glm::dvec3> vertexNormals;
     if (normals) {
-      const std::vector<double> n = reader.read(primitive.attributes.at("NORMAL"), at + ".NORMAL", kFloatVec3);
+      std::vector<double> n = reader.read(primitive.attributes.at("NORMAL"), at + ".NORMAL", kFloatVec3);
       if (n.size() != xyz.size()) reader.fail(at, "NORMAL and POSITION have different counts");
+      morph(n, primitive, "NORMAL", weights, reader, at);
       for (std::size_t v = 0; v < n.size() / 3; ++v) {
         const glm::dvec3 transformed = normalMatrix * glm::dvec3(n[3 * v], n[3 * v + 1], n[3 * v + 2]);
         const double length = glm::length(transformed);

@@ -301,10 +301,11 @@ void addMeshObjects(Scene& scene, const tinygltf::Model& model, const tinygltf::
   const tinygltf::Mesh& mesh = model.meshes[std::size_t(node.mesh)];
   const std::string meshWhere = "meshes[" + std::to_string(node.mesh) + "]";
   const std::size_t firstObject = scene.objects.size();
+  const std::vector<double> weights = detail::morphWeights(node, mesh, reader, where, meshWhere);
   for (const auto& [material, primitives] : materialGroups(mesh, defaultMaterialIndex, reader, meshWhere)) {
     Object object;
     object.name = objectName(mesh.name.empty() ? where : mesh.name, scene.objects.size() - firstObject);
-    object.cage = detail::toCage(mesh, primitives, world, reader, meshWhere);
+    object.cage = detail::toCage(mesh, primitives, world, weights, reader, meshWhere);
     if (object.cage.faceCount() == 0) continue;  // only triangles without area
     object.subdivision = Subdivision::None;
     object.material = material;

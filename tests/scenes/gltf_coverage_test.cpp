@@ -2,6 +2,8 @@
 // a required extension it lacks refuses the file, and everything else it
 // ignores is a warning on the scene naming the field.
 #include <gmock/gmock.h>
+
+#include <algorithm>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -130,6 +132,39 @@ TEST_F(GltfCoverage, AlphaModesAreRead) {
   EXPECT_EQ(blend.objects[0].alphaMode, AlphaMode::Blend);
   EXPECT_TRUE(hasCutout(blend.objects[0]));
   EXPECT_FALSE(hasCutout(load("opaque", {{"alphaCutoff", 0.9}}).objects[0]));
+}
+
+// Morph targets at the weights the file gives (glTF 2.0, 3.7.2.2): the
+// quad's own POSITION accessor as its one target, so that weight w scales the
+// quad by 1 + w; the node's weights win over the mesh's, and none is 0.
+TEST_F(GltfCoverage, MorphTargetsMoveTheMeshByTheirWeights) {
+  const auto mesh = [](const nlohmann::json& weights) {
+    nlohmann::json m = {{"primitives",
+                         {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}}},
+                           {"indices", 2},
+                           {"material", 0},
+                           {"targets", {{{"POSITION", 0}}}}}}}};
+    if (!weights.is_null()) m["weights"] = weights;
+    return nlohmann::json::array({m});
+  };
+  const auto largestX = [](const Scene& scene) {
+    double x = 0.0;
+    for (const glm::dvec3& p : scene.objects.at(0).cage.positions) x = std::max(x, p.x);
+    return x;
+  };
+  const Scene half = load("half", nlohmann::json::object(), {{"meshes", mesh({0.5})}});
+  EXPECT_THAT(half.warnings, IsEmpty());
+  EXPECT_DOUBLE_EQ(largestX(half), 1.5);
+  EXPECT_DOUBLE_EQ(largestX(load("unweighted", nlohmann::json::object(), {{"meshes", mesh(nullptr)}})), 1.0);
+  EXPECT_DOUBLE_EQ(largestX(load("node", nlohmann::json::object(),
+                                 {{"meshes", mesh({0.5})}, {"nodes", {{{"mesh", 0}, {"weights", {1.0}}}}}})),
+                   2.0);
+  EXPECT_THAT(
+      [&] {
+        load("counts", nlohmann::json::object(), {{"meshes", mesh({0.5, 0.25})}});
+      },
+      ThrowsMessage<InputError>(
+          HasSubstr("counts.gltf: meshes[0].weights: has 2 weights, but meshes[0].primitives[0] has 1 morph targets")));
 }
 
 TEST_F(GltfCoverage, AlphaCutoffAndModeAreChecked) {
