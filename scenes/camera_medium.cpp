@@ -6,9 +6,11 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "materials/material.h"
+#include "scenes/ray_tests.h"
 
 namespace facet::scene {
 namespace {
@@ -26,34 +28,6 @@ const std::array<glm::dvec3, 3> kDirections = {glm::normalize(glm::dvec3(0.2371,
                                                glm::normalize(glm::dvec3(-0.8123, 0.1975, 0.5489)),
                                                glm::normalize(glm::dvec3(0.4417, -0.3706, -0.8163))};
 
-bool rayMeetsBox(const glm::dvec3& origin, const glm::dvec3& inverse, const Aabb& box) {
-  double near = 0.0, far = std::numeric_limits<double>::infinity();
-  for (int axis = 0; axis < 3; ++axis) {
-    double t0 = (box.lo[axis] - origin[axis]) * inverse[axis], t1 = (box.hi[axis] - origin[axis]) * inverse[axis];
-    if (t0 > t1) std::swap(t0, t1);
-    near = std::max(near, t0);
-    far = std::min(far, t1);
-  }
-  return near <= far;
-}
-
-// The distance along the ray to triangle (a, b, c), if it meets it ahead
-// (Möller and Trumbore 1997).
-double triangleDistance(const glm::dvec3& origin, const glm::dvec3& direction, const glm::dvec3& a, const glm::dvec3& b,
-                        const glm::dvec3& c) {
-  const glm::dvec3 e1 = b - a, e2 = c - a, p = glm::cross(direction, e2);
-  const double det = glm::dot(e1, p);
-  constexpr double kNone = -1.0;
-  if (det == 0.0) return kNone;
-  const glm::dvec3 s = origin - a;
-  const double u = glm::dot(s, p) / det;
-  if (u < 0.0 || u > 1.0) return kNone;
-  const glm::dvec3 q = glm::cross(s, e1);
-  const double v = glm::dot(direction, q) / det;
-  if (v < 0.0 || u + v > 1.0) return kNone;
-  return glm::dot(e2, q) / det;
-}
-
 struct Crossings {
   int count = 0;
   double nearest = std::numeric_limits<double>::infinity();
@@ -68,24 +42,24 @@ void crossPatch(const BezierPatch& patch, const glm::dvec3& origin, const glm::d
   auto at = [&](int i, int j) { return grid[std::size_t(j * (n + 1) + i)]; };
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i)
-      for (double t : {triangleDistance(origin, direction, at(i, j), at(i + 1, j), at(i + 1, j + 1)),
-                       triangleDistance(origin, direction, at(i, j), at(i + 1, j + 1), at(i, j + 1))})
-        if (t > 0.0) {
-          ++crossings.count;
-          crossings.nearest = std::min(crossings.nearest, t);
-        }
+      for (const auto& [b, c] :
+           {std::pair(at(i + 1, j), at(i + 1, j + 1)), std::pair(at(i + 1, j + 1), at(i, j + 1))}) {
+        double t = 0.0, wb = 0.0, wc = 0.0;
+        if (!rayHitsTriangle(origin, direction, at(i, j), b, c, t, wb, wc) || !(t > 0.0)) continue;
+        ++crossings.count;
+        crossings.nearest = std::min(crossings.nearest, t);
+      }
 }
 
 Crossings countCrossings(const ObjectGeometry& object, const glm::dvec3& origin, const glm::dvec3& direction) {
   Crossings crossings;
-  const glm::dvec3 inverse = 1.0 / direction;
   const std::vector<PatchBvh::Node>& nodes = object.bvh.nodes();
   std::vector<int> stack{0};
   while (!stack.empty()) {
     const int index = stack.back();
     stack.pop_back();
     const PatchBvh::Node& node = nodes[std::size_t(index)];
-    if (!rayMeetsBox(origin, inverse, node.bounds)) continue;
+    if (!rayHitsBox(origin, direction, node.bounds, 0.0, std::numeric_limits<double>::infinity())) continue;
     if (!node.leaf()) {
       stack.push_back(index + 1);
       stack.push_back(node.next);

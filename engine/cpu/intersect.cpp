@@ -1,6 +1,7 @@
 #include "engine/cpu/intersect.h"
 
 #include "engine/cpu/limit_normal.h"
+#include "scenes/ray_tests.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
@@ -17,23 +18,6 @@ using scene::Aabb;
 using scene::PatchBvh;
 using scene::SubdivisionSurface;
 
-// Slab test of the ray against a box, restricted to [tMin, tMax].
-bool rayHitsBox(const Ray& ray, const Aabb& box, double tMin, double tMax) {
-  for (int axis = 0; axis < 3; ++axis) {
-    double o = ray.origin[axis], d = ray.direction[axis];
-    if (d == 0.0) {
-      if (o < box.lo[axis] || o > box.hi[axis]) return false;
-      continue;
-    }
-    double t0 = (box.lo[axis] - o) / d, t1 = (box.hi[axis] - o) / d;
-    if (t0 > t1) std::swap(t0, t1);
-    tMin = std::max(tMin, t0);
-    tMax = std::min(tMax, t1);
-    if (tMin > tMax) return false;
-  }
-  return true;
-}
-
 // Visits the patches of every leaf the ray reaches before the closest hit so
 // far; `testPatch(patch)` lowers tBest when it finds a closer hit.
 template <typename TestPatch>
@@ -44,7 +28,7 @@ void traverse(const PatchBvh& bvh, const Ray& ray, double& tBest, TestPatch&& te
   while (!stack.empty()) {
     const PatchBvh::Node& node = nodes[stack.back()];
     stack.pop_back();
-    if (!rayHitsBox(ray, node.bounds, ray.tMin, tBest)) continue;
+    if (!scene::rayHitsBox(ray.origin, ray.direction, node.bounds, ray.tMin, tBest)) continue;
     if (node.leaf()) {
       for (int k = 0; k < node.patchCount; ++k) testPatch(bvh.leafPatches()[node.next + k]);
       continue;
@@ -102,7 +86,7 @@ class ExactPatchIntersector {
       scene::SubPatchHull hull = scene::restrictBezierPatch(bezier, piece.s0, piece.s1, piece.t0, piece.t1);
       const Aabb box = hull.bounds();
       // Grown by the tolerance: a root may sit that far off the hull.
-      if (!rayHitsBox(ray_, grown(box, tolerance_), ray_.tMin, tBest)) continue;
+      if (!scene::rayHitsBox(ray_.origin, ray_.direction, grown(box, tolerance_), ray_.tMin, tBest)) continue;
       const double extent = box.diagonal();
       const bool flat = hull.flatnessError() <= settings_.flatness * extent;
       const bool splittable = piece.depth < settings_.maxDepth && extent > minimumPieceSize_;
@@ -278,24 +262,6 @@ TessellatedSurface TessellatedSurface::dice(const SubdivisionSurface& surface, i
 
 namespace {
 
-// Möller-Trumbore; returns t and the barycentric weights of b and c.
-bool rayHitsTriangle(const Ray& ray, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, double& t,
-                     double& wb, double& wc) {
-  glm::dvec3 e1 = b - a, e2 = c - a;
-  glm::dvec3 p = glm::cross(ray.direction, e2);
-  double det = glm::dot(e1, p);
-  if (det == 0.0) return false;
-  double inverse = 1.0 / det;
-  glm::dvec3 q = ray.origin - a;
-  wb = glm::dot(q, p) * inverse;
-  if (wb < 0.0 || wb > 1.0) return false;
-  glm::dvec3 r = glm::cross(q, e1);
-  wc = glm::dot(ray.direction, r) * inverse;
-  if (wc < 0.0 || wb + wc > 1.0) return false;
-  t = glm::dot(e2, r) * inverse;
-  return true;
-}
-
 // A micro-geometry vertex: position and where it sits, in grid steps.
 struct GridVertex {
   glm::dvec3 position;
@@ -353,7 +319,7 @@ std::optional<SurfaceHit> intersectTessellated(const SubdivisionSurface& surface
   traverse(bvh, ray, tBest, [&](int patch) {
     const scene::PatchInfo& info = surface.patch(patch);
     for (int j = 0; j < k; ++j) {
-      if (!rayHitsBox(ray, tessellation.rowBounds(patch, j), ray.tMin, tBest)) continue;
+      if (!scene::rayHitsBox(ray.origin, ray.direction, tessellation.rowBounds(patch, j), ray.tMin, tBest)) continue;
       for (int i = 0; i < k; ++i) {
         GridVertex triangles[8][3];
         const int count = cellTriangles(tessellation, patch, info.transitionMask, i, j, triangles);
@@ -362,7 +328,8 @@ std::optional<SurfaceHit> intersectTessellated(const SubdivisionSurface& surface
           const GridVertex& b = triangles[n][1];
           const GridVertex& c = triangles[n][2];
           double t, wb, wc;
-          if (!rayHitsTriangle(ray, a.position, b.position, c.position, t, wb, wc) || t < ray.tMin || t >= tBest)
+          if (!scene::rayHitsTriangle(ray.origin, ray.direction, a.position, b.position, c.position, t, wb, wc) ||
+              t < ray.tMin || t >= tBest)
             continue;
           const glm::dvec2 step = (1.0 - wb - wc) * a.step + wb * b.step + wc * c.step;
           SurfaceHit hit;
