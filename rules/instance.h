@@ -41,6 +41,7 @@
 #include "rules/shading/transmissive_continuation.h"
 #include "rules/surface/authored_normal.h"
 #include "rules/surface/back_face.h"
+#include "rules/surface/crossing.h"
 #include "rules/surface/cutout.h"
 #include "rules/surface/limit_normal.h"
 #include "rules/surface/tangent.h"
@@ -84,6 +85,7 @@
 #undef FACET_RULE_SHADING_TRANSMISSIVE_CONTINUATION
 #undef FACET_RULE_SURFACE_AUTHORED_NORMAL
 #undef FACET_RULE_SURFACE_BACK_FACE
+#undef FACET_RULE_SURFACE_CROSSING
 #undef FACET_RULE_SURFACE_CUTOUT
 #undef FACET_RULE_SURFACE_LIMIT_NORMAL
 #undef FACET_RULE_SURFACE_TANGENT

@@ -6,10 +6,15 @@
 #define FACET_LAYOUT_PATH_LAYOUT_H
 
 // A continuation ray of the compacted list (paths, docs/rendering.md
-// "Paths"), with the camera ray whose path it continues.
+// "Paths"), with the camera ray whose path it continues; one that leaves a
+// transmissive surface of object `crossedObject` passes over what its
+// crossing says (rules/surface/crossing.h: back 0 for none, inside 0 or 1).
 struct PathRayRecord {
   RayRecord ray;
   uint path;
+  uint crossedObject;
+  float crossingBack;
+  uint crossingInside;
 };
 
 // A path's state, one per camera ray: its throughput T1 ... Tk, and the
@@ -54,7 +59,9 @@ struct PathState {
   float specularB;
   // Transmission (docs/rendering.md, "Transmission and absorption"): the
   // vertex's material, FACET_PATH_* flags and transmission after its
-  // texture, and the absorption coefficient of the medium the path is in (0 in air).
+  // texture, and the absorption coefficient of the medium the path is in
+  // (0 in air); the object the vertex lies on, whose surface a ray leaving it crosses.
+  uint object;
   uint material;
   uint flags;
   float transmission;

@@ -34,10 +34,15 @@ std::unique_ptr<Intersector> objectIntersector(const scene::Scene& scene, std::s
                                                const scene::ObjectGeometry& object, const ExactSettings& settings) {
   const scene::Object& source = scene.objects[index];
   const bool culls = scene::cullsBackFaces(source, scene.materials[std::size_t(source.material)]);
+  // A path's ray that leaves a transmissive surface may pass over this object's hits.
+  const bool crossings = std::any_of(scene.materials.begin(), scene.materials.end(), materials::isTransmissive);
   HitFilter filter;
-  if (culls || scene::hasCutout(source))
-    filter = [culls, index, &source, &surface = object.surface, &textures = scene.textures](const Ray& ray,
-                                                                                            const SurfaceHit& hit) {
+  if (culls || scene::hasCutout(source) || crossings)
+    filter = [culls, crossings, index, &source, &surface = object.surface, &textures = scene.textures](
+                 const Ray& ray, const SurfaceHit& hit) {
+      if (crossings && rules::f64::crossing_passes_over(ray.crossing, ray.crossedObject == int(index), hit.t,
+                                                        ray.direction, hit.geometricNormal))
+        return false;
       if (culls && rules::f64::is_back_face(ray.direction, hit.geometricNormal)) return false;
       if (!scene::hasCutout(source)) return true;
       const glm::dvec2 uv = surface.evaluateTexcoord(hit.patch, hit.u, hit.v, source.alphaTexture.texCoord).uv;

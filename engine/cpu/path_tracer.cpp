@@ -15,6 +15,7 @@ glm::dvec3 tracePath(const PathScene& scene, const ShadedVertex& first, const m:
   glm::dvec3 radiance = start.throughput * first.radiance;
   m::PathCarry carry = start;
   m::PathVertex vertex = first.vertex;
+  int hitObject = first.object;
   for (int bounce = 1; bounce <= bounces; ++bounce) {
     const m::PathStep step = m::path_step(vertex, carry, key, std::uint32_t(bounce), limited, limit, offset);
     if (!step.continues) break;
@@ -22,7 +23,9 @@ glm::dvec3 tracePath(const PathScene& scene, const ShadedVertex& first, const m:
 
     BounceRays& counts = rays[std::size_t(bounce)];
     ++counts.rays;
-    const Ray ray{step.origin, step.direction, offset};
+    Ray ray{step.origin, step.direction, step.t_min};
+    ray.crossedObject = hitObject;
+    ray.crossing = step.crossing;
     const std::optional<ShadedVertex> hit = scene.shadeNearest(
         ray, key.pixel, key.sample_index, m::path_vertex_seed(key.seed, std::uint32_t(bounce) + 1), counts.shadowRays);
     if (!hit) {
@@ -37,6 +40,7 @@ glm::dvec3 tracePath(const PathScene& scene, const ShadedVertex& first, const m:
     carry.throughput *= m::segment_transmittance(carry.sigma, vertex.position, hit->vertex.position);
     radiance += carry.throughput * hit->radiance;
     vertex = hit->vertex;
+    hitObject = hit->object;
   }
   return radiance;
 }

@@ -27,6 +27,7 @@ namespace facet::cpu {
 struct ShadedVertex {
   glm::dvec3 radiance{0.0};  // D(x)
   rules::f64::PathVertex vertex{};
+  int object = -1;  // the scene's object the vertex lies on
 };
 
 // The rays of one bounce: bounce 0 is the camera rays and the shadow rays of
@@ -45,7 +46,7 @@ class PathScene {
   // environment pairs drawn with `seed`; none where the ray hits nothing.
   virtual std::optional<ShadedVertex> shadeNearest(const Ray& ray, std::uint32_t pixel, std::uint32_t sample,
                                                  std::uint32_t seed, std::uint64_t& shadowRays) const = 0;
-  // The offset and t_min of rays that leave a surface (shadow_ray_offset).
+  // The offset of rays that leave a surface (shadow_ray_offset).
   virtual double leavingOffset() const = 0;
   // The environment's radiance from `direction` (0 without one).
   virtual glm::dvec3 escapedRadiance(const glm::dvec3& direction) const = 0;

@@ -3,6 +3,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "rules/rules.h"
+
 #include <cstdint>
 #include <limits>
 
@@ -11,15 +13,20 @@ namespace facet::cpu {
 struct Ray {
   glm::dvec3 origin{0.0};
   glm::dvec3 direction{0.0, 0.0, 1.0};  // need not be unit; t is in units of |direction|
-  // Hits at t < tMin are ignored. Rays leaving a surface (shadow and
-  // secondary rays) start at the hit point with tMin ~ 1e-6 x the scene
-  // diagonal: a thousand times the exact method's default tolerance, so the
-  // surface they leave is not found again (tested).
+  // Hits at t < tMin are ignored. Rays leaving an opaque surface (shadow
+  // and secondary rays) start off it by the offset with tMin the same, about
+  // 1e-6 x the scene diagonal: a thousand times the exact method's default
+  // tolerance, so the surface they leave is not found again (tested). A path
+  // leaving a transmissive surface has tMin 0 and its crossing instead.
   double tMin = 0.0;
   double tMax = std::numeric_limits<double>::infinity();
   // Decides where a blended surface lets the ray through (pass_through_key,
   // rules/surface/cutout.h).
   std::uint32_t passThroughKey = 0;
+  // A ray that leaves a transmissive surface of object `crossedObject`
+  // passes over what its crossing says (rules/surface/crossing.h).
+  int crossedObject = -1;
+  rules::f64::SurfaceCrossing crossing = rules::f64::no_crossing();
 
   glm::dvec3 at(double t) const { return origin + t * direction; }
 };

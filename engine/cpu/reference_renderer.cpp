@@ -137,7 +137,8 @@ class ReferenceScene final : public PathScene {
       radiance += m::punctual_radiance(s.params, s.n, incidence.direction, v, incidence.color, specularScale);
     }
     return {radiance,
-            {position, s.n, s.ng, v, s.params, specularScale, fetched.transmissive, s.transmission, s.outside}};
+            {position, s.n, s.ng, v, s.params, specularScale, fetched.transmissive, s.transmission, s.outside},
+            hit.object};
   }
 
   std::optional<ShadedVertex> shadeNearest(const Ray& ray, std::uint32_t pixel, std::uint32_t sample, std::uint32_t seed,

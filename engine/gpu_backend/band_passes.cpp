@@ -109,6 +109,8 @@ Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const scene
   if (!features.paths) return k;
   std::vector<gpu::ConstantEntry> pathIntersect = method, continuation, pathGather{{"PATHS", 1}};
   pathIntersect.push_back({"PATHS", 1});
+  // A continuation ray that leaves a transmissive surface passes over it (hit_filter.glsl).
+  feature(pathIntersect, features.transmission, "CROSSINGS");
   feature(continuation, features.transmission, "TRANSMISSION");
   feature(continuation, features.lobeLimits, "LOBE_LIMITS");
   feature(pathGather, features.transmission, "TRANSMISSION");
@@ -116,6 +118,7 @@ Kernels kernels(PipelineCache& pipelines, const scene::Scene& scene, const scene
   k.pathIntersect = &pipelines.get("intersect", pathIntersect);
   k.pathGather = &pipelines.get("gather", pathGather);
   cameraFallback.push_back({"PATHS", 1});
+  feature(cameraFallback, features.transmission, "CROSSINGS");
   if (!tessellated) k.pathFallbacks = &pipelines.get("fallback", cameraFallback);
   return k;
 }

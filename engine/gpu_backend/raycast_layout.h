@@ -37,8 +37,8 @@ static_assert(offsetof(facet::gpu_layout::RenderCounters, shadowFallbackX) == 36
 static_assert(offsetof(facet::gpu_layout::RenderCounters, pathX) == 52);
 static_assert(offsetof(facet::gpu_layout::RenderCounters, liveX) == 72);
 static_assert(sizeof(facet::gpu_layout::FallbackRecord) == 28);
-static_assert(sizeof(facet::gpu_layout::PathRayRecord) == 36);
-static_assert(sizeof(facet::gpu_layout::PathState) == 260);
+static_assert(sizeof(facet::gpu_layout::PathRayRecord) == 48);
+static_assert(sizeof(facet::gpu_layout::PathState) == 264);
 static_assert(sizeof(facet::gpu_layout::HitRecord) == 32);
 static_assert(sizeof(facet::gpu_layout::LightRecord) == 48);
 static_assert(sizeof(facet::gpu_layout::TextureSlotRecord) == 32);

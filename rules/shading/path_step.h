@@ -13,6 +13,7 @@
 #include "rules/shading/lights.h"
 #include "rules/shading/path_continuation.h"
 #include "rules/shading/transmissive_continuation.h"
+#include "rules/surface/crossing.h"
 
 // Which random numbers a path draws (rules/sampling/path_samples.h): the
 // pixel of the full image, the camera sample of `samples`, the scene's seed.
@@ -59,8 +60,10 @@ FACET_FN PathCarry camera_path_start(vec3 eye_sigma, vec3 eye, vec3 first_vertex
 struct PathStep {
   bool continues;  // false: roulette ended it, its lobe kind is over its limit, or it carries nothing
   PathCarry carry;
-  vec3 origin;  // of the ray that leaves the vertex: below the surface where it went through
+  vec3 origin;  // of the ray that leaves the vertex
   vec3 direction;
+  real t_min;                // of that ray
+  SurfaceCrossing crossing;  // where it leaves a transmissive surface (rules/surface/crossing.h)
   bool transmitted;
 };
 
@@ -74,6 +77,8 @@ FACET_FN PathStep path_step(PathVertex x, PathCarry carry, PathSampleKey key, ui
   step.carry = carry;
   step.origin = x.position;
   step.direction = vec3(real(0));
+  step.t_min = offset;
+  step.crossing = no_crossing();
   step.transmitted = false;
   real survival = path_survival_probability(carry.throughput, vertex);
   if (survival < real(1)) {
@@ -107,7 +112,14 @@ FACET_FN PathStep path_step(PathVertex x, PathCarry carry, PathSampleKey key, ui
   }
   if (step.carry.throughput == vec3(real(0))) return step;
   step.continues = true;
-  step.origin = shadow_ray_origin(x.position, step.transmitted ? -x.ng : x.ng, offset);
+  if (x.transmissive) {
+    // Through the surface or back into the solid, its far side may be nearer than the offset.
+    step.t_min = real(0);
+    step.crossing = surface_crossing(step.direction, x.ng, x.outside, offset);
+    step.origin = crossing_origin(step.crossing, x.position, step.direction);
+  } else {
+    step.origin = shadow_ray_origin(x.position, x.ng, offset);
+  }
   return step;
 }
 

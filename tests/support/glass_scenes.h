@@ -75,6 +75,24 @@ inline scene::Scene underWhite(const materials::Material& material, scene::Contr
   return s;
 }
 
+// A box |x|, |y| <= 3, |z| <= depth / 2, its faces wound outward.
+inline scene::ControlCage slab(double depth) {
+  scene::ControlCage cage;
+  cage.source = "slab";
+  for (int i = 0; i < 8; ++i)
+    cage.positions.push_back({i & 1 ? 3.0 : -3.0, i & 2 ? 3.0 : -3.0, i & 4 ? depth / 2 : -depth / 2});
+  cage.faceVertexCounts = {4, 4, 4, 4, 4, 4};
+  cage.faceVertexIndices = {0, 2, 3, 1, 4, 5, 7, 6, 0, 4, 6, 2, 1, 3, 7, 5, 0, 1, 5, 4, 2, 6, 7, 3};
+  return cage;
+}
+
+// A slab's pixel seen face on under a uniform white environment: 1 less
+// what the glass absorbs, its two interfaces of reflectance `f` reflecting
+// back and forth (Airy's sum), `tau` the transmittance of one crossing.
+inline double slabUnderWhite(double f, double tau) {
+  return f + (1 - f) * (1 - f) * (f * tau * tau + tau) / (1 - f * f * tau * tau);
+}
+
 // A smooth glass ball and a rough ruby one (absorbing all but red) on a
 // diffuse ground, under `map` sampled with its shadow rays, `width` x
 // `height` pixels of 4 samples.

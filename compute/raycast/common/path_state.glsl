@@ -9,6 +9,7 @@
 
 // What a path carries for transmission (PathState's last members).
 struct PathMedium {
+  uint object;  // the vertex's
   uint material;
   uint flags;          // FACET_PATH_*
   float transmission;  // the vertex's, after any texture (TransmissionParams.transmission)
@@ -24,7 +25,7 @@ PathState pack_path_state(vec3 throughput, PathVertex x, PathMedium medium, uvec
                    x.position.z, x.n.x, x.n.y, x.n.z, x.ng.x, x.ng.y, x.ng.z, x.v.x, x.v.y, x.v.z, p.d_model,
                    p.g_model, p.f_model, p.alpha, p.f0.x, p.f0.y, p.f0.z, p.eta.x, p.eta.y, p.eta.z, p.k.x, p.k.y,
                    p.k.z, p.metallic, p.diffuse.x, p.diffuse.y, p.diffuse.z, x.specular_scale.x, x.specular_scale.y,
-                   x.specular_scale.z, medium.material, medium.flags, medium.transmission, medium.sigma.x, medium.sigma.y,
+                   x.specular_scale.z, medium.object, medium.material, medium.flags, medium.transmission, medium.sigma.x, medium.sigma.y,
                    medium.sigma.z, taken.x, taken.y, taken.z, p.anisotropy, p.tangent.x, p.tangent.y,
                    p.tangent.z, p.clearcoat, p.clearcoat_alpha, p.clearcoat_normal.x, p.clearcoat_normal.y,
                    p.clearcoat_normal.z, p.sheen_color.x, p.sheen_color.y, p.sheen_color.z, p.sheen_alpha,
@@ -35,7 +36,7 @@ PathState pack_path_state(vec3 throughput, PathVertex x, PathMedium medium, uvec
 vec3 path_throughput(PathState s) { return vec3(s.throughputR, s.throughputG, s.throughputB); }
 
 PathMedium path_medium(PathState s) {
-  return PathMedium(s.material, s.flags, s.transmission, vec3(s.sigmaR, s.sigmaG, s.sigmaB));
+  return PathMedium(s.object, s.material, s.flags, s.transmission, vec3(s.sigmaR, s.sigmaG, s.sigmaB));
 }
 
 // A material record's transmission as the shared rules take it.

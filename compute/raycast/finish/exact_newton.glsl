@@ -72,7 +72,7 @@ int newton(ControlPoints c, Ray ray, uint patchIndex, uint object, vec4 piece, v
   bool onPatch = s >= -margin && s <= 1.0 + margin && t >= -margin && t <= 1.0 + margin;
   vec2 st = clamp(vec2(s, t), 0.0, 1.0);
   if (onPatch && rayT >= ray.tMin && rayT < best.t &&
-      !passes_over(object, ray.direction, cross(point.ds, point.dt), patchIndex, st)) {
+      !passes_over(object, ray.direction, cross(point.ds, point.dt), patchIndex, st, rayT)) {
     best.t = rayT;
     best.patchIndex = patchIndex;
     best.object = object;

@@ -50,6 +50,7 @@ void main() {
     ray = PATHS == 1 ? to_ray(pathRays[record.ray].ray) : camera_ray(record.ray);
     ray.tMax = uintBitsToFloat(hitWords[HIT_WORDS * record.ray]);
     if (CUTOUTS == 2) passThroughKey = nearest_ray_key(PATHS == 1 ? pathRays[record.ray].path : record.ray);
+    if (CROSSINGS == 1) set_crossing(pathRays[record.ray]);
   }
   Cell cell = cell_of(record.cell);
   Hit best = no_hit(ray.tMax);

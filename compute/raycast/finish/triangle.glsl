@@ -22,7 +22,7 @@ void intersect_triangle(Ray ray, vec3 a, vec3 b, vec3 c, vec2 stepA, vec2 stepB,
   float t = dot(e2, r) * inverse;
   if (t < ray.tMin || t >= best.t) return;
   vec2 st = ((1.0 - wb - wc) * stepA + wb * stepB + wc * stepC) / rate;
-  if (passes_over(object, ray.direction, cross(e1, e2), patchIndex, st)) return;
+  if (passes_over(object, ray.direction, cross(e1, e2), patchIndex, st, t)) return;
   best.t = t;
   best.patchIndex = patchIndex;
   best.object = object;

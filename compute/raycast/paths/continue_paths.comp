@@ -64,7 +64,7 @@ void main() {
     pathStates[path].sigmaB = step.carry.sigma.z;
   }
   pathRays[atomicAdd(counters.pathRays, 1u)] =
-      PathRayRecord(RayRecord(step.origin.x, step.origin.y, step.origin.z, frame.shadowOffset, step.direction.x,
+      PathRayRecord(RayRecord(step.origin.x, step.origin.y, step.origin.z, step.t_min, step.direction.x,
                               step.direction.y, step.direction.z, INFINITE_DISTANCE),
-                    path);
+                    path, medium.object, step.crossing.back, step.crossing.inside ? 1u : 0u);
 }

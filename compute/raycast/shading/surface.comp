@@ -248,9 +248,10 @@ void shade_lights(uint first, bool shaded, SurfaceAtHit s, vec3 position, vec3 v
 // starts as `start` says; the counts per lobe kind travel with the path (the
 // camera ray's vertex has taken none). A shaded vertex puts its path on the
 // live list, which the next bounce continues.
-void store_path_state(uint camera, bool continuation, bool shaded, PathVertex x, uint material, PathCarry start) {
+void store_path_state(uint camera, bool continuation, bool shaded, PathVertex x, uint object, uint material,
+                      PathCarry start) {
   vec3 throughput = continuation ? path_throughput(pathStates[camera]) : start.throughput;
-  PathMedium medium = PathMedium(material, 0u, x.transmission.transmission, start.sigma);
+  PathMedium medium = PathMedium(object, material, 0u, x.transmission.transmission, start.sigma);
   if (TRANSMISSION == 1) {
     if (continuation) {
       medium.sigma = path_medium(pathStates[camera]).sigma;
@@ -349,5 +350,5 @@ void main() {
     store_path_state(camera, continuation, shaded,
                      PathVertex(position, s.n, s.ng, v, s.params, specular_scale,
                                 TRANSMISSION == 1 && m.transmissive == 1u, s.transmission, s.outside),
-                     range.material, start);
+                     hit.object, range.material, start);
 }

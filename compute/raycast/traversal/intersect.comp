@@ -31,6 +31,7 @@ void main() {
   if (index >= (PATHS == 1 ? counters.pathRays : frame.pixelCount * frame.raysPerPixel)) return;
   rayIndex = index;
   if (CUTOUTS == 2) passThroughKey = nearest_ray_key(PATHS == 1 ? pathRays[index].path : index);
+  if (CROSSINGS == 1) set_crossing(pathRays[index]);
   Hit hit = trace(PATHS == 1 ? to_ray(pathRays[index].ray) : camera_ray(index), false);
   hits[index] = HitRecord(hit.t, hit.patchIndex, hit.object, hit.st.x, hit.st.y, hit.geometricNormal.x,
                           hit.geometricNormal.y, hit.geometricNormal.z);

@@ -33,17 +33,6 @@ glm::dvec3 renderMean(const scene::Scene& scene) {
   return coveredMean(cpu::renderReference(scene, scene::buildGeometry(scene)));
 }
 
-// A box |x|, |y| <= 3, |z| <= depth / 2, its faces wound outward.
-scene::ControlCage slab(double depth) {
-  scene::ControlCage cage;
-  cage.source = "slab";
-  for (int i = 0; i < 8; ++i)
-    cage.positions.push_back({i & 1 ? 3.0 : -3.0, i & 2 ? 3.0 : -3.0, i & 4 ? depth / 2 : -depth / 2});
-  cage.faceVertexCounts = {4, 4, 4, 4, 4, 4};
-  cage.faceVertexIndices = {0, 2, 3, 1, 4, 5, 7, 6, 0, 4, 6, 2, 1, 3, 7, 5, 0, 1, 5, 4, 2, 6, 7, 3};
-  return cage;
-}
-
 TEST(TransmissionRender, GlassBallInAWhiteFurnaceRendersTheEnvironment) {
   const materials::Material glass = build(glassSpec(1.5));
   const glm::dvec3 direct = renderMean(underWhite(glass, testing::uvSphereCage(32, 64), 0, 32, 35));
@@ -92,7 +81,7 @@ TEST(TransmissionRender, ThinAndThickSlabsOfOneGlassTransmitBeerLambert) {
     materials::MaterialSpec spec = glassSpec(ior);
     spec.attenuationColor = glm::dvec3(0.5, 0.25, 1.0);
     spec.attenuationDistance = depth;  // exp(-sigma d) = the colour
-    const glm::dvec3 thick = renderMean(underWhite(build(spec), slab(depth), 12, 16, 4));
+    const glm::dvec3 thick = renderMean(underWhite(build(spec), testing::slab(depth), 12, 16, 4));
     spec.thinWalled = true;
     spec.thickness = depth;
     const glm::dvec3 thin = renderMean(underWhite(
@@ -100,17 +89,36 @@ TEST(TransmissionRender, ThinAndThickSlabsOfOneGlassTransmitBeerLambert) {
     const double f = rules::f64::fresnel_dielectric(ior, 1.0);
     for (int c = 0; c < 3; ++c) {
       const double tau = (*spec.attenuationColor)[c];
-      // Under a uniform environment a pixel is 1 less what the glass absorbs:
-      // the thick slab's two interfaces reflect back and forth (Airy's sum),
-      // the thin wall is one interface of transmittance (1 - F) tau.
-      const double denominator = 1 - f * f * tau * tau;
-      const double thickExpected = f + (1 - f) * (1 - f) * (f * tau * tau + tau) / denominator;
+      // The thin wall is one interface of transmittance (1 - F) tau.
+      const double thickExpected = testing::slabUnderWhite(f, tau);
       const double thinExpected = f + (1 - f) * tau;
       std::printf("ior %.1f channel %d: tau %.3f, thick %.5f (expected %.5f), thin %.5f (expected %.5f)\n", ior, c, tau,
                   thick[c], thickExpected, thin[c], thinExpected);
       EXPECT_NEAR(thick[c], thickExpected, ior == 1.0 ? 2e-3 : 1e-2) << ior << " " << c;
       EXPECT_NEAR(thin[c], thinExpected, ior == 1.0 ? 2e-3 : 1e-2) << ior << " " << c;
     }
+  }
+}
+
+// A path leaves a transmissive surface from the vertex itself, keeping the
+// solid's far side however near (docs/rendering.md, "Leaving a transmissive
+// surface"): a slab a tenth of the leaving offset thick, of an absorbing
+// glass, transmits as Airy's sum says, by either intersection method.
+TEST(TransmissionRender, ASlabThinnerThanTheLeavingOffsetTransmitsBeerLambert) {
+  const double depth = 1e-7;
+  materials::MaterialSpec spec = glassSpec(1.5);
+  spec.attenuationColor = glm::dvec3(0.2, 0.5, 0.8);
+  spec.attenuationDistance = depth;
+  for (auto method : {scene::IntersectionMethod::Exact, scene::IntersectionMethod::Tessellated}) {
+    scene::Scene s = underWhite(build(spec), testing::slab(depth), 8, 8, 4);
+    s.render.method = method;
+    const scene::SceneGeometry geometry = scene::buildGeometry(s);
+    ASSERT_GT(rules::f64::shadow_ray_offset(geometry.bounds.diagonal(), 0.0), 10 * depth);
+    const glm::dvec3 mean = coveredMean(cpu::renderReference(s, geometry));
+    const double f = rules::f64::fresnel_dielectric(1.5, 1.0);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(mean[c], testing::slabUnderWhite(f, (*spec.attenuationColor)[c]), 1e-2)
+          << (method == scene::IntersectionMethod::Exact ? "exact " : "tessellated ") << c;
   }
 }
 

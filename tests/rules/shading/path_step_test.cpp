@@ -57,6 +57,8 @@ TEST(PathStep, AContinuationLeavesAboveTheSurfaceWeightedByTheAlbedo) {
     ++continued;
     EXPECT_GT(glm::dot(step.direction, kN), 0.0);
     EXPECT_EQ(step.origin, lambert(0.5).position + kOffset * kN);
+    EXPECT_EQ(step.t_min, kOffset);
+    EXPECT_EQ(step.crossing.back, 0.0);               // an opaque surface is left by the offset alone
     EXPECT_NEAR(step.carry.throughput.x, 0.5, 1e-9);  // f cos / pdf of a cosine-sampled Lambert lobe
     EXPECT_EQ(step.carry.taken, glm::uvec3(0));      // nothing counted without limits
   }
@@ -103,9 +105,15 @@ TEST(PathStep, ThroughASolidTheMediumIsTheInsideOnlyBetweenItsInterfaces) {
       ++entered;
       EXPECT_EQ(in.carry.sigma, glass(true).transmission.sigma);
       EXPECT_LT(glm::dot(in.direction, kN), 0.0);
-      EXPECT_EQ(in.origin, glass(true).position - kOffset * kN);  // below the surface it went through
+      // From the vertex, backed up to one offset above the surface it went
+      // through, t from 0, keeping the far side however near.
+      EXPECT_EQ(in.t_min, 0.0);
+      EXPECT_TRUE(in.crossing.inside);
+      EXPECT_EQ(in.origin, m::crossing_origin(in.crossing, glass(true).position, in.direction));
+      EXPECT_NEAR(glm::dot(in.origin - glass(true).position, kN), kOffset, 1e-12);
     } else if (in.continues) {
       EXPECT_EQ(in.carry.sigma, glm::dvec3(0.0));
+      EXPECT_FALSE(in.crossing.inside);  // reflected outside: into air
     }
     m::PathCarry inside = fresh();
     inside.sigma = glass(true).transmission.sigma;
@@ -113,8 +121,10 @@ TEST(PathStep, ThroughASolidTheMediumIsTheInsideOnlyBetweenItsInterfaces) {
     if (out.continues && out.transmitted) {
       ++left;
       EXPECT_EQ(out.carry.sigma, glm::dvec3(0.0));
+      EXPECT_FALSE(out.crossing.inside);
     } else if (out.continues) {
       EXPECT_EQ(out.carry.sigma, inside.sigma);  // reflected inside: still in the medium
+      EXPECT_TRUE(out.crossing.inside);
     }
   }
   EXPECT_GT(entered, 128);
