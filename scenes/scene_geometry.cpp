@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <sstream>
 
 #include "scenes/cage_topology.h"
 #include "scenes/input_error.h"
+#include "scenes/memory_budget.h"
 
 namespace facet::scene {
 namespace {
@@ -78,6 +80,29 @@ void checkExtent(const Object& object) {
   }
 }
 
+// A lower bound on what refining a cage holds per quad (a face of n != 4
+// sides is n quads): measured on a regular grid at isolation 1, where each
+// quad is one patch, the peak grew by 1.6 KB a face on the CPU reference and
+// 2.2 KB on the GPU path (BENCHMARKS.md); irregular cages need more.
+constexpr std::uint64_t kRefinementBytesPerQuad = 1024;
+
+// Refuses, before any is refined, cages whose quads alone would take more
+// than the memory limit: one clear error, not an allocation that fails
+// gigabytes into the refinement.
+void checkRefinementFitsInMemory(const Scene& scene) {
+  const MemoryLimit limit = memoryLimit();
+  std::uint64_t quads = 0;
+  for (const Object& object : scene.objects) {
+    for (int count : object.cage.faceVertexCounts) quads += count == 4 ? 1 : std::uint64_t(count);
+    const std::uint64_t needed = quads * kRefinementBytesPerQuad;
+    if (needed <= limit.bytes) continue;
+    throw InputError(object.cage.source, 0, "the scene's cages must fit in memory once refined",
+                     "object '" + object.name + "' brings the scene's cages to " + std::to_string(quads) +
+                         " quads, which need at least " + gigabytes(needed) + " of memory to refine and the limit is " +
+                         gigabytes(limit.bytes) + " (" + limit.source + "); decimate the mesh");
+  }
+}
+
 double distanceToBox(const glm::dvec3& p, const Aabb& box) {
   const glm::dvec3 outside = glm::max(glm::max(box.lo - p, p - box.hi), glm::dvec3(0.0));
   return glm::length(outside);
@@ -124,6 +149,7 @@ std::size_t SceneGeometry::bytes() const {
 
 SceneGeometry buildGeometry(const Scene& scene) {
   static std::atomic<std::uint64_t> serials{0};
+  checkRefinementFitsInMemory(scene);
   SceneGeometry geometry;
   geometry.serial = ++serials;
   for (const Object& object : scene.objects) {
