@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace facet::testing {
@@ -54,12 +55,28 @@ inline void expectSameImage(const facet::Image& a, const facet::Image& b) {
   EXPECT_EQ(a.ids, b.ids);
 }
 
-// A file in a folder of this process's own.
+// A folder of this process's own, removed when the process ends.
+class SceneFolder {
+ public:
+  SceneFolder() : path_(std::filesystem::temp_directory_path() / ("facet_api_scenes_" + std::to_string(::getpid()))) {
+    std::filesystem::create_directories(path_);
+  }
+  ~SceneFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  SceneFolder(const SceneFolder&) = delete;
+  SceneFolder& operator=(const SceneFolder&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// A file in the process's scene folder.
 inline std::filesystem::path writeScene(const std::string& name, const std::string& json) {
-  const std::filesystem::path folder =
-      std::filesystem::temp_directory_path() / ("facet_api_scenes_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(folder);
-  const std::filesystem::path file = folder / name;
+  static const SceneFolder folder;
+  const std::filesystem::path file = folder.path() / name;
   std::ofstream(file) << json;
   return file;
 }
