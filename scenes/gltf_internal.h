@@ -182,6 +182,19 @@ void checkPropertyTypes(const nlohmann::json& gltf, const std::string& source);
 void checkExtensions(const tinygltf::Model& model, const GltfReader& reader);
 void warnOfIgnoredFeatures(const tinygltf::Model& model, const GltfReader& reader);
 
+// gltf_variants.cpp: KHR_materials_variants. The variant named `name`
+// among the file's `count` (index -1 for an empty name: each primitive's
+// own material); throws naming the file's variants where none has the name.
+struct GltfVariant {
+  int index = -1;
+  int count = 0;
+};
+GltfVariant chosenVariant(const tinygltf::Model& model, const std::string& name, const GltfReader& reader);
+// The material index primitive `where` renders in `variant`: its mapping's
+// where one lists the variant, else its own.
+int variantMaterial(const tinygltf::Primitive& primitive, GltfVariant variant, const GltfReader& reader,
+                    const std::string& where);
+
 // gltf_nodes.cpp
 glm::dmat4 localTransform(const tinygltf::Node& node);
 // Light `index` of KHR_lights_punctual, placed by node `where`.

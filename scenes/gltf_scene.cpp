@@ -201,20 +201,23 @@ bool decodeGltfImage(tinygltf::Image* image, const int index, std::string* error
   }
 }
 
-// The primitives of `mesh` by the scene material they use, in the order each
-// material first appears: every group becomes one object, so each primitive
-// keeps its own material while those sharing one weld into one cage.
+// The primitives of `mesh` by the scene material they use in `variant`, in
+// the order each material first appears: every group becomes one object, so
+// each primitive keeps its own material while those sharing one weld into
+// one cage.
 std::vector<std::pair<int, std::vector<std::size_t>>> materialGroups(const tinygltf::Mesh& mesh,
                                                                      int defaultMaterialIndex,
+                                                                     detail::GltfVariant variant,
                                                                      const detail::GltfReader& reader,
                                                                      const std::string& where) {
   std::vector<std::pair<int, std::vector<std::size_t>>> groups;
   for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
-    const int material = mesh.primitives[p].material;
+    const std::string primitive = where + ".primitives[" + std::to_string(p) + "]";
+    const int material = detail::variantMaterial(mesh.primitives[p], variant, reader, primitive);
     if (material < -1 || material >= defaultMaterialIndex)
-      reader.fail(where + ".primitives[" + std::to_string(p) + "].material",
-                  "material index " + std::to_string(material) + " out of range (the file has " +
-                      std::to_string(defaultMaterialIndex) + " materials)");
+      reader.fail(primitive + ".material", "material index " + std::to_string(material) +
+                                               " out of range (the file has " + std::to_string(defaultMaterialIndex) +
+                                               " materials)");
     const int index = material >= 0 ? material : defaultMaterialIndex;
     auto group = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == index; });
     if (group == groups.end()) group = groups.insert(groups.end(), {index, {}});
@@ -296,13 +299,13 @@ std::optional<std::string> slotOnSecondTexcoords(const materials::MaterialTextur
 // per material of its primitives, at `world`.
 void addMeshObjects(Scene& scene, const tinygltf::Model& model, const tinygltf::Node& node, const std::string& where,
                     const glm::dmat4& world, int defaultMaterialIndex, const std::vector<detail::GltfCutout>& cutouts,
-                    const detail::GltfReader& reader) {
+                    detail::GltfVariant variant, const detail::GltfReader& reader) {
   if (std::size_t(node.mesh) >= model.meshes.size()) reader.fail(where, "mesh index out of range");
   const tinygltf::Mesh& mesh = model.meshes[std::size_t(node.mesh)];
   const std::string meshWhere = "meshes[" + std::to_string(node.mesh) + "]";
   const std::size_t firstObject = scene.objects.size();
   const std::vector<double> weights = detail::morphWeights(node, mesh, reader, where, meshWhere);
-  for (const auto& [material, primitives] : materialGroups(mesh, defaultMaterialIndex, reader, meshWhere)) {
+  for (const auto& [material, primitives] : materialGroups(mesh, defaultMaterialIndex, variant, reader, meshWhere)) {
     Object object;
     object.name = objectName(mesh.name.empty() ? where : mesh.name, scene.objects.size() - firstObject);
     object.cage = detail::toCage(mesh, primitives, world, weights, reader, meshWhere);
@@ -331,7 +334,7 @@ void addMeshObjects(Scene& scene, const tinygltf::Model& model, const tinygltf::
 
 }  // namespace
 
-Scene loadGltfScene(const std::filesystem::path& path) {
+Scene loadGltfScene(const std::filesystem::path& path, const std::string& variant) {
   const std::string source = path.string();
   std::string warning;
   tinygltf::Model model = parseGltf(path, warning);
@@ -343,6 +346,7 @@ Scene loadGltfScene(const std::filesystem::path& path) {
     start = end + 1;
   }
   detail::warnOfIgnoredFeatures(model, reader);
+  const detail::GltfVariant chosen = detail::chosenVariant(model, variant, reader);
 
   Scene scene;
   scene.source = path;
@@ -373,7 +377,7 @@ Scene loadGltfScene(const std::filesystem::path& path) {
     const tinygltf::Node& node = model.nodes[std::size_t(index)];
     const std::string where = "nodes[" + std::to_string(index) + "]";
     const glm::dmat4 world = parent * detail::localTransform(node);
-    if (node.mesh >= 0) addMeshObjects(scene, model, node, where, world, defaultMaterialIndex, cutouts, reader);
+    if (node.mesh >= 0) addMeshObjects(scene, model, node, where, world, defaultMaterialIndex, cutouts, chosen, reader);
     if (node.camera >= 0 && !camera) {
       if (std::size_t(node.camera) >= model.cameras.size()) reader.fail(where, "camera index out of range");
       const tinygltf::Camera& c = model.cameras[std::size_t(node.camera)];

@@ -16,15 +16,19 @@
 
 namespace facet::scene {
 
-Scene loadScene(const std::filesystem::path& path, std::span<const JsonOverride> overrides) {
+Scene loadScene(const std::filesystem::path& path, std::span<const JsonOverride> overrides,
+                const std::string& variant) {
   checkInputFile(path, "the scene");
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
+  if (!variant.empty() && extension != ".gltf" && extension != ".glb")
+    throw InputError(path.string(), 0, "a material variant is one of a glTF file's (KHR_materials_variants)",
+                     "variant '" + variant + "' is named, and this is no glTF file");
   if (extension == ".json") return loadJsonScene(path, overrides);
   const bool cage = extension == ".obj", gltf = extension == ".gltf" || extension == ".glb";
   if (cage || gltf) {
-    Scene scene = cage ? sceneFromCage(loadObjCage(path)) : loadGltfScene(path);
+    Scene scene = cage ? sceneFromCage(loadObjCage(path)) : loadGltfScene(path, variant);
     scene.render.bouncesStated = false;  // a model file says nothing of light transport or sampling
     scene.render.sampling = Sampling::Chosen;
     applyModelOverrides(scene, path, overrides);

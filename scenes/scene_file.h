@@ -28,7 +28,10 @@
 
 namespace facet::scene {
 
-Scene loadScene(const std::filesystem::path& path, std::span<const JsonOverride> overrides = {});
+// `variant`: a glTF file's material variant by name (KHR_materials_variants);
+// empty for each primitive's own material.
+Scene loadScene(const std::filesystem::path& path, std::span<const JsonOverride> overrides = {},
+                const std::string& variant = {});
 
 Scene loadJsonScene(const std::filesystem::path& path, std::span<const JsonOverride> overrides = {});
 // A scene file's JSON, parsed; errors name the file.
@@ -36,7 +39,7 @@ nlohmann::json readSceneDocument(const std::filesystem::path& path);
 // A document read as a scene file is, its files relative to `folder`, its
 // errors naming `source` in place of a file (the APIs' dict form).
 Scene sceneFromJson(const nlohmann::json& document, const std::filesystem::path& folder, const std::string& source);
-Scene loadGltfScene(const std::filesystem::path& path);
+Scene loadGltfScene(const std::filesystem::path& path, const std::string& variant = {});
 Scene sceneFromCage(ControlCage cage);
 
 // The render, camera and environment fields of `overrides` over a model

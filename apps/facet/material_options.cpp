@@ -122,6 +122,9 @@ void addSceneEditOptions(CLI::App& command, SceneEdits& edits) {
                   "PATH=VALUE: a field of the scene by its JSON path, e.g. render.spp=16, camera.fov=40, "
                   "materials.gold.roughness=0.2, objects[0].material=silver (repeatable)")
       ->allow_extra_args(false);
+  command.add_option("--variant", edits.variant,
+                     "A glTF file's material variant by name (KHR_materials_variants); without it each primitive "
+                     "renders in its own material");
 }
 
 std::string libraryMaterialReference(const std::string& reference) {
@@ -157,7 +160,7 @@ scene::Scene loadEditedScene(const std::string& path, const SceneEdits& edits) {
   }
   std::stable_partition(assignments.begin(), assignments.end(), [](const auto& a) { return a.first.empty(); });
 
-  scene::Scene scene = scene::loadScene(path, overrides);
+  scene::Scene scene = scene::loadScene(path, overrides, edits.variant);
   for (const auto& [object, reference] : assignments) {
     materials::Material material = scene::loadMaterialReference(libraryMaterialReference(reference), scene.textures);
     try {

@@ -33,10 +33,11 @@ CLI::App* addMaterialCommand(CLI::App& parent, const std::string& name, const st
 // file and field) and the rule.
 materials::Material resolveMaterial(const MaterialOptions& options);
 
-// facet render's --material and --set, each repeatable.
+// facet render's --material and --set, each repeatable, and --variant.
 struct SceneEdits {
   std::vector<std::string> materials;  // [OBJECT=]FILE|PRESET
   std::vector<std::string> sets;       // PATH=VALUE
+  std::string variant;                 // a glTF file's material variant, by name
 };
 
 void addSceneEditOptions(CLI::App& command, SceneEdits& edits);

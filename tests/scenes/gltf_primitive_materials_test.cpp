@@ -1,11 +1,15 @@
 // glTF primitives keep their own materials: a mesh whose primitives use two
 // materials becomes two objects, and renders in both colours.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include "engine/cpu/reference_renderer.h"
+#include "scenes/input_error.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_geometry.h"
 #include "tests/support/temp_dir.h"
@@ -78,6 +82,59 @@ TEST_F(GltfPrimitiveMaterials, ATwoMaterialMeshRendersInBothColours) {
   ASSERT_EQ(upperLeft.a, 1.0f);
   EXPECT_GT(lowerRight.r, 4.0f * lowerRight.g);
   EXPECT_GT(upperLeft.g, 4.0f * upperLeft.r);
+}
+
+// KHR_materials_variants: the quad's lower right triangle red, which the
+// variant "all green" maps to green and "blue" to a third material; the
+// upper left triangle green in every variant.
+nlohmann::json quadWithVariants() {
+  nlohmann::json parts = quadOf({{0, 0}, {3, 1}});
+  parts["materials"].push_back(colour("blue", 0.05, 0.05, 0.8));
+  parts["extensionsUsed"] = {"KHR_materials_variants"};
+  parts["extensions"]["KHR_materials_variants"]["variants"] = {{{"name", "all green"}}, {{"name", "blue"}}};
+  parts["meshes"][0]["primitives"][0]["extensions"]["KHR_materials_variants"]["mappings"] = {
+      {{"material", 1}, {"variants", {0}}}, {{"material", 2}, {"variants", {1}}}};
+  return parts;
+}
+
+std::vector<std::string> objectMaterials(const Scene& scene) {
+  std::vector<std::string> names;
+  for (const Object& object : scene.objects) names.push_back(scene.materials.at(std::size_t(object.material)).name);
+  return names;
+}
+
+TEST_F(GltfPrimitiveMaterials, AVariantNamedAtLoadReplacesTheMaterialsItMaps) {
+  const std::filesystem::path file = facet::testing::writeTexturedQuad(dir_, "variants", quadWithVariants());
+  const Scene own = loadScene(file);
+  EXPECT_EQ(objectMaterials(own), (std::vector<std::string>{"red", "green"}));
+  EXPECT_TRUE(own.warnings.empty());  // the extension is read: without a name, each primitive's own material
+  // Both triangles in one material weld into one object.
+  EXPECT_EQ(objectMaterials(loadScene(file, {}, "all green")), std::vector<std::string>{"green"});
+  EXPECT_EQ(objectMaterials(loadScene(file, {}, "blue")), (std::vector<std::string>{"blue", "green"}));
+}
+
+TEST_F(GltfPrimitiveMaterials, AVariantTheFileLacksOrAMalformedMappingIsNamed) {
+  const auto errorOf = [&](const nlohmann::json& parts, const std::string& variant) -> std::string {
+    try {
+      loadScene(facet::testing::writeTexturedQuad(dir_, "variants", parts), {}, variant);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "(no error)";
+  };
+  EXPECT_THAT(errorOf(quadWithVariants(), "teal"),
+              ::testing::EndsWith("extensions.KHR_materials_variants: no material variant is named 'teal' (the "
+                                  "file's: 'all green', 'blue')"));
+  EXPECT_THAT(errorOf(quadOf({{0, 0}}), "teal"), ::testing::HasSubstr("(the file declares none)"));
+  nlohmann::json outOfRange = quadWithVariants();
+  outOfRange["meshes"][0]["primitives"][0]["extensions"]["KHR_materials_variants"]["mappings"][1]["variants"] = {2};
+  EXPECT_THAT(errorOf(outOfRange, "blue"),
+              ::testing::EndsWith("meshes[0].primitives[0].extensions.KHR_materials_variants.mappings[1].variants[0]: "
+                                  "must be the index of one of the file's 2 variants"));
+  nlohmann::json noMaterial = quadWithVariants();
+  noMaterial["meshes"][0]["primitives"][0]["extensions"]["KHR_materials_variants"]["mappings"][0].erase("material");
+  EXPECT_THAT(errorOf(noMaterial, "blue"), ::testing::HasSubstr("mappings[0].material: must be a material index"));
+  EXPECT_THAT(errorOf(quadWithVariants(), ""), ::testing::Eq("(no error)"));
 }
 
 }  // namespace

@@ -27,7 +27,9 @@ foreach(case
     "set_material_field|^facet: error: .*teacup.json: materials.gold.roughness \\(--set materials.gold.roughness=2\\): must be in \\[0, 1\\], got 2\n$|${CMAKE_SOURCE_DIR}/scenes/examples/teacup.json;--set;materials.gold.roughness=2"
     "set_index_out_of_range|^facet: error: --set objects\\[3\\].material=gold: objects has 1 entry \\(indices from 0\\)\n$|${CMAKE_SOURCE_DIR}/scenes/examples/teacup.json;--set;objects[3].material=gold"
     "set_model_material|^facet: error: --set objects\\[0\\].material=gold: a .gltf model takes --set for render, camera and environment fields only|${cube};--set;objects[0].material=gold"
-    "set_model_camera|^facet: error: --set: camera.fov: must be in \\[0.001, 179\\], is 200\n$|${cube};--set;camera.fov=200")
+    "set_model_camera|^facet: error: --set: camera.fov: must be in \\[0.001, 179\\], is 200\n$|${cube};--set;camera.fov=200"
+    "variant_unknown|^facet: error: .*gold_cube.gltf: extensions.KHR_materials_variants: no material variant is named 'navy' \\(the file declares none\\)\n$|${cube};--variant;navy"
+    "variant_not_gltf|^facet: error: .*superball.obj: a material variant is one of a glTF file's \\(KHR_materials_variants\\): variant 'navy' is named, and this is no glTF file\n$|${superball};--variant;navy")
   string(REPLACE "|" ";" parts "${case}")
   list(GET parts 0 name)
   list(GET parts 1 expect)
