@@ -67,11 +67,13 @@ int Scene::width() const { return data_->scene.render.width; }
 int Scene::height() const { return data_->scene.render.height; }
 int Scene::objectCount() const { return int(data_->scene.objects.size()); }
 
-Scene loadScene(const std::string& path) {
+Scene loadScene(const std::string& path) { return loadScene(path, std::string()); }
+
+Scene loadScene(const std::string& path, const std::string& variant) {
   return api::translateErrors([&] {
     const scene::InputFileLog read;
-    if (!isJsonScene(path)) {
-      scene::Scene s = scene::loadScene(path);
+    if (!isJsonScene(path) || !variant.empty()) {  // a JSON scene has no variants: the loader says so
+      scene::Scene s = scene::loadScene(path, {}, variant);
       return api::sceneOf(std::move(s), path, nullptr, read.files());
     }
     // Read once: the document its edits start from is the one it was loaded from.

@@ -322,8 +322,11 @@ void bindScene(py::module_& m) {
           "warnings", [](const facet::Scene& s) { return tupleOf(s.warnings()); },
           "What the file says that facet renders otherwise, one line each");
   m.def(
-      "load_scene", [](const py::object& path) { return sceneOf(path); }, py::arg("path"),
-      "A .json scene, an .obj cage or a .gltf/.glb file");
+      "load_scene",
+      [](const py::object& path, const std::string& variant) { return facet::loadScene(fspath(path), variant); },
+      py::arg("path"), py::kw_only(), py::arg("variant") = "",
+      "A .json scene, an .obj cage or a .gltf/.glb file; variant: a glTF file's material variant by name "
+      "(KHR_materials_variants)");
   m.def(
       "load_dict",
       [](const py::dict& scene, const py::object& folder) {

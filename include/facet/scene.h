@@ -213,6 +213,9 @@ Cage loadCage(const std::string& path);
 
 // All throw Error (BadInput) naming the file or the field and the rule.
 Scene loadScene(const std::string& path);
+// A glTF file in its material variant `variant` (KHR_materials_variants,
+// docs/gltf.md), as facet render --variant loads it.
+Scene loadScene(const std::string& path, const std::string& variant);
 Scene buildScene(const SceneDescription& description);
 // A scene file's JSON document as text (docs/scene-format.md): the Python
 // module's dict form. Its files are relative to `folder`; errors name

@@ -273,6 +273,31 @@ class Scenes(unittest.TestCase):
         self.assertEqual(str(raised.exception), expected)
         self.assertEqual(raised.exception.exit_code, 1)
 
+    def test_a_gltf_loads_in_the_material_variant_named_as_on_the_command_line(self):
+        WORK.mkdir(parents=True, exist_ok=True)
+        path = WORK / "variants.gltf"
+        triangle = "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"  # (0,0,0), (1,0,0), (0,1,0) as floats
+        variants = {"KHR_materials_variants": {"mappings": [{"material": 1, "variants": [0]}]}}
+        path.write_text(json.dumps({
+            "asset": {"version": "2.0"},
+            "extensionsUsed": ["KHR_materials_variants"],
+            "extensions": {"KHR_materials_variants": {"variants": [{"name": "blue"}]}},
+            "scenes": [{"nodes": [0]}],
+            "nodes": [{"mesh": 0}],
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0, "extensions": variants}]}],
+            "materials": [{"name": "red"}, {"name": "blue"}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                           "min": [0, 0, 0], "max": [1, 1, 0]}],
+            "bufferViews": [{"buffer": 0, "byteLength": 36}],
+            "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64," + triangle}]}))
+        self.assertEqual(facet.load_scene(path).objects[0].material, "red")
+        self.assertEqual(facet.load_scene(path, variant="blue").objects[0].material, "blue")
+        expected = cli_error("render", path, "--variant", "green", "-o", WORK / "variant.exr")
+        self.assertIn("no material variant is named 'green'", expected)
+        with self.assertRaises(facet.Error) as raised:
+            facet.load_scene(path, variant="green")
+        self.assertEqual(str(raised.exception), expected)
+
     def test_a_missing_adapter_is_a_gpu_failure_as_on_the_command_line(self):
         scene = EXAMPLES / "gold_cube.gltf"
         run = cli("render", scene, "-o", WORK / "none.exr", "--adapter", "no-such-adapter")
