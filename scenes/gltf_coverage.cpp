@@ -110,7 +110,7 @@ void checkExtensions(const tinygltf::Model& model, const GltfReader& reader) {
       reader.warn(where.front() == '.' ? where.substr(1) : where, ignoredExtension(extension));
 }
 
-void warnOfIgnoredFeatures(const tinygltf::Model& model, const GltfReader& reader) {
+void warnOfIgnoredFeatures(const tinygltf::Model& model, GltfVariant variant, const GltfReader& reader) {
   for (std::size_t i = 0; i < model.meshes.size(); ++i)
     for (std::size_t p = 0; p < model.meshes[i].primitives.size(); ++p) {
       const tinygltf::Primitive& primitive = model.meshes[i].primitives[p];
@@ -119,7 +119,7 @@ void warnOfIgnoredFeatures(const tinygltf::Model& model, const GltfReader& reade
         const std::string where = at + ".attributes." + name;
         if (name.rfind("COLOR_", 0) == 0 && name != "COLOR_0")
           reader.warn(where, "only COLOR_0 is read; this set of vertex colours is not");
-        else if (name == "TANGENT" && usesTangents(model, primitive.material))
+        else if (name == "TANGENT" && usesTangents(model, variantMaterial(primitive, variant, reader, at)))
           reader.warn(where,
                       "tangents are not read; a normal map's and an anisotropic lobe's tangent is dP/du of the "
                       "texture coordinates");

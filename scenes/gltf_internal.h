@@ -176,24 +176,26 @@ std::vector<double> morphWeights(const tinygltf::Node& node, const tinygltf::Mes
 // InputError naming the property.
 void checkPropertyTypes(const nlohmann::json& gltf, const std::string& source);
 
+// gltf_variants.cpp: KHR_materials_variants. The variant named `name`
+// among the file's `count` (index -1 for an empty name: each primitive's
+// own material), and the file's material count; throws naming the file's
+// variants where none has the name.
+struct GltfVariant {
+  int index = -1;
+  int count = 0;
+  int materials = 0;
+};
+GltfVariant chosenVariant(const tinygltf::Model& model, const std::string& name, const GltfReader& reader);
+// The material index primitive `where` renders in `variant`: its mapping's
+// where one lists the variant, else its own; every mapping is checked.
+int variantMaterial(const tinygltf::Primitive& primitive, GltfVariant variant, const GltfReader& reader,
+                    const std::string& where);
+
 // gltf_extensions.cpp: refuses a file whose extensionsRequired names an
 // extension facet does not implement (glTF 2.0, 3.12), and warns of each
 // used one it ignores and of the core features it does not render as written.
 void checkExtensions(const tinygltf::Model& model, const GltfReader& reader);
-void warnOfIgnoredFeatures(const tinygltf::Model& model, const GltfReader& reader);
-
-// gltf_variants.cpp: KHR_materials_variants. The variant named `name`
-// among the file's `count` (index -1 for an empty name: each primitive's
-// own material); throws naming the file's variants where none has the name.
-struct GltfVariant {
-  int index = -1;
-  int count = 0;
-};
-GltfVariant chosenVariant(const tinygltf::Model& model, const std::string& name, const GltfReader& reader);
-// The material index primitive `where` renders in `variant`: its mapping's
-// where one lists the variant, else its own.
-int variantMaterial(const tinygltf::Primitive& primitive, GltfVariant variant, const GltfReader& reader,
-                    const std::string& where);
+void warnOfIgnoredFeatures(const tinygltf::Model& model, GltfVariant variant, const GltfReader& reader);
 
 // gltf_nodes.cpp
 glm::dmat4 localTransform(const tinygltf::Node& node);

@@ -227,13 +227,18 @@ std::vector<std::pair<int, std::vector<std::size_t>>> materialGroups(const tinyg
 }
 
 // Per material of the file, then the default material: whether a primitive
-// with vertex colours (COLOR_0) uses it.
-std::vector<bool> materialsWithVertexColours(const tinygltf::Model& model) {
+// with vertex colours (COLOR_0) uses it in `variant`.
+std::vector<bool> materialsWithVertexColours(const tinygltf::Model& model, detail::GltfVariant variant,
+                                             const detail::GltfReader& reader) {
   std::vector<bool> coloured(model.materials.size() + 1, false);
-  for (const tinygltf::Mesh& mesh : model.meshes)
-    for (const tinygltf::Primitive& primitive : mesh.primitives)
-      if (primitive.attributes.count("COLOR_0") && primitive.material < int(model.materials.size()))
-        coloured[primitive.material >= 0 ? std::size_t(primitive.material) : model.materials.size()] = true;
+  for (std::size_t i = 0; i < model.meshes.size(); ++i)
+    for (std::size_t p = 0; p < model.meshes[i].primitives.size(); ++p) {
+      const tinygltf::Primitive& primitive = model.meshes[i].primitives[p];
+      const int material = detail::variantMaterial(
+          primitive, variant, reader, "meshes[" + std::to_string(i) + "].primitives[" + std::to_string(p) + "]");
+      if (primitive.attributes.count("COLOR_0") && material < int(model.materials.size()))
+        coloured[material >= 0 ? std::size_t(material) : model.materials.size()] = true;
+    }
   return coloured;
 }
 
@@ -345,13 +350,13 @@ Scene loadGltfScene(const std::filesystem::path& path, const std::string& varian
     if (end > start) reader.warn("tinygltf", warning.substr(start, end - start));
     start = end + 1;
   }
-  detail::warnOfIgnoredFeatures(model, reader);
   const detail::GltfVariant chosen = detail::chosenVariant(model, variant, reader);
+  detail::warnOfIgnoredFeatures(model, chosen, reader);
 
   Scene scene;
   scene.source = path;
   detail::TextureTable textures(model, reader, scene.textures);
-  const std::vector<bool> coloured = materialsWithVertexColours(model);
+  const std::vector<bool> coloured = materialsWithVertexColours(model, chosen, reader);
   std::vector<detail::GltfCutout> cutouts;
   for (std::size_t i = 0; i < model.materials.size(); ++i) {
     scene.materials.push_back(detail::toMaterial(model.materials[i], i, reader, textures, coloured[i]));

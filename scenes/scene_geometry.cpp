@@ -81,9 +81,9 @@ void checkExtent(const Object& object) {
 }
 
 // A lower bound on what refining a cage holds per quad (a face of n != 4
-// sides is n quads): measured on a regular grid at isolation 1, where each
-// quad is one patch, the peak grew by 1.6 KB a face on the CPU reference and
-// 2.2 KB on the GPU path (BENCHMARKS.md); irregular cages need more.
+// sides is n quads): measured on a regular grid, where each quad is one
+// patch, the peak grew by 1.2 to 2.2 KB a face on either backend, subdivided
+// or as authored (BENCHMARKS.md); irregular cages need more.
 constexpr std::uint64_t kRefinementBytesPerQuad = 1024;
 
 // Refuses, before any is refined, cages whose quads alone would take more
@@ -96,7 +96,8 @@ void checkRefinementFitsInMemory(const Scene& scene) {
     for (int count : object.cage.faceVertexCounts) quads += count == 4 ? 1 : std::uint64_t(count);
     const std::uint64_t needed = quads * kRefinementBytesPerQuad;
     if (needed <= limit.bytes) continue;
-    throw InputError(object.cage.source, 0, "the scene's cages must fit in memory once refined",
+    throw InputError(object.cage.source.empty() ? "the scene" : object.cage.source, 0,
+                     "the scene's cages must fit in memory once refined",
                      "object '" + object.name + "' brings the scene's cages to " + std::to_string(quads) +
                          " quads, which need at least " + gigabytes(needed) + " of memory to refine and the limit is " +
                          gigabytes(limit.bytes) + " (" + limit.source + "); decimate the mesh");

@@ -131,9 +131,18 @@ TEST_F(GltfPrimitiveMaterials, AVariantTheFileLacksOrAMalformedMappingIsNamed) {
   EXPECT_THAT(errorOf(outOfRange, "blue"),
               ::testing::EndsWith("meshes[0].primitives[0].extensions.KHR_materials_variants.mappings[1].variants[0]: "
                                   "must be the index of one of the file's 2 variants"));
-  nlohmann::json noMaterial = quadWithVariants();
-  noMaterial["meshes"][0]["primitives"][0]["extensions"]["KHR_materials_variants"]["mappings"][0].erase("material");
-  EXPECT_THAT(errorOf(noMaterial, "blue"), ::testing::HasSubstr("mappings[0].material: must be a material index"));
+  const std::string mappingMaterial = "mappings[0].material: must be the index of one of the file's 3 materials";
+  for (const nlohmann::json& material : {nlohmann::json(), nlohmann::json(-1), nlohmann::json(3)}) {
+    nlohmann::json bad = quadWithVariants();
+    nlohmann::json& mapping = bad["meshes"][0]["primitives"][0]["extensions"]["KHR_materials_variants"]["mappings"][0];
+    if (material.is_null())
+      mapping.erase("material");
+    else
+      mapping["material"] = material;
+    // Checked whichever variant is named, and with none.
+    for (const char* variant : {"blue", ""})
+      EXPECT_THAT(errorOf(bad, variant), ::testing::HasSubstr(mappingMaterial)) << material << " " << variant;
+  }
   EXPECT_THAT(errorOf(quadWithVariants(), ""), ::testing::Eq("(no error)"));
 }
 

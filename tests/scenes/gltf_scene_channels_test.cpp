@@ -11,6 +11,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 namespace facet::scene {
@@ -120,6 +121,30 @@ TEST_F(GltfChannels, ASlotCarriesTheSetItReads) {
   EXPECT_THAT(errorOf(attributes, material({{"index", 0}, {"texCoord", 2}})),
               HasSubstr("materials[0].pbrMetallicRoughness.baseColorTexture.texCoord: only TEXCOORD_0 and TEXCOORD_1 "
                         "are read, not TEXCOORD_2"));
+}
+
+// Vertex colours go to the material a primitive renders in: in a variant
+// that maps it to another material, that one takes them.
+TEST_F(GltfChannels, AVariantsMaterialTakesThePrimitivesColours) {
+  const nlohmann::json attributes = {{"POSITION", 0}, {"TEXCOORD_0", 1}, {"COLOR_0", 3}};
+  nlohmann::json parts = nlohmann::json::parse(R"({
+    "extensionsUsed": ["KHR_lights_punctual", "KHR_materials_variants"],
+    "extensions": {"KHR_lights_punctual": {"lights": [{"type": "directional"}]},
+                   "KHR_materials_variants": {"variants": [{"name": "plain"}]}},
+    "materials": [{"doubleSided": true}, {"doubleSided": true}],
+    "meshes": [{"primitives": [{"indices": 5, "material": 0,
+        "extensions": {"KHR_materials_variants": {"mappings": [{"material": 1, "variants": [0]}]}}}]}]
+  })");
+  parts["meshes"][0]["primitives"][0]["attributes"] = attributes;
+  const std::filesystem::path file = facet::testing::writeChannelQuad(dir_, "variant", attributes, parts);
+  const Scene own = loadScene(file);
+  EXPECT_EQ(own.objects.at(0).material, 0);
+  EXPECT_TRUE(own.materials[0].textures.has_value());
+  const Scene plain = loadScene(file, {}, "plain");
+  EXPECT_EQ(plain.objects.at(0).material, 1);
+  EXPECT_TRUE(plain.materials[1].textures.has_value());  // shaded per hit, so the colour reaches its base colour
+  EXPECT_FALSE(plain.materials[0].textures.has_value());
+  EXPECT_EQ(plain.objects[0].cage.faceVertexColors.size(), plain.objects[0].cage.faceVertexIndices.size());
 }
 
 }  // namespace

@@ -99,6 +99,17 @@ TEST_F(GpuTransmission, ASlabThinnerThanTheLeavingOffsetTracesTheCpuReferencesPa
     spec.attenuationColor = glm::dvec3(0.2, 0.5, 0.8);
     spec.attenuationDistance = depth;
     scene::Scene scene = underWhite(buildTestMaterial(spec), testing::slab(depth), 8, 12, 4);
+    // The slab is not the scene's first object, so that its crossings must name it: a grey
+    // speck out of every path's way comes first.
+    materials::MaterialSpec grey;
+    grey.name = "grey";
+    grey.alpha = 0.5;
+    grey.f0 = glm::dvec3(0.04);
+    grey.diffuse = glm::dvec3(0.5);
+    scene.materials.push_back(buildTestMaterial(grey));
+    scene::ControlCage speck = testing::slab(1.0);
+    for (glm::dvec3& p : speck.positions) p = 0.01 * p + glm::dvec3(2.5, 2.5, -1.0);
+    scene.objects.insert(scene.objects.begin(), testing::testObject("speck", std::move(speck), 1));
     scene.render.method = method;
     scene.render.samplesPerPixel = 16;
     const scene::SceneGeometry geometry = scene::buildGeometry(scene);
