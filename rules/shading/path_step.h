@@ -113,7 +113,7 @@ FACET_FN PathStep path_step(PathVertex x, PathCarry carry, PathSampleKey key, ui
   if (step.carry.throughput == vec3(real(0))) return step;
   step.continues = true;
   if (x.transmissive) {
-    // Through the surface or back into the solid, its far side may be nearer than the offset.
+    // Through the surface or off it, the solid's far side may be nearer than the offset.
     step.t_min = real(0);
     step.crossing = surface_crossing(step.direction, x.ng, x.outside, offset);
     step.origin = crossing_origin(step.crossing, x.position, step.direction);
