@@ -31,11 +31,10 @@ std::optional<SurfaceHit> TessellatedIntersector::closestHit(const Ray& ray) con
 }
 
 std::unique_ptr<Intersector> objectIntersector(const scene::Scene& scene, std::size_t index,
-                                               const scene::ObjectGeometry& object, const ExactSettings& settings) {
+                                               const scene::ObjectGeometry& object, const ExactSettings& settings,
+                                               bool crossings) {
   const scene::Object& source = scene.objects[index];
   const bool culls = scene::cullsBackFaces(source, scene.materials[std::size_t(source.material)]);
-  // A path's ray that leaves a transmissive surface may pass over this object's hits.
-  const bool crossings = std::any_of(scene.materials.begin(), scene.materials.end(), materials::isTransmissive);
   HitFilter filter;
   if (culls || scene::hasCutout(source) || crossings)
     filter = [culls, crossings, index, &source, &surface = object.surface, &textures = scene.textures](

@@ -65,10 +65,13 @@ class TessellatedIntersector final : public Intersector {
 
 // The intersector of the scene's object `index` (its geometry `object`) by
 // the scene's method, with the filter of what its surface leaves out: a
-// one-sided object's back faces (scene::cullsBackFaces) and where its alpha
-// lets a ray through (scene::hasCutout). The scene must outlive it.
+// one-sided object's back faces (scene::cullsBackFaces), where its alpha
+// lets a ray through (scene::hasCutout) and, with `crossings` (some
+// material transmits), what a path's ray leaving a transmissive surface
+// passes over (rules/surface/crossing.h). The scene must outlive it.
 std::unique_ptr<Intersector> objectIntersector(const scene::Scene& scene, std::size_t index,
-                                               const scene::ObjectGeometry& object, const ExactSettings& settings);
+                                               const scene::ObjectGeometry& object, const ExactSettings& settings,
+                                               bool crossings);
 
 // Throws std::invalid_argument where the tessellated method's grids of every
 // object would not fit in the memory a process lets itself use

@@ -2,6 +2,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -51,6 +52,7 @@ class ReferenceScene final : public PathScene {
                                          std::max(exactSettings.tolerance, exactSettings.precisionFloor));
     coneSpread_ = m::camera_cone_spread(std::tan(glm::radians(0.5 * scene.camera.verticalFovDegrees)),
                                         double(scene.render.height));
+    const bool crossings = std::any_of(scene.materials.begin(), scene.materials.end(), materials::isTransmissive);
     int patches = 0, faces = 0;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
       const scene::ObjectGeometry& object = geometry.objects[i];
@@ -58,7 +60,7 @@ class ReferenceScene final : public PathScene {
       faceOffset_.push_back(faces);
       patches += object.surface.patchCount();
       faces += scene.objects[i].cage.faceCount();
-      intersectors_.push_back(objectIntersector(scene, i, object, exactSettings));
+      intersectors_.push_back(objectIntersector(scene, i, object, exactSettings, crossings));
       const materials::Material& material = scene.materials[std::size_t(scene.objects[i].material)];
       params_.push_back(materials::toParams64(material));
       transmission_.push_back(materials::isTransmissive(material)
