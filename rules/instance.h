@@ -44,6 +44,8 @@
 #include "rules/surface/crossing.h"
 #include "rules/surface/cutout.h"
 #include "rules/surface/limit_normal.h"
+#include "rules/surface/piece_slope.h"
+#include "rules/surface/ray_triangle.h"
 #include "rules/surface/tangent.h"
 #include "rules/texture/texture_sampling.h"
 #undef FACET_REAL
@@ -88,5 +90,7 @@
 #undef FACET_RULE_SURFACE_CROSSING
 #undef FACET_RULE_SURFACE_CUTOUT
 #undef FACET_RULE_SURFACE_LIMIT_NORMAL
+#undef FACET_RULE_SURFACE_PIECE_SLOPE
+#undef FACET_RULE_SURFACE_RAY_TRIANGLE
 #undef FACET_RULE_SURFACE_TANGENT
 #undef FACET_RULE_TEXTURE_TEXTURE_SAMPLING

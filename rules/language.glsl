@@ -13,5 +13,6 @@
 #define real float
 #define FACET_FN
 #define FACET_OUT(type) out type
+#define FACET_PRECISE precise
 
 #endif

@@ -7,6 +7,9 @@
 //   - a function is declared `FACET_FN`; an output parameter is
 //     `FACET_OUT(type) name` (a reference in C++, `out` in GLSL), the way
 //     OpenSubdiv's osd/patchBasisCommon*.h spell one source for every language;
+//   - a value whose rounding must not change by fusing a multiply and an add
+//     is declared `FACET_PRECISE` (GLSL's `precise`; C++ as built here
+//     targets no fused multiply-add);
 //   - no other references, no constructors of structs, no C++-only syntax;
 //   - a rule includes the rules it uses, and nothing else, inside the guard
 //       #ifndef FACET_RULE_<PATH>

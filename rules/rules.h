@@ -20,6 +20,7 @@
 
 #define FACET_FN inline
 #define FACET_OUT(type) type&
+#define FACET_PRECISE
 
 namespace facet::rules {
 
@@ -35,5 +36,6 @@ namespace f32 {
 
 }  // namespace facet::rules
 
+#undef FACET_PRECISE
 #undef FACET_OUT
 #undef FACET_FN

@@ -4,6 +4,7 @@
 #include <glm/vec2.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace facet::scene {
 
@@ -173,6 +174,35 @@ Aabb SubPatchHull::bounds() const {
     box.extend(hi[k]);
   }
   return box;
+}
+
+SubPatchHull::CornerPlaneSlab SubPatchHull::cornerPlaneSlab() const {
+  auto mid = [this](int k) { return 0.5 * (lo[k] + hi[k]); };
+  const glm::dvec3 c00 = mid(0), c30 = mid(3), c03 = mid(12), c33 = mid(15);
+  const glm::dvec3 n = glm::cross(c33 - c00, c03 - c30);
+  glm::dvec3 u = (c30 - c00) + (c33 - c03);
+  u -= glm::dot(u, n) / std::max(glm::dot(n, n), 1e-300) * n;
+  CornerPlaneSlab slab;
+  slab.planar = glm::length(n) > 0.0 && glm::length(u) > 0.0;
+  if (!slab.planar) return slab;
+  slab.normal = glm::normalize(n);
+  u = glm::normalize(u);
+  const glm::dvec3 v = glm::cross(slab.normal, u);
+  // The extent of the control boxes along an axis: each box spans
+  // |axis| . its half size about its centre.
+  auto extent = [this](const glm::dvec3& axis) {
+    double low = INFINITY, high = -INFINITY;
+    for (int k = 0; k < 16; ++k) {
+      const double centre = glm::dot(axis, 0.5 * (lo[k] + hi[k]));
+      const double spread = glm::dot(glm::abs(axis), 0.5 * (hi[k] - lo[k]));
+      low = std::min(low, centre - spread);
+      high = std::max(high, centre + spread);
+    }
+    return high - low;
+  };
+  slab.thickness = extent(slab.normal);
+  slab.width = std::min(extent(u), extent(v));
+  return slab;
 }
 
 double SubPatchHull::flatnessError() const {

@@ -68,6 +68,19 @@ struct SubPatchHull {
   // Largest distance of a control box from the bilinear patch through the
   // four corner points: zero means the piece is a flat bilinear patch.
   double flatnessError() const;
+
+  // The hull in the frame of the plane through the corner points, as the
+  // GPU's oriented bounds take it (compute/raycast/common/patch_hull.glsl):
+  // the plane's unit normal, the hull's extent along it and the narrower of
+  // its extents across it (along s, and across both). `planar` is false where
+  // the corners span no plane.
+  struct CornerPlaneSlab {
+    glm::dvec3 normal{0.0};
+    double thickness = 0.0;
+    double width = 0.0;
+    bool planar = false;
+  };
+  CornerPlaneSlab cornerPlaneSlab() const;
 };
 SubPatchHull restrictBezierPatch(const BezierPatch& patch, double u0, double u1, double v0, double v1);
 

@@ -40,12 +40,13 @@ void crossPatch(const BezierPatch& patch, const glm::dvec3& origin, const glm::d
     for (int i = 0; i <= n; ++i)
       grid[std::size_t(j * (n + 1) + i)] = evaluateBezierPatch(patch, double(i) / n, double(j) / n).position;
   auto at = [&](int i, int j) { return grid[std::size_t(j * (n + 1) + i)]; };
+  const rules::f64::RayShear shear = rules::f64::ray_shear(direction);
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i)
       for (const auto& [b, c] :
            {std::pair(at(i + 1, j), at(i + 1, j + 1)), std::pair(at(i + 1, j + 1), at(i, j + 1))}) {
         double t = 0.0, wb = 0.0, wc = 0.0;
-        if (!rayHitsTriangle(origin, direction, at(i, j), b, c, t, wb, wc) || !(t > 0.0)) continue;
+        if (!rayHitsTriangle(shear, origin, at(i, j), b, c, t, wb, wc) || !(t > 0.0)) continue;
         ++crossings.count;
         crossings.nearest = std::min(crossings.nearest, t);
       }

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 
+#include "rules/rules.h"
 #include "scenes/bezier_patch.h"
 
 namespace facet::scene {
@@ -30,21 +31,16 @@ inline bool rayHitsBox(const glm::dvec3& origin, const glm::dvec3& direction, co
   return true;
 }
 
-// Möller and Trumbore 1997; t and the barycentric weights of b and c.
-inline bool rayHitsTriangle(const glm::dvec3& origin, const glm::dvec3& direction, const glm::dvec3& a,
+// The shared rule (rules/surface/ray_triangle.h), watertight along shared
+// edges, for a ray of frame `shear` (rules::f64::ray_shear of its
+// direction); t and the barycentric weights of b and c.
+inline bool rayHitsTriangle(const rules::f64::RayShear& shear, const glm::dvec3& origin, const glm::dvec3& a,
                             const glm::dvec3& b, const glm::dvec3& c, double& t, double& wb, double& wc) {
-  const glm::dvec3 e1 = b - a, e2 = c - a;
-  const glm::dvec3 p = glm::cross(direction, e2);
-  const double det = glm::dot(e1, p);
-  if (det == 0.0) return false;
-  const double inverse = 1.0 / det;
-  const glm::dvec3 q = origin - a;
-  wb = glm::dot(q, p) * inverse;
-  if (wb < 0.0 || wb > 1.0) return false;
-  const glm::dvec3 r = glm::cross(q, e1);
-  wc = glm::dot(direction, r) * inverse;
-  if (wc < 0.0 || wb + wc > 1.0) return false;
-  t = glm::dot(e2, r) * inverse;
+  rules::f64::TriangleHit hit;
+  if (!rules::f64::ray_hits_triangle(shear, origin, a, b, c, hit)) return false;
+  t = hit.t;
+  wb = hit.wb;
+  wc = hit.wc;
   return true;
 }
 

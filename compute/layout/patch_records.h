@@ -22,7 +22,13 @@ const uint FACET_PATCH_POINTS_GREGORY = 20u;
 // and first point are in its header (below): its points are texels
 // firstPoint ... firstPoint + 15 (Bézier) or + 19 (Gregory) of the patch
 // point texel buffer: 16 Bézier points row-major (index 4*j + i, i along
-// s), then for Gregory patches the alternates of slots 5, 6, 10, 9.
+// s), then for Gregory patches the alternates of slots 5, 6, 10, 9. The first
+// point is stored relative to the eye and is the patch's anchor; every other
+// point relative to the anchor. Derivatives and normals then come from
+// differences taken in double on the host: a patch far smaller than its
+// distance from the eye keeps them, where eye-relative floats would round
+// its control points by a share of that distance (docs/rendering.md,
+// "Precise anywhere").
 struct PatchRecord {
   uint sourcePatch;    // OpenSubdiv patch index: the patch id in hits and AOVs
   uint coarseFace;     // the cage face the ptex face belongs to

@@ -1,6 +1,7 @@
 #include "engine/cpu/intersect.h"
 
 #include "engine/cpu/limit_normal.h"
+#include "rules/rules.h"
 #include "scenes/ray_tests.h"
 
 #include <glm/geometric.hpp>
@@ -60,6 +61,15 @@ bool solve3(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const
   return true;
 }
 
+// Whether a ray along `direction` meets the piece's surface at most once
+// (rules/surface/piece_slope.h), so that one root settles the piece: a flat
+// piece may still be a twisted one, which a ray can cross twice.
+bool crossesOnce(const scene::SubPatchHull& hull, const glm::dvec3& direction) {
+  const scene::SubPatchHull::CornerPlaneSlab slab = hull.cornerPlaneSlab();
+  return slab.planar &&
+         rules::f64::steeper_than(direction, slab.normal, rules::f64::piece_slope_bound(slab.thickness, slab.width));
+}
+
 struct Piece {
   double s0, s1, t0, t1;  // patch-local domain, [0,1]^2 is the whole patch
   int depth;
@@ -91,7 +101,8 @@ class ExactPatchIntersector {
       const bool flat = hull.flatnessError() <= settings_.flatness * extent;
       const bool splittable = piece.depth < settings_.maxDepth && extent > minimumPieceSize_;
       if (flat || !splittable) {
-        if (newton(index, piece, tBest, best) || !splittable) continue;
+        const bool rootInside = newton(index, piece, tBest, best);
+        if (!splittable || (rootInside && crossesOnce(hull, ray_.direction))) continue;
       }
       const double sm = 0.5 * (piece.s0 + piece.s1), tm = 0.5 * (piece.t0 + piece.t1);
       const int depth = piece.depth + 1;
@@ -104,8 +115,8 @@ class ExactPatchIntersector {
 
  private:
   // Newton from the piece centre; any root found in [tMin, tBest) becomes
-  // the closest hit. True when that settles the piece: the root lies inside
-  // it (a flat piece has one), whether or not it was the closest.
+  // the closest hit. True when the root lies inside the piece, whether or
+  // not it was the closest.
   bool newton(int index, const Piece& piece, double& tBest, std::optional<SurfaceHit>& best) const {
     const scene::PatchDomain& domain = surface_.patch(index).domain;
     auto faceU = [&domain](double s) { return domain.u0 + s * domain.size; };
@@ -316,6 +327,7 @@ std::optional<SurfaceHit> intersectTessellated(const SubdivisionSurface& surface
   std::optional<SurfaceHit> best;
   double tBest = ray.tMax;
   const int k = tessellation.rate();
+  const rules::f64::RayShear shear = rules::f64::ray_shear(ray.direction);
   traverse(bvh, ray, tBest, [&](int patch) {
     const scene::PatchInfo& info = surface.patch(patch);
     for (int j = 0; j < k; ++j) {
@@ -328,7 +340,7 @@ std::optional<SurfaceHit> intersectTessellated(const SubdivisionSurface& surface
           const GridVertex& b = triangles[n][1];
           const GridVertex& c = triangles[n][2];
           double t, wb, wc;
-          if (!scene::rayHitsTriangle(ray.origin, ray.direction, a.position, b.position, c.position, t, wb, wc) ||
+          if (!scene::rayHitsTriangle(shear, ray.origin, a.position, b.position, c.position, t, wb, wc) ||
               t < ray.tMin || t >= tBest)
             continue;
           const glm::dvec2 step = (1.0 - wb - wc) * a.step + wb * b.step + wc * c.step;

@@ -11,9 +11,13 @@
 // singular 3x3 system ends the run, at most 40 steps are taken, and a root
 // is accepted only when |P - (o + t d)| <= tolerance
 // (a root outside the piece it started from is kept too, but does not
-// settle the piece). A piece whose Newton run fails is split further, down
-// to `minimumPieceSize`, so grazing rays and roots near tMin (rays leaving a
-// surface) are still resolved.
+// settle the piece). A root inside settles the piece only where the ray is
+// steeper to the plane of its corners than the surface over it can be
+// (rules/surface/piece_slope.h, as the GPU decides): a flat piece may be a
+// twisted one that a ray crosses twice, and Newton may find the farther
+// crossing. A piece whose Newton run fails, or that is not settled, is split
+// further, down to `minimumPieceSize`, so grazing rays and roots near tMin
+// (rays leaving a surface) are still resolved.
 //
 // Tessellated: each patch is diced into a k x k grid of limit points
 // (TessellatedSurface), two triangles per cell along the (0,0)-(1,1)

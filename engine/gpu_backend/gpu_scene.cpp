@@ -96,8 +96,12 @@ void packPatch(GpuScene& packed, const scene::SubdivisionSurface& surface, int s
     if (const scene::BezierPatch* values = surface.channelPatch(scene::Channel(c), source))
       packChannel(*values, scene::Channel(c), packed.texcoords);
   const std::uint32_t firstPoint = std::uint32_t(packed.points.size());
-  auto add = [&](const glm::dvec3& p) { packed.points.push_back(glm::vec4(glm::vec3(p - origin), 0.0f)); };
-  for (const glm::dvec3& p : bezier.points) add(p);
+  // The first point relative to the eye, the others relative to it
+  // (compute/layout/patch_records.h), each difference taken in double.
+  const glm::dvec3 anchor = bezier.points[0];
+  packed.points.push_back(glm::vec4(glm::vec3(anchor - origin), 0.0f));
+  auto add = [&](const glm::dvec3& p) { packed.points.push_back(glm::vec4(glm::vec3(p - anchor), 0.0f)); };
+  for (std::size_t k = 1; k < bezier.points.size(); ++k) add(bezier.points[k]);
   if (bezier.gregory)
     for (const glm::dvec3& p : bezier.alternates) add(p);
   packed.headers.push_back({firstPoint, bezier.gregory ? layout::FACET_PATCH_GREGORY : layout::FACET_PATCH_BEZIER,

@@ -8,12 +8,15 @@
 // point in column i (along s) and row j (along t): evaluation and
 // restriction become matrix products, and nothing is indexed at run time.
 // A Gregory patch adds the alternates of its interior slots 5, 6, 10, 9,
-// i.e. (i, j) = (1, 1), (2, 1), (2, 2), (1, 2).
+// i.e. (i, j) = (1, 1), (2, 1), (2, 2), (1, 2). The points are relative to
+// `anchor` (compute/layout/patch_records.h): positions add it, derivatives
+// and restrictions need only the points.
 struct ControlPoints {
   mat4 x;
   mat4 y;
   mat4 z;
   mat4x3 alternates;
+  vec3 anchor;
   bool gregory;
 };
 
@@ -21,9 +24,10 @@ vec3 patch_point(uint index) { return texelFetch(patchPoints, int(index)).xyz; }
 
 ControlPoints load_control_points(uint firstPoint, uint kind) {
   ControlPoints c;
+  c.anchor = patch_point(firstPoint);
   for (int j = 0; j < 4; ++j) {
     for (int i = 0; i < 4; ++i) {
-      vec3 p = patch_point(firstPoint + uint(4 * j + i));
+      vec3 p = i + j == 0 ? vec3(0.0) : patch_point(firstPoint + uint(4 * j + i));
       c.x[i][j] = p.x;
       c.y[i][j] = p.y;
       c.z[i][j] = p.z;
@@ -92,7 +96,7 @@ PatchSample evaluate_patch(ControlPoints c, float s, float t) {
   vec4 ds = bernstein_derivative(s), dt = bernstein_derivative(t);
   ControlPoints p = c.gregory ? pinned(c, primary_weights(s, t)) : c;
   PatchSample result;
-  result.position = tensor(p, bs, bt);
+  result.position = c.anchor + tensor(p, bs, bt);
   result.ds = tensor(p, ds, bt);
   result.dt = tensor(p, bs, dt);
   if (c.gregory) {

@@ -6,6 +6,9 @@
 #ifndef FACET_RAYCAST_PATCH_HULL_GLSL
 #define FACET_RAYCAST_PATCH_HULL_GLSL
 
+#include "rules/language.glsl"
+#include "rules/surface/piece_slope.h"
+
 // Weights of a cubic's control points in its blossom at (x1, x2, x3): the
 // multi-affine Bernstein polynomials, all non-negative on [0, 1].
 vec4 blossom_weights(float x1, float x2, float x3) {
@@ -83,11 +86,14 @@ struct Box {
   vec3 hi;
 };
 
+// Adding the anchor rounds by less than the root tolerance every box and
+// range of a hull is grown by.
 Box hull_box(Hull hull) {
-  return Box(vec3(min_entry(hull.lo.x), min_entry(hull.lo.y), min_entry(hull.lo.z)),
-             vec3(max_entry(hull.hi.x), max_entry(hull.hi.y), max_entry(hull.hi.z)));
+  return Box(hull.lo.anchor + vec3(min_entry(hull.lo.x), min_entry(hull.lo.y), min_entry(hull.lo.z)),
+             hull.lo.anchor + vec3(max_entry(hull.hi.x), max_entry(hull.hi.y), max_entry(hull.hi.z)));
 }
 
+// Relative to the anchor: only differences of corners are taken.
 vec3 hull_corner(Hull hull, int i, int j) {
   return 0.5 * vec3(hull.lo.x[i][j] + hull.hi.x[i][j], hull.lo.y[i][j] + hull.hi.y[i][j],
                     hull.lo.z[i][j] + hull.hi.z[i][j]);
@@ -106,16 +112,15 @@ vec2 hull_range(Hull hull, vec3 a) {
     range = vec2(min(range.x, min(min(low.x, low.y), min(low.z, low.w))),
                  max(range.y, max(max(high.x, high.y), max(high.z, high.w))));
   }
-  return range;
+  return range + dot(a, hull.lo.anchor);
 }
 
 // A piece's bounds in the frame of the plane of its corners: n its normal,
 // u along s, v = n x u (the axes where the corners span no plane), with the
 // ranges of the hull along each, grown by `growth`. `steepness` bounds the
-// slope of the surface over the piece to that plane: by Markov's inequality
-// a cubic's derivative on an interval is at most 9 x its range over the
-// interval, so the height rises at most 9 x its range across the narrower
-// side. A ray steeper than that crosses the piece's surface at most once.
+// slope of the surface over the piece to that plane
+// (rules/surface/piece_slope.h): a ray steeper than that crosses the piece's
+// surface at most once.
 struct OrientedBounds {
   vec3 n;
   vec3 u;
@@ -124,8 +129,6 @@ struct OrientedBounds {
   vec2 vRange;
   float steepness;
 };
-
-const float CUBIC_MARKOV = 9.0;
 
 OrientedBounds oriented_bounds(Hull hull, float growth) {
   vec3 c00 = hull_corner(hull, 0, 0), c30 = hull_corner(hull, 3, 0);
@@ -140,7 +143,7 @@ OrientedBounds oriented_bounds(Hull hull, float growth) {
   b.uRange = hull_range(hull, b.u);
   b.vRange = hull_range(hull, cross(b.n, b.u));
   float width = min(b.uRange.y - b.uRange.x, b.vRange.y - b.vRange.x);
-  b.steepness = planar && width > 0.0 ? CUBIC_MARKOV * (b.nRange.y - b.nRange.x) / width : INFINITE_DISTANCE;
+  b.steepness = planar ? piece_slope_bound(b.nRange.y - b.nRange.x, width) : INFINITE_DISTANCE;
   vec2 grow = vec2(-growth, growth);
   b.nRange += grow;
   b.uRange += grow;
@@ -163,7 +166,7 @@ bool ray_meets_bounds(Ray ray, OrientedBounds b, float tMax, out bool steep, out
                   vec3(dot(b.u, ray.direction), dot(v, ray.direction), dot(b.n, ray.direction)), ray.tMin, ray.tMax);
   vec2 interval = box_interval(local, safe_inverse(local.direction), vec3(b.uRange.x, b.vRange.x, b.nRange.x),
                                vec3(b.uRange.y, b.vRange.y, b.nRange.y), tMax);
-  steep = abs(local.direction.z) > b.steepness * length(local.direction.xy);
+  steep = steeper_than(ray.direction, b.n, b.steepness);
   vec2 lo = vec2(b.uRange.x, b.vRange.x), size = vec2(b.uRange.y - b.uRange.x, b.vRange.y - b.vRange.x);
   float t = (0.5 * (b.nRange.x + b.nRange.y) - local.origin.z) / local.direction.z;
   across = clamp((local.origin.xy + t * local.direction.xy - lo) / size, 0.0, 1.0);

@@ -39,6 +39,7 @@ SurfaceTexcoord surface_texcoord(uint firstTexcoord, float s, float t) {
   vec4 first = texelFetch(patchTexcoords, int(firstTexcoord) + 8);
   vec4 second = texelFetch(patchTexcoords, int(firstTexcoord) + 9);
   c.alternates = mat4x3(vec3(first.xy, 0.0), vec3(first.zw, 0.0), vec3(second.xy, 0.0), vec3(second.zw, 0.0));
+  c.anchor = vec3(0.0);
   c.gregory = true;
   PatchSample sample_ = evaluate_patch(c, s, t);
   result.uv = sample_.position.xy;
@@ -58,6 +59,7 @@ vec3 surface_color(uint firstColor, float s, float t) {
     c.z[k % 4][k / 4] = p.z;
   }
   for (int k = 0; k < 4; ++k) c.alternates[k] = texelFetch(patchTexcoords, int(firstColor) + 16 + k).xyz;
+  c.anchor = vec3(0.0);
   c.gregory = true;
   return evaluate_patch(c, s, t).position;
 }

@@ -22,9 +22,10 @@ void finish_tessellated(Ray ray, Cell cell, inout Hit best) {
   vec3 c11 = grid_vertex(cell, 1u, 1u), c01 = grid_vertex(cell, 0u, 1u);
   uint splitEdges = split_cell_edges(i, j, k, cell.transitionMask);
   vec2 s00 = vec2(i, j), s10 = vec2(i + 1u, j), s11 = vec2(i + 1u, j + 1u), s01 = vec2(i, j + 1u);
+  RayShear shear = ray_shear(ray.direction);
   if (splitEdges == 0u) {
-    intersect_triangle(ray, c00, c10, c11, s00, s10, s11, rate, cell.patchIndex, cell.object, best);
-    intersect_triangle(ray, c00, c11, c01, s00, s11, s01, rate, cell.patchIndex, cell.object, best);
+    intersect_triangle(ray, shear, c00, c10, c11, s00, s10, s11, rate, cell.patchIndex, cell.object, best);
+    intersect_triangle(ray, shear, c00, c11, c01, s00, s11, s01, rate, cell.patchIndex, cell.object, best);
     return;
   }
   vec3 corners[4] = vec3[4](c00, c10, c11, c01);
@@ -38,12 +39,12 @@ void finish_tessellated(Ray ray, Cell cell, inout Hit best) {
     if (((splitEdges >> edge) & 1u) != 0u) {
       vec3 middle = edge_midpoint(cell, edge, segment[edge]);
       vec2 middleStep = edge_midpoint_step(edge, segment[edge], k);
-      intersect_triangle(ray, centre, corners[edge], middle, centreStep, steps[edge], middleStep, rate,
+      intersect_triangle(ray, shear, centre, corners[edge], middle, centreStep, steps[edge], middleStep, rate,
                          cell.patchIndex, cell.object, best);
-      intersect_triangle(ray, centre, middle, next, centreStep, middleStep, nextStep, rate, cell.patchIndex,
+      intersect_triangle(ray, shear, centre, middle, next, centreStep, middleStep, nextStep, rate, cell.patchIndex,
                          cell.object, best);
     } else {
-      intersect_triangle(ray, centre, corners[edge], next, centreStep, steps[edge], nextStep, rate, cell.patchIndex,
+      intersect_triangle(ray, shear, centre, corners[edge], next, centreStep, steps[edge], nextStep, rate, cell.patchIndex,
                          cell.object, best);
     }
   }

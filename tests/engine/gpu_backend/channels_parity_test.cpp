@@ -55,15 +55,22 @@ class ChannelParity : public gpu::testing::GpuTest {
   Image gpu_;
 };
 
-// The RGB of the covered pixel whose surface point lies nearest `target`.
+// The RGB of the covered pixel whose surface point lies nearest `target`;
+// the mean of those that tie to float rounding (pixels placed symmetrically
+// about it), so that the choice does not rest on the rounding.
 glm::vec3 colourAt(const Image& image, glm::vec3 target) {
-  std::size_t best = 0;
   float nearest = std::numeric_limits<float>::infinity();
   for (std::size_t p = 0; p < image.beauty.size(); ++p)
-    if (image.beauty[p].a > 0.0f && glm::distance(image.position[p], target) < nearest)
-      nearest = glm::distance(image.position[p], target), best = p;
+    if (image.beauty[p].a > 0.0f) nearest = std::min(nearest, glm::distance(image.position[p], target));
   EXPECT_LT(nearest, 0.1f);
-  return glm::vec3(image.beauty[best]);
+  glm::vec3 sum(0.0f);
+  int ties = 0;
+  for (std::size_t p = 0; p < image.beauty.size(); ++p)
+    if (image.beauty[p].a > 0.0f && glm::distance(image.position[p], target) <= nearest * 1.0001f + 1e-6f) {
+      sum += glm::vec3(image.beauty[p]);
+      ++ties;
+    }
+  return sum / float(ties);
 }
 
 // Red, green or blue (channel 0, 1, 2) well above the other two.

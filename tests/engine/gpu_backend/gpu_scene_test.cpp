@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -95,6 +96,22 @@ TEST_P(PackedCage, TopLevelsReachEveryPatchOnceThroughEnclosingBoxes) {
   EXPECT_LE(deepest, bvh.statistics().maxDepth + 1);
 }
 
+// A patch's points as the GPU reads them (compute/layout/patch_records.h),
+// relative to the eye or, with `placed` false, to the patch's first point.
+scene::BezierPatch packedPatch(const GpuScene& packed, const Texel& header, bool placed) {
+  scene::BezierPatch patch;
+  patch.gregory = header[layout::FACET_HEADER_KIND] == layout::FACET_PATCH_GREGORY;
+  const std::uint32_t firstPoint = header[layout::FACET_HEADER_FIRST_POINT];
+  const glm::dvec3 anchor = placed ? glm::dvec3(glm::vec3(packed.points[firstPoint])) : glm::dvec3(0.0);
+  auto read = [&](std::uint32_t k) {
+    return k == 0 ? anchor : anchor + glm::dvec3(glm::vec3(packed.points[firstPoint + k]));
+  };
+  for (std::uint32_t k = 0; k < 16; ++k) patch.points[k] = read(k);
+  if (patch.gregory)
+    for (std::uint32_t k = 0; k < 4; ++k) patch.alternates[k] = read(16 + k);
+  return patch;
+}
+
 // The float points, relative to the eye, still describe OpenSubdiv's surface
 // to float precision of the scene's size, however far it is from the origin.
 TEST_P(PackedCage, RebasedPointsEvaluateToTheLimitSurfaceFarFromTheOrigin) {
@@ -128,13 +145,7 @@ TEST_P(PackedCage, RebasedPointsEvaluateToTheLimitSurfaceFarFromTheOrigin) {
               range.firstGridVertex + slot * (range.rate + 1) * (range.rate + 1));
     EXPECT_EQ(second[layout::FACET_HEADER_FIRST_EDGE_MIDPOINT], range.firstEdgeMidpoint + slot * 4 * range.rate);
     EXPECT_EQ(second[layout::FACET_HEADER_OBJECT], 0u);
-    scene::BezierPatch fromGpu;
-    fromGpu.gregory = first[layout::FACET_HEADER_KIND] == layout::FACET_PATCH_GREGORY;
-    const std::uint32_t firstPoint = first[layout::FACET_HEADER_FIRST_POINT];
-    auto read = [&](std::uint32_t index) { return glm::dvec3(glm::vec3(packed.points[index])); };
-    for (std::uint32_t k = 0; k < 16; ++k) fromGpu.points[k] = read(firstPoint + k);
-    if (fromGpu.gregory)
-      for (std::uint32_t k = 0; k < 4; ++k) fromGpu.alternates[k] = read(firstPoint + 16 + k);
+    const scene::BezierPatch fromGpu = packedPatch(packed, first, true);
     for (int sample = 0; sample < 4; ++sample) {
       const double s = unit(random), t = unit(random);
       const glm::dvec3 osd = surface
@@ -147,6 +158,34 @@ TEST_P(PackedCage, RebasedPointsEvaluateToTheLimitSurfaceFarFromTheOrigin) {
   const double sceneSize =
       glm::length(surface.bounds().hi - surface.bounds().lo) + glm::length(surface.bounds().centre() - origin);
   EXPECT_LE(worst, 1e-6 * sceneSize) << GetParam();
+}
+
+// Derivatives come from points relative to the patch, so a patch far smaller
+// than its distance from the eye keeps its normal: 1e4 from the eye, float
+// points relative to the eye would turn these normals by up to a radian.
+TEST_P(PackedCage, PatchPointsKeepTheNormalFarFromTheEye) {
+  const scene::Scene scene = cageScene(GetParam(), glm::dvec3(0.0));
+  const scene::SceneGeometry geometry = scene::buildGeometry(scene);
+  const scene::SubdivisionSurface& surface = geometry.objects[0].surface;
+  const GpuScene packed = packScene(scene, geometry, glm::dvec3(1e4, -2e4, 3e4), 0.0, false);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double worst = 0.0;
+  for (std::size_t slot = 0; slot < packed.patches.size(); ++slot) {
+    const layout::PatchRecord& record = packed.patches[slot];
+    const scene::BezierPatch fromGpu = packedPatch(packed, packed.headers[layout::FACET_HEADER_TEXELS * slot], false);
+    for (int sample = 0; sample < 4; ++sample) {
+      const double s = unit(random), t = unit(random);
+      const scene::LimitPoint osd = surface.evaluatePatch(int(record.sourcePatch), record.faceU0 + s * record.faceSize,
+                                                          record.faceV0 + t * record.faceSize);
+      const glm::dvec3 normal = glm::cross(osd.du, osd.dv);
+      if (glm::length(normal) < 1e-3 * glm::length(osd.du) * glm::length(osd.dv)) continue;
+      const scene::BezierSample gpu = scene::evaluateBezierPatch(fromGpu, s, t);
+      const double cosine = glm::dot(glm::normalize(normal), glm::normalize(glm::cross(gpu.du, gpu.dv)));
+      worst = std::max(worst, std::acos(std::clamp(cosine, -1.0, 1.0)));
+    }
+  }
+  EXPECT_LE(worst, 1e-4) << GetParam();
 }
 
 // Over several objects the scene's own nodes lead to every object's patches,
