@@ -97,7 +97,11 @@ void packPatch(GpuScene& packed, const scene::SubdivisionSurface& surface, int s
       packChannel(*values, scene::Channel(c), packed.texcoords);
   const std::uint32_t firstPoint = std::uint32_t(packed.points.size());
   // The first point relative to the eye, the others relative to it
-  // (compute/layout/patch_records.h), each difference taken in double.
+  // (compute/layout/patch_records.h), each difference taken in double. The
+  // anchor's rounding moves the whole patch by less than an ulp and leaves
+  // its shape: taken from the rounded anchor, the other points would keep
+  // their own rounding while the first took the anchor's, and the normal at
+  // that corner would turn by the ratio of the two to the patch's size.
   const glm::dvec3 anchor = bezier.points[0];
   packed.points.push_back(glm::vec4(glm::vec3(anchor - origin), 0.0f));
   auto add = [&](const glm::dvec3& p) { packed.points.push_back(glm::vec4(glm::vec3(p - anchor), 0.0f)); };

@@ -9,7 +9,9 @@
 // Trumbore's test measures each triangle's edges from its own first corner
 // and leaves rounding gaps along shared edges.) A ray through an edge or a
 // corner meets every triangle there; the caller keeps the nearest.
-// `precise` keeps the 2D cross products unfused, which the antisymmetry needs.
+// `precise` keeps the corners' shear and the 2D cross products unfused, so
+// that a corner gets the same bits in every triangle it belongs to and the
+// antisymmetry holds.
 
 #ifndef FACET_RULE_SURFACE_RAY_TRIANGLE
 #define FACET_RULE_SURFACE_RAY_TRIANGLE
@@ -43,7 +45,9 @@ FACET_FN RayShear ray_shear(vec3 direction) {
 // ray, z its t.
 FACET_FN vec3 sheared(RayShear frame, vec3 corner) {
   real z = corner[frame.axes.z];
-  return vec3(corner[frame.axes.x] - frame.shear.x * z, corner[frame.axes.y] - frame.shear.y * z, frame.shear.z * z);
+  FACET_PRECISE vec3 across =
+      vec3(corner[frame.axes.x] - frame.shear.x * z, corner[frame.axes.y] - frame.shear.y * z, frame.shear.z * z);
+  return across;
 }
 
 // The ray's side of the edge from `from` to `to`, in its frame.
@@ -62,7 +66,7 @@ FACET_FN bool ray_hits_triangle(RayShear frame, vec3 origin, vec3 a, vec3 b, vec
   bool below = sideA < real(0) || sideB < real(0) || sideC < real(0);
   bool above = sideA > real(0) || sideB > real(0) || sideC > real(0);
   real sum = sideA + sideB + sideC;
-  if ((below && above) || sum == real(0)) return false;
+  if ((below && above) || !(abs(sum) > real(0))) return false;
   hit.t = (sideA * sa.z + sideB * sb.z + sideC * sc.z) / sum;
   hit.wb = sideB / sum;
   hit.wc = sideC / sum;

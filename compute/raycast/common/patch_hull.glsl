@@ -99,7 +99,7 @@ vec3 hull_corner(Hull hull, int i, int j) {
                     hull.lo.z[i][j] + hull.hi.z[i][j]);
 }
 
-// The range of a.p over the hull's control boxes (a box's extent along a
+// The range of a.p over the hull's control boxes, relative to the anchor (a box's extent along a
 // is |a|.halfExtent).
 vec2 hull_range(Hull hull, vec3 a) {
   vec2 range = vec2(INFINITE_DISTANCE, -INFINITE_DISTANCE);
@@ -112,7 +112,7 @@ vec2 hull_range(Hull hull, vec3 a) {
     range = vec2(min(range.x, min(min(low.x, low.y), min(low.z, low.w))),
                  max(range.y, max(max(high.x, high.y), max(high.z, high.w))));
   }
-  return range + dot(a, hull.lo.anchor);
+  return range;
 }
 
 // A piece's bounds in the frame of the plane of its corners: n its normal,
@@ -139,15 +139,20 @@ OrientedBounds oriented_bounds(Hull hull, float growth) {
   OrientedBounds b;
   b.n = planar ? normalize(n) : vec3(0.0, 0.0, 1.0);
   b.u = planar ? normalize(u) : vec3(1.0, 0.0, 0.0);
+  vec3 v = cross(b.n, b.u);
   b.nRange = hull_range(hull, b.n);
   b.uRange = hull_range(hull, b.u);
-  b.vRange = hull_range(hull, cross(b.n, b.u));
+  b.vRange = hull_range(hull, v);
+  // The slope from the ranges about the anchor, before the anchor's
+  // distance from the eye enters them.
   float width = min(b.uRange.y - b.uRange.x, b.vRange.y - b.vRange.x);
   b.steepness = planar ? piece_slope_bound(b.nRange.y - b.nRange.x, width) : INFINITE_DISTANCE;
-  vec2 grow = vec2(-growth, growth);
-  b.nRange += grow;
-  b.uRange += grow;
-  b.vRange += grow;
+  // Adding the anchor rounds by less than the growth, at least the root
+  // tolerance.
+  vec3 anchor = hull.lo.anchor;
+  b.nRange += dot(b.n, anchor) + vec2(-growth, growth);
+  b.uRange += dot(b.u, anchor) + vec2(-growth, growth);
+  b.vRange += dot(v, anchor) + vec2(-growth, growth);
   return b;
 }
 

@@ -69,11 +69,14 @@ int newton(ControlPoints c, Ray ray, uint patchIndex, uint object, vec4 piece, v
   if (!converged) return NEWTON_FAILED;
   float margin = 1e-6 * (piece.y - piece.x);
   bool inside = s >= piece.x - margin && s <= piece.y + margin && t >= piece.z - margin && t <= piece.w + margin;
-  // On the patch is within the tolerance of it in space (to first order),
-  // as the CPU's Newton, clamped to the patch, accepts a root: float may put
-  // a ray along an edge two patches share just past the edge of each.
+  // On the patch is within the tolerance of it in space along each
+  // parameter (to first order), as the CPU's Newton, clamped to the patch,
+  // accepts a root: float may put a ray along an edge two patches share just
+  // past the edge of each. Each parameter on its own, so that a fold of the
+  // polynomial beyond the patch cannot bring a far root back.
   vec2 st = clamp(vec2(s, t), 0.0, 1.0);
-  bool onPatch = length((s - st.x) * point.ds + (t - st.y) * point.dt) <= frame.tolerance;
+  bool onPatch = abs(s - st.x) * length(point.ds) <= frame.tolerance &&
+                 abs(t - st.y) * length(point.dt) <= frame.tolerance;
   if (onPatch && rayT >= ray.tMin && rayT < best.t &&
       !passes_over(object, ray.direction, cross(point.ds, point.dt), patchIndex, st, rayT)) {
     best.t = rayT;

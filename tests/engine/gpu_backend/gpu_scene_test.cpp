@@ -162,7 +162,7 @@ TEST_P(PackedCage, RebasedPointsEvaluateToTheLimitSurfaceFarFromTheOrigin) {
 
 // Derivatives come from points relative to the patch, so a patch far smaller
 // than its distance from the eye keeps its normal: 1e4 from the eye, float
-// points relative to the eye would turn these normals by up to a radian.
+// points relative to the eye would turn these normals by up to 2 radians.
 TEST_P(PackedCage, PatchPointsKeepTheNormalFarFromTheEye) {
   const scene::Scene scene = cageScene(GetParam(), glm::dvec3(0.0));
   const scene::SceneGeometry geometry = scene::buildGeometry(scene);
