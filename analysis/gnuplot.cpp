@@ -1,19 +1,14 @@
 #include "analysis/gnuplot.h"
 
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <algorithm>
-#include <cstring>
+#include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 
+#include "engine/image/child_process.h"
 #include "engine/image/image_io.h"
 #include "engine/image/output_folder.h"
-
-extern char** environ;
 
 namespace facet::analysis {
 
@@ -65,20 +60,23 @@ void runGnuplot(std::string script, const std::string& data, const fs::path& out
   // code, and no name is searched for placeholders.
   writeWhole(script_file, "DATA = ARG1\nOUTPUT = ARG2\nset terminal " + terminal + "\n" + script);
 
-  std::string program = "gnuplot", call = "-c", script_argument = script_file.string(),
-              data_argument = data_file.string(), output_argument = partial.string();
-  char* argv[] = {program.data(),         call.data(), script_argument.data(), data_argument.data(),
-                  output_argument.data(), nullptr};
-  pid_t pid = 0;
-  int spawn_error = posix_spawnp(&pid, "gnuplot", nullptr, nullptr, argv, environ);
-  int status = 0;
-  if (spawn_error == 0) waitpid(pid, &status, 0);
-  if (spawn_error == ENOENT) throw std::runtime_error("gnuplot not found on PATH; install it (Debian: gnuplot-nox)");
-  if (spawn_error != 0) throw std::runtime_error(std::string("cannot start gnuplot: ") + std::strerror(spawn_error));
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !endsAsItMust(partial, out.extension() == ".png")) {
+  const char* path = std::getenv("PATH");
+  const std::optional<fs::path> gnuplot = findOnPath("gnuplot", path ? path : "");
+  if (!gnuplot) throw std::runtime_error("gnuplot not found on PATH; install it (Debian: gnuplot-nox)");
+  try {
+    runChild({{gnuplot->string(), "-c", script_file.string(), data_file.string(), partial.string()},
+              std::nullopt,
+              kGnuplotTimeLimit});
+  } catch (const std::runtime_error& e) {
     fs::remove(partial);
-    throw std::runtime_error("gnuplot failed to write '" + out.string() + "' (status " + std::to_string(status) +
-                             "; a full disk?)");
+    throw std::runtime_error("'" + out.string() + "': " + e.what());
+  } catch (...) {
+    fs::remove(partial);
+    throw;
+  }
+  if (!endsAsItMust(partial, out.extension() == ".png")) {
+    fs::remove(partial);
+    throw std::runtime_error("gnuplot failed to write '" + out.string() + "' (a full disk?)");
   }
   fs::rename(partial, out);
 }

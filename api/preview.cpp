@@ -11,6 +11,7 @@
 #include "api/renderer_state.h"
 #include "api/scene_data.h"
 #include "engine/image/image_io.h"
+#include "engine/image/child_process.h"
 #include "engine/image/movie.h"
 #include "engine/image_memory.h"
 #include "engine/preview_stage.h"

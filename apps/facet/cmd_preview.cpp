@@ -14,6 +14,7 @@
 #include "commands.h"
 #include "data_folder.h"
 #include "engine/image/image_io.h"
+#include "engine/image/child_process.h"
 #include "engine/image/movie.h"
 #include "engine/image_memory.h"
 #include "engine/preview_stage.h"

@@ -1,5 +1,5 @@
 // The programs facet runs for its images (ffmpeg for movies, Blender for the
-// bench's Cycles renders) under control: each within a time limit, after
+// bench's Cycles renders, gnuplot for the bench's charts) under control: each within a time limit, after
 // which it is ended, and ended with facet: where SIGINT or SIGTERM reaches
 // facet while one runs, facet ends it (SIGTERM, then SIGKILL), waits for
 // it, and the command then ends, cleaning up as it unwinds
@@ -35,6 +35,9 @@ class Interrupted : public std::exception {
   int signal_;
   std::string what_;
 };
+
+// The first executable `name` in the folders of `path` (PATH's syntax).
+std::optional<std::filesystem::path> findOnPath(const std::string& name, const std::string& path);
 
 // Runs the program and waits for it. Throws std::runtime_error "<program>
 // exited with status N", "... was ended by signal N" or "... did not finish

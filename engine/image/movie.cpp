@@ -1,12 +1,9 @@
 #include "engine/image/movie.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <cstring>
-#include <sstream>
 #include <stdexcept>
 
 #include "engine/image/child_process.h"
@@ -21,15 +18,6 @@ std::optional<MovieFormat> movieFormat(const fs::path& path) {
   for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
   if (extension == ".mp4") return MovieFormat::Mp4;
   if (extension == ".gif") return MovieFormat::Gif;
-  return std::nullopt;
-}
-
-std::optional<fs::path> findOnPath(const std::string& name, const std::string& path) {
-  std::istringstream folders(path);
-  for (std::string folder; std::getline(folders, folder, ':');) {
-    const fs::path candidate = fs::path(folder.empty() ? "." : folder) / name;
-    if (fs::is_regular_file(candidate) && access(candidate.c_str(), X_OK) == 0) return candidate;
-  }
   return std::nullopt;
 }
 

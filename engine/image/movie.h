@@ -15,9 +15,6 @@ enum class MovieFormat { Mp4, Gif };
 // otherwise.
 std::optional<MovieFormat> movieFormat(const std::filesystem::path& path);
 
-// The first executable `name` in the folders of `path` (PATH's syntax).
-std::optional<std::filesystem::path> findOnPath(const std::string& name, const std::string& path);
-
 // What to do where ffmpeg is missing, for the error that says so.
 inline constexpr const char* kFfmpegMissing = "ffmpeg is not on PATH; install it (Debian: apt-get install ffmpeg)";
 

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 
 #include <filesystem>
+#include <fstream>
 #include <iterator>
 #include <stdexcept>
 #include <string>
@@ -24,6 +25,17 @@ class Gnuplot : public facet::testing::TempDirTest {};
 
 const std::string kLine = "plot DATA using 1:2 with lines title 'y'\n";
 const std::string kData = "0 0\n1 2\n2 1\n";
+
+// The message of the error drawing a chart to `out` raises; empty where
+// it raises none.
+std::string chartError(const fs::path& out) {
+  try {
+    runGnuplot("set output OUTPUT\n" + kLine, kData, out, 200, 120);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
 
 TEST_F(Gnuplot, AQuoteInTheOutputNameRunsNothing) {
   const fs::path before = fs::current_path();
@@ -50,14 +62,9 @@ TEST_F(Gnuplot, NamesThatSpellThePlaceholdersAreKeptAsTheyAre) {
 TEST_F(Gnuplot, AnUnusableTemporaryFolderIsOneErrorNamingIt) {
   const facet::testing::ScopedEnv tmpdir("TMPDIR", (dir_ / "no_such_folder").string());
   const fs::path out = dir_ / "chart.svg";
-  try {
-    runGnuplot("set output OUTPUT\n" + kLine, kData, out, 200, 120);
-    ADD_FAILURE() << "no error";
-  } catch (const OutputError& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "--out: cannot make a folder for gnuplot's script and data in the temporary folder '" +
-                  (dir_ / "no_such_folder").string() + "' (TMPDIR): no such folder; set TMPDIR to a writable folder");
-  }
+  EXPECT_EQ(chartError(out), "--out: cannot make a folder for gnuplot's script and data in the temporary folder '" +
+                                 (dir_ / "no_such_folder").string() +
+                                 "' (TMPDIR): no such folder; set TMPDIR to a writable folder");
   EXPECT_FALSE(fs::exists(out));
 }
 
@@ -77,6 +84,32 @@ TEST_F(Gnuplot, AFolderAsTheOutputIsRefusedBeforeGnuplotRuns) {
   EXPECT_THROW(runGnuplot("set output OUTPUT\n" + kLine, kData, out, 200, 120), OutputError);
   EXPECT_TRUE(fs::is_directory(out));
   EXPECT_FALSE(fs::exists(dir_ / "chart.png.partial"));
+}
+
+// gnuplot runs as the other programs facet runs: found on PATH, ended at
+// its time limit, and a chart it does not finish is an error with no file.
+TEST_F(Gnuplot, AGnuplotThatNeverFinishesIsEndedAndLeavesNoChart) {
+  const fs::path bin = dir_ / "bin";
+  fs::create_directories(bin);
+  {
+    std::ofstream script(bin / "gnuplot");
+    script << "#!/bin/sh\nexec /usr/bin/tail -f /dev/null\n";
+  }
+  fs::permissions(bin / "gnuplot", fs::perms::owner_all);
+  const facet::testing::ScopedEnv path("PATH", bin.string());
+  const facet::testing::ScopedEnv limit("FACET_CHILD_TIME_LIMIT", "1");
+  const fs::path out = dir_ / "chart.svg";
+  const std::string error = chartError(out);
+  EXPECT_NE(error.find("did not finish within 1 s, and was ended"), std::string::npos) << error;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(dir_ / "chart.svg.partial"));
+}
+
+TEST_F(Gnuplot, AMissingGnuplotIsOneErrorSayingWhatToInstall) {
+  const facet::testing::ScopedEnv path("PATH", (dir_ / "empty").string());
+  const fs::path out = dir_ / "chart.svg";
+  EXPECT_EQ(chartError(out), "gnuplot not found on PATH; install it (Debian: gnuplot-nox)");
+  EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <string>
 
+#include "engine/image/child_process.h"
 #include "engine/image/image_io.h"
 #include "tests/support/temp_dir.h"
 
