@@ -99,8 +99,8 @@ vec3 hull_corner(Hull hull, int i, int j) {
                     hull.lo.z[i][j] + hull.hi.z[i][j]);
 }
 
-// The range of a.p over the hull's control boxes, relative to the anchor (a box's extent along a
-// is |a|.halfExtent).
+// The range of a.p over the hull's control boxes, relative to the anchor
+// (a box's extent along a is |a|.halfExtent).
 vec2 hull_range(Hull hull, vec3 a) {
   vec2 range = vec2(INFINITE_DISTANCE, -INFINITE_DISTANCE);
   for (int i = 0; i < 4; ++i) {
