@@ -7,6 +7,7 @@
 
 #include <facet/facet.h>
 
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
@@ -126,6 +127,27 @@ TEST(ApiSceneSet, ARefusedChangeNamesTheFieldAndLeavesTheSceneAsItWas) {
   }
   EXPECT_EQ(scene.objectName(0), "left");
   expectSameImage(render(scene), before);
+}
+
+// A file `set` names is found beside the scene file, as the file would name
+// it; a file a setter is handed, in the working folder, as any file a
+// program opens (docs/api.md).
+TEST(ApiSceneSet, SetFindsFilesBesideTheSceneAndASetterInTheWorkingFolder) {
+  facet::Scene scene = sceneOf(baseDocument(), "beside.json");
+  const std::filesystem::path material = writeScene("beside_material.json", R"({"preset": "gold", "roughness": 0.3})");
+  struct WorkingFolder {
+    std::filesystem::path kept = std::filesystem::current_path();
+    ~WorkingFolder() { std::filesystem::current_path(kept); }
+  } restored;
+  std::filesystem::current_path(restored.kept.root_path());
+  EXPECT_NO_THROW(scene.set("objects[1].material", "\"beside_material.json\""));
+  EXPECT_EQ(scene.materialName(1), "beside_material");
+  const std::string refused = errorOf([&] { scene.setMaterial(0, std::string("beside_material.json")); });
+  EXPECT_NE(refused.find("beside_material.json"), std::string::npos) << refused;
+  EXPECT_EQ(scene.materialName(0), "warm");
+  std::filesystem::current_path(material.parent_path());
+  EXPECT_NO_THROW(scene.setMaterial(0, std::string("beside_material.json")));
+  EXPECT_EQ(scene.materialName(0), "beside_material");
 }
 
 }  // namespace
