@@ -1,5 +1,7 @@
 #include "scenes/bezier_patch.h"
 
+#include "rules/rules.h"
+
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
@@ -176,24 +178,26 @@ Aabb SubPatchHull::bounds() const {
   return box;
 }
 
+namespace {
+
+// The middle of control slot k's box.
+glm::dvec3 middle(const SubPatchHull& hull, int k) { return 0.5 * (hull.lo[k] + hull.hi[k]); }
+
+}  // namespace
+
 SubPatchHull::CornerPlaneSlab SubPatchHull::cornerPlaneSlab() const {
-  auto mid = [this](int k) { return 0.5 * (lo[k] + hi[k]); };
-  const glm::dvec3 c00 = mid(0), c30 = mid(3), c03 = mid(12), c33 = mid(15);
-  const glm::dvec3 n = glm::cross(c33 - c00, c03 - c30);
-  glm::dvec3 u = (c30 - c00) + (c33 - c03);
-  u -= glm::dot(u, n) / std::max(glm::dot(n, n), 1e-300) * n;
+  auto mid = [this](int k) { return middle(*this, k); };
   CornerPlaneSlab slab;
-  slab.planar = glm::length(n) > 0.0 && glm::length(u) > 0.0;
+  glm::dvec3 u;
+  slab.planar = rules::f64::corner_plane(mid(0), mid(3), mid(12), mid(15), slab.normal, u);
   if (!slab.planar) return slab;
-  slab.normal = glm::normalize(n);
-  u = glm::normalize(u);
   const glm::dvec3 v = glm::cross(slab.normal, u);
   // The extent of the control boxes along an axis: each box spans
   // |axis| . its half size about its centre.
   auto extent = [this](const glm::dvec3& axis) {
     double low = INFINITY, high = -INFINITY;
     for (int k = 0; k < 16; ++k) {
-      const double centre = glm::dot(axis, 0.5 * (lo[k] + hi[k]));
+      const double centre = glm::dot(axis, middle(*this, k));
       const double spread = glm::dot(glm::abs(axis), 0.5 * (hi[k] - lo[k]));
       low = std::min(low, centre - spread);
       high = std::max(high, centre + spread);
@@ -206,7 +210,7 @@ SubPatchHull::CornerPlaneSlab SubPatchHull::cornerPlaneSlab() const {
 }
 
 double SubPatchHull::flatnessError() const {
-  auto mid = [this](int k) { return 0.5 * (lo[k] + hi[k]); };
+  auto mid = [this](int k) { return middle(*this, k); };
   glm::dvec3 c00 = mid(0), c30 = mid(3), c03 = mid(12), c33 = mid(15);
   double error = 0.0;
   for (int j = 0; j < 4; ++j) {

@@ -133,12 +133,8 @@ struct OrientedBounds {
 OrientedBounds oriented_bounds(Hull hull, float growth) {
   vec3 c00 = hull_corner(hull, 0, 0), c30 = hull_corner(hull, 3, 0);
   vec3 c03 = hull_corner(hull, 0, 3), c33 = hull_corner(hull, 3, 3);
-  vec3 n = cross(c33 - c00, c03 - c30), u = (c30 - c00) + (c33 - c03);
-  u -= dot(u, n) / max(dot(n, n), 1e-30) * n;
-  bool planar = length(n) > 0.0 && length(u) > 0.0;
   OrientedBounds b;
-  b.n = planar ? normalize(n) : vec3(0.0, 0.0, 1.0);
-  b.u = planar ? normalize(u) : vec3(1.0, 0.0, 0.0);
+  bool planar = corner_plane(c00, c30, c03, c33, b.n, b.u);
   vec3 v = cross(b.n, b.u);
   b.nRange = hull_range(hull, b.n);
   b.uRange = hull_range(hull, b.u);
