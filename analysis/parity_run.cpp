@@ -6,6 +6,7 @@
 #include "analysis/parity_statistics.h"
 #include "engine/image_memory.h"
 #include "engine/render_record.h"
+#include "scenes/light_transport.h"
 
 namespace facet::analysis {
 namespace {
@@ -23,12 +24,6 @@ double nonNegative(const std::string& text, const std::string& option, const std
   if (end != text.size() || !std::isfinite(value) || value < 0)
     throw std::invalid_argument(option + " '" + override + "': " + kToleranceRule);
   return value;
-}
-
-// Whether the beauty is a Monte Carlo estimate whose random numbers the
-// environment's seed chooses: sampled or filtered lighting, and paths.
-bool seededEstimate(const scene::Scene& scene) {
-  return scene.environment && (scene.environment->method != scene::IblMethod::Prefiltered || scene.render.bounces > 0);
 }
 
 nlohmann::json aovJson(const AovParity& a) {
@@ -90,7 +85,7 @@ ParityCase judgeParity(const std::string& name, scene::Scene scene, const std::v
   // The reference's render; per candidate its render, the first pair, the
   // pairs' sums (about an image and a half) and the two mean images.
   checkImagesFitInMemory(scene, 1 + 6 * int(candidates.size()), sizeField);
-  const bool statistical = seededEstimate(scene) && renders > 1;
+  const bool statistical = scene::estimateSeed(scene) && renders > 1;
   const int count = statistical ? renders : 1;
   const std::uint32_t firstSeed = scene.environment ? scene.environment->seed : 0u;
 

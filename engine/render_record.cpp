@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "engine/camera/camera.h"
+#include "scenes/light_transport.h"
 
 namespace facet {
 namespace {
@@ -32,11 +33,10 @@ ExrNames exrNames(const scene::Scene& scene) {
   return names;
 }
 
-}  // namespace
-
-std::string settingsDigest(const scene::Scene& scene, const std::string& backend) {
+// What decides a picture's pixels apart from the backend and the seed.
+std::string pictureText(const scene::Scene& scene) {
   std::ostringstream text;
-  text << std::hexfloat << backend << '\n';
+  text << std::hexfloat;
   if (!scene.source.empty()) {
     std::ifstream file(scene.source, std::ios::binary);
     text << file.rdbuf() << '\n';
@@ -57,13 +57,27 @@ std::string settingsDigest(const scene::Scene& scene, const std::string& backend
   if (const auto& e = scene.environment)
     text << '\n'
          << e->map->source << ' ' << e->intensity << ' ' << e->rotationDegrees << ' ' << int(e->method) << ' '
-         << e->samples << ' ' << e->occlusion << ' ' << e->seed;
+         << e->samples << ' ' << e->occlusion;
+  return text.str();
+}
+
+std::string fnv1aHex(const std::string& text) {
   std::uint64_t hash = 14695981039346656037ull;  // FNV-1a, 64-bit
-  for (const char byte : text.str()) hash = (hash ^ std::uint8_t(byte)) * 1099511628211ull;
+  for (const char byte : text) hash = (hash ^ std::uint8_t(byte)) * 1099511628211ull;
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
   return hex;
 }
+
+}  // namespace
+
+std::string settingsDigest(const scene::Scene& scene, const std::string& backend) {
+  std::string text = backend + '\n' + pictureText(scene);
+  if (scene.environment) text += ' ' + std::to_string(scene.environment->seed);
+  return fnv1aHex(text);
+}
+
+std::string pictureDigest(const scene::Scene& scene) { return fnv1aHex(pictureText(scene)); }
 
 std::string renderSettingsText(const scene::Scene& scene, const std::string& backend) {
   const scene::RenderSettings& r = scene.render;
@@ -98,8 +112,10 @@ ExrOptions describedExr(const scene::Scene& scene, const std::string& backend, c
   const int width = scene.render.width, height = scene.render.height;
   ExrOptions exr;
   exr.placement = ExrPlacement{window, width, height, settingsDigest(scene, backend)};
-  exr.metadata = {exrCamera(scene.camera, width, height), "facet " FACET_VERSION_STRING,
-                  renderSettingsText(scene, backend), exrNames(scene)};
+  exr.metadata = {
+      exrCamera(scene.camera, width, height),
+      {"facet " FACET_VERSION_STRING, renderSettingsText(scene, backend), pictureDigest(scene), estimateSeed(scene)},
+      exrNames(scene)};
   exr.layers = layers;
   exr.halfBeauty = halfBeauty;
   return exr;

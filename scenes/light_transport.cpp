@@ -118,6 +118,12 @@ Scene loadStatedScene(const std::filesystem::path& path) {
   return scene;
 }
 
+std::optional<std::uint32_t> estimateSeed(const Scene& scene) {
+  const auto& e = scene.environment;
+  if (!e || (e->method == IblMethod::Prefiltered && scene.render.bounces == 0)) return std::nullopt;
+  return e->seed;
+}
+
 bool leavesLightTransportUnsaid(const Scene& scene) {
   return !scene.render.bouncesStated || (scene.environment && !scene.environment->methodStated);
 }

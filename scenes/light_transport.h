@@ -7,7 +7,9 @@
 // settings always win: paths that cannot continue are still cast as none.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,6 +58,13 @@ void leaveNothingToChoose(Scene& scene);
 // of one method or setting (facet bench, facet ibl-chart), which render
 // what they set and nothing chosen.
 Scene loadStatedScene(const std::filesystem::path& path);
+
+// The seed of the random numbers the beauty's Monte Carlo estimate draws
+// (sampled or filtered lighting, paths), whose renders seeds apart are
+// judged by a paired t-test (docs/parity.md); none where the beauty is no
+// such estimate (prefiltered lighting without paths, or no environment,
+// whose paths draw fixed numbers).
+std::optional<std::uint32_t> estimateSeed(const Scene& scene);
 
 // Whether the scene leaves anything to choose.
 bool leavesLightTransportUnsaid(const Scene& scene);

@@ -1,5 +1,7 @@
 // The "render" and "environment" objects of facet's JSON scenes
 // (docs/scene-format.md).
+#include <cstdint>
+#include <limits>
 #include <memory>
 #include <span>
 #include <stdexcept>
@@ -64,7 +66,7 @@ Camera readCamera(const Field& f, Camera c) {
 
 Environment readEnvironment(const Field& f, const std::filesystem::path& sceneFile,
                             const std::optional<Environment>& start) {
-  f.object({"file", "color", "intensity", "rotation", "method", "samples", "occlusion"});
+  f.object({"file", "color", "intensity", "rotation", "method", "samples", "occlusion", "seed"});
   if (f.has("file") && f.has("color")) f.fail("give exactly one of file (an .exr or .hdr map) and color");
   if (!f.has("file") && !f.has("color") && !start) f.fail("give exactly one of file (an .exr or .hdr map) and color");
   Environment environment = start.value_or(Environment{.methodStated = false, .samplesStated = false});
@@ -96,6 +98,7 @@ Environment readEnvironment(const Field& f, const std::filesystem::path& sceneFi
   }
   if (f.has("occlusion")) environment.occlusion = f["occlusion"].boolean();
   if (f.has("method") || f.has("occlusion")) environment.methodStated = true;
+  if (f.has("seed")) environment.seed = std::uint32_t(f["seed"].integer(0, std::numeric_limits<int>::max()));
   return environment;
 }
 

@@ -182,7 +182,7 @@ void writeOutputs(const RenderCommandOptions& o, const RenderJob& job, const sce
   std::vector<OutputFile> outputs;
   if (o.writeExr) {
     ExrOptions exr = exrOptions(scene, o.backend, window, o.exrFlags);
-    exr.metadata.renderSettings += settingsNote;
+    exr.metadata.provenance.renderSettings += settingsNote;
     outputs.push_back(exrFile(job.exr, image, exr));
   }
   if (!job.png.empty()) outputs.push_back(pngFile(job.png, image, preview));

@@ -10,6 +10,7 @@
 #include <new>
 #include <string>
 
+#include "analysis/stored_parity.h"
 #include "commands.h"
 #include "engine/gpu/gpu.h"
 #include "engine/image/image_io.h"
@@ -79,6 +80,8 @@ int main(int argc, char** argv) {
     return fail(kGpuFailed, e.what());
   } catch (const CheckFailed& e) {
     return fail(kCheckFailed, e.what());
+  } catch (const facet::analysis::NotComparable& e) {
+    return fail(kNotComparable, std::string("compare: ") + e.what());
   } catch (const facet::Interrupted& e) {
     // The program it ran has ended and the command has cleaned up as it
     // unwound: it now ends as the signal would have ended it.

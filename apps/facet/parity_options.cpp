@@ -66,10 +66,10 @@ void reportParity(const ParityFlags& flags, const std::vector<ParityCase>& cases
     for (const ParityCase& c : cases) {
       if (!c.error.empty()) std::printf("%s: error: %s\n", c.scene.c_str(), c.error.c_str());
       // The line a CI log needs to tell two runs' settings apart.
-      if (c.settings.contains("digest"))
+      if (c.settings.contains("text"))
         std::printf("%s: settings %s, %d render(s) per backend (digest %s)\n", c.scene.c_str(),
                     c.settings["text"].get<std::string>().c_str(), c.settings["rendersPerBackend"].get<int>(),
-                    c.settings["digest"].get<std::string>().c_str());
+                    c.settings.value("digest", c.settings.value("pictureDigest", "")).c_str());
       for (const ParityRun& run : c.runs)
         std::printf("%s (reference: %s)\n%s", runName(c, run).c_str(), c.reference.c_str(),
                     analysis::describe(run.report).c_str());

@@ -40,8 +40,12 @@ void applyEnvironmentOverrides(const SceneOverrides& o, scene::Scene& scene) {
     if (!scene.environment) scene.environment = scene::Environment{.methodStated = false, .samplesStated = false};
     scene.environment->map = std::make_shared<const scene::EnvironmentMap>(scene::loadEnvironmentMap(o.environment));
   }
-  const bool anyEnvironmentFlag =
-      o.environmentIntensity || o.environmentRotation || !o.ibl.empty() || o.iblSamples || !o.occlusion.empty();
+  // A script renders every scene of a folder seeds apart, whether or not it has an environment.
+  if (o.seed && !scene.environment)
+    scene.warnings.push_back("--seed " + std::to_string(*o.seed) +
+                             ": changes nothing here: without an environment the scene's random numbers are fixed");
+  const bool anyEnvironmentFlag = o.environmentIntensity || o.environmentRotation || !o.ibl.empty() || o.iblSamples ||
+                                  !o.occlusion.empty() || (o.seed && scene.environment);
   if (!anyEnvironmentFlag) return;
   if (!scene.environment)
     throw std::invalid_argument(
@@ -60,6 +64,7 @@ void applyEnvironmentOverrides(const SceneOverrides& o, scene::Scene& scene) {
   }
   if (!o.occlusion.empty()) e.occlusion = o.occlusion == "on";
   if (!o.ibl.empty() || !o.occlusion.empty()) e.methodStated = true;
+  if (o.seed) e.seed = *o.seed;
 }
 
 }  // namespace
@@ -181,6 +186,12 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& o) {
       ->check(CLI::Range(1, 16384));
   command.add_option("--occlusion", o.occlusion, "Sampled and filtered IBL: shadow rays towards the environment")
       ->check(CLI::IsMember({"on", "off"}));
+  command
+      .add_option("--seed", o.seed,
+                  "The random numbers of the camera's samples, the environment's and the paths': renders with "
+                  "different seeds are independent (default: the scene's environment.seed, 0; without an "
+                  "environment they are fixed)")
+      ->check(CLI::Range(0u, 2147483647u));
   addEnergyCompensationOption(command, o.energyCompensation);
 }
 

@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,7 @@ struct SceneOverrides {
   std::string ibl;
   std::optional<int> iblSamples;
   std::string occlusion;
+  std::optional<std::uint32_t> seed;
   std::string energyCompensation;
 };
 

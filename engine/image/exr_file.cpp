@@ -4,6 +4,7 @@
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
+#include <ImfIntAttribute.h>
 #include <ImfOutputFile.h>
 #include <ImfStandardAttributes.h>
 #include <ImfStringAttribute.h>
@@ -115,9 +116,12 @@ void insertMetadata(Imf::Header& header, const ExrMetadata& metadata, bool crypt
     Imf::addWorldToCamera(header, m44f(worldToCamera(*metadata.camera)));
     Imf::addWorldToNDC(header, m44f(worldToNdc(*metadata.camera)));
   }
-  if (!metadata.software.empty()) header.insert("software", Imf::StringAttribute(metadata.software));
-  if (!metadata.renderSettings.empty())
-    header.insert(kRenderSettingsAttribute, Imf::StringAttribute(metadata.renderSettings));
+  const ExrProvenance& made = metadata.provenance;
+  if (!made.software.empty()) header.insert("software", Imf::StringAttribute(made.software));
+  if (!made.renderSettings.empty()) header.insert(kRenderSettingsAttribute, Imf::StringAttribute(made.renderSettings));
+  if (!made.pictureDigest.empty()) header.insert(kPictureDigestAttribute, Imf::StringAttribute(made.pictureDigest));
+  // OpenEXR's integer attribute is signed: the seed's 32 bits as they are.
+  if (made.estimateSeed) header.insert(kEstimateSeedAttribute, Imf::IntAttribute(int(*made.estimateSeed)));
   if (crypto && metadata.names) {
     insertCryptomatte(header, "CryptoObject", metadata.names->objects);
     insertCryptomatte(header, "CryptoMaterial", metadata.names->materials);
@@ -202,6 +206,23 @@ OutputFile exrFile(const std::filesystem::path& path, const Image& image, const 
 
 void writeExr(const std::filesystem::path& path, const Image& image, const ExrOptions& options) {
   writeAllOrNothing({exrFile(path, image, options)});
+}
+
+ExrProvenance readExrProvenance(const std::filesystem::path& path) {
+  try {
+    Imf::InputFile file(path.c_str());
+    const Imf::Header& header = file.header();
+    const auto text = [&](const char* name) {
+      const auto* attribute = header.findTypedAttribute<Imf::StringAttribute>(name);
+      return attribute ? attribute->value() : std::string();
+    };
+    ExrProvenance made{text("software"), text(kRenderSettingsAttribute), text(kPictureDigestAttribute), {}};
+    if (const auto* seed = header.findTypedAttribute<Imf::IntAttribute>(kEstimateSeedAttribute))
+      made.estimateSeed = std::uint32_t(seed->value());
+    return made;
+  } catch (const std::exception& e) {
+    throw std::runtime_error(path.string() + ": cannot read EXR: " + e.what());
+  }
 }
 
 Image readExr(const std::filesystem::path& path) {

@@ -64,5 +64,7 @@ OutputFile exrFile(const std::filesystem::path& path, const Image& image, const 
 void writeExr(const std::filesystem::path& path, const Image& image, const ExrOptions& options = {});
 // The image planes the file has; the others keep their miss values.
 Image readExr(const std::filesystem::path& path);
+// The provenance attributes the file has; the others are empty.
+ExrProvenance readExrProvenance(const std::filesystem::path& path);
 
 }  // namespace facet

@@ -1,6 +1,6 @@
 // What an EXR says about the render besides its pixels: the camera as
-// OpenEXR's standard worldToCamera and worldToNDC attributes, the software
-// and its settings, and the scene's object and material names that the ID
+// OpenEXR's standard worldToCamera and worldToNDC attributes, the software,
+// its settings and what they decide, and the scene's object and material names that the ID
 // layers refer to (docs/outputs.md).
 #pragma once
 
@@ -49,12 +49,22 @@ struct ExrNames {
 // The object a faceId belongs to; Image::kNoId for a miss.
 std::uint32_t objectOfFace(const ExrNames& names, std::uint32_t faceId);
 
-struct ExrMetadata {
-  std::optional<ExrCamera> camera;  // worldToCamera, worldToNDC
-  std::string software;             // "software": "facet <version>"
-  std::string renderSettings;       // kRenderSettingsAttribute
-  std::optional<ExrNames> names;    // objectId, materialId and the Cryptomatte layers
+// How the render was made: what `facet compare` reads back to tell whether
+// two stored renders estimate the same picture, and to pair them by seed.
+struct ExrProvenance {
+  std::string software;                       // "software": "facet <version>"
+  std::string renderSettings;                 // kRenderSettingsAttribute
+  std::string pictureDigest;                  // kPictureDigestAttribute (engine/render_record.h)
+  std::optional<std::uint32_t> estimateSeed;  // kEstimateSeedAttribute: only where the beauty is an estimate
 };
 inline constexpr const char* kRenderSettingsAttribute = "facetRenderSettings";
+inline constexpr const char* kPictureDigestAttribute = "facetPictureDigest";
+inline constexpr const char* kEstimateSeedAttribute = "facetEstimateSeed";
+
+struct ExrMetadata {
+  std::optional<ExrCamera> camera;  // worldToCamera, worldToNDC
+  ExrProvenance provenance;
+  std::optional<ExrNames> names;  // objectId, materialId and the Cryptomatte layers
+};
 
 }  // namespace facet

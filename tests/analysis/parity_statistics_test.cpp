@@ -6,23 +6,10 @@
 
 #include "analysis/parity.h"
 #include "analysis/parity_statistics.h"
+#include "tests/support/noisy_square.h"
 
 namespace facet::analysis {
 namespace {
-
-// A 20x20 image whose centre 10x10 square is covered, lit by `beauty`.
-Image square(const std::function<float()>& beauty) {
-  Image image(20, 20);
-  for (int y = 5; y < 15; ++y)
-    for (int x = 5; x < 15; ++x) {
-      const std::size_t p = image.index(x, y);
-      image.beauty[p] = {beauty(), beauty(), beauty(), 1.0f};
-      image.depth[p] = 10.0f;
-      image.shadingNormal[p] = {0.0f, 0.0f, 1.0f};
-      image.patchId[p] = 0;
-    }
-  return image;
-}
 
 // 16 pairs of a noisy estimate (10% noise on 0.5), the candidate of each
 // pair made from the reference by `candidate`.
@@ -31,7 +18,7 @@ PairedRenders pairs(const std::function<Image(const Image&, std::mt19937&)>& can
   std::normal_distribution<float> noise(0.5f, 0.05f);
   PairedRenders renders;
   for (int i = 0; i < 16; ++i) {
-    const Image reference = square([&] { return noise(random); });
+    const Image reference = testing::noisySquare([&] { return noise(random); });
     renders.add(reference, candidate(reference, random));
   }
   return renders;
@@ -41,14 +28,12 @@ ParityReport judge(const PairedRenders& renders) {
   return compareImages(renders.referenceMean(), renders.candidateMean(), {}, &renders);
 }
 
-const AovParity& beauty(const ParityReport& report) { return report.aovs[2]; }
-
 TEST(ParityStatistics, EqualRendersPass) {
   const PairedRenders renders = pairs([](const Image& reference, std::mt19937&) { return reference; });
   const ParityReport report = judge(renders);
   EXPECT_TRUE(report.pass) << describe(report);
-  EXPECT_EQ(beauty(report).test, "paired t-test");
-  EXPECT_EQ(beauty(report).renders, 16);
+  EXPECT_EQ(testing::beautyOf(report).test, "paired t-test");
+  EXPECT_EQ(testing::beautyOf(report).renders, 16);
 }
 
 // Differences as large as the noise, in either direction: a shadow ray that
@@ -75,9 +60,9 @@ TEST(ParityStatistics, AFivePercentBiasFails) {
   };
   const ParityReport report = judge(pairs(biased));
   EXPECT_EQ(report.verdict, Verdict::Fail);
-  EXPECT_GT(beauty(report).over(), 90u);
-  EXPECT_LT(beauty(report).minPValue, beauty(report).alpha);
-  EXPECT_EQ(beauty(report).allowed, 1u);  // 0.25% of 100 pixels, rounded up
+  EXPECT_GT(testing::beautyOf(report).over(), 90u);
+  EXPECT_LT(testing::beautyOf(report).minPValue, testing::beautyOf(report).alpha);
+  EXPECT_EQ(testing::beautyOf(report).allowed, 1u);  // 0.25% of 100 pixels, rounded up
 }
 
 TEST(ParityStatistics, AConstantOffsetWithNoNoiseInTheDifferenceFails) {

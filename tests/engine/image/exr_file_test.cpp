@@ -153,7 +153,7 @@ TEST_F(ExrFile, AHalfBeautyIsHalfAndEveryOtherChannelKeepsItsType) {
 TEST_F(ExrFile, TheHeaderHoldsTheCameraTheSoftwareAndTheSettings) {
   ExrOptions options;
   ExrCamera camera{{1.0, 2.0, 3.0}, {0.0, 0.0, -1.0}, {0.0, 1.0, 0.0}, {1.0, 0.0, 0.0}, 0.5, 1.5};
-  options.metadata = {camera, "facet 9.8.7", "backend=cpu spp=4", std::nullopt};
+  options.metadata = {camera, {"facet 9.8.7", "backend=cpu spp=4", "0123456789abcdef", 4000000000u}, std::nullopt};
   writeExr(dir_ / "camera.exr", hittingTwoObjects(), options);
   Imf::InputFile file((dir_ / "camera.exr").c_str());
   const Imf::Header& header = file.header();
@@ -170,6 +170,20 @@ TEST_F(ExrFile, TheHeaderHoldsTheCameraTheSoftwareAndTheSettings) {
   EXPECT_EQ(Imath::V3f(1.0f, 2.0f, 3.0f) * toCamera, Imath::V3f(0.0f));
   EXPECT_EQ(header.typedAttribute<Imf::StringAttribute>("software").value(), "facet 9.8.7");
   EXPECT_EQ(header.typedAttribute<Imf::StringAttribute>(kRenderSettingsAttribute).value(), "backend=cpu spp=4");
+  const ExrProvenance back = readExrProvenance(dir_ / "camera.exr");
+  EXPECT_EQ(back.software, "facet 9.8.7");
+  EXPECT_EQ(back.renderSettings, "backend=cpu spp=4");
+  EXPECT_EQ(back.pictureDigest, "0123456789abcdef");
+  EXPECT_EQ(back.estimateSeed, 4000000000u);  // all 32 bits through OpenEXR's signed attribute
+}
+
+TEST_F(ExrFile, AnImageThatIsNoEstimateRecordsNoSeed) {
+  ExrOptions options;
+  options.metadata.provenance = {"facet 9.8.7", "backend=cpu spp=1", "0123456789abcdef", std::nullopt};
+  writeExr(dir_ / "unseeded.exr", hittingTwoObjects(), options);
+  const ExrProvenance back = readExrProvenance(dir_ / "unseeded.exr");
+  EXPECT_EQ(back.pictureDigest, "0123456789abcdef");
+  EXPECT_FALSE(back.estimateSeed.has_value());
 }
 
 TEST_F(ExrFile, IdLayersNameEachPixelsObjectAndMaterial) {

@@ -148,7 +148,7 @@ TEST_F(TileMerge, AFailedMergeKeepsTheOldOutput) {
 
 TEST_F(TileMerge, TheMergeKeepsTheHeaderAndTheIdLayersOfAHalfBeauty) {
   ExrOptions options;
-  options.metadata = {ExrCamera{}, "facet 1.2.3", "backend=cpu", ExrNames{{"ball"}, {0}, {0}, {"gold"}}};
+  options.metadata = {ExrCamera{}, {"facet 1.2.3", "backend=cpu", {}, {}}, ExrNames{{"ball"}, {0}, {0}, {"gold"}}};
   options.halfBeauty = true;
   std::vector<fs::path> tiles;
   for (int i = 0; i < 2; ++i) {
