@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "analysis/parity_statistics.h"
+#include "analysis/reference_cache.h"
 #include "engine/image_memory.h"
 #include "engine/render_record.h"
 #include "scenes/light_transport.h"
@@ -81,12 +82,14 @@ nlohmann::json reportJson(const ParityReport& r) {
 
 ParityCase judgeParity(const std::string& name, scene::Scene scene, const std::vector<ParityCandidate>& candidates,
                        Renderer& reference, int renders, const ParityTolerances& tolerances,
-                       const std::string& sizeField) {
-  // The reference's render; per candidate its render, the first pair, the
-  // pairs' sums (about an image and a half) and the two mean images.
-  checkImagesFitInMemory(scene, 1 + 6 * int(candidates.size()), sizeField);
+                       const std::string& sizeField, const ReferenceStore& store) {
   const bool statistical = scene::estimateSeed(scene) && renders > 1;
   const int count = statistical ? renders : 1;
+  // The reference's render; per candidate its render, the first pair, the
+  // pairs' sums (about an image and a half) and the two mean images; and
+  // what the store keeps (a render, and a beauty a fifth of one per later render).
+  const bool storing = !store.key.empty();
+  checkImagesFitInMemory(scene, 1 + 6 * int(candidates.size()) + (storing ? 1 + (count + 3) / 5 : 0), sizeField);
   const std::uint32_t firstSeed = scene.environment ? scene.environment->seed : 0u;
 
   ParityCase out;
@@ -96,6 +99,13 @@ ParityCase judgeParity(const std::string& name, scene::Scene scene, const std::v
                   {"rendersPerBackend", count},
                   {"seeds", statistical ? nlohmann::json::array({firstSeed, firstSeed + std::uint32_t(count - 1)})
                                         : nlohmann::json::array({firstSeed})}};
+  const std::optional<CachedReference> stored =
+      storing && !store.fresh ? loadReference(store.key, scene.render.width, scene.render.height, count) : std::nullopt;
+  CachedReference made;
+  if (stored) {
+    out.reference = stored->device;
+    out.referenceCached = true;
+  }
   std::vector<PairedRenders> pairs(candidates.size());
   for (const ParityCandidate& c : candidates) out.runs.push_back({c.adapter, c.adapterInfo, 0, {}});
   // Render i of every backend draws the same random numbers (seed i), so
@@ -111,11 +121,19 @@ ParityCase judgeParity(const std::string& name, scene::Scene scene, const std::v
       out.runs[a].adapterInfo["device"] = gpu.device;
       gpuImages.push_back(std::move(gpu.image));
     }
-    const RenderReport cpu = reference.render(scene, Backend::Cpu);
-    out.reference = cpu.device;
-    out.referenceMilliseconds += cpu.totalMilliseconds();
-    for (std::size_t a = 0; a < candidates.size(); ++a) pairs[a].add(cpu.image, gpuImages[a]);
+    Image cpuImage;
+    if (stored) {
+      cpuImage = stored->render(i);
+    } else {
+      RenderReport cpu = reference.render(scene, Backend::Cpu);
+      out.reference = made.device = cpu.device;
+      out.referenceMilliseconds += cpu.totalMilliseconds();
+      cpuImage = std::move(cpu.image);
+      if (storing) made.add(cpuImage);
+    }
+    for (std::size_t a = 0; a < candidates.size(); ++a) pairs[a].add(cpuImage, gpuImages[a]);
   }
+  if (storing && !stored) storeReference(store.key, made);
   for (std::size_t a = 0; a < candidates.size(); ++a)
     out.runs[a].report = compareImages(pairs[a].referenceMean(), pairs[a].candidateMean(), tolerances,
                                        statistical ? &pairs[a] : nullptr);
@@ -159,10 +177,11 @@ nlohmann::json parityCaseJson(const ParityCase& c) {
     entry["milliseconds"] = run.milliseconds;
     runs.push_back(entry);
   }
-  nlohmann::json scene = {{"scene", c.scene},
-                          {"reference", {{"name", c.reference}, {"milliseconds", c.referenceMilliseconds}}},
-                          {"settings", c.settings},
-                          {"runs", runs}};
+  nlohmann::json scene = {
+      {"scene", c.scene},
+      {"reference", {{"name", c.reference}, {"milliseconds", c.referenceMilliseconds}, {"cached", c.referenceCached}}},
+      {"settings", c.settings},
+      {"runs", runs}};
   if (!c.error.empty()) scene["error"] = c.error;
   return scene;
 }

@@ -30,6 +30,7 @@ struct ParityCase {
   std::string reference;        // what rendered the reference: the CPU's device, or the reference image
   std::string joiner = " on ";  // between the scene and a run's adapter in a run's name
   double referenceMilliseconds = 0;
+  bool referenceCached = false;  // the reference's renders came from the cache (reference_cache.h)
   nlohmann::json settings = nlohmann::json::object();  // digest, text and renders per backend
   std::vector<ParityRun> runs;
   // What stopped the scene before it was judged (facet's message: a file
@@ -45,15 +46,25 @@ struct ParityCandidate {
   nlohmann::json adapterInfo = nlohmann::json::object();
 };
 
+// Where the CPU reference's renders are kept between runs
+// (reference_cache.h): nowhere without a key; `fresh` renders them anew
+// and replaces what is stored.
+struct ReferenceStore {
+  std::string key;
+  bool fresh = false;
+};
+
 // `scene`, with nothing left to choose (scenes/light_transport.h), judged
 // on every candidate against the CPU reference that `reference` renders.
 // Where its beauty is a Monte Carlo estimate (sampled or filtered lighting,
 // paths), each backend renders it `renders` times with seeds 0..renders-1
 // apart and beauty is judged by the paired t-test. `sizeField` names the
-// image size in the error of an image that does not fit in memory.
+// image size in the error of an image that does not fit in memory. The
+// reference's renders come from `store` where it holds them, and go there
+// where it does not.
 ParityCase judgeParity(const std::string& name, scene::Scene scene, const std::vector<ParityCandidate>& candidates,
                        Renderer& reference, int renders, const ParityTolerances& tolerances,
-                       const std::string& sizeField);
+                       const std::string& sizeField, const ReferenceStore& store = {});
 
 // The tolerances with `overrides` ("AOV=ABS,REL", AOV one of depth, normal,
 // beauty) and the coverage a verdict needs; throws std::invalid_argument

@@ -121,6 +121,41 @@ std::string setName(const std::vector<StoredRender>& set) {
   return set.size() == 1 ? first : first + " and " + std::to_string(set.size() - 1) + " more";
 }
 
+// Checks that the two sets estimate one picture and orders both by seed,
+// noting in `out` what the report needs; whether beauty gets the t-test.
+bool pairBySeed(std::vector<StoredRender>& references, std::vector<StoredRender>& candidates, StoredJudgement& out) {
+  const std::size_t k = references.size();
+  checkOnePicture(references);
+  checkOnePicture(candidates);
+  const StoredRender reference = references.front(), candidate = candidates.front();  // before the sets are sorted
+  const bool estimate = reference.made.estimateSeed.has_value();
+  const std::string stem = "not comparable with " + reference.file.string() + ": ";
+  if (const std::string d = differing(candidate.made, reference.made, kRendererAndSeed); !d.empty())
+    throw NotComparable(stem + d);
+  if (candidate.made.pictureDigest != reference.made.pictureDigest)
+    throw NotComparable(
+        stem + "the scene differs (its file, camera, environment map or subdivision): " + kPictureDigestAttribute +
+        " " + candidate.made.pictureDigest + " against " + reference.made.pictureDigest);
+  references = bySeed(std::move(references));
+  candidates = bySeed(std::move(candidates));
+  if (seedList(candidates) != seedList(references))
+    throw NotComparable(stem + "seeds " + seedList(candidates) + " against " + seedList(references) +
+                        ": each candidate is paired with the reference of its seed");
+  if (estimate && k == 1)
+    out.warnings.push_back(candidate.file.string() +
+                           ": one render of a Monte Carlo estimate is judged pixel by pixel, where noise the "
+                           "backends do not share fails it: give renders seeds apart (--seed) for the paired "
+                           "t-test (docs/parity.md)");
+  nlohmann::json seeds = nlohmann::json::array();
+  for (const StoredRender& r : references)
+    if (const auto seed = seedOf(r)) seeds.push_back(*seed);
+  out.judged.settings = {{"pictureDigest", reference.made.pictureDigest},
+                         {"text", reference.made.renderSettings},
+                         {"rendersPerBackend", k},
+                         {"seeds", seeds}};
+  return estimate && k > 1;
+}
+
 }  // namespace
 
 std::map<std::string, std::string> settingsFields(const std::string& text) {
@@ -157,35 +192,7 @@ StoredJudgement judgeStoredRenders(const std::vector<std::filesystem::path>& ref
     if (k > 1) throw std::invalid_argument(why + ": several renders are paired by the seeds their headers record");
     out.warnings.push_back(why + ": whether the two renders are comparable is not checked");
   } else {
-    checkOnePicture(references);
-    checkOnePicture(candidates);
-    const StoredRender &reference = references.front(), &candidate = candidates.front();
-    const bool estimate = reference.made.estimateSeed.has_value();
-    const std::string stem = "not comparable with " + reference.file.string() + ": ";
-    if (const std::string d = differing(candidate.made, reference.made, kRendererAndSeed); !d.empty())
-      throw NotComparable(stem + d);
-    if (candidate.made.pictureDigest != reference.made.pictureDigest)
-      throw NotComparable(
-          stem + "the scene differs (its file, camera, environment map or subdivision): " + kPictureDigestAttribute +
-          " " + candidate.made.pictureDigest + " against " + reference.made.pictureDigest);
-    references = bySeed(std::move(references));
-    candidates = bySeed(std::move(candidates));
-    if (seedList(candidates) != seedList(references))
-      throw NotComparable(stem + "seeds " + seedList(candidates) + " against " + seedList(references) +
-                          ": each candidate is paired with the reference of its seed");
-    statistical = estimate && k > 1;
-    if (estimate && k == 1)
-      out.warnings.push_back(candidate.file.string() +
-                             ": one render of a Monte Carlo estimate is judged pixel by pixel, where noise the "
-                             "backends do not share fails it: give renders seeds apart (--seed) for the paired "
-                             "t-test (docs/parity.md)");
-    nlohmann::json seeds = nlohmann::json::array();
-    for (const StoredRender& r : references)
-      if (const auto seed = seedOf(r)) seeds.push_back(*seed);
-    out.judged.settings = {{"pictureDigest", reference.made.pictureDigest},
-                           {"text", reference.made.renderSettings},
-                           {"rendersPerBackend", k},
-                           {"seeds", seeds}};
+    statistical = pairBySeed(references, candidates, out);
   }
 
   out.judged.scene = setName(candidates);

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "engine/camera/camera.h"
+#include "engine/ibl/prefilter_cache_format.h"
 #include "scenes/light_transport.h"
 
 namespace facet {
@@ -62,10 +63,9 @@ std::string pictureText(const scene::Scene& scene) {
 }
 
 std::string fnv1aHex(const std::string& text) {
-  std::uint64_t hash = 14695981039346656037ull;  // FNV-1a, 64-bit
-  for (const char byte : text) hash = (hash ^ std::uint8_t(byte)) * 1099511628211ull;
   char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+  std::snprintf(hex, sizeof hex, "%016llx",
+                static_cast<unsigned long long>(ibl::cache_format::fnv1a(text.data(), text.size())));
   return hex;
 }
 

@@ -40,7 +40,7 @@ struct FacetCurve {
   std::vector<int> pairs;
 };
 
-struct Sizes {
+struct CyclesSizes {
   int size;
   std::vector<int> cyclesSamples;
   int cyclesTarget;  // the sample count whose error facet is asked to reach
@@ -48,7 +48,7 @@ struct Sizes {
   int referenceCameraSamples, referencePairs;
 };
 
-Sizes sizesFor(bool quick) {
+CyclesSizes cyclesSizesFor(bool quick) {
   using scene::IblMethod;
   if (quick) return {32, {1, 4}, 4, {{IblMethod::Sampled, 1, {1, 4}}, {IblMethod::Filtered, 1, {4}}}, 4, 16};
   return {512,
@@ -131,7 +131,7 @@ RenderReport renderPreview(Renderer& renderer, scene::Scene scene, scene::IblMet
 
 // Cycles' points, from the images and times the script wrote; `converged`
 // gets the image of the largest sample count.
-std::vector<Point> cyclesPoints(const fs::path& directory, const Sizes& sizes, const Image& reference,
+std::vector<Point> cyclesPoints(const fs::path& directory, const CyclesSizes& sizes, const Image& reference,
                                 Image& converged) {
   const std::map<int, double> seconds = peers::readCyclesTimes(directory / "cycles_times.csv", sizes.cyclesSamples);
   std::vector<Point> points;
@@ -146,7 +146,7 @@ std::vector<Point> cyclesPoints(const fs::path& directory, const Sizes& sizes, c
 }
 
 // facet's curves, each point the median time of `repeats` after an untimed run per curve.
-std::vector<std::vector<Point>> facetCurves(Renderer& renderer, const scene::Scene& scene, const Sizes& sizes,
+std::vector<std::vector<Point>> facetCurves(Renderer& renderer, const scene::Scene& scene, const CyclesSizes& sizes,
                                             int repeats, const Image& reference) {
   for (const FacetCurve& c : sizes.curves)
     renderPreview(renderer, scene, c.method, c.cameraSamples, c.pairs.front(), 0);
@@ -167,7 +167,7 @@ void runCycles(Renderer& renderer, const BenchOptions& options, Report& report) 
   report.heading("Cycles: the material preview");
   const std::optional<peers::CyclesPeer> peer = findCyclesPeer(options.root, "cycles", report);
   if (!peer) return;
-  const Sizes sizes = sizesFor(options.quick);
+  const CyclesSizes sizes = cyclesSizesFor(options.quick);
   const fs::path directory = options.output / "cycles";
   fs::create_directories(directory);
   const fs::path map = options.root / "scenes/environments/courtyard_256x128.hdr";

@@ -40,7 +40,10 @@ void runCompare(const CompareOptions& o) {
     stored = analysis::judgeStoredRenders(references, candidates, tolerances);
   } catch (const analysis::NotComparable& e) {
     // No verdict on the candidate, but the reports say why there is none.
-    ParityCase notJudged{o.files[k], o.files.front(), " against ", 0, nlohmann::json::object(), {}};
+    ParityCase notJudged;
+    notJudged.scene = o.files[k];
+    notJudged.reference = o.files.front();
+    notJudged.joiner = " against ";
     notJudged.error = e.what();
     reportParity(o.flags, {notJudged}, "compare");
     throw analysis::NotComparable(o.files[k] + ": " + e.what());

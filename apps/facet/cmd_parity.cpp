@@ -8,11 +8,13 @@
 
 #include <exception>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "analysis/parity.h"
 #include "analysis/parity_run.h"
+#include "analysis/reference_cache.h"
 #include "commands.h"
 #include "engine/renderer.h"
 #include "exit_codes.h"
@@ -21,6 +23,7 @@
 #include "parity_output.h"
 #include "scene_options.h"
 #include "scene_warnings.h"
+#include "scenes/input_file.h"
 #include "scenes/light_transport.h"
 
 namespace facet::cli {
@@ -33,6 +36,7 @@ struct ParityCommandOptions {
   ParityFlags flags;
   std::string adapter;
   int renders = 16;
+  bool freshReference = false;
 };
 
 // The adapters to judge, each checked before any render: one by name (or
@@ -52,18 +56,60 @@ nlohmann::json adapterJson(const gpu::AdapterInfo& info) {
           {"type", gpu::toString(info.type)}};
 }
 
+// What the command line made of the scene beyond its files: every edit and
+// override, so that the reference's key (analysis/reference_cache.h)
+// changes with any of them.
+std::string shapedBy(const SceneEdits& e, const SceneOverrides& o) {
+  std::ostringstream text;
+  const auto list = [&](const char* name, const auto& values) {
+    text << ' ' << name;
+    for (const auto& v : values) text << ' ' << v;
+  };
+  const auto optional = [&](const char* name, const auto& value) {
+    text << ' ' << name << ' ';
+    if (value) text << *value;
+  };
+  text << std::hexfloat;
+  list("material", e.materials);
+  list("set", e.sets);
+  text << " variant " << e.variant << " size " << o.size;
+  list("eye", o.eye);
+  list("target", o.target);
+  list("up", o.up);
+  optional("fov", o.fov);
+  text << " method " << o.method;
+  optional("tessLevel", o.tessLevel);
+  optional("spp", o.spp);
+  optional("bounces", o.bounces);
+  optional("diffuseBounces", o.diffuseBounces);
+  optional("glossyBounces", o.glossyBounces);
+  optional("transmissionBounces", o.transmissionBounces);
+  text << " subdivision " << o.subdivision << " environment " << o.environment;
+  optional("environmentIntensity", o.environmentIntensity);
+  optional("environmentRotation", o.environmentRotation);
+  text << " ibl " << o.ibl;
+  optional("iblSamples", o.iblSamples);
+  text << " occlusion " << o.occlusion;
+  optional("seed", o.seed);
+  text << " energyCompensation " << o.energyCompensation;
+  return text.str();
+}
+
 ParityCase judgeScene(const std::string& file, const ParityCommandOptions& o,
                       const analysis::ParityTolerances& tolerances, const std::vector<gpu::AdapterInfo>& adapters,
                       std::vector<std::unique_ptr<Renderer>>& renderers) {
+  const scene::InputFileLog inputs;  // the scene's files, its materials', cages', maps'
   scene::Scene scene = loadEditedScene(file, o.edits);
   printWarnings(sceneWarnings(scene), false);
   applySceneOverrides(o.sceneOverrides, scene);
   scene::leaveNothingToChoose(scene);
+  const analysis::ReferenceStore store{
+      analysis::referenceKey(scene, inputs.files(), shapedBy(o.edits, o.sceneOverrides), o.renders), o.freshReference};
   std::vector<analysis::ParityCandidate> candidates;
   for (std::size_t a = 0; a < adapters.size(); ++a)
     candidates.push_back({renderers[a].get(), adapters[a].name, adapterJson(adapters[a])});
   return analysis::judgeParity(file, std::move(scene), candidates, *renderers.front(), o.renders, tolerances,
-                               o.sceneOverrides.size.empty() ? file + ": image size" : "--size");
+                               o.sceneOverrides.size.empty() ? file + ": image size" : "--size", store);
 }
 
 void runParity(const ParityCommandOptions& o) {
@@ -113,6 +159,9 @@ void addParityCommand(CLI::App& app) {
                 "(1: one render each, judged by tolerance alone)")
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
+  c->add_flag("--fresh-reference", o->freshReference,
+              "Render the CPU reference even where facet's cache folder holds it for the same scene, files, flags "
+              "and facet build, and keep the new one");
   c->callback([o] { runParity(*o); });
 }
 

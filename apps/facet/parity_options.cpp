@@ -71,8 +71,8 @@ void reportParity(const ParityFlags& flags, const std::vector<ParityCase>& cases
                     c.settings["text"].get<std::string>().c_str(), c.settings["rendersPerBackend"].get<int>(),
                     c.settings.value("digest", c.settings.value("pictureDigest", "")).c_str());
       for (const ParityRun& run : c.runs)
-        std::printf("%s (reference: %s)\n%s", runName(c, run).c_str(), c.reference.c_str(),
-                    analysis::describe(run.report).c_str());
+        std::printf("%s (reference: %s%s)\n%s", runName(c, run).c_str(), c.reference.c_str(),
+                    c.referenceCached ? ", from the cache" : "", analysis::describe(run.report).c_str());
     }
     for (const OutputFile& output : outputs) std::printf("wrote %s\n", output.path.c_str());
   }

@@ -21,7 +21,10 @@ namespace facet::ibl::cache_format {
 // engine/ibl/CMakeLists.txt takes at configure time.
 constexpr std::uint32_t kFormatVersion = 3;
 
-std::uint64_t fnv1a(const char* bytes, std::size_t size);
+// FNV-1a, 64-bit; a running hash continues from `hash`, so that a file
+// read in pieces hashes as it would whole.
+inline constexpr std::uint64_t kFnv1aOffsetBasis = 14695981039346656037ull;
+std::uint64_t fnv1a(const char* bytes, std::size_t size, std::uint64_t hash = kFnv1aOffsetBasis);
 
 // A file holding `payload` under `key`.
 std::vector<char> seal(const std::string& key, const std::vector<char>& payload);

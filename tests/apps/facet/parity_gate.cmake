@@ -98,6 +98,11 @@ set_tests_properties(cli.compare_equal cli.compare_biased cli.compare_sizes_diff
 add_test(NAME cli.compare_golden_sets COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/check_golden_sets.sh ${facet}
                                               ${CMAKE_SOURCE_DIR} ${work}/golden_sets)
 set_tests_properties(cli.compare_golden_sets PROPERTIES LABELS "cli;gpu")
+# The CPU reference kept in the cache folder between runs of one command,
+# rendered anew for any change.
+add_test(NAME cli.parity_reference_cache COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/check_reference_cache.sh ${facet}
+                                                 ${CMAKE_SOURCE_DIR} ${work}/reference_cache)
+set_tests_properties(cli.parity_reference_cache PROPERTIES LABELS "cli;gpu")
 
 # Every adapter present, each against one CPU reference.
 add_test(NAME cli.parity_all_adapters

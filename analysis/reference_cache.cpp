@@ -1,0 +1,174 @@
+#include "analysis/reference_cache.h"
+
+#include <facet/version.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+#include <type_traits>
+
+#include "engine/ibl/cache_bytes.h"
+#include "engine/ibl/cache_folder.h"
+#include "engine/ibl/prefilter_cache_format.h"
+#include "engine/render_record.h"
+#include "scenes/light_transport.h"
+
+namespace facet::analysis {
+namespace {
+
+namespace fs = std::filesystem;
+using ibl::cache_format::fnv1a;
+using ibl::cache_format::Reader;
+using ibl::cache_format::Writer;
+
+constexpr const char* kFilePrefix = "parity-reference-";
+
+// A file's bytes hashed as they are read; none where it cannot be read.
+std::optional<std::uint64_t> contentHash(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::uint64_t hash = ibl::cache_format::kFnv1aOffsetBasis;
+  std::vector<char> chunk(std::size_t(1) << 20);
+  while (in) {
+    in.read(chunk.data(), std::streamsize(chunk.size()));
+    hash = fnv1a(chunk.data(), std::size_t(in.gcount()), hash);
+  }
+  if (in.bad()) return std::nullopt;
+  return hash;
+}
+
+// The running program's bytes: whatever was rebuilt renders anew.
+std::optional<std::uint64_t> programHash() {
+  static const std::optional<std::uint64_t> hash = contentHash("/proc/self/exe");
+  return hash;
+}
+
+// Every plane of `image`, in one order for writing and reading.
+template <class AnImage, class Visit>
+void visitPlanes(AnImage& image, Visit visit) {
+  visit(image.beauty);
+  visit(image.depth);
+  visit(image.position);
+  visit(image.geometricNormal);
+  visit(image.shadingNormal);
+  visit(image.patchId);
+  visit(image.faceId);
+  visit(image.uv);
+  visit(image.texcoord);
+}
+
+std::vector<char> payload(const CachedReference& reference) {
+  Writer w;
+  w.put(std::uint64_t(reference.device.size()));
+  w.putArray(std::vector<char>(reference.device.begin(), reference.device.end()));
+  w.put(std::int32_t(reference.first.width));
+  w.put(std::int32_t(reference.first.height));
+  w.put(std::int32_t(reference.renders()));
+  visitPlanes(reference.first, [&](const auto& plane) { w.putArray(plane); });
+  for (const std::vector<glm::vec4>& beauty : reference.laterBeauty) w.putArray(beauty);
+  return w.data();
+}
+
+fs::path fileOf(const fs::path& directory, const std::string& key) {
+  char name[64];
+  std::snprintf(name, sizeof name, "%s%016llx.bin", kFilePrefix,
+                static_cast<unsigned long long>(fnv1a(key.data(), key.size())));
+  return directory / name;
+}
+
+// The oldest reference files removed until the rest fit `budget`.
+void prune(const fs::path& directory, std::uintmax_t budget) {
+  std::vector<std::pair<fs::file_time_type, fs::path>> files;
+  std::uintmax_t total = 0;
+  std::error_code error;
+  for (const fs::directory_entry& entry : fs::directory_iterator(directory, error)) {
+    if (!entry.is_regular_file(error) || entry.path().filename().string().rfind(kFilePrefix, 0) != 0) continue;
+    total += entry.file_size(error);
+    files.emplace_back(entry.last_write_time(error), entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  for (const auto& [time, file] : files) {
+    if (total <= budget) break;
+    total -= std::min(total, fs::file_size(file, error));
+    fs::remove(file, error);
+  }
+}
+
+}  // namespace
+
+Image CachedReference::render(int i) const {
+  if (i == 0) return first;
+  Image beautyOnly;
+  beautyOnly.width = first.width;
+  beautyOnly.height = first.height;
+  beautyOnly.beauty = laterBeauty[std::size_t(i - 1)];
+  return beautyOnly;
+}
+
+void CachedReference::add(const Image& render) {
+  if (first.width == 0)
+    first = render;
+  else
+    laterBeauty.push_back(render.beauty);
+}
+
+std::string referenceKey(const scene::Scene& scene, const std::vector<fs::path>& inputs, const std::string& shapedBy,
+                         int renders) {
+  const std::optional<std::uint64_t> program = programHash();
+  if (!program) return {};
+  std::ostringstream key;
+  key << "facet parity reference v1 " FACET_VERSION_STRING " program " << std::hex << *program << std::dec << '\n';
+  for (const fs::path& input : inputs) {
+    const std::optional<std::uint64_t> hash = contentHash(input);
+    if (!hash) return {};
+    key << "input " << fs::absolute(input).string() << ' ' << std::hex << *hash << std::dec << '\n';
+  }
+  key << "shaped by " << shapedBy << '\n'
+      << "settings " << renderSettingsText(scene, "parity") << " digest " << settingsDigest(scene, "parity") << '\n'
+      << "renders " << renders << " first seed " << scene::estimateSeed(scene).value_or(0) << '\n';
+  return key.str();
+}
+
+std::optional<CachedReference> loadReference(const std::string& key, int width, int height, int renders) {
+  const std::optional<fs::path> directory = ibl::cacheDirectory();
+  if (!directory || key.empty()) return std::nullopt;
+  try {
+    const auto file = ibl::readCacheFile(fileOf(*directory, key));
+    if (!file) return std::nullopt;
+    const auto bytes = ibl::cache_format::unseal(*file, key);
+    if (!bytes) return std::nullopt;
+    Reader r(*bytes);
+    CachedReference reference;
+    const std::vector<char> device = r.getArray<char>(r.get<std::uint64_t>());
+    reference.device.assign(device.begin(), device.end());
+    reference.first.width = r.get<std::int32_t>();
+    reference.first.height = r.get<std::int32_t>();
+    if (!r.ok() || reference.first.width != width || reference.first.height != height ||
+        r.get<std::int32_t>() != renders)
+      return std::nullopt;
+    const std::size_t pixels = reference.first.pixelCount();
+    visitPlanes(reference.first,
+                [&](auto& plane) { plane = r.getArray<typename std::decay_t<decltype(plane)>::value_type>(pixels); });
+    for (int i = 1; i < renders; ++i) reference.laterBeauty.push_back(r.getArray<glm::vec4>(pixels));
+    if (!r.ok() || !r.atEnd()) return std::nullopt;
+    return reference;
+  } catch (const std::exception&) {  // a file too large to hold: a miss like any other bad file
+    return std::nullopt;
+  }
+}
+
+void storeReference(const std::string& key, const CachedReference& reference, std::uintmax_t budget) {
+  const std::optional<fs::path> directory = ibl::cacheDirectory();
+  if (!directory || key.empty()) return;
+  try {
+    const std::vector<char> sealed = ibl::cache_format::seal(key, payload(reference));
+    if (sealed.size() > budget) return;
+    ibl::writeCacheFileAtomically(fileOf(*directory, key), sealed);
+    prune(*directory, budget);
+  } catch (const std::exception&) {  // out of memory for the copy, a folder that vanished: nothing stored
+  }
+}
+
+}  // namespace facet::analysis
