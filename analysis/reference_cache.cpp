@@ -59,18 +59,6 @@ void visitPlanes(AnImage& image, Visit visit) {
   visit(image.texcoord);
 }
 
-std::vector<char> payload(const CachedReference& reference) {
-  Writer w;
-  w.put(std::uint64_t(reference.device.size()));
-  w.putArray(std::vector<char>(reference.device.begin(), reference.device.end()));
-  w.put(std::int32_t(reference.first.width));
-  w.put(std::int32_t(reference.first.height));
-  w.put(std::int32_t(reference.renders()));
-  visitPlanes(reference.first, [&](const auto& plane) { w.putArray(plane); });
-  for (const std::vector<glm::vec4>& beauty : reference.laterBeauty) w.putArray(beauty);
-  return w.data();
-}
-
 fs::path fileOf(const fs::path& directory, const std::string& key) {
   char name[64];
   std::snprintf(name, sizeof name, "%s%016llx.bin", kFilePrefix,
@@ -114,6 +102,36 @@ void CachedReference::add(const Image& render) {
     laterBeauty.push_back(render.beauty);
 }
 
+std::vector<char> referencePayload(const CachedReference& reference) {
+  Writer w;
+  w.put(std::uint64_t(reference.device.size()));
+  w.putArray(std::vector<char>(reference.device.begin(), reference.device.end()));
+  w.put(std::int32_t(reference.first.width));
+  w.put(std::int32_t(reference.first.height));
+  w.put(std::int32_t(reference.renders()));
+  visitPlanes(reference.first, [&](const auto& plane) { w.putArray(plane); });
+  for (const std::vector<glm::vec4>& beauty : reference.laterBeauty) w.putArray(beauty);
+  return w.data();
+}
+
+std::optional<CachedReference> referenceFromPayload(const std::vector<char>& payload, int width, int height,
+                                                    int renders) {
+  Reader r(payload);
+  CachedReference reference;
+  const std::vector<char> device = r.getArray<char>(r.get<std::uint64_t>());
+  reference.device.assign(device.begin(), device.end());
+  reference.first.width = r.get<std::int32_t>();
+  reference.first.height = r.get<std::int32_t>();
+  if (!r.ok() || reference.first.width != width || reference.first.height != height || r.get<std::int32_t>() != renders)
+    return std::nullopt;
+  const std::size_t pixels = reference.first.pixelCount();
+  visitPlanes(reference.first,
+              [&](auto& plane) { plane = r.getArray<typename std::decay_t<decltype(plane)>::value_type>(pixels); });
+  for (int i = 1; i < renders; ++i) reference.laterBeauty.push_back(r.getArray<glm::vec4>(pixels));
+  if (!r.ok() || !r.atEnd()) return std::nullopt;
+  return reference;
+}
+
 std::string referenceKey(const scene::Scene& scene, const std::vector<fs::path>& inputs, const std::string& shapedBy,
                          int renders) {
   const std::optional<std::uint64_t> program = programHash();
@@ -139,21 +157,7 @@ std::optional<CachedReference> loadReference(const std::string& key, int width, 
     if (!file) return std::nullopt;
     const auto bytes = ibl::cache_format::unseal(*file, key);
     if (!bytes) return std::nullopt;
-    Reader r(*bytes);
-    CachedReference reference;
-    const std::vector<char> device = r.getArray<char>(r.get<std::uint64_t>());
-    reference.device.assign(device.begin(), device.end());
-    reference.first.width = r.get<std::int32_t>();
-    reference.first.height = r.get<std::int32_t>();
-    if (!r.ok() || reference.first.width != width || reference.first.height != height ||
-        r.get<std::int32_t>() != renders)
-      return std::nullopt;
-    const std::size_t pixels = reference.first.pixelCount();
-    visitPlanes(reference.first,
-                [&](auto& plane) { plane = r.getArray<typename std::decay_t<decltype(plane)>::value_type>(pixels); });
-    for (int i = 1; i < renders; ++i) reference.laterBeauty.push_back(r.getArray<glm::vec4>(pixels));
-    if (!r.ok() || !r.atEnd()) return std::nullopt;
-    return reference;
+    return referenceFromPayload(*bytes, width, height, renders);
   } catch (const std::exception&) {  // a file too large to hold: a miss like any other bad file
     return std::nullopt;
   }
@@ -163,7 +167,7 @@ void storeReference(const std::string& key, const CachedReference& reference, st
   const std::optional<fs::path> directory = ibl::cacheDirectory();
   if (!directory || key.empty()) return;
   try {
-    const std::vector<char> sealed = ibl::cache_format::seal(key, payload(reference));
+    const std::vector<char> sealed = ibl::cache_format::seal(key, referencePayload(reference));
     if (sealed.size() > budget) return;
     ibl::writeCacheFileAtomically(fileOf(*directory, key), sealed);
     prune(*directory, budget);

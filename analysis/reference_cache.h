@@ -42,6 +42,12 @@ struct CachedReference {
 std::string referenceKey(const scene::Scene& scene, const std::vector<std::filesystem::path>& inputs,
                          const std::string& shapedBy, int renders);
 
+// A cache file's payload, and the renders it holds when it holds `renders`
+// of them at `width` x `height` to its last byte.
+std::vector<char> referencePayload(const CachedReference& reference);
+std::optional<CachedReference> referenceFromPayload(const std::vector<char>& payload, int width, int height,
+                                                    int renders);
+
 // The renders stored under `key` when a file holds them intact, `renders`
 // of them at the scene's size.
 std::optional<CachedReference> loadReference(const std::string& key, int width, int height, int renders);
