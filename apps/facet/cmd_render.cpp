@@ -100,8 +100,19 @@ void chooseOutputs(RenderCommandOptions& o, bool outputGiven) {
                                 "': a --tile render writes an EXR only; facet merge --png writes the preview");
 }
 
-// A single frame may keep a name without '#'; a range needs it.
+// A single frame or seed may keep a name without '#'; a range needs it.
 std::vector<RenderJob> renderJobs(const RenderCommandOptions& o) {
+  if (const std::vector<std::uint32_t> seeds = chosenSeeds(o.farm); !seeds.empty()) {
+    if (o.scene_overrides.seed) throw std::invalid_argument("--seed, --seeds: give one of them");
+    auto name = [&](const char* flag, const std::string& pattern, std::uint32_t seed) {
+      const bool numbered = seeds.size() > 1 || pattern.find('#') != std::string::npos;
+      return pattern.empty() || !numbered ? pattern : framePath(flag, pattern, int(seed), "seed");
+    };
+    std::vector<RenderJob> jobs;
+    for (std::uint32_t seed : seeds)
+      jobs.push_back({std::nullopt, name("-o", o.exr, seed), name(o.pngFlag.c_str(), o.png, seed), seed});
+    return jobs;
+  }
   const std::vector<int> frames = chosenFrames(o.farm);
   if (frames.empty()) return {{std::nullopt, o.exr, o.png}};
   auto name = [&](const char* flag, const std::string& pattern, int frame) {
@@ -244,7 +255,10 @@ void runRender(const RenderCommandOptions& o) {
   const int width = scene.render.width, height = scene.render.height;
   const std::optional<PixelRect> crop = chosenCrop(o.farm, width, height);
   checkImagesFitInMemory(scene, 1, o.scene_overrides.size.empty() ? o.scene + ": image size" : "--size", crop);
-  const std::vector<std::string> warnings = sceneWarnings(scene);
+  std::vector<std::string> warnings = sceneWarnings(scene);
+  if (!o.farm.seeds.empty() && !scene.environment)
+    warnings.push_back("--seeds " + o.farm.seeds +
+                       ": changes nothing here: without an environment the scene's random numbers are fixed");
   printWarnings(warnings, o.farm.quiet || o.farm.json);
   const Backend backend = o.backend == "cpu" ? Backend::Cpu : Backend::Gpu;
   const unsigned threads = chosenThreads(o.farm);
@@ -265,8 +279,11 @@ void runRender(const RenderCommandOptions& o) {
                             {"renders", nlohmann::json::array()}};
   for (const RenderJob& job : jobs) {
     if (job.frame) scene = frameScene(*still, o.farm, *job.frame);
+    if (job.seed && scene.environment) scene.environment->seed = *job.seed;
     const auto start = std::chrono::steady_clock::now();
-    ProgressLog progress(job.frame ? "frame " + std::to_string(*job.frame) : std::string("rendering"),
+    ProgressLog progress(job.frame  ? "frame " + std::to_string(*job.frame)
+                         : job.seed ? "seed " + std::to_string(*job.seed)
+                                    : std::string("rendering"),
                          o.farm.quiet || o.farm.json);
     AdaptiveReport rounds;
     const RenderReport report = renderPicture(renderer, scene, backend, std::ref(progress), {crop, threads},

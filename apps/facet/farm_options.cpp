@@ -23,12 +23,20 @@ void addFarmOptions(CLI::App& command, FarmOptions& o) {
       },
       "Render frames A to B (every STEP): A-B or A-B:STEP; '#' in -o and "
       "--png stands for the frame number, zero-padded");
-  command.add_option("--frame", o.frame, "Render frame N alone")->excludes(frames)->check(CLI::NonNegativeNumber);
+  auto* frame =
+      command.add_option("--frame", o.frame, "Render frame N alone")->excludes(frames)->check(CLI::NonNegativeNumber);
+  auto* turntable = command
+                        .add_option("--turntable", o.turntable,
+                                    "Turn the model (see --turn) about the vertical through the camera's target: "
+                                    "frame f of N at 2 pi f / N")
+                        ->check(CLI::Range(1, 1000000));
   command
-      .add_option("--turntable", o.turntable,
-                  "Turn the model (see --turn) about the vertical through the camera's target: frame f of N at "
-                  "2 pi f / N")
-      ->check(CLI::Range(1, 1000000));
+      .add_option("--seeds", o.seeds,
+                  "Render the still once per seed A to B (A-B), in one process: a golden set for facet compare; '#' "
+                  "in -o and --png stands for the seed, zero-padded")
+      ->excludes(frames)
+      ->excludes(frame)
+      ->excludes(turntable);
   addTurnOption(command, o.turn)->needs(command.get_option("--turntable"));
   command
       .add_option("--threads", o.threads,
@@ -105,6 +113,19 @@ std::vector<int> chosenFrames(const FarmOptions& o) {
   return frames;
 }
 
+std::vector<std::uint32_t> chosenSeeds(const FarmOptions& o) {
+  if (o.seeds.empty()) return {};
+  const std::optional<std::vector<int>> v = wholeNumbers(o.seeds, "-");
+  if (!v || v->size() != 2 || (*v)[0] < 0 || (*v)[1] < (*v)[0])
+    throw std::invalid_argument("--seeds '" + o.seeds + "': expected A-B with 0 <= A <= B");
+  if ((long long)(*v)[1] - (*v)[0] + 1 > kMostSeeds)
+    throw std::invalid_argument("--seeds '" + o.seeds + "': more than " + std::to_string(kMostSeeds) +
+                                " seeds in one command");
+  std::vector<std::uint32_t> seeds;
+  for (long long s = (*v)[0]; s <= (*v)[1]; ++s) seeds.push_back(std::uint32_t(s));
+  return seeds;
+}
+
 scene::Camera frameCamera(const scene::Camera& still, const std::vector<scene::CameraKey>& keys, int frame) {
   scene::Camera camera = keys.empty() ? still : camera::keyedCamera(keys, frame);
   // Each key is a valid camera, but the line between two may pass through
@@ -134,12 +155,11 @@ scene::TurntableTurn chosenTurn(const std::string& turn) {
   return turn == "environment" ? scene::TurntableTurn::Environment : scene::TurntableTurn::Model;
 }
 
-std::string framePath(const std::string& flag, const std::string& pattern, int frame) {
+std::string framePath(const std::string& flag, const std::string& pattern, int frame, const std::string& what) {
   const std::size_t first = pattern.find('#');
   if (first == std::string::npos)
-    throw std::invalid_argument(flag + " '" + pattern +
-                                "': a frame range needs '#' in the name for the frame number, " +
-                                "e.g. frame_####.exr");
+    throw std::invalid_argument(flag + " '" + pattern + "': a " + what + " range needs '#' in the name for the " +
+                                what + " number, e.g. " + what + "_####.exr");
   const std::size_t last = pattern.find_first_not_of('#', first);
   const std::size_t digits = (last == std::string::npos ? pattern.size() : last) - first;
   std::string number = std::to_string(frame);

@@ -1,10 +1,12 @@
 // Flags that make `facet render` one task of many: which part of the image
-// (--crop, --tile), which frames (--frames, --frame, --turntable), how many
-// threads, and how it reports in a farm's logs (--quiet, --json).
+// (--crop, --tile), which frames (--frames, --frame, --turntable) or seeds
+// (--seeds), how many threads, and how it reports in a farm's logs
+// (--quiet, --json).
 #pragma once
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,6 +24,7 @@ struct FarmOptions {
   bool framesGiven = false;
   std::optional<int> frame;
   std::optional<int> turntable;  // frames in a full turn
+  std::string seeds;             // A-B: a render per seed
   std::string turn = "model";    // what it turns: model or environment
   std::optional<unsigned> threads;
   bool quiet = false;
@@ -41,6 +44,12 @@ constexpr long long kMostFrames = 1000000;
 // The frames to render, in order; empty for a still (no frame flag).
 std::vector<int> chosenFrames(const FarmOptions& options);
 
+// A command renders at most this many seeds, as parity renders at most this many pairs.
+constexpr long long kMostSeeds = 1024;
+
+// The seeds to render, in order; empty without --seeds.
+std::vector<std::uint32_t> chosenSeeds(const FarmOptions& options);
+
 // The camera of `frame`: the keys interpolated, or the still camera where
 // there are none.
 scene::Camera frameCamera(const scene::Camera& still, const std::vector<scene::CameraKey>& keys, int frame);
@@ -53,9 +62,11 @@ scene::Scene frameScene(const scene::Scene& still, const FarmOptions& options, i
 CLI::Option* addTurnOption(CLI::App& command, std::string& turn);
 scene::TurntableTurn chosenTurn(const std::string& turn);
 
-// `pattern` with its run of '#' replaced by the frame, zero-padded to the
-// run's length (Blender's convention); `flag` names it in errors.
-std::string framePath(const std::string& flag, const std::string& pattern, int frame);
+// `pattern` with its run of '#' replaced by the frame (or the seed, `what`),
+// zero-padded to the run's length (Blender's convention); `flag` names it in
+// errors.
+std::string framePath(const std::string& flag, const std::string& pattern, int frame,
+                      const std::string& what = "frame");
 
 // --threads, else the slot's SLURM_CPUS_PER_TASK, else 0 (every core).
 unsigned chosenThreads(const FarmOptions& options);

@@ -151,6 +151,7 @@ nlohmann::json stagesJson(const RenderReport& report) {
 nlohmann::json renderJson(const RenderReport& report, const AdaptiveReport* adaptive, const RenderJob& job,
                           double wallMilliseconds) {
   nlohmann::json render = {{"frame", job.frame ? nlohmann::json(*job.frame) : nlohmann::json()},
+                           {"seed", job.seed ? nlohmann::json(*job.seed) : nlohmann::json()},
                            {"crop", {report.window.x0, report.window.y0, report.window.x1, report.window.y1}},
                            {"stages_ms", stagesJson(report)},
                            {"wall_ms", wallMilliseconds},

@@ -19,6 +19,7 @@ struct RenderJob {
   std::optional<int> frame;
   std::string exr;  // empty: none
   std::string png;  // empty: none
+  std::optional<std::uint32_t> seed;  // --seeds: the render's random numbers
 };
 
 // "default studio environment" for a scene that got it

@@ -1,8 +1,8 @@
 #!/bin/bash
 # facet compare on golden sets (docs/parity.md, "facet compare"): K renders
 # of a Monte Carlo estimate seeds apart on the CPU reference, K on the GPU
-# with the same seeds, paired by seed (in any order on the command line) and
-# judged by the paired t-test; a dropped tile fails; a set made with other
+# with the same seeds (render --seed, --seeds), paired by seed (in any order
+# on the command line) and judged by the paired t-test; a dropped tile fails; a set made with other
 # settings, another scene or other seeds is not comparable (exit 6, named);
 # sets that cannot be paired are bad input (exit 1).
 #   check_golden_sets.sh FACET REPOSITORY WORK_FOLDER
@@ -13,14 +13,12 @@ fail() { echo "check_golden_sets: FAILED: $*" >&2; exit 1; }
 scene=$repo/scenes/examples/gold_cube.gltf
 lit=(--size 16x12 --env "$repo/scenes/environments/courtyard_256x128.hdr" --ibl sampled --ibl-samples 1)
 
-# render FOLDER SEEDS SPP [FLAGS...]: one EXR a seed, named by the seed.
+# render FOLDER A-B SPP [FLAGS...]: one EXR a seed, named by the seed, in one process (--seeds).
 render() {
   local folder=$1 seeds=$2 spp=$3
   shift 3
   mkdir -p "$folder"
-  for seed in $seeds; do
-    "$facet" render "$scene" "${lit[@]}" --spp "$spp" --seed "$seed" -o "$folder/$seed.exr" --quiet "$@"
-  done
+  "$facet" render "$scene" "${lit[@]}" --spp "$spp" --seeds "$seeds" -o "$folder/#.exr" --quiet "$@"
 }
 # expect CODE PATTERN ARGS...: facet compare ARGS exits CODE, its output matching PATTERN.
 expect() {
@@ -34,13 +32,17 @@ expect() {
   grep -Eq -- "$pattern" out.txt || fail "compare $*: no '$pattern' in: $(cat out.txt)"
 }
 
-render golden "0 1 2 3" 1 --backend cpu
-render gpu "0 1 2 3" 1
+# The golden set a process a seed (--seed), the others a process a set (--seeds): the same renders.
+mkdir -p golden
+for seed in 0 1 2 3; do
+  "$facet" render "$scene" "${lit[@]}" --spp 1 --seed "$seed" -o "golden/$seed.exr" --quiet --backend cpu
+done
+render gpu 0-3 1
 # Refusals read headers alone: these sets need no GPU.
-render other_spp "0 1 2 3" 4 --backend cpu
-render other_seeds "1 2 3 4" 1 --backend cpu
-render rotated "0 1 2 3" 1 --env-rotation 90 --backend cpu
-FACET_FAULT=dropped-tile render dropped "0 1 2 3" 1
+render other_spp 0-3 4 --backend cpu
+render other_seeds 1-4 1 --backend cpu
+render rotated 0-3 1 --env-rotation 90 --backend cpu
+FACET_FAULT=dropped-tile render dropped 0-3 1
 
 expect 0 "ok: paired t-test over 4 renders" golden/{0,1,2,3}.exr gpu/{0,1,2,3}.exr
 # Paired by seed, not by place: the candidates reversed pair as before.
@@ -68,4 +70,11 @@ grep -q "iblSeed=3" <(/usr/bin/python3 -c "import OpenImageIO as o; print(o.Imag
 "$facet" render "$scene" --size 16x12 --seed 5 -o unlit.exr --backend cpu 2>err.txt
 grep -q "^facet: warning: --seed 5: changes nothing here: without an environment the scene's random numbers are fixed" err.txt ||
   fail "--seed without an environment: $(cat err.txt)"
+# --seeds renders what --seed renders, seed by seed.
+render cpu_set 0-3 1 --backend cpu
+for seed in 0 1 2 3; do
+  cmp -s <(/usr/bin/python3 -c "import OpenImageIO as o, sys; print(o.ImageBuf(sys.argv[1]).get_pixels().tobytes().hex())" "golden/$seed.exr") \
+    <(/usr/bin/python3 -c "import OpenImageIO as o, sys; print(o.ImageBuf(sys.argv[1]).get_pixels().tobytes().hex())" "cpu_set/$seed.exr") ||
+    fail "--seeds 0-3 rendered seed $seed otherwise than --seed $seed"
+done
 echo "check_golden_sets: paired by seed, a fault caught, every other picture refused"
