@@ -86,10 +86,21 @@ ParityCase judgeParity(const std::string& name, scene::Scene scene, const std::v
   const bool statistical = scene::estimateSeed(scene) && renders > 1;
   const int count = statistical ? renders : 1;
   // The reference's render; per candidate its render, the first pair, the
-  // pairs' sums (about an image and a half) and the two mean images; and
-  // what the store keeps (a render, and a beauty a fifth of one per later render).
-  const bool storing = !store.key.empty();
-  checkImagesFitInMemory(scene, 1 + 6 * int(candidates.size()) + (storing ? 1 + (count + 3) / 5 : 0), sizeField);
+  // pairs' sums (about an image and a half) and the two mean images.
+  const int working = 1 + 6 * int(candidates.size());
+  // What the store keeps besides: a render, and each later render's beauty,
+  // a fifth of one. The cache never refuses a scene: where that does not
+  // fit, nothing is stored.
+  const std::string key = store.key.empty() ? "" : store.key + "renders " + std::to_string(count) + '\n';
+  bool storing = !key.empty() && referenceBytes(scene.render.width, scene.render.height, count) <= kReferenceCacheBytes;
+  if (storing) {
+    try {
+      checkImagesFitInMemory(scene, working + 1 + (count + 3) / 5, sizeField);
+    } catch (const std::invalid_argument&) {
+      storing = false;
+    }
+  }
+  checkImagesFitInMemory(scene, working, sizeField);
   const std::uint32_t firstSeed = scene.environment ? scene.environment->seed : 0u;
 
   ParityCase out;
@@ -100,7 +111,7 @@ ParityCase judgeParity(const std::string& name, scene::Scene scene, const std::v
                   {"seeds", statistical ? nlohmann::json::array({firstSeed, firstSeed + std::uint32_t(count - 1)})
                                         : nlohmann::json::array({firstSeed})}};
   const std::optional<CachedReference> stored =
-      storing && !store.fresh ? loadReference(store.key, scene.render.width, scene.render.height, count) : std::nullopt;
+      storing && !store.fresh ? loadReference(key, scene.render.width, scene.render.height, count) : std::nullopt;
   CachedReference made;
   if (stored) {
     out.reference = stored->device;
@@ -133,7 +144,7 @@ ParityCase judgeParity(const std::string& name, scene::Scene scene, const std::v
     }
     for (std::size_t a = 0; a < candidates.size(); ++a) pairs[a].add(cpuImage, gpuImages[a]);
   }
-  if (storing && !stored) storeReference(store.key, made);
+  if (storing && !stored) storeReference(key, made);
   for (std::size_t a = 0; a < candidates.size(); ++a)
     out.runs[a].report = compareImages(pairs[a].referenceMean(), pairs[a].candidateMean(), tolerances,
                                        statistical ? &pairs[a] : nullptr);

@@ -47,8 +47,8 @@ struct ParityCandidate {
 };
 
 // Where the CPU reference's renders are kept between runs
-// (reference_cache.h): nowhere without a key; `fresh` renders them anew
-// and replaces what is stored.
+// (reference_cache.h): nowhere without a key (referenceKey's); `fresh`
+// renders them anew and replaces what is stored.
 struct ReferenceStore {
   std::string key;
   bool fresh = false;

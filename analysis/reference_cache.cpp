@@ -2,8 +2,11 @@
 
 #include <facet/version.h>
 
+#include <dlfcn.h>
+#include <link.h>
+#include <sys/stat.h>
+
 #include <algorithm>
-#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <system_error>
@@ -23,7 +26,7 @@ using ibl::cache_format::fnv1a;
 using ibl::cache_format::Reader;
 using ibl::cache_format::Writer;
 
-constexpr const char* kFilePrefix = "parity-reference-";
+constexpr const char* kFilePrefix = "parity-reference";
 
 // A file's bytes hashed as they are read; none where it cannot be read.
 std::optional<std::uint64_t> contentHash(const fs::path& file) {
@@ -39,10 +42,33 @@ std::optional<std::uint64_t> contentHash(const fs::path& file) {
   return hash;
 }
 
-// The running program's bytes: whatever was rebuilt renders anew.
-std::optional<std::uint64_t> programHash() {
-  static const std::optional<std::uint64_t> hash = contentHash("/proc/self/exe");
-  return hash;
+// The shared libraries mapped when the program started, each as a line
+// "path size modified": a system upgrade renders anew. Taken before main,
+// so before any Vulkan driver is loaded: a new driver keeps the key.
+std::string librariesAtStart() {
+  std::string lines;
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, std::size_t, void* out) {
+        struct stat file {};
+        if (info->dlpi_name && *info->dlpi_name && stat(info->dlpi_name, &file) == 0)
+          *static_cast<std::string*>(out) += std::string("library ") + info->dlpi_name + ' ' +
+                                             std::to_string(file.st_size) + ' ' + std::to_string(file.st_mtim.tv_sec) +
+                                             '.' + std::to_string(file.st_mtim.tv_nsec) + '\n';
+        return 0;
+      },
+      &lines);
+  return lines;
+}
+const std::string kLibrariesAtStart = librariesAtStart();
+
+// The running program's bytes and libraries: whatever was rebuilt or
+// upgraded renders anew; none where the program cannot be read.
+std::optional<std::string> programIdentity() {
+  static const std::optional<std::uint64_t> bytes = contentHash("/proc/self/exe");
+  if (!bytes) return std::nullopt;
+  std::ostringstream text;
+  text << "program " << std::hex << *bytes << '\n' << kLibrariesAtStart;
+  return text.str();
 }
 
 // Every plane of `image`, in one order for writing and reading.
@@ -59,20 +85,17 @@ void visitPlanes(AnImage& image, Visit visit) {
   visit(image.texcoord);
 }
 
-fs::path fileOf(const fs::path& directory, const std::string& key) {
-  char name[64];
-  std::snprintf(name, sizeof name, "%s%016llx.bin", kFilePrefix,
-                static_cast<unsigned long long>(fnv1a(key.data(), key.size())));
-  return directory / name;
-}
-
-// The oldest reference files removed until the rest fit `budget`.
+// The reference files least recently used removed until the rest fit `budget`.
 void prune(const fs::path& directory, std::uintmax_t budget) {
   std::vector<std::pair<fs::file_time_type, fs::path>> files;
   std::uintmax_t total = 0;
   std::error_code error;
   for (const fs::directory_entry& entry : fs::directory_iterator(directory, error)) {
-    if (!entry.is_regular_file(error) || entry.path().filename().string().rfind(kFilePrefix, 0) != 0) continue;
+    // Another writer's temporary file is not one of them (cache_folder.h).
+    const std::string name = entry.path().filename().string();
+    if (!entry.is_regular_file(error) || name.rfind(std::string(kFilePrefix) + "-", 0) != 0 ||
+        entry.path().extension() != ".bin")
+      continue;
     total += entry.file_size(error);
     files.emplace_back(entry.last_write_time(error), entry.path());
   }
@@ -104,8 +127,7 @@ void CachedReference::add(const Image& render) {
 
 std::vector<char> referencePayload(const CachedReference& reference) {
   Writer w;
-  w.put(std::uint64_t(reference.device.size()));
-  w.putArray(std::vector<char>(reference.device.begin(), reference.device.end()));
+  w.putText(reference.device);
   w.put(std::int32_t(reference.first.width));
   w.put(std::int32_t(reference.first.height));
   w.put(std::int32_t(reference.renders()));
@@ -118,8 +140,7 @@ std::optional<CachedReference> referenceFromPayload(const std::vector<char>& pay
                                                     int renders) {
   Reader r(payload);
   CachedReference reference;
-  const std::vector<char> device = r.getArray<char>(r.get<std::uint64_t>());
-  reference.device.assign(device.begin(), device.end());
+  reference.device = r.getText();
   reference.first.width = r.get<std::int32_t>();
   reference.first.height = r.get<std::int32_t>();
   if (!r.ok() || reference.first.width != width || reference.first.height != height || r.get<std::int32_t>() != renders)
@@ -132,12 +153,11 @@ std::optional<CachedReference> referenceFromPayload(const std::vector<char>& pay
   return reference;
 }
 
-std::string referenceKey(const scene::Scene& scene, const std::vector<fs::path>& inputs, const std::string& shapedBy,
-                         int renders) {
-  const std::optional<std::uint64_t> program = programHash();
+std::string referenceKey(const scene::Scene& scene, const std::vector<fs::path>& inputs, const std::string& shapedBy) {
+  const std::optional<std::string> program = programIdentity();
   if (!program) return {};
   std::ostringstream key;
-  key << "facet parity reference v1 " FACET_VERSION_STRING " program " << std::hex << *program << std::dec << '\n';
+  key << "facet parity reference v1 " FACET_VERSION_STRING "\n" << *program;
   for (const fs::path& input : inputs) {
     const std::optional<std::uint64_t> hash = contentHash(input);
     if (!hash) return {};
@@ -145,19 +165,33 @@ std::string referenceKey(const scene::Scene& scene, const std::vector<fs::path>&
   }
   key << "shaped by " << shapedBy << '\n'
       << "settings " << renderSettingsText(scene, "parity") << " digest " << settingsDigest(scene, "parity") << '\n'
-      << "renders " << renders << " first seed " << scene::estimateSeed(scene).value_or(0) << '\n';
+      << "first seed " << scene::estimateSeed(scene).value_or(0) << '\n';
   return key.str();
+}
+
+std::uintmax_t referenceBytes(int width, int height, int renders) {
+  const std::uintmax_t pixels = std::uintmax_t(width) * std::uintmax_t(height);
+  std::uintmax_t firstBytes = 0;
+  Image one;
+  visitPlanes(one,
+              [&](const auto& plane) { firstBytes += sizeof(typename std::decay_t<decltype(plane)>::value_type); });
+  return pixels * (firstBytes + std::uintmax_t(renders - 1) * sizeof(glm::vec4));
 }
 
 std::optional<CachedReference> loadReference(const std::string& key, int width, int height, int renders) {
   const std::optional<fs::path> directory = ibl::cacheDirectory();
   if (!directory || key.empty()) return std::nullopt;
   try {
-    const auto file = ibl::readCacheFile(fileOf(*directory, key));
-    if (!file) return std::nullopt;
-    const auto bytes = ibl::cache_format::unseal(*file, key);
+    const fs::path file = ibl::cacheFile(*directory, kFilePrefix, key);
+    const auto bytes = ibl::readCacheFile(file);
     if (!bytes) return std::nullopt;
-    return referenceFromPayload(*bytes, width, height, renders);
+    const auto payload = ibl::cache_format::unseal(*bytes, key);
+    if (!payload) return std::nullopt;
+    std::optional<CachedReference> reference = referenceFromPayload(*payload, width, height, renders);
+    // Marked as used: the budget removes the files least recently used.
+    std::error_code error;
+    if (reference) fs::last_write_time(file, fs::file_time_type::clock::now(), error);
+    return reference;
   } catch (const std::exception&) {  // a file too large to hold: a miss like any other bad file
     return std::nullopt;
   }
@@ -169,7 +203,7 @@ void storeReference(const std::string& key, const CachedReference& reference, st
   try {
     const std::vector<char> sealed = ibl::cache_format::seal(key, referencePayload(reference));
     if (sealed.size() > budget) return;
-    ibl::writeCacheFileAtomically(fileOf(*directory, key), sealed);
+    ibl::writeCacheFileAtomically(ibl::cacheFile(*directory, kFilePrefix, key), sealed);
     prune(*directory, budget);
   } catch (const std::exception&) {  // out of memory for the copy, a folder that vanished: nothing stored
   }

@@ -4,7 +4,8 @@
 // "The reference cache"). A file is sealed as the prefilter cache's are:
 // its key's text in its head, a checksum and a tail, so a collision, a
 // changed byte or a cut file reads as nothing. The folder's reference files
-// are held under a budget (kReferenceCacheBytes), the oldest removed first.
+// are held under a budget (kReferenceCacheBytes), those least recently used
+// removed first.
 #pragma once
 
 #include <cstdint>
@@ -33,14 +34,19 @@ struct CachedReference {
   void add(const Image& render);
 };
 
-// The key of `scene`'s reference renders: this program's own bytes (any
-// rebuild renders anew), the contents of every file the scene was read from
-// (`inputs`, scenes/input_file.h's log), `shapedBy` (what else made the
-// scene what it is: the command line's edits and overrides), the settings
-// the scene renders with and the seeds. Empty where the program's bytes
-// cannot be read: then nothing is cached.
+// What decides `scene`'s reference renders, but for how many there are: this
+// program's own bytes and the shared libraries it started with (a rebuild
+// or an upgrade renders anew, a new Vulkan driver does not), the contents of
+// every file the scene was read from (`inputs`, scenes/input_file.h's log),
+// `shapedBy` (what else made the scene what it is: the command line's edits
+// and overrides), the settings the scene renders with and its first seed.
+// Empty where the program or an input cannot be read: then nothing is
+// cached.
 std::string referenceKey(const scene::Scene& scene, const std::vector<std::filesystem::path>& inputs,
-                         const std::string& shapedBy, int renders);
+                         const std::string& shapedBy);
+
+// The bytes `renders` renders of width x height take in a cache file.
+std::uintmax_t referenceBytes(int width, int height, int renders);
 
 // A cache file's payload, and the renders it holds when it holds `renders`
 // of them at `width` x `height` to its last byte.

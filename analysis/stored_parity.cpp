@@ -20,7 +20,7 @@ struct StoredRender {
 
 // An unreadable file is bad input, not an internal error.
 StoredRender readProvenance(const std::filesystem::path& file) {
-  scene::checkTileFile(file);
+  scene::checkTileFile(file, "the render");
   try {
     return {file, readExrProvenance(file)};
   } catch (const std::runtime_error& e) {
@@ -68,8 +68,8 @@ const std::set<std::string> kRendererAndSeed{"backend", "iblSeed"};
 // Every render of one set estimates one picture: the same digest, and the
 // same settings apart from the backend and the seed.
 void checkOnePicture(const std::vector<StoredRender>& set) {
+  const StoredRender& first = set.front();
   for (const StoredRender& r : set) {
-    const StoredRender& first = set.front();
     if (const std::string d = differing(r.made, first.made, kRendererAndSeed); !d.empty())
       throw std::invalid_argument(r.file.string() + " and " + first.file.string() +
                                   " are not renders of one picture: " + d);
@@ -81,7 +81,8 @@ void checkOnePicture(const std::vector<StoredRender>& set) {
 }
 
 // The seed of a render's random numbers (its settings' iblSeed), where it
-// has an environment; without one its numbers are fixed.
+// has an environment; without one its numbers are fixed. A file whose
+// facetEstimateSeed says another is not one facet wrote.
 std::optional<std::uint32_t> seedOf(const StoredRender& r) {
   const std::map<std::string, std::string> fields = settingsFields(r.made.renderSettings);
   const auto seed = fields.find("iblSeed");
@@ -92,21 +93,28 @@ std::optional<std::uint32_t> seedOf(const StoredRender& r) {
     value = std::stoul(seed->second, &end);
   } catch (const std::exception&) {
   }
-  if (end == 0 || end != seed->second.size() || value > UINT32_MAX)
+  if (end == 0 || end != seed->second.size() || value > UINT32_MAX ||
+      (r.made.estimateSeed && *r.made.estimateSeed != value))
     throw std::invalid_argument(r.file.string() + ": " + kRenderSettingsAttribute + ": iblSeed '" + seed->second +
-                                "' is not a seed (an integer 0..4294967295)");
+                                "' is not the render's seed (an integer 0..4294967295, its " + kEstimateSeedAttribute +
+                                " where it has one)");
   return std::uint32_t(value);
 }
 
 // The set in the order of its seeds, each seed once.
-std::vector<StoredRender> bySeed(std::vector<StoredRender> set) {
-  std::stable_sort(set.begin(), set.end(),
-                   [](const StoredRender& a, const StoredRender& b) { return seedOf(a) < seedOf(b); });
-  for (std::size_t i = 1; i < set.size(); ++i)
-    if (const auto seed = seedOf(set[i]); seed && seed == seedOf(set[i - 1]))
-      throw std::invalid_argument(set[i - 1].file.string() + " and " + set[i].file.string() + " are both seed " +
-                                  std::to_string(*seed) + ": renders of one set are paired by their seeds, each once");
-  return set;
+std::vector<StoredRender> bySeed(const std::vector<StoredRender>& set) {
+  std::vector<std::pair<std::optional<std::uint32_t>, const StoredRender*>> seeded;
+  for (const StoredRender& r : set) seeded.emplace_back(seedOf(r), &r);
+  std::stable_sort(seeded.begin(), seeded.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<StoredRender> ordered;
+  for (std::size_t i = 0; i < seeded.size(); ++i) {
+    if (i > 0 && seeded[i].first && seeded[i].first == seeded[i - 1].first)
+      throw std::invalid_argument(seeded[i - 1].second->file.string() + " and " + seeded[i].second->file.string() +
+                                  " are both seed " + std::to_string(*seeded[i].first) +
+                                  ": renders of one set are paired by their seeds, each once");
+    ordered.push_back(*seeded[i].second);
+  }
+  return ordered;
 }
 
 std::string seedList(const std::vector<StoredRender>& set) {
@@ -136,8 +144,8 @@ bool pairBySeed(std::vector<StoredRender>& references, std::vector<StoredRender>
     throw NotComparable(
         stem + "the scene differs (its file, camera, environment map or subdivision): " + kPictureDigestAttribute +
         " " + candidate.made.pictureDigest + " against " + reference.made.pictureDigest);
-  references = bySeed(std::move(references));
-  candidates = bySeed(std::move(candidates));
+  references = bySeed(references);
+  candidates = bySeed(candidates);
   if (seedList(candidates) != seedList(references))
     throw NotComparable(stem + "seeds " + seedList(candidates) + " against " + seedList(references) +
                         ": each candidate is paired with the reference of its seed");

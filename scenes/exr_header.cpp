@@ -113,8 +113,8 @@ void checkExrHeaders(const std::filesystem::path& file, const WindowCheck& check
   }
 }
 
-void checkTileFile(const std::filesystem::path& file) {
-  checkInputFile(file, "the tile");
+void checkTileFile(const std::filesystem::path& file, const std::string& what) {
+  checkInputFile(file, what);
   checkExrHeaders(file, [&](const std::string& window, std::int64_t width, std::int64_t height) {
     if (width < 1 || height < 1 || width > 16384 || height > 16384)
       throw InputError(

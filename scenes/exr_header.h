@@ -19,10 +19,11 @@ namespace facet::scene {
 using WindowCheck = std::function<void(const std::string& window, std::int64_t width, std::int64_t height)>;
 void checkExrHeaders(const std::filesystem::path& file, const WindowCheck& checkSize);
 
-// A tile `facet merge` reads: a regular file (scenes/input_file.h) whose
-// headers pass checkExrHeaders with each window 1..16384 texels on a side,
-// the image size limit, so that no header makes the merge allocate more
-// than the image it claims to be part of could need.
-void checkTileFile(const std::filesystem::path& file);
+// A tile `facet merge` reads (or another render facet reads back, `what`
+// in the error): a regular file (scenes/input_file.h) whose headers pass
+// checkExrHeaders with each window 1..16384 texels on a side, the image size
+// limit, so that no header makes the reader allocate more than the image it
+// claims to be part of could need.
+void checkTileFile(const std::filesystem::path& file, const std::string& what = "the tile");
 
 }  // namespace facet::scene

@@ -46,7 +46,7 @@ void runCompare(const CompareOptions& o) {
     notJudged.joiner = " against ";
     notJudged.error = e.what();
     reportParity(o.flags, {notJudged}, "compare");
-    throw analysis::NotComparable(o.files[k] + ": " + e.what());
+    throw analysis::NotComparable("compare: " + o.files[k] + ": " + e.what());
   }
   printWarnings(stored.warnings, false);
   reportParity(o.flags, {stored.judged}, "compare");

@@ -8,6 +8,7 @@
 
 #include <exception>
 #include <memory>
+#include <iomanip>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -61,37 +62,44 @@ nlohmann::json adapterJson(const gpu::AdapterInfo& info) {
 // changes with any of them.
 std::string shapedBy(const SceneEdits& e, const SceneOverrides& o) {
   std::ostringstream text;
+  text << std::hexfloat;
   const auto list = [&](const char* name, const auto& values) {
-    text << ' ' << name;
+    text << ' ' << name << ' ' << values.size();
     for (const auto& v : values) text << ' ' << v;
+  };
+  const auto word = [&](const char* name, const std::string& value) {
+    text << ' ' << name << ' ' << std::quoted(value);
   };
   const auto optional = [&](const char* name, const auto& value) {
     text << ' ' << name << ' ';
     if (value) text << *value;
   };
-  text << std::hexfloat;
-  list("material", e.materials);
-  list("set", e.sets);
-  text << " variant " << e.variant << " size " << o.size;
+  text << "materials " << e.materials.size();
+  for (const std::string& m : e.materials) text << ' ' << std::quoted(m);
+  text << " sets " << e.sets.size();
+  for (const std::string& set : e.sets) text << ' ' << std::quoted(set);
+  word("variant", e.variant);
+  word("size", o.size);
   list("eye", o.eye);
   list("target", o.target);
   list("up", o.up);
   optional("fov", o.fov);
-  text << " method " << o.method;
+  word("method", o.method);
   optional("tessLevel", o.tessLevel);
   optional("spp", o.spp);
   optional("bounces", o.bounces);
   optional("diffuseBounces", o.diffuseBounces);
   optional("glossyBounces", o.glossyBounces);
   optional("transmissionBounces", o.transmissionBounces);
-  text << " subdivision " << o.subdivision << " environment " << o.environment;
+  word("subdivision", o.subdivision);
+  word("environment", o.environment);
   optional("environmentIntensity", o.environmentIntensity);
   optional("environmentRotation", o.environmentRotation);
-  text << " ibl " << o.ibl;
+  word("ibl", o.ibl);
   optional("iblSamples", o.iblSamples);
-  text << " occlusion " << o.occlusion;
+  word("occlusion", o.occlusion);
   optional("seed", o.seed);
-  text << " energyCompensation " << o.energyCompensation;
+  word("energyCompensation", o.energyCompensation);
   return text.str();
 }
 
@@ -104,7 +112,7 @@ ParityCase judgeScene(const std::string& file, const ParityCommandOptions& o,
   applySceneOverrides(o.sceneOverrides, scene);
   scene::leaveNothingToChoose(scene);
   const analysis::ReferenceStore store{
-      analysis::referenceKey(scene, inputs.files(), shapedBy(o.edits, o.sceneOverrides), o.renders), o.freshReference};
+      analysis::referenceKey(scene, inputs.files(), shapedBy(o.edits, o.sceneOverrides)), o.freshReference};
   std::vector<analysis::ParityCandidate> candidates;
   for (std::size_t a = 0; a < adapters.size(); ++a)
     candidates.push_back({renderers[a].get(), adapters[a].name, adapterJson(adapters[a])});

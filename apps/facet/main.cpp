@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
   } catch (const CheckFailed& e) {
     return fail(kCheckFailed, e.what());
   } catch (const facet::analysis::NotComparable& e) {
-    return fail(kNotComparable, std::string("compare: ") + e.what());
+    return fail(kNotComparable, e.what());
   } catch (const facet::Interrupted& e) {
     // The program it ran has ended and the command has cleaned up as it
     // unwound: it now ends as the signal would have ended it.

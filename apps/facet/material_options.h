@@ -34,6 +34,8 @@ CLI::App* addMaterialCommand(CLI::App& parent, const std::string& name, const st
 materials::Material resolveMaterial(const MaterialOptions& options);
 
 // facet render's --material and --set, each repeatable, and --variant.
+// Every field shapes the scene: parity's reference key names each
+// (cmd_parity.cpp, shapedBy).
 struct SceneEdits {
   std::vector<std::string> materials;  // [OBJECT=]FILE|PRESET
   std::vector<std::string> sets;       // PATH=VALUE

@@ -15,6 +15,8 @@
 
 namespace facet::cli {
 
+// Every field shapes the scene: parity's reference key names each
+// (cmd_parity.cpp, shapedBy).
 struct SceneOverrides {
   std::string size;
   std::vector<double> eye, target, up;

@@ -61,11 +61,7 @@ bool headerNames(const std::vector<char>& data, const gpu::AdapterInfo& adapter)
 std::optional<fs::path> pipelineCacheFile(const gpu::AdapterInfo& adapter) {
   const std::optional<fs::path> directory = ibl::cacheDirectory();
   if (!directory) return std::nullopt;
-  const std::string key = keyText(adapter);
-  char name[48];
-  std::snprintf(name, sizeof name, "pipelines-%016llx.bin",
-                static_cast<unsigned long long>(ibl::cache_format::fnv1a(key.data(), key.size())));
-  return *directory / name;
+  return ibl::cacheFile(*directory, "pipelines", keyText(adapter));
 }
 
 StoredPipelineCache loadPipelineCache(const gpu::AdapterInfo& adapter) {

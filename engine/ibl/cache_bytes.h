@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <string>
 #include <vector>
 
 namespace facet::ibl::cache_format {
@@ -24,6 +25,7 @@ class Writer {
     data_.insert(data_.end(), bytes, bytes + values.size() * sizeof(T));
   }
   void putBytes(const char* bytes, std::size_t size) { data_.insert(data_.end(), bytes, bytes + size); }
+  void putText(const std::string& text) { putArray(std::vector<char>(text.begin(), text.end())); }
   const std::vector<char>& data() const { return data_; }
 
  private:
@@ -52,6 +54,12 @@ class Reader {
     std::vector<T> values(count);
     std::memcpy(values.data(), data_.data() + position_ - count * sizeof(T), count * sizeof(T));
     return values;
+  }
+  // What putText wrote, of whatever length the bytes back.
+  std::string getText() {
+    const auto count = get<std::uint64_t>();
+    if (!take(count)) return {};
+    return std::string(data_.data() + position_ - std::size_t(count), std::size_t(count));
   }
   bool matches(const char* bytes, std::size_t size) {
     return take(size) && std::memcmp(data_.data() + position_ - size, bytes, size) == 0;

@@ -1,6 +1,9 @@
 #include "engine/ibl/cache_folder.h"
 
+#include "engine/ibl/prefilter_cache_format.h"
+
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
@@ -18,6 +21,13 @@ namespace {
 constexpr std::uintmax_t kLargestFile = std::uintmax_t(4) << 30;
 
 }  // namespace
+
+fs::path cacheFile(const fs::path& directory, const std::string& prefix, const std::string& key) {
+  char hash[17];
+  std::snprintf(hash, sizeof hash, "%016llx",
+                static_cast<unsigned long long>(cache_format::fnv1a(key.data(), key.size())));
+  return directory / (prefix + "-" + hash + ".bin");
+}
 
 std::optional<fs::path> cacheDirectory() {
   if (const char* dir = std::getenv("FACET_CACHE_DIR"); dir && *dir) return fs::path(dir);

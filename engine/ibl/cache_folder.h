@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace facet::ibl {
@@ -13,6 +14,12 @@ namespace facet::ibl {
 // FACET_CACHE_DIR, else $XDG_CACHE_HOME/facet, else ~/.cache/facet; none
 // where none of these is set.
 std::optional<std::filesystem::path> cacheDirectory();
+
+// The file of `key` in `directory`: `<prefix>-<FNV-1a of the key, hex>.bin`.
+// The key's whole text goes into the file's head (prefilter_cache_format.h),
+// so two keys of one hash read as a miss.
+std::filesystem::path cacheFile(const std::filesystem::path& directory, const std::string& prefix,
+                                const std::string& key);
 
 // A regular file's bytes; none for a missing, special or oversized file (a
 // FIFO would block the read, a device never end it) or a failed read.

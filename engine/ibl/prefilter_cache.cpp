@@ -3,7 +3,6 @@
 // prefilter_cache_format.h. What a file holds must also fit the request (its
 // levels, its tables, finite values) or it is rebuilt.
 #include <cstdint>
-#include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <sstream>
@@ -21,10 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using cache_format::fnv1a;
 using cache_format::kFormatVersion;
-
-std::uint64_t fnv1a(const std::string& text) { return fnv1a(text.data(), text.size()); }
 
 std::string keyText(const scene::EnvironmentMap& map, const ModelPairs& models, const PrefilterSettings& settings,
                     const std::string& builder) {
@@ -52,9 +48,7 @@ T cached(const std::string& prefix, const std::string& key, ToPayload toPayload,
          Build build) {
   const std::optional<fs::path> directory = cacheDirectory();
   if (!directory) return build();
-  char name[48];
-  std::snprintf(name, sizeof name, "%s-%016llx.bin", prefix.c_str(), static_cast<unsigned long long>(fnv1a(key)));
-  const fs::path file = *directory / name;
+  const fs::path file = cacheFile(*directory, prefix, key);
   try {
     if (const auto data = readCacheFile(file))
       if (const auto payload = cache_format::unseal(*data, key))

@@ -77,42 +77,61 @@ TEST_F(ReferenceCache, AChangedByteReadsAsNothing) {
   EXPECT_FALSE(loadReference("key", 20, 20, 2));
 }
 
-TEST_F(ReferenceCache, TheKeyFollowsEveryInputEveryFlagAndTheRenders) {
+TEST_F(ReferenceCache, TheKeyFollowsEveryInputEveryFlagAndTheSettings) {
   const fs::path input = dir_ / "cage.obj";
   std::ofstream(input) << "v 0 0 0\n";
   const scene::Scene scene;
-  const std::string key = referenceKey(scene, {input}, "size 16x12", 4);
+  const std::string key = referenceKey(scene, {input}, "size 16x12");
   ASSERT_FALSE(key.empty());
-  EXPECT_EQ(referenceKey(scene, {input}, "size 16x12", 4), key);
-  EXPECT_NE(referenceKey(scene, {input}, "size 16x13", 4), key);
-  EXPECT_NE(referenceKey(scene, {input}, "size 16x12", 5), key);
-  scene::Scene seeded = scene;
-  seeded.render.width = 17;
-  EXPECT_NE(referenceKey(seeded, {input}, "size 16x12", 4), key);
+  EXPECT_EQ(referenceKey(scene, {input}, "size 16x12"), key);
+  EXPECT_NE(referenceKey(scene, {input}, "size 16x13"), key);
+  scene::Scene wider = scene;
+  wider.render.width = 17;
+  EXPECT_NE(referenceKey(wider, {input}, "size 16x12"), key);
   std::ofstream(input) << "v 0 0 1\n";  // the same path, other contents
-  EXPECT_NE(referenceKey(scene, {input}, "size 16x12", 4), key);
+  EXPECT_NE(referenceKey(scene, {input}, "size 16x12"), key);
   // A file that can no longer be read: no key, nothing cached.
   fs::remove(input);
-  EXPECT_EQ(referenceKey(scene, {input}, "size 16x12", 4), "");
+  EXPECT_EQ(referenceKey(scene, {input}, "size 16x12"), "");
 }
 
-TEST_F(ReferenceCache, TheFolderIsHeldToItsBudgetTheOldestFirst) {
+// Two files made hours ago, the older read since: the one not read goes first.
+TEST_F(ReferenceCache, TheFolderIsHeldToItsBudgetTheLeastRecentlyUsedFirst) {
   const CachedReference reference = renders(2);
-  storeReference("oldest", reference);
+  const auto hoursAgo = [](int hours) { return fs::file_time_type::clock::now() - std::chrono::hours(hours); };
+  storeReference("read since", reference);
   const std::uintmax_t one = fs::file_size(referenceFiles().at(0));
-  fs::last_write_time(referenceFiles().at(0), fs::file_time_type::clock::now() - std::chrono::hours(2));
-  storeReference("older", reference);
+  fs::last_write_time(referenceFiles().at(0), hoursAgo(2));
+  storeReference("not read", reference);
   for (const fs::path& file : referenceFiles())
-    if (fs::last_write_time(file) > fs::file_time_type::clock::now() - std::chrono::hours(1))
-      fs::last_write_time(file, fs::file_time_type::clock::now() - std::chrono::hours(1));
+    if (fs::last_write_time(file) > hoursAgo(1)) fs::last_write_time(file, hoursAgo(1));
+  ASSERT_TRUE(loadReference("read since", 20, 20, 2));
   storeReference("newest", reference, 2 * one + one / 2);
   EXPECT_EQ(referenceFiles().size(), 2u);
-  EXPECT_FALSE(loadReference("oldest", 20, 20, 2));
-  EXPECT_TRUE(loadReference("older", 20, 20, 2));
+  EXPECT_FALSE(loadReference("not read", 20, 20, 2));
+  EXPECT_TRUE(loadReference("read since", 20, 20, 2));
   EXPECT_TRUE(loadReference("newest", 20, 20, 2));
   // One file over the budget is not stored.
   storeReference("too large", reference, one / 2);
   EXPECT_FALSE(loadReference("too large", 20, 20, 2));
+}
+
+TEST_F(ReferenceCache, AFileHoldsThePlanesTheByteCountSays) {
+  storeReference("key", renders(3));
+  EXPECT_LE(referenceBytes(20, 20, 3), fs::file_size(referenceFiles().at(0)));
+  EXPECT_GT(referenceBytes(20, 20, 3) + 4096, fs::file_size(referenceFiles().at(0)));
+}
+
+// Another writer's temporary file is not the cache's to remove.
+TEST_F(ReferenceCache, TheBudgetLeavesOtherWritersTemporaryFiles) {
+  storeReference("key", renders(2));
+  const std::uintmax_t one = fs::file_size(referenceFiles().at(0));
+  const fs::path temporary = referenceFiles().at(0).string() + ".tmp123";
+  std::ofstream(temporary) << std::string(3 * one, 'x');
+  // Both references fit; counted, the temporary file would not.
+  storeReference("other", renders(2), 2 * one + one / 2);
+  EXPECT_TRUE(fs::exists(temporary));
+  EXPECT_TRUE(loadReference("key", 20, 20, 2));
 }
 
 }  // namespace

@@ -1,48 +1,57 @@
 #!/bin/bash
 # facet parity's reference cache (docs/parity.md, "The reference cache"):
 # a second run of the same command takes the CPU reference from the cache
-# folder and reaches the same verdict with the same numbers; another flag
-# or a changed file renders it anew, and --fresh-reference always does.
+# folder and reaches the same verdict with the same numbers; each flag that
+# edits the scene, another number of renders, a file the scene reads edited
+# in place and --fresh-reference render it anew.
 #   check_reference_cache.sh FACET REPOSITORY WORK_FOLDER
 set -euo pipefail
 facet=$1 repo=$2 work=$3
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 fail() { echo "check_reference_cache: FAILED: $*" >&2; exit 1; }
 export FACET_CACHE_DIR=$work/cache
-cp "$repo/scenes/examples/gold_cube.gltf" .  # its buffer is inside it
-env=$repo/scenes/environments/courtyard_256x128.hdr
+cp "$repo/scenes/cages/cube.obj" cage.obj
+cat >scene.json <<JSON
+{"camera": {"eye": [2, 1.5, 3], "target": [0, 0, 0]},
+ "materials": {"metal": {"preset": "gold", "roughness": 0.4}},
+ "environment": {"file": "$repo/scenes/environments/courtyard_256x128.hdr", "method": "sampled", "samples": 1},
+ "objects": [{"name": "cube", "mesh": "cage.obj", "material": "metal"}]}
+JSON
 
-# run NAME ARGS...: facet parity on the copied cube, its JSON kept as NAME.json.
+# run NAME ARGS...: facet parity on the scene, its JSON kept as NAME.json.
 run() {
   local name=$1
   shift
-  "$facet" parity gold_cube.gltf --size 16x12 --env "$env" --ibl sampled --ibl-samples 1 --renders 4 --json "$@" \
-    >"$name.json" || fail "$name: exit $?"
+  "$facet" parity scene.json --size 16x12 --json "$@" >"$name.json" || fail "$name: exit $?"
 }
-# cached NAME: the reference of NAME.json came from the cache ("true") or was rendered ("false").
-cached() { /usr/bin/python3 -c "import json,sys; print(str(json.load(open(sys.argv[1]))['scenes'][0]['reference']['cached']).lower())" "$1.json"; }
+# cached NAME: "true" where NAME's reference came from the cache, "false" where it was rendered.
+cached() {
+  /usr/bin/python3 -c "import json,sys; print(str(json.load(open(sys.argv[1]))['scenes'][0]['reference']['cached']).lower())" "$1.json"
+}
 # beauty NAME: the beauty AOV's errors and verdict, which a cached reference must leave as they were.
-beauty() { /usr/bin/python3 -c "import json,sys; a=json.load(open(sys.argv[1]))['scenes'][0]['runs'][0]['aovs']; print([x for x in a if x['name']=='beauty'])" "$1.json"; }
+beauty() {
+  /usr/bin/python3 -c "import json,sys; a=json.load(open(sys.argv[1]))['scenes'][0]['runs'][0]['aovs']; print([x for x in a if x['name']=='beauty'])" "$1.json"
+}
+# renders_anew NAME ARGS...: the run rendered its reference.
+renders_anew() {
+  local name=$1
+  run "$@"
+  [ "$(cached "$name")" = false ] || fail "$name took the cached reference"
+}
 
 run first
 [ "$(cached first)" = false ] || fail "the first run found a reference in an empty cache"
 run second
 [ "$(cached second)" = true ] || fail "the second run rendered the reference again"
 [ "$(beauty second)" = "$(beauty first)" ] || fail "the cached reference changed the verdict: $(beauty first) / $(beauty second)"
-run fresh --fresh-reference
-[ "$(cached fresh)" = false ] || fail "--fresh-reference took the cached reference"
-run other_flag --env-rotation 30
-[ "$(cached other_flag)" = false ] || fail "another flag took the cached reference"
-run other_seed --seed 7
-[ "$(cached other_seed)" = false ] || fail "another seed took the cached reference"
-# The same path with other contents: the cube's roughness edited in place.
-/usr/bin/python3 - <<'PY'
-import json, pathlib
-path = pathlib.Path("gold_cube.gltf")
-gltf = json.loads(path.read_text())
-gltf["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"] = 0.123
-path.write_text(json.dumps(gltf))
-PY
-run edited
-[ "$(cached edited)" = false ] || fail "an edited scene file took the cached reference"
+renders_anew fresh --fresh-reference
+renders_anew material --material silver
+renders_anew set --set materials.metal.roughness=0.3
+renders_anew seed --seed 7
+renders_anew renders --renders 8
+# The cage the scene names, edited in place: the same path and flags, another surface.
+sed -i 's/^v -1 -1 -1$/v -1 -1 -1.25/' cage.obj
+renders_anew edited_cage
+run edited_again
+[ "$(cached edited_again)" = true ] || fail "the edited cage's reference was not kept"
 echo "check_reference_cache: reused where nothing changed, rendered anew where anything did"

@@ -71,7 +71,7 @@ endforeach()
 add_test(NAME cli.compare_render_biased
          COMMAND ${CMAKE_COMMAND} -E env FACET_FAULT=beauty-bias ${facet} render ${gold} -o ${work}/golden_biased.exr
                  --size 16x12 --env ${courtyard})
-set_tests_properties(cli.compare_render_biased PROPERTIES LABELS "cli;gpu" FIXTURES_SETUP golden_images)
+set_tests_properties(cli.compare_render_biased PROPERTIES LABELS "cli;gpu" FIXTURES_SETUP biased_golden)
 add_test(NAME cli.compare_equal
          COMMAND ${check_reports} 0 ${work}/compare_equal.xml none ${facet} compare ${work}/golden_plain.exr
                  ${work}/golden_plain.exr)
@@ -89,9 +89,9 @@ add_test(NAME cli.compare_render_beauty_only
 set_tests_properties(cli.compare_render_beauty_only PROPERTIES LABELS cli FIXTURES_SETUP golden_images)
 facet_cli_failure(compare_without_ids 1 "^facet: error: .*golden_beauty.exr: has no ids layer \\(patchId\\)" "" ""
                   ${facet} compare ${work}/golden_plain.exr ${work}/golden_beauty.exr)
-set_tests_properties(cli.compare_equal cli.compare_biased cli.compare_sizes_differ cli.compare_not_an_exr
-                     cli.compare_without_ids
+set_tests_properties(cli.compare_equal cli.compare_sizes_differ cli.compare_not_an_exr cli.compare_without_ids
                      PROPERTIES LABELS cli FIXTURES_REQUIRED golden_images)
+set_tests_properties(cli.compare_biased PROPERTIES LABELS "cli;gpu" FIXTURES_REQUIRED "golden_images;biased_golden")
 # Golden sets of a Monte Carlo estimate: paired by seed and judged by the
 # paired t-test, a fault caught, and every set that estimates another
 # picture refused as not comparable (exit 6), naming what differs.
