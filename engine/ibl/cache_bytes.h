@@ -52,7 +52,8 @@ class Reader {
       return {};
     }
     std::vector<T> values(count);
-    std::memcpy(values.data(), data_.data() + position_ - count * sizeof(T), count * sizeof(T));
+    // An empty vector's data() may be null, which memcpy may not be handed even for 0 bytes.
+    if (count > 0) std::memcpy(values.data(), data_.data() + position_ - count * sizeof(T), count * sizeof(T));
     return values;
   }
   // What putText wrote, of whatever length the bytes back.
