@@ -29,7 +29,7 @@ void Renderer::watch(const std::string& path, const std::function<bool(const Wat
     int picture = -1;
     WatchedScene watched;
     watched.load = [&] {
-      scene::Scene s = withSettings(api::sceneOf(scene::loadScene(path), path), settings.render);
+      scene::Scene s = withSettings(api::sceneOf(scene::loadScene(path, {}, settings.variant), path), settings.render);
       // The watch refines each picture by its own passes.
       s.render.sampling = scene::Sampling::OnePass;
       checkImagesFitInMemory(s, 1, "watch settings: width x height");

@@ -169,11 +169,13 @@ class Renderer:
                method: Optional[str] = None, renders: int = 16, tolerances: list[str] = [],
                min_coverage: int = 16) -> dict: ...
     # facet render --watch: callback({"picture", "passes", "spp", "image"}) after each pass, False to stop;
+    # variant: a glTF file's material variant, as --variant;
     # on_bad_input(message) for a later load refused, False to stop; without it such a load ends the watch.
     def watch(self, scene: Union[str, PathLike[str]], callback: Callable[[dict], Optional[bool]], *,
               passes: int = 16, changes: int = 0, size: Optional[tuple[int, int]] = None, backend: str = "gpu",
               method: Optional[str] = None, spp: Optional[int] = None, tess_level: Optional[int] = None,
-              bounces: Optional[int] = None, on_bad_input: Optional[Callable[[str], Optional[bool]]] = None) -> None: ...
+              bounces: Optional[int] = None, variant: str = "",
+              on_bad_input: Optional[Callable[[str], Optional[bool]]] = None) -> None: ...
     # The preview stage: {"frame", "pictures": [{"label", "rgba", "image", "adaptive"}], "sheet"}.
     def preview(self, model: SceneOrPath, materials: list[Union[str, PathLike[str]]], *, frame: int = 0,
                 size: tuple[int, int] = (256, 256), columns: int = 0, ground: bool = True,

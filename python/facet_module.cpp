@@ -195,17 +195,19 @@ void bindRenderer(py::module_& m) {
           [](facet::Renderer& r, const py::object& scene, const py::function& callback, int passes, int changes,
              std::optional<std::pair<int, int>> size, const std::string& backend, OptText method,
              std::optional<int> spp, std::optional<int> tessLevel, std::optional<int> bounces,
-             const py::object& onBadInput) {
+             const std::string& variant, const py::object& onBadInput) {
             watchScene(r, fspath(scene), callback,
-                       {settingsOf(size, backend, method, spp, tessLevel, bounces), passes, changes}, onBadInput);
+                       {settingsOf(size, backend, method, spp, tessLevel, bounces), passes, changes, variant},
+                       onBadInput);
           },
           py::arg("scene"), py::arg("callback"), py::kw_only(), py::arg("passes") = 16, py::arg("changes") = 0,
           py::arg("size") = py::none(), py::arg("backend") = "gpu", py::arg("method") = py::none(),
           py::arg("spp") = py::none(), py::arg("tess_level") = py::none(), py::arg("bounces") = py::none(),
-          py::arg("on_bad_input") = py::none(),
+          py::arg("variant") = "", py::arg("on_bad_input") = py::none(),
           "Watches a scene file as facet render --watch: callback({picture, passes, spp, image}) after each pass of "
-          "each picture, False to stop; changes: return after that many (0: until stopped); on_bad_input(error) "
-          "for a later load refused, which otherwise ends the watch")
+          "each picture, False to stop; changes: return after that many (0: until stopped); variant: a glTF "
+          "file's material variant, as --variant; on_bad_input(error) for a later load refused, which otherwise "
+          "ends the watch")
       .def(
           "parity",
           [](facet::Renderer& r, const py::object& scene, std::optional<std::pair<int, int>> size, OptText method,

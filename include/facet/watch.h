@@ -5,6 +5,8 @@
 // device, the compiled kernels and the diced geometry while it is the same.
 #pragma once
 
+#include <string>
+
 #include "facet/image.h"
 #include "facet/render.h"
 
@@ -15,6 +17,7 @@ struct WatchSettings {
   RenderSettings render;  // over each load of the scene, as Renderer::render applies them
   int passes = 16;        // of each picture, in [1, 4096], each adding its samples (at least 4 after the first)
   int changes = 0;        // changes handled before watch returns, in [0, 1000000]; 0: until onPass stops it
+  std::string variant;    // a glTF file's material variant, as loadScene(path, variant); "" its default
 };
 
 // A picture after one of its passes.

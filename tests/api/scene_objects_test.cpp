@@ -116,22 +116,6 @@ TEST(ApiSceneObjects, ASceneFilesJsonAsTextIsTheSceneItsFileIs) {
   EXPECT_EQ(errorOf([] { facet::sceneFromJson("{\"objects\": ["); }).rfind("scene: not valid JSON: ", 0), 0u);
 }
 
-// A glTF triangle in material "red", which its variant "blue" maps to "blue".
-const char* kVariantTriangle = R"({
-  "asset": {"version": "2.0"},
-  "extensionsUsed": ["KHR_materials_variants"],
-  "extensions": {"KHR_materials_variants": {"variants": [{"name": "blue"}]}},
-  "scenes": [{"nodes": [0]}],
-  "nodes": [{"mesh": 0}],
-  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0,
-      "extensions": {"KHR_materials_variants": {"mappings": [{"material": 1, "variants": [0]}]}}}]}],
-  "materials": [{"name": "red"}, {"name": "blue"}],
-  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
-                 "min": [0, 0, 0], "max": [1, 1, 0]}],
-  "bufferViews": [{"buffer": 0, "byteLength": 36}],
-  "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]
-})";
-
 TEST(ApiSceneObjects, AGltfLoadsInTheMaterialVariantNamed) {
   const std::string file = writeScene("variants.gltf", kVariantTriangle).string();
   EXPECT_EQ(facet::loadScene(file).materialName(0), "red");

@@ -1,6 +1,7 @@
 // A watched scene through the public API (api/watch.cpp): each pass reaches
-// the caller, a change to the file renders the changed scene, a refused load
-// goes to onBadInput (or ends the watch, thrown), and the caller stops it.
+// the caller, a change to the file renders the changed scene, a glTF file is
+// watched in the material variant named, a refused load goes to onBadInput
+// (or ends the watch, thrown), and the caller stops it.
 #include <gtest/gtest.h>
 
 #include <facet/facet.h>
@@ -47,6 +48,24 @@ TEST(ApiWatch, AChangeToTheFileRendersTheChangedScene) {
   ASSERT_EQ(changed.picture, 1);
   ASSERT_EQ(changed.passes, 1);
   expectSameImage(changed.image, render(facet::loadScene(file)));
+}
+
+TEST(ApiWatch, AGltfIsWatchedInTheMaterialVariantNamed) {
+  const std::string file = writeScene("watched_variants.gltf", kVariantTriangle).string();
+  std::vector<facet::WatchPass> seen;
+  facet::WatchSettings blue = quickWatch(1, 0);
+  blue.variant = "blue";
+  renderer().watch(
+      file,
+      [&](const facet::WatchPass& pass) {
+        seen.push_back(pass);
+        return false;
+      },
+      blue);
+  ASSERT_EQ(seen.size(), 1u);
+  expectSameImage(seen[0].image, render(facet::loadScene(file, "blue")));
+  EXPECT_NE(render(facet::loadScene(file, "blue")).aov("beauty").values,
+            render(facet::loadScene(file)).aov("beauty").values);
 }
 
 TEST(ApiWatch, ARefusedLoadGoesToOnBadInputAndTheWatchGoesOn) {

@@ -12,6 +12,7 @@ import numpy as np
 import OpenImageIO as oiio
 
 import facet
+from variant_triangle import write_variant_triangle
 
 FACET = os.environ["FACET_BINARY"]
 EXAMPLES = pathlib.Path(os.environ["FACET_EXAMPLES_DIR"])
@@ -275,21 +276,7 @@ class Scenes(unittest.TestCase):
 
     def test_a_gltf_loads_in_the_material_variant_named_as_on_the_command_line(self):
         WORK.mkdir(parents=True, exist_ok=True)
-        path = WORK / "variants.gltf"
-        triangle = "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"  # (0,0,0), (1,0,0), (0,1,0) as floats
-        variants = {"KHR_materials_variants": {"mappings": [{"material": 1, "variants": [0]}]}}
-        path.write_text(json.dumps({
-            "asset": {"version": "2.0"},
-            "extensionsUsed": ["KHR_materials_variants"],
-            "extensions": {"KHR_materials_variants": {"variants": [{"name": "blue"}]}},
-            "scenes": [{"nodes": [0]}],
-            "nodes": [{"mesh": 0}],
-            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0, "extensions": variants}]}],
-            "materials": [{"name": "red"}, {"name": "blue"}],
-            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
-                           "min": [0, 0, 0], "max": [1, 1, 0]}],
-            "bufferViews": [{"buffer": 0, "byteLength": 36}],
-            "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64," + triangle}]}))
+        path = write_variant_triangle(WORK / "variants.gltf")
         self.assertEqual(facet.load_scene(path).objects[0].material, "red")
         self.assertEqual(facet.load_scene(path, variant="blue").objects[0].material, "blue")
         expected = cli_error("render", path, "--variant", "green", "-o", WORK / "variant.exr")

@@ -1,6 +1,7 @@
 """Renderer.watch from Python: each pass reaches the callback, a change to
-the file renders the changed scene, a refused load goes to on_bad_input,
-and an exception in the callback stops the watch and is raised."""
+the file renders the changed scene, a glTF file is watched in the material
+variant named, a refused load goes to on_bad_input, and an exception in the
+callback stops the watch and is raised."""
 import json
 import os
 import pathlib
@@ -9,6 +10,7 @@ import unittest
 import numpy as np
 
 import facet
+from variant_triangle import write_variant_triangle
 
 EXAMPLES = pathlib.Path(os.environ["FACET_EXAMPLES_DIR"])
 WORK = pathlib.Path(os.environ["FACET_WORK_DIR"]) / "watch"
@@ -70,6 +72,15 @@ class Watch(unittest.TestCase):
 
         with self.assertRaisesRegex(RuntimeError, "from on_bad_input"):
             self.renderer.watch(path, on_pass, passes=1, on_bad_input=on_bad_input, **QUICK)
+
+    def test_a_gltf_is_watched_in_the_material_variant_named(self):
+        path = write_variant_triangle(WORK / "variants.gltf")
+        seen = []
+        self.renderer.watch(path, lambda p: seen.append(p) or False, passes=1, variant="blue", **QUICK)
+        blue = self.renderer.render(facet.load_scene(path, variant="blue"), **QUICK)["beauty"]
+        red = self.renderer.render(path, **QUICK)["beauty"]
+        np.testing.assert_array_equal(seen[0]["image"]["beauty"], blue)
+        self.assertFalse(np.array_equal(blue, red))
 
     def test_the_callback_stops_it_or_raises_through_it(self):
         path = scene_file("stopped.json", 40)
