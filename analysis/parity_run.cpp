@@ -91,15 +91,10 @@ ParityCase judgeParity(const std::string& name, scene::Scene scene, const std::v
   // What the store keeps besides: a render, and each later render's beauty,
   // a fifth of one. The cache never refuses a scene: where that does not
   // fit, nothing is stored.
-  const std::string key = store.key.empty() ? "" : store.key + "renders " + std::to_string(count) + '\n';
-  bool storing = !key.empty() && referenceBytes(scene.render.width, scene.render.height, count) <= kReferenceCacheBytes;
-  if (storing) {
-    try {
-      checkImagesFitInMemory(scene, working + 1 + (count + 3) / 5, sizeField);
-    } catch (const std::invalid_argument&) {
-      storing = false;
-    }
-  }
+  const std::string key = rendersKey(store.key, count);
+  const bool storing = !key.empty() &&
+                       referenceBytes(scene.render.width, scene.render.height, count) <= kReferenceCacheBytes &&
+                       imagesFitInMemory(scene, working + 1 + (count + 3) / 5);
   checkImagesFitInMemory(scene, working, sizeField);
   const std::uint32_t firstSeed = scene.environment ? scene.environment->seed : 0u;
 

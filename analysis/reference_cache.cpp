@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <sstream>
 #include <system_error>
@@ -42,10 +43,8 @@ std::optional<std::uint64_t> contentHash(const fs::path& file) {
   return hash;
 }
 
-// The shared libraries mapped when the program started, each as a line
-// "path size modified": a system upgrade renders anew. Taken before main,
-// so before any Vulkan driver is loaded: a new driver keeps the key.
-std::string librariesAtStart() {
+// The shared libraries mapped now, each as a line "path size modified".
+std::string mappedLibraries() {
   std::string lines;
   dl_iterate_phdr(
       [](dl_phdr_info* info, std::size_t, void* out) {
@@ -59,16 +58,9 @@ std::string librariesAtStart() {
       &lines);
   return lines;
 }
-const std::string kLibrariesAtStart = librariesAtStart();
-
-// The running program's bytes and libraries: whatever was rebuilt or
-// upgraded renders anew; none where the program cannot be read.
-std::optional<std::string> programIdentity() {
-  static const std::optional<std::uint64_t> bytes = contentHash("/proc/self/exe");
-  if (!bytes) return std::nullopt;
-  std::ostringstream text;
-  text << "program " << std::hex << *bytes << '\n' << kLibrariesAtStart;
-  return text.str();
+std::optional<std::string>& programAtStart() {
+  static std::optional<std::string> identity;
+  return identity;
 }
 
 // Every plane of `image`, in one order for writing and reading.
@@ -85,17 +77,23 @@ void visitPlanes(AnImage& image, Visit visit) {
   visit(image.texcoord);
 }
 
-// The reference files least recently used removed until the rest fit `budget`.
+// A writer killed between its write and its rename leaves its temporary
+// file (cache_folder.h); one this old is no live writer's.
+constexpr auto kAbandoned = std::chrono::hours(1);
+
+// The reference files least recently used removed until the rest fit
+// `budget`; abandoned temporary files removed, live ones left to their writers.
 void prune(const fs::path& directory, std::uintmax_t budget) {
   std::vector<std::pair<fs::file_time_type, fs::path>> files;
   std::uintmax_t total = 0;
   std::error_code error;
   for (const fs::directory_entry& entry : fs::directory_iterator(directory, error)) {
-    // Another writer's temporary file is not one of them (cache_folder.h).
     const std::string name = entry.path().filename().string();
-    if (!entry.is_regular_file(error) || name.rfind(std::string(kFilePrefix) + "-", 0) != 0 ||
-        entry.path().extension() != ".bin")
+    if (!entry.is_regular_file(error) || name.rfind(std::string(kFilePrefix) + "-", 0) != 0) continue;
+    if (entry.path().extension() != ".bin") {
+      if (entry.last_write_time(error) < fs::file_time_type::clock::now() - kAbandoned) fs::remove(entry.path(), error);
       continue;
+    }
     total += entry.file_size(error);
     files.emplace_back(entry.last_write_time(error), entry.path());
   }
@@ -153,8 +151,16 @@ std::optional<CachedReference> referenceFromPayload(const std::vector<char>& pay
   return reference;
 }
 
+void recordProgramAtStart() {
+  const std::optional<std::uint64_t> bytes = contentHash("/proc/self/exe");
+  if (!bytes) return;
+  std::ostringstream text;
+  text << "program " << std::hex << *bytes << '\n' << mappedLibraries();
+  programAtStart() = text.str();
+}
+
 std::string referenceKey(const scene::Scene& scene, const std::vector<fs::path>& inputs, const std::string& shapedBy) {
-  const std::optional<std::string> program = programIdentity();
+  const std::optional<std::string>& program = programAtStart();
   if (!program) return {};
   std::ostringstream key;
   key << "facet parity reference v1 " FACET_VERSION_STRING "\n" << *program;
@@ -167,6 +173,10 @@ std::string referenceKey(const scene::Scene& scene, const std::vector<fs::path>&
       << "settings " << renderSettingsText(scene, "parity") << " digest " << settingsDigest(scene, "parity") << '\n'
       << "first seed " << scene::estimateSeed(scene).value_or(0) << '\n';
   return key.str();
+}
+
+std::string rendersKey(const std::string& key, int renders) {
+  return key.empty() ? key : key + "renders " + std::to_string(renders) + '\n';
 }
 
 std::uintmax_t referenceBytes(int width, int height, int renders) {

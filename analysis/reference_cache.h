@@ -34,16 +34,24 @@ struct CachedReference {
   void add(const Image& render);
 };
 
-// What decides `scene`'s reference renders, but for how many there are: this
-// program's own bytes and the shared libraries it started with (a rebuild
-// or an upgrade renders anew, a new Vulkan driver does not), the contents of
-// every file the scene was read from (`inputs`, scenes/input_file.h's log),
-// `shapedBy` (what else made the scene what it is: the command line's edits
-// and overrides), the settings the scene renders with and its first seed.
-// Empty where the program or an input cannot be read: then nothing is
-// cached.
+// Records the running program's bytes and the shared libraries it has
+// mapped: a program that caches references calls it first thing in main,
+// before any Vulkan driver is loaded, so that a rebuild or an upgrade
+// renders anew and a new driver does not.
+void recordProgramAtStart();
+
+// What decides `scene`'s reference renders, but for how many there are: the
+// program recordProgramAtStart recorded, the contents of every file the
+// scene was read from (`inputs`, scenes/input_file.h's log), `shapedBy`
+// (what else made the scene what it is: the command line's edits and
+// overrides), the settings the scene renders with and its first seed. Empty
+// where the program was not recorded (the APIs) or it or an input cannot be
+// read: then nothing is cached.
 std::string referenceKey(const scene::Scene& scene, const std::vector<std::filesystem::path>& inputs,
                          const std::string& shapedBy);
+
+// `key` (referenceKey's) for a run of `renders` renders; empty for an empty key.
+std::string rendersKey(const std::string& key, int renders);
 
 // The bytes `renders` renders of width x height take in a cache file.
 std::uintmax_t referenceBytes(int width, int height, int renders);

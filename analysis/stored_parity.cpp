@@ -16,16 +16,40 @@ namespace {
 struct StoredRender {
   std::filesystem::path file;
   ExrProvenance made;
+  std::optional<std::uint32_t> seed;  // of its random numbers (seedOf); none without an environment
 };
+
+// The seed of a render's random numbers (its settings' iblSeed), where it
+// has an environment; without one its numbers are fixed. A file whose
+// facetEstimateSeed says another is not one facet wrote.
+std::optional<std::uint32_t> seedOf(const std::filesystem::path& file, const ExrProvenance& made) {
+  const std::map<std::string, std::string> fields = settingsFields(made.renderSettings);
+  const auto seed = fields.find("iblSeed");
+  if (seed == fields.end()) return std::nullopt;
+  std::size_t end = 0;
+  unsigned long value = 0;
+  try {
+    value = std::stoul(seed->second, &end);
+  } catch (const std::exception&) {
+  }
+  if (end == 0 || end != seed->second.size() || value > UINT32_MAX ||
+      (made.estimateSeed && *made.estimateSeed != value))
+    throw std::invalid_argument(file.string() + ": " + kRenderSettingsAttribute + ": iblSeed '" + seed->second +
+                                "' is not the render's seed (an integer 0..4294967295, its " + kEstimateSeedAttribute +
+                                " where it has one)");
+  return std::uint32_t(value);
+}
 
 // An unreadable file is bad input, not an internal error.
 StoredRender readProvenance(const std::filesystem::path& file) {
   scene::checkTileFile(file, "the render");
+  ExrProvenance made;
   try {
-    return {file, readExrProvenance(file)};
+    made = readExrProvenance(file);
   } catch (const std::runtime_error& e) {
     throw std::invalid_argument(e.what());
   }
+  return {file, made, seedOf(file, made)};
 }
 
 // So is an EXR without the ids layer, whose pixels would all read as missed
@@ -80,47 +104,22 @@ void checkOnePicture(const std::vector<StoredRender>& set) {
   }
 }
 
-// The seed of a render's random numbers (its settings' iblSeed), where it
-// has an environment; without one its numbers are fixed. A file whose
-// facetEstimateSeed says another is not one facet wrote.
-std::optional<std::uint32_t> seedOf(const StoredRender& r) {
-  const std::map<std::string, std::string> fields = settingsFields(r.made.renderSettings);
-  const auto seed = fields.find("iblSeed");
-  if (seed == fields.end()) return std::nullopt;
-  std::size_t end = 0;
-  unsigned long value = 0;
-  try {
-    value = std::stoul(seed->second, &end);
-  } catch (const std::exception&) {
-  }
-  if (end == 0 || end != seed->second.size() || value > UINT32_MAX ||
-      (r.made.estimateSeed && *r.made.estimateSeed != value))
-    throw std::invalid_argument(r.file.string() + ": " + kRenderSettingsAttribute + ": iblSeed '" + seed->second +
-                                "' is not the render's seed (an integer 0..4294967295, its " + kEstimateSeedAttribute +
-                                " where it has one)");
-  return std::uint32_t(value);
-}
-
 // The set in the order of its seeds, each seed once.
-std::vector<StoredRender> bySeed(const std::vector<StoredRender>& set) {
-  std::vector<std::pair<std::optional<std::uint32_t>, const StoredRender*>> seeded;
-  for (const StoredRender& r : set) seeded.emplace_back(seedOf(r), &r);
-  std::stable_sort(seeded.begin(), seeded.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  std::vector<StoredRender> ordered;
-  for (std::size_t i = 0; i < seeded.size(); ++i) {
-    if (i > 0 && seeded[i].first && seeded[i].first == seeded[i - 1].first)
-      throw std::invalid_argument(seeded[i - 1].second->file.string() + " and " + seeded[i].second->file.string() +
-                                  " are both seed " + std::to_string(*seeded[i].first) +
+std::vector<StoredRender> bySeed(std::vector<StoredRender> set) {
+  std::stable_sort(set.begin(), set.end(),
+                   [](const StoredRender& a, const StoredRender& b) { return a.seed < b.seed; });
+  for (std::size_t i = 1; i < set.size(); ++i)
+    if (set[i].seed && set[i].seed == set[i - 1].seed)
+      throw std::invalid_argument(set[i - 1].file.string() + " and " + set[i].file.string() + " are both seed " +
+                                  std::to_string(*set[i].seed) +
                                   ": renders of one set are paired by their seeds, each once");
-    ordered.push_back(*seeded[i].second);
-  }
-  return ordered;
+  return set;
 }
 
 std::string seedList(const std::vector<StoredRender>& set) {
   std::string out;
   for (const StoredRender& r : set)
-    if (const auto seed = seedOf(r)) out += (out.empty() ? "" : ", ") + std::to_string(*seed);
+    if (r.seed) out += (out.empty() ? "" : ", ") + std::to_string(*r.seed);
   return out;
 }
 
@@ -152,11 +151,11 @@ bool pairBySeed(std::vector<StoredRender>& references, std::vector<StoredRender>
   if (estimate && k == 1)
     out.warnings.push_back(candidate.file.string() +
                            ": one render of a Monte Carlo estimate is judged pixel by pixel, where noise the "
-                           "backends do not share fails it: give renders seeds apart (--seed) for the paired "
+                           "backends do not share fails it: give renders seeds apart (--seeds) for the paired "
                            "t-test (docs/parity.md)");
   nlohmann::json seeds = nlohmann::json::array();
   for (const StoredRender& r : references)
-    if (const auto seed = seedOf(r)) seeds.push_back(*seed);
+    if (r.seed) seeds.push_back(*r.seed);
   out.judged.settings = {{"pictureDigest", reference.made.pictureDigest},
                          {"text", reference.made.renderSettings},
                          {"rendersPerBackend", k},

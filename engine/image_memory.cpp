@@ -21,14 +21,21 @@ constexpr std::uint64_t kImageBytesPerPixel =
 constexpr std::uint64_t kWorkingBytesPerPixel = 8;
 constexpr std::uint64_t kGpuBandBytes = std::uint64_t(64) << 20;
 
+std::uint64_t bytesNeeded(const scene::Scene& scene, int images, const std::optional<PixelRect>& crop) {
+  const std::uint64_t pixels =
+      crop ? crop->pixelCount() : std::uint64_t(scene.render.width) * std::uint64_t(scene.render.height);
+  return pixels * (std::uint64_t(images) * kImageBytesPerPixel + kWorkingBytesPerPixel) + kGpuBandBytes;
+}
+
 }  // namespace
+
+bool imagesFitInMemory(const scene::Scene& scene, int images, const std::optional<PixelRect>& crop) {
+  return bytesNeeded(scene, images, crop) <= scene::memoryLimit().bytes;
+}
 
 void checkImagesFitInMemory(const scene::Scene& scene, int images, const std::string& sizeSource,
                             const std::optional<PixelRect>& crop) {
-  const std::uint64_t pixels =
-      crop ? crop->pixelCount() : std::uint64_t(scene.render.width) * std::uint64_t(scene.render.height);
-  const std::uint64_t needed =
-      pixels * (std::uint64_t(images) * kImageBytesPerPixel + kWorkingBytesPerPixel) + kGpuBandBytes;
+  const std::uint64_t needed = bytesNeeded(scene, images, crop);
   const scene::MemoryLimit limit = scene::memoryLimit();
   if (needed > limit.bytes)
     throw std::invalid_argument(

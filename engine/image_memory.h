@@ -11,6 +11,10 @@
 
 namespace facet {
 
+// Whether `images` images of the scene's size (or of the crop) fit in
+// scene::memoryLimit().
+bool imagesFitInMemory(const scene::Scene& scene, int images, const std::optional<PixelRect>& crop = {});
+
 // Throws std::invalid_argument unless `images` images of the scene's size,
 // or of the crop of it that is rendered, fit in scene::memoryLimit();
 // `sizeSource` names where the size came from.

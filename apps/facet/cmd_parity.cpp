@@ -19,6 +19,7 @@
 #include "commands.h"
 #include "engine/renderer.h"
 #include "exit_codes.h"
+#include "farm_options.h"
 #include "material_options.h"
 #include "parity_options.h"
 #include "parity_output.h"
@@ -165,7 +166,7 @@ void addParityCommand(CLI::App& app) {
   c->add_option("--renders", o->renders,
                 "Sampled or filtered lighting and paths: renders per backend, seeds apart, for the paired t-test "
                 "(1: one render each, judged by tolerance alone)")
-      ->check(CLI::Range(1, 1024))
+      ->check(CLI::Range(1, kMostSeeds))
       ->capture_default_str();
   c->add_flag("--fresh-reference", o->freshReference,
               "Render the CPU reference even where facet's cache folder holds it for the same scene, files, flags "

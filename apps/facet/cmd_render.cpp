@@ -100,28 +100,34 @@ void chooseOutputs(RenderCommandOptions& o, bool outputGiven) {
                                 "': a --tile render writes an EXR only; facet merge --png writes the preview");
 }
 
-// A single frame or seed may keep a name without '#'; a range needs it.
+// A job per number (a frame's or a seed's, `what`), '#' in the outputs
+// standing for it; a single number may keep a name without '#', a range
+// needs it.
+template <class Number, class Job>
+std::vector<RenderJob> numberedJobs(const RenderCommandOptions& o, const std::vector<Number>& numbers,
+                                    const std::string& what, Job job) {
+  auto name = [&](const char* flag, const std::string& pattern, Number number) {
+    const bool numbered = numbers.size() > 1 || pattern.find('#') != std::string::npos;
+    return pattern.empty() || !numbered ? pattern : framePath(flag, pattern, int(number), what);
+  };
+  std::vector<RenderJob> jobs;
+  for (Number number : numbers)
+    jobs.push_back(job(number, name("-o", o.exr, number), name(o.pngFlag.c_str(), o.png, number)));
+  return jobs;
+}
+
 std::vector<RenderJob> renderJobs(const RenderCommandOptions& o) {
   if (const std::vector<std::uint32_t> seeds = chosenSeeds(o.farm); !seeds.empty()) {
     if (o.scene_overrides.seed) throw std::invalid_argument("--seed, --seeds: give one of them");
-    auto name = [&](const char* flag, const std::string& pattern, std::uint32_t seed) {
-      const bool numbered = seeds.size() > 1 || pattern.find('#') != std::string::npos;
-      return pattern.empty() || !numbered ? pattern : framePath(flag, pattern, int(seed), "seed");
-    };
-    std::vector<RenderJob> jobs;
-    for (std::uint32_t seed : seeds)
-      jobs.push_back({std::nullopt, name("-o", o.exr, seed), name(o.pngFlag.c_str(), o.png, seed), seed});
-    return jobs;
+    return numberedJobs(o, seeds, "seed", [](std::uint32_t seed, std::string exr, std::string png) {
+      return RenderJob{std::nullopt, std::move(exr), std::move(png), seed};
+    });
   }
   const std::vector<int> frames = chosenFrames(o.farm);
   if (frames.empty()) return {{std::nullopt, o.exr, o.png}};
-  auto name = [&](const char* flag, const std::string& pattern, int frame) {
-    const bool numbered = frames.size() > 1 || pattern.find('#') != std::string::npos;
-    return pattern.empty() || !numbered ? pattern : framePath(flag, pattern, frame);
-  };
-  std::vector<RenderJob> jobs;
-  for (int frame : frames) jobs.push_back({frame, name("-o", o.exr, frame), name(o.pngFlag.c_str(), o.png, frame)});
-  return jobs;
+  return numberedJobs(o, frames, "frame", [](int frame, std::string exr, std::string png) {
+    return RenderJob{frame, std::move(exr), std::move(png)};
+  });
 }
 
 // Every output of every frame is checked before the first render, and each
@@ -256,9 +262,7 @@ void runRender(const RenderCommandOptions& o) {
   const std::optional<PixelRect> crop = chosenCrop(o.farm, width, height);
   checkImagesFitInMemory(scene, 1, o.scene_overrides.size.empty() ? o.scene + ": image size" : "--size", crop);
   std::vector<std::string> warnings = sceneWarnings(scene);
-  if (!o.farm.seeds.empty() && !scene.environment)
-    warnings.push_back("--seeds " + o.farm.seeds +
-                       ": changes nothing here: without an environment the scene's random numbers are fixed");
+  if (o.farm.seedsGiven && !scene.environment) warnings.push_back(seedChangesNothing("--seeds " + o.farm.seeds));
   printWarnings(warnings, o.farm.quiet || o.farm.json);
   const Backend backend = o.backend == "cpu" ? Backend::Cpu : Backend::Gpu;
   const unsigned threads = chosenThreads(o.farm);
@@ -313,9 +317,9 @@ void addRenderCommand(CLI::App& app) {
   auto o = std::make_shared<RenderCommandOptions>();
   auto* c = app.add_subcommand("render", "Render a scene (.json), a control cage (.obj) or a glTF file");
   c->add_option("scene", o->scene, "Scene file")->required()->check(CLI::ExistingFile);
-  auto* output =
-      c->add_option("-o,--output", o->output,
-                    "An .exr with the beauty and the --aovs layers, or a .png preview ('#' for the frame number)");
+  auto* output = c->add_option(
+      "-o,--output", o->output,
+      "An .exr with the beauty and the --aovs layers, or a .png preview ('#' for the frame or seed number)");
   c->add_option("--png", o->png, "An 8-bit sRGB preview, beside -o's EXR or alone");
   addPreviewOptions(*c, o->preview);
   addSceneEditOptions(*c, o->edits);

@@ -31,9 +31,14 @@ void addFarmOptions(CLI::App& command, FarmOptions& o) {
                                     "frame f of N at 2 pi f / N")
                         ->check(CLI::Range(1, 1000000));
   command
-      .add_option("--seeds", o.seeds,
-                  "Render the still once per seed A to B (A-B), in one process: a golden set for facet compare; '#' "
-                  "in -o and --png stands for the seed, zero-padded")
+      .add_option_function<std::string>(
+          "--seeds",
+          [&o](const std::string& range) {
+            o.seeds = range;
+            o.seedsGiven = true;
+          },
+          "Render the still once per seed A to B (A-B), in one process: a golden set for facet compare; '#' in -o "
+          "and --png stands for the seed, zero-padded")
       ->excludes(frames)
       ->excludes(frame)
       ->excludes(turntable);
@@ -114,10 +119,10 @@ std::vector<int> chosenFrames(const FarmOptions& o) {
 }
 
 std::vector<std::uint32_t> chosenSeeds(const FarmOptions& o) {
-  if (o.seeds.empty()) return {};
+  if (!o.seedsGiven) return {};
   const std::optional<std::vector<int>> v = wholeNumbers(o.seeds, "-");
   if (!v || v->size() != 2 || (*v)[0] < 0 || (*v)[1] < (*v)[0])
-    throw std::invalid_argument("--seeds '" + o.seeds + "': expected A-B with 0 <= A <= B");
+    throw std::invalid_argument("--seeds '" + o.seeds + "': expected A-B with 0 <= A <= B <= 2147483647");
   if ((long long)(*v)[1] - (*v)[0] + 1 > kMostSeeds)
     throw std::invalid_argument("--seeds '" + o.seeds + "': more than " + std::to_string(kMostSeeds) +
                                 " seeds in one command");

@@ -25,6 +25,7 @@ struct FarmOptions {
   std::optional<int> frame;
   std::optional<int> turntable;  // frames in a full turn
   std::string seeds;             // A-B: a render per seed
+  bool seedsGiven = false;
   std::string turn = "model";    // what it turns: model or environment
   std::optional<unsigned> threads;
   bool quiet = false;
@@ -44,8 +45,8 @@ constexpr long long kMostFrames = 1000000;
 // The frames to render, in order; empty for a still (no frame flag).
 std::vector<int> chosenFrames(const FarmOptions& options);
 
-// A command renders at most this many seeds, as parity renders at most this many pairs.
-constexpr long long kMostSeeds = 1024;
+// A command renders at most this many seeds: render --seeds and parity --renders.
+constexpr int kMostSeeds = 1024;
 
 // The seeds to render, in order; empty without --seeds.
 std::vector<std::uint32_t> chosenSeeds(const FarmOptions& options);

@@ -10,6 +10,7 @@
 #include <new>
 #include <string>
 
+#include "analysis/reference_cache.h"
 #include "analysis/stored_parity.h"
 #include "commands.h"
 #include "engine/gpu/gpu.h"
@@ -48,6 +49,7 @@ int fail(facet::cli::ExitCode code, const std::string& message) {
 
 int main(int argc, char** argv) {
   using namespace facet::cli;
+  facet::analysis::recordProgramAtStart();  // before any Vulkan driver is loaded
   CLI::App app{"facet: physically based materials on subdivision surfaces, GPU and CPU"};
   app.set_version_flag("--version", "facet " FACET_VERSION_STRING);
   app.require_subcommand(1);

@@ -41,9 +41,7 @@ void applyEnvironmentOverrides(const SceneOverrides& o, scene::Scene& scene) {
     scene.environment->map = std::make_shared<const scene::EnvironmentMap>(scene::loadEnvironmentMap(o.environment));
   }
   // A script renders every scene of a folder seeds apart, whether or not it has an environment.
-  if (o.seed && !scene.environment)
-    scene.warnings.push_back("--seed " + std::to_string(*o.seed) +
-                             ": changes nothing here: without an environment the scene's random numbers are fixed");
+  if (o.seed && !scene.environment) scene.warnings.push_back(seedChangesNothing("--seed " + std::to_string(*o.seed)));
   const bool anyEnvironmentFlag = o.environmentIntensity || o.environmentRotation || !o.ibl.empty() || o.iblSamples ||
                                   !o.occlusion.empty() || (o.seed && scene.environment);
   if (!anyEnvironmentFlag) return;
@@ -118,6 +116,10 @@ void addEnergyCompensationOption(CLI::App& command, std::string& onOrOff) {
                   "Multiple-scattering compensation of every material's specular lobe (default: each material's "
                   "energy_compensation, off)")
       ->check(CLI::IsMember({"on", "off"}));
+}
+
+std::string seedChangesNothing(const std::string& given) {
+  return given + ": changes nothing here: without an environment the scene's random numbers are fixed";
 }
 
 std::string describeEnvironment(const scene::Environment& e) {

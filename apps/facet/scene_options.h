@@ -46,6 +46,10 @@ void addEnvironmentOptions(CLI::App& command, SceneOverrides& overrides);
 // std::invalid_argument naming the flag.
 void applySceneOverrides(const SceneOverrides& overrides, scene::Scene& scene);
 
+// The warning for a seed given (`given`: "--seed 3") to a scene without an
+// environment, whose random numbers are fixed.
+std::string seedChangesNothing(const std::string& given);
+
 // --energy-compensation on|off alone: sets every material's flag; "" keeps
 // what the scene chose.
 void addEnergyCompensationOption(CLI::App& command, std::string& onOrOff);

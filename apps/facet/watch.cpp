@@ -92,9 +92,9 @@ void checkWatchFlags(const CLI::App& command, const WatchOptions& options, const
     return;
   }
   const std::pair<const char*, bool> refused[] = {
-      {"--frames", farm.framesGiven},  {"--frame", farm.frame.has_value()}, {"--turntable", farm.turntable.has_value()},
-      {"--tile", !farm.tile.empty()},  {"--crop", !farm.crop.empty()},      {"--json", farm.json},
-      {"--seeds", !farm.seeds.empty()}};
+      {"--frames", farm.framesGiven}, {"--frame", farm.frame.has_value()}, {"--turntable", farm.turntable.has_value()},
+      {"--tile", !farm.tile.empty()}, {"--crop", !farm.crop.empty()},      {"--json", farm.json},
+      {"--seeds", farm.seedsGiven}};
   for (const auto& [flag, given] : refused)
     if (given)
       throw std::invalid_argument(std::string("--watch: cannot be combined with ") + flag +

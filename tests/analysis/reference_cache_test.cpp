@@ -22,6 +22,7 @@ class ReferenceCache : public testing::TempDirTest {
  protected:
   void SetUp() override {
     TempDirTest::SetUp();
+    recordProgramAtStart();
     cacheFolder_.emplace("FACET_CACHE_DIR", (dir_ / "cache").string());
   }
   void TearDown() override {
@@ -90,6 +91,8 @@ TEST_F(ReferenceCache, TheKeyFollowsEveryInputEveryFlagAndTheSettings) {
   EXPECT_NE(referenceKey(wider, {input}, "size 16x12"), key);
   std::ofstream(input) << "v 0 0 1\n";  // the same path, other contents
   EXPECT_NE(referenceKey(scene, {input}, "size 16x12"), key);
+  EXPECT_NE(rendersKey(key, 4), rendersKey(key, 8));
+  EXPECT_EQ(rendersKey("", 4), "");
   // A file that can no longer be read: no key, nothing cached.
   fs::remove(input);
   EXPECT_EQ(referenceKey(scene, {input}, "size 16x12"), "");
@@ -122,16 +125,21 @@ TEST_F(ReferenceCache, AFileHoldsThePlanesTheByteCountSays) {
   EXPECT_GT(referenceBytes(20, 20, 3) + 4096, fs::file_size(referenceFiles().at(0)));
 }
 
-// Another writer's temporary file is not the cache's to remove.
-TEST_F(ReferenceCache, TheBudgetLeavesOtherWritersTemporaryFiles) {
+// Another writer's temporary file is not the cache's to remove, unless its writer is long gone.
+TEST_F(ReferenceCache, TheBudgetLeavesLiveWritersTemporaryFiles) {
   storeReference("key", renders(2));
   const std::uintmax_t one = fs::file_size(referenceFiles().at(0));
   const fs::path temporary = referenceFiles().at(0).string() + ".tmp123";
   std::ofstream(temporary) << std::string(3 * one, 'x');
+  const fs::path abandoned = referenceFiles().at(0).string() + ".tmp456";
+  std::ofstream(abandoned) << "x";
+  fs::last_write_time(abandoned, fs::file_time_type::clock::now() - std::chrono::hours(2));
   // Both references fit; counted, the temporary file would not.
   storeReference("other", renders(2), 2 * one + one / 2);
   EXPECT_TRUE(fs::exists(temporary));
   EXPECT_TRUE(loadReference("key", 20, 20, 2));
+  // A temporary file hours old is no live writer's.
+  EXPECT_FALSE(fs::exists(abandoned));
 }
 
 }  // namespace

@@ -51,7 +51,8 @@ TEST(ApiWatch, AChangeToTheFileRendersTheChangedScene) {
 }
 
 TEST(ApiWatch, AGltfIsWatchedInTheMaterialVariantNamed) {
-  const std::string file = writeScene("watched_variants.gltf", kVariantTriangle).string();
+  // A triangle in material "red", which its variant "blue" maps to "blue", each of its own colour.
+  const std::string file = std::string(FACET_TEST_DATA_DIR) + "/variant_triangle.gltf";
   std::vector<facet::WatchPass> seen;
   facet::WatchSettings blue = quickWatch(1, 0);
   blue.variant = "blue";

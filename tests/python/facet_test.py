@@ -12,11 +12,12 @@ import numpy as np
 import OpenImageIO as oiio
 
 import facet
-from variant_triangle import write_variant_triangle
 
 FACET = os.environ["FACET_BINARY"]
 EXAMPLES = pathlib.Path(os.environ["FACET_EXAMPLES_DIR"])
 WORK = pathlib.Path(os.environ["FACET_WORK_DIR"])
+# A glTF triangle in material "red", which its variant "blue" maps to "blue", each of its own colour.
+VARIANT_TRIANGLE = pathlib.Path(__file__).resolve().parent.parent / "scenes" / "data" / "variant_triangle.gltf"
 
 
 def cli(*args):
@@ -276,7 +277,7 @@ class Scenes(unittest.TestCase):
 
     def test_a_gltf_loads_in_the_material_variant_named_as_on_the_command_line(self):
         WORK.mkdir(parents=True, exist_ok=True)
-        path = write_variant_triangle(WORK / "variants.gltf")
+        path = VARIANT_TRIANGLE
         self.assertEqual(facet.load_scene(path).objects[0].material, "red")
         self.assertEqual(facet.load_scene(path, variant="blue").objects[0].material, "blue")
         expected = cli_error("render", path, "--variant", "green", "-o", WORK / "variant.exr")

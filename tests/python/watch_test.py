@@ -10,10 +10,11 @@ import unittest
 import numpy as np
 
 import facet
-from variant_triangle import write_variant_triangle
 
 EXAMPLES = pathlib.Path(os.environ["FACET_EXAMPLES_DIR"])
 WORK = pathlib.Path(os.environ["FACET_WORK_DIR"]) / "watch"
+# A glTF triangle in material "red", which its variant "blue" maps to "blue", each of its own colour.
+VARIANT_TRIANGLE = pathlib.Path(__file__).resolve().parent.parent / "scenes" / "data" / "variant_triangle.gltf"
 CUBE = EXAMPLES.parent / "cages" / "cube.obj"
 QUICK = dict(size=(16, 16), backend="cpu", spp=1)
 
@@ -74,7 +75,7 @@ class Watch(unittest.TestCase):
             self.renderer.watch(path, on_pass, passes=1, on_bad_input=on_bad_input, **QUICK)
 
     def test_a_gltf_is_watched_in_the_material_variant_named(self):
-        path = write_variant_triangle(WORK / "variants.gltf")
+        path = VARIANT_TRIANGLE
         seen = []
         self.renderer.watch(path, lambda p: seen.append(p) or False, passes=1, variant="blue", **QUICK)
         blue = self.renderer.render(facet.load_scene(path, variant="blue"), **QUICK)["beauty"]
