@@ -58,9 +58,17 @@ std::string mappedLibraries() {
       &lines);
   return lines;
 }
-std::optional<std::string>& programAtStart() {
-  static std::optional<std::string> identity;
-  return identity;
+// The shared libraries recordProgramAtStart saw; none where it was not called.
+std::optional<std::string>& librariesAtStart() {
+  static std::optional<std::string> libraries;
+  return libraries;
+}
+
+// The program's bytes, hashed once, when a key first needs them: the
+// command that caches pays for it, the others never do.
+std::optional<std::uint64_t> programBytes() {
+  static const std::optional<std::uint64_t> hash = contentHash("/proc/self/exe");
+  return hash;
 }
 
 // Every plane of `image`, in one order for writing and reading.
@@ -151,19 +159,15 @@ std::optional<CachedReference> referenceFromPayload(const std::vector<char>& pay
   return reference;
 }
 
-void recordProgramAtStart() {
-  const std::optional<std::uint64_t> bytes = contentHash("/proc/self/exe");
-  if (!bytes) return;
-  std::ostringstream text;
-  text << "program " << std::hex << *bytes << '\n' << mappedLibraries();
-  programAtStart() = text.str();
-}
+void recordProgramAtStart() { librariesAtStart() = mappedLibraries(); }
 
 std::string referenceKey(const scene::Scene& scene, const std::vector<fs::path>& inputs, const std::string& shapedBy) {
-  const std::optional<std::string>& program = programAtStart();
-  if (!program) return {};
+  const std::optional<std::string>& libraries = librariesAtStart();
+  const std::optional<std::uint64_t> program = programBytes();
+  if (!libraries || !program) return {};
   std::ostringstream key;
-  key << "facet parity reference v1 " FACET_VERSION_STRING "\n" << *program;
+  key << "facet parity reference v1 " FACET_VERSION_STRING "\nprogram " << std::hex << *program << std::dec << '\n'
+      << *libraries;
   for (const fs::path& input : inputs) {
     const std::optional<std::uint64_t> hash = contentHash(input);
     if (!hash) return {};

@@ -34,10 +34,11 @@ struct CachedReference {
   void add(const Image& render);
 };
 
-// Records the running program's bytes and the shared libraries it has
-// mapped: a program that caches references calls it first thing in main,
-// before any Vulkan driver is loaded, so that a rebuild or an upgrade
-// renders anew and a new driver does not.
+// Records the shared libraries the running program has mapped: a program
+// that caches references calls it first thing in main, before any Vulkan
+// driver is loaded, so that an upgrade renders anew and a new driver does
+// not. (The program's own bytes, which make a rebuild render anew, are
+// hashed when a key first needs them.)
 void recordProgramAtStart();
 
 // What decides `scene`'s reference renders, but for how many there are: the
