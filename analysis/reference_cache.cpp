@@ -2,7 +2,6 @@
 
 #include <facet/version.h>
 
-#include <dlfcn.h>
 #include <link.h>
 #include <sys/stat.h>
 
