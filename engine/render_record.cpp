@@ -69,15 +69,18 @@ std::string fnv1aHex(const std::string& text) {
   return hex;
 }
 
-}  // namespace
-
-std::string settingsDigest(const scene::Scene& scene, const std::string& backend) {
-  std::string text = backend + '\n' + pictureText(scene);
+// settingsDigest of the scene whose pictureText is `picture`.
+std::string settingsDigestOf(const std::string& picture, const scene::Scene& scene, const std::string& backend) {
+  std::string text = backend + '\n' + picture;
   if (scene.environment) text += ' ' + std::to_string(scene.environment->seed);
   return fnv1aHex(text);
 }
 
-std::string pictureDigest(const scene::Scene& scene) { return fnv1aHex(pictureText(scene)); }
+}  // namespace
+
+std::string settingsDigest(const scene::Scene& scene, const std::string& backend) {
+  return settingsDigestOf(pictureText(scene), scene, backend);
+}
 
 std::string renderSettingsText(const scene::Scene& scene, const std::string& backend) {
   const scene::RenderSettings& r = scene.render;
@@ -110,11 +113,12 @@ std::string renderSettingsText(const scene::Scene& scene, const std::string& bac
 ExrOptions describedExr(const scene::Scene& scene, const std::string& backend, const PixelRect& window,
                         const ExrLayers& layers, bool halfBeauty) {
   const int width = scene.render.width, height = scene.render.height;
+  const std::string picture = pictureText(scene);  // the scene file read once for both digests
   ExrOptions exr;
-  exr.placement = ExrPlacement{window, width, height, settingsDigest(scene, backend)};
+  exr.placement = ExrPlacement{window, width, height, settingsDigestOf(picture, scene, backend)};
   exr.metadata = {
       exrCamera(scene.camera, width, height),
-      {"facet " FACET_VERSION_STRING, renderSettingsText(scene, backend), pictureDigest(scene), estimateSeed(scene)},
+      {"facet " FACET_VERSION_STRING, renderSettingsText(scene, backend), fnv1aHex(picture), estimateSeed(scene)},
       exrNames(scene)};
   exr.layers = layers;
   exr.halfBeauty = halfBeauty;

@@ -3,7 +3,9 @@
 // that `facet merge` joins only tiles of one render, and the digest and seed
 // by which `facet compare` pairs stored renders; those settings as a
 // line a person reads, for the EXR's facetRenderSettings attribute; and the
-// EXR header that carries them with the camera and the scene's names.
+// EXR header that carries them with the camera and the scene's names. The
+// picture digest is the settings digest without the backend and the seed:
+// two renders with one picture digest estimate one picture.
 #pragma once
 
 #include <string>
@@ -18,11 +20,6 @@ namespace facet {
 // (image size, camera, sampling, method, subdivision, environment) and the
 // backend. Files the scene names (cages, maps) count by path.
 std::string settingsDigest(const scene::Scene& scene, const std::string& backend);
-
-// The same digest without the backend and the seed: two renders with the
-// same picture digest estimate the same picture, whichever backend made
-// them and whichever random numbers they drew (`facet compare`).
-std::string pictureDigest(const scene::Scene& scene);
 
 // "backend=gpu size=512x512 spp=4 method=exact pixelTolerance=0.5
 // tessellationRate=auto ibl=prefiltered iblSamples=16 ...": the sampling,
