@@ -4,6 +4,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <string>
 #include <vector>
@@ -42,6 +43,10 @@ struct ControlCage {
   // Optional, one per faceVertexIndices entry: the authored shading normals
   // of a mesh rendered as authored (ignored when it is subdivided).
   std::vector<glm::dvec3> faceVertexNormals;
+  // Optional where it has authored normals, likewise one per corner: the
+  // mesh's tangents (glTF TANGENT, or MikkTSpace's), xyz along dP/du and w
+  // the sign that makes w (n x xyz) the bitangent pointing up the image.
+  std::vector<glm::dvec4> faceVertexTangents;
   // Optional texture coordinates, one face-varying channel as OpenSubdiv
   // takes it: the distinct values, and one index into them per
   // faceVertexIndices entry. Corners that share a vertex but not a value

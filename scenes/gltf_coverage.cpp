@@ -82,8 +82,8 @@ void collectExtensions(const tinygltf::Model& model, std::vector<std::pair<std::
   add(model.extensions, "");
 }
 
-// Whether material `index` would take a tangent: a normal map (its own or
-// its clear coat's) or an anisotropic lobe.
+}  // namespace
+
 bool usesTangents(const tinygltf::Model& model, int index) {
   if (index < 0 || std::size_t(index) >= model.materials.size()) return false;
   const tinygltf::Material& m = model.materials[std::size_t(index)];
@@ -91,8 +91,6 @@ bool usesTangents(const tinygltf::Model& model, int index) {
   const auto coat = m.extensions.find("KHR_materials_clearcoat");
   return coat != m.extensions.end() && coat->second.Has("clearcoatNormalTexture");
 }
-
-}  // namespace
 
 void checkExtensions(const tinygltf::Model& model, const GltfReader& reader) {
   for (const std::string& extension : model.extensionsRequired)
@@ -119,18 +117,19 @@ void warnOfIgnoredFeatures(const tinygltf::Model& model, GltfVariant variant, co
         const std::string where = at + ".attributes." + name;
         if (name.rfind("COLOR_", 0) == 0 && name != "COLOR_0")
           reader.warn(where, "only COLOR_0 is read; this set of vertex colours is not");
-        else if (name == "TANGENT" && usesTangents(model, variantMaterial(primitive, variant, reader, at)))
+        else if (name == "TANGENT" && primitive.attributes.count("NORMAL") == 0 &&
+                 usesTangents(model, variantMaterial(primitive, variant, reader, at)))
           reader.warn(where,
-                      "tangents are not read; a normal map's and an anisotropic lobe's tangent is dP/du of the "
-                      "texture coordinates");
+                      "is not read: a primitive without NORMAL is shaded flat, and its tangents are dP/du of "
+                      "the texture coordinates (glTF 2.0, 3.7.2.1)");
         else if (name.rfind("JOINTS_", 0) == 0 || name.rfind("WEIGHTS_", 0) == 0)
           reader.warn(where, "skinning is not read; meshes render in their bind pose");
       }
       for (std::size_t t = 0; t < primitive.targets.size(); ++t)
         for (const auto& [name, accessor] : primitive.targets[t])
-          if (name != "POSITION" && name != "NORMAL" && name != "TANGENT")  // tangents are warned of above
+          if (name != "POSITION" && name != "NORMAL" && name != "TANGENT")
             reader.warn(at + ".targets[" + std::to_string(t) + "]." + name,
-                        "a morph target's " + name + " is not read; its POSITION and NORMAL are");
+                        "a morph target's " + name + " is not read; its POSITION, NORMAL and TANGENT are");
     }
   if (!model.animations.empty()) reader.warn("animations", "animations are not read; the scene renders unanimated");
 }

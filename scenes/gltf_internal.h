@@ -163,8 +163,29 @@ DielectricSpecular applyTransmission(const tinygltf::Material& gltf, const std::
 // value per welded vertex and coordinate, so corners that share both stay
 // joined and the rest form seams. Each primitive's morph targets move its
 // POSITIONs and NORMALs by `weights` (one per target; morphWeights).
+// Where `tangentSet` names the texture coordinates of a material that takes
+// a tangent (tangentTexcoordSet) and the primitives have NORMALs, the cage
+// carries tangents: each primitive's TANGENT, else MikkTSpace's
+// (gltf_tangents.cpp).
 ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& primitives, const glm::dmat4& world,
-                   const std::vector<double>& weights, const GltfReader& reader, const std::string& where);
+                   const std::vector<double>& weights, std::optional<int> tangentSet, const GltfReader& reader,
+                   const std::string& where);
+
+// gltf_tangents.cpp. The set of texture coordinates material `index`'s
+// tangents follow where it takes one (usesTangents): its normal map's, else
+// TEXCOORD_0; none where it takes none.
+std::optional<int> tangentTexcoordSet(const tinygltf::Model& model, int index);
+// A primitive's TANGENTs (VEC4 FLOAT), moved by its morph targets' TANGENT
+// by `weights` and turned into the world by `world`; each checked finite,
+// nonzero and with a sign.
+std::vector<glm::dvec4> primitiveTangents(const tinygltf::Primitive& primitive, std::size_t vertices,
+                                          const glm::dmat4& world, const std::vector<double>& weights,
+                                          const GltfReader& reader, const std::string& at);
+// Fills the cage's corners whose tangent has w 0 (their primitive had no
+// TANGENT) with MikkTSpace's, generated from its positions, normals and
+// texture coordinates `set`; false, changing nothing, where the cage has no
+// such coordinates.
+bool completeTangents(ControlCage& cage, int set);
 
 // The weights of a mesh instance's morph targets (glTF 2.0, 3.7.2.2): the
 // node's, else the mesh's, else 0 each; checked against every primitive's
@@ -196,6 +217,9 @@ int variantMaterial(const tinygltf::Primitive& primitive, GltfVariant variant, c
 // used one it ignores and of the core features it does not render as written.
 void checkExtensions(const tinygltf::Model& model, const GltfReader& reader);
 void warnOfIgnoredFeatures(const tinygltf::Model& model, GltfVariant variant, const GltfReader& reader);
+// Whether material `index` would take a tangent: a normal map (its own or
+// its clear coat's) or an anisotropic lobe.
+bool usesTangents(const tinygltf::Model& model, int index);
 
 // gltf_nodes.cpp
 glm::dmat4 localTransform(const tinygltf::Node& node);

@@ -152,8 +152,45 @@ void morph(std::vector<double>& values, const tinygltf::Primitive& primitive, co
 
 }  // namespace
 
+namespace {
+
+// A primitive's NORMALs, moved by its morph targets by `weights` and turned
+// into the world by `world`'s normal matrix; each checked nonzero and finite.
+std::vector<glm::dvec3> primitiveNormals(const tinygltf::Primitive& primitive, std::size_t vertices,
+                                         const glm::dmat4& world, const std::vector<double>& weights,
+                                         const GltfReader& reader, const std::string& at) {
+  std::vector<double> n = reader.read(primitive.attributes.at("NORMAL"), at + ".NORMAL", kFloatVec3);
+  if (n.size() != 3 * vertices) reader.fail(at, "NORMAL and POSITION have different counts");
+  morph(n, primitive, "NORMAL", weights, reader, at);
+  const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(world)));
+  std::vector<glm::dvec3> normals;
+  for (std::size_t v = 0; v < vertices; ++v) {
+    const glm::dvec3 transformed = normalMatrix * glm::dvec3(n[3 * v], n[3 * v + 1], n[3 * v + 2]);
+    const double length = glm::length(transformed);
+    if (!(length > 0.0) || !std::isfinite(length))
+      reader.fail(at, "NORMAL " + std::to_string(v) + " is zero or not finite");
+    normals.push_back(transformed / length);
+  }
+  return normals;
+}
+
+// Under a mirroring node every triangle turns the other way: its last two
+// corners swap, with each per-corner attribute.
+void reverseMirroredWinding(ControlCage& cage) {
+  for (std::size_t f = 0; f < cage.faceVertexIndices.size(); f += 3) {
+    std::swap(cage.faceVertexIndices[f + 1], cage.faceVertexIndices[f + 2]);
+    if (!cage.faceVertexNormals.empty()) std::swap(cage.faceVertexNormals[f + 1], cage.faceVertexNormals[f + 2]);
+    if (!cage.faceVertexTangents.empty()) std::swap(cage.faceVertexTangents[f + 1], cage.faceVertexTangents[f + 2]);
+    for (std::vector<int>* corners : {&cage.faceVertexTexcoords, &cage.faceVertexTexcoords1, &cage.faceVertexColors})
+      if (!corners->empty()) std::swap((*corners)[f + 1], (*corners)[f + 2]);
+  }
+}
+
+}  // namespace
+
 ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& primitives, const glm::dmat4& world,
-                   const std::vector<double>& weights, const GltfReader& reader, const std::string& where) {
+                   const std::vector<double>& weights, std::optional<int> tangentSet, const GltfReader& reader,
+                   const std::string& where) {
   ControlCage cage;
   cage.source = where;
   std::map<std::tuple<double, double, double>, int> welded;
@@ -162,6 +199,7 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& p
                        [&](std::size_t p) { return mesh.primitives[p].attributes.count(attribute) != 0; });
   };
   const bool normals = everyPrimitiveHas("NORMAL");
+  const bool tangents = normals && tangentSet.has_value();
   // COLOR_0's alpha is not read: RGB multiplies the base colour.
   Attribute uv0{"TEXCOORD_0", &kTexcoord, 2}, uv1{"TEXCOORD_1", &kTexcoord, 2}, color{"COLOR_0", nullptr, 3};
   for (Attribute* a : {&uv0, &uv1, &color}) a->present = everyPrimitiveHas(a->name);
@@ -170,7 +208,6 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& p
       if (mesh.primitives[p].attributes.count("COLOR_0"))
         reader.warn(where + ".primitives[" + std::to_string(p) + "].attributes.COLOR_0",
                     "not every primitive of its material has COLOR_0, so the object's vertex colours are not read");
-  const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(world)));
   for (std::size_t p : primitives) {
     const tinygltf::Primitive& primitive = mesh.primitives[p];
     const std::string at = where + ".primitives[" + std::to_string(p) + "]";
@@ -179,21 +216,15 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& p
     std::vector<double> xyz = reader.read(position->second, at + ".POSITION", kFloatVec3);
     morph(xyz, primitive, "POSITION", weights, reader, at);
     std::vector<int> remap(xyz.size() / 3, -1);
-    std::vector<glm::dvec3> vertexNormals;
-    if (normals) {
-      std::vector<double> n = reader.read(primitive.attributes.at("NORMAL"), at + ".NORMAL", kFloatVec3);
-      if (n.size() != xyz.size()) reader.fail(at, "NORMAL and POSITION have different counts");
-      morph(n, primitive, "NORMAL", weights, reader, at);
-      for (std::size_t v = 0; v < n.size() / 3; ++v) {
-        const glm::dvec3 transformed = normalMatrix * glm::dvec3(n[3 * v], n[3 * v + 1], n[3 * v + 2]);
-        const double length = glm::length(transformed);
-        if (!(length > 0.0) || !std::isfinite(length))
-          reader.fail(at, "NORMAL " + std::to_string(v) + " is zero or not finite");
-        vertexNormals.push_back(transformed / length);
-      }
-    }
+    const std::vector<glm::dvec3> vertexNormals =
+        normals ? primitiveNormals(primitive, remap.size(), world, weights, reader, at) : std::vector<glm::dvec3>{};
     for (Attribute* a : {&uv0, &uv1, &color})
       if (a->present) a->perVertex = a->read(primitive, remap.size(), reader, at);
+    // w 0: MikkTSpace's, once the whole cage is known.
+    const std::vector<glm::dvec4> vertexTangents =
+        tangents && primitive.attributes.count("TANGENT")
+            ? primitiveTangents(primitive, remap.size(), world, weights, reader, at)
+            : std::vector<glm::dvec4>(tangents ? remap.size() : 0, glm::dvec4(0.0));
     std::vector<double> indices;
     if (primitive.indices >= 0) {
       indices = reader.read(primitive.indices, at + ".indices", kVertexIndex);
@@ -228,8 +259,10 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& p
       if (corners[0] == corners[1] || corners[1] == corners[2] || corners[0] == corners[2]) continue;
       cage.faceVertexCounts.push_back(3);
       cage.faceVertexIndices.insert(cage.faceVertexIndices.end(), corners, corners + 3);
-      if (normals)
-        for (std::size_t vertex : vertices) cage.faceVertexNormals.push_back(vertexNormals[vertex]);
+      for (std::size_t vertex : vertices) {
+        if (normals) cage.faceVertexNormals.push_back(vertexNormals[vertex]);
+        if (tangents) cage.faceVertexTangents.push_back(vertexTangents[vertex]);
+      }
       for (int c = 0; c < 3; ++c) {
         if (uv0.present) cage.faceVertexTexcoords.push_back(uv0.add(corners[c], vertices[c], cage.texcoords));
         if (uv1.present) cage.faceVertexTexcoords1.push_back(uv1.add(corners[c], vertices[c], cage.texcoords1));
@@ -237,13 +270,15 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& p
       }
     }
   }
-  if (glm::determinant(glm::dmat3(world)) < 0) {
-    for (std::size_t f = 0; f < cage.faceVertexIndices.size(); f += 3) {
-      std::swap(cage.faceVertexIndices[f + 1], cage.faceVertexIndices[f + 2]);
-      if (normals) std::swap(cage.faceVertexNormals[f + 1], cage.faceVertexNormals[f + 2]);
-      for (std::vector<int>* corners : {&cage.faceVertexTexcoords, &cage.faceVertexTexcoords1, &cage.faceVertexColors})
-        if (!corners->empty()) std::swap((*corners)[f + 1], (*corners)[f + 2]);
-    }
+  if (glm::determinant(glm::dmat3(world)) < 0) reverseMirroredWinding(cage);
+  const auto authored = [](const glm::dvec4& t) { return t.w != 0.0; };
+  if (!std::all_of(cage.faceVertexTangents.begin(), cage.faceVertexTangents.end(), authored) &&
+      !completeTangents(cage, *tangentSet)) {
+    // Without the coordinates there is nothing to generate from: shading takes the parametric tangent.
+    if (std::any_of(cage.faceVertexTangents.begin(), cage.faceVertexTangents.end(), authored))
+      reader.warn(where, "TANGENT is not read: some of its primitives lack it, and without TEXCOORD_" +
+                             std::to_string(*tangentSet) + " theirs cannot be generated");
+    cage.faceVertexTangents.clear();
   }
   return cage;
 }

@@ -313,7 +313,8 @@ void addMeshObjects(Scene& scene, const tinygltf::Model& model, const tinygltf::
   for (const auto& [material, primitives] : materialGroups(mesh, defaultMaterialIndex, variant, reader, meshWhere)) {
     Object object;
     object.name = objectName(mesh.name.empty() ? where : mesh.name, scene.objects.size() - firstObject);
-    object.cage = detail::toCage(mesh, primitives, world, weights, reader, meshWhere);
+    object.cage = detail::toCage(mesh, primitives, world, weights, detail::tangentTexcoordSet(model, material), reader,
+                                 meshWhere);
     if (object.cage.faceCount() == 0) continue;  // only triangles without area
     object.subdivision = Subdivision::None;
     object.material = material;

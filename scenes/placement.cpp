@@ -29,9 +29,14 @@ void transformCage(ControlCage& cage, const glm::dmat4& matrix) {
   for (glm::dvec3& p : cage.positions) p = glm::dvec3(matrix * glm::dvec4(p, 1.0));
   const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(matrix)));
   for (glm::dvec3& n : cage.faceVertexNormals) n = glm::normalize(normalMatrix * n);
-  if (glm::determinant(glm::dmat3(matrix)) >= 0) return;
+  // A mirror turns n x t against the mirrored bitangent: the sign flips with it.
+  const double handedness = glm::determinant(glm::dmat3(matrix)) < 0 ? -1.0 : 1.0;
+  for (glm::dvec4& t : cage.faceVertexTangents)
+    t = glm::dvec4(glm::normalize(glm::dmat3(matrix) * glm::dvec3(t)), handedness * t.w);
+  if (handedness > 0) return;
   reverseWinding(cage.faceVertexIndices, cage.faceVertexCounts);
   reverseWinding(cage.faceVertexNormals, cage.faceVertexCounts);
+  reverseWinding(cage.faceVertexTangents, cage.faceVertexCounts);
   reverseWinding(cage.faceVertexTexcoords, cage.faceVertexCounts);
   reverseWinding(cage.faceVertexTexcoords1, cage.faceVertexCounts);
   reverseWinding(cage.faceVertexColors, cage.faceVertexCounts);

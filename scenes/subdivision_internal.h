@@ -57,7 +57,8 @@ struct SubdivisionSurface::Impl {
   std::vector<Far::PatchTable::PatchHandle> handles;
   std::vector<PatchInfo> patches;
   std::vector<BezierPatch> bezierPatches;
-  std::vector<std::array<glm::dvec3, 4>> authoredNormals;  // per patch, or empty
+  std::vector<std::array<glm::dvec3, 4>> authoredNormals;   // per patch, or empty
+  std::vector<std::array<glm::dvec4, 4>> authoredTangents;  // per patch, or empty
   // Per channel (Channel's order), the cage has it when `fvar` (its
   // OpenSubdiv channel) is >= 0: its values, refined levels then local
   // points; and per patch the face-varying patch as OpenSubdiv has it and in

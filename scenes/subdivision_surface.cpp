@@ -17,36 +17,69 @@
 namespace facet::scene {
 namespace {
 
-// The authored normals at a bilinear patch's corners. On a quad face they are
-// its vertices' own; a face split once has patches through a vertex, two edge
-// midpoints and the centroid, whose normals are the normalized sums of the
-// normals there, as the split interpolates positions. Which a corner is
-// follows from its position (the refined points are exact averages).
-std::array<glm::dvec3, 4> cornerNormals(const ControlCage& cage, int face, int first,
-                                        const std::array<glm::dvec3, 4>& corners) {
+// Which of a face's corners (offsets from its first) each corner of a
+// bilinear patch of it stands on: on a quad face its own vertex; a face
+// split once has patches through a vertex, two edge midpoints and the
+// centroid, whose attributes are the sums of those there, as the split
+// interpolates positions. Which a corner is follows from its position (the
+// refined points are exact averages).
+std::array<std::vector<int>, 4> patchCornerSources(const ControlCage& cage, int face, int first,
+                                                   const std::array<glm::dvec3, 4>& corners) {
   const int count = cage.faceVertexCounts[std::size_t(face)];
   auto position = [&](int k) { return cage.positions[std::size_t(cage.faceVertexIndices[std::size_t(first + k)])]; };
-  auto normal = [&](int k) { return cage.faceVertexNormals[std::size_t(first + k)]; };
   // Candidates: each corner, each edge midpoint, the centroid.
-  std::vector<std::pair<glm::dvec3, glm::dvec3>> candidates;
-  glm::dvec3 centroid(0.0), centroidNormal(0.0);
+  std::vector<std::pair<glm::dvec3, std::vector<int>>> candidates;
+  glm::dvec3 centroid(0.0);
+  std::vector<int> all;
   for (int k = 0; k < count; ++k) {
     const int next = (k + 1) % count;
-    candidates.push_back({position(k), normal(k)});
-    candidates.push_back({0.5 * (position(k) + position(next)), normal(k) + normal(next)});
+    candidates.push_back({position(k), {k}});
+    candidates.push_back({0.5 * (position(k) + position(next)), {k, next}});
     centroid += position(k) / double(count);
-    centroidNormal += normal(k);
+    all.push_back(k);
   }
-  candidates.push_back({centroid, centroidNormal});
-  std::array<glm::dvec3, 4> normals;
+  candidates.push_back({centroid, all});
+  std::array<std::vector<int>, 4> sources;
   for (int c = 0; c < 4; ++c) {
     const auto nearest = std::min_element(candidates.begin(), candidates.end(), [&](const auto& a, const auto& b) {
       return glm::distance(a.first, corners[std::size_t(c)]) < glm::distance(b.first, corners[std::size_t(c)]);
     });
-    const double length = glm::length(nearest->second);
-    normals[std::size_t(c)] = length > 0.0 ? nearest->second / length : glm::dvec3(0.0);
+    sources[std::size_t(c)] = nearest->second;
+  }
+  return sources;
+}
+
+// The sum of a per-corner attribute over each patch corner's sources.
+template <class T>
+std::array<T, 4> summedAtCorners(const std::vector<T>& perCorner, int first,
+                                 const std::array<std::vector<int>, 4>& sources) {
+  std::array<T, 4> sums{};
+  for (std::size_t c = 0; c < 4; ++c)
+    for (int k : sources[c]) sums[c] += perCorner[std::size_t(first + k)];
+  return sums;
+}
+
+// The authored normals at a bilinear patch's corners: the sums normalized.
+std::array<glm::dvec3, 4> cornerNormals(const ControlCage& cage, int first,
+                                        const std::array<std::vector<int>, 4>& sources) {
+  std::array<glm::dvec3, 4> normals = summedAtCorners(cage.faceVertexNormals, first, sources);
+  for (glm::dvec3& n : normals) {
+    const double length = glm::length(n);
+    n = length > 0.0 ? n / length : glm::dvec3(0.0);
   }
   return normals;
+}
+
+// The mesh's tangents at a bilinear patch's corners: the sums' directions
+// normalized, and the sign most of the corners there carry.
+std::array<glm::dvec4, 4> cornerTangents(const ControlCage& cage, int first,
+                                         const std::array<std::vector<int>, 4>& sources) {
+  std::array<glm::dvec4, 4> tangents = summedAtCorners(cage.faceVertexTangents, first, sources);
+  for (glm::dvec4& t : tangents) {
+    const double length = glm::length(glm::dvec3(t));
+    t = glm::dvec4(length > 0.0 ? glm::dvec3(t) / length : glm::dvec3(0.0), t.w < 0.0 ? -1.0 : 1.0);
+  }
+  return tangents;
 }
 
 // The patch table's options: patches isolated to `level`, end caps of the
@@ -220,6 +253,11 @@ SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const Ref
     throw InputError(cage.source, 0, "authored normals",
                      std::to_string(cage.faceVertexNormals.size()) + " normals for " +
                          std::to_string(cage.faceVertexIndices.size()) + " face corners");
+  const bool withTangents = withNormals && !cage.faceVertexTangents.empty();
+  if (withTangents && cage.faceVertexTangents.size() != cage.faceVertexIndices.size())
+    throw InputError(cage.source, 0, "mesh tangents",
+                     std::to_string(cage.faceVertexTangents.size()) + " tangents for " +
+                         std::to_string(cage.faceVertexIndices.size()) + " face corners");
   const std::vector<int> starts = faceStarts(cage);
   int patchIndex = 0;
   for (int array = 0; array < table.GetNumPatchArrays(); ++array) {
@@ -243,8 +281,10 @@ SubdivisionSurface SubdivisionSurface::create(const ControlCage& cage, const Ref
       if (quads && withNormals) {
         std::array<glm::dvec3, 4> points;
         for (int k = 0; k < 4; ++k) points[k] = impl->points[cvs[k]].p;
-        impl->authoredNormals.push_back(
-            cornerNormals(cage, info.coarseFace, starts[std::size_t(info.coarseFace)], points));
+        const int first = starts[std::size_t(info.coarseFace)];
+        const std::array<std::vector<int>, 4> sources = patchCornerSources(cage, info.coarseFace, first, points);
+        impl->authoredNormals.push_back(cornerNormals(cage, first, sources));
+        if (withTangents) impl->authoredTangents.push_back(cornerTangents(cage, first, sources));
       }
       countPatch(stats, descriptor, param);
       extendBounds(impl->bounds, bezier);
@@ -279,6 +319,10 @@ const BezierPatch& SubdivisionSurface::bezierPatch(int index) const { return imp
 const std::array<glm::dvec3, 4>* SubdivisionSurface::authoredNormals(int index) const {
   return impl_->authoredNormals.empty() ? nullptr : &impl_->authoredNormals.at(std::size_t(index));
 }
+const std::array<glm::dvec4, 4>* SubdivisionSurface::authoredTangents(int index) const {
+  return impl_->authoredTangents.empty() ? nullptr : &impl_->authoredTangents.at(std::size_t(index));
+}
+bool SubdivisionSurface::hasAuthoredTangents() const { return !impl_->authoredTangents.empty(); }
 const Aabb& SubdivisionSurface::bounds() const { return impl_->bounds; }
 const SurfaceStatistics& SubdivisionSurface::statistics() const { return impl_->statistics; }
 

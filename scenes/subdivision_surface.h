@@ -48,6 +48,7 @@
 #include "scenes/control_cage.h"
 
 #include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
 
 #include <array>
 #include <cstddef>
@@ -143,6 +144,10 @@ class SubdivisionSurface {
   // corners (counter-clockwise from (0, 0), as its points), which shading
   // interpolates bilinearly; nullptr otherwise.
   const std::array<glm::dvec3, 4>* authoredNormals(int index) const;
+  // Where such a mesh also has tangents (ControlCage::faceVertexTangents),
+  // likewise at the four corners; nullptr otherwise.
+  const std::array<glm::dvec4, 4>* authoredTangents(int index) const;
+  bool hasAuthoredTangents() const;
 
   // The limit surface on patch `index` at face parameters (u, v).
   LimitPoint evaluatePatch(int index, double u, double v) const;

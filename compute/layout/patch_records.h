@@ -32,7 +32,8 @@ const uint FACET_PATCH_POINTS_GREGORY = 20u;
 struct PatchRecord {
   uint sourcePatch;    // OpenSubdiv patch index: the patch id in hits and AOVs
   uint coarseFace;     // the cage face the ptex face belongs to
-  uint firstNormal;    // a mesh as authored with normals: 4 texels of authored normals, else FACET_NO_NORMALS
+  uint firstNormal;  // a mesh as authored with normals: 4 texels of authored normals (then FACET_OBJECT_TANGENTS), else
+                     // FACET_NO_NORMALS
   uint firstTexcoord;  // a cage with face-varying channels: the first of their texels, else FACET_NO_TEXCOORDS
   float faceU0;
   float faceV0;

@@ -58,6 +58,10 @@ const uint FACET_OBJECT_SHADOW_CATCHER = 4u;
 const uint FACET_OBJECT_SEALED = 8u;
 // The preview's holdout (scene::Object::holdout): camera rays see black there and end; paths see it as it is.
 const uint FACET_OBJECT_HOLDOUT = 16u;
+// A mesh as authored with tangents (ControlCage::faceVertexTangents): each
+// patch's 4 texels of authored normals are followed by 4 of its corners'
+// tangents (xyz, and the bitangent's sign in w).
+const uint FACET_OBJECT_TANGENTS = 64u;
 
 // A ray from `origin` along `direction`, over [tMin, tMax).
 struct RayRecord {

@@ -37,4 +37,12 @@ glm::dvec3 shadingNormal(const scene::SubdivisionSurface& surface, int patch, do
   return glm::dot(n, limit) < 0.0 ? -n : n;
 }
 
+glm::dvec4 meshTangent(const scene::SubdivisionSurface& surface, int patch, double u, double v) {
+  const std::array<glm::dvec4, 4>* corners = surface.authoredTangents(patch);
+  if (!corners) return glm::dvec4(0.0);
+  const scene::PatchDomain& domain = surface.patch(patch).domain;
+  return mesh_tangent((*corners)[0], (*corners)[1], (*corners)[2], (*corners)[3], (u - domain.u0) / domain.size,
+                      (v - domain.v0) / domain.size);
+}
+
 }  // namespace facet::cpu

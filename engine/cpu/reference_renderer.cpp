@@ -15,6 +15,7 @@
 
 #include "engine/camera/camera.h"
 #include "engine/cpu/intersector.h"
+#include "engine/cpu/limit_normal.h"
 #include "engine/cpu/path_tracer.h"
 #include "engine/cpu/punctual_light.h"
 #include "engine/cpu/reference_environment.h"
@@ -199,14 +200,22 @@ class ReferenceScene final : public PathScene {
     return fetched;
   }
 
-  // The partials the anisotropic lobe's tangent is made of, evaluated only
-  // where the material is anisotropic (textures may only scale its strength).
+  // The mesh's tangent where it carries one (only where its material takes
+  // it), and the partials the anisotropic lobe's tangent is made of
+  // otherwise, evaluated only where the material is anisotropic (textures
+  // may only scale its strength).
   m::HitPartials hitPartials(const SceneHit& hit) const {
-    if (params_[std::size_t(hit.object)].anisotropy == 0.0) return {};
     const scene::SubdivisionSurface& surface = geometry_.objects[std::size_t(hit.object)].surface;
+    m::HitPartials partials{};
+    partials.tangent = meshTangent(surface, hit.surface.patch, hit.surface.u, hit.surface.v);
+    if (params_[std::size_t(hit.object)].anisotropy == 0.0) return partials;
     const scene::LimitPoint p = surface.evaluatePatch(hit.surface.patch, hit.surface.u, hit.surface.v);
     const scene::LimitTexcoord uv = surface.evaluateTexcoord(hit.surface.patch, hit.surface.u, hit.surface.v);
-    return {p.du, p.dv, uv.du, uv.dv};
+    partials.dp_ds = p.du;
+    partials.dp_dt = p.dv;
+    partials.duv_ds = uv.du;
+    partials.duv_dt = uv.dv;
+    return partials;
   }
 
   bool occluded(const glm::dvec3& position, const glm::dvec3& ng, const glm::dvec3& l, double distance,

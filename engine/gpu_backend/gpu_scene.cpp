@@ -90,6 +90,8 @@ void packPatch(GpuScene& packed, const scene::SubdivisionSurface& surface, int s
   if (const std::array<glm::dvec3, 4>* normals = surface.authoredNormals(source)) {
     record.firstNormal = std::uint32_t(packed.normals.size());
     for (const glm::dvec3& n : *normals) packed.normals.push_back(glm::vec4(glm::vec3(n), 0.0f));
+    if (const std::array<glm::dvec4, 4>* tangents = surface.authoredTangents(source))
+      for (const glm::dvec4& t : *tangents) packed.normals.push_back(glm::vec4(t));
   }
   record.firstTexcoord = range.channels ? std::uint32_t(packed.texcoords.size()) : layout::FACET_NO_TEXCOORDS;
   for (int c = 0; c < scene::kChannelCount; ++c)
@@ -219,7 +221,8 @@ void setObjectShading(layout::ObjectRange& range, const scene::Scene& scene, con
                 (sceneObject.holdout ? layout::FACET_OBJECT_HOLDOUT : 0u) |
                 (scene::sealsInside(sceneObject, geometry.objects[index]) ? layout::FACET_OBJECT_SEALED : 0u) |
                 (cutout ? layout::FACET_OBJECT_CUTOUT : 0u) |
-                (sceneObject.alphaMode == scene::AlphaMode::Blend ? layout::FACET_OBJECT_BLEND : 0u);
+                (sceneObject.alphaMode == scene::AlphaMode::Blend ? layout::FACET_OBJECT_BLEND : 0u) |
+                (geometry.objects[index].surface.hasAuthoredTangents() ? layout::FACET_OBJECT_TANGENTS : 0u);
   // Without a cut-out its fields are zero, whatever the range held before.
   const layout::TextureSlotRecord slot =
       cutout ? textureSlotRecord(sceneObject.alphaTexture) : layout::TextureSlotRecord{};

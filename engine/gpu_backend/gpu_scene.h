@@ -32,7 +32,7 @@ struct GpuScene {
   std::vector<gpu_layout::PatchRecord> patches;
   std::vector<Texel> headers;  // FACET_HEADER_TEXELS per patch
   std::vector<glm::vec4> points;
-  std::vector<glm::vec4> normals;    // authored, 4 per patch that has them
+  std::vector<glm::vec4> normals;    // authored, 4 per patch that has them, then its 4 tangents where it has those
   std::vector<glm::vec4> texcoords;  // per patch, the face-varying channels of its cage (patch_records.h)
   std::vector<gpu_layout::ObjectRange> objects;
   std::uint64_t blocks = 0;         // 2 x 2 cell blocks, one dicing invocation each

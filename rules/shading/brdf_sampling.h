@@ -145,13 +145,17 @@ FACET_FN real direction_pdf(int technique, BrdfParams p, vec3 n, vec3 l, vec3 v)
 
 // The normal the split sum reads an anisotropic lobe about (docs/shading.md,
 // "Anisotropy"): n bent towards v's component across b, the smoother
-// direction, by strength x clamp(5 sqrt(alpha)) (Filament's bent reflection
-// vector, after McAuley & Sloan 2015). n where isotropic.
+// direction, by a clamp(5 sqrt(alpha)) (Filament's bent reflection vector,
+// after McAuley & Sloan 2015), Filament's anisotropy a = (alpha_t - alpha_b)
+// / (alpha_t + alpha_b) taken from the lobe's two roughnesses: a lobe that
+// the mapping leaves round (alpha = 1) is not bent. n where isotropic.
 FACET_FN vec3 anisotropic_bent_normal(BrdfParams p, vec3 n, vec3 v) {
   if (p.anisotropy == real(0)) return n;
   Frame f = tangent_frame(n, p.tangent);
   vec3 across = cross(cross(f.b, v), f.b);
-  real bend = p.anisotropy * clamp(real(5) * sqrt(effective_alpha(p.alpha)), real(0), real(1));
+  real alpha = effective_alpha(p.alpha);
+  vec2 a = anisotropic_alpha(alpha, p.anisotropy);
+  real bend = (a.x - a.y) / (a.x + a.y) * clamp(real(5) * sqrt(alpha), real(0), real(1));
   vec3 bent = n * (real(1) - bend) + across * bend;
   real length2 = dot(bent, bent);
   return length2 > real(0) ? bent * inversesqrt(length2) : n;

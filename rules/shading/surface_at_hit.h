@@ -81,12 +81,14 @@ struct HitMaterial {
 
 // The surface's first-order geometry, where an anisotropic lobe needs its
 // tangent: dP/ds, dP/dt and the partials of the first set of texture
-// coordinates (all zero where the surface has none).
+// coordinates (all zero where the surface has none); and, where the material
+// takes a tangent at all, the mesh's (mesh_tangent; w = 0 where it has none).
 struct HitPartials {
   vec3 dp_ds;
   vec3 dp_dt;
   vec2 duv_ds;
   vec2 duv_dt;
+  vec4 tangent;
 };
 
 // The material at a hit as the lights and the environment see it.
@@ -123,9 +125,10 @@ FACET_FN SurfaceAtHit surface_at_hit(HitMaterial m, FacingNormals facing, vec3 v
         textured_surface(s.params, s.n, t.normal_frame, f.base, f.metallic, f.roughness,
                          dielectric_specular_f0(f.specular_color, f.specular, t.specular_color, t.specular),
                          f.normal_scale, f.occlusion_strength, m.emission, t.base, t.metallic_roughness,
-                         f.normal_mapped, t.normal, t.occlusion, t.emission, f.unlit);
-    textured = textured_layers(textured, t.coat_normal_frame, t.coat, t.coat_roughness, f.coat_normal_mapped,
-                               t.coat_normal, f.coat_normal_scale, t.sheen, f.anisotropy_mapped, t.anisotropy);
+                         f.normal_mapped, t.normal, t.occlusion, t.emission, f.unlit, partials.tangent);
+    textured =
+        textured_layers(textured, t.coat_normal_frame, t.coat, t.coat_roughness, f.coat_normal_mapped, t.coat_normal,
+                        f.coat_normal_scale, t.sheen, f.anisotropy_mapped, t.anisotropy, partials.tangent);
     s.params = textured.params;
     s.n = textured.n;
     s.occlusion = textured.occlusion;
@@ -144,8 +147,8 @@ FACET_FN SurfaceAtHit surface_at_hit(HitMaterial m, FacingNormals facing, vec3 v
   }
   if (s.params.anisotropy != real(0)) {
     vec2 rotation = turned_rotation(m.anisotropy_rotation, anisotropy_direction);
-    s.params.tangent = texcoord_tangent(s.n, partials.dp_ds, partials.dp_dt, partials.duv_ds, partials.duv_dt,
-                                        rotation.x, rotation.y);
+    s.params.tangent = anisotropy_tangent(s.n, partials.tangent, partials.dp_ds, partials.dp_dt, partials.duv_ds,
+                                          partials.duv_dt, rotation.x, rotation.y);
   }
   if (s.params.clearcoat != real(0))
     s.emission = s.emission * coat_transmittance(s.params, dot(s.params.clearcoat_normal, v));

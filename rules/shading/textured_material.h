@@ -5,6 +5,7 @@
 
 #include "rules/math.h"
 #include "rules/shading/brdf.h"
+#include "rules/surface/tangent.h"
 #include "rules/texture/texture_sampling.h"
 
 // The half angle by which a camera ray's cone widens: one pixel's angle at
@@ -70,26 +71,14 @@ FACET_FN vec3 dielectric_specular_f0(vec3 color_factor, real factor, vec3 color_
   return min(color_factor * color_texel, vec3(real(1), real(1), real(1))) * (factor * texel);
 }
 
-// The normal a tangent-space normal map's `texel` (RGB in [0, 1]) gives on a
-// surface of unit normal n and partials dp_ds, dp_dt, duv_ds, duv_dt: the
-// tangent is dP/du made orthogonal to n, the bitangent n x tangent turned
-// against dP/dv (image rows grow down, the map's +Y is up), as
-// glTF-Sample-Viewer builds the frame from derivatives. `scale` scales the
-// map's X and Y (glTF normalTexture.scale). Returns n where the texture
-// coordinates do not vary.
-FACET_FN vec3 mapped_normal(vec3 n, vec3 dp_ds, vec3 dp_dt, vec2 duv_ds, vec2 duv_dt, vec3 texel, real scale) {
-  real det = duv_ds.x * duv_dt.y - duv_ds.y * duv_dt.x;
-  if (det == real(0)) return n;
-  vec3 dp_du = (dp_ds * duv_dt.y - dp_dt * duv_ds.y) / det;
-  vec3 dp_dv = (dp_dt * duv_ds.x - dp_ds * duv_dt.x) / det;
-  vec3 tangent = dp_du - n * dot(n, dp_du);
-  real length2 = dot(tangent, tangent);
-  if (!(length2 > real(0))) return n;
-  tangent = tangent * inversesqrt(length2);
-  vec3 bitangent = cross(n, tangent);
-  if (dot(bitangent, dp_dv) > real(0)) bitangent = -bitangent;
+// The normal a tangent-space normal map's `texel` (RGB in [0, 1]) gives in
+// frame f about unit normal n (texture_frame): n' = normalize(t x s + b y s
+// + n z), (x, y, z) = 2 RGB - 1, `scale` glTF's normalTexture.scale. Returns
+// n where the frame is undefined.
+FACET_FN vec3 mapped_normal(vec3 n, TangentFrame f, vec3 texel, real scale) {
+  if (!f.defined) return n;
   vec3 m = texel * real(2) - vec3(real(1), real(1), real(1));
-  vec3 mapped = tangent * (m.x * scale) + bitangent * (m.y * scale) + n * m.z;
+  vec3 mapped = f.t * (m.x * scale) + f.b * (m.y * scale) + n * m.z;
   real mapped2 = dot(mapped, mapped);
   return mapped2 > real(0) ? mapped * inversesqrt(mapped2) : n;
 }
@@ -117,11 +106,15 @@ FACET_FN TexturedSurface textured_surface(BrdfParams p, vec3 n, TextureFootprint
                                           real metallic_factor, real roughness_factor, vec3 dielectric_f0,
                                           real normal_scale, real occlusion_strength, vec3 emission_factor, vec3 base,
                                           vec3 metallic_roughness, bool normal_mapped, vec3 normal_texel,
-                                          real occlusion, vec3 emission, bool unlit) {
+                                          real occlusion, vec3 emission, bool unlit, vec4 mesh_tangent) {
   TexturedSurface surface;
   surface.params = metallic_roughness_params(p, base_factor * base, metallic_factor * metallic_roughness.z,
                                              roughness_factor * metallic_roughness.y, dielectric_f0);
-  surface.n = normal_mapped ? mapped_normal(n, f.dp_ds, f.dp_dt, f.duv_ds, f.duv_dt, normal_texel, normal_scale) : n;
+  if (normal_mapped)
+    surface.n = mapped_normal(n, texture_frame(n, mesh_tangent, f.dp_ds, f.dp_dt, f.duv_ds, f.duv_dt), normal_texel,
+                              normal_scale);
+  else
+    surface.n = n;
   surface.occlusion = occlusion_factor(occlusion, occlusion_strength);
   surface.emission = unlit ? base_factor * base : emission_factor * emission;
   surface.anisotropy_direction = vec2(real(1), real(0));
@@ -137,13 +130,15 @@ FACET_FN TexturedSurface textured_surface(BrdfParams p, vec3 n, TextureFootprint
 // direction in the tangent frame, from [0, 1] to [-1, 1], and its B scales
 // the strength.
 FACET_FN TexturedSurface textured_layers(TexturedSurface s, TextureFootprint coat_f, real coat, real coat_roughness,
-                                         bool coat_mapped, vec3 coat_normal_texel, real coat_normal_scale,
-                                         vec3 sheen, bool anisotropy_mapped, vec3 anisotropy) {
+                                         bool coat_mapped, vec3 coat_normal_texel, real coat_normal_scale, vec3 sheen,
+                                         bool anisotropy_mapped, vec3 anisotropy, vec4 mesh_tangent) {
   s.params.clearcoat *= coat;
   s.params.clearcoat_alpha *= sqr(coat_roughness);
+  vec3 coat_n = s.params.clearcoat_normal;
   if (coat_mapped)
-    s.params.clearcoat_normal = mapped_normal(s.params.clearcoat_normal, coat_f.dp_ds, coat_f.dp_dt, coat_f.duv_ds,
-                                              coat_f.duv_dt, coat_normal_texel, coat_normal_scale);
+    s.params.clearcoat_normal = mapped_normal(
+        coat_n, texture_frame(coat_n, mesh_tangent, coat_f.dp_ds, coat_f.dp_dt, coat_f.duv_ds, coat_f.duv_dt),
+        coat_normal_texel, coat_normal_scale);
   s.params.sheen_color *= sheen;
   if (!anisotropy_mapped) return s;
   s.params.anisotropy *= anisotropy.z;

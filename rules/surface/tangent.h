@@ -1,15 +1,17 @@
-// The tangent field an anisotropic lobe is oriented by (docs/shading.md,
-// "Anisotropy"): the surface's parametric derivative dP/ds made orthogonal to
-// the shading normal n (Gram-Schmidt) and turned about n by the material's
-// rotation (cos, sin). Where dP/ds vanishes or lies along n (a degenerate
-// patch corner), dP/dt turned a quarter about n stands in, as ds x dt ~ n
-// makes dt x n point along ds; where both fail, the arbitrary frame's.
+// The tangents of a hit (docs/shading.md, "Anisotropy" and "The tangent
+// frame"): the field an anisotropic lobe is oriented by, a mesh's own
+// tangent, and the frame tangent-space textures turn in.
 
 #ifndef FACET_RULE_SURFACE_TANGENT
 #define FACET_RULE_SURFACE_TANGENT
 
 #include "rules/shading/microfacet.h"
 
+// The parametric tangent field: the surface's dP/ds made orthogonal to the
+// shading normal n (Gram-Schmidt) and turned about n by the material's
+// rotation (cos, sin). Where dP/ds vanishes or lies along n (a degenerate
+// patch corner), dP/dt turned a quarter about n stands in, as ds x dt ~ n
+// makes dt x n point along ds; where both fail, the arbitrary frame's.
 FACET_FN vec3 surface_tangent(vec3 n, vec3 dp_ds, vec3 dp_dt, real cos_rotation, real sin_rotation) {
   vec3 t = dp_ds - n * dot(n, dp_ds);
   if (!(dot(t, t) > real(0))) t = cross(dp_dt, n);
@@ -18,21 +20,66 @@ FACET_FN vec3 surface_tangent(vec3 n, vec3 dp_ds, vec3 dp_dt, real cos_rotation,
   return t * cos_rotation + cross(n, t) * sin_rotation;
 }
 
-// Where the surface has texture coordinates, glTF's tangent frame
-// (KHR_materials_anisotropy): t along dP/du, and the rotation turning t
-// towards the bitangent that points up the image, against dP/dv (glTF's v
-// runs down the image), so that a mirrored layout turns the other way. dP/du
-// and dP/dv are solved from the partials over the patch's (s, t); where the
-// coordinates do not vary (or are absent, all zero), surface_tangent's
-// parametric field.
-FACET_FN vec3 texcoord_tangent(vec3 n, vec3 dp_ds, vec3 dp_dt, vec2 duv_ds, vec2 duv_dt, real cos_rotation,
-                               real sin_rotation) {
+// A mesh's tangent at patch-local (s, t) (ControlCage::faceVertexTangents):
+// its corner tangents (counter-clockwise from (0, 0), as the patch's points)
+// interpolated bilinearly, xyz unnormalized as MikkTSpace's pixel stage
+// takes it, and w the sign that makes w (n x t) the bitangent pointing up
+// the image.
+FACET_FN vec4 mesh_tangent(vec4 t00, vec4 t10, vec4 t11, vec4 t01, real s, real t) {
+  vec4 m = (real(1) - s) * (real(1) - t) * t00 + s * (real(1) - t) * t10 + s * t * t11 + (real(1) - s) * t * t01;
+  return vec4(m.x, m.y, m.z, m.w < real(0) ? real(-1) : real(1));
+}
+
+// The frame a tangent-space texture (a normal map, an anisotropy direction)
+// turns in at a hit of unit normal n: t along dP/du and b the bitangent that
+// points up the image, both orthogonal to n (docs/shading.md, "The tangent
+// frame"). The mesh's tangent where it has one (w != 0; glTF's
+// bitangent w (n x t)); else t from the partials' dP/du and b = n x t turned
+// against dP/dv (glTF's v runs down the image), as glTF-Sample-Viewer builds
+// it from derivatives. Undefined where neither gives a direction off n.
+struct TangentFrame {
+  vec3 t;
+  vec3 b;
+  bool defined;
+};
+
+FACET_FN TangentFrame texture_frame(vec3 n, vec4 tangent, vec3 dp_ds, vec3 dp_dt, vec2 duv_ds, vec2 duv_dt) {
+  TangentFrame f;
+  f.b = vec3(real(0), real(0), real(0));
+  f.defined = false;
+  vec3 along = vec3(tangent.x, tangent.y, tangent.z);
+  f.t = along - n * dot(n, along);
+  real length2 = dot(f.t, f.t);
+  if (tangent.w != real(0) && length2 > real(0)) {
+    f.t = f.t * inversesqrt(length2);
+    f.b = cross(n, f.t) * tangent.w;
+    f.defined = true;
+    return f;
+  }
   real det = duv_ds.x * duv_dt.y - duv_ds.y * duv_dt.x;
-  if (det == real(0)) return surface_tangent(n, dp_ds, dp_dt, cos_rotation, sin_rotation);
+  if (det == real(0)) return f;
   vec3 dp_du = (dp_ds * duv_dt.y - dp_dt * duv_ds.y) / det;
   vec3 dp_dv = (dp_dt * duv_ds.x - dp_ds * duv_dt.x) / det;
-  real turn = dot(cross(n, dp_du), dp_dv) > real(0) ? -sin_rotation : sin_rotation;
-  return surface_tangent(n, dp_du, -dp_dv, cos_rotation, turn);
+  f.t = dp_du - n * dot(n, dp_du);
+  length2 = dot(f.t, f.t);
+  if (!(length2 > real(0))) return f;
+  f.t = f.t * inversesqrt(length2);
+  f.b = cross(n, f.t);
+  if (dot(f.b, dp_dv) > real(0)) f.b = -f.b;
+  f.defined = true;
+  return f;
+}
+
+// The tangent of an anisotropic lobe (KHR_materials_anisotropy): texture
+// space's t turned towards its b by the rotation, so that a mirrored layout
+// turns the other way, as the direction drawn in the texture does on the
+// surface; surface_tangent's parametric field where the hit has no texture
+// frame.
+FACET_FN vec3 anisotropy_tangent(vec3 n, vec4 tangent, vec3 dp_ds, vec3 dp_dt, vec2 duv_ds, vec2 duv_dt,
+                                 real cos_rotation, real sin_rotation) {
+  TangentFrame f = texture_frame(n, tangent, dp_ds, dp_dt, duv_ds, duv_dt);
+  if (f.defined) return f.t * cos_rotation + f.b * sin_rotation;
+  return surface_tangent(n, dp_ds, dp_dt, cos_rotation, sin_rotation);
 }
 
 #endif

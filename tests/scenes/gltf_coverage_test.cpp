@@ -86,24 +86,27 @@ TEST_F(GltfCoverage, IgnoredCoreFeaturesAreWarnings) {
                           HasSubstr("animations: animations are not read")));
 }
 
-// A mesh's tangents are not read: warned where a normal map or an
-// anisotropic lobe would take one, and not on a material that takes none.
+// A primitive without NORMAL is shaded flat and its TANGENT is not read
+// (glTF 2.0, 3.7.2.1): warned where a normal map or an anisotropic lobe
+// would take a tangent, and not on a material that takes none.
 TEST_F(GltfCoverage, UnreadTangentsAreWarnedOnlyWhereATangentIsUsed) {
   nlohmann::json parts;
   parts["meshes"] = {
       {{"primitives",
         {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}, {"TANGENT", 0}}}, {"indices", 2}, {"material", 0}}}}}};
   EXPECT_THAT(load("plain_tangents", nlohmann::json::object(), parts).warnings, IsEmpty());
-  EXPECT_THAT(load("anisotropic_tangents",
-                   {{"extensions", {{"KHR_materials_anisotropy", {{"anisotropyStrength", 0.5}}}}}}, parts)
-                  .warnings,
-              ElementsAre(HasSubstr("meshes[0].primitives[0].attributes.TANGENT: tangents are not read")));
+  EXPECT_THAT(
+      load("anisotropic_tangents", {{"extensions", {{"KHR_materials_anisotropy", {{"anisotropyStrength", 0.5}}}}}},
+           parts)
+          .warnings,
+      ElementsAre(HasSubstr("meshes[0].primitives[0].attributes.TANGENT: is not read: a primitive without NORMAL")));
   ASSERT_TRUE(
       facet::testing::writePng(dir_ / "flat.png", 2, 2, std::vector<facet::testing::Rgba8>(4, {128, 128, 255, 255})));
   parts["textures"] = {{{"source", 0}}};
   parts["images"] = {{{"uri", "flat.png"}}};
-  EXPECT_THAT(load("mapped_tangents", {{"normalTexture", {{"index", 0}}}}, parts).warnings,
-              ElementsAre(HasSubstr("meshes[0].primitives[0].attributes.TANGENT: tangents are not read")));
+  EXPECT_THAT(
+      load("mapped_tangents", {{"normalTexture", {{"index", 0}}}}, parts).warnings,
+      ElementsAre(HasSubstr("meshes[0].primitives[0].attributes.TANGENT: is not read: a primitive without NORMAL")));
 }
 
 TEST_F(GltfCoverage, AlphaModesAreRead) {

@@ -19,7 +19,7 @@ namespace facet::scene {
 namespace {
 
 // Two quads sharing an edge, each corner with its own texture coordinate,
-// colour and authored normal.
+// colour, authored normal and tangent.
 ControlCage texturedStrip() {
   ControlCage cage;
   cage.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}};
@@ -29,6 +29,7 @@ ControlCage texturedStrip() {
     cage.texcoords.push_back({0.1 * corner, 0.2});
     cage.faceVertexTexcoords.push_back(corner);
     cage.faceVertexNormals.push_back(glm::normalize(glm::dvec3(0.1 * corner, 0, 1)));
+    cage.faceVertexTangents.push_back(glm::dvec4(glm::normalize(glm::dvec3(1, 0.1 * corner, 0)), 1.0));
     cage.colors.push_back(glm::dvec3(corner));
     cage.faceVertexColors.push_back(corner);
   }
@@ -63,6 +64,12 @@ TEST(Placement, AMirrorReversesTheWindingAndKeepsEachCornersAttributesWithItsVer
     const int corner = mirrored.faceVertexColors[c];
     const glm::dvec3 authored = before.faceVertexNormals[std::size_t(corner)];
     EXPECT_NEAR(glm::length(mirrored.faceVertexNormals[c] - glm::dvec3(-authored.x, authored.y, authored.z)), 0, 1e-12);
+    // So does its tangent, mirrored as the surface is, its sign flipped:
+    // n x t turned against the mirrored bitangent.
+    const glm::dvec4 tangent = before.faceVertexTangents[std::size_t(corner)];
+    EXPECT_NEAR(glm::length(glm::dvec3(mirrored.faceVertexTangents[c]) - glm::dvec3(-tangent.x, tangent.y, tangent.z)),
+                0, 1e-12);
+    EXPECT_EQ(mirrored.faceVertexTangents[c].w, -1.0);
   }
 }
 

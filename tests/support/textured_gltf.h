@@ -6,10 +6,12 @@
 #include <nlohmann/json.hpp>
 #include <stb_image_write.h>
 
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,6 +76,36 @@ inline std::filesystem::path writeTexturedQuad(const std::filesystem::path& dir,
   file.update(parts);
   std::ofstream(dir / (name + ".gltf")) << file.dump(1);
   return dir / (name + ".gltf");
+}
+
+// `parts` of writeTexturedQuad's file (written as `name`) with the quad's
+// NORMALs (+z) and, where given, one TANGENT for every vertex, from a second
+// buffer written beside the quad's.
+inline nlohmann::json withQuadNormals(nlohmann::json parts, const std::filesystem::path& dir, const std::string& name,
+                                      std::optional<std::array<float, 4>> tangent) {
+  const float normals[12] = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+  std::ofstream out(dir / (name + "_frame.bin"), std::ios::binary);
+  out.write(reinterpret_cast<const char*>(normals), sizeof normals);
+  for (int v = 0; v < 4 && tangent; ++v) out.write(reinterpret_cast<const char*>(tangent->data()), 16);
+  nlohmann::json accessors = texturedQuadAccessors();
+  accessors.push_back({{"bufferView", 3}, {"componentType", 5126}, {"type", "VEC3"}, {"count", 4}});
+  nlohmann::json attributes = {{"POSITION", 0}, {"TEXCOORD_0", 1}, {"NORMAL", 3}};
+  // The quad's views: positions (48 bytes), coordinates (32) and indices (12).
+  nlohmann::json views = {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 48}},
+                          {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 32}},
+                          {{"buffer", 0}, {"byteOffset", 80}, {"byteLength", 12}},
+                          {{"buffer", 1}, {"byteOffset", 0}, {"byteLength", sizeof normals}}};
+  if (tangent) {
+    accessors.push_back({{"bufferView", 4}, {"componentType", 5126}, {"type", "VEC4"}, {"count", 4}});
+    views.push_back({{"buffer", 1}, {"byteOffset", sizeof normals}, {"byteLength", 64}});
+    attributes["TANGENT"] = 4;
+  }
+  parts["accessors"] = accessors;
+  parts["bufferViews"] = views;
+  parts["meshes"] = {{{"primitives", {{{"attributes", attributes}, {"indices", 2}, {"material", 0}}}}}};
+  parts["buffers"] = {{{"uri", name + ".bin"}, {"byteLength", 92}},
+                      {{"uri", name + "_frame.bin"}, {"byteLength", sizeof normals + (tangent ? 64 : 0)}}};
+  return parts;
 }
 
 }  // namespace facet::testing

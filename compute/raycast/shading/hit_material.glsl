@@ -110,12 +110,26 @@ HitMaterial hit_material(MaterialRecord m, PatchRecord record, uint channels, Pa
   return h;
 }
 
-// The tangent's partials at p, where the material is anisotropic.
-HitPartials hit_partials(bool anisotropic, PatchRecord record, uint channels, PatchSample p, HitRecord hit) {
-  if (!anisotropic) return HitPartials(vec3(0.0), vec3(0.0), vec2(0.0), vec2(0.0));
-  SurfaceTexcoord uv = surface_texcoord(channel_texel(record.firstTexcoord, channels, FACET_CHANNEL_TEXCOORD0), hit.s,
-                                        hit.tParam);
-  return HitPartials(p.ds, p.dt, uv.ds, uv.dt);
+// The mesh's tangent at the hit where its object carries tangents (only
+// where its material takes one), and the partials an anisotropic lobe's
+// tangent is made of at p where the material is anisotropic (engine/cpu's
+// hitPartials).
+HitPartials hit_partials(bool anisotropic, ObjectRange range, PatchRecord record, PatchSample p, HitRecord hit) {
+  HitPartials partials = HitPartials(vec3(0.0), vec3(0.0), vec2(0.0), vec2(0.0), vec4(0.0));
+  if ((range.flags & FACET_OBJECT_TANGENTS) != 0u) {
+    int i = int(record.firstNormal) + 4;
+    partials.tangent = mesh_tangent(texelFetch(authoredNormals, i), texelFetch(authoredNormals, i + 1),
+                                    texelFetch(authoredNormals, i + 2), texelFetch(authoredNormals, i + 3), hit.s,
+                                    hit.tParam);
+  }
+  if (!anisotropic) return partials;
+  SurfaceTexcoord uv = surface_texcoord(channel_texel(record.firstTexcoord, range.channels, FACET_CHANNEL_TEXCOORD0),
+                                        hit.s, hit.tParam);
+  partials.dp_ds = p.ds;
+  partials.dp_dt = p.dt;
+  partials.duv_ds = uv.ds;
+  partials.duv_dt = uv.dt;
+  return partials;
 }
 
 #endif

@@ -318,7 +318,7 @@ void main() {
   PatchSample p;
   if ((TEXTURES == 1 && m.textured == 1u) || anisotropic) p = evaluate_patch(c, hit.s, hit.tParam);
   SurfaceAtHit s = surface_at_hit(hit_material(m, record, range.channels, p, hit, facing.ng, direction), facing, v,
-                                  hit_partials(anisotropic, record, range.channels, p, hit));
+                                  hit_partials(anisotropic, range, record, p, hit));
   // The catcher is lit by the environment alone, whose share it measures.
   vec3 background = catcher && ENVIRONMENT != 0 ? environment_radiance(direction) : vec3(0.0);
   vec3 specular_scale = material_specular_scale(m.compensationTable, s.params, dot(s.n, v));

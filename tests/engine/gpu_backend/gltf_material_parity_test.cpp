@@ -185,12 +185,27 @@ void GltfMaterialParity::expectHighlightAlong(scene::Scene scene, double imageAn
   testing::expectPathParity(r, {.median = 1e-4, .p98 = 1e-3, .parted = 0});
 }
 
+// Where the quad's tangent frame comes from: its texture coordinates'
+// derivatives (no NORMAL), MikkTSpace's (NORMAL, no TANGENT), or the file
+// (a TANGENT along +y, up the image, with the sign given).
+enum class QuadFrame { Derivatives, Generated, AuthoredUp, AuthoredUpFlipped };
+
 struct AnisotropyCase {
   double rotation;
   bool mirrored;
   double imageAngle;  // the expected axis in the image
   const char* name;
+  QuadFrame frame = QuadFrame::Derivatives;
 };
+
+// `parts` with the quad's NORMALs and, for an authored frame, its TANGENTs.
+nlohmann::json withFrame(const nlohmann::json& parts, QuadFrame frame, const std::filesystem::path& dir,
+                         const std::string& name) {
+  if (frame == QuadFrame::Derivatives) return parts;
+  if (frame == QuadFrame::Generated) return testing::withQuadNormals(parts, dir, name, std::nullopt);
+  return testing::withQuadNormals(parts, dir, name,
+                                  std::array<float, 4>{0, 1, 0, frame == QuadFrame::AuthoredUp ? 1.0f : -1.0f});
+}
 
 class GltfAnisotropyParity : public GltfMaterialParity, public ::testing::WithParamInterface<AnisotropyCase> {};
 
@@ -200,8 +215,9 @@ TEST_P(GltfAnisotropyParity, TheHighlightStretchesAlongTheTexturesDirection) {
       {"doubleSided", true},
       {"extensions",
        {{"KHR_materials_anisotropy", {{"anisotropyStrength", 0.9}, {"anisotropyRotation", GetParam().rotation}}}}}};
-  scene::Scene scene =
-      quad(GetParam().name, material, {{"extensionsUsed", {"KHR_materials_anisotropy"}}}, GetParam().mirrored);
+  const nlohmann::json parts =
+      withFrame({{"extensionsUsed", {"KHR_materials_anisotropy"}}}, GetParam().frame, dir_, GetParam().name);
+  scene::Scene scene = quad(GetParam().name, material, parts, GetParam().mirrored);
   EXPECT_TRUE(scene.warnings.empty());
   expectHighlightAlong(scene, GetParam().imageAngle);
 }
@@ -261,12 +277,23 @@ TEST_F(GltfMaterialParity, ACoatTextureCoatsOnlyItsCells) {
 // The quad's u runs along +x, its v down the image: the tangent is +x and
 // the rotation turns it towards +y; mirrored, the tangent is -x and the
 // rotation still turns towards +y (glTF's bitangent points up the image).
+// MikkTSpace's tangents agree with the derivatives'. An authored tangent
+// along +y wins over both, and its sign chooses the bitangent the rotation
+// turns towards: w (n x t) is -x for w = 1, +x for w = -1.
 INSTANTIATE_TEST_SUITE_P(
     Rotations, GltfAnisotropyParity,
-    ::testing::Values(AnisotropyCase{0.0, false, 0.0, "along_u"},
-                      AnisotropyCase{std::numbers::pi / 2, false, std::numbers::pi / 2, "quarter_turn"},
-                      AnisotropyCase{std::numbers::pi / 4, false, std::numbers::pi / 4, "diagonal"},
-                      AnisotropyCase{std::numbers::pi / 4, true, -std::numbers::pi / 4, "diagonal_mirrored"}),
+    ::testing::Values(
+        AnisotropyCase{0.0, false, 0.0, "along_u"},
+        AnisotropyCase{std::numbers::pi / 2, false, std::numbers::pi / 2, "quarter_turn"},
+        AnisotropyCase{std::numbers::pi / 4, false, std::numbers::pi / 4, "diagonal"},
+        AnisotropyCase{std::numbers::pi / 4, true, -std::numbers::pi / 4, "diagonal_mirrored"},
+        AnisotropyCase{std::numbers::pi / 4, false, std::numbers::pi / 4, "generated", QuadFrame::Generated},
+        AnisotropyCase{std::numbers::pi / 4, true, -std::numbers::pi / 4, "generated_mirrored", QuadFrame::Generated},
+        AnisotropyCase{0.0, false, std::numbers::pi / 2, "authored_up", QuadFrame::AuthoredUp},
+        AnisotropyCase{std::numbers::pi / 4, false, -std::numbers::pi / 4, "authored_diagonal", QuadFrame::AuthoredUp},
+        AnisotropyCase{std::numbers::pi / 4, true, std::numbers::pi / 4, "authored_mirrored", QuadFrame::AuthoredUp},
+        AnisotropyCase{std::numbers::pi / 4, false, std::numbers::pi / 4, "authored_flipped",
+                       QuadFrame::AuthoredUpFlipped}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -156,6 +156,29 @@ double furnace(int d, int g, glm::dvec2 alpha_strength, double mu, double phi_v,
   return sum;
 }
 
+// At alpha 1 KHR_materials_anisotropy's mapping leaves the lobe round
+// (alpha_t = mix(1, 1, s^2) = alpha_b): any strength then shades as none,
+// the split sum's bent normal included. Below it the bend grows with the
+// lobe's elongation.
+TEST(Anisotropy, AFullyRoughLobeIsRoundAtAnyStrength) {
+  const glm::dvec3 n(0, 0, 1), t = glm::normalize(glm::dvec3(1, 0.3, 0));
+  const glm::dvec3 v = glm::normalize(glm::dvec3(0.3, -0.5, 0.6)), l = glm::normalize(glm::dvec3(-0.2, 0.4, 0.8));
+  const m::BrdfParams round = anisotropic(m::D_GGX, m::G_SMITH_GGX_CORRELATED, 1.0, 0.0, t);
+  for (double strength : {0.3, 1.0}) {
+    const m::BrdfParams p = anisotropic(m::D_GGX, m::G_SMITH_GGX_CORRELATED, 1.0, strength, t);
+    EXPECT_NEAR(glm::length(m::anisotropic_bent_normal(p, n, v) - n), 0.0, 1e-15) << strength;
+    EXPECT_NEAR(glm::length(m::brdf_evaluate(p, n, l, v) - m::brdf_evaluate(round, n, l, v)), 0.0, 1e-12);
+    EXPECT_EQ(m::isotropic_equivalent_alpha(p), 1.0);
+  }
+  double previous = 0.0;
+  for (double strength : {0.3, 0.6, 1.0}) {
+    const m::BrdfParams p = anisotropic(m::D_GGX, m::G_SMITH_GGX_CORRELATED, 0.09, strength, t);
+    const double bent = glm::length(m::anisotropic_bent_normal(p, n, v) - n);
+    EXPECT_GT(bent, previous) << strength;
+    previous = bent;
+  }
+}
+
 TEST(Anisotropy, WhiteFurnaceLosesEnergyAndNeverGainsIt) {
   // Single scattering with F = 1 reflects at most everything: E <= 1 within
   // the quadrature's error (its change from 128 to 256 nodes, plus 1e-4).

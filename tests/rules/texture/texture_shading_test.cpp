@@ -82,20 +82,55 @@ TEST(TextureShading, TheNormalMapsFrameFollowsTheTextureCoordinates) {
   // The test quad's mapping: u along +x, v down the image along -y.
   const t::vec3 n(0, 0, 1), ds(2, 0, 0), dt(0, 2, 0);
   const t::vec2 du(0.5, 0), dv(0, -0.5);
+  const t::vec4 none(0.0);
+  const auto mapped = [&](t::vec2 du_ds, t::vec2 dv_dt, t::vec3 texel, double scale) {
+    return t::mapped_normal(n, t::texture_frame(n, none, ds, dt, du_ds, dv_dt), texel, scale);
+  };
   // The flat texel (0.5, 0.5, 1) keeps n; +X of the map leans towards +u, +Y towards -v.
-  EXPECT_EQ(t::mapped_normal(n, ds, dt, du, dv, {0.5, 0.5, 1.0}, 1.0), n);
-  const t::vec3 x = t::mapped_normal(n, ds, dt, du, dv, {1.0, 0.5, 0.5}, 1.0);
+  EXPECT_EQ(mapped(du, dv, {0.5, 0.5, 1.0}, 1.0), n);
+  const t::vec3 x = mapped(du, dv, {1.0, 0.5, 0.5}, 1.0);
   EXPECT_NEAR(x.x, 1.0, 1e-12);
-  const t::vec3 y = t::mapped_normal(n, ds, dt, du, dv, {0.5, 1.0, 1.0}, 1.0);
+  const t::vec3 y = mapped(du, dv, {0.5, 1.0, 1.0}, 1.0);
   EXPECT_NEAR(y.y, std::sqrt(0.5), 1e-12);
   EXPECT_NEAR(y.z, std::sqrt(0.5), 1e-12);
   // Mirrored coordinates mirror the tangent, not the map's +Y.
-  const t::vec3 mirrored = t::mapped_normal(n, ds, dt, -du, dv, {0.5, 1.0, 1.0}, 1.0);
+  const t::vec3 mirrored = mapped(-du, dv, {0.5, 1.0, 1.0}, 1.0);
   EXPECT_NEAR(mirrored.y, std::sqrt(0.5), 1e-12);
-  EXPECT_NEAR(t::mapped_normal(n, ds, dt, -du, dv, {1.0, 0.5, 0.5}, 1.0).x, -1.0, 1e-12);
+  EXPECT_NEAR(mapped(-du, dv, {1.0, 0.5, 0.5}, 1.0).x, -1.0, 1e-12);
   // Scale 0 flattens the map; coordinates that do not vary keep n.
-  EXPECT_EQ(t::mapped_normal(n, ds, dt, du, dv, {1.0, 1.0, 1.0}, 0.0), n);
-  EXPECT_EQ(t::mapped_normal(n, ds, dt, du, 0.0 * dv, {1.0, 0.5, 0.5}, 1.0), n);
+  EXPECT_EQ(mapped(du, dv, {1.0, 1.0, 1.0}, 0.0), n);
+  EXPECT_EQ(mapped(du, 0.0 * dv, {1.0, 0.5, 0.5}, 1.0), n);
+}
+
+// A mesh's tangent (glTF TANGENT) wins over the partials: the map's +X leans
+// along it and +Y along w (n x t), whatever the coordinates say.
+TEST(TextureShading, AMeshTangentFramesTheNormalMap) {
+  const t::vec3 n(0, 0, 1), ds(2, 0, 0), dt(0, 2, 0);
+  const t::vec2 du(0.5, 0), dv(0, -0.5);
+  const t::vec3 leaning(0.6, 0.8, 0.0);  // off n's plane too: made orthogonal
+  const t::TangentFrame frame = t::texture_frame(n, t::vec4(leaning + 0.5 * n, 1.0), ds, dt, du, dv);
+  ASSERT_TRUE(frame.defined);
+  EXPECT_NEAR(glm::length(frame.t - leaning), 0.0, 1e-12);
+  EXPECT_NEAR(glm::length(frame.b - t::vec3(-0.8, 0.6, 0.0)), 0.0, 1e-12);
+  const t::vec3 x = t::mapped_normal(n, frame, {1.0, 0.5, 0.5}, 1.0);
+  EXPECT_NEAR(glm::length(x - leaning), 0.0, 1e-12);
+  // w = -1 turns the bitangent, and so the map's +Y, over.
+  const t::TangentFrame mirrored = t::texture_frame(n, t::vec4(leaning, -1.0), ds, dt, du, dv);
+  EXPECT_NEAR(glm::length(t::mapped_normal(n, mirrored, {0.5, 1.0, 0.5}, 1.0) - t::vec3(0.8, -0.6, 0.0)), 0.0, 1e-12);
+  // A tangent along n gives no direction: the partials' frame stands in.
+  const t::TangentFrame along = t::texture_frame(n, t::vec4(n, 1.0), ds, dt, du, dv);
+  EXPECT_EQ(along.t, t::vec3(1, 0, 0));
+}
+
+// Between corners the mesh's tangent is interpolated bilinearly, its sign
+// that of the interpolated w.
+TEST(TextureShading, AMeshTangentIsInterpolatedAcrossThePatch) {
+  const t::vec4 x(1, 0, 0, 1), y(0, 1, 0, 1);
+  const t::vec4 half = t::mesh_tangent(x, y, y, x, 0.5, 0.25);
+  EXPECT_NEAR(half.x, 0.5, 1e-15);
+  EXPECT_NEAR(half.y, 0.5, 1e-15);
+  EXPECT_EQ(half.w, 1.0);
+  EXPECT_EQ(t::mesh_tangent(x, -y, -y, x, 0.75, 0.5).w, -1.0);
 }
 
 TEST(TextureShading, OcclusionScalesByItsStrength) {
