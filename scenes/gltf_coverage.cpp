@@ -84,14 +84,6 @@ void collectExtensions(const tinygltf::Model& model, std::vector<std::pair<std::
 
 }  // namespace
 
-bool usesTangents(const tinygltf::Model& model, int index) {
-  if (index < 0 || std::size_t(index) >= model.materials.size()) return false;
-  const tinygltf::Material& m = model.materials[std::size_t(index)];
-  if (m.normalTexture.index >= 0 || m.extensions.count("KHR_materials_anisotropy") > 0) return true;
-  const auto coat = m.extensions.find("KHR_materials_clearcoat");
-  return coat != m.extensions.end() && coat->second.Has("clearcoatNormalTexture");
-}
-
 void checkExtensions(const tinygltf::Model& model, const GltfReader& reader) {
   for (const std::string& extension : model.extensionsRequired)
     if (!implemented(extension))
@@ -108,7 +100,7 @@ void checkExtensions(const tinygltf::Model& model, const GltfReader& reader) {
       reader.warn(where.front() == '.' ? where.substr(1) : where, ignoredExtension(extension));
 }
 
-void warnOfIgnoredFeatures(const tinygltf::Model& model, GltfVariant variant, const GltfReader& reader) {
+void warnOfIgnoredFeatures(const tinygltf::Model& model, const GltfReader& reader) {
   for (std::size_t i = 0; i < model.meshes.size(); ++i)
     for (std::size_t p = 0; p < model.meshes[i].primitives.size(); ++p) {
       const tinygltf::Primitive& primitive = model.meshes[i].primitives[p];
@@ -117,11 +109,6 @@ void warnOfIgnoredFeatures(const tinygltf::Model& model, GltfVariant variant, co
         const std::string where = at + ".attributes." + name;
         if (name.rfind("COLOR_", 0) == 0 && name != "COLOR_0")
           reader.warn(where, "only COLOR_0 is read; this set of vertex colours is not");
-        else if (name == "TANGENT" && primitive.attributes.count("NORMAL") == 0 &&
-                 usesTangents(model, variantMaterial(primitive, variant, reader, at)))
-          reader.warn(where,
-                      "is not read: a primitive without NORMAL is shaded flat, and its tangents are dP/du of "
-                      "the texture coordinates (glTF 2.0, 3.7.2.1)");
         else if (name.rfind("JOINTS_", 0) == 0 || name.rfind("WEIGHTS_", 0) == 0)
           reader.warn(where, "skinning is not read; meshes render in their bind pose");
       }

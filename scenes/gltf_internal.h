@@ -171,10 +171,14 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& p
                    const std::vector<double>& weights, std::optional<int> tangentSet, const GltfReader& reader,
                    const std::string& where);
 
-// gltf_tangents.cpp. The set of texture coordinates material `index`'s
-// tangents follow where it takes one (usesTangents): its normal map's, else
-// TEXCOORD_0; none where it takes none.
-std::optional<int> tangentTexcoordSet(const tinygltf::Model& model, int index);
+// gltf_tangents.cpp. Whether material `index` would take a tangent: a
+// normal map (its own or its clear coat's) or an anisotropic lobe.
+bool usesTangents(const tinygltf::Model& model, int index);
+// The set of texture coordinates material `index`'s
+// tangents follow where it takes one (usesTangents): the set its normal map
+// reads as `material` has it (KHR_texture_transform's texCoord included),
+// else its coat's normal map's, else TEXCOORD_0; none where it takes none.
+std::optional<int> tangentTexcoordSet(const tinygltf::Model& model, int index, const materials::Material& material);
 // A primitive's TANGENTs (VEC4 FLOAT), moved by its morph targets' TANGENT
 // by `weights` and turned into the world by `world`; each checked finite,
 // nonzero and with a sign.
@@ -216,10 +220,7 @@ int variantMaterial(const tinygltf::Primitive& primitive, GltfVariant variant, c
 // extension facet does not implement (glTF 2.0, 3.12), and warns of each
 // used one it ignores and of the core features it does not render as written.
 void checkExtensions(const tinygltf::Model& model, const GltfReader& reader);
-void warnOfIgnoredFeatures(const tinygltf::Model& model, GltfVariant variant, const GltfReader& reader);
-// Whether material `index` would take a tangent: a normal map (its own or
-// its clear coat's) or an anisotropic lobe.
-bool usesTangents(const tinygltf::Model& model, int index);
+void warnOfIgnoredFeatures(const tinygltf::Model& model, const GltfReader& reader);
 
 // gltf_nodes.cpp
 glm::dmat4 localTransform(const tinygltf::Node& node);

@@ -200,6 +200,12 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& p
   };
   const bool normals = everyPrimitiveHas("NORMAL");
   const bool tangents = normals && tangentSet.has_value();
+  if (tangentSet && !normals && !std::none_of(primitives.begin(), primitives.end(), [&](std::size_t p) {
+        return mesh.primitives[p].attributes.count("TANGENT") != 0;
+      }))
+    reader.warn(where,
+                "TANGENT is not read: not every primitive of its material has NORMAL, so the object is "
+                "shaded flat and its tangents are dP/du of the texture coordinates");
   // COLOR_0's alpha is not read: RGB multiplies the base colour.
   Attribute uv0{"TEXCOORD_0", &kTexcoord, 2}, uv1{"TEXCOORD_1", &kTexcoord, 2}, color{"COLOR_0", nullptr, 3};
   for (Attribute* a : {&uv0, &uv1, &color}) a->present = everyPrimitiveHas(a->name);

@@ -313,8 +313,9 @@ void addMeshObjects(Scene& scene, const tinygltf::Model& model, const tinygltf::
   for (const auto& [material, primitives] : materialGroups(mesh, defaultMaterialIndex, variant, reader, meshWhere)) {
     Object object;
     object.name = objectName(mesh.name.empty() ? where : mesh.name, scene.objects.size() - firstObject);
-    object.cage = detail::toCage(mesh, primitives, world, weights, detail::tangentTexcoordSet(model, material), reader,
-                                 meshWhere);
+    object.cage = detail::toCage(mesh, primitives, world, weights,
+                                 detail::tangentTexcoordSet(model, material, scene.materials[std::size_t(material)]),
+                                 reader, meshWhere);
     if (object.cage.faceCount() == 0) continue;  // only triangles without area
     object.subdivision = Subdivision::None;
     object.material = material;
@@ -352,7 +353,7 @@ Scene loadGltfScene(const std::filesystem::path& path, const std::string& varian
     start = end + 1;
   }
   const detail::GltfVariant chosen = detail::chosenVariant(model, variant, reader);
-  detail::warnOfIgnoredFeatures(model, chosen, reader);
+  detail::warnOfIgnoredFeatures(model, reader);
 
   Scene scene;
   scene.source = path;

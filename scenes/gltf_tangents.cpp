@@ -20,10 +20,23 @@ constexpr ElementFormat kTangentDeltaFormat{
 
 }  // namespace
 
-std::optional<int> tangentTexcoordSet(const tinygltf::Model& model, int material) {
-  if (!usesTangents(model, material)) return std::nullopt;
-  const tinygltf::Material& m = model.materials[std::size_t(material)];
-  return m.normalTexture.index >= 0 ? m.normalTexture.texCoord : 0;
+bool usesTangents(const tinygltf::Model& model, int index) {
+  if (index < 0 || std::size_t(index) >= model.materials.size()) return false;
+  const tinygltf::Material& m = model.materials[std::size_t(index)];
+  if (m.normalTexture.index >= 0 || m.extensions.count("KHR_materials_anisotropy") > 0) return true;
+  const auto coat = m.extensions.find("KHR_materials_clearcoat");
+  return coat != m.extensions.end() && coat->second.Has("clearcoatNormalTexture");
+}
+
+std::optional<int> tangentTexcoordSet(const tinygltf::Model& model, int index, const materials::Material& material) {
+  if (!usesTangents(model, index)) return std::nullopt;
+  if (material.textures) {
+    // The sets the slots read, KHR_texture_transform's texCoord included.
+    if (material.textures->normalTexture.texture >= 0) return material.textures->normalTexture.texCoord;
+    if (material.textures->clearcoatNormalTexture.texture >= 0)
+      return material.textures->clearcoatNormalTexture.texCoord;
+  }
+  return 0;
 }
 
 std::vector<glm::dvec4> primitiveTangents(const tinygltf::Primitive& primitive, std::size_t vertices,
@@ -53,7 +66,8 @@ std::vector<glm::dvec4> primitiveTangents(const tinygltf::Primitive& primitive, 
     const double length = glm::length(t), w = values[4 * v + 3];
     if (!(length > 0.0) || !std::isfinite(length))
       reader.fail(where, "tangent " + std::to_string(v) + " is zero or not finite");
-    if (!(std::abs(w) > 0.0) || !std::isfinite(w))
+    // The glTF validator's tolerance on unit lengths.
+    if (!(std::abs(std::abs(w) - 1.0) <= 4e-3))
       reader.fail(where, "tangent " + std::to_string(v) + " has w " + formatNumber(w) + "; it must be 1 or -1");
     tangents.push_back(glm::dvec4(t / length, w < 0.0 ? -mirror : mirror));
   }

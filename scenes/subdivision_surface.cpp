@@ -70,14 +70,17 @@ std::array<glm::dvec3, 4> cornerNormals(const ControlCage& cage, int first,
   return normals;
 }
 
-// The mesh's tangents at a bilinear patch's corners: the sums' directions
-// normalized, and the sign most of the corners there carry.
+// The mesh's tangents at a bilinear patch's corners: the means of the
+// directions, unnormalized, so that the patch interpolates a triangle's
+// corner tangents exactly as the baker's barycentric interpolation did (the
+// patch's corners are the corresponding means of the positions); and the
+// sign most of the corners there carry.
 std::array<glm::dvec4, 4> cornerTangents(const ControlCage& cage, int first,
                                          const std::array<std::vector<int>, 4>& sources) {
   std::array<glm::dvec4, 4> tangents = summedAtCorners(cage.faceVertexTangents, first, sources);
-  for (glm::dvec4& t : tangents) {
-    const double length = glm::length(glm::dvec3(t));
-    t = glm::dvec4(length > 0.0 ? glm::dvec3(t) / length : glm::dvec3(0.0), t.w < 0.0 ? -1.0 : 1.0);
+  for (std::size_t c = 0; c < 4; ++c) {
+    const glm::dvec4 sum = tangents[c];
+    tangents[c] = glm::dvec4(glm::dvec3(sum) / double(sources[c].size()), sum.w < 0.0 ? -1.0 : 1.0);
   }
   return tangents;
 }

@@ -17,6 +17,9 @@ m::MaterialTexels materialTexels(const scene::SubdivisionSurface& surface, const
     const scene::LimitTexcoord uv = surface.evaluateTexcoord(hit.patch, hit.u, hit.v, slot.texCoord);
     return m::TextureFootprint{uv.uv, uv.du, uv.dv, p.du, p.dv, hit.t * coneSpread, std::abs(glm::dot(ng, direction))};
   };
+  const auto uvMap = [](const materials::TextureSlot& slot) {
+    return m::slot_uv_map(std::cos(slot.rotation), std::sin(slot.rotation), slot.scale);
+  };
   const auto value = [&](const materials::TextureSlot& slot) {
     return scene::sampleSlot(textures, slot, footprint(slot));
   };
@@ -25,12 +28,14 @@ m::MaterialTexels materialTexels(const scene::SubdivisionSurface& surface, const
   texels.metallic_roughness = glm::dvec3(value(t.metallicRoughnessTexture));
   texels.normal = glm::dvec3(value(t.normalTexture));
   texels.normal_frame = footprint(t.normalTexture);
+  texels.normal_map = uvMap(t.normalTexture);
   texels.occlusion = value(t.occlusionTexture).r;
   texels.emission = glm::dvec3(value(t.emissiveTexture));
   texels.coat = value(t.clearcoatTexture).r;
   texels.coat_roughness = value(t.clearcoatRoughnessTexture).g;
   texels.coat_normal = glm::dvec3(value(t.clearcoatNormalTexture));
   texels.coat_normal_frame = footprint(t.clearcoatNormalTexture);
+  texels.coat_normal_map = uvMap(t.clearcoatNormalTexture);
   texels.sheen = glm::dvec3(value(t.sheenColorTexture));
   texels.anisotropy = glm::dvec3(value(t.anisotropyTexture));
   texels.transmission = value(t.transmissionTexture).r;

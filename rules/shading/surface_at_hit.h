@@ -54,12 +54,14 @@ struct MaterialTexels {
   vec3 metallic_roughness;
   vec3 normal;
   TextureFootprint normal_frame;
+  UvMap normal_map;  // the normal map slot's transform (slot_uv_map)
   real occlusion;
   vec3 emission;
   real coat;
   real coat_roughness;
   vec3 coat_normal;
   TextureFootprint coat_normal_frame;
+  UvMap coat_normal_map;
   vec3 sheen;
   vec3 anisotropy;
   real transmission;
@@ -106,12 +108,16 @@ struct SurfaceAtHit {
 // transmissive interface is seen from, with a textured material's base
 // colour and metallic mix (glTF), then the tangent about the final
 // normal, then the coat over the emission (KHR_materials_clearcoat). The
-// coat keeps the surface's own normal: no normal map applies to it.
+// coat keeps the surface's own normal but for its own normal map.
 FACET_FN SurfaceAtHit surface_at_hit(HitMaterial m, FacingNormals facing, vec3 v, HitPartials partials) {
+  // Textures and tangents turn the surface as its outside shows it (there
+  // the bitangent points up the image); a hit from inside sees that same
+  // surface turned over.
+  real side = facing.outside ? real(1) : real(-1);
   SurfaceAtHit s;
   s.params = m.params;
-  s.params.clearcoat_normal = facing.n;
-  s.n = facing.n;
+  s.params.clearcoat_normal = facing.n * side;
+  s.n = facing.n * side;
   s.ng = facing.ng;
   s.outside = facing.outside;
   s.occlusion = real(1);
@@ -122,19 +128,22 @@ FACET_FN SurfaceAtHit surface_at_hit(HitMaterial m, FacingNormals facing, vec3 v
     TexturedFactors f = m.factors;
     MaterialTexels t = m.texels;
     TexturedSurface textured =
-        textured_surface(s.params, s.n, t.normal_frame, f.base, f.metallic, f.roughness,
+        textured_surface(s.params, s.n, t.normal_frame, t.normal_map, f.base, f.metallic, f.roughness,
                          dielectric_specular_f0(f.specular_color, f.specular, t.specular_color, t.specular),
                          f.normal_scale, f.occlusion_strength, m.emission, t.base, t.metallic_roughness,
                          f.normal_mapped, t.normal, t.occlusion, t.emission, f.unlit, partials.tangent);
-    textured =
-        textured_layers(textured, t.coat_normal_frame, t.coat, t.coat_roughness, f.coat_normal_mapped, t.coat_normal,
-                        f.coat_normal_scale, t.sheen, f.anisotropy_mapped, t.anisotropy, partials.tangent);
+    textured = textured_layers(textured, t.coat_normal_frame, t.coat_normal_map, t.coat, t.coat_roughness,
+                               f.coat_normal_mapped, t.coat_normal, f.coat_normal_scale, t.sheen, f.anisotropy_mapped,
+                               t.anisotropy, partials.tangent);
     s.params = textured.params;
     s.n = textured.n;
     s.occlusion = textured.occlusion;
     s.emission = textured.emission;
     anisotropy_direction = textured.anisotropy_direction;
   }
+  vec3 outward = s.n;
+  s.n = s.n * side;
+  s.params.clearcoat_normal = s.params.clearcoat_normal * side;
   if (m.transmissive) {
     vec3 base = vec3(real(1), real(1), real(1));
     real metallic = real(0);
@@ -147,7 +156,7 @@ FACET_FN SurfaceAtHit surface_at_hit(HitMaterial m, FacingNormals facing, vec3 v
   }
   if (s.params.anisotropy != real(0)) {
     vec2 rotation = turned_rotation(m.anisotropy_rotation, anisotropy_direction);
-    s.params.tangent = anisotropy_tangent(s.n, partials.tangent, partials.dp_ds, partials.dp_dt, partials.duv_ds,
+    s.params.tangent = anisotropy_tangent(outward, partials.tangent, partials.dp_ds, partials.dp_dt, partials.duv_ds,
                                           partials.duv_dt, rotation.x, rotation.y);
   }
   if (s.params.clearcoat != real(0))

@@ -20,6 +20,14 @@ FACET_FN vec2 transform_uv_partial(vec2 d, real cos_rotation, real sin_rotation,
   return transform_uv(d, vec2(real(0), real(0)), cos_rotation, sin_rotation, scale);
 }
 
+// The same as a UvMap, for a tangent frame in the slot's coordinates.
+FACET_FN UvMap slot_uv_map(real cos_rotation, real sin_rotation, vec2 scale) {
+  UvMap m;
+  m.u = transform_uv_partial(vec2(real(1), real(0)), cos_rotation, sin_rotation, scale);
+  m.v = transform_uv_partial(vec2(real(0), real(1)), cos_rotation, sin_rotation, scale);
+  return m;
+}
+
 // What a hit offers texture lookups: the texture coordinates and their
 // partials, the position's partials over the patch's (s, t), and the ray
 // cone's width there and the cosine at which it meets the surface.
@@ -102,7 +110,7 @@ struct TexturedSurface {
 // G roughness and B metallic, the normal map's RGB, occlusion R, emission RGB.
 // An `unlit` material (KHR_materials_unlit, docs/gltf.md) emits its base
 // colour instead; it reflects nothing by its models, not by this rule.
-FACET_FN TexturedSurface textured_surface(BrdfParams p, vec3 n, TextureFootprint f, vec3 base_factor,
+FACET_FN TexturedSurface textured_surface(BrdfParams p, vec3 n, TextureFootprint f, UvMap f_map, vec3 base_factor,
                                           real metallic_factor, real roughness_factor, vec3 dielectric_f0,
                                           real normal_scale, real occlusion_strength, vec3 emission_factor, vec3 base,
                                           vec3 metallic_roughness, bool normal_mapped, vec3 normal_texel,
@@ -111,8 +119,8 @@ FACET_FN TexturedSurface textured_surface(BrdfParams p, vec3 n, TextureFootprint
   surface.params = metallic_roughness_params(p, base_factor * base, metallic_factor * metallic_roughness.z,
                                              roughness_factor * metallic_roughness.y, dielectric_f0);
   if (normal_mapped)
-    surface.n = mapped_normal(n, texture_frame(n, mesh_tangent, f.dp_ds, f.dp_dt, f.duv_ds, f.duv_dt), normal_texel,
-                              normal_scale);
+    surface.n = mapped_normal(n, texture_frame(n, mesh_tangent, f.dp_ds, f.dp_dt, f.duv_ds, f.duv_dt, f_map),
+                              normal_texel, normal_scale);
   else
     surface.n = n;
   surface.occlusion = occlusion_factor(occlusion, occlusion_strength);
@@ -129,15 +137,16 @@ FACET_FN TexturedSurface textured_surface(BrdfParams p, vec3 n, TextureFootprint
 // colour (sRGB) scales the factor; KHR_materials_anisotropy's RG is a
 // direction in the tangent frame, from [0, 1] to [-1, 1], and its B scales
 // the strength.
-FACET_FN TexturedSurface textured_layers(TexturedSurface s, TextureFootprint coat_f, real coat, real coat_roughness,
-                                         bool coat_mapped, vec3 coat_normal_texel, real coat_normal_scale, vec3 sheen,
-                                         bool anisotropy_mapped, vec3 anisotropy, vec4 mesh_tangent) {
+FACET_FN TexturedSurface textured_layers(TexturedSurface s, TextureFootprint coat_f, UvMap coat_map, real coat,
+                                         real coat_roughness, bool coat_mapped, vec3 coat_normal_texel,
+                                         real coat_normal_scale, vec3 sheen, bool anisotropy_mapped, vec3 anisotropy,
+                                         vec4 mesh_tangent) {
   s.params.clearcoat *= coat;
   s.params.clearcoat_alpha *= sqr(coat_roughness);
   vec3 coat_n = s.params.clearcoat_normal;
   if (coat_mapped)
     s.params.clearcoat_normal = mapped_normal(
-        coat_n, texture_frame(coat_n, mesh_tangent, coat_f.dp_ds, coat_f.dp_dt, coat_f.duv_ds, coat_f.duv_dt),
+        coat_n, texture_frame(coat_n, mesh_tangent, coat_f.dp_ds, coat_f.dp_dt, coat_f.duv_ds, coat_f.duv_dt, coat_map),
         coat_normal_texel, coat_normal_scale);
   s.params.sheen_color *= sheen;
   if (!anisotropy_mapped) return s;

@@ -30,32 +30,47 @@ FACET_FN vec4 mesh_tangent(vec4 t00, vec4 t10, vec4 t11, vec4 t01, real s, real 
   return vec4(m.x, m.y, m.z, m.w < real(0) ? real(-1) : real(1));
 }
 
+// The linear part of the map from a surface's texture coordinates to those
+// a texture slot reads (KHR_texture_transform's rotation and scale): the
+// images of the u and v axes.
+struct UvMap {
+  vec2 u;
+  vec2 v;
+};
+
+FACET_FN vec2 apply_uv_map(UvMap m, vec2 d) { return m.u * d.x + m.v * d.y; }
+
 // The frame a tangent-space texture (a normal map, an anisotropy direction)
-// turns in at a hit of unit normal n: t along dP/du and b the bitangent that
-// points up the image, both orthogonal to n (docs/shading.md, "The tangent
-// frame"). The mesh's tangent where it has one (w != 0; glTF's
-// bitangent w (n x t)); else t from the partials' dP/du and b = n x t turned
-// against dP/dv (glTF's v runs down the image), as glTF-Sample-Viewer builds
-// it from derivatives. Undefined where neither gives a direction off n.
+// turns in at a hit of unit normal n: t along dP/du' and b the bitangent
+// that points up the image, both orthogonal to n, where (u', v') are the
+// coordinates the texture reads, the surface's mapped by `map`
+// (docs/shading.md, "The tangent frame"). The surface's dP/du and dP/dv are
+// the mesh's tangent where it has one (w != 0) and its bitangent w (n x t)
+// reversed (glTF's v runs down the image), else solved from the partials;
+// b is n x t turned against dP/dv', as glTF-Sample-Viewer builds it from
+// derivatives. Undefined where neither gives a direction off n.
 struct TangentFrame {
   vec3 t;
   vec3 b;
   bool defined;
 };
 
-FACET_FN TangentFrame texture_frame(vec3 n, vec4 tangent, vec3 dp_ds, vec3 dp_dt, vec2 duv_ds, vec2 duv_dt) {
+FACET_FN TangentFrame texture_frame(vec3 n, vec4 tangent, vec3 dp_ds, vec3 dp_dt, vec2 duv_ds, vec2 duv_dt, UvMap map) {
   TangentFrame f;
   f.b = vec3(real(0), real(0), real(0));
   f.defined = false;
   vec3 along = vec3(tangent.x, tangent.y, tangent.z);
-  f.t = along - n * dot(n, along);
-  real length2 = dot(f.t, f.t);
+  vec3 mesh_t = along - n * dot(n, along);
+  real length2 = dot(mesh_t, mesh_t);
   if (tangent.w != real(0) && length2 > real(0)) {
-    f.t = f.t * inversesqrt(length2);
-    f.b = cross(n, f.t) * tangent.w;
-    f.defined = true;
-    return f;
+    // The mesh's frame as partials over (u, v) themselves.
+    dp_ds = mesh_t * inversesqrt(length2);
+    dp_dt = -(cross(n, dp_ds) * tangent.w);
+    duv_ds = vec2(real(1), real(0));
+    duv_dt = vec2(real(0), real(1));
   }
+  duv_ds = apply_uv_map(map, duv_ds);
+  duv_dt = apply_uv_map(map, duv_dt);
   real det = duv_ds.x * duv_dt.y - duv_ds.y * duv_dt.x;
   if (det == real(0)) return f;
   vec3 dp_du = (dp_ds * duv_dt.y - dp_dt * duv_ds.y) / det;
@@ -77,7 +92,10 @@ FACET_FN TangentFrame texture_frame(vec3 n, vec4 tangent, vec3 dp_ds, vec3 dp_dt
 // frame.
 FACET_FN vec3 anisotropy_tangent(vec3 n, vec4 tangent, vec3 dp_ds, vec3 dp_dt, vec2 duv_ds, vec2 duv_dt,
                                  real cos_rotation, real sin_rotation) {
-  TangentFrame f = texture_frame(n, tangent, dp_ds, dp_dt, duv_ds, duv_dt);
+  UvMap same;
+  same.u = vec2(real(1), real(0));
+  same.v = vec2(real(0), real(1));
+  TangentFrame f = texture_frame(n, tangent, dp_ds, dp_dt, duv_ds, duv_dt, same);
   if (f.defined) return f.t * cos_rotation + f.b * sin_rotation;
   return surface_tangent(n, dp_ds, dp_dt, cos_rotation, sin_rotation);
 }

@@ -47,6 +47,12 @@ TextureFootprint slot_footprint(TextureSlotRecord slot, TextureFootprint f0, Tex
   return slot.texCoord == 1u ? f1 : f0;
 }
 
+// The transform a slot reads its coordinates through, as a tangent frame
+// takes it.
+UvMap slot_map(TextureSlotRecord slot) {
+  return slot_uv_map(slot.cosRotation, slot.sinRotation, vec2(slot.scaleX, slot.scaleY));
+}
+
 // Every slot of textured material m at a hit on patch `record` (at point p)
 // of an object with face-varying `channels`, seen along `direction` from
 // distance t, of geometric normal ng (engine/cpu/textured_hit.h's
@@ -69,6 +75,7 @@ MaterialTexels material_texels(MaterialRecord m, PatchRecord record, uint channe
     t.base *= surface_color(channel_texel(record.firstTexcoord, channels, FACET_CHANNEL_COLOR), hit.s, hit.tParam);
   t.metallic_roughness = slot_value(m.metallicRoughnessTexture, slot_footprint(m.metallicRoughnessTexture, f0, f1)).rgb;
   t.normal_frame = slot_footprint(m.normalTexture, f0, f1);
+  t.normal_map = slot_map(m.normalTexture);
   t.normal = slot_value(m.normalTexture, t.normal_frame).rgb;
   t.occlusion = slot_value(m.occlusionTexture, slot_footprint(m.occlusionTexture, f0, f1)).r;
   t.emission = slot_value(m.emissiveTexture, slot_footprint(m.emissiveTexture, f0, f1)).rgb;
@@ -78,6 +85,7 @@ MaterialTexels material_texels(MaterialRecord m, PatchRecord record, uint channe
   t.coat_roughness = 1.0;
   t.coat_normal = vec3(1.0);
   t.coat_normal_frame = f0;
+  t.coat_normal_map = t.normal_map;
   t.sheen = vec3(1.0);
   t.anisotropy = vec3(1.0);
   t.transmission =
@@ -86,6 +94,7 @@ MaterialTexels material_texels(MaterialRecord m, PatchRecord record, uint channe
   t.coat = slot_value(m.clearcoatTexture, slot_footprint(m.clearcoatTexture, f0, f1)).r;
   t.coat_roughness = slot_value(m.clearcoatRoughnessTexture, slot_footprint(m.clearcoatRoughnessTexture, f0, f1)).g;
   t.coat_normal_frame = slot_footprint(m.clearcoatNormalTexture, f0, f1);
+  t.coat_normal_map = slot_map(m.clearcoatNormalTexture);
   t.coat_normal = slot_value(m.clearcoatNormalTexture, t.coat_normal_frame).rgb;
   t.sheen = slot_value(m.sheenColorTexture, slot_footprint(m.sheenColorTexture, f0, f1)).rgb;
   t.anisotropy = slot_value(m.anisotropyTexture, slot_footprint(m.anisotropyTexture, f0, f1)).rgb;

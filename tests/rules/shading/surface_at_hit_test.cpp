@@ -43,6 +43,7 @@ m::MaterialTexels emptyTexels() {
   t.occlusion = t.coat = t.coat_roughness = t.transmission = t.specular = 1.0;
   t.specular_color = glm::dvec3(1.0);
   t.normal_frame = t.coat_normal_frame = frame;
+  t.normal_map = t.coat_normal_map = m::slot_uv_map(1.0, 0.0, {1.0, 1.0});
   return t;
 }
 
@@ -141,6 +142,24 @@ TEST(SurfaceAtHit, EmptySlotsLeaveTheGltfFactorsAndANormalMapTurnsTheBaseButNotT
   EXPECT_GT(s.n.x, 0.5);
   EXPECT_NEAR(glm::length(s.n), 1.0, 1e-12);
   EXPECT_EQ(s.params.clearcoat_normal, kN);
+}
+
+// A bump seen from behind (a double-sided sheet, glass from within) is the
+// same bump: the mapped normal turns over with the surface, tangential
+// components and all, whether the frame is the mesh's or the partials'.
+TEST(SurfaceAtHit, ANormalMapSeenFromInsideIsTheSameBumpTurnedOver) {
+  m::HitMaterial h = untextured(plastic());
+  h.textured = true;
+  h.factors = {{0.8, 0.6, 0.4}, 0.0, 0.5, true, 1.0, 1.0, false, false, 1.0, false, glm::dvec3(0.04), 1.0};
+  h.texels = emptyTexels();
+  h.texels.normal = {0.9, 0.3, 0.7};
+  const glm::dvec3 front = glm::normalize(glm::dvec3(0.1, 0.2, 1)), back = glm::normalize(glm::dvec3(0.1, 0.2, -1));
+  for (const m::HitPartials& partials : {flatPartials(), m::HitPartials{{}, {}, {}, {}, {1, 0, 0, 1}}}) {
+    const m::SurfaceAtHit outside = m::surface_at_hit(h, m::facing_normals(kN, kN, front), front, partials);
+    const m::SurfaceAtHit inside = m::surface_at_hit(h, m::facing_normals(kN, kN, back), back, partials);
+    EXPECT_GT(outside.n.x, 0.3);
+    EXPECT_EQ(inside.n, -outside.n);
+  }
 }
 
 TEST(SurfaceAtHit, TheTangentLiesAboutTheFinalNormalTurnedByTheRotation) {

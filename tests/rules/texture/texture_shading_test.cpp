@@ -78,13 +78,16 @@ TEST(TextureShading, TheSpecularTexturesScaleTheDielectricsF0) {
   EXPECT_NEAR(p.f0.r, 0.5 * 0.4 + 0.5 * 0.8, 1e-15);
 }
 
+// A slot that reads the surface's coordinates as they are.
+const t::UvMap kSameCoordinates = t::slot_uv_map(1.0, 0.0, {1.0, 1.0});
+
 TEST(TextureShading, TheNormalMapsFrameFollowsTheTextureCoordinates) {
   // The test quad's mapping: u along +x, v down the image along -y.
   const t::vec3 n(0, 0, 1), ds(2, 0, 0), dt(0, 2, 0);
   const t::vec2 du(0.5, 0), dv(0, -0.5);
   const t::vec4 none(0.0);
   const auto mapped = [&](t::vec2 du_ds, t::vec2 dv_dt, t::vec3 texel, double scale) {
-    return t::mapped_normal(n, t::texture_frame(n, none, ds, dt, du_ds, dv_dt), texel, scale);
+    return t::mapped_normal(n, t::texture_frame(n, none, ds, dt, du_ds, dv_dt, kSameCoordinates), texel, scale);
   };
   // The flat texel (0.5, 0.5, 1) keeps n; +X of the map leans towards +u, +Y towards -v.
   EXPECT_EQ(mapped(du, dv, {0.5, 0.5, 1.0}, 1.0), n);
@@ -108,18 +111,36 @@ TEST(TextureShading, AMeshTangentFramesTheNormalMap) {
   const t::vec3 n(0, 0, 1), ds(2, 0, 0), dt(0, 2, 0);
   const t::vec2 du(0.5, 0), dv(0, -0.5);
   const t::vec3 leaning(0.6, 0.8, 0.0);  // off n's plane too: made orthogonal
-  const t::TangentFrame frame = t::texture_frame(n, t::vec4(leaning + 0.5 * n, 1.0), ds, dt, du, dv);
+  const t::TangentFrame frame = t::texture_frame(n, t::vec4(leaning + 0.5 * n, 1.0), ds, dt, du, dv, kSameCoordinates);
   ASSERT_TRUE(frame.defined);
   EXPECT_NEAR(glm::length(frame.t - leaning), 0.0, 1e-12);
   EXPECT_NEAR(glm::length(frame.b - t::vec3(-0.8, 0.6, 0.0)), 0.0, 1e-12);
   const t::vec3 x = t::mapped_normal(n, frame, {1.0, 0.5, 0.5}, 1.0);
   EXPECT_NEAR(glm::length(x - leaning), 0.0, 1e-12);
   // w = -1 turns the bitangent, and so the map's +Y, over.
-  const t::TangentFrame mirrored = t::texture_frame(n, t::vec4(leaning, -1.0), ds, dt, du, dv);
+  const t::TangentFrame mirrored = t::texture_frame(n, t::vec4(leaning, -1.0), ds, dt, du, dv, kSameCoordinates);
   EXPECT_NEAR(glm::length(t::mapped_normal(n, mirrored, {0.5, 1.0, 0.5}, 1.0) - t::vec3(0.8, -0.6, 0.0)), 0.0, 1e-12);
   // A tangent along n gives no direction: the partials' frame stands in.
-  const t::TangentFrame along = t::texture_frame(n, t::vec4(n, 1.0), ds, dt, du, dv);
+  const t::TangentFrame along = t::texture_frame(n, t::vec4(n, 1.0), ds, dt, du, dv, kSameCoordinates);
   EXPECT_EQ(along.t, t::vec3(1, 0, 0));
+}
+
+// KHR_texture_transform turns the texture on the surface, and the frame its
+// normal map turns in with it: a quarter turn of the slot's coordinates
+// turns t and b a quarter, the mesh's frame and the partials' alike.
+TEST(TextureShading, ASlotsTransformTurnsItsFrame) {
+  const t::vec3 n(0, 0, 1), ds(2, 0, 0), dt(0, 2, 0);
+  const t::vec2 du(0.5, 0), dv(0, -0.5);
+  const double quarter = std::acos(-1.0) / 2;
+  const t::UvMap turned = t::slot_uv_map(std::cos(quarter), std::sin(quarter), {1.0, 1.0});
+  const t::TangentFrame fromPartials = t::texture_frame(n, t::vec4(0.0), ds, dt, du, dv, turned);
+  const t::TangentFrame fromMesh = t::texture_frame(n, t::vec4(1, 0, 0, 1), ds, dt, du, dv, turned);
+  for (const t::TangentFrame& f : {fromPartials, fromMesh}) {
+    ASSERT_TRUE(f.defined);
+    // u' = cos u + sin v grows along dP/dv's direction, -y, here.
+    EXPECT_NEAR(glm::length(f.t - t::vec3(0, -1, 0)), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(f.b - t::vec3(1, 0, 0)), 0.0, 1e-12);
+  }
 }
 
 // Between corners the mesh's tangent is interpolated bilinearly, its sign
