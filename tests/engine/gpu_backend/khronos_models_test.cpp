@@ -5,6 +5,7 @@
 #include <glm/vec2.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -139,6 +140,48 @@ TEST_F(KhronosModels, NegativeScaleCullsTheBackAndTurnsTheNormals) {
       std::printf("  spheres at y %.2f: %.4f and %.4f\n", y, upright.g, inverted.g);
       EXPECT_LT(glm::length(upright - inverted), 0.05 * glm::length(upright)) << "y " << y;
     }
+  }
+}
+
+// BoxVertexColors: a unit cube in glTF's default material (metal, rough),
+// its COLOR_0 the RGB of each vertex's position: "the vertex at (0,0,0) is
+// black, the vertex at (1,0,0) is red, the vertex at (1,1,0) is yellow".
+// Near each corner the camera sees, the channels its coordinates set are
+// bright and the others dark (the default light is grey).
+TEST_F(KhronosModels, VertexColoursAreTheirCornersColours) {
+  scene::Scene scene = khronosModel("BoxVertexColors");
+  EXPECT_TRUE(scene.warnings.empty());
+  scene.camera = {{2.6, 2.2, 3.0}, {0.5, 0.5, 0.5}, {0, 1, 0}, 35.0};
+  scene.environment = scene::studioEnvironment();
+  scene.render.width = scene.render.height = 96;
+  scene.render.samplesPerPixel = 4;
+  const testing::PathRenders r = testing::renderBoth(device_, scene);
+  testing::expectPathParity(r, {.median = 1e-4, .p98 = 2e-3, .parted = 10});
+  for (const Image* image : {&r.reference, &r.gpu.image}) {
+    int corners = 0;
+    for (int corner = 1; corner < 8; ++corner) {  // the black corner faces away
+      const glm::dvec3 at(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+      glm::dvec3 sum(0.0);
+      int pixels = 0;
+      for (std::size_t p = 0; p < image->beauty.size(); ++p)
+        if (image->beauty[p].a == 1.0f && glm::distance(glm::dvec3(image->position[p]), at) < 0.12)
+          sum += glm::dvec3(image->beauty[p]), ++pixels;
+      if (pixels < 3) continue;
+      ++corners;
+      const glm::dvec3 c = sum / double(pixels);
+      double on = 1e30, off = 0.0;
+      for (int k = 0; k < 3; ++k) {
+        if (at[k] == 1.0)
+          on = std::min(on, c[k]);
+        else
+          off = std::max(off, c[k]);
+      }
+      std::printf("%s corner (%g, %g, %g): %.3f %.3f %.3f\n", image == &r.reference ? "cpu" : "gpu", at.x, at.y, at.z,
+                  c.r, c.g, c.b);
+      EXPECT_GT(on, 0.1) << at.x << at.y << at.z;
+      EXPECT_GT(on, 3.0 * off) << at.x << at.y << at.z;
+    }
+    EXPECT_EQ(corners, 7);
   }
 }
 
