@@ -191,6 +191,12 @@ std::vector<glm::dvec4> primitiveTangents(const tinygltf::Primitive& primitive, 
 // such coordinates.
 bool completeTangents(ControlCage& cage, int set);
 
+// `values` (3 per vertex) moved by each of the primitive's morph targets'
+// `attribute` (VEC3 FLOAT) times its weight; a target without it moves
+// nothing.
+void morph(std::vector<double>& values, const tinygltf::Primitive& primitive, const char* attribute,
+           const std::vector<double>& weights, const GltfReader& reader, const std::string& at);
+
 // The weights of a mesh instance's morph targets (glTF 2.0, 3.7.2.2): the
 // node's, else the mesh's, else 0 each; checked against every primitive's
 // target count and for finite values.

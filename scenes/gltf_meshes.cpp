@@ -133,10 +133,6 @@ std::vector<double> morphWeights(const tinygltf::Node& node, const tinygltf::Mes
   return std::vector<double>(mesh.primitives.empty() ? 0 : mesh.primitives.front().targets.size(), 0.0);
 }
 
-namespace {
-
-// `values` (3 per vertex) moved by each morph target's `attribute` times its
-// weight; a target without it moves nothing.
 void morph(std::vector<double>& values, const tinygltf::Primitive& primitive, const char* attribute,
            const std::vector<double>& weights, const GltfReader& reader, const std::string& at) {
   for (std::size_t t = 0; t < primitive.targets.size(); ++t) {
@@ -149,8 +145,6 @@ void morph(std::vector<double>& values, const tinygltf::Primitive& primitive, co
     for (std::size_t i = 0; i < d.size(); ++i) values[i] += weights[t] * d[i];
   }
 }
-
-}  // namespace
 
 namespace {
 
@@ -200,7 +194,7 @@ ControlCage toCage(const tinygltf::Mesh& mesh, const std::vector<std::size_t>& p
   };
   const bool normals = everyPrimitiveHas("NORMAL");
   const bool tangents = normals && tangentSet.has_value();
-  if (tangentSet && !normals && !std::none_of(primitives.begin(), primitives.end(), [&](std::size_t p) {
+  if (tangentSet && !normals && std::any_of(primitives.begin(), primitives.end(), [&](std::size_t p) {
         return mesh.primitives[p].attributes.count("TANGENT") != 0;
       }))
     reader.warn(where,

@@ -15,8 +15,6 @@ namespace {
 
 constexpr ElementFormat kTangentFormat{
     4, {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_FLOAT}, "FLOAT VEC4"};
-constexpr ElementFormat kTangentDeltaFormat{
-    3, {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_FLOAT}, "FLOAT VEC3"};
 
 }  // namespace
 
@@ -48,14 +46,7 @@ std::vector<glm::dvec4> primitiveTangents(const tinygltf::Primitive& primitive, 
   std::vector<double> xyz;
   for (std::size_t v = 0; v < vertices; ++v) xyz.insert(xyz.end(), &values[4 * v], &values[4 * v + 3]);
   // A morph target moves the tangent's direction (a VEC3 delta), never its sign.
-  for (std::size_t t = 0; t < primitive.targets.size(); ++t) {
-    const auto delta = primitive.targets[t].find("TANGENT");
-    if (weights[t] == 0.0 || delta == primitive.targets[t].end()) continue;
-    const std::string target = at + ".targets[" + std::to_string(t) + "].TANGENT";
-    const std::vector<double> d = reader.read(delta->second, target, kTangentDeltaFormat);
-    if (d.size() != xyz.size()) reader.fail(target, "has another count than the primitive's TANGENT");
-    for (std::size_t i = 0; i < d.size(); ++i) xyz[i] += weights[t] * d[i];
-  }
+  morph(xyz, primitive, "TANGENT", weights, reader, at);
   // Tangents turn with the surface (not as normals do); a mirror flips the
   // bitangent w (n x t) names, so w flips with it.
   const glm::dmat3 turn(world);
