@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <numbers>
 #include <random>
@@ -18,6 +19,7 @@
 #include "scenes/scene_file.h"
 #include "tests/support/channels_gltf.h"
 #include "tests/support/path_parity.h"
+#include "tests/support/studio_view.h"
 #include "tests/support/textured_gltf.h"
 
 namespace facet {
@@ -272,6 +274,106 @@ TEST_F(GltfMaterialParity, ACoatTextureCoatsOnlyItsCells) {
     EXPECT_GT(coated, 10.0 * bare + 0.01);
   }
   testing::expectPathParity(r, {.median = 1e-4, .p98 = 1e-3, .parted = 0});
+}
+
+// A UV sphere of 16 x 8 quads cut into triangles, with smooth NORMALs and
+// TEXCOORD_0 (longitude, latitude), in `material`, written as `name`.
+std::filesystem::path writeUvSphere(const std::filesystem::path& dir, const std::string& name,
+                                    const nlohmann::json& material) {
+  const int around = 16, down = 8;
+  std::vector<float> positions, uvs;
+  std::vector<std::uint16_t> indices;
+  for (int j = 0; j <= down; ++j)
+    for (int i = 0; i <= around; ++i) {
+      const double theta = std::numbers::pi * j / down, phi = 2 * std::numbers::pi * i / around;
+      positions.insert(positions.end(), {float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)),
+                                         float(-std::sin(theta) * std::sin(phi))});
+      uvs.insert(uvs.end(), {float(i) / around, float(j) / down});
+    }
+  for (int j = 0; j < down; ++j)
+    for (int i = 0; i < around; ++i) {
+      const auto a = std::uint16_t(j * (around + 1) + i), c = std::uint16_t(a + around + 1);
+      if (j > 0) indices.insert(indices.end(), {a, c, std::uint16_t(a + 1)});
+      if (j < down - 1) indices.insert(indices.end(), {std::uint16_t(a + 1), c, std::uint16_t(c + 1)});
+    }
+  const std::size_t p = positions.size() * 4, t = uvs.size() * 4, n = indices.size() * 2;
+  std::ofstream out(dir / (name + ".bin"), std::ios::binary);
+  out.write(reinterpret_cast<const char*>(positions.data()), std::streamsize(p));  // the normals too
+  out.write(reinterpret_cast<const char*>(uvs.data()), std::streamsize(t));
+  out.write(reinterpret_cast<const char*>(indices.data()), std::streamsize(n));
+  const std::size_t vertices = positions.size() / 3;
+  const nlohmann::json file = {
+      {"asset", {{"version", "2.0"}}},
+      {"extensionsUsed", {"KHR_materials_anisotropy"}},
+      {"scenes", {{{"nodes", {0}}}}},
+      {"nodes", {{{"mesh", 0}}}},
+      {"meshes",
+       {{{"primitives",
+          {{{"attributes", {{"POSITION", 0}, {"NORMAL", 0}, {"TEXCOORD_0", 1}}}, {"indices", 2}, {"material", 0}}}}}}},
+      {"materials", {material}},
+      {"accessors",
+       {{{"bufferView", 0},
+         {"componentType", 5126},
+         {"type", "VEC3"},
+         {"count", vertices},
+         {"min", {-1, -1, -1}},
+         {"max", {1, 1, 1}}},
+        {{"bufferView", 1}, {"componentType", 5126}, {"type", "VEC2"}, {"count", vertices}},
+        {{"bufferView", 2}, {"componentType", 5123}, {"type", "SCALAR"}, {"count", indices.size()}}}},
+      {"bufferViews",
+       {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", p}},
+        {{"buffer", 0}, {"byteOffset", p}, {"byteLength", t}},
+        {{"buffer", 0}, {"byteOffset", p + t}, {"byteLength", n}}}},
+      {"buffers", {{{"uri", name + ".bin"}, {"byteLength", p + t + n}}}}};
+  std::ofstream(dir / (name + ".gltf")) << file.dump(1);
+  return dir / (name + ".gltf");
+}
+
+// The largest step of brightness between horizontally neighbouring pixels
+// at least 4 pixels inside the silhouette.
+double largestStepInside(const Image& image) {
+  const auto covered = [&](int x, int y) {
+    for (int dy = -4; dy <= 4; ++dy)
+      for (int dx = -4; dx <= 4; ++dx) {
+        const int u = x + dx, v = y + dy;
+        if (u < 0 || v < 0 || u >= image.width || v >= image.height || image.beauty[image.index(u, v)].a < 1.0f)
+          return false;
+      }
+    return true;
+  };
+  const auto brightness = [&](int x, int y) {
+    const glm::vec4 c = image.beauty[image.index(x, y)];
+    return (c.r + c.g + c.b) / 3.0;
+  };
+  double largest = 0.0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x + 1 < image.width; ++x)
+      if (covered(x, y) && covered(x + 1, y))
+        largest = std::max(largest, std::abs(brightness(x + 1, y) - brightness(x, y)));
+  return largest;
+}
+
+// A coarse brushed-metal sphere: MikkTSpace's tangents, interpolated
+// across each triangle, turn the anisotropic lobe smoothly, where the
+// triangles' own dP/du turn it at every edge (meridian gores,
+// docs/images/mesh_tangents.png).
+TEST_F(GltfMaterialParity, MeshTangentsLeaveNoGoresOnACoarseSphere) {
+  const nlohmann::json brushed = {
+      {"pbrMetallicRoughness", {{"baseColorFactor", {0.95, 0.93, 0.88, 1.0}}, {"roughnessFactor", 0.3}}},
+      {"extensions", {{"KHR_materials_anisotropy", {{"anisotropyStrength", 1.0}}}}}};
+  scene::Scene scene = scene::loadScene(writeUvSphere(dir_, "brushed_sphere", brushed));
+  EXPECT_TRUE(scene.warnings.empty());
+  ASSERT_FALSE(scene.objects.front().cage.faceVertexTangents.empty());
+  scene = testing::studioView(scene, {{0.0, 0.8, 3.2}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 40.0}, 128);
+  const testing::PathRenders smooth = testing::renderBoth(device_, scene);
+  testing::expectPathParity(smooth, {.median = 1e-4, .p98 = 1e-3, .parted = 0});
+  for (scene::Object& object : scene.objects) object.cage.faceVertexTangents.clear();
+  const testing::PathRenders faceted = testing::renderBoth(device_, scene);
+  for (const testing::PathRenders* r : {&smooth, &faceted})
+    std::printf("%s: largest step cpu %.4f, gpu %.4f\n", r == &smooth ? "MikkTSpace" : "per-triangle dP/du",
+                largestStepInside(r->reference), largestStepInside(r->gpu.image));
+  EXPECT_LT(largestStepInside(smooth.reference), 0.5 * largestStepInside(faceted.reference));
+  EXPECT_LT(largestStepInside(smooth.gpu.image), 0.5 * largestStepInside(faceted.gpu.image));
 }
 
 // The quad's u runs along +x, its v down the image: the tangent is +x and

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "scenes/scene_file.h"
-#include "scenes/studio_environment.h"
 #include "tests/support/path_parity.h"
+#include "tests/support/studio_view.h"
 
 namespace facet {
 namespace {
@@ -46,14 +46,10 @@ struct HeadOn {
   std::size_t parted = 20;  // pixels the backends may part on (silhouettes, shadow edges)
 
   // Lit by the studio, or by the scene's own lights alone.
-  testing::PathRenders render(gpu::Device& device, scene::Scene scene, bool studio = true) const {
-    scene.camera = {centre + glm::dvec3(0, 0, distance), centre, {0, 1, 0}, fov};
-    if (studio)
-      scene.environment = scene::studioEnvironment();
-    else
-      scene.environment.reset();
-    scene.render.width = scene.render.height = size;
-    scene.render.samplesPerPixel = 4;
+  testing::PathRenders render(gpu::Device& device, const scene::Scene& model, bool studio = true) const {
+    scene::Scene scene =
+        testing::studioView(model, {centre + glm::dvec3(0, 0, distance), centre, {0, 1, 0}, fov}, size);
+    if (!studio) scene.environment.reset();
     const testing::PathRenders r = testing::renderBoth(device, scene);
     testing::expectPathParity(r, {.median = 1e-4, .p98 = 2e-3, .parted = parted});
     return r;
@@ -154,13 +150,10 @@ TEST_F(KhronosModels, NegativeScaleCullsTheBackAndTurnsTheNormals) {
 // Near each corner the camera sees, the channels its coordinates set are
 // bright and the others dark (the default light is grey).
 TEST_F(KhronosModels, VertexColoursAreTheirCornersColours) {
-  scene::Scene scene = khronosModel("BoxVertexColors");
+  const scene::Scene scene = khronosModel("BoxVertexColors");
   EXPECT_TRUE(scene.warnings.empty());
-  scene.camera = {{2.6, 2.2, 3.0}, {0.5, 0.5, 0.5}, {0, 1, 0}, 35.0};
-  scene.environment = scene::studioEnvironment();
-  scene.render.width = scene.render.height = 96;
-  scene.render.samplesPerPixel = 4;
-  const testing::PathRenders r = testing::renderBoth(device_, scene);
+  const testing::PathRenders r =
+      testing::renderBoth(device_, testing::studioView(scene, {{2.6, 2.2, 3.0}, {0.5, 0.5, 0.5}, {0, 1, 0}, 35.0}, 96));
   testing::expectPathParity(r, {.median = 1e-4, .p98 = 2e-3, .parted = 10});
   for (const Image* image : {&r.reference, &r.gpu.image}) {
     int corners = 0;
