@@ -231,5 +231,28 @@ TEST_F(KhronosModels, AnisotropyRotationsUndoTheTangentsTilt) {
   EXPECT_GT(std::abs(tilted), 10.0);
 }
 
+// ClearCoatCarPaint: a red car paint (roughness 0.4, metallic 0.3, flakes
+// of a tiled noise normal map) under a clear coat of roughness 0, "to
+// provide a contrast with the clear coat layer": the coat draws the studio's
+// key light sharp and bright over the paint's blur; without it the brightest
+// pixel is the blurred paint's.
+TEST_F(KhronosModels, AClearCoatDrawsTheLightSharpOverThePaint) {
+  const scene::Scene coated = khronosModel("ClearCoatCarPaint");
+  EXPECT_TRUE(coated.warnings.empty());
+  scene::Scene bare = coated;
+  for (materials::Material& m : bare.materials) m.clearcoat = 0.0;
+  const HeadOn view{{0.0, 0.5, 0.0}, 3.2, 30.0, 128};
+  const auto peak = [](const Image& image) {  // over the ball, not the studio behind it
+    double brightest = 0.0;
+    for (const glm::vec4& c : image.beauty)
+      if (c.a == 1.0f) brightest = std::max(brightest, double(c.g));
+    return brightest;
+  };
+  const testing::PathRenders withCoat = view.render(device_, coated), without = view.render(device_, bare);
+  std::printf("brightest green: coated %.4f, bare %.4f\n", peak(withCoat.reference), peak(without.reference));
+  EXPECT_GT(peak(withCoat.reference), 4.0 * peak(without.reference));
+  EXPECT_GT(peak(withCoat.gpu.image), 4.0 * peak(without.gpu.image));
+}
+
 }  // namespace
 }  // namespace facet
