@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scenes/scene_file.h"
@@ -252,6 +253,38 @@ TEST_F(KhronosModels, AClearCoatDrawsTheLightSharpOverThePaint) {
   std::printf("brightest green: coated %.4f, bare %.4f\n", peak(withCoat.reference), peak(without.reference));
   EXPECT_GT(peak(withCoat.reference), 4.0 * peak(without.reference));
   EXPECT_GT(peak(withCoat.gpu.image), 4.0 * peak(without.gpu.image));
+}
+
+// TwoSidedPlane: "a plane having the two sided material parameter enabled",
+// a normal-mapped wooden board in the plane y = 0. Seen and lit from below
+// it shows its other side as the top shows this one: every pixel covered,
+// and as bright (a renderer that culled it would show nothing, one that kept
+// the top's normal would leave it in the dark).
+TEST_F(KhronosModels, ATwoSidedPlaneShowsBothSides) {
+  const scene::Scene plane = khronosModel("TwoSidedPlane");
+  EXPECT_TRUE(plane.warnings.empty());
+  const auto fromSide = [&](double side) {
+    scene::Scene scene =
+        testing::studioView(plane, {{0.0, 4.0 * side, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, -1.0}, 35.0}, 96);
+    scene.environment.reset();
+    scene.lights = {scene::Light{scene::LightType::Point, glm::dvec3(40.0), scene.camera.eye}};
+    const testing::PathRenders r = testing::renderBoth(device_, scene);
+    testing::expectPathParity(r, {.median = 1e-4, .p98 = 2e-3, .parted = 20});
+    return r;
+  };
+  const testing::PathRenders top = fromSide(1.0), bottom = fromSide(-1.0);
+  for (const auto& [a, b] :
+       {std::pair{&top.reference, &bottom.reference}, std::pair{&top.gpu.image, &bottom.gpu.image}}) {
+    double covered[2] = {0, 0}, brightness[2] = {0, 0};
+    for (int side = 0; side < 2; ++side)
+      for (const glm::vec4& c : (side == 0 ? a : b)->beauty)
+        if (c.a == 1.0f) covered[side] += 1, brightness[side] += (c.r + c.g + c.b) / 3.0;
+    std::printf("%s: top %.0f pixels of mean %.4f, bottom %.0f of mean %.4f\n", a == &top.reference ? "cpu" : "gpu",
+                covered[0], brightness[0] / covered[0], covered[1], brightness[1] / covered[1]);
+    EXPECT_GT(covered[0], 0.3 * 96 * 96);
+    EXPECT_EQ(covered[1], covered[0]);
+    EXPECT_NEAR(brightness[1] / covered[1], brightness[0] / covered[0], 0.2 * brightness[0] / covered[0]);
+  }
 }
 
 }  // namespace
