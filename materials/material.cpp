@@ -106,7 +106,6 @@ void checkTransmission(const MaterialSpec& spec, const Preset* preset, Material&
   if (!(m.eta.x >= 1.0))
     fail(indexField, "a transmissive material's index of refraction (inside over outside) must be >= 1, got " +
                          formatNumber(m.eta.x));
-  if (m.energyCompensation) fail("energy_compensation", "is not defined for a transmissive material");
   if (preset) m.attenuationColor = preset->attenuationColor, m.attenuationDistance = preset->attenuationDistance;
   if (spec.attenuationColor) {
     for (int i = 0; i < 3; ++i)

@@ -105,9 +105,7 @@ void applySceneOverrides(const SceneOverrides& o, scene::Scene& scene) {
 
 void applyEnergyCompensation(const std::string& onOrOff, scene::Scene& scene) {
   if (onOrOff.empty()) return;
-  // Transmissive materials have no compensation (docs/shading.md, "Transmission").
-  for (materials::Material& material : scene.materials)
-    if (!materials::isTransmissive(material)) material.energyCompensation = onOrOff == "on";
+  for (materials::Material& material : scene.materials) material.energyCompensation = onOrOff == "on";
 }
 
 void addEnergyCompensationOption(CLI::App& command, std::string& onOrOff) {

@@ -112,7 +112,8 @@ class ReferenceScene final : public PathScene {
     // The catcher is lit by the environment alone, whose share it measures.
     const bool catcher = scene_.objects[std::size_t(hit.object)].shadowCatcher && environment_;
     const glm::dvec3& position = hit.surface.position;
-    const glm::dvec3 specularScale = ibl::specularScale(compensation_, material, s.params, glm::dot(s.n, v));
+    const glm::dvec3 specularScale =
+        ibl::specularScale(compensation_, material, s.params, glm::dot(s.n, v), fetched.transmissive, s.outside);
     const VertexKey vertexKey{pixel, sample, seed, std::uint32_t(scene_.lights.size())};
     glm::dvec3 radiance = s.emission;
     // Inside a sealed solid each of the environment's shadow rays would be blocked.

@@ -41,6 +41,14 @@ std::string dfgKeyText(int distribution, int geometry, const PrefilterSettings& 
   return key.str();
 }
 
+std::string glassKeyText(double eta, bool thinWalled, const PrefilterSettings& settings) {
+  std::ostringstream key;
+  key << "facet glass albedo table v" << kFormatVersion << " code " << FACET_PREFILTER_FINGERPRINT << " dfgSize "
+      << settings.dfgSize << " dfgSamples " << settings.dfgSamples << " eta " << std::hexfloat << eta << " thinWalled "
+      << thinWalled;
+  return key.str();
+}
+
 // The stored value of `key` (file `<prefix>-<hash>.bin`) when present,
 // intact and fitting the request, else `build`'s, stored.
 template <class T, class ToPayload, class FromPayload, class Fits, class Build>
@@ -96,6 +104,15 @@ DfgTable cachedDfgTable(int distribution, int geometry, const PrefilterSettings&
       "dfg", dfgKeyText(distribution, geometry, settings), cache_format::tablePayload, cache_format::tableFromPayload,
       [&](const DfgTable& table) { return cache_format::tableFits(table, distribution, geometry, settings); },
       [&] { return dfgTable(distribution, geometry, settings); });
+}
+
+DfgTable cachedGlassAlbedoTable(double eta, bool thinWalled, const PrefilterSettings& settings) {
+  return cached<DfgTable>(
+      "glass", glassKeyText(eta, thinWalled, settings), cache_format::tablePayload, cache_format::tableFromPayload,
+      [&](const DfgTable& table) {
+        return cache_format::tableFits(table, rules::f64::D_GGX, rules::f64::G_SMITH_GGX_CORRELATED, settings);
+      },
+      [&] { return glassAlbedoTable(eta, thinWalled, settings); });
 }
 
 }  // namespace facet::ibl

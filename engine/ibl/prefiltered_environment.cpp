@@ -175,19 +175,36 @@ std::array<glm::dvec3, 9> projectOnSh(const scene::EnvironmentMap& map) {
 
 }  // namespace
 
-DfgTable dfgTable(int distribution, int geometry, const PrefilterSettings& settings) {
-  const int size = settings.dfgSize;
+namespace {
+
+// A size x size table over dfg_grid_nv and dfg_grid_alpha of what `entry`
+// gives at (n.v, alpha), built a row per task.
+DfgTable gridTable(int distribution, int geometry, int size,
+                   const std::function<glm::dvec2(double nv, double alpha)>& entry) {
   DfgTable table{distribution, geometry, size, std::vector<float>(2 * std::size_t(size) * std::size_t(size))};
   forEachRow(size, [&](int j) {
     const double alpha = m::dfg_grid_alpha(j, size);
     for (int i = 0; i < size; ++i) {
-      const glm::dvec2 scaleBias =
-          m::dfg_integrals(distribution, geometry, m::dfg_grid_nv(i, size), alpha, settings.dfgSamples);
-      table.scaleBias[2 * (std::size_t(j) * size + i)] = float(scaleBias.x);
-      table.scaleBias[2 * (std::size_t(j) * size + i) + 1] = float(scaleBias.y);
+      const glm::dvec2 value = entry(m::dfg_grid_nv(i, size), alpha);
+      table.scaleBias[2 * (std::size_t(j) * size + i)] = float(value.x);
+      table.scaleBias[2 * (std::size_t(j) * size + i) + 1] = float(value.y);
     }
   });
   return table;
+}
+
+}  // namespace
+
+DfgTable dfgTable(int distribution, int geometry, const PrefilterSettings& settings) {
+  return gridTable(distribution, geometry, settings.dfgSize, [&](double nv, double alpha) {
+    return m::dfg_integrals(distribution, geometry, nv, alpha, settings.dfgSamples);
+  });
+}
+
+DfgTable glassAlbedoTable(double eta, bool thinWalled, const PrefilterSettings& settings) {
+  return gridTable(m::D_GGX, m::G_SMITH_GGX_CORRELATED, settings.dfgSize, [&](double nv, double alpha) {
+    return m::glass_albedo_entry(nv, alpha, eta, thinWalled, settings.dfgSamples);
+  });
 }
 
 int modelPairIndex(ModelPairs& pairs, const materials::Material& material) {

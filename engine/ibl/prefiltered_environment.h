@@ -77,6 +77,11 @@ glm::dvec2 dfgLookup(const DfgTable& table, double nv, double alpha);
 // The (D, G) pair's table at settings.dfgSize^2 entries of settings.dfgSamples
 // samples each, built in double and stored in float.
 DfgTable dfgTable(int distribution, int geometry, const PrefilterSettings& settings = {});
+// The glass albedo table of a clear interface of `eta` (glass_albedo_entry in
+// rules/shading/dfg.h) over the same grid, E in the scale and 0 in the bias,
+// for GGX with the correlated Smith G, the only pair a transmissive material
+// takes.
+DfgTable glassAlbedoTable(double eta, bool thinWalled, const PrefilterSettings& settings = {});
 // What dfgLookup returns from the (D, G) table `settings` would build,
 // computing only the four entries it reads, in double (the tables store
 // float), for one-off queries.
@@ -117,5 +122,7 @@ PrefilteredEnvironment rememberedPrefilter(const scene::EnvironmentMap& map, con
                                            const std::function<PrefilteredEnvironment()>& build);
 // dfgTable through the same cache, keyed by the pair and the table's settings.
 DfgTable cachedDfgTable(int distribution, int geometry, const PrefilterSettings& settings = {});
+// glassAlbedoTable through the same cache, keyed by eta, the wall and the settings.
+DfgTable cachedGlassAlbedoTable(double eta, bool thinWalled, const PrefilterSettings& settings = {});
 
 }  // namespace facet::ibl

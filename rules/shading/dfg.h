@@ -110,4 +110,19 @@ FACET_FN vec3 energy_compensation(vec3 f0, vec2 dfg) {
 // f0 for Schlick's F, what the other models give there.
 FACET_FN vec3 specular_compensation(BrdfParams p, vec2 dfg) { return energy_compensation(fresnel_F(p, real(1)), dfg); }
 
+// Which of a compensated material's tables, from its first, is read at a
+// hit seen from v outside or not: a transmissive material has two glass
+// tables, its interface seen from outside and from inside.
+FACET_FN int compensation_table(int first, bool transmissive, bool outside) {
+  return (transmissive && !outside) ? first + 1 : first;
+}
+
+// The factor on material p's specular lobe from its table's entry at the
+// view's n.v. A transmissive material's reflection and transmission take
+// the same factor, 1 / E of its glass table, so that a clear interface
+// keeps all it receives: energy_compensation with F0 = 1.
+FACET_FN vec3 material_compensation(BrdfParams p, bool transmissive, vec2 entry) {
+  return transmissive ? energy_compensation(vec3(real(1)), entry) : specular_compensation(p, entry);
+}
+
 #endif

@@ -9,6 +9,7 @@
 #define FACET_RULE_SHADING_DIELECTRIC
 
 #include "rules/math.h"
+#include "rules/sampling/low_discrepancy.h"
 #include "rules/shading/brdf_sampling.h"
 #include "rules/shading/domain.h"
 #include "rules/shading/fresnel.h"
@@ -18,6 +19,13 @@
 // eta across the surface of a closed object whose inside has index `ior`,
 // seen from v outside (the side the outward normal points to) or inside.
 FACET_FN real interface_eta(real ior, bool outside) { return outside ? ior : real(1) / ior; }
+
+// eta across a transmissive material's surface seen from v outside or not: a
+// thin wall's one interface of its own index on either side, else
+// interface_eta.
+FACET_FN real transmissive_eta(real ior, bool thin_walled, bool outside) {
+  return thin_walled ? ior : interface_eta(ior, outside);
+}
 
 // l below the facet of normal m (v.m > 0) by Snell's law, eta = n_l / n_v;
 // vec3(0) under total internal reflection (pbrt-v4, Refract).
@@ -40,6 +48,12 @@ FACET_FN vec3 thin_wall_direction(vec3 n, vec3 v, vec3 m) {
 // uses the same form for transmission as for reflection).
 FACET_FN real dielectric_G(real alpha, real nl, real nv) {
   return real(1) / (real(1) + smith_lambda(D_GGX, alpha, abs(nl)) + smith_lambda(D_GGX, alpha, abs(nv)));
+}
+
+// f |n.l| / pdf of a direction reached through a visible normal of v, per
+// unit of the energy the facet sends there: G2 / G1(v) (Heitz 2018, eq. 19).
+FACET_FN real visible_normal_weight(real alpha, real nl, real nv) {
+  return dielectric_G(alpha, nl, nv) / smith_G1(D_GGX, alpha, nv);
 }
 
 // The generalized half vector of a transmission pair, on n's side
@@ -154,9 +168,7 @@ FACET_FN DielectricSample sample_dielectric(real alpha_in, real eta, real transm
     s.direction = refract_through(v, m, eta);
     if (!above_surface(-n, -ng, s.direction)) return s;
   }
-  real nl = dot(n, s.direction);
-  // f |n.l| / pdf = total G2 / G1(v) for the visible normals (Heitz 2018, eq. 19).
-  s.weight = total * dielectric_G(alpha, nl, nv) / smith_G1(D_GGX, alpha, nv);
+  s.weight = total * visible_normal_weight(alpha, dot(n, s.direction), nv);
   if (s.transmitted && !thin_walled) s.weight /= sqr(eta);
   return s;
 }
@@ -172,6 +184,32 @@ FACET_FN real dielectric_pdf(real alpha, real eta, real transmission, vec3 n, ve
   if (m == vec3(real(0))) return real(0);
   return (real(1) - reflect_probability(interface_split(eta, dot(v, m), transmission))) *
          dielectric_transmission_pdf(alpha, eta, n, l, v);
+}
+
+// One entry of a glass albedo table: E(n.v) of a clear interface's
+// dielectric lobes (transmission 1, eta = n_l / n_v; thin-walled or not), the
+// energy its single-scattering reflections and transmissions keep of what
+// arrives, over `samples` Hammersley points of v's visible normals, each
+// sending F of its energy by reflection and 1 - F through (without the
+// radiance's 1 / eta^2, which moves energy into a smaller solid angle and
+// loses none), as (E, 0). A smooth interface keeps 1 (docs/shading.md,
+// "Energy compensation of glass").
+FACET_FN vec2 glass_albedo_entry(real nv, real alpha_in, real eta, bool thin_walled, int samples) {
+  vec3 n = vec3(real(0), real(0), real(1));
+  vec3 v = vec3(sqrt(max(real(1) - nv * nv, real(0))), real(0), nv);
+  real alpha = effective_alpha(alpha_in);
+  real sum = real(0);
+  for (int k = 0; k < samples; ++k) {
+    vec3 m = sample_ggx_visible_normal(v, alpha, hammersley_point(k, samples));
+    real vm = dot(v, m);
+    if (vm <= real(0)) continue;
+    real F = fresnel_dielectric(eta, vm);
+    vec3 r = reflect(-v, m);
+    if (r.z > real(0)) sum += F * visible_normal_weight(alpha, r.z, nv);
+    vec3 t = thin_walled ? thin_wall_direction(n, v, m) : refract_through(v, m, eta);
+    if (t.z < real(0)) sum += (real(1) - F) * visible_normal_weight(alpha, t.z, nv);
+  }
+  return vec2(sum / real(samples), real(0));
 }
 
 #endif

@@ -90,7 +90,7 @@ FACET_FN PathStep path_step(PathVertex x, PathCarry carry, PathSampleKey key, ui
   vec3 weight;
   if (x.transmissive) {
     TransmissiveContinuation next =
-        continue_path_transmissive(x.params, x.transmission, x.n, x.ng, x.v, u,
+        continue_path_transmissive(x.params, x.transmission, x.n, x.ng, x.v, x.specular_scale, u,
                                    path_interface_u(key.pixel, key.sample_index, key.samples, key.seed, vertex));
     step.direction = next.direction;
     step.transmitted = next.transmitted;

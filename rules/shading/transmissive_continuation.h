@@ -40,7 +40,7 @@ struct TransmissionParams {
 FACET_FN BrdfParams transmissive_brdf_params(BrdfParams p, TransmissionParams t, bool outside, vec3 base,
                                              real metallic) {
   p.f_model = F_DIELECTRIC;
-  real eta = t.thin_walled ? t.ior : interface_eta(t.ior, outside);
+  real eta = transmissive_eta(t.ior, t.thin_walled, outside);
   p.eta = vec3(eta, eta, eta);
   p.f0 = base;
   p.metallic = metallic;
@@ -104,9 +104,10 @@ FACET_FN int opaque_continuation_lobe(BrdfParams p, vec3 n, vec3 v, vec2 u) {
 // continue_path's, u_interface picks reflection or transmission
 // (path_interface_u). A transmission carries the tint p.f0, and through a
 // thin wall its Beer-Lambert factor over thickness / cos, cos inside the
-// wall.
+// wall; `specular_scale` (energy compensation) weighs the dielectric lobes,
+// reflection and transmission alike.
 FACET_FN TransmissiveContinuation continue_path_transmissive(BrdfParams p, TransmissionParams t, vec3 n, vec3 ng,
-                                                             vec3 v, vec2 u, real u_interface) {
+                                                             vec3 v, vec3 specular_scale, vec2 u, real u_interface) {
   TransmissiveContinuation c;
   c.direction = vec3(real(0));
   c.weight = vec3(real(0));
@@ -125,12 +126,12 @@ FACET_FN TransmissiveContinuation continue_path_transmissive(BrdfParams p, Trans
     if (s.weight <= real(0)) return c;
     if (s.transmitted) {
       // No other lobe reaches this direction: the weight is the dielectric's alone.
-      c.weight = p.f0 * (s.weight / (real(1) - p_diffuse));
+      c.weight = p.f0 * specular_scale * (s.weight / (real(1) - p_diffuse));
       if (t.thin_walled) c.weight *= beer_lambert(t.sigma, t.thickness / max(s.cos_inside, COS_EPSILON));
       return c;
     }
     if (p_diffuse <= real(0) && p.metallic == real(0)) {
-      c.weight = vec3(s.weight);
+      c.weight = specular_scale * s.weight;
       return c;
     }
   } else {
@@ -142,7 +143,7 @@ FACET_FN TransmissiveContinuation continue_path_transmissive(BrdfParams p, Trans
   real pdf = p_diffuse * direction_pdf(SAMPLE_COSINE, p, n, c.direction, v) +
              (real(1) - p_diffuse) * dielectric_pdf(p.alpha, p.eta.x, transmission, n, c.direction, v);
   if (!(pdf > real(0))) return c;
-  c.weight = brdf_evaluate(p, n, c.direction, v) * (dot(n, c.direction) / pdf);
+  c.weight = brdf_evaluate_scaled(p, n, c.direction, v, specular_scale) * (dot(n, c.direction) / pdf);
   return c;
 }
 

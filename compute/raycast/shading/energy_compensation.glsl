@@ -15,11 +15,13 @@
 layout(set = 0, binding = 17) uniform samplerBuffer compensationTables;
 
 // vec3(1) for a material without compensation, or in a scene with none.
-vec3 material_specular_scale(uint table, BrdfParams p, float nv) {
+vec3 material_specular_scale(uint table, BrdfParams p, float nv, bool transmissive, bool outside) {
   if (COMPENSATION == 0 || table == FACET_NO_COMPENSATION) return vec3(1.0);
   int size = int(frame.compensationSize);
-  return specular_compensation(p, dfg_table_lookup(compensationTables, table * uint(size * size), size, nv,
-                                                         isotropic_equivalent_alpha(p)));
+  uint read = uint(compensation_table(int(table), transmissive, outside));
+  return material_compensation(p, transmissive,
+                               dfg_table_lookup(compensationTables, read * uint(size * size), size, nv,
+                                                isotropic_equivalent_alpha(p)));
 }
 
 #endif

@@ -321,7 +321,8 @@ void main() {
                                   hit_partials(anisotropic, range, record, p, hit));
   // The catcher is lit by the environment alone, whose share it measures.
   vec3 background = catcher && ENVIRONMENT != 0 ? environment_radiance(direction) : vec3(0.0);
-  vec3 specular_scale = material_specular_scale(m.compensationTable, s.params, dot(s.n, v));
+  vec3 specular_scale = material_specular_scale(m.compensationTable, s.params, dot(s.n, v),
+                                                TRANSMISSION == 1 && m.transmissive == 1u, s.outside);
   shade_lights(firstSlot, shaded && !catcher, s, position, v, specular_scale);
   vec3 offered = vec3(0.0);
   if (ENVIRONMENT != 0) {
