@@ -222,6 +222,39 @@ bool sharesFrame(const GroupMember& a, const GroupMember& b) {
   return glm::dot(a.s, b.s) > kSplitCosine && glm::dot(a.t, b.t) > kSplitCosine;
 }
 
+// The members whose direction (s or t) may point exactly opposite a given
+// one's, the only way two members of a group part (kSplitCosine): unit
+// directions whose dot product rounds to -1 differ from each other's
+// negation by under 1e-7 in each coordinate, so they lie in the cell of the
+// negation, or next to it, on a grid of that spacing.
+class OppositeDirections {
+ public:
+  OppositeDirections(const std::vector<GroupMember>& members, glm::dvec3 GroupMember::*direction)
+      : direction_(direction) {
+    for (std::size_t m = 0; m < members.size(); ++m) cells_[cell(members[m].*direction)].push_back(int(m));
+  }
+
+  // Candidates, a superset of the members opposite `member`'s direction.
+  std::vector<int> near(const GroupMember& member) const {
+    std::vector<int> found;
+    const std::array<long long, 3> centre = cell(-(member.*direction_));
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy)
+        for (long long dz = -1; dz <= 1; ++dz) {
+          const auto hit = cells_.find({centre[0] + dx, centre[1] + dy, centre[2] + dz});
+          if (hit != cells_.end()) found.insert(found.end(), hit->second.begin(), hit->second.end());
+        }
+    return found;
+  }
+
+ private:
+  static std::array<long long, 3> cell(const glm::dvec3& d) {
+    return {std::llround(d.x * 1e7), std::llround(d.y * 1e7), std::llround(d.z * 1e7)};
+  }
+  glm::dvec3 GroupMember::*direction_;
+  std::map<std::array<long long, 3>, std::vector<int>> cells_;
+};
+
 // The angle of `triangle` at `corner`, measured in the tangent plane.
 double cornerAngle(const std::vector<TangentCorner>& corners, int triangle, int corner, const glm::dvec3& normal) {
   const glm::dvec3 at = corners[std::size_t(3 * triangle + corner)].position;
@@ -259,20 +292,31 @@ void writeGroupTangents(const CornerGroup& group, const std::vector<TangentCorne
   std::sort(members.begin(), members.end(),
             [](const GroupMember& a, const GroupMember& b) { return a.triangle < b.triangle; });
   // Corners whose subgroups hold the same triangles share one result, so
-  // welded corners get bit-identical tangents.
+  // welded corners get bit-identical tangents. A subgroup is named by the
+  // members it leaves out, which are few: most vertices have none.
   std::map<std::vector<int>, glm::dvec3> tangentOfSubgroup;
   const double handedness = group.orientationPreserving ? 1.0 : -1.0;
-  for (const GroupMember& member : members) {
-    std::vector<const GroupMember*> subgroup;
-    std::vector<int> names;
-    for (const GroupMember& other : members)
-      if (sharesFrame(member, other)) {
-        subgroup.push_back(&other);
-        names.push_back(other.triangle);
+  const OppositeDirections oppositeS(members, &GroupMember::s), oppositeT(members, &GroupMember::t);
+  for (std::size_t m = 0; m < members.size(); ++m) {
+    const GroupMember& member = members[m];
+    std::vector<int> leftOut;
+    for (const OppositeDirections* opposite : {&oppositeS, &oppositeT})
+      for (const int other : opposite->near(member))
+        if (!sharesFrame(member, members[std::size_t(other)])) leftOut.push_back(other);
+    std::sort(leftOut.begin(), leftOut.end());
+    leftOut.erase(std::unique(leftOut.begin(), leftOut.end()), leftOut.end());
+    auto found = tangentOfSubgroup.find(leftOut);
+    if (found == tangentOfSubgroup.end()) {
+      std::vector<const GroupMember*> subgroup;
+      for (std::size_t other = 0, skip = 0; other < members.size(); ++other) {
+        if (skip < leftOut.size() && leftOut[skip] == int(other)) {
+          ++skip;
+          continue;
+        }
+        subgroup.push_back(&members[other]);
       }
-    auto found = tangentOfSubgroup.find(names);
-    if (found == tangentOfSubgroup.end())
-      found = tangentOfSubgroup.emplace(names, subgroupTangent(subgroup, group, normal, corners, vertex)).first;
+      found = tangentOfSubgroup.emplace(leftOut, subgroupTangent(subgroup, group, normal, corners, vertex)).first;
+    }
     const int corner = cornerAt(vertex, member.triangle, group.vertex);
     tangents[std::size_t(3 * member.triangle + corner)] = glm::dvec4(found->second, handedness);
   }
