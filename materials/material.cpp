@@ -48,6 +48,9 @@ Params toParams(const Material& m) {
   const double alpha = m.sheenRoughness * m.sheenRoughness;
   p.sheen_albedo_near = sheen ? Vec4(rules::f64::sheen_albedo_knots(alpha, 0, kSheenAlbedoSamples)) : Vec4(0.0);
   p.sheen_albedo_far = sheen ? Vec4(rules::f64::sheen_albedo_knots(alpha, 4, kSheenAlbedoSamples)) : Vec4(0.0);
+  p.iridescence = static_cast<Real>(m.iridescence);
+  p.iridescence_ior = static_cast<Real>(m.iridescenceIor);
+  p.iridescence_thickness = static_cast<Real>(m.iridescenceThickness);
   return p;
 }
 
@@ -166,6 +169,25 @@ void checkSheen(const MaterialSpec& spec, const Material& m, const Fail& fail) {
     fail("sheen_roughness", "is only used with sheen_color (give sheen_color too)");
   if (m.sheenColor != glm::dvec3(0.0) && isTransmissive(m))
     fail("sheen_color", "is not defined for a transmissive material (transmission > 0)");
+}
+
+// The iridescence fields of `spec`, copied into `m`, whose transmission is
+// resolved: the film's index within the optical constants' bounds, its
+// thickness finite, both only with the factor.
+template <class Fail>
+void checkIridescence(const MaterialSpec& spec, const Material& m, const Fail& fail) {
+  if (spec.iridescence) checkBounds(bounded(&MaterialSpec::iridescence), *spec.iridescence, fail);
+  if (spec.iridescenceIor && !(*spec.iridescenceIor > 0.0 && *spec.iridescenceIor <= kMaxOpticalConstant))
+    fail("iridescence_ior",
+         "must be in (0, " + formatNumber(kMaxOpticalConstant) + "], got " + formatNumber(*spec.iridescenceIor));
+  if (spec.iridescenceThickness && !(*spec.iridescenceThickness >= 0.0 && std::isfinite(*spec.iridescenceThickness)))
+    fail("iridescence_thickness",
+         "must be finite and >= 0 (nanometres), got " + formatNumber(*spec.iridescenceThickness));
+  for (const auto& [field, given] : {std::pair{"iridescence_ior", spec.iridescenceIor.has_value()},
+                                     std::pair{"iridescence_thickness", spec.iridescenceThickness.has_value()}})
+    if (given && !spec.iridescence) fail(field, "is only used with iridescence (give iridescence too)");
+  if (m.iridescence > 0.0 && isTransmissive(m))
+    fail("iridescence", "is not defined for a transmissive material (transmission > 0)");
 }
 
 // glTF's metallic-roughness parameters (docs/shading.md, "Materials"):
@@ -352,6 +374,7 @@ Material buildMaterial(const MaterialSpec& given,
   checkAnisotropy(spec, m, fail);
   checkClearcoat(spec, m, fail);
   checkSheen(spec, m, fail);
+  checkIridescence(spec, m, fail);
   return m;
 }
 

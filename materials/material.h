@@ -106,6 +106,12 @@ struct Material {
   // a Charlie lobe between the base and any coat.
   glm::dvec3 sheenColor{0.0};
   double sheenRoughness = 0.0;
+  // Iridescence (docs/shading.md, "Iridescence"): KHR_materials_iridescence's
+  // factor in [0, 1] (0 is no film), the film's index and its thickness in
+  // nanometres, the extension's defaults.
+  double iridescence = 0.0;
+  double iridescenceIor = 1.3;
+  double iridescenceThickness = 400.0;
 };
 
 // The largest index of refraction (ior, eta) or extinction coefficient (k)

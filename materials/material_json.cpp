@@ -100,6 +100,11 @@ nlohmann::json toJson(const Material& m) {
   if (m.clearcoat > 0.0) json["clearcoat"] = m.clearcoat, json["clearcoat_roughness"] = m.clearcoatRoughness;
   if (m.sheenColor != glm::dvec3(0.0))
     json["sheen_color"] = array(m.sheenColor), json["sheen_roughness"] = m.sheenRoughness;
+  if (m.iridescence > 0.0) {
+    json["iridescence"] = m.iridescence;
+    json["iridescence_ior"] = m.iridescenceIor;
+    json["iridescence_thickness"] = m.iridescenceThickness;
+  }
   if (isTransmissive(m)) {
     json["transmission"] = m.transmission;
     if (m.thinWalled) json["thin_walled"] = true, json["thickness"] = m.thickness;

@@ -41,6 +41,9 @@ class Material:
     clearcoat_roughness: Optional[float]
     sheen_color: Optional[Vec3]
     sheen_roughness: Optional[float]
+    iridescence: Optional[float]
+    iridescence_ior: Optional[float]
+    iridescence_thickness: Optional[float]
     def __init__(self, *, name: str = "", preset: Optional[str] = None, distribution: Optional[str] = None,
                  geometry: Optional[str] = None, fresnel: Optional[str] = None, alpha: Optional[float] = None,
                  roughness: Optional[float] = None, f0: Optional[Vec3] = None, ior: Optional[Vec3] = None,
@@ -51,7 +54,9 @@ class Material:
                  attenuation_distance: Optional[float] = None, thickness: Optional[float] = None,
                  anisotropy: Optional[float] = None, anisotropy_rotation: Optional[float] = None,
                  clearcoat: Optional[float] = None, clearcoat_roughness: Optional[float] = None,
-                 sheen_color: Optional[Vec3] = None, sheen_roughness: Optional[float] = None) -> None: ...
+                 sheen_color: Optional[Vec3] = None, sheen_roughness: Optional[float] = None,
+                 iridescence: Optional[float] = None, iridescence_ior: Optional[float] = None,
+                 iridescence_thickness: Optional[float] = None) -> None: ...
 
 class Cage:
     positions: numpy.ndarray  # read-only, (n, 3), its array not writeable

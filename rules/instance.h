@@ -38,6 +38,7 @@
 #include "rules/shading/sheen.h"
 #include "rules/shading/surface_at_hit.h"
 #include "rules/shading/textured_material.h"
+#include "rules/shading/thin_film.h"
 #include "rules/shading/transmissive_continuation.h"
 #include "rules/surface/authored_normal.h"
 #include "rules/surface/back_face.h"
@@ -84,6 +85,7 @@
 #undef FACET_RULE_SHADING_SHEEN
 #undef FACET_RULE_SHADING_SURFACE_AT_HIT
 #undef FACET_RULE_SHADING_TEXTURED_MATERIAL
+#undef FACET_RULE_SHADING_THIN_FILM
 #undef FACET_RULE_SHADING_TRANSMISSIVE_CONTINUATION
 #undef FACET_RULE_SURFACE_AUTHORED_NORMAL
 #undef FACET_RULE_SURFACE_BACK_FACE

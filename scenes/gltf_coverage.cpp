@@ -13,9 +13,13 @@ namespace {
 
 // The extensions facet implements; the one list the loader and its messages read.
 constexpr std::string_view kImplemented[] = {
-    "KHR_lights_punctual", "KHR_materials_anisotropy", "KHR_materials_clearcoat", "KHR_materials_emissive_strength",
-    "KHR_materials_ior",   "KHR_materials_sheen",      "KHR_materials_specular",  "KHR_materials_transmission",
-    "KHR_materials_unlit", "KHR_materials_variants",   "KHR_materials_volume",    "KHR_texture_transform",
+    "KHR_lights_punctual",        "KHR_materials_anisotropy",
+    "KHR_materials_clearcoat",    "KHR_materials_emissive_strength",
+    "KHR_materials_ior",          "KHR_materials_iridescence",
+    "KHR_materials_sheen",        "KHR_materials_specular",
+    "KHR_materials_transmission", "KHR_materials_unlit",
+    "KHR_materials_variants",     "KHR_materials_volume",
+    "KHR_texture_transform",
 };
 
 // What facet renders in place of an extension it ignores.
@@ -25,7 +29,6 @@ struct Fallback {
 constexpr Fallback kFallbacks[] = {
     {"KHR_materials_diffuse_transmission", "the base, opaque"},
     {"KHR_materials_dispersion", "one index of refraction for every wavelength"},
-    {"KHR_materials_iridescence", "the base without its thin film"},
     {"KHR_materials_pbrSpecularGlossiness", "the material's metallic-roughness parameters"},
     {"KHR_texture_basisu", "each texture's core image (an error where it has none)"},
     {"EXT_texture_webp", "each texture's core image (an error where it has none)"},

@@ -125,11 +125,13 @@ std::optional<std::string> factorRule(double value, materials::BoundedParameter 
 // Extension `name` of a material; null when it has none.
 const tinygltf::Value* extension(const tinygltf::Material& gltf, const char* name);
 
-// gltf_lobes.cpp: KHR_materials_clearcoat, KHR_materials_sheen and
+// gltf_lobes.cpp: KHR_materials_clearcoat, _sheen, _iridescence and
 // KHR_materials_anisotropy of `gltf` (field `material`) into `m`, whose
 // transmission is already set.
 void applyClearcoat(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
                     materials::Material& m);
+void applyIridescence(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
+                      materials::Material& m);
 void applySheen(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
                 materials::Material& m);
 void applyAnisotropy(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,

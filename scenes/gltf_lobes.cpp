@@ -1,8 +1,11 @@
 // The glTF extensions that add a lobe to the base or shape its lobe:
-// KHR_materials_clearcoat, KHR_materials_sheen and KHR_materials_anisotropy
-// (docs/gltf.md), and the textures of every extension.
+// KHR_materials_clearcoat, KHR_materials_sheen, KHR_materials_iridescence
+// and KHR_materials_anisotropy (docs/gltf.md), and the textures of every
+// extension.
+#include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "scenes/gltf_internal.h"
 
@@ -61,6 +64,41 @@ void applySheen(const tinygltf::Material& gltf, const std::string& material, con
   }
   m.sheenColor = color;
   m.sheenRoughness = roughness;
+}
+
+// KHR_materials_iridescence's factors into `m` (docs/gltf.md,
+// "Iridescence"): the factor, the film's index and, without a thickness
+// texture, its thickness the extension's maximum. Its textures are not
+// read, with a warning: the factor and the maximum apply everywhere.
+void applyIridescence(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
+                      materials::Material& m) {
+  const tinygltf::Value* i = extension(gltf, "KHR_materials_iridescence");
+  if (!i) return;
+  const std::string at = material + ".extensions.KHR_materials_iridescence";
+  const double factor = member(*i, "iridescenceFactor", 0.0, at, reader);
+  if (const std::optional<std::string> rule =
+          factorRule(factor, materials::bounded(&materials::MaterialSpec::iridescence)))
+    reader.fail(at + ".iridescenceFactor", *rule);
+  const double ior = member(*i, "iridescenceIor", 1.3, at, reader);
+  if (!(ior > 0.0 && ior <= materials::kMaxOpticalConstant))
+    reader.fail(at + ".iridescenceIor", "must be in (0, 1000], is " + formatNumber(ior));
+  const double thinnest = member(*i, "iridescenceThicknessMinimum", 100.0, at, reader);
+  const double thickest = member(*i, "iridescenceThicknessMaximum", 400.0, at, reader);
+  for (const auto& [key, nm] :
+       {std::pair{".iridescenceThicknessMinimum", thinnest}, std::pair{".iridescenceThicknessMaximum", thickest}})
+    if (!(nm >= 0.0 && std::isfinite(nm)))
+      reader.fail(at + key, "must be finite and >= 0 (nanometres), is " + formatNumber(nm));
+  for (const auto& [texture, everywhere] : {std::pair{"iridescenceTexture", "iridescenceFactor"},
+                                            std::pair{"iridescenceThicknessTexture", "iridescenceThicknessMaximum"}})
+    if (i->Has(texture))
+      reader.warn(at + "." + texture, std::string("is not read; the film has ") + everywhere + " everywhere");
+  if (factor > 0.0 && materials::isTransmissive(m)) {
+    reader.warn(at, "is not applied to a transmissive material: facet renders it without its thin film");
+    return;
+  }
+  m.iridescence = factor;
+  m.iridescenceIor = ior;
+  m.iridescenceThickness = thickest;
 }
 
 // KHR_materials_anisotropy's factors into `m` (docs/gltf.md): its strength

@@ -208,6 +208,7 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
   const DielectricSpecular dielectric = applyTransmission(gltf, material, reader, base, metallic, m);
   applyClearcoat(gltf, material, reader, m);
   applySheen(gltf, material, reader, m);
+  applyIridescence(gltf, material, reader, m);
   applyAnisotropy(gltf, material, reader, m);
   for (double c : gltf.emissiveFactor)
     if (!(c >= 0.0 && c <= 1.0))

@@ -12,6 +12,7 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     f.anisotropy |= m.anisotropy > 0.0;
     f.clearcoat |= m.clearcoat > 0.0;
     f.sheen |= m.sheenColor != glm::dvec3(0.0);
+    f.iridescence |= m.iridescence > 0.0;
     f.channels |= !object.cage.faceVertexTexcoords1.empty() || !object.cage.faceVertexColors.empty();
     f.culling |= cullsBackFaces(object, m);
     f.cutouts |= hasCutout(object);

@@ -19,6 +19,7 @@ struct SceneFeatures {
   bool anisotropy = false;
   bool clearcoat = false;
   bool sheen = false;
+  bool iridescence = false;
   // Some object has vertex colours or a second set of texture coordinates.
   bool channels = false;
   bool culling = false;  // some object culls its back faces (cullsBackFaces)

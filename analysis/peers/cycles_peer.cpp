@@ -56,8 +56,10 @@ json triple(const glm::dvec3& v) { return json::array({v.x, v.y, v.z}); }
 json cyclesMaterial(const materials::Material& m) {
   using namespace rules::f64;
   if (m.textures || m.emission != glm::dvec3(0) || m.anisotropy != 0 || m.clearcoat != 0 ||
-      m.sheenColor != glm::dvec3(0) || m.energyCompensation)
-    noCounterpart(m, "textures, emission, anisotropy, a coat, sheen and energy compensation are not described");
+      m.sheenColor != glm::dvec3(0) || m.iridescence != 0 || m.energyCompensation)
+    noCounterpart(m,
+                  "textures, emission, anisotropy, a coat, sheen, a thin film and energy compensation are not "
+                  "described");
   if (m.distribution != D_GGX) noCounterpart(m, "Cycles' microfacets are GGX");
   const double roughness = std::sqrt(m.alpha);
   if (m.transmission > 0) {

@@ -101,6 +101,11 @@ struct PathState {
   float sheenAlbedo5;
   float sheenAlbedo6;
   float sheenAlbedo7;
+  // Iridescence (docs/shading.md, "Iridescence"): BrdfParams' factor, film
+  // index and thickness.
+  float iridescence;
+  float iridescenceIor;
+  float iridescenceThickness;
 };
 
 // PathState.flags: the vertex continues by continue_path_transmissive; v lies

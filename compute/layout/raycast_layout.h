@@ -262,6 +262,11 @@ struct MaterialRecord {
   TextureSlotRecord anisotropyTexture;
   TextureSlotRecord specularTexture;       // A scales `specular`
   TextureSlotRecord specularColorTexture;  // RGB (sRGB) scales specularR, G, B
+  // Iridescence (docs/shading.md, "Iridescence"): the factor, the film's
+  // index and its thickness in nanometres, as BrdfParams carries them.
+  float iridescence;
+  float iridescenceIor;
+  float iridescenceThickness;
 };
 
 // What the camera-side kernels need, one uniform block (std140 agrees: all

@@ -21,5 +21,6 @@ const int FACET_FEATURE_SHEEN = 10;
 const int FACET_FEATURE_CHANNELS = 11;  // vertex colours or a second set of texture coordinates
 const int FACET_FEATURE_SHADOW_CATCHER = 12;  // an object catches shadows for the paths (FACET_OBJECT_SHADOW_CATCHER)
 const int FACET_FEATURE_HOLDOUT = 13;         // an object is black to camera rays (FACET_OBJECT_HOLDOUT)
+const int FACET_FEATURE_IRIDESCENCE = 14;     // a material's Fresnel has a thin film
 
 #endif

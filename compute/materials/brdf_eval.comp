@@ -71,6 +71,9 @@ void main() {
   p.sheen_alpha = 0.0;
   p.sheen_albedo_near = vec4(0.0);
   p.sheen_albedo_far = vec4(0.0);
+  p.iridescence = 0.0;
+  p.iridescence_ior = 1.0;
+  p.iridescence_thickness = 0.0;
   vec3 l = cases[i].l.xyz;
   vec3 v = cases[i].v.xyz;
   BrdfTerms t = brdf_terms(p, n, l, v);

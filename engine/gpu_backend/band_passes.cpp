@@ -67,7 +67,8 @@ double surfaceFeatures(const scene::Scene& scene, const scene::SceneFeatures& f,
          bit(paths && f.lobeLimits, layout::FACET_FEATURE_LOBE_LIMITS) |
          bit(f.anisotropy, layout::FACET_FEATURE_ANISOTROPY) | bit(f.clearcoat, layout::FACET_FEATURE_CLEARCOAT) |
          bit(f.sheen, layout::FACET_FEATURE_SHEEN) | bit(f.channels, layout::FACET_FEATURE_CHANNELS) |
-         bit(f.shadowCatcher, layout::FACET_FEATURE_SHADOW_CATCHER) | bit(f.holdout, layout::FACET_FEATURE_HOLDOUT);
+         bit(f.shadowCatcher, layout::FACET_FEATURE_SHADOW_CATCHER) | bit(f.holdout, layout::FACET_FEATURE_HOLDOUT) |
+         bit(f.iridescence, layout::FACET_FEATURE_IRIDESCENCE);
 }
 
 }  // namespace

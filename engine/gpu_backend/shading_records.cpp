@@ -106,6 +106,8 @@ std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
     r.sheenAlbedo2 = p.sheen_albedo_near.z, r.sheenAlbedo3 = p.sheen_albedo_near.w;
     r.sheenAlbedo4 = p.sheen_albedo_far.x, r.sheenAlbedo5 = p.sheen_albedo_far.y;
     r.sheenAlbedo6 = p.sheen_albedo_far.z, r.sheenAlbedo7 = p.sheen_albedo_far.w;
+    r.iridescence = p.iridescence, r.iridescenceIor = p.iridescence_ior;
+    r.iridescenceThickness = p.iridescence_thickness;
     records.push_back(r);
   }
   return records;

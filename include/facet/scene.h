@@ -54,6 +54,12 @@ struct Material {
   // linear RGB color in [0, 1] and roughness, KHR_materials_sheen's factors.
   std::optional<Vec3> sheenColor;
   std::optional<double> sheenRoughness;
+  // A thin film over the base (docs/shading.md, "Iridescence"): its strength
+  // in [0, 1], index and thickness in nanometres,
+  // KHR_materials_iridescence's factors.
+  std::optional<double> iridescence;
+  std::optional<double> iridescenceIor;
+  std::optional<double> iridescenceThickness;
   // glTF's metallic-roughness parameters, given together in place of
   // diffuse, f0 and a preset: c_diff = base (1 - metallic), F(0) =
   // mix(0.04, base, metallic).

@@ -35,14 +35,24 @@ FACET_FN vec3 split_sum_direction(vec3 n, vec3 v, real alpha) {
 // interface), written as the limit: lavapipe reassociates F evaluated near
 // the horizon into 0. Under the BRDF's horizon policy (n.v <= COS_EPSILON)
 // nothing is reflected, as with the sampled method.
-FACET_FN vec3 split_sum(BrdfParams p, real nv, vec3 prefiltered, vec2 dfg, vec3 irradiance_over_pi,
-                        vec3 specular_scale) {
-  if (nv <= COS_EPSILON) return vec3(real(0));
+// The specular lobe's albedo from the table's entry: F0 scale + F90 bias of
+// the base; a thin film's F taken at n.v over the lobe's whole albedo, mixed
+// in by the iridescence factor (docs/shading.md, "Iridescence").
+FACET_FN vec3 split_sum_albedo(BrdfParams p, real nv, vec2 dfg) {
   bool dielectric = p.f_model == F_DIELECTRIC;
   vec3 f90 =
       vec3(dielectric && p.eta.x == real(1) ? real(0) : real(1), dielectric && p.eta.y == real(1) ? real(0) : real(1),
            dielectric && p.eta.z == real(1) ? real(0) : real(1));
-  vec3 specular = prefiltered * (fresnel_F(p, real(1)) * dfg.x + f90 * dfg.y) * specular_scale;
+  vec3 albedo = base_fresnel_F(p, real(1)) * dfg.x + f90 * dfg.y;
+  if (p.iridescence == real(0) || p.iridescence_thickness <= real(0)) return albedo;
+  vec3 film = thin_film_fresnel(nv, p.iridescence_ior, p.iridescence_thickness, base_fresnel_F(p, real(1)));
+  return mix(albedo, film * (dfg.x + dfg.y), p.iridescence);
+}
+
+FACET_FN vec3 split_sum(BrdfParams p, real nv, vec3 prefiltered, vec2 dfg, vec3 irradiance_over_pi,
+                        vec3 specular_scale) {
+  if (nv <= COS_EPSILON) return vec3(real(0));
+  vec3 specular = prefiltered * split_sum_albedo(p, nv, dfg) * specular_scale;
   if (!has_sheen(p)) return specular + p.diffuse * irradiance_over_pi;
   // Under a sheen (docs/shading.md, "Sheen"): the specular lobe's light
   // arrives about the mirror direction, at n.l = n.v; the diffuse lobe's

@@ -10,6 +10,7 @@
 #include "rules/shading/domain.h"
 #include "rules/shading/fresnel.h"
 #include "rules/shading/microfacet.h"
+#include "rules/shading/thin_film.h"
 
 // Which fields are read depends on the models: f0 for F_SCHLICK, eta for
 // F_DIELECTRIC (per channel, so dispersion is possible), eta and k for
@@ -27,7 +28,10 @@
 // map) lies over the base (clearcoat.h). sheen_color 0 is no sheen (and the
 // base's code path, bit for bit); above, a Charlie lobe of sheen_alpha lies
 // between the base and any coat, its directional albedo E(mu) given by 8
-// knots (sheen.h).
+// knots (sheen.h). iridescence in [0, 1] is KHR_materials_iridescence's
+// factor: 0 is the bare base (and its code path, bit for bit); above, F is
+// mixed toward a thin film's of index iridescence_ior and thickness
+// iridescence_thickness (nm) over the base (thin_film.h).
 struct BrdfParams {
   int d_model;
   int g_model;
@@ -47,6 +51,9 @@ struct BrdfParams {
   real sheen_alpha;
   vec4 sheen_albedo_near;
   vec4 sheen_albedo_far;
+  real iridescence;
+  real iridescence_ior;
+  real iridescence_thickness;
 };
 
 // The isotropic alpha that stands for p's lobe where a table is indexed by
@@ -70,7 +77,8 @@ struct BrdfTerms {
   vec3 F;
 };
 
-FACET_FN vec3 fresnel_F(BrdfParams p, real cos_i) {
+// F of p's base, without any film.
+FACET_FN vec3 base_fresnel_F(BrdfParams p, real cos_i) {
   switch (p.f_model) {
     case F_SCHLICK:
       return fresnel_schlick(p.f0, cos_i);
@@ -87,6 +95,17 @@ FACET_FN vec3 fresnel_F(BrdfParams p, real cos_i) {
       return fresnel_blender_metallic(p.f0, cos_i);
   }
   return vec3(real(1));
+}
+
+// F of p at cos_i to the facet normal: the base's, mixed toward its thin
+// film's by the iridescence factor (KHR_materials_iridescence), the film
+// lying on a base of the base's own F at normal incidence. A film of no
+// thickness is no film.
+FACET_FN vec3 fresnel_F(BrdfParams p, real cos_i) {
+  vec3 F = base_fresnel_F(p, cos_i);
+  if (p.iridescence == real(0) || p.iridescence_thickness <= real(0)) return F;
+  vec3 film = thin_film_fresnel(cos_i, p.iridescence_ior, p.iridescence_thickness, base_fresnel_F(p, real(1)));
+  return mix(F, film, p.iridescence);
 }
 
 // n, l, v: unit vectors; l points to the light, v to the viewer.

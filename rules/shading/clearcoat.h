@@ -45,6 +45,9 @@ FACET_FN BrdfParams coat_lobe_params(BrdfParams p) {
   c.sheen_alpha = real(0);
   c.sheen_albedo_near = vec4(real(0));
   c.sheen_albedo_far = vec4(real(0));
+  c.iridescence = real(0);
+  c.iridescence_ior = real(1);
+  c.iridescence_thickness = real(0);
   return c;
 }
 

@@ -61,6 +61,9 @@ FACET_FN vec2 dfg_integrals(int d_model, int g_model, real nv, real alpha, int s
   p.sheen_alpha = real(0);
   p.sheen_albedo_near = vec4(real(0));
   p.sheen_albedo_far = vec4(real(0));
+  p.iridescence = real(0);
+  p.iridescence_ior = real(1);
+  p.iridescence_thickness = real(0);
   vec3 v = vec3(sqrt(max(real(1) - nv * nv, real(0))), real(0), nv);
   int technique = specular_technique(p);
   vec2 sum = vec2(real(0));
@@ -120,9 +123,13 @@ FACET_FN int compensation_table(int first, bool transmissive, bool outside) {
 // The factor on material p's specular lobe from its table's entry at the
 // view's n.v. A transmissive material's reflection and transmission take
 // the same factor, 1 / E of its glass table, so that a clear interface
-// keeps all it receives: energy_compensation with F0 = 1.
+// keeps all it receives: energy_compensation with F0 = 1. glTF's metal
+// share of it (p.metallic) loses what a metal loses, not what the
+// interface does, so the factor falls to 1 with it rather than lend the
+// metal the interface's.
 FACET_FN vec3 material_compensation(BrdfParams p, bool transmissive, vec2 entry) {
-  return transmissive ? energy_compensation(vec3(real(1)), entry) : specular_compensation(p, entry);
+  if (!transmissive) return specular_compensation(p, entry);
+  return mix(energy_compensation(vec3(real(1)), entry), vec3(real(1)), p.metallic);
 }
 
 #endif

@@ -315,6 +315,40 @@ TEST(MaterialSheen, BadInputsNameTheField) {
   EXPECT_THROW(buildMaterial(spec, [](std::string_view field) { return std::string(field); }), std::invalid_argument);
 }
 
+TEST(MaterialIridescence, NoFilmByDefaultReadAndRoundTrips) {
+  EXPECT_EQ(build(R"({"alpha": 0.1})").iridescence, 0.0);
+  const Material m = build(
+      R"({"preset": "gold", "alpha": 0.1, "iridescence": 0.8, "iridescence_ior": 1.5, "iridescence_thickness": 250})");
+  EXPECT_EQ(m.iridescence, 0.8);
+  EXPECT_EQ(m.iridescenceIor, 1.5);
+  EXPECT_EQ(m.iridescenceThickness, 250.0);
+  const Material again = build(toJson(m).dump());
+  EXPECT_EQ(again.iridescence, 0.8);
+  EXPECT_EQ(again.iridescenceIor, 1.5);
+  EXPECT_EQ(again.iridescenceThickness, 250.0);
+  const rules::f64::BrdfParams p = toParams64(m);
+  EXPECT_EQ(p.iridescence, 0.8);
+  EXPECT_EQ(p.iridescence_ior, 1.5);
+  EXPECT_EQ(p.iridescence_thickness, 250.0);
+  // The extension's defaults: index 1.3, 400 nm.
+  const Material defaults = build(R"({"alpha": 0.1, "f0": 0.04, "iridescence": 1})");
+  EXPECT_EQ(defaults.iridescenceIor, 1.3);
+  EXPECT_EQ(defaults.iridescenceThickness, 400.0);
+}
+
+TEST(MaterialIridescence, BadInputsNameTheField) {
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "iridescence": 1.5})"),
+            "test.json: field 'iridescence': must be in [0, 1], got 1.5");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "iridescence": 1, "iridescence_ior": 0})"),
+            "test.json: field 'iridescence_ior': must be in (0, 1000], got 0");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "iridescence": 1, "iridescence_thickness": -5})"),
+            "test.json: field 'iridescence_thickness': must be finite and >= 0 (nanometres), got -5");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "iridescence_thickness": 300})"),
+            "test.json: field 'iridescence_thickness': is only used with iridescence (give iridescence too)");
+  EXPECT_EQ(errorOf(R"({"alpha": 0.1, "ior": 1.5, "transmission": 1, "iridescence": 0.5})"),
+            "test.json: field 'iridescence': is not defined for a transmissive material (transmission > 0)");
+}
+
 TEST(MaterialMetallicRoughness, BaseColorAndMetallicGiveDiffuseAndF0AsGltfDoes) {
   const Material plastic = build(R"({"base_color": [0.8, 0.1, 0.1], "metallic": 0, "roughness": 0.4})");
   EXPECT_EQ(plastic.fresnel, rules::f64::F_SCHLICK);

@@ -58,10 +58,19 @@ TEST(MaterialParameterTable, EveryRowIsReadFromItsJsonKey) {
 // Two materials between them give every plain row: the layers need an
 // opaque base, a thin wall's fields a transmissive one.
 TEST(MaterialParameterTable, EveryPlainRowReachesMaterialAndToJson) {
-  const nlohmann::json opaque = {{"alpha", 0.1}, {"f0", 0.04}, {"energy_compensation", true}, {"diffuse", 0.5},
-                                 {"anisotropy", 0.5}, {"anisotropy_rotation", 0.3}, {"clearcoat", 0.5},
-                                 {"clearcoat_roughness", 0.2}, {"sheen_color", {0.5, 0.25, 0.125}},
-                                 {"sheen_roughness", 0.4}};
+  const nlohmann::json opaque = {{"alpha", 0.1},
+                                 {"f0", 0.04},
+                                 {"energy_compensation", true},
+                                 {"diffuse", 0.5},
+                                 {"anisotropy", 0.5},
+                                 {"anisotropy_rotation", 0.3},
+                                 {"clearcoat", 0.5},
+                                 {"clearcoat_roughness", 0.2},
+                                 {"sheen_color", {0.5, 0.25, 0.125}},
+                                 {"sheen_roughness", 0.4},
+                                 {"iridescence", 0.75},
+                                 {"iridescence_ior", 1.6},
+                                 {"iridescence_thickness", 320.0}};
   const nlohmann::json thin = {{"alpha", 0.1}, {"ior", 1.5}, {"transmission", 1}, {"thin_walled", true},
                                {"thickness", 0.01}};
   forEachParameter([&](const auto& row) {

@@ -46,24 +46,23 @@ TEST_F(GltfCoverage, AFileOfWhatFacetReadsHasNoWarnings) {
 TEST_F(GltfCoverage, ARequiredExtensionFacetLacksRefusesTheFile) {
   EXPECT_THAT(
       [&] {
-        load(
-            "film", {{"extensions", {{"KHR_materials_iridescence", {{"iridescenceFactor", 1.0}}}}}},
-            {{"extensionsUsed", {"KHR_materials_iridescence"}}, {"extensionsRequired", {"KHR_materials_iridescence"}}});
+        load("prism", {{"extensions", {{"KHR_materials_dispersion", {{"dispersion", 1.0}}}}}},
+             {{"extensionsUsed", {"KHR_materials_dispersion"}}, {"extensionsRequired", {"KHR_materials_dispersion"}}});
       },
       ThrowsMessage<InputError>(
-          AllOf(HasSubstr("film.gltf: extensionsRequired: extension KHR_materials_iridescence is "
+          AllOf(HasSubstr("prism.gltf: extensionsRequired: extension KHR_materials_dispersion is "
                           "not supported"),
                 HasSubstr("facet implements KHR_lights_punctual, KHR_materials_anisotropy, KHR_materials_clearcoat, "
                           "KHR_materials_emissive_strength"))));
 }
 
 TEST_F(GltfCoverage, EachIgnoredExtensionIsOneWarning) {
-  const nlohmann::json film = {{"iridescenceFactor", 1.0}};
-  const Scene scene = load("used", {{"extensions", {{"KHR_materials_iridescence", film}}}},
-                           {{"extensionsUsed", {"KHR_materials_iridescence", "EXT_made_up"}}});
+  const nlohmann::json prism = {{"dispersion", 1.0}};
+  const Scene scene = load("used", {{"extensions", {{"KHR_materials_dispersion", prism}}}},
+                           {{"extensionsUsed", {"KHR_materials_dispersion", "EXT_made_up"}}});
   EXPECT_THAT(scene.warnings,
-              ElementsAre(AllOf(HasSubstr("used.gltf: extensionsUsed: extension KHR_materials_iridescence is not read"),
-                                HasSubstr("without its thin film")),
+              ElementsAre(AllOf(HasSubstr("used.gltf: extensionsUsed: extension KHR_materials_dispersion is not read"),
+                                HasSubstr("one index of refraction for every wavelength")),
                           HasSubstr("extensionsUsed: extension EXT_made_up is not read; facet renders the file as if "
                                     "it were absent")));
   // An extension the file uses without listing it is found where it is.

@@ -8,6 +8,7 @@
 
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "engine/cpu/reference_renderer.h"
@@ -224,6 +225,32 @@ TEST_F(GltfMaterialExtensions, SheenFactorsAndColourTextureAreRead) {
       write("rough", {{"extensions", {{"KHR_materials_sheen", {{"sheenRoughnessFactor", -0.1}}}}}});
   EXPECT_THAT([&] { loadScene(rough); },
               ThrowsMessage<InputError>(HasSubstr("KHR_materials_sheen.sheenRoughnessFactor")));
+}
+
+TEST_F(GltfMaterialExtensions, IridescenceFactorsAreReadAndItsTexturesWarned) {
+  const nlohmann::json film = {{"iridescenceFactor", 0.7},
+                               {"iridescenceIor", 1.6},
+                               {"iridescenceThicknessMinimum", 150.0},
+                               {"iridescenceThicknessMaximum", 520.0}};
+  const Scene scene = loadScene(write("film", {{"extensions", {{"KHR_materials_iridescence", film}}}}));
+  EXPECT_EQ(scene.materials.at(0).iridescence, 0.7);
+  EXPECT_EQ(scene.materials.at(0).iridescenceIor, 1.6);
+  EXPECT_EQ(scene.materials.at(0).iridescenceThickness, 520.0);  // the maximum, without a thickness texture
+  EXPECT_THAT(scene.warnings, IsEmpty());
+  EXPECT_EQ(loadScene(write("bare", nlohmann::json::object())).materials.at(0).iridescence, 0.0);
+  nlohmann::json textured = film;
+  for (const char* slot : {"iridescenceTexture", "iridescenceThicknessTexture"}) textured[slot] = {{"index", 0}};
+  const Scene warned = loadScene(write("textured", {{"extensions", {{"KHR_materials_iridescence", textured}}}}));
+  EXPECT_EQ(warned.materials.at(0).iridescence, 0.7);
+  EXPECT_THAT(warned.warnings,
+              ElementsAre(HasSubstr("KHR_materials_iridescence.iridescenceTexture: is not read"),
+                          HasSubstr("KHR_materials_iridescence.iridescenceThicknessTexture: is not read")));
+  for (const auto& [key, value] : {std::pair{"iridescenceFactor", 1.5}, std::pair{"iridescenceIor", 0.0},
+                                   std::pair{"iridescenceThicknessMaximum", -1.0}}) {
+    const std::filesystem::path bad = write("bad", {{"extensions", {{"KHR_materials_iridescence", {{key, value}}}}}});
+    EXPECT_THAT([&] { loadScene(bad); },
+                ThrowsMessage<InputError>(HasSubstr(std::string("KHR_materials_iridescence.") + key)));
+  }
 }
 
 TEST_F(GltfMaterialExtensions, AnisotropyFactorsAndTextureAreRead) {

@@ -30,7 +30,8 @@ PathState pack_path_state(vec3 throughput, PathVertex x, PathMedium medium, uvec
                    p.tangent.z, p.clearcoat, p.clearcoat_alpha, p.clearcoat_normal.x, p.clearcoat_normal.y,
                    p.clearcoat_normal.z, p.sheen_color.x, p.sheen_color.y, p.sheen_color.z, p.sheen_alpha,
                    p.sheen_albedo_near.x, p.sheen_albedo_near.y, p.sheen_albedo_near.z, p.sheen_albedo_near.w,
-                   p.sheen_albedo_far.x, p.sheen_albedo_far.y, p.sheen_albedo_far.z, p.sheen_albedo_far.w);
+                   p.sheen_albedo_far.x, p.sheen_albedo_far.y, p.sheen_albedo_far.z, p.sheen_albedo_far.w,
+                   p.iridescence, p.iridescence_ior, p.iridescence_thickness);
 }
 
 vec3 path_throughput(PathState s) { return vec3(s.throughputR, s.throughputG, s.throughputB); }
@@ -72,6 +73,9 @@ PathVertex path_vertex(PathState s, bool transmissive, TransmissionParams transm
   p.sheen_alpha = s.sheenAlpha;
   p.sheen_albedo_near = vec4(s.sheenAlbedo0, s.sheenAlbedo1, s.sheenAlbedo2, s.sheenAlbedo3);
   p.sheen_albedo_far = vec4(s.sheenAlbedo4, s.sheenAlbedo5, s.sheenAlbedo6, s.sheenAlbedo7);
+  p.iridescence = s.iridescence;
+  p.iridescence_ior = s.iridescenceIor;
+  p.iridescence_thickness = s.iridescenceThickness;
   return PathVertex(vec3(s.positionX, s.positionY, s.positionZ), vec3(s.nX, s.nY, s.nZ), vec3(s.ngX, s.ngY, s.ngZ),
                     vec3(s.vX, s.vY, s.vZ), p, vec3(s.specularR, s.specularG, s.specularB), transmissive,
                     transmission, (s.flags & FACET_PATH_OUTSIDE) != 0u);

@@ -28,6 +28,9 @@ BrdfParams brdf_params(MaterialRecord m) {
   p.sheen_alpha = m.sheenAlpha;
   p.sheen_albedo_near = vec4(m.sheenAlbedo0, m.sheenAlbedo1, m.sheenAlbedo2, m.sheenAlbedo3);
   p.sheen_albedo_far = vec4(m.sheenAlbedo4, m.sheenAlbedo5, m.sheenAlbedo6, m.sheenAlbedo7);
+  p.iridescence = IRIDESCENCE == 1 ? m.iridescence : 0.0;
+  p.iridescence_ior = m.iridescenceIor;
+  p.iridescence_thickness = m.iridescenceThickness;
   return p;
 }
 

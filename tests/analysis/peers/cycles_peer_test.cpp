@@ -135,6 +135,9 @@ TEST_F(CyclesPeer, RefusesWhatCyclesWouldRenderDifferently) {
   materials::Material velvet = lambert();
   velvet.sheenColor = glm::dvec3(0.5);
   refused(sceneOf({velvet}), "sheen");
+  materials::Material filmed = metal();
+  filmed.iridescence = 1;
+  refused(sceneOf({filmed}), "a thin film");
   materials::Material thin = ruby();
   thin.thinWalled = true;
   refused(sceneOf({thin}), "closed volume");

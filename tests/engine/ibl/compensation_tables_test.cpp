@@ -88,6 +88,10 @@ TEST(CompensationTables, TwoGlassTablesPerIndexAndWall) {
   for (const bool outside : {true, false}) {
     const double e = dfgLookup(tables.tables[outside ? 0 : 1], 0.5, params.alpha).x;
     EXPECT_NEAR(specularScale(tables, 0, params, 0.5, true, outside).x, 1.0 / e, 1e-12);
+    // glTF's metal share takes the factor in proportion to the interface's share.
+    m::BrdfParams metallic = params;
+    metallic.metallic = 0.25;
+    EXPECT_NEAR(specularScale(tables, 0, metallic, 0.5, true, outside).x, 1.0 + 0.75 * (1.0 / e - 1.0), 1e-12);
     EXPECT_LT(e, 0.99);  // a rough interface loses energy from either side
   }
   // From inside, rays beyond the critical angle reflect in full: another table.
