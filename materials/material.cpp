@@ -177,9 +177,9 @@ void checkSheen(const MaterialSpec& spec, const Material& m, const Fail& fail) {
 template <class Fail>
 void checkIridescence(const MaterialSpec& spec, const Material& m, const Fail& fail) {
   if (spec.iridescence) checkBounds(bounded(&MaterialSpec::iridescence), *spec.iridescence, fail);
-  if (spec.iridescenceIor && !(*spec.iridescenceIor > 0.0 && *spec.iridescenceIor <= kMaxOpticalConstant))
-    fail("iridescence_ior",
-         "must be in (0, " + formatNumber(kMaxOpticalConstant) + "], got " + formatNumber(*spec.iridescenceIor));
+  if (spec.iridescenceIor && !(*spec.iridescenceIor >= 1.0 && *spec.iridescenceIor <= kMaxOpticalConstant))
+    fail("iridescence_ior", "must be in [1, " + formatNumber(kMaxOpticalConstant) +
+                                "] (the extension's minimum is 1), got " + formatNumber(*spec.iridescenceIor));
   if (spec.iridescenceThickness && !(*spec.iridescenceThickness >= 0.0 && std::isfinite(*spec.iridescenceThickness)))
     fail("iridescence_thickness",
          "must be finite and >= 0 (nanometres), got " + formatNumber(*spec.iridescenceThickness));

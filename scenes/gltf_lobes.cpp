@@ -80,8 +80,8 @@ void applyIridescence(const tinygltf::Material& gltf, const std::string& materia
           factorRule(factor, materials::bounded(&materials::MaterialSpec::iridescence)))
     reader.fail(at + ".iridescenceFactor", *rule);
   const double ior = member(*i, "iridescenceIor", 1.3, at, reader);
-  if (!(ior > 0.0 && ior <= materials::kMaxOpticalConstant))
-    reader.fail(at + ".iridescenceIor", "must be in (0, 1000], is " + formatNumber(ior));
+  if (!(ior >= 1.0 && ior <= materials::kMaxOpticalConstant))
+    reader.fail(at + ".iridescenceIor", "must be in [1, 1000], is " + formatNumber(ior));
   const double thinnest = member(*i, "iridescenceThicknessMinimum", 100.0, at, reader);
   const double thickest = member(*i, "iridescenceThicknessMaximum", 400.0, at, reader);
   for (const auto& [key, nm] :

@@ -6,6 +6,7 @@
 
 #include "rules/math.h"
 #include "rules/shading/brdf.h"
+#include "rules/shading/thin_film.h"
 #include "rules/shading/brdf_sampling.h"
 #include "rules/shading/clearcoat.h"
 #include "rules/shading/domain.h"

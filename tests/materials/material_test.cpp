@@ -340,7 +340,7 @@ TEST(MaterialIridescence, BadInputsNameTheField) {
   EXPECT_EQ(errorOf(R"({"alpha": 0.1, "iridescence": 1.5})"),
             "test.json: field 'iridescence': must be in [0, 1], got 1.5");
   EXPECT_EQ(errorOf(R"({"alpha": 0.1, "iridescence": 1, "iridescence_ior": 0})"),
-            "test.json: field 'iridescence_ior': must be in (0, 1000], got 0");
+            "test.json: field 'iridescence_ior': must be in [1, 1000] (the extension's minimum is 1), got 0");
   EXPECT_EQ(errorOf(R"({"alpha": 0.1, "iridescence": 1, "iridescence_thickness": -5})"),
             "test.json: field 'iridescence_thickness': must be finite and >= 0 (nanometres), got -5");
   EXPECT_EQ(errorOf(R"({"alpha": 0.1, "iridescence_thickness": 300})"),

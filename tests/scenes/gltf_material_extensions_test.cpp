@@ -245,7 +245,7 @@ TEST_F(GltfMaterialExtensions, IridescenceFactorsAreReadAndItsTexturesWarned) {
   EXPECT_THAT(warned.warnings,
               ElementsAre(HasSubstr("KHR_materials_iridescence.iridescenceTexture: is not read"),
                           HasSubstr("KHR_materials_iridescence.iridescenceThicknessTexture: is not read")));
-  for (const auto& [key, value] : {std::pair{"iridescenceFactor", 1.5}, std::pair{"iridescenceIor", 0.0},
+  for (const auto& [key, value] : {std::pair{"iridescenceFactor", 1.5}, std::pair{"iridescenceIor", 0.9},
                                    std::pair{"iridescenceThicknessMaximum", -1.0}}) {
     const std::filesystem::path bad = write("bad", {{"extensions", {{"KHR_materials_iridescence", {{key, value}}}}}});
     EXPECT_THAT([&] { loadScene(bad); },

@@ -44,6 +44,24 @@ TEST(ThinFilm, AFilmOfNoThicknessOrOfTheBasesIndexIsNotThere) {
   for (const double c : {1.0, 0.5, 0.1}) EXPECT_EQ(m::fresnel_F(p, c), m::base_fresnel_F(p, c));
 }
 
+// Against an independent port of the extension's reference GLSL
+// (KHR_materials_iridescence, evalIridescence), at three films: blue over
+// a metal-like base (its red channel below 0 before the clamp), a soap-like
+// film over glass head-on and obliquely.
+TEST(ThinFilm, MatchesTheExtensionsReference) {
+  struct Case {
+    double cosine, ior, nm, f0;
+    glm::dvec3 expected;
+  };
+  const Case cases[] = {{1.0, 2.6, 70.0, 0.5, {0.0, 0.211, 0.422}},
+                        {1.0, 1.3, 400.0, 0.04, {0.0075, 0.0384, 0.0160}},
+                        {0.5, 1.3, 100.0, 0.04, {0.0414, 0.0341, 0.0251}}};
+  for (const Case& c : cases) {
+    const glm::dvec3 f = m::thin_film_fresnel(c.cosine, c.ior, c.nm, glm::dvec3(c.f0));
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(f[i], c.expected[i], 6e-4) << c.nm << " nm, channel " << i;
+  }
+}
+
 // Interference colours a film of a few hundred nanometres and leaves a
 // thick one grey: past the eye's coherence its harmonics vanish and the
 // film reflects the incoherent sum R12 + T121^2 R23 / (1 - R12 R23) in every
