@@ -33,11 +33,15 @@ CompensationTables compensationTables(const scene::Scene& scene) {
     const int next = int(result.tables.size());
     if (materials::isTransmissive(material)) {
       const auto [entry, added] = firstOfGlass.try_emplace({material.eta.x, material.thinWalled}, next);
-      if (added)
-        for (const bool outside : {true, false})
-          result.tables.push_back(
-              cachedGlassAlbedoTable(rules::f64::transmissive_eta(material.eta.x, material.thinWalled, outside),
-                                     material.thinWalled, settings));
+      if (added) {
+        const auto table = [&](bool outside) {
+          return cachedGlassAlbedoTable(rules::f64::transmissive_eta(material.eta.x, material.thinWalled, outside),
+                                        material.thinWalled, settings);
+        };
+        result.tables.push_back(table(true));
+        // A thin wall's one interface is the same from either side.
+        result.tables.push_back(material.thinWalled ? result.tables.back() : table(false));
+      }
       result.tableOfMaterial.push_back(entry->second);
     } else {
       const auto [entry, added] = firstOfPair.try_emplace({material.distribution, material.geometry}, next);

@@ -45,7 +45,7 @@ FACET_FN vec3 split_sum_albedo(BrdfParams p, real nv, vec2 dfg) {
       vec3(dielectric && p.eta.x == real(1) ? real(0) : real(1), dielectric && p.eta.y == real(1) ? real(0) : real(1),
            dielectric && p.eta.z == real(1) ? real(0) : real(1));
   vec3 albedo = base_fresnel_F(p, real(1)) * dfg.x + f90 * dfg.y;
-  if (p.iridescence == real(0) || p.iridescence_thickness <= real(0)) return albedo;
+  if (!has_film(p)) return albedo;
   vec3 film = thin_film_fresnel(nv, p.iridescence_ior, p.iridescence_thickness, base_fresnel_F(p, real(1)));
   return mix(albedo, film * (dfg.x + dfg.y), p.iridescence);
 }

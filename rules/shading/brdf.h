@@ -97,13 +97,15 @@ FACET_FN vec3 base_fresnel_F(BrdfParams p, real cos_i) {
   return vec3(real(1));
 }
 
+// Whether p's F has a thin film: a film of no thickness is no film.
+FACET_FN bool has_film(BrdfParams p) { return p.iridescence != real(0) && p.iridescence_thickness > real(0); }
+
 // F of p at cos_i to the facet normal: the base's, mixed toward its thin
 // film's by the iridescence factor (KHR_materials_iridescence), the film
-// lying on a base of the base's own F at normal incidence. A film of no
-// thickness is no film.
+// lying on a base of the base's own F at normal incidence.
 FACET_FN vec3 fresnel_F(BrdfParams p, real cos_i) {
   vec3 F = base_fresnel_F(p, cos_i);
-  if (p.iridescence == real(0) || p.iridescence_thickness <= real(0)) return F;
+  if (!has_film(p)) return F;
   vec3 film = thin_film_fresnel(cos_i, p.iridescence_ior, p.iridescence_thickness, base_fresnel_F(p, real(1)));
   return mix(F, film, p.iridescence);
 }
