@@ -64,6 +64,12 @@ struct MaterialTextures {
   double specular = 1.0;
   TextureSlot specularTexture;
   TextureSlot specularColorTexture;
+  // KHR_materials_iridescence's textures: R scales the film's factor, G
+  // places its thickness between the extension's minimum and its maximum
+  // (the material's iridescenceThickness).
+  TextureSlot iridescenceTexture;
+  TextureSlot iridescenceThicknessTexture;
+  double iridescenceThicknessMinimum = 100.0;  // nanometres
 };
 
 struct Material {

@@ -136,10 +136,11 @@ void applySheen(const tinygltf::Material& gltf, const std::string& material, con
                 materials::Material& m);
 void applyAnisotropy(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
                      materials::Material& m);
-// The same extensions' textures, and KHR_materials_transmission's, into
-// `t`: whether it reads any.
-bool readLayerTextures(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
-                       TextureTable& textures, materials::MaterialTextures& t);
+// The same extensions' textures, and KHR_materials_transmission's and
+// _specular's, into `t` (`m` with its factors applied): whether it reads
+// any.
+bool readLayerTextures(const tinygltf::Material& gltf, const materials::Material& m, const std::string& material,
+                       const GltfReader& reader, TextureTable& textures, materials::MaterialTextures& t);
 
 // The dielectric's F(0) factors of KHR_materials_ior and
 // KHR_materials_specular: F(0) of the index × specularColorFactor, and

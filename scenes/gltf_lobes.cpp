@@ -67,9 +67,9 @@ void applySheen(const tinygltf::Material& gltf, const std::string& material, con
 }
 
 // KHR_materials_iridescence's factors into `m` (docs/gltf.md,
-// "Iridescence"): the factor, the film's index and, without a thickness
-// texture, its thickness the extension's maximum. Its textures are not
-// read, with a warning: the factor and the maximum apply everywhere.
+// "Iridescence"): the factor, the film's index and its thickness the
+// extension's maximum, where its thickness texture (readLayerTextures')
+// does not place it between the minimum and the maximum.
 void applyIridescence(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
                       materials::Material& m) {
   const tinygltf::Value* i = extension(gltf, "KHR_materials_iridescence");
@@ -88,10 +88,6 @@ void applyIridescence(const tinygltf::Material& gltf, const std::string& materia
        {std::pair{".iridescenceThicknessMinimum", thinnest}, std::pair{".iridescenceThicknessMaximum", thickest}})
     if (!(nm >= 0.0 && std::isfinite(nm)))
       reader.fail(at + key, "must be finite and >= 0 (nanometres), is " + formatNumber(nm));
-  for (const auto& [texture, everywhere] : {std::pair{"iridescenceTexture", "iridescenceFactor"},
-                                            std::pair{"iridescenceThicknessTexture", "iridescenceThicknessMaximum"}})
-    if (i->Has(texture))
-      reader.warn(at + "." + texture, std::string("is not read; the film has ") + everywhere + " everywhere");
   if (factor > 0.0 && materials::isTransmissive(m)) {
     reader.warn(at, "is not applied to a transmissive material: facet renders it without its thin film");
     return;
@@ -151,8 +147,8 @@ materials::TextureSlot extensionSlot(const tinygltf::Value& value, const char* k
 
 }  // namespace
 
-bool readLayerTextures(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
-                       TextureTable& textures, materials::MaterialTextures& t) {
+bool readLayerTextures(const tinygltf::Material& gltf, const materials::Material& m, const std::string& material,
+                       const GltfReader& reader, TextureTable& textures, materials::MaterialTextures& t) {
   const auto at = [&](const char* name) { return material + ".extensions." + name; };
   if (const tinygltf::Value* c = extension(gltf, "KHR_materials_clearcoat")) {
     const std::string where = at("KHR_materials_clearcoat");
@@ -179,9 +175,18 @@ bool readLayerTextures(const tinygltf::Material& gltf, const std::string& materi
     t.specularTexture = extensionSlot(*s, "specularTexture", TextureEncoding::Linear, where, reader, textures);
     t.specularColorTexture = extensionSlot(*s, "specularColorTexture", TextureEncoding::Srgb, where, reader, textures);
   }
+  // A film applyIridescence dropped, or of factor 0, has no texture to read.
+  if (const tinygltf::Value* i = extension(gltf, "KHR_materials_iridescence"); i && m.iridescence > 0.0) {
+    const std::string where = at("KHR_materials_iridescence");
+    t.iridescenceTexture = extensionSlot(*i, "iridescenceTexture", TextureEncoding::Linear, where, reader, textures);
+    t.iridescenceThicknessTexture =
+        extensionSlot(*i, "iridescenceThicknessTexture", TextureEncoding::Linear, where, reader, textures);
+    t.iridescenceThicknessMinimum = member(*i, "iridescenceThicknessMinimum", 100.0, where, reader);
+  }
   for (const materials::TextureSlot* slot :
        {&t.clearcoatTexture, &t.clearcoatRoughnessTexture, &t.clearcoatNormalTexture, &t.sheenColorTexture,
-        &t.anisotropyTexture, &t.transmissionTexture, &t.specularTexture, &t.specularColorTexture})
+        &t.anisotropyTexture, &t.transmissionTexture, &t.specularTexture, &t.specularColorTexture,
+        &t.iridescenceTexture, &t.iridescenceThicknessTexture})
     if (slot->texture >= 0) return true;
   return false;
 }

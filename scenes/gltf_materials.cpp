@@ -250,7 +250,7 @@ materials::Material toMaterial(const tinygltf::Material& gltf, std::size_t index
   const auto& e = gltf.emissiveTexture;
   t.emissiveTexture =
       textures.slot(e.extensions, e.index, e.texCoord, TextureEncoding::Srgb, material + ".emissiveTexture");
-  const bool layered = readLayerTextures(gltf, material, reader, textures, t);
+  const bool layered = readLayerTextures(gltf, m, material, reader, textures, t);
   for (const materials::TextureSlot* s :
        {&t.baseColorTexture, &t.metallicRoughnessTexture, &t.normalTexture, &t.occlusionTexture, &t.emissiveTexture})
     if (s->texture >= 0) m.textures = t;

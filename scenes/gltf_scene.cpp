@@ -294,7 +294,9 @@ std::optional<std::string> slotOnSecondTexcoords(const materials::MaterialTextur
       {"extensions.KHR_materials_anisotropy.anisotropyTexture", &t.anisotropyTexture},
       {"extensions.KHR_materials_transmission.transmissionTexture", &t.transmissionTexture},
       {"extensions.KHR_materials_specular.specularTexture", &t.specularTexture},
-      {"extensions.KHR_materials_specular.specularColorTexture", &t.specularColorTexture}};
+      {"extensions.KHR_materials_specular.specularColorTexture", &t.specularColorTexture},
+      {"extensions.KHR_materials_iridescence.iridescenceTexture", &t.iridescenceTexture},
+      {"extensions.KHR_materials_iridescence.iridescenceThicknessTexture", &t.iridescenceThicknessTexture}};
   for (const auto& slot : slots)
     if (slot.second->texture >= 0 && slot.second->texCoord == 1) return slot.first;
   return std::nullopt;

@@ -267,6 +267,11 @@ struct MaterialRecord {
   float iridescence;
   float iridescenceIor;
   float iridescenceThickness;
+  // Its textures, where `textured` is 1: R scales `iridescence`, G places
+  // the thickness between the minimum and iridescenceThickness.
+  TextureSlotRecord iridescenceTexture;
+  TextureSlotRecord iridescenceThicknessTexture;
+  float iridescenceThicknessMinimum;
 };
 
 // What the camera-side kernels need, one uniform block (std140 agrees: all

@@ -41,6 +41,8 @@ m::MaterialTexels materialTexels(const scene::SubdivisionSurface& surface, const
   texels.transmission = value(t.transmissionTexture).r;
   texels.specular_color = glm::dvec3(value(t.specularColorTexture));
   texels.specular = value(t.specularTexture).a;
+  texels.iridescence = value(t.iridescenceTexture).r;
+  texels.iridescence_thickness = value(t.iridescenceThicknessTexture).g;
   return texels;
 }
 
@@ -58,6 +60,8 @@ m::TexturedFactors texturedFactors(const materials::MaterialTextures& t) {
   f.anisotropy_mapped = t.anisotropyTexture.texture >= 0;
   f.specular_color = t.specularColor;
   f.specular = t.specular;
+  f.film_thickness_mapped = t.iridescenceThicknessTexture.texture >= 0;
+  f.film_thickness_minimum = t.iridescenceThicknessMinimum;
   return f;
 }
 

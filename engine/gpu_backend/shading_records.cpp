@@ -80,6 +80,9 @@ std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
     r.transmissionTexture = textureSlotRecord(t ? t->transmissionTexture : none);
     r.specularTexture = textureSlotRecord(t ? t->specularTexture : none);
     r.specularColorTexture = textureSlotRecord(t ? t->specularColorTexture : none);
+    r.iridescenceTexture = textureSlotRecord(t ? t->iridescenceTexture : none);
+    r.iridescenceThicknessTexture = textureSlotRecord(t ? t->iridescenceThicknessTexture : none);
+    r.iridescenceThicknessMinimum = t ? float(t->iridescenceThicknessMinimum) : 0.0f;
     const int table = compensation.tableOfMaterial[i];
     r.compensationTable =
         table == ibl::CompensationTables::kNone ? layout::FACET_NO_COMPENSATION : std::uint32_t(table);

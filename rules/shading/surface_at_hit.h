@@ -44,6 +44,8 @@ struct TexturedFactors {
   bool anisotropy_mapped;
   vec3 specular_color;  // KHR_materials_specular: F(0) of the index x specularColorFactor
   real specular;        // specularFactor
+  bool film_thickness_mapped;   // KHR_materials_iridescence's thickness texture is read
+  real film_thickness_minimum;  // its iridescenceThicknessMinimum, nanometres
 };
 
 // Each texture slot's value at a hit (1 where the slot is empty, or where the
@@ -67,6 +69,8 @@ struct MaterialTexels {
   real transmission;
   vec3 specular_color;  // sRGB
   real specular;        // A of specularTexture
+  real iridescence;     // R of iridescenceTexture
+  real iridescence_thickness;  // G of iridescenceThicknessTexture
 };
 
 // What a backend fetched of the material at a hit.
@@ -135,7 +139,8 @@ FACET_FN SurfaceAtHit surface_at_hit(HitMaterial m, FacingNormals facing, vec3 v
     textured = textured_layers(textured, t.coat_normal_frame, t.coat_normal_map, t.coat, t.coat_roughness,
                                f.coat_normal_mapped, t.coat_normal, f.coat_normal_scale, t.sheen, f.anisotropy_mapped,
                                t.anisotropy, partials.tangent);
-    s.params = textured.params;
+    s.params = textured_film(textured.params, t.iridescence, f.film_thickness_mapped, t.iridescence_thickness,
+                             f.film_thickness_minimum);
     s.n = textured.n;
     s.occlusion = textured.occlusion;
     s.emission = textured.emission;

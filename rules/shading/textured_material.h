@@ -157,6 +157,16 @@ FACET_FN TexturedSurface textured_layers(TexturedSurface s, TextureFootprint coa
   return s;
 }
 
+// KHR_materials_iridescence's textures at a hit: R of `film` scales the
+// film's factor and, where a thickness texture is read, its G places the
+// thickness between `thinnest` and the material's own, the extension's
+// maximum.
+FACET_FN BrdfParams textured_film(BrdfParams p, real film, bool thickness_mapped, real thickness, real thinnest) {
+  p.iridescence *= film;
+  if (thickness_mapped) p.iridescence_thickness = mix(thinnest, p.iridescence_thickness, thickness);
+  return p;
+}
+
 // A rotation (cos, sin) turned further by `direction` (a unit vector, the
 // angle it makes with the first axis).
 FACET_FN vec2 turned_rotation(vec2 rotation, vec2 direction) {

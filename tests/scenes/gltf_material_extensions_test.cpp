@@ -227,7 +227,7 @@ TEST_F(GltfMaterialExtensions, SheenFactorsAndColourTextureAreRead) {
               ThrowsMessage<InputError>(HasSubstr("KHR_materials_sheen.sheenRoughnessFactor")));
 }
 
-TEST_F(GltfMaterialExtensions, IridescenceFactorsAreReadAndItsTexturesWarned) {
+TEST_F(GltfMaterialExtensions, IridescenceFactorsAndTexturesAreRead) {
   const nlohmann::json film = {{"iridescenceFactor", 0.7},
                                {"iridescenceIor", 1.6},
                                {"iridescenceThicknessMinimum", 150.0},
@@ -240,11 +240,19 @@ TEST_F(GltfMaterialExtensions, IridescenceFactorsAreReadAndItsTexturesWarned) {
   EXPECT_EQ(loadScene(write("bare", nlohmann::json::object())).materials.at(0).iridescence, 0.0);
   nlohmann::json textured = film;
   for (const char* slot : {"iridescenceTexture", "iridescenceThicknessTexture"}) textured[slot] = {{"index", 0}};
-  const Scene warned = loadScene(write("textured", {{"extensions", {{"KHR_materials_iridescence", textured}}}}));
-  EXPECT_EQ(warned.materials.at(0).iridescence, 0.7);
-  EXPECT_THAT(warned.warnings,
-              ElementsAre(HasSubstr("KHR_materials_iridescence.iridescenceTexture: is not read"),
-                          HasSubstr("KHR_materials_iridescence.iridescenceThicknessTexture: is not read")));
+  const Scene read = loadScene(write("textured", {{"extensions", {{"KHR_materials_iridescence", textured}}}}));
+  EXPECT_THAT(read.warnings, IsEmpty());
+  const materials::Material& m = read.materials.at(0);
+  EXPECT_EQ(m.iridescence, 0.7);
+  EXPECT_EQ(m.iridescenceThickness, 520.0);
+  ASSERT_TRUE(m.textures.has_value());
+  EXPECT_GE(m.textures->iridescenceTexture.texture, 0);
+  EXPECT_GE(m.textures->iridescenceThicknessTexture.texture, 0);
+  EXPECT_EQ(m.textures->iridescenceThicknessMinimum, 150.0);
+  // Without a film (factor 0) there is nothing for its textures to scale.
+  textured["iridescenceFactor"] = 0.0;
+  const Scene none = loadScene(write("none", {{"extensions", {{"KHR_materials_iridescence", textured}}}}));
+  EXPECT_FALSE(none.materials.at(0).textures.has_value());
   for (const auto& [key, value] : {std::pair{"iridescenceFactor", 1.5}, std::pair{"iridescenceIor", 0.9},
                                    std::pair{"iridescenceThicknessMaximum", -1.0}}) {
     const std::filesystem::path bad = write("bad", {{"extensions", {{"KHR_materials_iridescence", {{key, value}}}}}});

@@ -42,7 +42,9 @@ TexturedFactors textured_factors(MaterialRecord m) {
                          m.normalTexture.texture != FACET_NO_TEXTURE, m.normalScale, m.occlusionStrength,
                          m.unlit == 1u, LAYERS && m.clearcoatNormalTexture.texture != FACET_NO_TEXTURE,
                          m.clearcoatNormalScale, LAYERS && m.anisotropyTexture.texture != FACET_NO_TEXTURE,
-                         vec3(m.specularR, m.specularG, m.specularB), m.specular);
+                         vec3(m.specularR, m.specularG, m.specularB), m.specular,
+                         IRIDESCENCE == 1 && m.iridescenceThicknessTexture.texture != FACET_NO_TEXTURE,
+                         m.iridescenceThicknessMinimum);
 }
 
 // The footprint a slot reads: that of the coordinate set it names.
@@ -93,6 +95,13 @@ MaterialTexels material_texels(MaterialRecord m, PatchRecord record, uint channe
   t.anisotropy = vec3(1.0);
   t.transmission =
       TRANSMISSION == 1 ? slot_value(m.transmissionTexture, slot_footprint(m.transmissionTexture, f0, f1)).r : 1.0;
+  t.iridescence = 1.0;
+  t.iridescence_thickness = 1.0;
+  if (IRIDESCENCE == 1) {
+    t.iridescence = slot_value(m.iridescenceTexture, slot_footprint(m.iridescenceTexture, f0, f1)).r;
+    t.iridescence_thickness =
+        slot_value(m.iridescenceThicknessTexture, slot_footprint(m.iridescenceThicknessTexture, f0, f1)).g;
+  }
   if (!LAYERS) return t;
   t.coat = slot_value(m.clearcoatTexture, slot_footprint(m.clearcoatTexture, f0, f1)).r;
   t.coat_roughness = slot_value(m.clearcoatRoughnessTexture, slot_footprint(m.clearcoatRoughnessTexture, f0, f1)).g;

@@ -392,10 +392,11 @@ TEST_F(KhronosModels, ARoughTransmissionBlursOnlyWhereTheIndexBends) {
       const double gpu = throughTile(through.gpu.image, behind.gpu.image, k);
       std::printf(" %.2f (%.2f)", cpu, gpu);
       EXPECT_NEAR(gpu, cpu, 0.05) << "tile " << k;
-      if (index == 1.0)
+      if (index == 1.0) {
         EXPECT_GT(cpu, 0.3) << "tile " << k;
-      else if (k >= 5)
+      } else if (k >= 5) {
         EXPECT_LT(cpu, 0.25) << "tile " << k;
+      }
     }
     std::printf("\n");
   }

@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <memory>
 #include <random>
 #include <string>
@@ -83,6 +84,16 @@ void expectTexturesRenderAsOnTheCpu(gpu::Device& device, const scene::Scene& sce
   EXPECT_GT(differing, parity.covered / 2);
 }
 
+// expectTexturesRenderAsOnTheCpu for the slots of the first material:
+// without them is with those slots empty.
+void expectSlotsRenderAsOnTheCpu(gpu::Device& device, const scene::Scene& scene,
+                                 std::initializer_list<materials::TextureSlot materials::MaterialTextures::*> slots) {
+  ASSERT_TRUE(scene.materials[0].textures.has_value());
+  scene::Scene without = scene;
+  for (auto slot : slots) (*without.materials[0].textures).*slot = {};
+  expectTexturesRenderAsOnTheCpu(device, scene, without);
+}
+
 class TextureParity : public gpu::testing::GpuTest, public ::testing::WithParamInterface<TextureCase> {
  protected:
   void SetUp() override {
@@ -112,34 +123,60 @@ TEST_P(TextureParity, MatchesTheCpuReferenceWithinTolerance) {
   expectTexturesRenderAsOnTheCpu(device_, scene, untextured);
 }
 
-// KHR_materials_specular's textures and KHR_materials_ior on a textured
-// dielectric: its F(0) per hit (dielectric_specular_f0) under a white sky,
-// where a dark base leaves the specular lobe to show it; the same image on
-// both backends, and not the image without the two textures.
-TEST_F(TextureParity, SpecularTexturesGiveTheDielectricsF0AsOnTheCpu) {
-  facet::testing::writePng(dir_ / "specular.png", 16, 16,
-                           facet::testing::checkerTexels(16, 4, {255, 64, 0, 255}, {0, 128, 255, 40}));
+// The oblique quad of a dark, fairly smooth dielectric with glTF material
+// `extensions`, whose slots read `checker`, a 16² checker of the two
+// texels, under a white sky at 64 x 48, where the specular lobe shows what
+// its textures do.
+scene::Scene darkQuadUnderWhiteSky(const std::filesystem::path& dir, const std::string& name,
+                                   const std::pair<facet::testing::Rgba8, facet::testing::Rgba8>& checker,
+                                   const nlohmann::json& extensions) {
+  facet::testing::writePng(dir / (name + ".png"), 16, 16,
+                           facet::testing::checkerTexels(16, 4, checker.first, checker.second));
   nlohmann::json parts = facet::testing::obliqueCamera(30.0);
   parts["materials"] = {
       {{"pbrMetallicRoughness",
         {{"baseColorFactor", {0.05, 0.05, 0.05, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.3}}},
-       {"extensions",
-        {{"KHR_materials_ior", {{"ior", 2.0}}},
-         {"KHR_materials_specular",
-          {{"specularColorFactor", {2.0, 2.0, 2.0}},
-           {"specularTexture", {{"index", 0}}},
-           {"specularColorTexture", {{"index", 0}}}}}}}}};
+       {"extensions", extensions}}};
   parts["textures"] = {{{"source", 0}}};
-  parts["images"] = {{{"uri", "specular.png"}}};
-  scene::Scene scene = scene::loadScene(facet::testing::writeTexturedQuad(dir_, "specular", parts));
-  ASSERT_TRUE(scene.materials[0].textures.has_value());
+  parts["images"] = {{{"uri", name + ".png"}}};
+  scene::Scene scene = scene::loadScene(facet::testing::writeTexturedQuad(dir, name, parts));
+  EXPECT_TRUE(scene.materials[0].textures.has_value());
   scene.render.width = 64;
   scene.render.height = 48;
   underWhiteSky(scene);
-  scene::Scene plain = scene;
-  plain.materials[0].textures->specularTexture = {};
-  plain.materials[0].textures->specularColorTexture = {};
-  expectTexturesRenderAsOnTheCpu(device_, scene, plain);
+  return scene;
+}
+
+// KHR_materials_specular's textures and KHR_materials_ior on a textured
+// dielectric: its F(0) per hit (dielectric_specular_f0); the same image on
+// both backends, and not the image without the two textures.
+TEST_F(TextureParity, SpecularTexturesGiveTheDielectricsF0AsOnTheCpu) {
+  const scene::Scene scene = darkQuadUnderWhiteSky(dir_, "specular", {{255, 64, 0, 255}, {0, 128, 255, 40}},
+                                                   {{"KHR_materials_ior", {{"ior", 2.0}}},
+                                                    {"KHR_materials_specular",
+                                                     {{"specularColorFactor", {2.0, 2.0, 2.0}},
+                                                      {"specularTexture", {{"index", 0}}},
+                                                      {"specularColorTexture", {{"index", 0}}}}}});
+  expectSlotsRenderAsOnTheCpu(
+      device_, scene,
+      {&materials::MaterialTextures::specularTexture, &materials::MaterialTextures::specularColorTexture});
+}
+
+// KHR_materials_iridescence's textures: a checker whose R scales the film
+// and whose G places its thickness between 100 and 700 nm; the same image on
+// both backends, and not the image of the film's factors alone.
+TEST_F(TextureParity, FilmTexturesPlaceItsStrengthAndThicknessAsOnTheCpu) {
+  const scene::Scene scene = darkQuadUnderWhiteSky(dir_, "film", {{255, 40, 0, 255}, {90, 230, 0, 255}},
+                                                   {{"KHR_materials_iridescence",
+                                                     {{"iridescenceFactor", 1.0},
+                                                      {"iridescenceIor", 1.8},
+                                                      {"iridescenceThicknessMinimum", 100.0},
+                                                      {"iridescenceThicknessMaximum", 700.0},
+                                                      {"iridescenceTexture", {{"index", 0}}},
+                                                      {"iridescenceThicknessTexture", {{"index", 0}}}}}});
+  expectSlotsRenderAsOnTheCpu(
+      device_, scene,
+      {&materials::MaterialTextures::iridescenceTexture, &materials::MaterialTextures::iridescenceThicknessTexture});
 }
 
 // A renderer keeps its upload of the textures between renders; each render

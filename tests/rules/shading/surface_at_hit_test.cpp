@@ -41,6 +41,7 @@ m::MaterialTexels emptyTexels() {
   m::MaterialTexels t{};
   t.base = t.metallic_roughness = t.normal = t.emission = t.coat_normal = t.sheen = t.anisotropy = glm::dvec3(1.0);
   t.occlusion = t.coat = t.coat_roughness = t.transmission = t.specular = 1.0;
+  t.iridescence = t.iridescence_thickness = 1.0;
   t.specular_color = glm::dvec3(1.0);
   t.normal_frame = t.coat_normal_frame = frame;
   t.normal_map = t.coat_normal_map = m::slot_uv_map(1.0, 0.0, {1.0, 1.0});
@@ -194,6 +195,34 @@ TEST(SurfaceAtHit, TheCoatCoversTheEmissionByItsTransmittanceTowardsTheEye) {
   const m::SurfaceAtHit coated = m::surface_at_hit(h, m::facing_normals(kN, kN, v), v, m::HitPartials{});
   EXPECT_EQ(coated.emission, bare * m::coat_transmittance(coated.params, glm::dot(kN, v)));
   EXPECT_LT(coated.emission.z, bare.z);
+}
+
+// KHR_materials_iridescence's textures: R scales the film's factor; a read
+// thickness texture's G places the thickness between the minimum and the
+// material's (the maximum), and an unread one leaves the maximum.
+TEST(SurfaceAtHit, TheFilmsTexturesScaleItsFactorAndPlaceItsThickness) {
+  const glm::dvec3 v = glm::normalize(glm::dvec3(0.3, 0.1, 1));
+  m::HitMaterial h = untextured(plastic());
+  h.params.iridescence = 0.8;
+  h.params.iridescence_ior = 1.6;
+  h.params.iridescence_thickness = 500.0;
+  h.textured = true;
+  h.factors = {{0.8, 0.6, 0.4},  0.0, 0.5,   false, 1.0, 1.0, false, false, 1.0, false,
+               glm::dvec3(0.04), 1.0, false, 100.0};
+  h.texels = emptyTexels();
+  const m::SurfaceAtHit untouched = m::surface_at_hit(h, m::facing_normals(kN, kN, v), v, flatPartials());
+  EXPECT_EQ(untouched.params.iridescence, 0.8);
+  EXPECT_EQ(untouched.params.iridescence_thickness, 500.0);
+
+  h.texels.iridescence = 0.5;
+  h.texels.iridescence_thickness = 0.25;
+  const m::SurfaceAtHit unread = m::surface_at_hit(h, m::facing_normals(kN, kN, v), v, flatPartials());
+  EXPECT_EQ(unread.params.iridescence, 0.4);
+  EXPECT_EQ(unread.params.iridescence_thickness, 500.0);
+  h.factors.film_thickness_mapped = true;
+  const m::SurfaceAtHit placed = m::surface_at_hit(h, m::facing_normals(kN, kN, v), v, flatPartials());
+  EXPECT_DOUBLE_EQ(placed.params.iridescence_thickness, 200.0);
+  EXPECT_NE(m::fresnel_F(placed.params, 0.8), m::fresnel_F(unread.params, 0.8));
 }
 
 }  // namespace
