@@ -54,6 +54,23 @@ Params toParams(const Material& m) {
   return p;
 }
 
+}  // namespace
+
+const std::vector<glm::dvec4>& sheenAlbedoRows() {
+  static const std::vector<glm::dvec4> rows = [] {
+    std::vector<glm::dvec4> knots;
+    for (int j = 0; j < rules::f64::SHEEN_ROWS; ++j) {
+      const double alpha = rules::f64::sheen_row_alpha(j);
+      knots.push_back(rules::f64::sheen_albedo_knots(alpha, 0, kSheenAlbedoSamples));
+      knots.push_back(rules::f64::sheen_albedo_knots(alpha, 4, kSheenAlbedoSamples));
+    }
+    return knots;
+  }();
+  return rows;
+}
+
+namespace {
+
 [[noreturn]] void throwFieldError(const std::string& where, const std::string& rule) {
   throw std::invalid_argument(where + ": " + rule);
 }

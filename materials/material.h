@@ -3,6 +3,7 @@
 #pragma once
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <nlohmann/json_fwd.hpp>
 
 #include <filesystem>
@@ -11,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "materials/material_parameters.h"
 #include "rules/rules.h"
@@ -53,6 +55,10 @@ struct MaterialTextures {
   TextureSlot clearcoatNormalTexture;
   double clearcoatNormalScale = 1.0;
   TextureSlot sheenColorTexture;
+  // KHR_materials_sheen's roughness texture: A scales sheenRoughness, the
+  // factor, per hit (its albedo knots read between sheenAlbedoRows).
+  TextureSlot sheenRoughnessTexture;
+  double sheenRoughness = 0.0;
   TextureSlot anisotropyTexture;
   // KHR_materials_transmission's texture: R scales the transmission factor.
   TextureSlot transmissionTexture;
@@ -133,6 +139,11 @@ inline bool isTransmissive(const Material& material) { return material.transmiss
 rules::f64::TransmissionParams transmissionParams64(const Material& material);
 
 rules::f64::BrdfParams toParams64(const Material& material);
+
+// The sheen's albedo knots at each row of rules/shading/sheen.h's
+// SHEEN_ROWS (sheen_row_alpha), near and far in turn, computed once: for
+// the sheens whose roughness a texture sets per hit.
+const std::vector<glm::dvec4>& sheenAlbedoRows();
 rules::f32::BrdfParams toParams32(const Material& material);
 
 // What a user wrote, before validation. Field names are the JSON keys; the

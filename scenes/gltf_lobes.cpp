@@ -34,8 +34,7 @@ void applyClearcoat(const tinygltf::Material& gltf, const std::string& material,
 }
 
 // KHR_materials_sheen's factors into `m` (docs/gltf.md, "Sheen"); its
-// colour texture is readLayerTextures', its roughness texture is not read
-// (the lobe's albedo is tabulated per material), with a warning.
+// textures are readLayerTextures'.
 void applySheen(const tinygltf::Material& gltf, const std::string& material, const GltfReader& reader,
                 materials::Material& m) {
   const tinygltf::Value* s = extension(gltf, "KHR_materials_sheen");
@@ -56,8 +55,6 @@ void applySheen(const tinygltf::Material& gltf, const std::string& material, con
   if (const std::optional<std::string> rule =
           factorRule(roughness, materials::bounded(&materials::MaterialSpec::sheenRoughness)))
     reader.fail(at + ".sheenRoughnessFactor", *rule);
-  if (s->Has("sheenRoughnessTexture"))
-    reader.warn(at + ".sheenRoughnessTexture", "is not read; the sheen has sheenRoughnessFactor everywhere");
   if (color != glm::dvec3(0.0) && materials::isTransmissive(m)) {
     reader.warn(at, "is not applied to a transmissive material: facet renders it without its sheen");
     return;
@@ -161,9 +158,14 @@ bool readLayerTextures(const tinygltf::Material& gltf, const materials::Material
       t.clearcoatNormalScale =
           member(c->Get("clearcoatNormalTexture"), "scale", 1.0, where + ".clearcoatNormalTexture", reader);
   }
-  if (const tinygltf::Value* s = extension(gltf, "KHR_materials_sheen"))
-    t.sheenColorTexture =
-        extensionSlot(*s, "sheenColorTexture", TextureEncoding::Srgb, at("KHR_materials_sheen"), reader, textures);
+  // A sheen applySheen dropped, or of colour 0, has no texture to read.
+  if (const tinygltf::Value* s = extension(gltf, "KHR_materials_sheen"); s && m.sheenColor != glm::dvec3(0.0)) {
+    const std::string where = at("KHR_materials_sheen");
+    t.sheenColorTexture = extensionSlot(*s, "sheenColorTexture", TextureEncoding::Srgb, where, reader, textures);
+    t.sheenRoughnessTexture =
+        extensionSlot(*s, "sheenRoughnessTexture", TextureEncoding::Linear, where, reader, textures);
+    t.sheenRoughness = m.sheenRoughness;
+  }
   if (const tinygltf::Value* a = extension(gltf, "KHR_materials_anisotropy"))
     t.anisotropyTexture = extensionSlot(*a, "anisotropyTexture", TextureEncoding::Linear,
                                         at("KHR_materials_anisotropy"), reader, textures);
@@ -185,8 +187,8 @@ bool readLayerTextures(const tinygltf::Material& gltf, const materials::Material
   }
   for (const materials::TextureSlot* slot :
        {&t.clearcoatTexture, &t.clearcoatRoughnessTexture, &t.clearcoatNormalTexture, &t.sheenColorTexture,
-        &t.anisotropyTexture, &t.transmissionTexture, &t.specularTexture, &t.specularColorTexture,
-        &t.iridescenceTexture, &t.iridescenceThicknessTexture})
+        &t.sheenRoughnessTexture, &t.anisotropyTexture, &t.transmissionTexture, &t.specularTexture,
+        &t.specularColorTexture, &t.iridescenceTexture, &t.iridescenceThicknessTexture})
     if (slot->texture >= 0) return true;
   return false;
 }

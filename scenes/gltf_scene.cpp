@@ -291,6 +291,7 @@ std::optional<std::string> slotOnSecondTexcoords(const materials::MaterialTextur
       {"extensions.KHR_materials_clearcoat.clearcoatRoughnessTexture", &t.clearcoatRoughnessTexture},
       {"extensions.KHR_materials_clearcoat.clearcoatNormalTexture", &t.clearcoatNormalTexture},
       {"extensions.KHR_materials_sheen.sheenColorTexture", &t.sheenColorTexture},
+      {"extensions.KHR_materials_sheen.sheenRoughnessTexture", &t.sheenRoughnessTexture},
       {"extensions.KHR_materials_anisotropy.anisotropyTexture", &t.anisotropyTexture},
       {"extensions.KHR_materials_transmission.transmissionTexture", &t.transmissionTexture},
       {"extensions.KHR_materials_specular.specularTexture", &t.specularTexture},

@@ -272,6 +272,10 @@ struct MaterialRecord {
   TextureSlotRecord iridescenceTexture;
   TextureSlotRecord iridescenceThicknessTexture;
   float iridescenceThicknessMinimum;
+  // The sheen's roughness texture, where `textured` is 1: A scales the
+  // factor (sheenRoughnessFactor), its knots read between the sheen's rows.
+  TextureSlotRecord sheenRoughnessTexture;
+  float sheenRoughnessFactor;
 };
 
 // What the camera-side kernels need, one uniform block (std140 agrees: all

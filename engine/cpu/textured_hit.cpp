@@ -3,6 +3,8 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <cstddef>
+#include <vector>
 
 namespace facet::cpu {
 
@@ -41,6 +43,14 @@ m::MaterialTexels materialTexels(const scene::SubdivisionSurface& surface, const
   texels.transmission = value(t.transmissionTexture).r;
   texels.specular_color = glm::dvec3(value(t.specularColorTexture));
   texels.specular = value(t.specularTexture).a;
+  if (t.sheenRoughnessTexture.texture >= 0) {
+    texels.sheen_alpha = m::textured_sheen_alpha(t.sheenRoughness, value(t.sheenRoughnessTexture).a);
+    const m::SheenRows at = m::sheen_rows_at(texels.sheen_alpha);
+    const std::vector<glm::dvec4>& rows = materials::sheenAlbedoRows();
+    const std::size_t first = 2 * std::size_t(at.first);
+    texels.sheen_albedo_near = glm::mix(rows[first], rows[first + 2], at.weight);
+    texels.sheen_albedo_far = glm::mix(rows[first + 1], rows[first + 3], at.weight);
+  }
   texels.iridescence = value(t.iridescenceTexture).r;
   texels.iridescence_thickness = value(t.iridescenceThicknessTexture).g;
   return texels;
@@ -62,6 +72,7 @@ m::TexturedFactors texturedFactors(const materials::MaterialTextures& t) {
   f.specular = t.specular;
   f.film_thickness_mapped = t.iridescenceThicknessTexture.texture >= 0;
   f.film_thickness_minimum = t.iridescenceThicknessMinimum;
+  f.sheen_roughness_mapped = t.sheenRoughnessTexture.texture >= 0;
   return f;
 }
 

@@ -38,6 +38,7 @@ BindingTable bindingTable(const GeometryBuffers& g, const ShadingBuffers& s, con
           {29, &t.texels},
           {30, &t.levels},
           {31, &t.table},
+          {35, &s.sheenAlbedoRows},
           // Without paths no kernel that runs reads or writes these: they
           // name a buffer that is there, so that nothing is allocated.
           {32, b.pathStates ? &b.pathStates : &b.hits},

@@ -42,6 +42,6 @@ static_assert(sizeof(facet::gpu_layout::PathState) == 276);
 static_assert(sizeof(facet::gpu_layout::HitRecord) == 32);
 static_assert(sizeof(facet::gpu_layout::LightRecord) == 48);
 static_assert(sizeof(facet::gpu_layout::TextureSlotRecord) == 32);
-static_assert(sizeof(facet::gpu_layout::MaterialRecord) == 740);
+static_assert(sizeof(facet::gpu_layout::MaterialRecord) == 776);
 static_assert(sizeof(facet::gpu_layout::FrameParams) == 216);
 static_assert(sizeof(facet::gpu_layout::PixelAovs) == 64);

@@ -165,6 +165,7 @@ ShadingBuffers uploadShading(gpu::Device& d, const scene::Scene& scene, const ib
   b.environmentLevels = upload(d, "environment levels", environment.levels, texel);
   b.environmentSampling = upload(d, "environment sampling", environment.sampling, texel);
   b.compensationTables = upload(d, "compensation tables", compensationTexels, texel);
+  b.sheenAlbedoRows = upload(d, "sheen albedo rows", sheenAlbedoRowTexels(scene), texel);
   return b;
 }
 

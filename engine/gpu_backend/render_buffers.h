@@ -31,6 +31,7 @@ struct GeometryBuffers {
 struct ShadingBuffers {
   gpu::Buffer materials, lights, environmentTexels, environmentTables, environmentLevels, environmentSampling;
   gpu::Buffer compensationTables;
+  gpu::Buffer sheenAlbedoRows;
 };
 
 // A scene's textures on the device (texture_data.h), often its largest

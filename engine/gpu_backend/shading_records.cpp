@@ -83,6 +83,8 @@ std::vector<layout::MaterialRecord> materialRecords(const scene::Scene& scene,
     r.iridescenceTexture = textureSlotRecord(t ? t->iridescenceTexture : none);
     r.iridescenceThicknessTexture = textureSlotRecord(t ? t->iridescenceThicknessTexture : none);
     r.iridescenceThicknessMinimum = t ? float(t->iridescenceThicknessMinimum) : 0.0f;
+    r.sheenRoughnessTexture = textureSlotRecord(t ? t->sheenRoughnessTexture : none);
+    r.sheenRoughnessFactor = t ? float(t->sheenRoughness) : 0.0f;
     const int table = compensation.tableOfMaterial[i];
     r.compensationTable =
         table == ibl::CompensationTables::kNone ? layout::FACET_NO_COMPENSATION : std::uint32_t(table);
@@ -167,6 +169,15 @@ std::vector<glm::vec4> compensationTexels(const ibl::CompensationTables& compens
   std::vector<glm::vec4> texels;
   frame.compensationSize = appendDfgTables(compensation.tables, texels);
   return texels;
+}
+
+std::vector<glm::vec4> sheenAlbedoRowTexels(const scene::Scene& scene) {
+  for (const materials::Material& m : scene.materials)
+    if (m.textures && m.textures->sheenRoughnessTexture.texture >= 0) {
+      const std::vector<glm::dvec4>& rows = materials::sheenAlbedoRows();
+      return std::vector<glm::vec4>(rows.begin(), rows.end());
+    }
+  return {};
 }
 
 std::uint32_t environmentSlots(const ibl::EnvironmentLighting* lighting) {

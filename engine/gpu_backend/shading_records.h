@@ -24,6 +24,10 @@ std::vector<gpu_layout::MaterialRecord> materialRecords(const scene::Scene& scen
 // with their size set in `frame`.
 std::vector<glm::vec4> compensationTexels(const ibl::CompensationTables& compensation, gpu_layout::FrameParams& frame);
 
+// The sheen's albedo rows (materials::sheenAlbedoRows), in float, where a
+// material's sheen roughness is textured; none where no material's is.
+std::vector<glm::vec4> sheenAlbedoRowTexels(const scene::Scene& scene);
+
 std::vector<gpu_layout::LightRecord> lightRecords(const scene::Scene& scene, const glm::dvec3& origin);
 
 // Everything the environment's lookups read, with its offsets and sizes set

@@ -46,6 +46,7 @@ struct TexturedFactors {
   real specular;        // specularFactor
   bool film_thickness_mapped;   // KHR_materials_iridescence's thickness texture is read
   real film_thickness_minimum;  // its iridescenceThicknessMinimum, nanometres
+  bool sheen_roughness_mapped;  // KHR_materials_sheen's roughness texture is read
 };
 
 // Each texture slot's value at a hit (1 where the slot is empty, or where the
@@ -71,6 +72,11 @@ struct MaterialTexels {
   real specular;        // A of specularTexture
   real iridescence;     // R of iridescenceTexture
   real iridescence_thickness;  // G of iridescenceThicknessTexture
+  // Where the sheen's roughness is mapped: its alpha (textured_sheen_alpha)
+  // and the albedo knots there, read between the rows about it.
+  real sheen_alpha;
+  vec4 sheen_albedo_near;
+  vec4 sheen_albedo_far;
 };
 
 // What a backend fetched of the material at a hit.
@@ -141,6 +147,8 @@ FACET_FN SurfaceAtHit surface_at_hit(HitMaterial m, FacingNormals facing, vec3 v
                                t.anisotropy, partials.tangent);
     s.params = textured_film(textured.params, t.iridescence, f.film_thickness_mapped, t.iridescence_thickness,
                              f.film_thickness_minimum);
+    if (f.sheen_roughness_mapped)
+      s.params = textured_sheen(s.params, t.sheen_alpha, t.sheen_albedo_near, t.sheen_albedo_far);
     s.n = textured.n;
     s.occlusion = textured.occlusion;
     s.emission = textured.emission;

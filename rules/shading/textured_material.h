@@ -5,6 +5,7 @@
 
 #include "rules/math.h"
 #include "rules/shading/brdf.h"
+#include "rules/shading/sheen.h"
 #include "rules/surface/tangent.h"
 #include "rules/texture/texture_sampling.h"
 
@@ -164,6 +165,19 @@ FACET_FN TexturedSurface textured_layers(TexturedSurface s, TextureFootprint coa
 FACET_FN BrdfParams textured_film(BrdfParams p, real film, bool thickness_mapped, real thickness, real thinnest) {
   p.iridescence *= film;
   if (thickness_mapped) p.iridescence_thickness = mix(thinnest, p.iridescence_thickness, thickness);
+  return p;
+}
+
+// KHR_materials_sheen's roughness texture at a hit: A of its texel scales
+// the factor (a perceptual roughness) into the hit's sheen alpha.
+FACET_FN real textured_sheen_alpha(real roughness_factor, real texel) { return sqr(roughness_factor * texel); }
+
+// The sheen of textured alpha `alpha` (textured_sheen_alpha), its albedo
+// knots read between the rows about it (sheen_rows_at) by the backend.
+FACET_FN BrdfParams textured_sheen(BrdfParams p, real alpha, vec4 albedo_near, vec4 albedo_far) {
+  p.sheen_alpha = alpha;
+  p.sheen_albedo_near = albedo_near;
+  p.sheen_albedo_far = albedo_far;
   return p;
 }
 

@@ -202,22 +202,27 @@ TEST_F(GltfMaterialExtensions, AClearCoatLiesOverTheEmission) {
   EXPECT_LT(coat.g, 0.96f * 5.0f + 0.5f);
 }
 
-TEST_F(GltfMaterialExtensions, SheenFactorsAndColourTextureAreRead) {
+TEST_F(GltfMaterialExtensions, SheenFactorsAndTexturesAreRead) {
   const nlohmann::json sheen = {{"sheenColorFactor", {0.6, 0.2, 0.1}}, {"sheenRoughnessFactor", 0.4}};
   const Scene scene = loadScene(write("sheen", {{"extensions", {{"KHR_materials_sheen", sheen}}}}));
   EXPECT_EQ(scene.materials.at(0).sheenColor, glm::dvec3(0.6, 0.2, 0.1));
   EXPECT_EQ(scene.materials.at(0).sheenRoughness, 0.4);
   EXPECT_THAT(scene.warnings, IsEmpty());
-  // Without the extension there is no sheen; each texture is one warning.
+  // Without the extension there is no sheen.
   EXPECT_EQ(loadScene(write("bare", nlohmann::json::object())).materials.at(0).sheenColor, glm::dvec3(0.0));
   nlohmann::json textured = sheen;
   for (const char* slot : {"sheenColorTexture", "sheenRoughnessTexture"}) textured[slot] = {{"index", 0}};
-  const Scene warned = loadScene(write("textured", {{"extensions", {{"KHR_materials_sheen", textured}}}}));
-  EXPECT_EQ(warned.materials.at(0).sheenRoughness, 0.4);
-  ASSERT_TRUE(warned.materials.at(0).textures.has_value());
-  EXPECT_EQ(warned.materials.at(0).textures->sheenColorTexture.texture, 0);
-  // The roughness texture alone is not read: the lobe's albedo is tabulated per material.
-  EXPECT_THAT(warned.warnings, ElementsAre(HasSubstr("KHR_materials_sheen.sheenRoughnessTexture: is not read")));
+  const Scene read = loadScene(write("textured", {{"extensions", {{"KHR_materials_sheen", textured}}}}));
+  EXPECT_THAT(read.warnings, IsEmpty());
+  EXPECT_EQ(read.materials.at(0).sheenRoughness, 0.4);
+  ASSERT_TRUE(read.materials.at(0).textures.has_value());
+  EXPECT_EQ(read.materials.at(0).textures->sheenColorTexture.texture, 0);
+  EXPECT_EQ(read.materials.at(0).textures->sheenRoughnessTexture.texture, 1);  // the same image, linear
+  EXPECT_EQ(read.materials.at(0).textures->sheenRoughness, 0.4);
+  // A sheen of colour 0 (the extension's default) has nothing to texture.
+  textured.erase("sheenColorFactor");
+  const Scene none = loadScene(write("none", {{"extensions", {{"KHR_materials_sheen", textured}}}}));
+  EXPECT_FALSE(none.materials.at(0).textures.has_value());
   const std::filesystem::path bad =
       write("bad", {{"extensions", {{"KHR_materials_sheen", {{"sheenColorFactor", {0.5, 1.5, 0.5}}}}}}});
   EXPECT_THAT([&] { loadScene(bad); }, ThrowsMessage<InputError>(HasSubstr("KHR_materials_sheen.sheenColorFactor")));

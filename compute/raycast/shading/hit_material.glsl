@@ -6,6 +6,10 @@
 #ifndef FACET_RAYCAST_HIT_MATERIAL_GLSL
 #define FACET_RAYCAST_HIT_MATERIAL_GLSL
 
+// The sheen's albedo knots at SHEEN_ROWS alphas, near and far in turn
+// (materials::sheenAlbedoRows): where a sheen's roughness is textured.
+layout(set = 0, binding = 35) uniform samplerBuffer sheenAlbedoRows;
+
 // The material's own parameters, before any texture; a lobe the scene has
 // nowhere stays off.
 BrdfParams brdf_params(MaterialRecord m) {
@@ -44,7 +48,8 @@ TexturedFactors textured_factors(MaterialRecord m) {
                          m.clearcoatNormalScale, LAYERS && m.anisotropyTexture.texture != FACET_NO_TEXTURE,
                          vec3(m.specularR, m.specularG, m.specularB), m.specular,
                          IRIDESCENCE == 1 && m.iridescenceThicknessTexture.texture != FACET_NO_TEXTURE,
-                         m.iridescenceThicknessMinimum);
+                         m.iridescenceThicknessMinimum,
+                         SHEEN == 1 && m.sheenRoughnessTexture.texture != FACET_NO_TEXTURE);
 }
 
 // The footprint a slot reads: that of the coordinate set it names.
@@ -97,6 +102,9 @@ MaterialTexels material_texels(MaterialRecord m, PatchRecord record, uint channe
       TRANSMISSION == 1 ? slot_value(m.transmissionTexture, slot_footprint(m.transmissionTexture, f0, f1)).r : 1.0;
   t.iridescence = 1.0;
   t.iridescence_thickness = 1.0;
+  t.sheen_alpha = 0.0;
+  t.sheen_albedo_near = vec4(0.0);
+  t.sheen_albedo_far = vec4(0.0);
   if (IRIDESCENCE == 1) {
     t.iridescence = slot_value(m.iridescenceTexture, slot_footprint(m.iridescenceTexture, f0, f1)).r;
     t.iridescence_thickness =
@@ -109,6 +117,16 @@ MaterialTexels material_texels(MaterialRecord m, PatchRecord record, uint channe
   t.coat_normal_map = slot_map(m.clearcoatNormalTexture);
   t.coat_normal = slot_value(m.clearcoatNormalTexture, t.coat_normal_frame).rgb;
   t.sheen = slot_value(m.sheenColorTexture, slot_footprint(m.sheenColorTexture, f0, f1)).rgb;
+  if (SHEEN == 1 && m.sheenRoughnessTexture.texture != FACET_NO_TEXTURE) {
+    t.sheen_alpha = textured_sheen_alpha(
+        m.sheenRoughnessFactor, slot_value(m.sheenRoughnessTexture, slot_footprint(m.sheenRoughnessTexture, f0, f1)).a);
+    SheenRows at = sheen_rows_at(t.sheen_alpha);
+    int first = 2 * at.first;
+    t.sheen_albedo_near =
+        mix(texelFetch(sheenAlbedoRows, first), texelFetch(sheenAlbedoRows, first + 2), at.weight);
+    t.sheen_albedo_far =
+        mix(texelFetch(sheenAlbedoRows, first + 1), texelFetch(sheenAlbedoRows, first + 3), at.weight);
+  }
   t.anisotropy = slot_value(m.anisotropyTexture, slot_footprint(m.anisotropyTexture, f0, f1)).rgb;
   return t;
 }

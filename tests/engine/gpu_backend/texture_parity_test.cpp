@@ -179,6 +179,19 @@ TEST_F(TextureParity, FilmTexturesPlaceItsStrengthAndThicknessAsOnTheCpu) {
       {&materials::MaterialTextures::iridescenceTexture, &materials::MaterialTextures::iridescenceThicknessTexture});
 }
 
+// KHR_materials_sheen's roughness texture: a checker whose A sets the
+// sheen's roughness to 0.16 and 0.55 of a factor of 1, its albedo knots
+// read between the rows on both backends; the same image on both, and not
+// the image of the factor alone.
+TEST_F(TextureParity, SheenRoughnessTextureSetsTheLobeAndItsAlbedoAsOnTheCpu) {
+  const scene::Scene scene = darkQuadUnderWhiteSky(dir_, "sheen", {{255, 255, 255, 40}, {255, 255, 255, 140}},
+                                                   {{"KHR_materials_sheen",
+                                                     {{"sheenColorFactor", {1.0, 0.8, 0.6}},
+                                                      {"sheenRoughnessFactor", 1.0},
+                                                      {"sheenRoughnessTexture", {{"index", 0}}}}}});
+  expectSlotsRenderAsOnTheCpu(device_, scene, {&materials::MaterialTextures::sheenRoughnessTexture});
+}
+
 // A renderer keeps its upload of the textures between renders; each render
 // must still show its own scene's textures: the same image as a fresh
 // renderer's for a scene whose textures are new chains, reordered, or read

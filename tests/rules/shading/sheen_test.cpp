@@ -8,6 +8,9 @@
 #include <cstdio>
 #include <numbers>
 #include <random>
+#include <utility>
+#include <vector>
+#include <algorithm>
 
 #include "materials/albedo.h"
 #include "materials/material.h"
@@ -189,6 +192,36 @@ TEST(Sheen, TheSmoothSheenGlowsAtGrazingAndFadesHeadOn) {
   EXPECT_GT(m::sheen_albedo(p, 0.1), 5 * m::sheen_albedo(p, 0.9));
   // No sheen under the horizon policy.
   EXPECT_EQ(m::sheen_lobe(0.09, kN, direction(1.0, 0.0), direction(1.6, kPi)), 0.0);
+}
+
+// A sheen whose roughness is textured reads its knots between the rows
+// about its alpha: at a row's own alpha they are that row, and at 200
+// roughnesses across [0, 1] (below the smallest alpha, at the rows and
+// between them) within 0.0025 of the knots tabulated at the alpha itself.
+TEST(Sheen, KnotsReadBetweenTheRowsFollowTheKnotsAtTheAlpha) {
+  const std::vector<glm::dvec4>& rows = sheenAlbedoRows();
+  ASSERT_EQ(rows.size(), std::size_t(2 * m::SHEEN_ROWS));
+  const auto between = [&](double alpha) {
+    const m::SheenRows at = m::sheen_rows_at(alpha);
+    const std::size_t first = 2 * std::size_t(at.first);
+    return std::pair{glm::mix(rows[first], rows[first + 2], at.weight),
+                     glm::mix(rows[first + 1], rows[first + 3], at.weight)};
+  };
+  for (const int j : {0, 7, 32}) {
+    const m::SheenRows at = m::sheen_rows_at(m::sheen_row_alpha(j));
+    EXPECT_NEAR(double(at.first) + at.weight, double(j), 1e-9);
+  }
+  double worst = 0.0;
+  for (int i = 0; i <= 200; ++i) {
+    const double roughness = i / 200.0, alpha = roughness * roughness;
+    const auto [near, far] = between(alpha);
+    const glm::dvec4 exactNear = m::sheen_albedo_knots(alpha, 0, 2048),
+                     exactFar = m::sheen_albedo_knots(alpha, 4, 2048);
+    for (int k = 0; k < 4; ++k)
+      worst = std::max({worst, std::abs(near[k] - exactNear[k]), std::abs(far[k] - exactFar[k])});
+  }
+  std::printf("worst knot read between rows: %.5f\n", worst);
+  EXPECT_LT(worst, 0.0025);
 }
 
 }  // namespace

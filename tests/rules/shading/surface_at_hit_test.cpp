@@ -225,5 +225,31 @@ TEST(SurfaceAtHit, TheFilmsTexturesScaleItsFactorAndPlaceItsThickness) {
   EXPECT_NE(m::fresnel_F(placed.params, 0.8), m::fresnel_F(unread.params, 0.8));
 }
 
+// KHR_materials_sheen's roughness texture: where it is read the hit's
+// alpha and the knots the backend read between the rows replace the
+// material's; where it is not they stay.
+TEST(SurfaceAtHit, ATexturedSheenRoughnessGivesTheHitsAlphaAndKnots) {
+  const glm::dvec3 v = glm::normalize(glm::dvec3(0.3, 0.1, 1));
+  m::HitMaterial h = untextured(plastic());
+  h.params.sheen_color = glm::dvec3(0.5);
+  h.params.sheen_alpha = 0.25;
+  h.params.sheen_albedo_near = h.params.sheen_albedo_far = glm::dvec4(0.3);
+  h.textured = true;
+  h.factors = {{0.8, 0.6, 0.4},  0.0, 0.5,   false, 1.0,  1.0, false, false, 1.0, false,
+               glm::dvec3(0.04), 1.0, false, 100.0, false};
+  h.texels = emptyTexels();
+  h.texels.sheen_alpha = m::textured_sheen_alpha(0.5, 0.4);
+  h.texels.sheen_albedo_near = glm::dvec4(0.7);
+  h.texels.sheen_albedo_far = glm::dvec4(0.6);
+  const m::SurfaceAtHit unread = m::surface_at_hit(h, m::facing_normals(kN, kN, v), v, flatPartials());
+  EXPECT_EQ(unread.params.sheen_alpha, 0.25);
+  EXPECT_EQ(unread.params.sheen_albedo_near, glm::dvec4(0.3));
+  h.factors.sheen_roughness_mapped = true;
+  const m::SurfaceAtHit read = m::surface_at_hit(h, m::facing_normals(kN, kN, v), v, flatPartials());
+  EXPECT_DOUBLE_EQ(read.params.sheen_alpha, 0.04);
+  EXPECT_EQ(read.params.sheen_albedo_near, glm::dvec4(0.7));
+  EXPECT_EQ(read.params.sheen_albedo_far, glm::dvec4(0.6));
+}
+
 }  // namespace
 }  // namespace facet::rules
