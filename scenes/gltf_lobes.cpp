@@ -158,13 +158,16 @@ bool readLayerTextures(const tinygltf::Material& gltf, const materials::Material
       t.clearcoatNormalScale =
           member(c->Get("clearcoatNormalTexture"), "scale", 1.0, where + ".clearcoatNormalTexture", reader);
   }
-  // A sheen applySheen dropped, or of colour 0, has no texture to read.
-  if (const tinygltf::Value* s = extension(gltf, "KHR_materials_sheen"); s && m.sheenColor != glm::dvec3(0.0)) {
+  if (const tinygltf::Value* s = extension(gltf, "KHR_materials_sheen")) {
     const std::string where = at("KHR_materials_sheen");
     t.sheenColorTexture = extensionSlot(*s, "sheenColorTexture", TextureEncoding::Srgb, where, reader, textures);
-    t.sheenRoughnessTexture =
+    const materials::TextureSlot roughness =
         extensionSlot(*s, "sheenRoughnessTexture", TextureEncoding::Linear, where, reader, textures);
-    t.sheenRoughness = m.sheenRoughness;
+    // Only a sheen that is there, of a roughness above 0, varies per hit.
+    if (m.sheenColor != glm::dvec3(0.0) && m.sheenRoughness > 0.0) {
+      t.sheenRoughnessTexture = roughness;
+      t.sheenRoughness = m.sheenRoughness;
+    }
   }
   if (const tinygltf::Value* a = extension(gltf, "KHR_materials_anisotropy"))
     t.anisotropyTexture = extensionSlot(*a, "anisotropyTexture", TextureEncoding::Linear,
@@ -177,13 +180,15 @@ bool readLayerTextures(const tinygltf::Material& gltf, const materials::Material
     t.specularTexture = extensionSlot(*s, "specularTexture", TextureEncoding::Linear, where, reader, textures);
     t.specularColorTexture = extensionSlot(*s, "specularColorTexture", TextureEncoding::Srgb, where, reader, textures);
   }
-  // A film applyIridescence dropped, or of factor 0, has no texture to read.
-  if (const tinygltf::Value* i = extension(gltf, "KHR_materials_iridescence"); i && m.iridescence > 0.0) {
+  if (const tinygltf::Value* i = extension(gltf, "KHR_materials_iridescence")) {
     const std::string where = at("KHR_materials_iridescence");
     t.iridescenceTexture = extensionSlot(*i, "iridescenceTexture", TextureEncoding::Linear, where, reader, textures);
-    t.iridescenceThicknessTexture =
+    const materials::TextureSlot thickness =
         extensionSlot(*i, "iridescenceThicknessTexture", TextureEncoding::Linear, where, reader, textures);
+    // Between a minimum and a maximum that differ, of a film that is there.
     t.iridescenceThicknessMinimum = member(*i, "iridescenceThicknessMinimum", 100.0, where, reader);
+    if (m.iridescence > 0.0 && t.iridescenceThicknessMinimum != m.iridescenceThickness)
+      t.iridescenceThicknessTexture = thickness;
   }
   for (const materials::TextureSlot* slot :
        {&t.clearcoatTexture, &t.clearcoatRoughnessTexture, &t.clearcoatNormalTexture, &t.sheenColorTexture,

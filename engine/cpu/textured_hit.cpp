@@ -25,7 +25,7 @@ m::MaterialTexels materialTexels(const scene::SubdivisionSurface& surface, const
   const auto value = [&](const materials::TextureSlot& slot) {
     return scene::sampleSlot(textures, slot, footprint(slot));
   };
-  m::MaterialTexels texels;
+  m::MaterialTexels texels{};
   texels.base = glm::dvec3(value(t.baseColorTexture)) * surface.evaluateColor(hit.patch, hit.u, hit.v);
   texels.metallic_roughness = glm::dvec3(value(t.metallicRoughnessTexture));
   texels.normal = glm::dvec3(value(t.normalTexture));

@@ -17,8 +17,8 @@
 // few degrees of the horizon, finer than the albedo's knots resolve.
 const real SHEEN_MIN_ALPHA = real(0.0049);
 
-// E(mu) of a material's sheen is its albedo table: a material has one sheen
-// roughness, so the table is one row of 8 knots (BrdfParams'
+// E(mu) of a material's sheen is its albedo table: an untextured material
+// has one sheen roughness, so the table is one row of 8 knots (BrdfParams'
 // sheen_albedo_near and _far, each sheen_albedo_entry in dfg.h) at mu_k =
 // SHEEN_KNOT_MU0 + (1 - SHEEN_KNOT_MU0) (k / 7)^2, denser at grazing angles
 // where E bends fastest, read linearly between them and held below mu_0.

@@ -219,10 +219,19 @@ TEST_F(GltfMaterialExtensions, SheenFactorsAndTexturesAreRead) {
   EXPECT_EQ(read.materials.at(0).textures->sheenColorTexture.texture, 0);
   EXPECT_EQ(read.materials.at(0).textures->sheenRoughnessTexture.texture, 1);  // the same image, linear
   EXPECT_EQ(read.materials.at(0).textures->sheenRoughness, 0.4);
-  // A sheen of colour 0 (the extension's default) has nothing to texture.
-  textured.erase("sheenColorFactor");
-  const Scene none = loadScene(write("none", {{"extensions", {{"KHR_materials_sheen", textured}}}}));
-  EXPECT_FALSE(none.materials.at(0).textures.has_value());
+  // A sheen of colour 0 (the extension's default) or of roughness 0 has no
+  // roughness to vary per hit; its texture infos are still checked.
+  for (const auto& [key, zero] : {std::pair{"sheenColorFactor", nlohmann::json{0.0, 0.0, 0.0}},
+                                  std::pair{"sheenRoughnessFactor", nlohmann::json(0.0)}}) {
+    nlohmann::json flat = textured;
+    flat[key] = zero;
+    const Scene none = loadScene(write("none", {{"extensions", {{"KHR_materials_sheen", flat}}}}));
+    ASSERT_TRUE(none.materials.at(0).textures.has_value()) << key;
+    EXPECT_LT(none.materials.at(0).textures->sheenRoughnessTexture.texture, 0) << key;
+    flat["sheenRoughnessTexture"] = {{"index", 7}};
+    const std::filesystem::path bad = write("bad", {{"extensions", {{"KHR_materials_sheen", flat}}}});
+    EXPECT_THAT([&] { loadScene(bad); }, ThrowsMessage<InputError>(HasSubstr("sheenRoughnessTexture"))) << key;
+  }
   const std::filesystem::path bad =
       write("bad", {{"extensions", {{"KHR_materials_sheen", {{"sheenColorFactor", {0.5, 1.5, 0.5}}}}}}});
   EXPECT_THAT([&] { loadScene(bad); }, ThrowsMessage<InputError>(HasSubstr("KHR_materials_sheen.sheenColorFactor")));
@@ -254,10 +263,16 @@ TEST_F(GltfMaterialExtensions, IridescenceFactorsAndTexturesAreRead) {
   EXPECT_GE(m.textures->iridescenceTexture.texture, 0);
   EXPECT_GE(m.textures->iridescenceThicknessTexture.texture, 0);
   EXPECT_EQ(m.textures->iridescenceThicknessMinimum, 150.0);
-  // Without a film (factor 0) there is nothing for its textures to scale.
-  textured["iridescenceFactor"] = 0.0;
-  const Scene none = loadScene(write("none", {{"extensions", {{"KHR_materials_iridescence", textured}}}}));
-  EXPECT_FALSE(none.materials.at(0).textures.has_value());
+  // Without a film (factor 0), or between a minimum and a maximum alike,
+  // the thickness is the maximum everywhere.
+  for (const auto& [key, value] :
+       {std::pair{"iridescenceFactor", 0.0}, std::pair{"iridescenceThicknessMinimum", 520.0}}) {
+    nlohmann::json flat = textured;
+    flat[key] = value;
+    const Scene none = loadScene(write("none", {{"extensions", {{"KHR_materials_iridescence", flat}}}}));
+    ASSERT_TRUE(none.materials.at(0).textures.has_value()) << key;
+    EXPECT_LT(none.materials.at(0).textures->iridescenceThicknessTexture.texture, 0) << key;
+  }
   for (const auto& [key, value] : {std::pair{"iridescenceFactor", 1.5}, std::pair{"iridescenceIor", 0.9},
                                    std::pair{"iridescenceThicknessMaximum", -1.0}}) {
     const std::filesystem::path bad = write("bad", {{"extensions", {{"KHR_materials_iridescence", {{key, value}}}}}});

@@ -258,6 +258,63 @@ TEST_F(KhronosModels, AClearCoatDrawsTheLightSharpOverThePaint) {
   EXPECT_GT(peak(withCoat.gpu.image), 4.0 * peak(without.gpu.image));
 }
 
+// SheenCloth (its top, tests/scenes/data/README.md): a blue technical
+// fabric whose sheen texture holds the sheen's colour in RGB and its
+// roughness in A. The screenshot shows the cloth's folds lit along their
+// edges: a sheen brightens the surface towards grazing views, so the
+// cloth's rim gains more from it than its middle, where the view is
+// head-on. The texture's threads are smoother than the factor (A 0.44 on
+// average, the factor 1), and a smoother sheen lends less light head-on.
+TEST_F(KhronosModels, TheClothsSheenBrightensItsRimMoreThanItsMiddle) {
+  const scene::Scene cloth = khronosModel("SheenCloth");
+  EXPECT_TRUE(cloth.warnings.empty());
+  ASSERT_TRUE(cloth.materials.at(0).textures.has_value());
+  ASSERT_GE(cloth.materials.at(0).textures->sheenRoughnessTexture.texture, 0);
+  scene::Scene bare = cloth;
+  for (materials::Material& m : bare.materials) m.sheenColor = glm::dvec3(0.0);
+  scene::Scene factorOnly = cloth;
+  for (materials::Material& m : factorOnly.materials) m.textures->sheenRoughnessTexture = {};
+  HeadOn view{{0.0, 0.036, -0.0084}, 0.08, 30.0, 72};
+  view.parted = 40;
+  const testing::PathRenders sheen = view.render(device_, cloth), without = view.render(device_, bare),
+                             rough = view.render(device_, factorOnly);
+  // Covered pixels next to the background (the rim), and those four or
+  // more pixels from it (the middle).
+  const auto covered = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < view.size && y < view.size &&
+           sheen.reference.beauty[std::size_t(y * view.size + x)].a == 1.0f;
+  };
+  const auto distanceToBackground = [&](int x, int y) {
+    for (int r = 1; r <= 4; ++r)
+      for (int dy = -r; dy <= r; ++dy)
+        for (int dx = -r; dx <= r; ++dx)
+          if (!covered(x + dx, y + dy)) return r;
+    return 5;
+  };
+  const auto gain = [&](const Image& with, const Image& bareImage, bool rim) {
+    double a = 0.0, b = 0.0;
+    for (int y = 0; y < view.size; ++y)
+      for (int x = 0; x < view.size; ++x) {
+        if (!covered(x, y) || (distanceToBackground(x, y) == 1) != rim || (!rim && distanceToBackground(x, y) < 5))
+          continue;
+        const std::size_t i = std::size_t(y * view.size + x);
+        a += glm::dot(glm::dvec3(with.beauty[i]), glm::dvec3(1.0));
+        b += glm::dot(glm::dvec3(bareImage.beauty[i]), glm::dvec3(1.0));
+      }
+    return a / b;
+  };
+  for (const auto& [name, with] : {std::pair{"textured", &sheen}, std::pair{"factor alone", &rough}})
+    std::printf("%s: sheen's gain on the rim %.3f, in the middle %.3f (GPU %.3f, %.3f)\n", name,
+                gain(with->reference, without.reference, true), gain(with->reference, without.reference, false),
+                gain(with->gpu.image, without.gpu.image, true), gain(with->gpu.image, without.gpu.image, false));
+  for (const auto& [with, bareImage] :
+       {std::pair{&sheen.reference, &without.reference}, std::pair{&sheen.gpu.image, &without.gpu.image}}) {
+    EXPECT_GT(gain(*with, *bareImage, false), 1.0);
+    EXPECT_GT(gain(*with, *bareImage, true) - 1.0, 1.5 * (gain(*with, *bareImage, false) - 1.0));
+  }
+  EXPECT_LT(gain(sheen.reference, without.reference, false), gain(rough.reference, without.reference, false) - 0.03);
+}
+
 // TwoSidedPlane: "a plane having the two sided material parameter enabled",
 // a normal-mapped wooden board in the plane y = 0. Seen and lit from below
 // it shows its other side as the top shows this one: every pixel covered,

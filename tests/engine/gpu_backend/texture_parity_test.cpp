@@ -8,6 +8,8 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
@@ -94,6 +96,30 @@ void expectSlotsRenderAsOnTheCpu(gpu::Device& device, const scene::Scene& scene,
   expectTexturesRenderAsOnTheCpu(device, scene, without);
 }
 
+// How far the mean of the CPU reference's image of `b` over the covered
+// pixels is from that of `a`, relative to it. The mean, not each pixel: a
+// change of the lobes' weights changes which lobe a sample draws, so
+// pixels part by their noise even where the estimate is the same.
+double meanReferenceDifference(const scene::Scene& a, const scene::Scene& b) {
+  const Image x = cpu::renderReference(a, scene::buildGeometry(a)),
+              y = cpu::renderReference(b, scene::buildGeometry(b));
+  glm::dvec3 sumX(0.0), sumY(0.0);
+  for (std::size_t p = 0; p < x.beauty.size(); ++p)
+    if (x.beauty[p].a != 0.0f) sumX += glm::dvec3(x.beauty[p]), sumY += glm::dvec3(y.beauty[p]);
+  return glm::length(sumY - sumX) / glm::length(sumX);
+}
+
+// The CPU reference's mean of `textured` within `within` of that of `same`,
+// a material whose factors say what the texture should have, and more than
+// `apart` from that of `other`, what a wrong channel would give.
+void expectMeanAsTheFactorsSay(const char* what, const scene::Scene& textured, const scene::Scene& same,
+                               const scene::Scene& other, double within, double apart) {
+  const double toSame = meanReferenceDifference(textured, same), toOther = meanReferenceDifference(textured, other);
+  std::printf("%s: %.2e from the factors that say the same, %.2e from the others\n", what, toSame, toOther);
+  EXPECT_LT(toSame, within);
+  EXPECT_GT(toOther, apart);
+}
+
 class TextureParity : public gpu::testing::GpuTest, public ::testing::WithParamInterface<TextureCase> {
  protected:
   void SetUp() override {
@@ -166,17 +192,27 @@ TEST_F(TextureParity, SpecularTexturesGiveTheDielectricsF0AsOnTheCpu) {
 // and whose G places its thickness between 100 and 700 nm; the same image on
 // both backends, and not the image of the film's factors alone.
 TEST_F(TextureParity, FilmTexturesPlaceItsStrengthAndThicknessAsOnTheCpu) {
-  const scene::Scene scene = darkQuadUnderWhiteSky(dir_, "film", {{255, 40, 0, 255}, {90, 230, 0, 255}},
-                                                   {{"KHR_materials_iridescence",
-                                                     {{"iridescenceFactor", 1.0},
-                                                      {"iridescenceIor", 1.8},
-                                                      {"iridescenceThicknessMinimum", 100.0},
-                                                      {"iridescenceThicknessMaximum", 700.0},
-                                                      {"iridescenceTexture", {{"index", 0}}},
-                                                      {"iridescenceThicknessTexture", {{"index", 0}}}}}});
+  const nlohmann::json film = {{"KHR_materials_iridescence",
+                                {{"iridescenceFactor", 1.0},
+                                 {"iridescenceIor", 1.8},
+                                 {"iridescenceThicknessMinimum", 100.0},
+                                 {"iridescenceThicknessMaximum", 700.0},
+                                 {"iridescenceTexture", {{"index", 0}}},
+                                 {"iridescenceThicknessTexture", {{"index", 0}}}}}};
+  const scene::Scene scene = darkQuadUnderWhiteSky(dir_, "film", {{255, 40, 0, 255}, {90, 230, 0, 255}}, film);
   expectSlotsRenderAsOnTheCpu(
       device_, scene,
       {&materials::MaterialTextures::iridescenceTexture, &materials::MaterialTextures::iridescenceThicknessTexture});
+  // The channels: where R is 1 and G is 0 the film is the factor's at the
+  // minimum, the material's own film of thickness 100 without textures.
+  const scene::Scene uniform = darkQuadUnderWhiteSky(dir_, "uniform", {{255, 0, 0, 255}, {255, 0, 0, 255}}, film);
+  scene::Scene thinnest = uniform;
+  thinnest.materials[0].iridescenceThickness = 100.0;
+  thinnest.materials[0].textures->iridescenceTexture = {};
+  thinnest.materials[0].textures->iridescenceThicknessTexture = {};
+  scene::Scene thickest = thinnest;
+  thickest.materials[0].iridescenceThickness = 700.0;
+  expectMeanAsTheFactorsSay("film", uniform, thinnest, thickest, 1e-9, 0.05);
 }
 
 // KHR_materials_sheen's roughness texture: a checker whose A sets the
@@ -184,12 +220,23 @@ TEST_F(TextureParity, FilmTexturesPlaceItsStrengthAndThicknessAsOnTheCpu) {
 // read between the rows on both backends; the same image on both, and not
 // the image of the factor alone.
 TEST_F(TextureParity, SheenRoughnessTextureSetsTheLobeAndItsAlbedoAsOnTheCpu) {
-  const scene::Scene scene = darkQuadUnderWhiteSky(dir_, "sheen", {{255, 255, 255, 40}, {255, 255, 255, 140}},
-                                                   {{"KHR_materials_sheen",
-                                                     {{"sheenColorFactor", {1.0, 0.8, 0.6}},
-                                                      {"sheenRoughnessFactor", 1.0},
-                                                      {"sheenRoughnessTexture", {{"index", 0}}}}}});
+  const nlohmann::json sheen = {{"KHR_materials_sheen",
+                                 {{"sheenColorFactor", {1.0, 0.8, 0.6}},
+                                  {"sheenRoughnessFactor", 1.0},
+                                  {"sheenRoughnessTexture", {{"index", 0}}}}}};
+  const scene::Scene scene = darkQuadUnderWhiteSky(dir_, "sheen", {{255, 255, 255, 40}, {255, 255, 255, 140}}, sheen);
   expectSlotsRenderAsOnTheCpu(device_, scene, {&materials::MaterialTextures::sheenRoughnessTexture});
+  // The channel: where A is 64 (RGB 255) the sheen is the untextured
+  // material's of roughness 64/255, its knots read between rows within
+  // 0.0022 of its own; R would give roughness 1.
+  const scene::Scene uniform =
+      darkQuadUnderWhiteSky(dir_, "uniform", {{255, 255, 255, 64}, {255, 255, 255, 64}}, sheen);
+  scene::Scene own = uniform;
+  own.materials[0].textures->sheenRoughnessTexture = {};
+  own.materials[0].sheenRoughness = 64.0 / 255.0;
+  scene::Scene roughest = own;
+  roughest.materials[0].sheenRoughness = 1.0;
+  expectMeanAsTheFactorsSay("sheen", uniform, own, roughest, 2e-3, 0.02);
 }
 
 // A renderer keeps its upload of the textures between renders; each render

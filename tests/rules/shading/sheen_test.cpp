@@ -195,7 +195,7 @@ TEST(Sheen, TheSmoothSheenGlowsAtGrazingAndFadesHeadOn) {
 }
 
 // A sheen whose roughness is textured reads its knots between the rows
-// about its alpha: at a row's own alpha they are that row, and at 200
+// about its alpha: at a row's own alpha they are that row, and at 201
 // roughnesses across [0, 1] (below the smallest alpha, at the rows and
 // between them) within 0.0025 of the knots tabulated at the alpha itself.
 TEST(Sheen, KnotsReadBetweenTheRowsFollowTheKnotsAtTheAlpha) {
