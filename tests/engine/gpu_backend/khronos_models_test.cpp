@@ -315,6 +315,53 @@ TEST_F(KhronosModels, TheClothsSheenBrightensItsRimMoreThanItsMiddle) {
   EXPECT_LT(gain(sheen.reference, without.reference, false), gain(rough.reference, without.reference, false) - 0.03);
 }
 
+// ClearcoatWicker: a wicker sphere "covered with a wrinkled plastic
+// clearcoat", to show a clear coat's own normal map. On the screenshot the
+// coat's reflections crinkle across the weave: what the coat adds to the
+// picture changes from pixel to pixel far more than a smooth coat's, which
+// follows the sphere's curve.
+TEST_F(KhronosModels, AWrinkledCoatCrinklesItsReflections) {
+  const scene::Scene wrinkled = khronosModel("ClearcoatWicker");
+  EXPECT_TRUE(wrinkled.warnings.empty());
+  ASSERT_GE(wrinkled.materials.at(0).textures->clearcoatNormalTexture.texture, 0);
+  scene::Scene smooth = wrinkled;
+  smooth.materials[0].textures->clearcoatNormalTexture = {};
+  scene::Scene bare = wrinkled;
+  bare.materials[0].clearcoat = 0.0;
+  const HeadOn view{{0.0, 0.5, 0.0}, 2.6, 30.0, 64};
+  const testing::PathRenders coat = view.render(device_, wrinkled), plain = view.render(device_, smooth),
+                             none = view.render(device_, bare);
+  // What the coat adds, and how much of it is left after a 3 x 3 blur is
+  // taken away: over the sphere's pixels whose 3 x 3 neighbourhood is all
+  // on it.
+  const auto roughness = [&](const Image& with, const Image& without) {
+    const auto added = [&](int x, int y) {
+      const std::size_t i = std::size_t(y * view.size + x);
+      return glm::dot(glm::dvec3(with.beauty[i]) - glm::dvec3(without.beauty[i]), glm::dvec3(1.0));
+    };
+    double detail = 0.0, total = 0.0;
+    for (int y = 1; y + 1 < view.size; ++y)
+      for (int x = 1; x + 1 < view.size; ++x) {
+        double blurred = 0.0;
+        bool inside = true;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            inside = inside && with.beauty[std::size_t((y + dy) * view.size + x + dx)].a == 1.0f;
+            blurred += added(x + dx, y + dy) / 9.0;
+          }
+        if (!inside) continue;
+        detail += std::abs(added(x, y) - blurred);
+        total += std::abs(added(x, y));
+      }
+    return detail / total;
+  };
+  std::printf("the coat's detail: wrinkled %.3f (GPU %.3f), smooth %.3f (GPU %.3f)\n",
+              roughness(coat.reference, none.reference), roughness(coat.gpu.image, none.gpu.image),
+              roughness(plain.reference, none.reference), roughness(plain.gpu.image, none.gpu.image));
+  EXPECT_GT(roughness(coat.reference, none.reference), 1.6 * roughness(plain.reference, none.reference));
+  EXPECT_GT(roughness(coat.gpu.image, none.gpu.image), 1.6 * roughness(plain.gpu.image, none.gpu.image));
+}
+
 // TwoSidedPlane: "a plane having the two sided material parameter enabled",
 // a normal-mapped wooden board in the plane y = 0. Seen and lit from below
 // it shows its other side as the top shows this one: every pixel covered,
