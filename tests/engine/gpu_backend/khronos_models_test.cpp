@@ -362,6 +362,56 @@ TEST_F(KhronosModels, AWrinkledCoatCrinklesItsReflections) {
   EXPECT_GT(roughness(coat.gpu.image, none.gpu.image), 1.6 * roughness(plain.gpu.image, none.gpu.image));
 }
 
+// GlamVelvetSofa (its fabric, tests/scenes/data/README.md): one mesh whose
+// material KHR_materials_variants chooses among five fabrics, velvets of a
+// sheen and a tinted specular F(0) over their base. The variants' screenshot
+// shows a black, a champagne, a grey, a navy and a pale pink sofa: each
+// variant, chosen by name, takes its own colour, the navy's blue from its
+// sheen and specular colour over an almost black base.
+TEST_F(KhronosModels, EachSofaVariantTakesItsOwnFabricsColour) {
+  const std::filesystem::path file =
+      std::filesystem::path(FACET_TEST_DATA_DIR) / "khronos" / "GlamVelvetSofa" / "GlamVelvetSofa.gltf";
+  const HeadOn view{{0.0, 0.5, -0.1}, 4.0, 35.0, 64};
+  const auto meanColour = [&](const Image& image) {
+    glm::dvec3 sum(0.0);
+    double covered = 0.0;
+    for (const glm::vec4& c : image.beauty)
+      if (c.a == 1.0f) sum += glm::dvec3(c), covered += 1.0;
+    return sum / covered;
+  };
+  std::vector<std::pair<std::string, glm::dvec3>> colours;
+  for (const std::string variant : {"Black", "Champagne", "Gray", "Navy", "Pale Pink"}) {
+    const scene::Scene sofa = scene::loadScene(file, {}, variant);
+    EXPECT_TRUE(sofa.warnings.empty()) << variant;
+    const testing::PathRenders r = view.render(device_, sofa);
+    const glm::dvec3 cpu = meanColour(r.reference), gpu = meanColour(r.gpu.image);
+    std::printf("%-10s CPU (%.4f, %.4f, %.4f), GPU (%.4f, %.4f, %.4f)\n", variant.c_str(), cpu.r, cpu.g, cpu.b, gpu.r,
+                gpu.g, gpu.b);
+    colours.emplace_back(variant, cpu);
+  }
+  const auto colour = [&](const std::string& variant) {
+    return std::find_if(colours.begin(), colours.end(), [&](const auto& c) { return c.first == variant; })->second;
+  };
+  const auto luminance = [](const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; };
+  const auto neutral = [](const glm::dvec3& c) { return std::max({c.r, c.g, c.b}) < 1.1 * std::min({c.r, c.g, c.b}); };
+  const glm::dvec3 black = colour("Black"), champagne = colour("Champagne"), gray = colour("Gray"),
+                   navy = colour("Navy"), pink = colour("Pale Pink");
+  for (const auto& [variant, c] : colours) {
+    if (variant != "Black") EXPECT_GT(luminance(c), luminance(black)) << variant << " darker than the black";
+    if (variant != "Pale Pink") EXPECT_LT(luminance(c), luminance(pink)) << variant << " lighter than the pale pink";
+    if (variant != "Navy") EXPECT_LT(c.b / c.r, navy.b / navy.r) << variant << " bluer than the navy";
+  }
+  EXPECT_TRUE(neutral(black));
+  EXPECT_TRUE(neutral(gray));
+  EXPECT_GT(luminance(gray), 4.0 * luminance(black));
+  EXPECT_GT(navy.b, 3.0 * navy.r);
+  EXPECT_GT(champagne.r, champagne.g);
+  EXPECT_GT(champagne.g, champagne.b);
+  EXPECT_GT(champagne.r, 1.3 * champagne.b);
+  EXPECT_GT(pink.r, 1.2 * pink.g);
+  EXPECT_GT(pink.r, 1.2 * pink.b);
+}
+
 // TwoSidedPlane: "a plane having the two sided material parameter enabled",
 // a normal-mapped wooden board in the plane y = 0. Seen and lit from below
 // it shows its other side as the top shows this one: every pixel covered,
