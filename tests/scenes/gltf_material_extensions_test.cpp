@@ -272,6 +272,9 @@ TEST_F(GltfMaterialExtensions, IridescenceFactorsAndTexturesAreRead) {
     const Scene none = loadScene(write("none", {{"extensions", {{"KHR_materials_iridescence", flat}}}}));
     ASSERT_TRUE(none.materials.at(0).textures.has_value()) << key;
     EXPECT_LT(none.materials.at(0).textures->iridescenceThicknessTexture.texture, 0) << key;
+    flat["iridescenceThicknessTexture"] = {{"index", 7}};
+    const std::filesystem::path bad = write("bad", {{"extensions", {{"KHR_materials_iridescence", flat}}}});
+    EXPECT_THAT([&] { loadScene(bad); }, ThrowsMessage<InputError>(HasSubstr("iridescenceThicknessTexture"))) << key;
   }
   for (const auto& [key, value] : {std::pair{"iridescenceFactor", 1.5}, std::pair{"iridescenceIor", 0.9},
                                    std::pair{"iridescenceThicknessMaximum", -1.0}}) {

@@ -278,8 +278,8 @@ TEST_F(KhronosModels, TheClothsSheenBrightensItsRimMoreThanItsMiddle) {
   view.parted = 40;
   const testing::PathRenders sheen = view.render(device_, cloth), without = view.render(device_, bare),
                              rough = view.render(device_, factorOnly);
-  // Covered pixels next to the background (the rim), and those four or
-  // more pixels from it (the middle).
+  // Covered pixels next to the background (the rim), and those more than
+  // four pixels from it (the middle).
   const auto covered = [&](int x, int y) {
     return x >= 0 && y >= 0 && x < view.size && y < view.size &&
            sheen.reference.beauty[std::size_t(y * view.size + x)].a == 1.0f;
@@ -323,6 +323,7 @@ TEST_F(KhronosModels, TheClothsSheenBrightensItsRimMoreThanItsMiddle) {
 TEST_F(KhronosModels, AWrinkledCoatCrinklesItsReflections) {
   const scene::Scene wrinkled = khronosModel("ClearcoatWicker");
   EXPECT_TRUE(wrinkled.warnings.empty());
+  ASSERT_TRUE(wrinkled.materials.at(0).textures.has_value());
   ASSERT_GE(wrinkled.materials.at(0).textures->clearcoatNormalTexture.texture, 0);
   scene::Scene smooth = wrinkled;
   smooth.materials[0].textures->clearcoatNormalTexture = {};
